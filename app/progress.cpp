@@ -1,0 +1,34 @@
+#include "app/progress.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+
+namespace app {
+
+Progress::Progress(std::string label, std::int64_t total, bool enabled)
+    : label_(std::move(label)),
+      total_(total),
+      enabled_(enabled && ::isatty(STDERR_FILENO)),
+      start_(std::chrono::steady_clock::now()) {}
+
+void Progress::update(std::int64_t done) {
+  if (!enabled_ || total_ <= 0) return;
+  const double fraction = static_cast<double>(done) / static_cast<double>(total_);
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const double eta = fraction > 0 ? elapsed * (1 - fraction) / fraction : 0;
+  constexpr int kWidth = 30;
+  const int filled = static_cast<int>(fraction * kWidth);
+  std::fprintf(stderr, "\r%s [%.*s%*s] %3.0f%%  ETA %5.1f s ", label_.c_str(), filled,
+               "##############################", kWidth - filled, "", 100 * fraction, eta);
+  std::fflush(stderr);
+}
+
+void Progress::finish() {
+  if (!enabled_) return;
+  std::fprintf(stderr, "\r%*s\r", static_cast<int>(label_.size()) + 60, "");
+  std::fflush(stderr);
+}
+
+}  // namespace app

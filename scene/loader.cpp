@@ -1,0 +1,276 @@
+#include "scene/loader.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace scene {
+namespace {
+
+// Thrown inside the loader only; turned into a LoadError at its edge.
+struct Failure {
+  int line;
+  std::string key;
+  std::string message;
+};
+
+int lineOf(const YAML::Node& node) { return node.Mark().is_null() ? 1 : node.Mark().line + 1; }
+
+std::string join(const std::string& prefix, const std::string& key) {
+  return prefix.empty() ? key : prefix + "." + key;
+}
+
+// Reads one YAML map: each key is looked up once, and finish() rejects the keys nobody asked
+// for. Records the line of every key it sees.
+class MapReader {
+ public:
+  MapReader(const YAML::Node& node, std::string path, Loaded& out)
+      : node_(node), path_(std::move(path)), out_(out) {
+    if (!node.IsMap())
+      throw Failure{lineOf(node), path_.empty() ? "scene" : path_,
+                    "must be a map of keys (key: value)"};
+    std::set<std::string> seen;
+    for (const auto& entry : node) {
+      const std::string key = entry.first.as<std::string>();
+      if (!seen.insert(key).second)
+        throw Failure{lineOf(entry.first), join(path_, key), "is given twice"};
+      out_.lines[join(path_, key)] = lineOf(entry.first);
+      present_[key] = entry.second;
+      key_lines_[key] = lineOf(entry.first);
+    }
+  }
+
+  bool has(const std::string& key) const { return present_.count(key) > 0; }
+
+  void read(const std::string& key, double& value) {
+    if (auto node = take(key)) value = number(*node, key);
+  }
+  void read(const std::string& key, int& value) {
+    if (auto node = take(key)) value = whole(*node, key);
+  }
+  void read(const std::string& key, std::string& value) {
+    if (auto node = take(key)) {
+      if (!node->IsScalar()) fail(key, "must be a word");
+      value = node->Scalar();
+    }
+  }
+  template <typename T>
+  void read(const std::string& key, std::array<T, 2>& value) {
+    auto node = take(key);
+    if (!node) return;
+    if (!node->IsSequence() || node->size() != 2) fail(key, "must be a list of two numbers");
+    for (std::size_t i = 0; i < 2; ++i) {
+      if constexpr (std::is_same_v<T, int>)
+        value[i] = whole((*node)[i], key);
+      else
+        value[i] = number((*node)[i], key);
+    }
+  }
+
+  /// A nested map, or nothing when the key is absent.
+  std::optional<MapReader> child(const std::string& key) {
+    auto node = take(key);
+    if (!node) return std::nullopt;
+    return MapReader(*node, join(path_, key), out_);
+  }
+
+  void require(const std::string& key) const {
+    if (!has(key)) throw Failure{lineOf(node_), join(path_, key), "is required"};
+  }
+
+  [[noreturn]] void fail(const std::string& key, const std::string& message) const {
+    throw Failure{key_lines_.at(key), join(path_, key), message};
+  }
+
+  /// Rejects keys that were never read.
+  void finish() const {
+    for (const auto& [key, node] : present_)
+      if (!taken_.count(key))
+        throw Failure{key_lines_.at(key), join(path_, key), "is not a known key" + hint()};
+  }
+
+ private:
+  std::optional<YAML::Node> take(const std::string& key) {
+    auto it = present_.find(key);
+    if (it == present_.end()) return std::nullopt;
+    taken_.insert(key);
+    return it->second;
+  }
+
+  double number(const YAML::Node& node, const std::string& key) const {
+    double v = 0;
+    if (!node.IsScalar() || !YAML::convert<double>::decode(node, v))
+      fail(key, "must be a number, not '" + (node.IsScalar() ? node.Scalar() : "a list or map") +
+                    "'");
+    return v;
+  }
+
+  int whole(const YAML::Node& node, const std::string& key) const {
+    const double v = number(node, key);
+    if (!std::isfinite(v) || v != std::floor(v) || std::abs(v) > 1e9)
+      fail(key, "must be a whole number, not '" + node.Scalar() + "'");
+    return static_cast<int>(v);
+  }
+
+  std::string hint() const {
+    std::string names;
+    for (const auto& key : taken_) names += (names.empty() ? "" : ", ") + key;
+    return names.empty() ? "" : " (known here: " + names + ")";
+  }
+
+  YAML::Node node_;
+  std::string path_;
+  Loaded& out_;
+  std::map<std::string, YAML::Node> present_;
+  std::map<std::string, int> key_lines_;
+  std::set<std::string> taken_;
+};
+
+// Reads every key of one section, then rejects the rest. A missing optional section keeps
+// the spec's defaults.
+template <typename Fill>
+void section(MapReader& parent, const std::string& key, Fill fill) {
+  if (auto reader = parent.child(key)) {
+    fill(*reader);
+    reader->finish();
+  }
+}
+
+void readBody(MapReader& root, sim::BodySpec& b) {
+  root.require("body");
+  section(root, "body", [&](MapReader& r) {
+    r.read("shape", b.shape);
+    if (b.shape == "ellipsoid") r.fail("shape", "ellipsoid is not available yet; use paraboloid");
+    r.require("mass");
+    r.read("mass", b.mass);
+    if (b.shape == "paraboloid") {
+      r.require("paraboloid");
+      r.require("grid");
+    }
+    section(r, "paraboloid", [&](MapReader& p) {
+      for (const char* key : {"a", "p", "s", "top"}) p.require(key);
+      p.read("a", b.paraboloid.a);
+      p.read("p", b.paraboloid.p);
+      p.read("q", b.paraboloid.q);
+      p.read("s", b.paraboloid.s);
+      p.read("top", b.paraboloid.top);
+    });
+    section(r, "dents", [&](MapReader& d) {
+      d.require("scale");
+      d.require("at");
+      b.dents.emplace();
+      d.read("scale", b.dents->scale);
+      d.read("at", b.dents->at);
+      d.read("inset", b.dents->inset);
+    });
+    section(r, "grid", [&](MapReader& g) {
+      for (const char* key : {"dx", "dy", "dz"}) g.require(key);
+      g.read("dx", b.grid.dx);
+      g.read("dy", b.grid.dy);
+      g.read("dz", b.grid.dz);
+    });
+  });
+}
+
+void readContact(MapReader& root, sim::ContactSpec& c) {
+  root.require("contact");
+  section(root, "contact", [&](MapReader& r) {
+    r.read("model", c.model);
+    if (c.model != "rolling") r.require("stiffness");
+    r.read("stiffness", c.stiffness);
+    r.read("damping", c.damping);
+    r.read("friction", c.friction);
+    r.read("friction_law", c.friction_law);
+    r.read("slip_velocity", c.slip_velocity);
+    r.read("air_drag", c.air_drag);
+  });
+}
+
+void readRest(MapReader& root, sim::SceneSpec& s) {
+  section(root, "units", [&](MapReader& r) { r.read("length", s.units.length); });
+  root.read("gravity", s.gravity);
+  section(root, "initial", [&](MapReader& r) {
+    r.read("spin", s.initial.spin);
+    r.read("tilt", s.initial.tilt);
+  });
+  root.require("simulation");
+  section(root, "simulation", [&](MapReader& r) {
+    r.require("dt");
+    r.require("duration");
+    r.read("integrator", s.simulation.integrator);
+    r.read("dt", s.simulation.dt);
+    r.read("duration", s.simulation.duration);
+  });
+  section(root, "video", [&](MapReader& r) {
+    r.read("fps", s.video.fps);
+    r.read("size", s.video.size);
+    r.read("view", s.video.view);
+    r.read("playback", s.video.playback);
+  });
+}
+
+std::string format(const std::string& file, int line, const std::string& key,
+                   const std::string& message) {
+  std::ostringstream s;
+  s << file << ":" << line << ": " << key << " " << message;
+  return s.str();
+}
+
+}  // namespace
+
+std::variant<Loaded, LoadError> loadString(const std::string& yaml, const std::string& name) {
+  Loaded out;
+  out.file = name;
+  try {
+    const YAML::Node root_node = YAML::Load(yaml);
+    if (!root_node.IsDefined() || root_node.IsNull())
+      return LoadError{name + ":1: the scene is empty; expected keys such as body, contact, "
+                              "simulation"};
+    MapReader root(root_node, "", out);
+    readBody(root, out.spec.body);
+    readContact(root, out.spec.contact);
+    readRest(root, out.spec);
+    root.finish();
+  } catch (const Failure& f) {
+    return LoadError{format(name, f.line, f.key, f.message)};
+  } catch (const YAML::Exception& e) {
+    // Syntax errors: yaml-cpp knows the line but no key.
+    const int line = e.mark.is_null() ? 1 : e.mark.line + 1;
+    return LoadError{name + ":" + std::to_string(line) + ": malformed YAML: " + e.msg};
+  }
+  return out;
+}
+
+std::variant<Loaded, LoadError> loadFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return LoadError{path + ": cannot open the scene file"};
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) return LoadError{path + ": cannot read the scene file"};
+  return loadString(text.str(), path);
+}
+
+std::string describe(const Loaded& loaded, const sim::SpecError& error) {
+  if (auto it = loaded.overrides.find(error.key); it != loaded.overrides.end())
+    return it->second + ": " + error.key + " " + error.message;
+  // The key's own line, else the nearest enclosing key that the file has.
+  std::string key = error.key;
+  while (!key.empty()) {
+    if (auto it = loaded.lines.find(key); it != loaded.lines.end())
+      return format(loaded.file, it->second, error.key, error.message);
+    const auto dot = key.rfind('.');
+    key = dot == std::string::npos ? "" : key.substr(0, dot);
+  }
+  return format(loaded.file, 1, error.key, error.message);
+}
+
+std::variant<sim::Model, LoadError> loadModel(const Loaded& loaded) {
+  auto compiled = sim::compile(loaded.spec);
+  if (auto* error = std::get_if<sim::SpecError>(&compiled))
+    return LoadError{describe(loaded, *error)};
+  return std::move(std::get<sim::Model>(compiled));
+}
+
+}  // namespace scene

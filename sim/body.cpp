@@ -1,0 +1,146 @@
+#include "sim/body.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace sim {
+namespace {
+
+// Number of half-offset grid columns on one side of the origin that lie within `half_width`:
+// positions (i + ½) d for i = 0 … n−1 with (n − ½) d ≤ half_width (seed §3.1: x ∈ ±3.9 for
+// a half-width of 4 and d = 0.52).
+int halfColumns(double half_width, double d) {
+  return static_cast<int>(std::floor(half_width / d + 0.5));
+}
+
+// Number of z levels below the top: z_k = top − k dz for k = 0 … n, down to the apex.
+int zLevels(const Paraboloid& shape, double dz) {
+  return static_cast<int>(std::floor((shape.top + shape.a) / dz + 1e-9));
+}
+
+}  // namespace
+
+Eigen::Vector2d Paraboloid::rimHalfWidths() const {
+  // The rim is the ellipse ½ uᵀ H u = top + a with H the bottom's Hessian; its half-width
+  // along an axis is sqrt(2 (top + a) (H⁻¹)_ii).
+  Eigen::Matrix2d hessian;
+  hessian << p / a, q / (a * a), q / (a * a), s / a;
+  const Eigen::Matrix2d inverse = hessian.inverse();
+  const double height = top + a;
+  return {std::sqrt(2 * height * inverse(0, 0)), std::sqrt(2 * height * inverse(1, 1))};
+}
+
+Eigen::Vector3d Paraboloid::lowestPoint(const Eigen::Vector3d& down) const {
+  Eigen::Matrix2d hessian;
+  hessian << p / a, q / (a * a), q / (a * a), s / a;
+  const Eigen::Vector2d slope(-down.x() / down.z(), -down.y() / down.z());
+  const Eigen::Vector2d xy = hessian.inverse() * slope;
+  return {xy.x(), xy.y(), bottom(xy.x(), xy.y())};
+}
+
+double Dents::surface(const Paraboloid& shape, double x, double y) const {
+  const double cx = shape.p / (2 * shape.a * scale * scale);
+  const double cy = shape.s / (2 * shape.a * scale * scale);
+  const double first = cx * (x - mx) * (x - mx) + cy * (y - my) * (y - my);
+  const double second = cx * (x + mx) * (x + mx) + cy * (y + my) * (y + my);
+  return std::min(first, second) - (shape.a - inset) * scale;
+}
+
+std::int64_t estimateGridPoints(const Paraboloid& shape, const Grid& grid) {
+  const Eigen::Vector2d half = shape.rimHalfWidths();
+  const double columns = 4.0 * halfColumns(half.x(), grid.dx) * halfColumns(half.y(), grid.dy);
+  const double levels = zLevels(shape, grid.dz) + 1.0;
+  const double bound = columns * levels;  // the bounding box: an upper bound
+  return bound > 9e18 ? std::numeric_limits<std::int64_t>::max()
+                      : static_cast<std::int64_t>(bound);
+}
+
+BodyGrid buildBodyGrid(const Paraboloid& shape, const std::optional<Dents>& dents,
+                       const Grid& grid, double mass) {
+  const Eigen::Vector2d half = shape.rimHalfWidths();
+  const int nx = halfColumns(half.x(), grid.dx);
+  const int ny = halfColumns(half.y(), grid.dy);
+  const int nz = zLevels(shape, grid.dz);
+
+  PointMoments moments;
+  BodyGrid out;
+  for (int j = -ny; j < ny; ++j) {
+    const double y = (j + 0.5) * grid.dy;
+    for (int i = -nx; i < nx; ++i) {
+      const double x = (i + 0.5) * grid.dx;
+      const double z_bottom = shape.bottom(x, y);
+      if (z_bottom > shape.top) continue;
+      const double z_dent = dents ? dents->surface(shape, x, y)
+                                  : std::numeric_limits<double>::infinity();
+      // The column's points: z_k = top − k dz with z_bottom ≤ z_k < z_dent (seed appendix).
+      int first = -1, last = -1;
+      double sum_z = 0, sum_zz = 0;
+      for (int k = 0; k <= nz; ++k) {
+        const double z = shape.top - k * grid.dz;
+        if (z < z_bottom) break;
+        if (z >= z_dent) continue;
+        if (first < 0) first = k;
+        last = k;
+        sum_z += z;
+        sum_zz += z * z;
+      }
+      if (first < 0) continue;
+      moments.addColumn(x, y, last - first + 1, sum_z, sum_zz);
+      // Surface: the column's topmost point is on the top (red), its lowest on the bottom
+      // (blue); a one-point column is top only (seed §3.1 figures: 308 + 294 = 602).
+      out.surface.top.emplace_back(x, y, shape.top - first * grid.dz);
+      if (last != first) out.surface.bottom.emplace_back(x, y, shape.top - last * grid.dz);
+    }
+  }
+  out.mass = moments.properties(mass);
+  return out;
+}
+
+void PointMoments::addColumn(double x, double y, std::int64_t n, double sum_z, double sum_zz) {
+  const double count = static_cast<double>(n);
+  count_ += n;
+  sum_ += Eigen::Vector3d(count * x, count * y, sum_z);
+  sum_outer_(0, 0) += count * x * x;
+  sum_outer_(1, 1) += count * y * y;
+  sum_outer_(0, 1) += count * x * y;
+  sum_outer_(0, 2) += x * sum_z;
+  sum_outer_(1, 2) += y * sum_z;
+  sum_outer_(2, 2) += sum_zz;
+}
+
+MassProperties PointMoments::properties(double mass) const {
+  MassProperties m;
+  m.points = count_;
+  m.mass = mass;
+  if (count_ == 0) return m;
+  const double n = static_cast<double>(count_);
+  Eigen::Matrix3d outer = sum_outer_.selfadjointView<Eigen::Upper>();
+  m.com = sum_ / n;
+  const Eigen::Matrix3d covariance = outer / n - m.com * m.com.transpose();
+  m.inertia = mass * (covariance.trace() * Eigen::Matrix3d::Identity() - covariance);
+  principalAxes(m);
+  return m;
+}
+
+Eigen::Matrix3d inertiaAbout(const MassProperties& m, const Eigen::Vector3d& point) {
+  const Eigen::Vector3d d = m.com - point;
+  return m.inertia + m.mass * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
+}
+
+void principalAxes(MassProperties& m) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(m.inertia);
+  m.principal = solver.eigenvalues();  // ascending
+  m.axes = solver.eigenvectors();
+  // Orient: the least-inertia axis points along +y (the long axis), the largest along +z,
+  // and the set is right-handed.
+  if (m.axes.col(0).y() < 0) m.axes.col(0) *= -1;
+  if (m.axes.col(2).z() < 0) m.axes.col(2) *= -1;
+  m.axes.col(1) = m.axes.col(2).cross(m.axes.col(0));
+  // Misalignment: angle from +y to the horizontal projection of the least-inertia axis,
+  // positive counter-clockwise about +z (SPEC: ≈ +2.2° for the default body).
+  const Eigen::Vector3d least = m.axes.col(0);
+  m.misalignment_deg = std::atan2(-least.x(), least.y()) * 180.0 / M_PI;
+}
+
+}  // namespace sim

@@ -1,0 +1,102 @@
+// The paraboloid body of the seed (§3.1–3.2): its surface, its point grid and
+// its mass properties. All lengths here are metres, in the body's geometric
+// frame: x the short axis, y the long axis, z up; the origin is the seed's,
+// on the paraboloid's axis at height a above its apex.
+#pragma once
+
+#include <Eigen/Dense>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace sim {
+
+/// Paraboloid shape in metres: bottom z = p/(2a) x² + q/a² xy + s/(2a) y² − a
+/// (SPEC; the seed's eq. 24), flat top at z = top.
+struct Paraboloid {
+  double a, p, q, s, top;
+  /// Height of the bottom surface above (x, y), m.
+  double bottom(double x, double y) const {
+    return p / (2 * a) * x * x + q / (a * a) * x * y + s / (2 * a) * y * y - a;
+  }
+  /// Half-widths of the top rim ellipse along x and y, m.
+  Eigen::Vector2d rimHalfWidths() const;
+  /// The point of the bottom surface lowest along `down` (a unit vector in the geometric
+  /// frame, down.z < 0): where the outward normal (f_x, f_y, −1) is parallel to `down`, i.e.
+  /// H (x, y) = −(down_x, down_y)/down_z with H the Hessian [p/a, q/a²; q/a², s/a]. Metres.
+  Eigen::Vector3d lowestPoint(const Eigen::Vector3d& down) const;
+};
+
+/// Two dents z = p/(2a k²)(x ∓ m_x)² + s/(2a k²)(y ∓ m_y)² − (a − inset) k cut from
+/// the top (seed appendix; the second dent at (−m_x, −m_y)). Metres.
+struct Dents {
+  double scale;  ///< k
+  double mx, my;
+  double inset;
+  /// Height of the lower of the two dent surfaces above (x, y), m: grid points at
+  /// or above it are removed.
+  double surface(const Paraboloid& shape, double x, double y) const;
+};
+
+/// Uniform grid spacing, m.
+struct Grid {
+  double dx, dy, dz;
+};
+
+/// Surface points of the grid, in the geometric frame (m).
+struct SurfacePoints {
+  std::vector<Eigen::Vector3d> top;     ///< topmost point of each column (red)
+  std::vector<Eigen::Vector3d> bottom;  ///< lowest point of each column (blue)
+};
+
+/// Mass properties of a uniform-density point cloud.
+struct MassProperties {
+  std::int64_t points = 0;       ///< grid points inside the body
+  double mass = 0;               ///< kg
+  Eigen::Vector3d com;           ///< centre of mass in the geometric frame, m
+  Eigen::Matrix3d inertia;       ///< about the CM, geometric axes, kg m²
+  Eigen::Vector3d principal;     ///< principal moments, ascending, kg m²
+  Eigen::Matrix3d axes;          ///< columns: principal axes (geometric frame), right-handed
+  double misalignment_deg = 0;   ///< from the long (y) axis to the least-inertia axis's
+                                 ///< horizontal projection, + counter-clockwise about z
+};
+
+/// Running moments of a cloud of equal point masses: Σ1, Σp, Σ p pᵀ (geometric frame, m).
+class PointMoments {
+ public:
+  void add(const Eigen::Vector3d& p) { addColumn(p.x(), p.y(), 1, p.z(), p.z() * p.z()); }
+  /// `n` points at (x, y) whose z values sum to `sum_z` and whose squares sum to `sum_zz`.
+  void addColumn(double x, double y, std::int64_t n, double sum_z, double sum_zz);
+  /// Mass properties of `mass` kg spread evenly over the points:
+  /// com = Σp/N, I = M (tr C · 1 − C) with C = Σ p pᵀ/N − com comᵀ.
+  MassProperties properties(double mass) const;
+
+ private:
+  std::int64_t count_ = 0;
+  Eigen::Vector3d sum_ = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d sum_outer_ = Eigen::Matrix3d::Zero();
+};
+
+/// Inertia about `point` (geometric frame) by the parallel-axis theorem:
+/// I_P = I_cm + M (|d|² 1 − d dᵀ), d = com − point. kg m².
+Eigen::Matrix3d inertiaAbout(const MassProperties& m, const Eigen::Vector3d& point);
+
+/// The grid columns are at half-offset positions x = (i + ½) dx, y = (j + ½) dy, symmetric
+/// about the origin with none on x = 0 or y = 0 (the seed's odd-point rule, §3.1), covering
+/// the top rim; z runs down from the top in steps of dz. A point belongs to the body when it
+/// is on or above the bottom and below the dents. Returns the number of grid points.
+std::int64_t estimateGridPoints(const Paraboloid& shape, const Grid& grid);
+
+/// Walks the grid once: mass properties of `mass` kg spread evenly over the points, and the
+/// surface points (top and bottom of every column), in the geometric frame.
+struct BodyGrid {
+  MassProperties mass;
+  SurfacePoints surface;
+};
+BodyGrid buildBodyGrid(const Paraboloid& shape, const std::optional<Dents>& dents,
+                       const Grid& grid, double mass);
+
+/// Principal moments, axes and misalignment angle of an inertia tensor (kg m²).
+void principalAxes(MassProperties& m);
+
+}  // namespace sim

@@ -1,0 +1,66 @@
+#include "sim/contact.hpp"
+
+#include <cmath>
+
+namespace sim {
+
+Kinematics kinematicsOf(const Model& model, const State& s) {
+  Kinematics k;
+  k.R = s.q.toRotationMatrix();
+  k.x_world = s.x_world;
+  k.v_world = s.v_world;
+  // ω = R I⁻¹ Rᵀ L
+  k.w_world = k.R * (model.body.inertia_inv * (k.R.transpose() * s.L_world));
+  return k;
+}
+
+Eigen::Vector3d angularVelocity(const Model& model, const State& s) {
+  const Eigen::Matrix3d R = s.q.toRotationMatrix();
+  return R * (model.body.inertia_inv * (R.transpose() * s.L_world));
+}
+
+namespace {
+
+// Friction force (N) on a point sliding at v_t (horizontal, m/s) under normal force N.
+Eigen::Vector2d frictionForce(const Contact& c, const Eigen::Vector2d& v_t, double normal) {
+  const double limit = c.friction * normal;
+  if (limit == 0) return Eigen::Vector2d::Zero();
+  const double speed2 = v_t.squaredNorm();
+  if (c.law == FrictionLaw::Coulomb) {
+    // seed eq. 31: −μ N U_tan / |U_tan|
+    return speed2 > 0 ? Eigen::Vector2d(-limit * v_t / std::sqrt(speed2))
+                      : Eigen::Vector2d::Zero();
+  }
+  const double eps = c.slip_velocity;
+  return -limit * v_t / std::sqrt(speed2 + eps * eps);
+}
+
+}  // namespace
+
+ContactLoad pointContact(const Model& model, const Kinematics& k) {
+  const ContactPoints& pts = model.body.bottom;
+  const Contact& c = model.contact;
+  const double r20 = k.R(2, 0), r21 = k.R(2, 1), r22 = k.R(2, 2);
+  const double z_cm = k.x_world.z();
+  ContactLoad load;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    // Height of the point above the floor: z = z_cm + (R r)_z. Most points are above it.
+    const double z = z_cm + r20 * pts.x[i] + r21 * pts.y[i] + r22 * pts.z[i];
+    if (z >= 0) continue;
+    const Eigen::Vector3d r = k.R * Eigen::Vector3d(pts.x[i], pts.y[i], pts.z[i]);
+    const Eigen::Vector3d v_point = k.v_world + k.w_world.cross(r);
+    const double depth = -z;
+    ++load.contacts;
+    load.elastic_energy += 0.5 * c.stiffness * depth * depth;
+    const double normal = c.stiffness * depth - c.damping * v_point.z();
+    if (normal <= 0) continue;
+    const Eigen::Vector2d friction = frictionForce(c, v_point.head<2>(), normal);
+    const Eigen::Vector3d f(friction.x(), friction.y(), normal);
+    load.force_world += f;
+    load.torque_world += r.cross(f);
+    load.normal_force += normal;
+  }
+  return load;
+}
+
+}  // namespace sim

@@ -1,0 +1,66 @@
+#include "sim/initial.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace sim {
+namespace {
+
+// Lowest bottom point in world axes relative to the CM, for orientation R.
+Eigen::Vector3d lowestPoint(const Model& model, const Eigen::Matrix3d& R) {
+  const ContactPoints& p = model.body.bottom;
+  Eigen::Vector3d lowest(0, 0, std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Eigen::Vector3d r = R * Eigen::Vector3d(p.x[i], p.y[i], p.z[i]);
+    if (r.z() < lowest.z()) lowest = r;
+  }
+  return lowest;
+}
+
+// Σ k·max(0, −z_i): the floor's spring force with the CM at height z_cm, N.
+double springForce(const Model& model, const Eigen::Matrix3d& R, double z_cm) {
+  const ContactPoints& p = model.body.bottom;
+  double force = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double z = z_cm + R(2, 0) * p.x[i] + R(2, 1) * p.y[i] + R(2, 2) * p.z[i];
+    force += model.contact.stiffness * std::max(0.0, -z);
+  }
+  return force;
+}
+
+}  // namespace
+
+double restingHeight(const Model& model, const Eigen::Matrix3d& R) {
+  // The spring force falls monotonically as the CM rises; the answer lies between touching
+  // (lowest point at 0) and one point carrying the whole weight.
+  const double weight = model.body.mass * model.gravity;
+  double high = -lowestPoint(model, R).z();
+  double low = high - weight / model.contact.stiffness;
+  for (int i = 0; i < 200 && high - low > 1e-15 * std::max(1.0, std::abs(high)); ++i) {
+    const double mid = 0.5 * (low + high);
+    (springForce(model, R, mid) > weight ? low : high) = mid;
+  }
+  return 0.5 * (low + high);
+}
+
+State initialState(const Model& model) {
+  const Initial& init = model.initial;
+  const Eigen::Matrix3d R = (Eigen::AngleAxisd(init.tilt_x, Eigen::Vector3d::UnitX()) *
+                             Eigen::AngleAxisd(init.tilt_y, Eigen::Vector3d::UnitY()))
+                                .toRotationMatrix();
+  State s;
+  s.q = Eigen::Quaterniond(R);
+  s.x_world = Eigen::Vector3d(0, 0, restingHeight(model, R));
+  const Eigen::Vector3d w_world = init.spin * R.col(2);
+  // The lowest point of the smooth surface does not slide: v_cm + ω × r_low = 0. (A grid
+  // point would do for a smooth grid, but on a coarse one the lowest point jumps across the
+  // flat foot and would kick the body sideways.)
+  const Body& body = model.body;
+  const Eigen::Vector3d r_low_body =
+      body.shape.lowestPoint(R.transpose() * -Eigen::Vector3d::UnitZ()) - body.com_geometric;
+  s.v_world = -w_world.cross(R * r_low_body);
+  s.L_world = R * model.body.inertia * R.transpose() * w_world;
+  return s;
+}
+
+}  // namespace sim

@@ -1,0 +1,81 @@
+// The immutable model built once from a scene (SI units throughout) and the state a
+// step advances. Frames: "world" has z up with the floor at z = 0; "body" is the body's
+// geometric axes (x short, y long, z up) with its origin moved to the centre of mass.
+#pragma once
+
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <vector>
+
+#include "sim/body.hpp"
+
+namespace sim {
+
+enum class ContactModel { Points, Smooth, Rolling };
+enum class FrictionLaw { Coulomb, Regularized };
+enum class Integrator { Euler, Symplectic, Rk4 };
+
+/// Contact points as structure-of-arrays, body frame (m), for a tight per-step loop.
+struct ContactPoints {
+  std::vector<double> x, y, z;
+  std::size_t size() const { return x.size(); }
+};
+
+/// Rigid body: mass properties about the CM and the points that can touch the floor.
+struct Body {
+  double mass = 0;                     ///< kg
+  Eigen::Matrix3d inertia;             ///< about the CM, body axes, kg m²
+  Eigen::Matrix3d inertia_inv;         ///< its inverse, 1/(kg m²)
+  Paraboloid shape;                    ///< the smooth surface, geometric frame, m
+  Eigen::Vector3d com_geometric;       ///< CM in the geometric frame, m
+  MassProperties mass_properties;      ///< as computed from the grid (geometric frame)
+  ContactPoints bottom;                ///< bottom-surface points, body frame, m
+  std::vector<Eigen::Vector3d> top_points;     ///< top-surface points, body frame (rendering)
+  std::vector<Eigen::Vector3d> bottom_points;  ///< bottom-surface points, body frame (rendering)
+};
+
+/// Floor contact (SPEC "Contact and friction"): normal force max(0, k·depth − c·v_n) and
+/// friction μN against the sliding velocity, per contact point.
+struct Contact {
+  ContactModel model = ContactModel::Points;
+  double stiffness = 0;      ///< k, N/m per point
+  double damping = 0;        ///< c, N s/m per point
+  double friction = 0;       ///< μ
+  FrictionLaw law = FrictionLaw::Regularized;
+  double slip_velocity = 0;  ///< ε, m/s: F_t = −μN v_t / sqrt(|v_t|² + ε²)
+  double air_drag = 0;       ///< σ, N m s: torque −σω
+};
+
+/// Initial condition (SPEC "Initial state").
+struct Initial {
+  double spin = 0;         ///< rad/s about the body z axis, + counter-clockwise from above
+  double tilt_x = 0;       ///< rad, about body x
+  double tilt_y = 0;       ///< rad, then about the new body y
+};
+
+struct Model {
+  Body body;
+  Contact contact;
+  double gravity = 9.81;   ///< m/s², along −z
+  Integrator integrator = Integrator::Symplectic;
+  double dt = 0;           ///< s
+  std::int64_t steps = 0;  ///< whole steps in the run: round(duration / dt)
+  Initial initial;
+  double length_unit = 1;  ///< m per length unit of the scene file (for reports)
+};
+
+/// The changing data. Time is derived from the step count: t = step · dt.
+struct State {
+  Eigen::Vector3d x_world = Eigen::Vector3d::Zero();  ///< CM position, m
+  Eigen::Vector3d v_world = Eigen::Vector3d::Zero();  ///< CM velocity, m/s
+  Eigen::Quaterniond q = Eigen::Quaterniond::Identity();  ///< body → world rotation
+  Eigen::Vector3d L_world = Eigen::Vector3d::Zero();  ///< angular momentum about the CM, kg m²/s
+  double t = 0;                                       ///< s
+  std::int64_t step = 0;
+};
+
+/// ω_world = R I⁻¹ Rᵀ L (rad/s).
+Eigen::Vector3d angularVelocity(const Model& model, const State& s);
+
+}  // namespace sim

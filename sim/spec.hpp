@@ -1,0 +1,89 @@
+// Plain description of a scene, mirroring the scene file key for key.
+// Lengths are in the file's length unit (units.length metres each); everything
+// else is SI. The loader fills it; compile() checks it and builds a Model.
+#pragma once
+
+#include <array>
+#include <limits>
+#include <optional>
+#include <string>
+
+namespace sim {
+
+inline constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();
+
+/// units: metres per length unit of the file (0.01 = centimetres).
+struct UnitsSpec {
+  double length = 1.0;  ///< m per file length unit, > 0
+};
+
+/// body.paraboloid: bottom z = p/(2a) x² + q/a² xy + s/(2a) y² − a, flat top at z = top
+/// (SPEC "The body"; seed eq. 24). Lengths in file units; p, q, s dimensionless.
+struct ParaboloidSpec {
+  double a = kUnset;    ///< depth of the apex below the origin, > 0
+  double p = kUnset;    ///< curvature across the short axis (x), > 0
+  double q = 0.0;       ///< skew term, makes the bottom's axes turn
+  double s = kUnset;    ///< curvature along the long axis (y), > 0
+  double top = kUnset;  ///< height of the flat top, > −a
+};
+
+/// body.dents: two paraboloid dents cut from the top (seed §3.2 and appendix),
+/// at (+x, +y) and (−x, −y).
+struct DentsSpec {
+  double scale = kUnset;                  ///< k: dent curvature p/(2a k²), depth (a − inset) k
+  std::array<double, 2> at{kUnset, kUnset};  ///< (m_x, m_y), file units
+  double inset = 0.1;                     ///< the seed's constant, file units
+};
+
+/// body.grid: uniform point grid (seed §3.1), file units.
+struct GridSpec {
+  double dx = kUnset, dy = kUnset, dz = kUnset;
+};
+
+struct BodySpec {
+  std::string shape = "paraboloid";  ///< paraboloid | ellipsoid
+  ParaboloidSpec paraboloid;
+  std::optional<DentsSpec> dents;    ///< absent: no dents
+  GridSpec grid;
+  double mass = kUnset;  ///< kg, > 0
+};
+
+struct ContactSpec {
+  std::string model = "points";             ///< points | smooth | rolling
+  double stiffness = kUnset;                ///< N/m (points: per point)
+  double damping = 0.0;                     ///< N s/m (points: per point)
+  double friction = 0.5;                    ///< Coulomb coefficient μ
+  std::string friction_law = "regularized";  ///< coulomb | regularized
+  double slip_velocity = 1.0e-3;            ///< m/s, ε of the regularised law
+  double air_drag = 0.0;                    ///< σ, N m s: torque −σω
+};
+
+struct InitialSpec {
+  double spin = 0.0;                    ///< rad/s about the vertical, + = counter-clockwise from above
+  std::array<double, 2> tilt{0.0, 0.0};  ///< degrees, about body x then the new body y
+};
+
+struct SimulationSpec {
+  std::string integrator = "symplectic";  ///< euler | symplectic | rk4
+  double dt = kUnset;                     ///< s, > 0
+  double duration = kUnset;               ///< s, > 0
+};
+
+struct VideoSpec {
+  int fps = 30;
+  std::array<int, 2> size{1280, 720};
+  std::string view = "oblique";  ///< oblique | above | front | side | follow
+  double playback = 1.0;         ///< video seconds per simulated second
+};
+
+struct SceneSpec {
+  UnitsSpec units;
+  BodySpec body;
+  ContactSpec contact;
+  double gravity = 9.81;  ///< m/s²
+  InitialSpec initial;
+  SimulationSpec simulation;
+  VideoSpec video;
+};
+
+}  // namespace sim

@@ -1,0 +1,27 @@
+// How large a step the contact stiffness allows (SPEC "Integrators": refuse a step the
+// contact makes unstable and name the largest stable one).
+#pragma once
+
+#include "sim/model.hpp"
+
+namespace sim {
+
+struct ContactStability {
+  double omega = 0;         ///< stiffest contact mode of the body resting upright, rad/s
+  double zeta = 0;          ///< its damping ratio
+  double largest_step = 0;  ///< s
+};
+
+/// Linearises the floor springs about the upright rest pose: K = Σ k J Jᵀ with
+/// J = (ẑ, r × ẑ) for each point in contact, against the rigid body's mass matrix
+/// diag(M, M, M, I); the stiffest mode is ω² = λ_max(M⁻¹K), and the dampers C = (c/k) K give
+/// it the ratio ζ = c ω / (2k). The largest step is the largest h at which that mode's energy
+/// grows by less than 2× over the whole run under model.integrator: ρ(h)^(2T/h) ≤ 2 with
+/// ρ the spectral radius of one step (for symplectic and rk4 this is just below their
+/// stability limits, about 2/ω and 2.8/ω; forward Euler always gains energy when ζ is small).
+ContactStability contactStability(const Model& model);
+
+/// Spectral radius of one step of size h of `integrator` on x'' + 2ζω x' + ω² x = 0.
+double stepAmplification(Integrator integrator, double omega, double zeta, double h);
+
+}  // namespace sim

@@ -1,0 +1,25 @@
+// What a run reports at each sample (SPEC "Outputs a user expects").
+#pragma once
+
+#include "sim/model.hpp"
+
+namespace sim {
+
+struct Telemetry {
+  double t = 0;          ///< s
+  double spin = 0;       ///< n = ω·ẑ, rad/s (+ counter-clockwise from above)
+  double kinetic = 0;    ///< ½ M v² + ½ ω·L, J
+  double potential = 0;  ///< M g z_cm, J (zero with the CM on the floor)
+  double elastic = 0;    ///< Σ ½ k depth², J
+  double energy = 0;     ///< kinetic + potential + elastic, J
+  double tilt_deg = 0;   ///< angle between the body z axis and the vertical, degrees
+  Eigen::Vector3d x_world = Eigen::Vector3d::Zero();  ///< CM, m
+  Eigen::Vector3d w_world = Eigen::Vector3d::Zero();  ///< ω, rad/s
+  Eigen::Vector3d L_world = Eigen::Vector3d::Zero();  ///< angular momentum about the CM
+  int contacts = 0;        ///< points below the floor
+  double normal_force = 0;  ///< N
+};
+
+Telemetry telemetryOf(const Model& model, const State& s);
+
+}  // namespace sim

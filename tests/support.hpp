@@ -1,0 +1,64 @@
+// Shared helpers for the tests: inline scenes parsed by the real loader, compiled by the
+// real compile(), and short runs.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "scene/loader.hpp"
+#include "sim/compile.hpp"
+#include "sim/initial.hpp"
+#include "sim/run.hpp"
+#include "sim/step.hpp"
+#include "sim/telemetry.hpp"
+
+namespace testing_support {
+
+/// The seed report's body (seed §3.1–3.3), lengths in cm.
+inline const char* kSeedScene = R"(
+units: {length: 0.01}
+body:
+  shape: paraboloid
+  paraboloid: {a: 4, p: 3, q: 0, s: 0.15, top: 2}
+  dents: {scale: 0.375, at: [1.04, 9.23], inset: 0.1}
+  grid: {dx: 0.52, dy: 1.42, dz: 0.2}
+  mass: 0.5
+contact: {model: points, stiffness: 2.0e4, damping: 20, friction: 0.3, friction_law: coulomb}
+initial: {spin: 0.0, tilt: [0.0, 0.0]}
+simulation: {integrator: symplectic, dt: 1.0e-5, duration: 1.0}
+)";
+
+/// The stable body of SPEC (a=1, p=0.5, s=0.03, top=0.5, dents 0.45 at (0.73, 4.50) cm).
+inline const char* kStableScene = R"(
+units: {length: 0.01}
+body:
+  shape: paraboloid
+  paraboloid: {a: 1.0, p: 0.5, q: 0.0, s: 0.03, top: 0.5}
+  dents: {scale: 0.45, at: [0.73, 4.50], inset: 0.1}
+  grid: {dx: 0.1, dy: 0.2, dz: 0.005}
+  mass: 0.059
+contact: {model: points, stiffness: 2.0e4, damping: 4, friction: 0.5, friction_law: regularized}
+initial: {spin: -5.0, tilt: [0.5, 0.5]}
+simulation: {integrator: symplectic, dt: 2.0e-5, duration: 1.0}
+)";
+
+inline sim::SceneSpec parse(const std::string& yaml) {
+  auto loaded = scene::loadString(yaml, "inline.yaml");
+  if (auto* e = std::get_if<scene::LoadError>(&loaded)) {
+    ADD_FAILURE() << e->message;
+    return {};
+  }
+  return std::get<scene::Loaded>(loaded).spec;
+}
+
+inline sim::Model build(const sim::SceneSpec& spec) {
+  auto compiled = sim::compile(spec);
+  if (auto* e = std::get_if<sim::SpecError>(&compiled)) {
+    ADD_FAILURE() << e->key << " " << e->message;
+    return {};
+  }
+  return std::get<sim::Model>(compiled);
+}
+
+}  // namespace testing_support
