@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -22,20 +23,30 @@ std::string join(const std::string& prefix, const std::string& key) {
   return prefix.empty() ? key : prefix + "." + key;
 }
 
-// Reads one YAML map: each key is looked up once, and finish() rejects the keys nobody asked
-// for. Records the line of every key it sees.
+// Reads one YAML map whose keys must be among `allowed`: an unknown or repeated key is
+// rejected before anything else is read. Records the line of every key it sees.
 class MapReader {
  public:
-  MapReader(const YAML::Node& node, std::string path, Loaded& out)
-      : node_(node), path_(std::move(path)), out_(out) {
+  /// `line` is where the map's own key stands (1 for the whole file).
+  MapReader(const YAML::Node& node, std::string path, int line, Loaded& out,
+            std::initializer_list<const char*> allowed)
+      : path_(std::move(path)), line_(line), out_(out) {
     if (!node.IsMap())
-      throw Failure{lineOf(node), path_.empty() ? "scene" : path_,
+      throw Failure{line_, path_.empty() ? "scene" : path_,
                     "must be a map of keys (key: value)"};
     std::set<std::string> seen;
     for (const auto& entry : node) {
       const std::string key = entry.first.as<std::string>();
       if (!seen.insert(key).second)
         throw Failure{lineOf(entry.first), join(path_, key), "is given twice"};
+      if (std::find_if(allowed.begin(), allowed.end(), [&](const char* name) {
+            return key == name;
+          }) == allowed.end()) {
+        std::string names;
+        for (const char* name : allowed) names += std::string(names.empty() ? "" : ", ") + name;
+        throw Failure{lineOf(entry.first), join(path_, key),
+                      "is not a known key (known here: " + names + ")"};
+      }
       out_.lines[join(path_, key)] = lineOf(entry.first);
       present_[key] = entry.second;
       key_lines_[key] = lineOf(entry.first);
@@ -70,32 +81,25 @@ class MapReader {
   }
 
   /// A nested map, or nothing when the key is absent.
-  std::optional<MapReader> child(const std::string& key) {
+  std::optional<MapReader> child(const std::string& key,
+                                 std::initializer_list<const char*> allowed) {
     auto node = take(key);
     if (!node) return std::nullopt;
-    return MapReader(*node, join(path_, key), out_);
+    return MapReader(*node, join(path_, key), key_lines_.at(key), out_, allowed);
   }
 
   void require(const std::string& key) const {
-    if (!has(key)) throw Failure{lineOf(node_), join(path_, key), "is required"};
+    if (!has(key)) throw Failure{line_, join(path_, key), "is required"};
   }
 
   [[noreturn]] void fail(const std::string& key, const std::string& message) const {
     throw Failure{key_lines_.at(key), join(path_, key), message};
   }
 
-  /// Rejects keys that were never read.
-  void finish() const {
-    for (const auto& [key, node] : present_)
-      if (!taken_.count(key))
-        throw Failure{key_lines_.at(key), join(path_, key), "is not a known key" + hint()};
-  }
-
  private:
   std::optional<YAML::Node> take(const std::string& key) {
     auto it = present_.find(key);
     if (it == present_.end()) return std::nullopt;
-    taken_.insert(key);
     return it->second;
   }
 
@@ -114,33 +118,24 @@ class MapReader {
     return static_cast<int>(v);
   }
 
-  std::string hint() const {
-    std::string names;
-    for (const auto& key : taken_) names += (names.empty() ? "" : ", ") + key;
-    return names.empty() ? "" : " (known here: " + names + ")";
-  }
-
-  YAML::Node node_;
   std::string path_;
+  int line_;
   Loaded& out_;
   std::map<std::string, YAML::Node> present_;
   std::map<std::string, int> key_lines_;
-  std::set<std::string> taken_;
 };
 
-// Reads every key of one section, then rejects the rest. A missing optional section keeps
-// the spec's defaults.
+// Reads one section whose keys must be among `allowed`. A missing optional section keeps the
+// spec's defaults.
 template <typename Fill>
-void section(MapReader& parent, const std::string& key, Fill fill) {
-  if (auto reader = parent.child(key)) {
-    fill(*reader);
-    reader->finish();
-  }
+void section(MapReader& parent, const std::string& key,
+             std::initializer_list<const char*> allowed, Fill fill) {
+  if (auto reader = parent.child(key, allowed)) fill(*reader);
 }
 
 void readBody(MapReader& root, sim::BodySpec& b) {
   root.require("body");
-  section(root, "body", [&](MapReader& r) {
+  section(root, "body", {"shape", "paraboloid", "dents", "grid", "mass"}, [&](MapReader& r) {
     r.read("shape", b.shape);
     if (b.shape == "ellipsoid") r.fail("shape", "ellipsoid is not available yet; use paraboloid");
     r.require("mass");
@@ -149,7 +144,7 @@ void readBody(MapReader& root, sim::BodySpec& b) {
       r.require("paraboloid");
       r.require("grid");
     }
-    section(r, "paraboloid", [&](MapReader& p) {
+    section(r, "paraboloid", {"a", "p", "q", "s", "top"}, [&](MapReader& p) {
       for (const char* key : {"a", "p", "s", "top"}) p.require(key);
       p.read("a", b.paraboloid.a);
       p.read("p", b.paraboloid.p);
@@ -157,7 +152,7 @@ void readBody(MapReader& root, sim::BodySpec& b) {
       p.read("s", b.paraboloid.s);
       p.read("top", b.paraboloid.top);
     });
-    section(r, "dents", [&](MapReader& d) {
+    section(r, "dents", {"scale", "at", "inset"}, [&](MapReader& d) {
       d.require("scale");
       d.require("at");
       b.dents.emplace();
@@ -165,7 +160,7 @@ void readBody(MapReader& root, sim::BodySpec& b) {
       d.read("at", b.dents->at);
       d.read("inset", b.dents->inset);
     });
-    section(r, "grid", [&](MapReader& g) {
+    section(r, "grid", {"dx", "dy", "dz"}, [&](MapReader& g) {
       for (const char* key : {"dx", "dy", "dz"}) g.require(key);
       g.read("dx", b.grid.dx);
       g.read("dy", b.grid.dy);
@@ -176,7 +171,10 @@ void readBody(MapReader& root, sim::BodySpec& b) {
 
 void readContact(MapReader& root, sim::ContactSpec& c) {
   root.require("contact");
-  section(root, "contact", [&](MapReader& r) {
+  section(root, "contact",
+          {"model", "stiffness", "damping", "friction", "friction_law", "slip_velocity",
+           "air_drag"},
+          [&](MapReader& r) {
     r.read("model", c.model);
     if (c.model != "rolling") r.require("stiffness");
     r.read("stiffness", c.stiffness);
@@ -189,21 +187,21 @@ void readContact(MapReader& root, sim::ContactSpec& c) {
 }
 
 void readRest(MapReader& root, sim::SceneSpec& s) {
-  section(root, "units", [&](MapReader& r) { r.read("length", s.units.length); });
+  section(root, "units", {"length"}, [&](MapReader& r) { r.read("length", s.units.length); });
   root.read("gravity", s.gravity);
-  section(root, "initial", [&](MapReader& r) {
+  section(root, "initial", {"spin", "tilt"}, [&](MapReader& r) {
     r.read("spin", s.initial.spin);
     r.read("tilt", s.initial.tilt);
   });
   root.require("simulation");
-  section(root, "simulation", [&](MapReader& r) {
+  section(root, "simulation", {"integrator", "dt", "duration"}, [&](MapReader& r) {
     r.require("dt");
     r.require("duration");
     r.read("integrator", s.simulation.integrator);
     r.read("dt", s.simulation.dt);
     r.read("duration", s.simulation.duration);
   });
-  section(root, "video", [&](MapReader& r) {
+  section(root, "video", {"fps", "size", "view", "playback"}, [&](MapReader& r) {
     r.read("fps", s.video.fps);
     r.read("size", s.video.size);
     r.read("view", s.video.view);
@@ -228,11 +226,11 @@ std::variant<Loaded, LoadError> loadString(const std::string& yaml, const std::s
     if (!root_node.IsDefined() || root_node.IsNull())
       return LoadError{name + ":1: the scene is empty; expected keys such as body, contact, "
                               "simulation"};
-    MapReader root(root_node, "", out);
+    MapReader root(root_node, "", 1, out,
+                   {"units", "body", "contact", "gravity", "initial", "simulation", "video"});
     readBody(root, out.spec.body);
     readContact(root, out.spec.contact);
     readRest(root, out.spec);
-    root.finish();
   } catch (const Failure& f) {
     return LoadError{format(name, f.line, f.key, f.message)};
   } catch (const YAML::Exception& e) {

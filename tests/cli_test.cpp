@@ -1,0 +1,148 @@
+// The command-line program as a user meets it: exit statuses, one-line errors, and output
+// files that appear whole or not at all.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int status;
+  std::string out, err;
+};
+
+// Runs `rattleback ARGS` with stdout and stderr captured.
+Result rattleback(const std::string& args) {
+  const fs::path dir = fs::path(testing::TempDir()) / "rattleback_cli";
+  fs::create_directories(dir);
+  const std::string out = (dir / "stdout").string(), err = (dir / "stderr").string();
+  const std::string command =
+      std::string(RATTLEBACK_BIN) + " " + args + " >" + out + " 2>" + err + " </dev/null";
+  const int raw = std::system(command.c_str());
+  auto slurp = [](const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  };
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+}
+
+std::string scene(const std::string& name) {
+  return std::string(RATTLEBACK_SOURCE_DIR) + "/scenes/" + name + ".yaml";
+}
+
+fs::path tempFile(const std::string& name) {
+  const fs::path dir = fs::path(testing::TempDir()) / "rattleback_cli";
+  fs::create_directories(dir);
+  fs::remove(dir / name);
+  return dir / name;
+}
+
+// A copy of a shipped scene with one line changed.
+fs::path badScene(const std::string& from, const std::string& to) {
+  std::ifstream in(scene("seed-reversed"));
+  std::stringstream s;
+  s << in.rdbuf();
+  std::string text = s.str();
+  text.replace(text.find(from), from.size(), to);
+  const fs::path path = tempFile("bad.yaml");
+  std::ofstream(path) << text;
+  return path;
+}
+
+int lines(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
+
+}  // namespace
+
+TEST(Cli, HelpOnEveryCommand) {
+  for (const char* command : {"--help", "simulate --help", "analyze --help"}) {
+    const Result r = rattleback(command);
+    EXPECT_EQ(r.status, 0) << command;
+    EXPECT_NE(r.out.find("Usage"), std::string::npos) << command;
+  }
+}
+
+TEST(Cli, BadSceneExitsTwoWithOneLineAndWritesNothing) {
+  const fs::path csv = tempFile("never.csv");
+  const fs::path bad = badScene("mass: 0.5", "mass: -0.5");
+  const Result r = rattleback("simulate " + bad.string() + " -o " + csv.string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_EQ(r.err.rfind(bad.string() + ":", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(": body.mass must be > 0"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(csv));
+}
+
+TEST(Cli, BadInputLeavesAnExistingOutputUntouched) {
+  const fs::path csv = tempFile("keep.csv");
+  std::ofstream(csv) << "precious\n";
+  for (const std::string& args :
+       {"simulate " + badScene("dt: 1.0e-5", "dt: 0.5").string() + " -o " + csv.string(),
+        "simulate " + scene("seed-reversed") + " --dt -1 -o " + csv.string(),
+        "simulate " + scene("seed-reversed") + " --integrator leapfrog -o " + csv.string(),
+        "simulate " + scene("seed-reversed") + " --rate 7 --dt 1e-5 -o " + csv.string()}) {
+    const Result r = rattleback(args);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    std::ifstream in(csv);
+    std::string content;
+    std::getline(in, content);
+    EXPECT_EQ(content, "precious") << args;
+  }
+}
+
+TEST(Cli, UnwritableOutputIsReportedCleanly) {
+  for (const char* target : {"/nonexistent/dir/x.csv", "/dev/full"}) {
+    const Result r =
+        rattleback("simulate " + scene("seed-reversed") + " --duration 0.05 -o " + target);
+    EXPECT_EQ(r.status, 2) << target;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_EQ(r.err.rfind(std::string(target) + ":", 0), 0u) << r.err;
+  }
+}
+
+TEST(Cli, SimulateWritesTelemetryWithUnitsAndSummary) {
+  const fs::path csv = tempFile("run.csv");
+  const Result r = rattleback("simulate " + scene("seed-reversed") +
+                              " --duration 0.1 --rate 100 -o " + csv.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("first reversal"), std::string::npos);
+  EXPECT_NE(r.out.find("per simulated second"), std::string::npos);
+  std::ifstream in(csv);
+  std::string line, header;
+  int comments = 0, rows = 0;
+  while (std::getline(in, line)) {
+    if (line.rfind("#", 0) == 0) {
+      ++comments;
+    } else if (header.empty()) {
+      header = line;
+    } else {
+      ++rows;
+    }
+  }
+  EXPECT_GE(comments, 1);  // the units line
+  EXPECT_EQ(header.rfind("t,spin,energy,kinetic,potential,elastic,tilt_deg,x,y,z,", 0), 0u);
+  EXPECT_NE(header.find("contacts,normal_force"), std::string::npos);
+  EXPECT_EQ(rows, 11);  // t = 0, 0.01, …, 0.1 at 100 Hz
+  // No temporary file is left beside it.
+  for (const auto& entry : fs::directory_iterator(csv.parent_path()))
+    EXPECT_EQ(entry.path().filename().string().find(".partial-"), std::string::npos);
+}
+
+TEST(Cli, AnalyzeJsonHasTheSeedCounts) {
+  const Result r = rattleback("analyze " + scene("seed-reversed") + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\"total\": 4256"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"top\": 308"), std::string::npos);
+  EXPECT_NE(r.out.find("\"bottom\": 294"), std::string::npos);
+  for (const char* key : {"\"mass\"", "\"com\"", "\"inertia\"", "\"misalignment_deg\""})
+    EXPECT_NE(r.out.find(key), std::string::npos) << key;
+}

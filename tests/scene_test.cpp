@@ -1,0 +1,129 @@
+// Scene files: the shipped scenes load, and every kind of bad input gets one line naming the
+// file, the line and the key.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "support.hpp"
+
+using namespace testing_support;
+
+namespace {
+
+// Line numbers below refer to this text.
+const char* kBase = R"(units: {length: 0.01}
+body:
+  shape: paraboloid
+  paraboloid: {a: 4, p: 3, q: 0, s: 0.15, top: 2}
+  dents: {scale: 0.375, at: [1.04, 9.23], inset: 0.1}
+  grid: {dx: 0.52, dy: 1.42, dz: 0.2}
+  mass: 0.5
+contact: {model: points, stiffness: 2.0e4, damping: 20, friction: 0.3, friction_law: coulomb}
+initial: {spin: 0.0, tilt: [0.0, 0.0]}
+simulation: {integrator: symplectic, dt: 1.0e-5, duration: 1.0}
+)";
+
+struct BadCase {
+  const char* from;      // text in kBase to replace ("" appends `to`)
+  const char* to;
+  const char* expected;  // the start of the message after "inline.yaml:"
+};
+
+const BadCase kBadCases[] = {
+    {"mass: 0.5", "mass: -1", "7: body.mass must be > 0"},
+    {"mass: 0.5", "mass: 0", "7: body.mass must be > 0"},
+    {"mass: 0.5", "mass: heavy", "7: body.mass must be a number"},
+    {"mass: 0.5", "mass: .nan", "7: body.mass must be > 0, not nan"},
+    {"mass: 0.5", "mass: [1, 2]", "7: body.mass must be a number"},
+    {"  mass: 0.5\n", "", "2: body.mass is required"},
+    {"  mass: 0.5\n", "  mass: 0.5\n  mass: 0.6\n", "8: body.mass is given twice"},
+    {"  mass: 0.5\n", "  mass: 0.5\n  colour: red\n", "8: body.colour is not a known key"},
+    {"", "extra: 1\n", "11: extra is not a known key"},
+    {"body:\n", "body: [\n", ""},  // malformed: checked separately for its line
+    {"dt: 1.0e-5", "dt: 0", "10: simulation.dt must be > 0"},
+    {"dt: 1.0e-5", "dt: -1e-5", "10: simulation.dt must be > 0"},
+    {"dt: 1.0e-5", "dt: 0.01", "10: simulation.dt = 0.01 s is too large for contact.stiffness"},
+    {"duration: 1.0", "duration: 1e9", "10: simulation.dt makes more than 1e11 steps"},
+    {"duration: 1.0", "duration: .inf", "10: simulation.duration must be > 0, not inf"},
+    {"integrator: symplectic", "integrator: leapfrog", "10: simulation.integrator must be"},
+    {"stiffness: 2.0e4", "stiffness: -5", "8: contact.stiffness must be > 0"},
+    {"stiffness: 2.0e4", "stiffness: 0", "8: contact.stiffness must be > 0"},
+    {"friction: 0.3", "friction: -1", "8: contact.friction must be ≥ 0"},
+    {"damping: 20", "damping: -.inf", "8: contact.damping must be ≥ 0"},
+    {"friction_law: coulomb", "friction_law: sticky", "8: contact.friction_law must be"},
+    {"model: points", "model: magic", "8: contact.model must be points, smooth or rolling"},
+    {"shape: paraboloid", "shape: cube", "3: body.shape must be paraboloid or ellipsoid"},
+    {"a: 4,", "a: 0,", "4: body.paraboloid.a must be > 0"},
+    {"top: 2}", "top: -5}", "4: body.paraboloid.top must be above the apex"},
+    {"dz: 0.2}", "dz: -0.2}", "6: body.grid.dz must be > 0"},
+    {"dx: 0.52,", "dx: 1e-6,", "6: body.grid makes about"},
+    {"{scale: 0.375, ", "{", "5: body.dents.scale is required"},
+    {"length: 0.01", "length: 0", "1: units.length must be > 0"},
+    {"tilt: [0.0, 0.0]", "tilt: 5", "9: initial.tilt must be a list of two numbers"},
+    {"tilt: [0.0, 0.0]", "tilt: [95, 0]", "9: initial.tilt must lie within ±90 degrees"},
+    {"spin: 0.0", "spin: .inf", "9: initial.spin must be a finite number"},
+    {"", "video: {fps: 0}\n", "11: video.fps must be within"},
+    {"", "video: {size: [100000, 100000]}\n", "11: video.size sides must be within"},
+    {"", "video: {fps: 29.97}\n", "11: video.fps must be a whole number"},
+    {"", "video: {view: sideways}\n", "11: video.view must be"},
+};
+
+std::string mutate(const BadCase& c) {
+  std::string text = kBase;
+  if (*c.from == 0) return text + c.to;
+  const auto at = text.find(c.from);
+  EXPECT_NE(at, std::string::npos) << c.from;
+  return text.replace(at, std::strlen(c.from), c.to);
+}
+
+// The one line the program prints for a scene, or "" when it compiles.
+std::string errorFor(const std::string& yaml) {
+  auto loaded = scene::loadString(yaml, "inline.yaml");
+  if (auto* e = std::get_if<scene::LoadError>(&loaded)) return e->message;
+  auto model = scene::loadModel(std::get<scene::Loaded>(loaded));
+  if (auto* e = std::get_if<scene::LoadError>(&model)) return e->message;
+  return "";
+}
+
+}  // namespace
+
+TEST(Scenes, TheBaseSceneCompiles) { EXPECT_EQ(errorFor(kBase), ""); }
+
+TEST(Scenes, ShippedScenesLoadAndCompile) {
+  for (const char* name : {"rattleback", "seed-preferred", "seed-reversed"}) {
+    const std::string path = std::string(RATTLEBACK_SOURCE_DIR) + "/scenes/" + name + ".yaml";
+    auto loaded = scene::loadFile(path);
+    ASSERT_TRUE(std::holds_alternative<scene::Loaded>(loaded))
+        << std::get<scene::LoadError>(loaded).message;
+    auto model = scene::loadModel(std::get<scene::Loaded>(loaded));
+    EXPECT_TRUE(std::holds_alternative<sim::Model>(model))
+        << std::get<scene::LoadError>(model).message;
+  }
+}
+
+TEST(BadScenes, EachGetsOneLineNamingFileLineAndKey) {
+  for (const BadCase& c : kBadCases) {
+    const std::string message = errorFor(mutate(c));
+    ASSERT_FALSE(message.empty()) << "accepted: " << c.to;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    if (*c.expected) {
+      EXPECT_EQ(message.rfind(std::string("inline.yaml:") + c.expected, 0), 0u)
+          << "got: " << message;
+    }
+  }
+}
+
+TEST(BadScenes, MalformedYamlNamesTheLine) {
+  const std::string message = errorFor("units: {length: 0.01}\nbody: [\n  shape: x\n");
+  EXPECT_NE(message.find("inline.yaml:"), std::string::npos) << message;
+  EXPECT_NE(message.find("malformed YAML"), std::string::npos) << message;
+  EXPECT_EQ(errorFor("").rfind("inline.yaml:1: the scene is empty", 0), 0u);
+  EXPECT_EQ(errorFor("- 1\n- 2\n").rfind("inline.yaml:1: scene must be a map", 0), 0u);
+}
+
+TEST(BadScenes, AMissingFileIsNamed) {
+  auto loaded = scene::loadFile("/nonexistent/scene.yaml");
+  ASSERT_TRUE(std::holds_alternative<scene::LoadError>(loaded));
+  EXPECT_EQ(std::get<scene::LoadError>(loaded).message,
+            "/nonexistent/scene.yaml: cannot open the scene file");
+}
