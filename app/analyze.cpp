@@ -3,7 +3,7 @@
 #include <sstream>
 
 #include "app/commands.hpp"
-#include "scene/loader.hpp"
+#include "app/scene_args.hpp"
 #include "sim/stability.hpp"
 
 namespace app {
@@ -78,14 +78,9 @@ void printText(const std::string& scene, const sim::Model& model) {
 }  // namespace
 
 int analyzeCommand(const AnalyzeArgs& args) {
-  auto loaded = scene::loadFile(args.scene);
-  if (auto* e = std::get_if<scene::LoadError>(&loaded)) {
-    std::cerr << e->message << "\n";
-    return kBadInput;
-  }
-  auto compiled = scene::loadModel(std::get<scene::Loaded>(loaded));
-  if (auto* e = std::get_if<scene::LoadError>(&compiled)) {
-    std::cerr << e->message << "\n";
+  auto compiled = loadScene(args.scene, {});
+  if (auto* e = std::get_if<std::string>(&compiled)) {
+    std::cerr << *e << "\n";
     return kBadInput;
   }
   const sim::Model& model = std::get<sim::Model>(compiled);

@@ -4,6 +4,8 @@
 #include <optional>
 #include <string>
 
+#include "app/scene_args.hpp"
+
 namespace app {
 
 /// Exit statuses (README "Exit codes").
@@ -27,5 +29,35 @@ struct AnalyzeArgs {
   bool json = false;
 };
 int analyzeCommand(const AnalyzeArgs& args);
+
+struct RenderArgs {
+  std::string scene;
+  std::string output;  ///< .mp4 path; empty: out/<scene>.mp4
+  Overrides overrides;
+  bool both = false;   ///< also the reversed spin and a side-by-side video
+  int crf = 20;
+  std::string preset = "veryfast";
+  bool quiet = false;
+};
+int renderCommand(const RenderArgs& args);
+
+struct StillArgs {
+  std::string scene;
+  std::string output;  ///< .png path; empty: out/<scene>-<view>.png
+  Overrides overrides;
+  double t = 0;        ///< s
+  bool no_readouts = false;
+  bool quiet = false;
+};
+int stillCommand(const StillArgs& args);
+
+struct CompareArgs {
+  std::string actual, expected;
+  int channel_tolerance = 2;        ///< 0–255 per channel
+  double pixel_fraction = 0.002;    ///< of the pixels may differ beyond it
+  std::string diff;                 ///< where to write a diff image when they differ
+};
+/// Exit 0 when the images match within the tolerance, 1 when they differ.
+int compareCommand(const CompareArgs& args);
 
 }  // namespace app

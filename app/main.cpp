@@ -28,6 +28,48 @@ int main(int argc, char** argv) {
   analyze->add_option("scene", analyze_args.scene, "Scene file (YAML)")->required();
   analyze->add_flag("--json", analyze_args.json, "Print JSON");
 
+  app::RenderArgs render_args;
+  std::string render_size, still_size;
+  CLI::App* render = cli.add_subcommand("render", "Render a scene to an MP4 video (H.264)");
+  render->add_option("scene", render_args.scene, "Scene file (YAML)")->required();
+  render->add_option("-o,--output", render_args.output,
+                     "Video file (default out/<scene>.mp4; with --both the base name)");
+  render->add_option("--view", render_args.overrides.view, "oblique | above | front | side | follow");
+  render->add_option("--size", render_size, "Frame size WxH, e.g. 1280x720");
+  render->add_option("--fps", render_args.overrides.fps, "Frames per second");
+  render->add_option("--duration", render_args.overrides.duration, "Simulated time, s");
+  render->add_option("--playback", render_args.overrides.playback,
+                     "Video seconds per simulated second");
+  render->add_option("--dt", render_args.overrides.dt, "Time step, s");
+  render->add_option("--crf", render_args.crf, "x264 quality 0–51, lower is better (default 20)");
+  render->add_option("--preset", render_args.preset, "x264 preset (default veryfast)");
+  render->add_flag("--both", render_args.both,
+                   "Also the reversed spin, named …-preferred.mp4 and …-reversed.mp4, and a "
+                   "side-by-side …-both.mp4");
+  render->add_flag("-q,--quiet", render_args.quiet, "No summary and no progress bar");
+
+  app::StillArgs still_args;
+  CLI::App* still = cli.add_subcommand("still", "Render one frame of a scene to a PNG");
+  still->add_option("scene", still_args.scene, "Scene file (YAML)")->required();
+  still->add_option("-o,--output", still_args.output, "PNG file (default out/<scene>-<view>.png)");
+  still->add_option("--view", still_args.overrides.view, "oblique | above | front | side | follow");
+  still->add_option("--t", still_args.t, "Simulated time of the frame, s (default 0)");
+  still->add_option("--size", still_size, "Image size WxH, e.g. 1280x720");
+  still->add_option("--spin", still_args.overrides.spin, "Initial spin, rad/s (overrides the scene)");
+  still->add_flag("--no-readouts", still_args.no_readouts, "No time, spin or inset plot");
+  still->add_flag("-q,--quiet", still_args.quiet, "Do not print the file name");
+
+  app::CompareArgs compare_args;
+  CLI::App* compare = cli.add_subcommand(
+      "compare", "Compare two PNG images within a tolerance (exit 0 same, 1 different)");
+  compare->add_option("actual", compare_args.actual, "PNG")->required();
+  compare->add_option("expected", compare_args.expected, "PNG")->required();
+  compare->add_option("--tolerance", compare_args.channel_tolerance,
+                      "Largest difference per channel (0–255) that still counts as equal (default 2)");
+  compare->add_option("--pixels", compare_args.pixel_fraction,
+                      "Fraction of pixels allowed beyond the tolerance (default 0.002)");
+  compare->add_option("--diff", compare_args.diff, "Write a diff image here when they differ");
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -42,5 +84,18 @@ int main(int argc, char** argv) {
   }
   if (*simulate) return app::simulateCommand(sim_args);
   if (*analyze) return app::analyzeCommand(analyze_args);
+  for (auto [text, target] : {std::pair{&render_size, &render_args.overrides.size},
+                              std::pair{&still_size, &still_args.overrides.size}}) {
+    if (text->empty()) continue;
+    std::array<int, 2> size;
+    if (!app::parseSize(*text, size)) {
+      std::cerr << "--size: expected WIDTHxHEIGHT such as 1280x720, not '" << *text << "'\n";
+      return app::kBadInput;
+    }
+    *target = size;
+  }
+  if (*render) return app::renderCommand(render_args);
+  if (*still) return app::stillCommand(still_args);
+  if (*compare) return app::compareCommand(compare_args);
   return app::kBadInput;
 }

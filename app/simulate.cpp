@@ -6,7 +6,7 @@
 #include "app/commands.hpp"
 #include "app/output.hpp"
 #include "app/progress.hpp"
-#include "scene/loader.hpp"
+#include "app/scene_args.hpp"
 #include "sim/initial.hpp"
 #include "sim/run.hpp"
 
@@ -73,27 +73,13 @@ void printSummary(const SimulateArgs& args, const sim::Model& model,
 }  // namespace
 
 int simulateCommand(const SimulateArgs& args) {
-  auto loaded = scene::loadFile(args.scene);
-  if (auto* e = std::get_if<scene::LoadError>(&loaded)) {
-    std::cerr << e->message << "\n";
-    return kBadInput;
-  }
-  scene::Loaded& scene = std::get<scene::Loaded>(loaded);
-  if (args.duration) {
-    scene.spec.simulation.duration = *args.duration;
-    scene.overrides["simulation.duration"] = "--duration";
-  }
-  if (args.dt) {
-    scene.spec.simulation.dt = *args.dt;
-    scene.overrides["simulation.dt"] = "--dt";
-  }
-  if (args.integrator) {
-    scene.spec.simulation.integrator = *args.integrator;
-    scene.overrides["simulation.integrator"] = "--integrator";
-  }
-  auto compiled = scene::loadModel(scene);
-  if (auto* e = std::get_if<scene::LoadError>(&compiled)) {
-    std::cerr << e->message << "\n";
+  Overrides overrides;
+  overrides.duration = args.duration;
+  overrides.dt = args.dt;
+  overrides.integrator = args.integrator;
+  auto compiled = loadScene(args.scene, overrides);
+  if (auto* e = std::get_if<std::string>(&compiled)) {
+    std::cerr << *e << "\n";
     return kBadInput;
   }
   const sim::Model& model = std::get<sim::Model>(compiled);

@@ -1,24 +1,49 @@
-// What the renderer is given for one video frame: a pose and body-frame points, plus the
-// read-outs to print. It includes nothing of the simulation. The renderer itself comes with
-// the rendering issue; this header is the contract between the two halves.
+// What the renderer is given: the body's points once, and a pose with read-outs per frame.
+// It includes nothing of the simulation (SPEC "Data flow").
 #pragma once
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
+#include <string>
 #include <vector>
 
 namespace render {
 
-struct FrameInput {
-  Eigen::Vector3d position_world;     ///< body origin, m
-  Eigen::Quaterniond orientation;     ///< body → world
-  double t = 0;                       ///< s
-  double spin = 0;                    ///< rad/s
+enum class View { Oblique, Above, Front, Side, Follow };
+
+/// The body as the renderer sees it, body frame (origin at the CM), metres.
+struct BodyPoints {
+  std::vector<Eigen::Vector3f> top;     ///< drawn red
+  std::vector<Eigen::Vector3f> bottom;  ///< drawn blue
+  float radius = 0.001f;                ///< sphere radius, m
+  Eigen::Vector2f footprint_half{0.01f, 0.05f};  ///< outline half extents across and along y, m
 };
 
-struct BodyPoints {
-  std::vector<Eigen::Vector3f> top;     ///< body frame, m (drawn red)
-  std::vector<Eigen::Vector3f> bottom;  ///< body frame, m (drawn blue)
+/// One frame: where the body is and what to print.
+struct FrameInput {
+  Eigen::Vector3d position_world = Eigen::Vector3d::Zero();  ///< CM, m
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  ///< body → world
+  double t = 0;     ///< s
+  double spin = 0;  ///< n, rad/s
 };
+
+struct RenderSettings {
+  int width = 1280, height = 720;  ///< pixels
+  View view = View::Oblique;
+  std::string title;               ///< printed in the corner ("" for none)
+  bool readouts = true;            ///< time, spin and the n(t) inset
+  double duration = 1;             ///< s, the inset's time axis
+  double spin_range = 1;           ///< rad/s, the inset's ± spin axis
+};
+
+/// An RGBA image, rows top to bottom.
+struct Image {
+  int width = 0, height = 0;
+  std::vector<unsigned char> rgba;
+};
+
+/// Parses "oblique" … "follow"; false when unknown.
+bool parseView(const std::string& name, View& view);
+const char* viewName(View view);
 
 }  // namespace render

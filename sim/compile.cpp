@@ -136,6 +136,7 @@ std::variant<Body, SpecError> buildBody(const BodySpec& b, double unit) {
   body.mass = b.mass;
   body.mass_properties = built.mass;
   body.shape = shape;
+  body.grid = grid;
   body.com_geometric = built.mass.com;
   body.inertia = built.mass.inertia;
   if (built.mass.principal.minCoeff() <= 0)
@@ -151,6 +152,26 @@ std::variant<Body, SpecError> buildBody(const BodySpec& b, double unit) {
     body.bottom.z.push_back(r.z());
   }
   return body;
+}
+
+// Frames are scheduled by whole steps: steps_per_frame = 1 / (fps · playback · dt) must be
+// a whole number (to 1e-6), and the video has round(duration · playback · fps) frames.
+std::optional<SpecError> compileVideo(const SceneSpec& spec, Model& model) {
+  const VideoSpec& v = spec.video;
+  const double steps = 1.0 / (v.fps * v.playback * spec.simulation.dt);
+  const double whole = std::round(steps);
+  if (whole < 1 || std::abs(steps - whole) > 1e-6 * steps) {
+    std::ostringstream msg;
+    msg << v.fps << " with playback " << v.playback << " needs " << steps
+        << " steps of simulation.dt " << spec.simulation.dt
+        << " s per frame; it must be a whole number: choose dt = "
+        << 1.0 / (v.fps * v.playback * std::max(1.0, std::round(steps))) << " s or another fps";
+    return SpecError{"video.fps", msg.str()};
+  }
+  model.video = Video{v.fps,   v.size[0],    v.size[1],
+                      v.view,  v.playback,   static_cast<std::int64_t>(whole),
+                      std::llround(spec.simulation.duration * v.playback * v.fps)};
+  return std::nullopt;
 }
 
 }  // namespace
@@ -181,6 +202,8 @@ std::variant<Model, SpecError> compile(const SceneSpec& spec) {
   model.steps = std::llround(spec.simulation.duration / spec.simulation.dt);
   model.initial = Initial{spec.initial.spin, spec.initial.tilt[0] * M_PI / 180.0,
                           spec.initial.tilt[1] * M_PI / 180.0};
+
+  if (auto e = compileVideo(spec, model)) return *e;
 
   const ContactStability stability = contactStability(model);
   if (model.dt > stability.largest_step) {

@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "sim/body.hpp"
@@ -30,6 +31,7 @@ struct Body {
   Paraboloid shape;                    ///< the smooth surface, geometric frame, m
   Eigen::Vector3d com_geometric;       ///< CM in the geometric frame, m
   MassProperties mass_properties;      ///< as computed from the grid (geometric frame)
+  Grid grid;                           ///< the point grid's spacing, m
   ContactPoints bottom;                ///< bottom-surface points, body frame, m
   std::vector<Eigen::Vector3d> top_points;     ///< top-surface points, body frame (rendering)
   std::vector<Eigen::Vector3d> bottom_points;  ///< bottom-surface points, body frame (rendering)
@@ -54,8 +56,19 @@ struct Initial {
   double tilt_y = 0;       ///< rad, then about the new body y
 };
 
+/// Video timing and framing (SPEC "Rendering and video"); the renderer reads these.
+struct Video {
+  int fps = 30;
+  int width = 1280, height = 720;   ///< pixels
+  std::string view = "oblique";     ///< oblique | above | front | side | follow
+  double playback = 1;              ///< video seconds per simulated second
+  std::int64_t steps_per_frame = 1; ///< whole steps of dt per video frame
+  std::int64_t frames = 0;          ///< round(duration × playback × fps)
+};
+
 struct Model {
   Body body;
+  Video video;
   Contact contact;
   double gravity = 9.81;   ///< m/s², along −z
   Integrator integrator = Integrator::Symplectic;

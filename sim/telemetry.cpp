@@ -19,6 +19,7 @@ Telemetry telemetryOf(const Model& model, const State& s) {
   out.energy = out.kinetic + out.potential + out.elastic;
   out.tilt_deg = std::acos(std::clamp(k.R(2, 2), -1.0, 1.0)) * 180.0 / M_PI;
   out.x_world = s.x_world;
+  out.orientation = s.q;
   out.w_world = k.w_world;
   out.L_world = s.L_world;
   out.contacts = contact.contacts;

@@ -1,6 +1,8 @@
 // What a run reports at each sample (SPEC "Outputs a user expects").
 #pragma once
 
+#include <Eigen/Geometry>
+
 #include "sim/model.hpp"
 
 namespace sim {
@@ -14,6 +16,7 @@ struct Telemetry {
   double energy = 0;     ///< kinetic + potential + elastic, J
   double tilt_deg = 0;   ///< angle between the body z axis and the vertical, degrees
   Eigen::Vector3d x_world = Eigen::Vector3d::Zero();  ///< CM, m
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  ///< body → world
   Eigen::Vector3d w_world = Eigen::Vector3d::Zero();  ///< ω, rad/s
   Eigen::Vector3d L_world = Eigen::Vector3d::Zero();  ///< angular momentum about the CM
   int contacts = 0;        ///< points below the floor

@@ -21,6 +21,7 @@ body:
 contact: {model: points, stiffness: 2.0e4, damping: 20, friction: 0.3, friction_law: coulomb}
 initial: {spin: 0.0, tilt: [0.0, 0.0]}
 simulation: {integrator: symplectic, dt: 1.0e-5, duration: 1.0}
+video: {fps: 25, size: [320, 180], view: oblique}
 )";
 
 struct BadCase {
@@ -38,7 +39,7 @@ const BadCase kBadCases[] = {
     {"  mass: 0.5\n", "", "2: body.mass is required"},
     {"  mass: 0.5\n", "  mass: 0.5\n  mass: 0.6\n", "8: body.mass is given twice"},
     {"  mass: 0.5\n", "  mass: 0.5\n  colour: red\n", "8: body.colour is not a known key"},
-    {"", "extra: 1\n", "11: extra is not a known key"},
+    {"", "extra: 1\n", "12: extra is not a known key"},
     {"body:\n", "body: [\n", ""},  // malformed: checked separately for its line
     {"dt: 1.0e-5", "dt: 0", "10: simulation.dt must be > 0"},
     {"dt: 1.0e-5", "dt: -1e-5", "10: simulation.dt must be > 0"},
@@ -62,10 +63,12 @@ const BadCase kBadCases[] = {
     {"tilt: [0.0, 0.0]", "tilt: 5", "9: initial.tilt must be a list of two numbers"},
     {"tilt: [0.0, 0.0]", "tilt: [95, 0]", "9: initial.tilt must lie within ±90 degrees"},
     {"spin: 0.0", "spin: .inf", "9: initial.spin must be a finite number"},
-    {"", "video: {fps: 0}\n", "11: video.fps must be within"},
-    {"", "video: {size: [100000, 100000]}\n", "11: video.size sides must be within"},
-    {"", "video: {fps: 29.97}\n", "11: video.fps must be a whole number"},
-    {"", "video: {view: sideways}\n", "11: video.view must be"},
+    {"fps: 25", "fps: 0", "11: video.fps must be within"},
+    {"size: [320, 180]", "size: [100000, 100000]", "11: video.size sides must be within"},
+    {"fps: 25", "fps: 29.97", "11: video.fps must be a whole number"},
+    {"fps: 25", "fps: 30", "11: video.fps 30 with playback 1 needs 3333.33 steps"},
+    {"view: oblique", "view: sideways", "11: video.view must be"},
+    {"", "video: {fps: 25}\n", "12: video is given twice"},
 };
 
 std::string mutate(const BadCase& c) {

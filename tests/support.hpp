@@ -27,6 +27,7 @@ body:
 contact: {model: points, stiffness: 2.0e4, damping: 20, friction: 0.3, friction_law: coulomb}
 initial: {spin: 0.0, tilt: [0.0, 0.0]}
 simulation: {integrator: symplectic, dt: 1.0e-5, duration: 1.0}
+video: {fps: 25}
 )";
 
 /// The stable body of SPEC (a=1, p=0.5, s=0.03, top=0.5, dents 0.45 at (0.73, 4.50) cm).
@@ -41,6 +42,7 @@ body:
 contact: {model: points, stiffness: 2.0e4, damping: 4, friction: 0.5, friction_law: regularized}
 initial: {spin: -5.0, tilt: [0.5, 0.5]}
 simulation: {integrator: symplectic, dt: 2.0e-5, duration: 1.0}
+video: {fps: 25}
 )";
 
 inline sim::SceneSpec parse(const std::string& yaml) {

@@ -1,0 +1,30 @@
+#version 330 core
+// A checker floor, box-filtered against aliasing, fading into the background with distance,
+// with a soft contact shadow: an ellipse under the body, aligned with its long axis.
+in vec2 v_xy;
+uniform float u_tile;           // checker square, m
+uniform vec2 u_center;          // where the floor fades from, m
+uniform float u_fade_near;      // m
+uniform float u_fade_far;       // m
+uniform vec3 u_background;
+uniform vec2 u_shadow_center;   // m
+uniform vec2 u_shadow_axis;     // unit vector along the body's long axis, floor plane
+uniform vec2 u_shadow_half;     // half extents across and along the long axis, m
+uniform float u_shadow_strength;
+out vec4 frag_color;
+
+void main() {
+  vec2 p = v_xy / u_tile;
+  vec2 w = fwidth(p) + 1e-4;
+  vec2 i = 2.0 * (abs(fract((p - 0.5 * w) * 0.5) - 0.5) - abs(fract((p + 0.5 * w) * 0.5) - 0.5)) / w;
+  float checker = 0.5 - 0.5 * i.x * i.y;
+  vec3 color = mix(vec3(0.80, 0.80, 0.78), vec3(0.66, 0.67, 0.66), checker);
+
+  vec2 d = v_xy - u_shadow_center;
+  vec2 local = vec2(dot(d, vec2(u_shadow_axis.y, -u_shadow_axis.x)), dot(d, u_shadow_axis));
+  float e = length(local / u_shadow_half);
+  color *= 1.0 - u_shadow_strength * (1.0 - smoothstep(0.55, 1.15, e));
+
+  float fade = smoothstep(u_fade_near, u_fade_far, length(v_xy - u_center));
+  frag_color = vec4(mix(color, u_background, fade), 1.0);
+}

@@ -1,0 +1,157 @@
+#include "render/encoder.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+
+extern "C" {
+#include <libavcodec/avcodec.h>
+#include <libavformat/avformat.h>
+#include <libavutil/imgutils.h>
+#include <libavutil/opt.h>
+#include <libswscale/swscale.h>
+}
+
+namespace render {
+
+struct VideoEncoder::State {
+  std::string path, temp;
+  EncoderSettings settings;
+  AVFormatContext* format = nullptr;
+  AVCodecContext* codec = nullptr;
+  AVStream* stream = nullptr;
+  SwsContext* sws = nullptr;
+  AVFrame* frame = nullptr;
+  AVPacket* packet = nullptr;
+  long long count = 0;
+  bool header_written = false, finished = false;
+
+  ~State() {
+    if (sws) sws_freeContext(sws);
+    av_frame_free(&frame);
+    av_packet_free(&packet);
+    avcodec_free_context(&codec);
+    if (format) {
+      if (format->pb) avio_closep(&format->pb);
+      avformat_free_context(format);
+    }
+    if (!finished && !temp.empty()) std::remove(temp.c_str());
+  }
+
+  std::string error(const std::string& what, int code = 0) const {
+    char text[AV_ERROR_MAX_STRING_SIZE] = "";
+    if (code) av_strerror(code, text, sizeof text);
+    return path + ": " + what + (code ? std::string(": ") + text : "");
+  }
+
+  // Moves every packet the encoder has ready into the file.
+  std::optional<std::string> drain() {
+    for (;;) {
+      const int r = avcodec_receive_packet(codec, packet);
+      if (r == AVERROR(EAGAIN) || r == AVERROR_EOF) return std::nullopt;
+      if (r < 0) return error("encoding failed", r);
+      av_packet_rescale_ts(packet, codec->time_base, stream->time_base);
+      packet->stream_index = stream->index;
+      const int w = av_interleaved_write_frame(format, packet);
+      if (w < 0) return error("writing failed", w);
+    }
+  }
+};
+
+VideoEncoder::VideoEncoder() : state_(std::make_unique<State>()) {}
+VideoEncoder::~VideoEncoder() = default;
+long long VideoEncoder::frames() const { return state_->count; }
+
+std::variant<std::unique_ptr<VideoEncoder>, std::string> VideoEncoder::open(
+    const std::string& path, const EncoderSettings& settings) {
+  std::unique_ptr<VideoEncoder> encoder(new VideoEncoder());
+  State& s = *encoder->state_;
+  s.path = path;
+  s.settings = settings;
+  if (settings.width % 2 || settings.height % 2) return path + ": width and height must be even";
+  if (std::filesystem::is_directory(path)) return path + ": is a directory, not a file";
+  s.temp = path + ".partial-" + std::to_string(::getpid()) + ".mp4";
+
+  av_log_set_level(AV_LOG_ERROR);
+  if (avformat_alloc_output_context2(&s.format, nullptr, "mp4", s.temp.c_str()) < 0)
+    return s.error("cannot set up an MP4 file");
+  const AVCodec* h264 = avcodec_find_encoder_by_name("libx264");
+  if (!h264) return s.error("libavcodec has no libx264 encoder");
+  s.codec = avcodec_alloc_context3(h264);
+  AVCodecContext* c = s.codec;
+  c->width = settings.width;
+  c->height = settings.height;
+  c->time_base = AVRational{1, settings.fps};
+  c->framerate = AVRational{settings.fps, 1};
+  c->pix_fmt = AV_PIX_FMT_YUV420P;
+  c->gop_size = 2 * settings.fps;
+  c->thread_count = settings.threads;
+  c->color_primaries = AVCOL_PRI_BT709;
+  c->color_trc = AVCOL_TRC_BT709;
+  c->colorspace = AVCOL_SPC_BT709;
+  c->color_range = AVCOL_RANGE_MPEG;
+  if (s.format->oformat->flags & AVFMT_GLOBALHEADER) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+  av_opt_set(c->priv_data, "preset", settings.preset.c_str(), 0);
+  av_opt_set(c->priv_data, "crf", std::to_string(settings.crf).c_str(), 0);
+  if (int r = avcodec_open2(c, h264, nullptr); r < 0) return s.error("cannot open libx264", r);
+
+  s.stream = avformat_new_stream(s.format, nullptr);
+  s.stream->time_base = c->time_base;
+  avcodec_parameters_from_context(s.stream->codecpar, c);
+  if (int r = avio_open(&s.format->pb, s.temp.c_str(), AVIO_FLAG_WRITE); r < 0)
+    return s.error("cannot write", r);
+  AVDictionary* options = nullptr;
+  av_dict_set(&options, "movflags", "+faststart", 0);
+  const int r = avformat_write_header(s.format, &options);
+  av_dict_free(&options);
+  if (r < 0) return s.error("cannot write the MP4 header", r);
+  s.header_written = true;
+
+  // RGBA (full range) → yuv420p, BT.709 matrix, limited range.
+  s.sws = sws_getContext(settings.width, settings.height, AV_PIX_FMT_RGBA, settings.width,
+                         settings.height, AV_PIX_FMT_YUV420P, SWS_BICUBIC, nullptr, nullptr,
+                         nullptr);
+  const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
+  sws_setColorspaceDetails(s.sws, bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16);
+  s.frame = av_frame_alloc();
+  s.frame->format = AV_PIX_FMT_YUV420P;
+  s.frame->width = settings.width;
+  s.frame->height = settings.height;
+  s.frame->color_primaries = AVCOL_PRI_BT709;
+  s.frame->color_trc = AVCOL_TRC_BT709;
+  s.frame->colorspace = AVCOL_SPC_BT709;
+  s.frame->color_range = AVCOL_RANGE_MPEG;
+  if (av_frame_get_buffer(s.frame, 0) < 0) return s.error("out of memory");
+  s.packet = av_packet_alloc();
+  return encoder;
+}
+
+std::optional<std::string> VideoEncoder::add(const Image& image) {
+  State& s = *state_;
+  if (image.width != s.settings.width || image.height != s.settings.height)
+    return s.error("frame size does not match the video");
+  if (av_frame_make_writable(s.frame) < 0) return s.error("out of memory");
+  const uint8_t* source[1] = {image.rgba.data()};
+  const int stride[1] = {4 * image.width};
+  sws_scale(s.sws, source, stride, 0, image.height, s.frame->data, s.frame->linesize);
+  s.frame->pts = s.count++;
+  if (int r = avcodec_send_frame(s.codec, s.frame); r < 0) return s.error("encoding failed", r);
+  return s.drain();
+}
+
+std::optional<std::string> VideoEncoder::finish(const std::string& final_path) {
+  State& s = *state_;
+  if (!final_path.empty()) s.path = final_path;
+  if (int r = avcodec_send_frame(s.codec, nullptr); r < 0) return s.error("encoding failed", r);
+  if (auto e = s.drain()) return e;
+  if (int r = av_write_trailer(s.format); r < 0) return s.error("writing failed", r);
+  if (int r = avio_closep(&s.format->pb); r < 0) return s.error("writing failed", r);
+  std::error_code ec;
+  std::filesystem::rename(s.temp, s.path, ec);
+  if (ec) return s.error("cannot move the finished file into place: " + ec.message());
+  s.finished = true;
+  return std::nullopt;
+}
+
+}  // namespace render

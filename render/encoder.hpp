@@ -1,0 +1,43 @@
+// H.264 in MP4 through libavcodec / libavformat / libswscale (SPEC "Rendering and video"):
+// yuv420p, BT.709 tagged, moov atom first (+faststart), a fixed thread count for repeatable
+// bytes. Written under a temporary name and renamed into place by finish().
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+
+#include "render/frame.hpp"
+
+namespace render {
+
+struct EncoderSettings {
+  int width = 1280, height = 720;  ///< even numbers (yuv420p)
+  int fps = 30;
+  int crf = 20;                    ///< x264 quality, 0–51 (lower is better)
+  std::string preset = "veryfast";
+  int threads = 2;                 ///< fixed, so the same frames give the same bytes
+};
+
+class VideoEncoder {
+ public:
+  /// Opens the temporary output; an error line naming `path` when impossible.
+  static std::variant<std::unique_ptr<VideoEncoder>, std::string> open(
+      const std::string& path, const EncoderSettings& settings);
+  ~VideoEncoder();  ///< without finish(): removes the temporary file
+
+  /// Encodes one RGBA frame (rows top to bottom, the settings' size); an error line on failure.
+  std::optional<std::string> add(const Image& frame);
+  /// Flushes the encoder, writes the index and renames the file into place: to the path it
+  /// was opened with, or to `final_path` (in the same folder) when given.
+  std::optional<std::string> finish(const std::string& final_path = "");
+  long long frames() const;
+
+ private:
+  VideoEncoder();
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace render

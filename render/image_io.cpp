@@ -1,0 +1,123 @@
+#include "render/image_io.hpp"
+
+#include <png.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+
+namespace render {
+
+namespace {
+
+struct File {
+  FILE* f = nullptr;
+  ~File() {
+    if (f) std::fclose(f);
+  }
+};
+
+}  // namespace
+
+std::optional<std::string> writePng(const std::string& path, const Image& image) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  const bool special = std::filesystem::exists(status) && !std::filesystem::is_regular_file(status);
+  const std::string temp = special ? path : path + ".partial-" + std::to_string(::getpid());
+  auto fail = [&](const std::string& why) -> std::optional<std::string> {
+    if (!special) std::remove(temp.c_str());
+    return path + ": " + why;
+  };
+  File file;
+  file.f = std::fopen(temp.c_str(), "wb");
+  if (!file.f) return path + ": cannot write: " + std::strerror(errno);
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  if (!info) {
+    png_destroy_write_struct(&png, nullptr);
+    return fail("cannot start libpng");
+  }
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    return fail("writing failed");
+  }
+  png_init_io(png, file.f);
+  png_set_IHDR(png, info, image.width, image.height, 8, PNG_COLOR_TYPE_RGB_ALPHA,
+               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(png, info);
+  for (int y = 0; y < image.height; ++y)
+    png_write_row(png, &image.rgba[static_cast<std::size_t>(y) * image.width * 4]);
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  const bool flushed = std::fflush(file.f) == 0 && !std::ferror(file.f);
+  const int close_status = std::fclose(file.f);
+  file.f = nullptr;
+  if (!flushed || close_status != 0) return fail(std::string("writing failed: ") + std::strerror(errno));
+  if (special) return std::nullopt;
+  std::filesystem::rename(temp, path, ec);
+  if (ec) return fail("cannot move the finished file into place: " + ec.message());
+  return std::nullopt;
+}
+
+std::optional<std::string> readPng(const std::string& path, Image& image) {
+  png_image png;
+  std::memset(&png, 0, sizeof png);
+  png.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&png, path.c_str()))
+    return path + ": cannot read the PNG: " + png.message;
+  png.format = PNG_FORMAT_RGBA;
+  image.width = static_cast<int>(png.width);
+  image.height = static_cast<int>(png.height);
+  image.rgba.resize(PNG_IMAGE_SIZE(png));
+  if (!png_image_finish_read(&png, nullptr, image.rgba.data(), 0, nullptr))
+    return path + ": cannot decode the PNG: " + png.message;
+  return std::nullopt;
+}
+
+Comparison compareImages(const Image& a, const Image& b, int channel_tolerance) {
+  Comparison c;
+  c.same_size = a.width == b.width && a.height == b.height;
+  if (!c.same_size) return c;
+  c.pixels = static_cast<long long>(a.width) * a.height;
+  c.box[0] = a.width;
+  c.box[1] = a.height;
+  for (int y = 0; y < a.height; ++y) {
+    for (int x = 0; x < a.width; ++x) {
+      const std::size_t i = (static_cast<std::size_t>(y) * a.width + x) * 4;
+      int delta = 0;
+      for (int k = 0; k < 4; ++k) delta = std::max(delta, std::abs(a.rgba[i + k] - b.rgba[i + k]));
+      c.max_channel_delta = std::max(c.max_channel_delta, delta);
+      if (delta > channel_tolerance) {
+        ++c.differing;
+        c.box[0] = std::min(c.box[0], x);
+        c.box[1] = std::min(c.box[1], y);
+        c.box[2] = std::max(c.box[2], x);
+        c.box[3] = std::max(c.box[3], y);
+      }
+    }
+  }
+  return c;
+}
+
+Image diffImage(const Image& a, const Image& b, int channel_tolerance) {
+  Image out = a;
+  if (a.width != b.width || a.height != b.height) return out;
+  for (std::size_t i = 0; i < a.rgba.size(); i += 4) {
+    int delta = 0;
+    for (int k = 0; k < 4; ++k) delta = std::max(delta, std::abs(a.rgba[i + k] - b.rgba[i + k]));
+    const unsigned char grey =
+        static_cast<unsigned char>((a.rgba[i] + a.rgba[i + 1] + a.rgba[i + 2]) / 6 + 128);
+    const bool differs = delta > channel_tolerance;
+    out.rgba[i] = differs ? 255 : grey;
+    out.rgba[i + 1] = differs ? 0 : grey;
+    out.rgba[i + 2] = differs ? 255 : grey;
+    out.rgba[i + 3] = 255;
+  }
+  return out;
+}
+
+}  // namespace render

@@ -1,0 +1,33 @@
+// PNG files (libpng) and image comparison for snapshot tests.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "render/frame.hpp"
+
+namespace render {
+
+/// Writes an RGBA PNG under a temporary name and renames it into place; an error line
+/// naming the file when anything fails (nothing is left behind then).
+std::optional<std::string> writePng(const std::string& path, const Image& image);
+/// Reads a PNG as RGBA; an error line naming the file when it cannot.
+std::optional<std::string> readPng(const std::string& path, Image& image);
+
+/// How two images differ: a pixel differs when any channel differs by more than
+/// `channel_tolerance` (0–255).
+struct Comparison {
+  bool same_size = false;
+  long long pixels = 0;
+  long long differing = 0;     ///< pixels beyond the channel tolerance
+  int max_channel_delta = 0;   ///< largest channel difference anywhere
+  double fraction() const { return pixels ? static_cast<double>(differing) / pixels : 1.0; }
+  /// Bounding box of the differing pixels (x0, y0, x1, y1), when any.
+  int box[4] = {0, 0, 0, 0};
+};
+
+Comparison compareImages(const Image& a, const Image& b, int channel_tolerance);
+/// An image that shows where a and b differ: grey copy of `a` with differing pixels in magenta.
+Image diffImage(const Image& a, const Image& b, int channel_tolerance);
+
+}  // namespace render

@@ -1,0 +1,152 @@
+#include "render/overlay.hpp"
+
+#include <ft2build.h>
+#include FT_FREETYPE_H
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+#include "render/gl.hpp"
+
+namespace render {
+
+struct Overlay::Face {
+  FT_Library library = nullptr;
+  FT_Face face = nullptr;
+  ~Face() {
+    if (face) FT_Done_Face(face);
+    if (library) FT_Done_FreeType(library);
+  }
+};
+
+Overlay::Overlay() = default;
+Overlay::~Overlay() = default;
+
+std::string Overlay::load(int pixels) {
+  pixels_ = pixels;
+  face_ = std::make_unique<Face>();
+  if (FT_Init_FreeType(&face_->library)) return "cannot start FreeType";
+  const std::string list = assetsDir() + "/fonts.txt";
+  std::ifstream in(list);
+  std::string path;
+  while (std::getline(in, path)) {
+    if (path.empty() || path[0] == '#') continue;
+    if (FT_New_Face(face_->library, path.c_str(), 0, &face_->face) == 0) {
+      FT_Set_Pixel_Sizes(face_->face, 0, pixels);
+      return "";
+    }
+  }
+  return "no usable font listed in " + list + " (install fonts-dejavu-core)";
+}
+
+const Overlay::Glyph& Overlay::glyph(char32_t code) {
+  auto it = glyphs_.find(code);
+  if (it != glyphs_.end()) return it->second;
+  Glyph g;
+  if (face_ && face_->face && FT_Load_Char(face_->face, code, FT_LOAD_RENDER) == 0) {
+    const FT_GlyphSlot slot = face_->face->glyph;
+    g.width = static_cast<int>(slot->bitmap.width);
+    g.rows = static_cast<int>(slot->bitmap.rows);
+    g.left = slot->bitmap_left;
+    g.top = slot->bitmap_top;
+    g.advance = static_cast<int>(slot->advance.x >> 6);
+    for (int r = 0; r < g.rows; ++r)
+      for (int c = 0; c < g.width; ++c)
+        g.alpha.push_back(slot->bitmap.buffer[r * slot->bitmap.pitch + c]);
+  }
+  return glyphs_.emplace(code, std::move(g)).first->second;
+}
+
+namespace {
+
+// Decodes UTF-8 (well-formed input assumed: it comes from our own format strings).
+std::vector<char32_t> decode(const std::string& s) {
+  std::vector<char32_t> out;
+  for (std::size_t i = 0; i < s.size();) {
+    const unsigned char c = s[i];
+    int extra = c < 0x80 ? 0 : c < 0xE0 ? 1 : c < 0xF0 ? 2 : 3;
+    char32_t code = extra == 0 ? c : c & (0x3F >> extra);
+    for (int k = 1; k <= extra && i + k < s.size(); ++k) code = (code << 6) | (s[i + k] & 0x3F);
+    out.push_back(code);
+    i += extra + 1;
+  }
+  return out;
+}
+
+void blend(Image& image, int x, int y, Rgba color, float coverage) {
+  if (x < 0 || y < 0 || x >= image.width || y >= image.height || coverage <= 0) return;
+  unsigned char* p = &image.rgba[(static_cast<std::size_t>(y) * image.width + x) * 4];
+  const float a = coverage * color[3] / 255.0f;
+  for (int k = 0; k < 3; ++k) p[k] = static_cast<unsigned char>(p[k] + (color[k] - p[k]) * a + 0.5f);
+}
+
+}  // namespace
+
+int Overlay::text(Image& image, int x, int y, const std::string& utf8, Rgba color) {
+  for (char32_t code : decode(utf8)) {
+    const Glyph& g = glyph(code);
+    for (int r = 0; r < g.rows; ++r)
+      for (int c = 0; c < g.width; ++c)
+        blend(image, x + g.left + c, y - g.top + r, color, g.alpha[r * g.width + c] / 255.0f);
+    x += g.advance;
+  }
+  return x;
+}
+
+int Overlay::textWidth(const std::string& utf8) {
+  int width = 0;
+  for (char32_t code : decode(utf8)) width += glyph(code).advance;
+  return width;
+}
+
+void fillRect(Image& image, int x0, int y0, int x1, int y1, Rgba color) {
+  for (int y = std::max(0, y0); y < std::min(image.height, y1); ++y)
+    for (int x = std::max(0, x0); x < std::min(image.width, x1); ++x) blend(image, x, y, color, 1);
+}
+
+void drawLine(Image& image, float x0, float y0, float x1, float y1, float width, Rgba color) {
+  // Coverage of each pixel near the segment from its distance to the segment: a one-pixel
+  // soft edge around a core `width` wide.
+  const int xa = static_cast<int>(std::floor(std::min(x0, x1) - width - 1));
+  const int xb = static_cast<int>(std::ceil(std::max(x0, x1) + width + 1));
+  const int ya = static_cast<int>(std::floor(std::min(y0, y1) - width - 1));
+  const int yb = static_cast<int>(std::ceil(std::max(y0, y1) + width + 1));
+  const float dx = x1 - x0, dy = y1 - y0, length2 = dx * dx + dy * dy;
+  for (int y = ya; y <= yb; ++y) {
+    for (int x = xa; x <= xb; ++x) {
+      const float px = x + 0.5f - x0, py = y + 0.5f - y0;
+      const float u = length2 > 0 ? std::clamp((px * dx + py * dy) / length2, 0.0f, 1.0f) : 0;
+      const float d = std::hypot(px - u * dx, py - u * dy);
+      blend(image, x, y, color, std::clamp(width / 2 + 0.5f - d, 0.0f, 1.0f));
+    }
+  }
+}
+
+void drawSpinInset(Image& image, Overlay& font, const std::vector<std::array<float, 2>>& history,
+                   double duration, double range) {
+  const int w = image.width * 3 / 10, h = image.height * 2 / 9;
+  const int margin = image.height / 40;
+  const int x0 = image.width - w - margin, y0 = image.height - h - margin;
+  fillRect(image, x0, y0, x0 + w, y0 + h, {255, 255, 255, 200});
+  const int pad = font.lineHeight() / 2;
+  const float left = x0 + pad, right = x0 + w - pad;
+  const float top = y0 + pad + font.lineHeight(), bottom = y0 + h - pad;
+  const float mid = 0.5f * (top + bottom);
+  drawLine(image, left, mid, right, mid, 1, {90, 90, 90, 255});  // n = 0
+  char label[64];
+  std::snprintf(label, sizeof label, "spin n (±%g rad/s) against t (0–%g s)", range, duration);
+  font.text(image, x0 + pad, y0 + pad + font.lineHeight() * 3 / 4, label, {40, 40, 40, 255});
+  auto to_screen = [&](const std::array<float, 2>& p) {
+    const float x = left + (right - left) * static_cast<float>(p[0] / duration);
+    const float y = mid - (bottom - top) / 2 * static_cast<float>(std::clamp(p[1] / range, -1.0, 1.0));
+    return std::array<float, 2>{x, y};
+  };
+  for (std::size_t i = 1; i < history.size(); ++i) {
+    const auto a = to_screen(history[i - 1]), b = to_screen(history[i]);
+    drawLine(image, a[0], a[1], b[0], b[1], 2, {20, 60, 160, 255});
+  }
+}
+
+}  // namespace render

@@ -1,0 +1,194 @@
+#include "render/renderer.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace render {
+namespace {
+
+const Eigen::Vector3f kBackground(0.93f, 0.94f, 0.96f);
+
+void setMatrix(GLuint program, const char* name, const Eigen::Matrix4f& m) {
+  glUniformMatrix4fv(glGetUniformLocation(program, name), 1, GL_FALSE, m.data());
+}
+
+}  // namespace
+
+bool parseView(const std::string& name, View& view) {
+  for (View v : {View::Oblique, View::Above, View::Front, View::Side, View::Follow})
+    if (name == viewName(v)) {
+      view = v;
+      return true;
+    }
+  return false;
+}
+
+const char* viewName(View view) {
+  switch (view) {
+    case View::Oblique: return "oblique";
+    case View::Above: return "above";
+    case View::Front: return "front";
+    case View::Side: return "side";
+    case View::Follow: return "follow";
+  }
+  return "oblique";
+}
+
+Renderer::Renderer(const RenderSettings& settings, const BodyPoints& body)
+    : settings_(settings), body_(body) {}
+
+Renderer::~Renderer() {
+  if (points_vbo_) glDeleteBuffers(1, &points_vbo_);
+  if (floor_vbo_) glDeleteBuffers(1, &floor_vbo_);
+  if (points_vao_) glDeleteVertexArrays(1, &points_vao_);
+  if (floor_vao_) glDeleteVertexArrays(1, &floor_vao_);
+  if (points_program_) glDeleteProgram(points_program_);
+  if (floor_program_) glDeleteProgram(floor_program_);
+}
+
+std::variant<std::unique_ptr<Renderer>, std::string> Renderer::create(
+    const RenderSettings& settings, const BodyPoints& body) {
+  std::unique_ptr<Renderer> r(new Renderer(settings, body));
+  if (std::string error = r->init(); !error.empty()) return error;
+  return r;
+}
+
+std::string Renderer::init() {
+  if (std::string e = gl_.create(settings_.width, settings_.height); !e.empty()) return e;
+  if (std::string e = font_.load(std::max(12, settings_.height / 36)); !e.empty()) return e;
+  try {
+    points_program_ = loadProgram("points.vert", "points.frag");
+    floor_program_ = loadProgram("floor.vert", "floor.frag");
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+
+  // Points: position and kind (0 top, 1 bottom), uploaded once; the pose is a model matrix.
+  std::vector<float> data;
+  Eigen::Vector3f low = Eigen::Vector3f::Constant(1e9f), high = -low;
+  auto add = [&](const std::vector<Eigen::Vector3f>& points, float kind) {
+    for (const auto& p : points) {
+      data.insert(data.end(), {p.x(), p.y(), p.z(), kind});
+      low = low.cwiseMin(p);
+      high = high.cwiseMax(p);
+    }
+  };
+  add(body_.top, 0);
+  add(body_.bottom, 1);
+  point_count_ = static_cast<GLsizei>(data.size() / 4);
+  half_extent_ = 0.5f * (high - low) + Eigen::Vector3f::Constant(body_.radius);
+  middle_height_ = 0.5f * (high.z() + low.z());
+  glGenVertexArrays(1, &points_vao_);
+  glBindVertexArray(points_vao_);
+  glGenBuffers(1, &points_vbo_);
+  glBindBuffer(GL_ARRAY_BUFFER, points_vbo_);
+  glBufferData(GL_ARRAY_BUFFER, data.size() * sizeof(float), data.data(), GL_STATIC_DRAW);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 4 * sizeof(float), nullptr);
+  glVertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, 4 * sizeof(float),
+                        reinterpret_cast<void*>(3 * sizeof(float)));
+  glEnableVertexAttribArray(0);
+  glEnableVertexAttribArray(1);
+
+  // Floor: a quad far larger than the body; the shader fades it out with distance.
+  const float r = 40 * half_extent_.maxCoeff();
+  const float quad[] = {-r, -r, r, -r, -r, r, r, r};
+  glGenVertexArrays(1, &floor_vao_);
+  glBindVertexArray(floor_vao_);
+  glGenBuffers(1, &floor_vbo_);
+  glBindBuffer(GL_ARRAY_BUFFER, floor_vbo_);
+  glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STATIC_DRAW);
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+  glEnableVertexAttribArray(0);
+
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_PROGRAM_POINT_SIZE);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  return "";
+}
+
+void Renderer::drawFloor(const Camera& camera, const FrameInput& frame) {
+  const float size = half_extent_.maxCoeff();
+  // A checker square of 1, 2 or 5 × 10ⁿ m, about a fifth of the body's half length.
+  const float raw = size / 5;
+  const float decade = std::pow(10.0f, std::floor(std::log10(raw)));
+  const float tile = raw / decade < 2 ? decade : raw / decade < 5 ? 2 * decade : 5 * decade;
+  const Eigen::Matrix3f R = frame.orientation.cast<float>().toRotationMatrix();
+  Eigen::Vector2f axis = R.col(1).head<2>();
+  axis = axis.norm() > 1e-6f ? axis.normalized() : Eigen::Vector2f(0, 1);
+  const Eigen::Vector2f position = frame.position_world.head<2>().cast<float>();
+
+  glUseProgram(floor_program_);
+  setMatrix(floor_program_, "u_view", camera.view);
+  setMatrix(floor_program_, "u_proj", camera.proj);
+  glUniform1f(glGetUniformLocation(floor_program_, "u_tile"), tile);
+  glUniform2f(glGetUniformLocation(floor_program_, "u_center"), fixed_target_.x(), fixed_target_.y());
+  glUniform1f(glGetUniformLocation(floor_program_, "u_fade_near"), 3 * size);
+  glUniform1f(glGetUniformLocation(floor_program_, "u_fade_far"), 12 * size);
+  glUniform3fv(glGetUniformLocation(floor_program_, "u_background"), 1, kBackground.data());
+  glUniform2f(glGetUniformLocation(floor_program_, "u_shadow_center"), position.x(), position.y());
+  glUniform2f(glGetUniformLocation(floor_program_, "u_shadow_axis"), axis.x(), axis.y());
+  glUniform2f(glGetUniformLocation(floor_program_, "u_shadow_half"), body_.footprint_half.x(),
+              body_.footprint_half.y());
+  glUniform1f(glGetUniformLocation(floor_program_, "u_shadow_strength"), 0.45f);
+  glBindVertexArray(floor_vao_);
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+}
+
+void Renderer::drawPoints(const Camera& camera, const FrameInput& frame) {
+  Eigen::Matrix4f model = Eigen::Matrix4f::Identity();
+  model.topLeftCorner<3, 3>() = frame.orientation.cast<float>().toRotationMatrix();
+  model.topRightCorner<3, 1>() = frame.position_world.cast<float>();
+  // Light from above, in front and to the left of the default camera.
+  const Eigen::Vector3f light_world = Eigen::Vector3f(0.3f, -0.6f, 1.0f).normalized();
+  const Eigen::Vector3f light_view = camera.view.topLeftCorner<3, 3>() * light_world;
+
+  glUseProgram(points_program_);
+  setMatrix(points_program_, "u_model", model);
+  setMatrix(points_program_, "u_view", camera.view);
+  setMatrix(points_program_, "u_proj", camera.proj);
+  glUniform1f(glGetUniformLocation(points_program_, "u_radius"), body_.radius);
+  glUniform1f(glGetUniformLocation(points_program_, "u_viewport_h"),
+              static_cast<float>(settings_.height));
+  glUniform3fv(glGetUniformLocation(points_program_, "u_light_view"), 1, light_view.data());
+  glBindVertexArray(points_vao_);
+  glDrawArrays(GL_POINTS, 0, point_count_);
+}
+
+void Renderer::drawReadouts(const FrameInput& frame, Image& out) {
+  const int line = font_.lineHeight();
+  const int x = line, y = line * 2;
+  if (!settings_.title.empty()) font_.text(out, x, y, settings_.title, {30, 30, 30, 255});
+  if (!settings_.readouts) return;
+  char text[128];
+  std::snprintf(text, sizeof text, "t = %6.2f s    spin n = %+6.2f rad/s  %s", frame.t, frame.spin,
+                frame.spin > 0.05 ? "(counter-clockwise)" : frame.spin < -0.05 ? "(clockwise)" : "");
+  font_.text(out, x, y + (settings_.title.empty() ? 0 : line * 3 / 2), text, {30, 30, 30, 255});
+  remember(frame.t, frame.spin);
+  drawSpinInset(out, font_, history_, settings_.duration, settings_.spin_range);
+}
+
+void Renderer::draw(const FrameInput& frame, Image& out) {
+  const Eigen::Vector3f position = frame.position_world.cast<float>();
+  const Eigen::Vector3f middle(position.x(), position.y(), position.z() + middle_height_);
+  if (!have_target_) {
+    fixed_target_ = middle;
+    have_target_ = true;
+  }
+  const float aspect = static_cast<float>(settings_.width) / settings_.height;
+  const Camera camera = cameraFor(settings_.view,
+                                  settings_.view == View::Follow ? middle : fixed_target_,
+                                  half_extent_, aspect);
+  glClearColor(kBackground.x(), kBackground.y(), kBackground.z(), 1);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  drawFloor(camera, frame);
+  drawPoints(camera, frame);
+  out.width = settings_.width;
+  out.height = settings_.height;
+  out.rgba.resize(static_cast<std::size_t>(out.width) * out.height * 4);
+  gl_.readPixels(out.rgba.data());
+  drawReadouts(frame, out);
+}
+
+}  // namespace render

@@ -1,0 +1,53 @@
+// Draws frames of the body on the floor: OSMesa, OpenGL 3.3 core, into an FBO.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "render/camera.hpp"
+#include "render/frame.hpp"
+#include "render/gl.hpp"
+#include "render/overlay.hpp"
+
+namespace render {
+
+class Renderer {
+ public:
+  /// One renderer per thread: it owns an OpenGL context made current on the calling thread.
+  static std::variant<std::unique_ptr<Renderer>, std::string> create(const RenderSettings& settings,
+                                                                     const BodyPoints& body);
+  ~Renderer();
+
+  /// Draws one frame into `out` (resized to the settings' size), read-outs included; the
+  /// frame's spin joins the inset's history.
+  void draw(const FrameInput& frame, Image& out);
+  /// Adds a point to the inset's history without drawing (for a still at a later time).
+  void remember(double t, double spin) {
+    history_.push_back({static_cast<float>(t), static_cast<float>(spin)});
+  }
+
+ private:
+  Renderer(const RenderSettings& settings, const BodyPoints& body);
+  std::string init();
+  void drawFloor(const Camera& camera, const FrameInput& frame);
+  void drawPoints(const Camera& camera, const FrameInput& frame);
+  void drawReadouts(const FrameInput& frame, Image& out);
+
+  RenderSettings settings_;
+  BodyPoints body_;
+  GlContext gl_;
+  Overlay font_;
+  GLuint points_program_ = 0, floor_program_ = 0;
+  GLuint points_vao_ = 0, points_vbo_ = 0, floor_vao_ = 0, floor_vbo_ = 0;
+  GLsizei point_count_ = 0;
+  Eigen::Vector3f half_extent_;   ///< body half extents, m
+  float middle_height_ = 0;       ///< height of the body's middle above its CM, m
+  bool have_target_ = false;
+  Eigen::Vector3f fixed_target_;  ///< what the fixed views look at (the first frame's body)
+  std::vector<std::array<float, 2>> history_;  ///< (t, n) for the inset
+};
+
+}  // namespace render
