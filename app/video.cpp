@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "app/commands.hpp"
+#include "app/frames.hpp"
 #include "app/progress.hpp"
 #include "app/queue.hpp"
 #include "app/scene_args.hpp"
@@ -22,37 +23,6 @@ namespace app {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The surface points to draw. A fine grid (the default body has 7664 surface points, 3 px
-// apart on screen) reads as moiré, so columns are thinned to about kDrawnPoints by keeping
-// every k-th column counted outwards from the axes, which keeps the set symmetric; the
-// spheres grow with k.
-constexpr double kDrawnPoints = 2500;
-
-render::BodyPoints bodyPointsOf(const sim::Model& model) {
-  const sim::Body& body = model.body;
-  const double total = body.top_points.size() + body.bottom_points.size();
-  const int k = std::max(1, static_cast<int>(std::ceil(std::sqrt(total / kDrawnPoints))));
-  const sim::Grid& grid = body.grid;
-  auto kept = [&](const Eigen::Vector3d& r) {
-    const Eigen::Vector3d p = r + body.com_geometric;  // column (i + ½) dx, (j + ½) dy
-    const long i = std::lround(std::abs(p.x()) / grid.dx - 0.5);
-    const long j = std::lround(std::abs(p.y()) / grid.dy - 0.5);
-    return i % k == 0 && j % k == 0;
-  };
-  render::BodyPoints points;
-  for (const auto& p : body.top_points)
-    if (kept(p)) points.top.push_back(p.cast<float>());
-  for (const auto& p : body.bottom_points)
-    if (kept(p)) points.bottom.push_back(p.cast<float>());
-  points.radius = static_cast<float>(0.35 * k * std::min(grid.dx, grid.dy));
-  points.footprint_half = body.shape.rimHalfWidths().cast<float>();
-  return points;
-}
-
-render::FrameInput frameOf(const sim::Telemetry& t) {
-  return {t.x_world, t.orientation, t.t, t.spin};
-}
 
 render::RenderSettings settingsOf(const sim::Model& model, const std::string& title) {
   render::RenderSettings s;
@@ -177,15 +147,16 @@ int renderCommand(const RenderArgs& args) {
   }
   for (auto& t : tracks) t->title = stem(args.scene) + ": spun " + describeSpin(t->model.initial.spin);
 
-  // Output paths: OUT.mp4, or OUT-a.mp4, OUT-b.mp4 and OUT-both.mp4 (renamed at the end).
+  // Output paths: -o exactly, else out/<scene>.mp4; with --both, -o (less any .mp4) is the
+  // base of BASE-preferred.mp4, BASE-reversed.mp4 (renamed at the end) and BASE-both.mp4.
+  if (args.output.empty()) fs::create_directories("out");
   std::string base = args.output.empty() ? "out/" + stem(args.scene) : args.output;
   if (base.size() > 4 && base.substr(base.size() - 4) == ".mp4") base.resize(base.size() - 4);
-  if (args.output.empty()) fs::create_directories("out");
   std::vector<std::unique_ptr<Output>> outputs;
   const std::vector<std::string> provisional =
       args.both ? std::vector<std::string>{base + "-preferred.mp4", base + "-reversed.mp4",
                                            base + "-both.mp4"}
-                : std::vector<std::string>{base + ".mp4"};
+                : std::vector<std::string>{args.output.empty() ? base + ".mp4" : args.output};
   for (std::size_t i = 0; i < provisional.size(); ++i) {
     const int width = i == 2 ? 2 * model.video.width : model.video.width;
     auto opened = openVideo(provisional[i], width, model.video.height, args, model.video.fps);

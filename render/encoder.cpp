@@ -51,6 +51,7 @@ struct VideoEncoder::State {
       const int r = avcodec_receive_packet(codec, packet);
       if (r == AVERROR(EAGAIN) || r == AVERROR_EOF) return std::nullopt;
       if (r < 0) return error("encoding failed", r);
+      packet->duration = 1;  // one frame, in the codec's 1/fps time base
       av_packet_rescale_ts(packet, codec->time_base, stream->time_base);
       packet->stream_index = stream->index;
       const int w = av_interleaved_write_frame(format, packet);
@@ -70,7 +71,10 @@ std::variant<std::unique_ptr<VideoEncoder>, std::string> VideoEncoder::open(
   s.path = path;
   s.settings = settings;
   if (settings.width % 2 || settings.height % 2) return path + ": width and height must be even";
-  if (std::filesystem::is_directory(path)) return path + ": is a directory, not a file";
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    return path + ": is not a regular file (an MP4 must be written to a file)";
   s.temp = path + ".partial-" + std::to_string(::getpid()) + ".mp4";
 
   av_log_set_level(AV_LOG_ERROR);

@@ -136,7 +136,7 @@ void drawSpinInset(Image& image, Overlay& font, const std::vector<std::array<flo
   const float mid = 0.5f * (top + bottom);
   drawLine(image, left, mid, right, mid, 1, {90, 90, 90, 255});  // n = 0
   char label[64];
-  std::snprintf(label, sizeof label, "spin n (±%g rad/s) against t (0–%g s)", range, duration);
+  std::snprintf(label, sizeof label, "n ±%g rad/s, 0–%g s", range, duration);
   font.text(image, x0 + pad, y0 + pad + font.lineHeight() * 3 / 4, label, {40, 40, 40, 255});
   auto to_screen = [&](const std::array<float, 2>& p) {
     const float x = left + (right - left) * static_cast<float>(p[0] / duration);

@@ -56,7 +56,7 @@ std::variant<std::unique_ptr<Renderer>, std::string> Renderer::create(
 
 std::string Renderer::init() {
   if (std::string e = gl_.create(settings_.width, settings_.height); !e.empty()) return e;
-  if (std::string e = font_.load(std::max(12, settings_.height / 36)); !e.empty()) return e;
+  if (std::string e = font_.load(std::max(8, settings_.height / 36)); !e.empty()) return e;
   try {
     points_program_ = loadProgram("points.vert", "points.frag");
     floor_program_ = loadProgram("floor.vert", "floor.frag");

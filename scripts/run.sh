@@ -1,15 +1,29 @@
 #!/usr/bin/env bash
-# The main job: set up, build, and simulate the default scenes into out/.
+# The main job: set up, build, then write into out/ the default scene's preferred, reversed
+# and side-by-side videos and its four still views, the seed body's four still views, and
+# telemetry and analysis of every shipped scene.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 bash scripts/build.sh rattleback
 mkdir -p out
-for scene in rattleback seed-preferred seed-reversed; do
-  echo "== $scene"
-  ./build/app/rattleback analyze "scenes/$scene.yaml" > "out/$scene-analysis.txt"
-  ./build/app/rattleback simulate "scenes/$scene.yaml" -o "out/$scene.csv"
+rb=./build/app/rattleback
+
+echo "== videos of scenes/rattleback.yaml (spun both ways)"
+$rb render scenes/rattleback.yaml --both -o out/rattleback.mp4
+
+echo "== stills"
+for view in oblique above front side; do
+  $rb still scenes/rattleback.yaml --view "$view" --t 1.0 -o "out/rattleback-$view.png" -q
+  $rb still scenes/seed-reversed.yaml --view "$view" -o "out/seed-$view.png" -q
 done
+
+echo "== telemetry and analysis"
+for scene in rattleback seed-preferred seed-reversed; do
+  $rb analyze "scenes/$scene.yaml" > "out/$scene-analysis.txt"
+  $rb simulate "scenes/$scene.yaml" -o "out/$scene.csv" -q
+done
+
 echo
-echo "Written to out/:"
+echo "Written to $(pwd)/out/:"
 ls -1 out | sed 's/^/  out\//'

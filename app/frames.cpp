@@ -1,0 +1,39 @@
+#include "app/frames.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace app {
+
+// The surface points to draw. A fine grid (the default body has 7664 surface points, 3 px
+// apart on screen) reads as moiré, so columns are thinned to about kDrawnPoints by keeping
+// every k-th column counted outwards from the axes, which keeps the set symmetric; the
+// spheres grow with k.
+constexpr double kDrawnPoints = 2500;
+
+render::BodyPoints bodyPointsOf(const sim::Model& model) {
+  const sim::Body& body = model.body;
+  const double total = body.top_points.size() + body.bottom_points.size();
+  const int k = std::max(1, static_cast<int>(std::ceil(std::sqrt(total / kDrawnPoints))));
+  const sim::Grid& grid = body.grid;
+  auto kept = [&](const Eigen::Vector3d& r) {
+    const Eigen::Vector3d p = r + body.com_geometric;  // column (i + ½) dx, (j + ½) dy
+    const long i = std::lround(std::abs(p.x()) / grid.dx - 0.5);
+    const long j = std::lround(std::abs(p.y()) / grid.dy - 0.5);
+    return i % k == 0 && j % k == 0;
+  };
+  render::BodyPoints points;
+  for (const auto& p : body.top_points)
+    if (kept(p)) points.top.push_back(p.cast<float>());
+  for (const auto& p : body.bottom_points)
+    if (kept(p)) points.bottom.push_back(p.cast<float>());
+  points.radius = static_cast<float>(0.35 * k * std::min(grid.dx, grid.dy));
+  points.footprint_half = body.shape.rimHalfWidths().cast<float>();
+  return points;
+}
+
+render::FrameInput frameOf(const sim::Telemetry& t) {
+  return {t.x_world, t.orientation, t.t, t.spin};
+}
+
+}  // namespace app

@@ -1,0 +1,93 @@
+// Frames per second of the video pipeline's stages, measured side by side in one run:
+// render only (draw + read back + read-outs), encode only (RGBA → yuv420p → x264), and end
+// to end (`rattleback render`: simulate, render and encode in overlapping threads).
+// Usage: rattleback_render_bench [SCENE] [FRAMES]
+#include <chrono>
+#include <cstdio>
+#include <string>
+
+#include "app/commands.hpp"
+#include "app/frames.hpp"
+#include "app/scene_args.hpp"
+#include "render/encoder.hpp"
+#include "render/renderer.hpp"
+#include "sim/initial.hpp"
+#include "sim/step.hpp"
+#include "sim/telemetry.hpp"
+
+namespace {
+
+double seconds(std::chrono::steady_clock::time_point since) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string scene = argc > 1 ? argv[1] : RATTLEBACK_SOURCE_DIR "/scenes/rattleback.yaml";
+  const int frames = argc > 2 ? std::stoi(argv[2]) : 150;
+  std::printf("scene %s, %d frames per measurement\n", scene.c_str(), frames);
+  std::printf("%-10s %12s %12s %12s\n", "size", "render fps", "encode fps", "end-to-end");
+  for (auto [w, h] : {std::pair{1280, 720}, std::pair{1920, 1080}}) {
+    app::Overrides o;
+    o.size = std::array<int, 2>{w, h};
+    auto loaded = app::loadScene(scene, o);
+    if (auto* e = std::get_if<std::string>(&loaded)) {
+      std::fprintf(stderr, "%s\n", e->c_str());
+      return 2;
+    }
+    const sim::Model& model = std::get<sim::Model>(loaded);
+
+    // The poses of the first `frames` video frames.
+    std::vector<render::FrameInput> poses;
+    sim::State s = sim::initialState(model);
+    while (static_cast<int>(poses.size()) < frames) {
+      if (s.step % model.video.steps_per_frame == 0) {
+        poses.push_back(app::frameOf(sim::telemetryOf(model, s)));
+      }
+      sim::step(model, s);
+    }
+
+    render::RenderSettings settings;
+    settings.width = w;
+    settings.height = h;
+    settings.duration = model.steps * model.dt;
+    settings.spin_range = 5.5;
+    auto created = render::Renderer::create(settings, app::bodyPointsOf(model));
+    if (auto* e = std::get_if<std::string>(&created)) {
+      std::fprintf(stderr, "%s\n", e->c_str());
+      return 2;
+    }
+    auto& renderer = *std::get<std::unique_ptr<render::Renderer>>(created);
+    std::vector<render::Image> images(frames);
+    auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < frames; ++i) renderer.draw(poses[i], images[i]);
+    const double render_fps = frames / seconds(start);
+
+    render::EncoderSettings encoding;
+    encoding.width = w;
+    encoding.height = h;
+    encoding.fps = model.video.fps;
+    auto encoder = std::get<std::unique_ptr<render::VideoEncoder>>(
+        render::VideoEncoder::open("/tmp/rattleback_bench.mp4", encoding));
+    start = std::chrono::steady_clock::now();
+    for (const auto& image : images) encoder->add(image);
+    encoder->finish();
+    const double encode_fps = frames / seconds(start);
+
+    app::RenderArgs args;
+    args.scene = scene;
+    args.output = "/tmp/rattleback_bench_e2e.mp4";
+    args.overrides = o;
+    args.overrides.duration = frames / (model.video.fps * model.video.playback);
+    args.quiet = true;
+    start = std::chrono::steady_clock::now();
+    app::renderCommand(args);
+    const double e2e_fps = frames / seconds(start);
+    std::printf("%-10s %12.1f %12.1f %12.1f\n", (std::to_string(w) + "x" + std::to_string(h)).c_str(),
+                render_fps, encode_fps, e2e_fps);
+  }
+  std::remove("/tmp/rattleback_bench.mp4");
+  std::remove("/tmp/rattleback_bench_e2e.mp4");
+  return 0;
+}

@@ -1,0 +1,263 @@
+// What the renderer and encoder write: snapshot stills against goldens, the MP4's stream
+// and layout, --both naming, failures that leave nothing behind, and `compare`.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+extern "C" {
+#include <libavformat/avformat.h>
+#include <libavutil/pixdesc.h>
+}
+
+#include "render/image_io.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kSource = RATTLEBACK_SOURCE_DIR;
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::path(testing::TempDir()) / "rattleback_render";
+  fs::create_directories(dir);
+  fs::remove(dir / name);
+  return dir / name;
+}
+
+// Runs rattleback from the source tree (scene paths in the arguments are relative to it);
+// returns the exit status.
+int rattleback(const std::string& args) {
+  const std::string command = "cd " + kSource.string() + " && " + RATTLEBACK_BIN + " " + args +
+                              " >/dev/null 2>" + scratch("stderr.txt").string();
+  const int raw = std::system(command.c_str());
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+}
+
+// Snapshot tolerance. The same build draws byte-identical pixels run after run; another CPU
+// can move ~0.1% of pixels by one step (DEVELOPERS.md, measured on llvmpipe), and the PNG
+// round trip is exact. So a pixel counts as different beyond 2 steps in a channel, and at
+// most 0.5% of pixels may differ: a moved body, a wrong colour or a missing floor changes
+// far more (the seed's 602 points alone cover ~8% of a 320×180 frame).
+constexpr int kChannelTolerance = 2;
+constexpr double kPixelFraction = 0.005;
+
+struct Still {
+  std::string name, args;
+};
+
+std::vector<Still> stills() {
+  std::ifstream in(kSource / "tests/golden/stills.txt");
+  std::vector<Still> out;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream s(line);
+    Still still;
+    s >> still.name;
+    std::getline(s, still.args);
+    out.push_back(still);
+  }
+  return out;
+}
+
+}  // namespace
+
+// Each golden still, re-rendered, matches within the tolerance. On a mismatch the actual
+// image and a diff (differing pixels magenta) are written beside the test's scratch files
+// and named. Re-bless with scripts/bless-goldens.sh.
+TEST(Snapshots, StillsMatchTheGoldens) {
+  const auto list = stills();
+  ASSERT_EQ(list.size(), 5u);
+  for (const Still& still : list) {
+    const fs::path actual = scratch(still.name + "-actual.png");
+    ASSERT_EQ(rattleback("still " + still.args + " -o " + actual.string()), 0) << still.name;
+    render::Image a, b;
+    ASSERT_FALSE(render::readPng(actual.string(), a));
+    ASSERT_FALSE(render::readPng((kSource / "tests/golden" / (still.name + ".png")).string(), b));
+    const render::Comparison c = render::compareImages(a, b, kChannelTolerance);
+    ASSERT_TRUE(c.same_size) << still.name;
+    if (c.fraction() > kPixelFraction) {
+      const fs::path diff = scratch(still.name + "-diff.png");
+      render::writePng(diff.string(), render::diffImage(a, b, kChannelTolerance));
+      ADD_FAILURE() << still.name << ": " << c.differing << " pixels (" << 100 * c.fraction()
+                    << "%) differ, within x " << c.box[0] << "–" << c.box[2] << ", y " << c.box[1]
+                    << "–" << c.box[3] << "; actual " << actual << ", diff " << diff;
+    }
+  }
+}
+
+// The seed's views are what the seed's figures show: red on top, blue below. In the side
+// view (looking across the body, 10° from above) the upper half of the body's pixels are
+// mostly red and the lower half mostly blue.
+TEST(Snapshots, TopIsRedAndBottomIsBlue) {
+  render::Image image;
+  ASSERT_FALSE(render::readPng((kSource / "tests/golden/seed-side.png").string(), image));
+  long red_top = 0, blue_top = 0, red_bottom = 0, blue_bottom = 0;
+  int first = image.height, last = 0;
+  auto colour = [&](int x, int y) {
+    const unsigned char* p = &image.rgba[(static_cast<std::size_t>(y) * image.width + x) * 4];
+    return p[0] > 120 && p[1] < 80 && p[2] < 80 ? 1 : p[2] > 120 && p[0] < 80 && p[1] < 120 ? 2 : 0;
+  };
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      if (colour(x, y)) {
+        first = std::min(first, y);
+        last = std::max(last, y);
+      }
+  const int middle = (first + last) / 2;
+  for (int y = first; y <= last; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const int c = colour(x, y);
+      if (c == 1) ++(y < middle ? red_top : red_bottom);
+      if (c == 2) ++(y < middle ? blue_top : blue_bottom);
+    }
+  EXPECT_GT(red_top, blue_top);
+  EXPECT_GT(blue_bottom, red_bottom);
+}
+
+namespace {
+
+struct Probe {
+  std::string codec, pix_fmt;
+  int width = 0, height = 0;
+  long long frames = 0;
+  double duration = 0;
+  std::string color;
+};
+
+// Reads the MP4 back with libavformat, counting the packets (frames) of its video stream.
+Probe probe(const fs::path& path) {
+  Probe p;
+  AVFormatContext* format = nullptr;
+  if (avformat_open_input(&format, path.c_str(), nullptr, nullptr) < 0) return p;
+  avformat_find_stream_info(format, nullptr);
+  const int index = av_find_best_stream(format, AVMEDIA_TYPE_VIDEO, -1, -1, nullptr, 0);
+  if (index >= 0) {
+    const AVCodecParameters* par = format->streams[index]->codecpar;
+    p.codec = avcodec_get_name(par->codec_id);
+    const char* pix = av_get_pix_fmt_name(static_cast<AVPixelFormat>(par->format));
+    p.pix_fmt = pix ? pix : "";
+    p.width = par->width;
+    p.height = par->height;
+    p.color = av_color_space_name(par->color_space);
+    p.duration = format->duration / static_cast<double>(AV_TIME_BASE);
+    AVPacket* packet = av_packet_alloc();
+    while (av_read_frame(format, packet) >= 0) {
+      if (packet->stream_index == index) ++p.frames;
+      av_packet_unref(packet);
+    }
+    av_packet_free(&packet);
+  }
+  avformat_close_input(&format);
+  return p;
+}
+
+// Top-level MP4 boxes in file order.
+std::vector<std::string> topLevelBoxes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::vector<std::string> boxes;
+  unsigned char header[8];
+  while (in.read(reinterpret_cast<char*>(header), 8)) {
+    std::uint64_t size = (std::uint64_t(header[0]) << 24) | (header[1] << 16) | (header[2] << 8) | header[3];
+    boxes.emplace_back(reinterpret_cast<char*>(header + 4), 4);
+    if (size == 1) {  // 64-bit size follows
+      unsigned char big[8];
+      in.read(reinterpret_cast<char*>(big), 8);
+      size = 0;
+      for (unsigned char b : big) size = (size << 8) | b;
+      in.seekg(static_cast<std::streamoff>(size - 16), std::ios::cur);
+    } else if (size < 8) {
+      break;
+    } else {
+      in.seekg(static_cast<std::streamoff>(size - 8), std::ios::cur);
+    }
+  }
+  return boxes;
+}
+
+}  // namespace
+
+// H.264, yuv420p, BT.709, the asked size, exactly round(duration × playback × fps) frames
+// with the right duration, and the index (moov) before the media (mdat) so that a browser
+// can start playing before it has the whole file.
+TEST(Video, StreamAndLayoutAreWhatBrowsersPlay) {
+  const fs::path video = scratch("seed.mp4");
+  ASSERT_EQ(rattleback("render scenes/seed-reversed.yaml --duration 0.4 --size 320x180 --fps 25 "
+                       "-o " + video.string()),
+            0);
+  const Probe p = probe(video);
+  EXPECT_EQ(p.codec, "h264");
+  EXPECT_EQ(p.pix_fmt, "yuv420p");
+  EXPECT_EQ(p.color, "bt709");
+  EXPECT_EQ(p.width, 320);
+  EXPECT_EQ(p.height, 180);
+  EXPECT_EQ(p.frames, 10);  // 0.4 s × 25 fps
+  EXPECT_NEAR(p.duration, 0.4, 1e-3);  // 1 ms: the container's time base rounding
+  const auto boxes = topLevelBoxes(video);
+  const auto moov = std::find(boxes.begin(), boxes.end(), "moov");
+  const auto mdat = std::find(boxes.begin(), boxes.end(), "mdat");
+  ASSERT_NE(moov, boxes.end());
+  ASSERT_NE(mdat, boxes.end());
+  EXPECT_LT(moov - boxes.begin(), mdat - boxes.begin());
+}
+
+// Playback 0.5 plays the same simulated time in twice the video time: twice the frames.
+TEST(Video, PlaybackScalesTheFrameCount) {
+  const fs::path video = scratch("slow.mp4");
+  ASSERT_EQ(rattleback("render scenes/seed-reversed.yaml --duration 0.4 --playback 2 --size 160x90 "
+                       "-o " + video.string()),
+            0);
+  EXPECT_EQ(probe(video).frames, 20);  // 0.4 s × 2 × 25 fps
+}
+
+// --both writes the preferred, reversed and side-by-side videos; the side-by-side one is
+// two frames wide. No temporary file is left.
+TEST(Video, BothWritesThreeVideos) {
+  const fs::path base = scratch("pair");
+  ASSERT_EQ(rattleback("render scenes/seed-reversed.yaml --both --duration 0.2 --size 160x90 -o " +
+                       base.string()),
+            0);
+  for (const char* suffix : {"-preferred.mp4", "-reversed.mp4"})
+    EXPECT_EQ(probe(base.string() + suffix).width, 160) << suffix;
+  EXPECT_EQ(probe(base.string() + "-both.mp4").width, 320);
+  for (const auto& entry : fs::directory_iterator(base.parent_path()))
+    EXPECT_EQ(entry.path().filename().string().find(".partial-"), std::string::npos);
+}
+
+// A render that cannot run writes nothing and keeps what was there.
+TEST(Video, FailureLeavesAnExistingFileAlone) {
+  const fs::path video = scratch("keep.mp4");
+  std::ofstream(video) << "precious";
+  EXPECT_EQ(rattleback("render scenes/seed-reversed.yaml --size 321x180 -o " + video.string()), 2);
+  EXPECT_EQ(rattleback("render scenes/seed-reversed.yaml --fps 30 -o " + video.string()), 2);
+  EXPECT_EQ(rattleback("render scenes/seed-reversed.yaml --view sideways -o " + video.string()), 2);
+  std::ifstream in(video);
+  std::string content;
+  in >> content;
+  EXPECT_EQ(content, "precious");
+  EXPECT_EQ(rattleback("render scenes/seed-reversed.yaml --duration 0.1 -o /nonexistent/x.mp4"), 2);
+  EXPECT_EQ(rattleback("still scenes/seed-reversed.yaml -o /nonexistent/x.png"), 2);
+}
+
+// `compare` is the snapshot check users can call: 0 when equal within the tolerance, 1 when
+// not, with a diff image.
+TEST(Compare, SameAndDifferentImages) {
+  const fs::path golden = kSource / "tests/golden/seed-above.png";
+  EXPECT_EQ(rattleback("compare " + golden.string() + " " + golden.string()), 0);
+  render::Image image;
+  ASSERT_FALSE(render::readPng(golden.string(), image));
+  for (int y = 20; y < 60; ++y)  // paint a 40×40 square: 1600 of 57600 pixels (2.8%)
+    for (int x = 20; x < 60; ++x) image.rgba[(y * image.width + x) * 4] ^= 0x80;
+  const fs::path changed = scratch("changed.png"), diff = scratch("diff.png");
+  ASSERT_FALSE(render::writePng(changed.string(), image));
+  EXPECT_EQ(rattleback("compare " + changed.string() + " " + golden.string() + " --diff " +
+                       diff.string()),
+            1);
+  EXPECT_TRUE(fs::exists(diff));
+  // Within a looser allowance (5% of pixels) the same pair passes.
+  EXPECT_EQ(rattleback("compare " + changed.string() + " " + golden.string() + " --pixels 0.05"), 0);
+}
