@@ -13,6 +13,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// A scratch folder of the running test's own: CTest runs tests in parallel.
+fs::path scratchDir() {
+  const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+  const fs::path dir = fs::path(testing::TempDir()) / "rattleback_cli" /
+                       (std::string(info->test_suite_name()) + "." + info->name());
+  fs::create_directories(dir);
+  return dir;
+}
+
 struct Result {
   int status;
   std::string out, err;
@@ -20,8 +29,7 @@ struct Result {
 
 // Runs `rattleback ARGS` with stdout and stderr captured.
 Result rattleback(const std::string& args) {
-  const fs::path dir = fs::path(testing::TempDir()) / "rattleback_cli";
-  fs::create_directories(dir);
+  const fs::path dir = scratchDir();
   const std::string out = (dir / "stdout").string(), err = (dir / "stderr").string();
   const std::string command =
       std::string(RATTLEBACK_BIN) + " " + args + " >" + out + " 2>" + err + " </dev/null";
@@ -40,8 +48,7 @@ std::string scene(const std::string& name) {
 }
 
 fs::path tempFile(const std::string& name) {
-  const fs::path dir = fs::path(testing::TempDir()) / "rattleback_cli";
-  fs::create_directories(dir);
+  const fs::path dir = scratchDir();
   fs::remove(dir / name);
   return dir / name;
 }

@@ -21,8 +21,11 @@ namespace {
 
 const fs::path kSource = RATTLEBACK_SOURCE_DIR;
 
+// A file in a scratch folder of the running test's own (CTest runs tests in parallel).
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::path(testing::TempDir()) / "rattleback_render";
+  const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+  const fs::path dir = fs::path(testing::TempDir()) / "rattleback_render" /
+                       (std::string(info->test_suite_name()) + "." + info->name());
   fs::create_directories(dir);
   fs::remove(dir / name);
   return dir / name;
