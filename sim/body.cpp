@@ -39,6 +39,19 @@ Eigen::Vector3d Paraboloid::lowestPoint(const Eigen::Vector3d& down) const {
   return {xy.x(), xy.y(), bottom(xy.x(), xy.y())};
 }
 
+Eigen::Vector3d Paraboloid::lowestPointOfBody(const Eigen::Vector3d& down) const {
+  const Eigen::Vector3d on_bottom = lowestPoint(down);
+  if (down.z() < 0 && on_bottom.z() <= top) return on_bottom;
+  Eigen::Matrix2d hessian;
+  hessian << p / a, q / (a * a), q / (a * a), s / a;
+  const Eigen::Matrix2d inverse = hessian.inverse();
+  const Eigen::Vector2d d = down.head<2>();
+  const double norm = std::sqrt(d.dot(inverse * d));
+  if (norm == 0) return {0, 0, top};
+  const Eigen::Vector2d u = std::sqrt(2 * (top + a)) * inverse * d / norm;
+  return {u.x(), u.y(), top};
+}
+
 double Dents::surface(const Paraboloid& shape, double x, double y) const {
   const double cx = shape.p / (2 * shape.a * scale * scale);
   const double cy = shape.s / (2 * shape.a * scale * scale);

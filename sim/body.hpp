@@ -25,6 +25,10 @@ struct Paraboloid {
   /// frame, down.z < 0): where the outward normal (f_x, f_y, −1) is parallel to `down`, i.e.
   /// H (x, y) = −(down_x, down_y)/down_z with H the Hessian [p/a, q/a²; q/a², s/a]. Metres.
   Eigen::Vector3d lowestPoint(const Eigen::Vector3d& down) const;
+  /// The same on the closed body (bottom below its rim, flat top): when the bottom's lowest
+  /// point lies outside the rim, the lowest point is on the rim ellipse z = top, where
+  /// ½ uᵀHu = top + a: u = √(2(top+a)) H⁻¹d / √(dᵀH⁻¹d) with d = (down_x, down_y). Metres.
+  Eigen::Vector3d lowestPointOfBody(const Eigen::Vector3d& down) const;
 };
 
 /// Two dents z = p/(2a k²)(x ∓ m_x)² + s/(2a k²)(y ∓ m_y)² − (a − inset) k cut from

@@ -35,11 +35,26 @@ Eigen::Vector2d frictionForce(const Contact& c, const Eigen::Vector2d& v_t, doub
   return -limit * v_t / std::sqrt(speed2 + eps * eps);
 }
 
-}  // namespace
+
+// Adds the floor's force on one material point at r (world axes, from the CM) whose height
+// is z < 0.
+void pressPoint(const Contact& c, const Kinematics& k, const Eigen::Vector3d& r, double z,
+                ContactLoad& load) {
+  const Eigen::Vector3d v_point = k.v_world + k.w_world.cross(r);
+  const double depth = -z;
+  ++load.contacts;
+  load.elastic_energy += 0.5 * c.stiffness * depth * depth;
+  const double normal = c.stiffness * depth - c.damping * v_point.z();
+  if (normal <= 0) return;
+  const Eigen::Vector2d friction = frictionForce(c, v_point.head<2>(), normal);
+  const Eigen::Vector3d f(friction.x(), friction.y(), normal);
+  load.force_world += f;
+  load.torque_world += r.cross(f);
+  load.normal_force += normal;
+}
 
 ContactLoad pointContact(const Model& model, const Kinematics& k) {
   const ContactPoints& pts = model.body.bottom;
-  const Contact& c = model.contact;
   const double r20 = k.R(2, 0), r21 = k.R(2, 1), r22 = k.R(2, 2);
   const double z_cm = k.x_world.z();
   ContactLoad load;
@@ -47,20 +62,25 @@ ContactLoad pointContact(const Model& model, const Kinematics& k) {
     // Height of the point above the floor: z = z_cm + (R r)_z. Most points are above it.
     const double z = z_cm + r20 * pts.x[i] + r21 * pts.y[i] + r22 * pts.z[i];
     if (z >= 0) continue;
-    const Eigen::Vector3d r = k.R * Eigen::Vector3d(pts.x[i], pts.y[i], pts.z[i]);
-    const Eigen::Vector3d v_point = k.v_world + k.w_world.cross(r);
-    const double depth = -z;
-    ++load.contacts;
-    load.elastic_energy += 0.5 * c.stiffness * depth * depth;
-    const double normal = c.stiffness * depth - c.damping * v_point.z();
-    if (normal <= 0) continue;
-    const Eigen::Vector2d friction = frictionForce(c, v_point.head<2>(), normal);
-    const Eigen::Vector3d f(friction.x(), friction.y(), normal);
-    load.force_world += f;
-    load.torque_world += r.cross(f);
-    load.normal_force += normal;
+    pressPoint(model.contact, k, k.R * Eigen::Vector3d(pts.x[i], pts.y[i], pts.z[i]), z, load);
   }
   return load;
+}
+
+ContactLoad smoothContact(const Model& model, const Kinematics& k) {
+  ContactLoad load;
+  const Eigen::Vector3d down_body = -k.R.row(2).transpose();  // Rᵀ(−ẑ)
+  const Eigen::Vector3d r = k.R * lowestSurfacePoint(model.body, down_body);
+  const double z = k.x_world.z() + r.z();
+  if (z < 0) pressPoint(model.contact, k, r, z, load);
+  return load;
+}
+
+}  // namespace
+
+ContactLoad penaltyContact(const Model& model, const Kinematics& k) {
+  return model.contact.model == ContactModel::Smooth ? smoothContact(model, k)
+                                                     : pointContact(model, k);
 }
 
 }  // namespace sim

@@ -26,9 +26,11 @@ struct ContactLoad {
   int contacts = 0;           ///< points below the floor
 };
 
-/// `points` model: every bottom point below the floor (depth d = −z > 0) gets the normal force
-/// N = max(0, k d − c v_n) and friction F_t = −μ N v_t/|v_t| (coulomb) or
-/// −μ N v_t / sqrt(|v_t|² + ε²) (regularized). Only bottom-surface points are visited.
-ContactLoad pointContact(const Model& model, const Kinematics& k);
+/// The floor's load for model.contact.model `points` or `smooth` (penalty contact).
+/// A point below the floor (depth d = −z > 0) gets the normal force N = max(0, k d − c v_n)
+/// and friction F_t = −μ N v_t/|v_t| (coulomb, seed eq. 31) or −μ N v_t / sqrt(|v_t|² + ε²)
+/// (regularized). `points` applies it to every bottom-surface grid point below the floor
+/// (only those are visited); `smooth` to the single lowest point of the smooth surface.
+ContactLoad penaltyContact(const Model& model, const Kinematics& k);
 
 }  // namespace sim

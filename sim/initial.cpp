@@ -31,7 +31,15 @@ double springForce(const Model& model, const Eigen::Matrix3d& R, double z_cm) {
 }  // namespace
 
 double restingHeight(const Model& model, const Eigen::Matrix3d& R) {
-  // The spring force falls monotonically as the CM rises; the answer lies between touching
+  // Smooth contact: one spring at the lowest point carries the weight, depth M g / k.
+  if (model.contact.model != ContactModel::Points) {
+    const Eigen::Vector3d low = R * lowestSurfacePoint(model.body, -R.row(2).transpose());
+    const double depth = model.contact.model == ContactModel::Smooth
+                             ? model.body.mass * model.gravity / model.contact.stiffness
+                             : 0.0;
+    return -low.z() - depth;
+  }
+  // Points: the spring force falls monotonically as the CM rises; the answer lies between touching
   // (lowest point at 0) and one point carrying the whole weight.
   const double weight = model.body.mass * model.gravity;
   double high = -lowestPoint(model, R).z();

@@ -88,6 +88,12 @@ struct State {
   std::int64_t step = 0;
 };
 
+/// The point of the body's smooth surface lowest along `down_body` (a unit vector in body
+/// axes), relative to the CM, body axes, m: where the `smooth` and `rolling` models touch.
+inline Eigen::Vector3d lowestSurfacePoint(const Body& body, const Eigen::Vector3d& down_body) {
+  return body.shape.lowestPointOfBody(down_body) - body.com_geometric;
+}
+
 /// ω_world = R I⁻¹ Rᵀ L (rad/s).
 Eigen::Vector3d angularVelocity(const Model& model, const State& s);
 

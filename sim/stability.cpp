@@ -3,6 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "sim/initial.hpp"
 
@@ -48,11 +49,16 @@ ContactStability contactStability(const Model& model) {
   // Springs in contact at the upright rest pose.
   const Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
   const double z_cm = restingHeight(model, R);
-  const ContactPoints& p = model.body.bottom;
+  std::vector<Eigen::Vector3d> springs;  // body frame = world frame here
+  if (model.contact.model == ContactModel::Smooth) {
+    springs.push_back(lowestSurfacePoint(model.body, -Eigen::Vector3d::UnitZ()));
+  } else {
+    const ContactPoints& p = model.body.bottom;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (z_cm + p.z[i] < 0) springs.emplace_back(p.x[i], p.y[i], p.z[i]);
+  }
   Eigen::Matrix<double, 6, 6> K = Eigen::Matrix<double, 6, 6>::Zero();
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (z_cm + p.z[i] >= 0) continue;
-    const Eigen::Vector3d r(p.x[i], p.y[i], p.z[i]);
+  for (const Eigen::Vector3d& r : springs) {
     Eigen::Matrix<double, 6, 1> J;
     J << Eigen::Vector3d::UnitZ(), r.cross(Eigen::Vector3d::UnitZ());
     K += model.contact.stiffness * J * J.transpose();

@@ -72,7 +72,7 @@ void rk4Step(const Model& model, State& s) {
 
 Load loadsOn(const Model& model, const Kinematics& k) {
   Load load;
-  load.contact = pointContact(model, k);
+  load.contact = penaltyContact(model, k);
   load.force_world = load.contact.force_world;
   load.force_world.z() -= model.body.mass * model.gravity;
   load.torque_world = load.contact.torque_world - model.contact.air_drag * k.w_world;
