@@ -52,6 +52,17 @@ Eigen::Vector3d Paraboloid::lowestPointOfBody(const Eigen::Vector3d& down) const
   return {u.x(), u.y(), top};
 }
 
+Eigen::Vector3d Paraboloid::lowestPointRate(const Eigen::Vector3d& down,
+                                            const Eigen::Vector3d& down_rate) const {
+  Eigen::Matrix2d hessian;
+  hessian << p / a, q / (a * a), q / (a * a), s / a;
+  const Eigen::Vector2d g(-down.x() / down.z(), -down.y() / down.z());
+  const Eigen::Vector2d g_rate =
+      -down_rate.head<2>() / down.z() + down.head<2>() * down_rate.z() / (down.z() * down.z());
+  const Eigen::Vector2d xy_rate = hessian.inverse() * g_rate;
+  return {xy_rate.x(), xy_rate.y(), g.dot(xy_rate)};
+}
+
 double Dents::surface(const Paraboloid& shape, double x, double y) const {
   const double cx = shape.p / (2 * shape.a * scale * scale);
   const double cy = shape.s / (2 * shape.a * scale * scale);

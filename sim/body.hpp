@@ -29,6 +29,11 @@ struct Paraboloid {
   /// point lies outside the rim, the lowest point is on the rim ellipse z = top, where
   /// ½ uᵀHu = top + a: u = √(2(top+a)) H⁻¹d / √(dᵀH⁻¹d) with d = (down_x, down_y). Metres.
   Eigen::Vector3d lowestPointOfBody(const Eigen::Vector3d& down) const;
+  /// How fast the lowest point moves over the bottom when `down` turns at `down_rate`:
+  /// with g = −(d_x, d_y)/d_z, (ẋ, ẏ) = H⁻¹ ġ and ż = g·(ẋ, ẏ) (the surface's slope is g
+  /// there). m/s.
+  Eigen::Vector3d lowestPointRate(const Eigen::Vector3d& down,
+                                  const Eigen::Vector3d& down_rate) const;
 };
 
 /// Two dents z = p/(2a k²)(x ∓ m_x)² + s/(2a k²)(y ∓ m_y)² − (a − inset) k cut from

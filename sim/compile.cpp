@@ -64,11 +64,10 @@ std::optional<SpecError> checkBody(const BodySpec& b) {
 }
 
 std::optional<SpecError> checkContact(const ContactSpec& c) {
-  if (c.model == "rolling")
-    return SpecError{"contact.model", c.model + " is not available yet; use points or smooth"};
-  if (c.model != "points" && c.model != "smooth")
+  if (c.model != "points" && c.model != "smooth" && c.model != "rolling")
     return SpecError{"contact.model", "must be points, smooth or rolling, not '" + c.model + "'"};
-  if (auto e = needPositive("contact.stiffness", c.stiffness)) return e;
+  if (c.model != "rolling")
+    if (auto e = needPositive("contact.stiffness", c.stiffness)) return e;
   if (auto e = needNonNegative("contact.damping", c.damping)) return e;
   if (auto e = needNonNegative("contact.friction", c.friction)) return e;
   if (c.friction_law != "coulomb" && c.friction_law != "regularized")
@@ -188,7 +187,9 @@ std::variant<Model, SpecError> compile(const SceneSpec& spec) {
   model.body = std::move(std::get<Body>(body));
 
   const ContactSpec& c = spec.contact;
-  model.contact = Contact{c.model == "smooth" ? ContactModel::Smooth : ContactModel::Points,
+  model.contact = Contact{c.model == "smooth"    ? ContactModel::Smooth
+                          : c.model == "rolling" ? ContactModel::Rolling
+                                                 : ContactModel::Points,
                           c.stiffness,
                           c.damping,
                           c.friction,

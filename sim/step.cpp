@@ -1,5 +1,7 @@
 #include "sim/step.hpp"
 
+#include "sim/rolling.hpp"
+
 namespace sim {
 namespace {
 
@@ -18,7 +20,11 @@ Eigen::Vector4d quaternionRate(const Eigen::Quaterniond& q, const Eigen::Vector3
 Rates ratesOf(const Model& model, const State& s) {
   const Kinematics k = kinematicsOf(model, s);
   const Load load = loadsOn(model, k);
-  return {s.v_world, load.force_world / model.body.mass, quaternionRate(s.q, k.w_world),
+  // Rolling: the CM moves as the constraint says, v = −ω × r.
+  const Eigen::Vector3d v = model.contact.model == ContactModel::Rolling
+                                ? Eigen::Vector3d(-k.w_world.cross(load.r_contact_world))
+                                : s.v_world;
+  return {v, load.force_world / model.body.mass, quaternionRate(s.q, k.w_world),
           load.torque_world};
 }
 
@@ -72,7 +78,17 @@ void rk4Step(const Model& model, State& s) {
 
 Load loadsOn(const Model& model, const Kinematics& k) {
   Load load;
-  load.contact = penaltyContact(model, k);
+  if (model.contact.model == ContactModel::Rolling) {
+    // The floor pushes with whatever force keeps the contact point still.
+    const RollingMotion motion = rollingMotion(model, k);
+    load.r_contact_world = motion.r_world;
+    load.contact.force_world = motion.force_world;
+    load.contact.torque_world = motion.r_world.cross(motion.force_world);
+    load.contact.normal_force = motion.force_world.z();
+    load.contact.contacts = 1;
+  } else {
+    load.contact = penaltyContact(model, k);
+  }
   load.force_world = load.contact.force_world;
   load.force_world.z() -= model.body.mass * model.gravity;
   load.torque_world = load.contact.torque_world - model.contact.air_drag * k.w_world;
@@ -85,6 +101,7 @@ void step(const Model& model, State& s) {
     case Integrator::Symplectic: symplecticStep(model, s); break;
     case Integrator::Rk4: rk4Step(model, s); break;
   }
+  if (model.contact.model == ContactModel::Rolling) enforceRolling(model, s);
   ++s.step;
   s.t = static_cast<double>(s.step) * model.dt;
 }

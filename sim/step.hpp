@@ -12,9 +12,11 @@ struct Load {
   ContactLoad contact;
   Eigen::Vector3d force_world;   ///< total, N
   Eigen::Vector3d torque_world;  ///< total about the CM, N m
+  Eigen::Vector3d r_contact_world = Eigen::Vector3d::Zero();  ///< rolling: CM → contact, m
 };
 
-/// Loads at a given instant: contact + gravity −M g ẑ + air torque −σω.
+/// Loads at a given instant: contact (penalty, or the rolling constraint's force) + gravity
+/// −M g ẑ + air torque −σω.
 Load loadsOn(const Model& model, const Kinematics& k);
 
 /// Advances the state by one step of model.dt with model.integrator.

@@ -1,0 +1,54 @@
+#include "sim/rolling.hpp"
+
+namespace sim {
+namespace {
+
+// CM → contact (world) and the contact point's rate over the surface (body axes).
+struct ContactGeometry {
+  Eigen::Vector3d r_world, r_body, down_body;
+};
+
+ContactGeometry contactGeometry(const Model& model, const Eigen::Matrix3d& R) {
+  ContactGeometry g;
+  g.down_body = -R.row(2).transpose();  // Rᵀ(−ẑ)
+  g.r_body = lowestSurfacePoint(model.body, g.down_body);
+  g.r_world = R * g.r_body;
+  return g;
+}
+
+}  // namespace
+
+RollingMotion rollingMotion(const Model& model, const Kinematics& k) {
+  const double M = model.body.mass;
+  const ContactGeometry g = contactGeometry(model, k.R);
+  const Eigen::Vector3d& r = g.r_world;
+  const Eigen::Vector3d& w = k.w_world;
+  // The down direction turns in body axes as ḋ = −ω_body × d; the contact point follows.
+  const Eigen::Vector3d w_body = k.R.transpose() * w;
+  const Eigen::Vector3d down_rate = -w_body.cross(g.down_body);
+  const Eigen::Vector3d r_body_rate = model.body.shape.lowestPointRate(g.down_body, down_rate);
+  const Eigen::Vector3d r_rate = w.cross(r) + k.R * r_body_rate;
+
+  const Eigen::Matrix3d I = k.R * model.body.inertia * k.R.transpose();
+  const Eigen::Matrix3d A =
+      I + M * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
+  const Eigen::Vector3d rhs = -w.cross(I * w) - M * r.cross(w.cross(r_rate)) +
+                              M * model.gravity * r.cross(Eigen::Vector3d::UnitZ()) -
+                              model.contact.air_drag * w;
+  RollingMotion out;
+  out.r_world = r;
+  out.w_dot_world = A.ldlt().solve(rhs);
+  const Eigen::Vector3d v_dot = -out.w_dot_world.cross(r) - w.cross(r_rate);
+  out.force_world = M * (v_dot + model.gravity * Eigen::Vector3d::UnitZ());
+  return out;
+}
+
+void enforceRolling(const Model& model, State& s) {
+  const Eigen::Matrix3d R = s.q.toRotationMatrix();
+  const Eigen::Vector3d r = contactGeometry(model, R).r_world;
+  const Eigen::Vector3d w = R * (model.body.inertia_inv * (R.transpose() * s.L_world));
+  s.x_world.z() = -r.z();
+  s.v_world = -w.cross(r);
+}
+
+}  // namespace sim

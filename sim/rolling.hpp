@@ -1,0 +1,29 @@
+// Rolling without slipping on the floor: the classic nonholonomic rattleback model (Walker
+// 1896; Bondi 1986; Kane & Levinson 1982), SPEC "Contact and friction". The body's smooth
+// surface always touches the floor at its lowest point, which does not slide; the contact
+// force is whatever the constraint needs.
+#pragma once
+
+#include "sim/contact.hpp"
+#include "sim/model.hpp"
+
+namespace sim {
+
+struct RollingMotion {
+  Eigen::Vector3d r_world;      ///< CM → contact point, m
+  Eigen::Vector3d w_dot_world;  ///< angular acceleration, rad/s²
+  Eigen::Vector3d force_world;  ///< the floor's force on the body, N
+};
+
+/// With r the CM → contact vector and the no-slip constraint v = −ω × r:
+///   [I + M(|r|² 1 − r rᵀ)] ω̇ = −ω × Iω − M r × (ω × ṙ) + M g r × ẑ − σω,
+///   ṙ = ω × r + R ṙ_body,  F = M (v̇ + g ẑ),  v̇ = −ω̇ × r − ω × ṙ,
+/// where ṙ_body is how the contact point moves over the surface as the body turns
+/// (derived from Newton and Euler about the CM with the constraint differentiated once).
+RollingMotion rollingMotion(const Model& model, const Kinematics& k);
+
+/// Puts the state back on the constraint: contact point on the floor (z_cm = −r_z) and not
+/// sliding (v = −ω × r).
+void enforceRolling(const Model& model, State& s);
+
+}  // namespace sim
