@@ -27,6 +27,7 @@ int simulateCommand(const SimulateArgs& args);
 struct AnalyzeArgs {
   std::string scene;
   bool json = false;
+  std::optional<double> spin;  ///< rad/s for the growth rates; default the scene's (or 5)
 };
 int analyzeCommand(const AnalyzeArgs& args);
 

@@ -24,9 +24,11 @@ int main(int argc, char** argv) {
 
   app::AnalyzeArgs analyze_args;
   CLI::App* analyze = cli.add_subcommand(
-      "analyze", "Print the body's mass properties and what the contact allows");
+      "analyze", "Mass properties, rest stability, frequencies, growth rates, preferred direction");
   analyze->add_option("scene", analyze_args.scene, "Scene file (YAML)")->required();
   analyze->add_flag("--json", analyze_args.json, "Print JSON");
+  analyze->add_option("--spin", analyze_args.spin,
+                      "Spin for the growth rates and eigenvalues, rad/s (default: the scene's)");
 
   app::RenderArgs render_args;
   std::string render_size, still_size;

@@ -1,0 +1,43 @@
+// Theory for a body (SPEC "Theory"; seed §2): its rest on the floor and the linearised
+// rolling model about steady upright spin.
+#pragma once
+
+#include <complex>
+#include <vector>
+
+#include "sim/model.hpp"
+
+namespace sim {
+
+/// The upright rest: the CM above the contact point and the bottom's curvature there.
+struct Rest {
+  double h = 0;                        ///< CM height above the rest contact, m
+  Eigen::Vector2d radii;               ///< principal radii of curvature, ascending, m
+  Eigen::Matrix2d radius_axes;         ///< columns: their directions in the floor plane
+  bool stable = false;                 ///< h below both radii (Bondi 1986: p<1, s<1,
+                                       ///< (1−p)(1−s) > q² in his units)
+};
+Rest restOf(const Model& model);
+
+/// The rolling model linearised about upright spin n: five eigenvalues of the tilt
+/// (u = Rᵀẑ, two components) and ω_body (three); one is zero (the spin itself), the other
+/// four are the roll (rocking about the long axis) and pitch (about the short axis) modes.
+struct Linearisation {
+  double spin = 0;                               ///< rad/s
+  std::vector<std::complex<double>> eigenvalues;  ///< 1/s
+  double roll_growth = 0, pitch_growth = 0;       ///< largest real part in each mode, 1/s
+  double roll_hz = 0, pitch_hz = 0;               ///< |imaginary part| / 2π, Hz
+};
+Linearisation linearise(const Model& model, double spin);
+
+/// First order in n (Walker 1896, Bondi 1986; the seed's eqs. 18–20 generalised): the growth
+/// rates are n·k with k = d(Re λ)/dn at n = 0, here from the exact linearisation. 1/(rad).
+struct FirstOrder {
+  double roll = 0, pitch = 0;
+};
+FirstOrder firstOrderGrowth(const Model& model);
+
+/// "ccw" or "cw": the direction of spin (at |spin|) whose fastest mode grows more slowly.
+const char* preferredDirection(const Model& model, double spin_magnitude);
+
+}  // namespace sim
