@@ -1,0 +1,211 @@
+// The physics that reverses: the rolling model against an independent solver's reversal time,
+// the smooth penalty model against rolling, the linearised theory against runs.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "sim/analysis.hpp"
+#include "support.hpp"
+
+using namespace testing_support;
+
+namespace {
+
+// The SPEC body (a=1, p=0.5, s=0.03, top=0.5, dents 0.45 at (0.73, 4.50) cm), mass properties
+// on a 0.025 cm grid, rolling without slipping, rk4, tilt 0.5°/0.5°, spin −5 rad/s.
+const char* kRollingScene = R"(
+units: {length: 0.01}
+body:
+  shape: paraboloid
+  paraboloid: {a: 1.0, p: 0.5, q: 0.0, s: 0.03, top: 0.5}
+  dents: {scale: 0.45, at: [0.73, 4.50], inset: 0.1}
+  grid: {dx: 0.025, dy: 0.025, dz: 0.025}
+  mass: 0.059
+contact: {model: rolling, air_drag: 0.0}
+initial: {spin: -5.0, tilt: [0.5, 0.5]}
+simulation: {integrator: rk4, dt: 5.0e-4, duration: 8.0}
+video: {fps: 25}
+)";
+
+struct SceneRun {
+  sim::RunSummary summary;
+  std::vector<sim::Telemetry> samples;
+};
+
+SceneRun runScene(const sim::SceneSpec& spec, std::int64_t every = 1) {
+  const sim::Model model = build(spec);
+  sim::State s = sim::initialState(model);
+  SceneRun out;
+  sim::RunOptions options;
+  options.steps_per_sample = every;
+  options.on_sample = [&](const sim::Telemetry& t) { out.samples.push_back(t); };
+  out.summary = sim::run(model, s, options);
+  return out;
+}
+
+}  // namespace
+
+// The issue's reference: an independent no-slip solver with the same mass properties (0.025 cm
+// grid) and initial-state convention gives the first reversal at about 2.32 s. Measured here
+// 2.329 s. We allow ±0.015 s (0.6%): the figure is quoted to two decimals, and the grid alone
+// moves it by 0.007 s per halving (2.340, 2.329, 2.322 s at 0.05, 0.025, 0.0125 cm).
+TEST(Rolling, ReversesWhereTheReferenceSolverDoes) {
+  const SceneRun r = runScene(parse(kRollingScene), 100);
+  ASSERT_TRUE(r.summary.first_reversal_s.has_value());
+  EXPECT_NEAR(*r.summary.first_reversal_s, 2.32, 0.015);
+  EXPECT_GT(r.summary.last.spin, 4.0);  // and it spins back up the other way
+}
+
+// With a light air torque (σ/M = 1e-4 m²/s) the counter-clockwise spin never reverses in 8 s:
+// its only growing mode (roll, 0.16/s) is too slow to take the spin before the drag does.
+TEST(Rolling, CounterClockwiseWithAirDragDoesNotReverse) {
+  sim::SceneSpec spec = parse(kRollingScene);
+  spec.initial.spin = 5.0;
+  spec.contact.air_drag = 1e-4 * spec.body.mass;
+  const SceneRun r = runScene(spec, 100);
+  EXPECT_FALSE(r.summary.first_reversal_s.has_value());
+  EXPECT_GT(r.summary.last.spin, 0);
+}
+
+// Without dissipation rolling conserves energy (the constraint force does no work): RK4 at
+// the scene's step keeps it to 1e-8 relative over 10 s (measured 1.5e-9 over 8 s).
+TEST(Rolling, ConservesEnergyWithoutDrag) {
+  sim::SceneSpec spec = parse(kRollingScene);
+  spec.simulation.duration = 10.0;
+  const SceneRun r = runScene(spec, 200);
+  double worst = 0;
+  for (const auto& t : r.samples) worst = std::max(worst, std::abs(t.energy - r.samples[0].energy));
+  EXPECT_LT(worst, 1e-8 * r.samples[0].energy);
+}
+
+// The smooth penalty model (k = 2e4 N/m, c = 20 N s/m, μ = 0.5, regularised) rolls almost
+// without slipping: its first reversal agrees with the rolling model's within a few per cent
+// (measured 0.3%; we allow 3%).
+TEST(Smooth, AgreesWithRollingAtFriction05) {
+  sim::SceneSpec spec = parse(kRollingScene);
+  spec.body.grid = {0.05, 0.05, 0.05};
+  spec.simulation.duration = 4.0;
+  const double rolling = *runScene(spec, 100).summary.first_reversal_s;
+  spec.contact.model = "smooth";
+  spec.contact.stiffness = 2e4;
+  spec.contact.damping = 20;
+  spec.contact.friction = 0.5;
+  spec.simulation.integrator = "symplectic";
+  spec.simulation.dt = 2e-5;
+  const SceneRun smooth = runScene(spec, 2000);
+  ASSERT_TRUE(smooth.summary.first_reversal_s.has_value());
+  EXPECT_NEAR(*smooth.summary.first_reversal_s / rolling, 1.0, 0.03);
+}
+
+namespace {
+
+// Oscillation frequency (Hz) of a signal from its zero crossings, after `skip` seconds.
+double crossingFrequency(const std::vector<sim::Telemetry>& samples, int axis, double skip) {
+  std::vector<double> times;
+  for (std::size_t i = 1; i < samples.size(); ++i) {
+    const double a = samples[i - 1].w_world(axis), b = samples[i].w_world(axis);
+    if (samples[i].t > skip && a < 0 && b >= 0)
+      times.push_back(samples[i - 1].t + (samples[i].t - samples[i - 1].t) * (-a) / (b - a));
+  }
+  return (times.size() - 1) / (times.back() - times.front());
+}
+
+}  // namespace
+
+// Released without spin and slightly tilted, the body rocks at the linearised frequencies:
+// about its long axis (roll: tilt about y, ω_y) and its short axis (pitch: ω_x). 0.5%: the
+// crossings are interpolated within 1 ms samples over ~10 and ~20 periods, and 0.2° of tilt
+// shifts a frequency by ~1e-5 (amplitude dependence is second order).
+TEST(Theory, RockingFrequenciesMatchAnalyze) {
+  sim::SceneSpec spec = parse(kRollingScene);
+  spec.initial.spin = 0;
+  spec.simulation.duration = 3.0;
+  const sim::Linearisation rest = sim::linearise(build(spec), 0);
+  spec.initial.tilt = {0.0, 0.2};
+  const double roll = crossingFrequency(runScene(spec, 2).samples, 1, 0.0);
+  spec.initial.tilt = {0.2, 0.0};
+  const double pitch = crossingFrequency(runScene(spec, 2).samples, 0, 0.0);
+  EXPECT_NEAR(roll / rest.roll_hz, 1.0, 0.005) << roll << " Hz vs " << rest.roll_hz;
+  EXPECT_NEAR(pitch / rest.pitch_hz, 1.0, 0.005) << pitch << " Hz vs " << rest.pitch_hz;
+  // SPEC: roll/pitch ≈ 3.5/7.0 Hz for this body.
+  EXPECT_NEAR(rest.roll_hz, 3.5, 0.1);
+  EXPECT_NEAR(rest.pitch_hz, 7.0, 0.1);
+}
+
+// From a tiny tilt the pitch mode grows as e^{σt} long before the spin changes: the rate fitted
+// to the tilt's envelope matches the eigenvalue's real part within 2% (the issue's bound;
+// measured 1.607 against 1.598 /s, 0.5%).
+TEST(Theory, EarlyGrowthMatchesTheEigenvalue) {
+  sim::SceneSpec spec = parse(kRollingScene);
+  spec.initial.tilt = {0.001, 0.001};
+  spec.simulation.duration = 3.5;
+  const sim::Linearisation l = sim::linearise(build(spec), spec.initial.spin);
+  const SceneRun r = runScene(spec, 2);
+  // Envelope: the largest tilt in each window of two pitch periods from 2 s (a whole number of
+  // periods, so every window sees the same phases of the mode's elliptical tilt), fitted by
+  // least squares on its logarithm. Both modes start equal; the roll mode decays (−0.6/s)
+  // while pitch grows, so from 2 s pitch outweighs it e^{2.2·2} ≈ 80×, and the tilt is still
+  // below 0.3°: linear.
+  const double window = 2 / l.pitch_hz;  // s
+  std::vector<double> t, log_tilt;
+  for (double start = 2.0; start + window <= 3.5; start += window) {
+    double peak = 0;
+    for (const auto& s : r.samples)
+      if (s.t >= start && s.t < start + window) peak = std::max(peak, s.tilt_deg);
+    t.push_back(start);
+    log_tilt.push_back(std::log(peak));
+  }
+  const double n = t.size();
+  double st = 0, sl = 0, stt = 0, stl = 0;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    st += t[i];
+    sl += log_tilt[i];
+    stt += t[i] * t[i];
+    stl += t[i] * log_tilt[i];
+  }
+  const double rate = (n * stl - st * sl) / (n * stt - st * st);
+  EXPECT_NEAR(rate / l.pitch_growth, 1.0, 0.02) << rate << " vs " << l.pitch_growth;
+}
+
+// Halving the initial tilt doubles the time the pitch mode needs to grow to the same size:
+// the reversal comes ln 2 / σ later (σ the pitch growth rate at the initial spin). Measured
+// 0.430 s against 0.434 s (0.9%); 10% allows for the roll mode and the slowly changing spin,
+// which shift the growth phase a little.
+TEST(Theory, HalvingTheTiltDelaysTheReversalByLn2OverGrowth) {
+  sim::SceneSpec spec = parse(kRollingScene);
+  spec.simulation.duration = 4.0;
+  const double sigma = sim::linearise(build(spec), spec.initial.spin).pitch_growth;
+  const double full = *runScene(spec, 100).summary.first_reversal_s;
+  spec.initial.tilt = {0.25, 0.25};
+  const double half = *runScene(spec, 100).summary.first_reversal_s;
+  EXPECT_NEAR((half - full) / (std::log(2.0) / sigma), 1.0, 0.1) << half - full;
+}
+
+// Bondi's rest condition: the seed's body cannot stand (h = 3.97 cm above a radius of 1.33 cm
+// across x); the SPEC body can (h = 0.97 cm, radii 2 and 33 cm).
+TEST(Theory, RestStability) {
+  const sim::Rest seed = sim::restOf(build(parse(kSeedScene)));
+  EXPECT_FALSE(seed.stable);
+  EXPECT_NEAR(seed.radii(0), 0.04 / 3, 1e-12);  // a/p, m
+  const sim::Rest stable = sim::restOf(build(parse(kRollingScene)));
+  EXPECT_TRUE(stable.stable);
+  EXPECT_NEAR(stable.radii(0), 0.02, 1e-12);
+  EXPECT_NEAR(stable.radii(1), 0.01 / 0.03, 1e-12);
+}
+
+// The dents make the direction: the SPEC body prefers counter-clockwise (SPEC: clockwise
+// reverses), mirrored dents prefer clockwise, and without dents the rolling body spun the
+// reversing way does not reverse.
+TEST(Theory, DentsSetThePreferredDirection) {
+  sim::SceneSpec spec = parse(kRollingScene);
+  spec.body.grid = {0.05, 0.05, 0.05};
+  EXPECT_STREQ(sim::preferredDirection(build(spec), 5), "ccw");
+  spec.body.dents->at[0] *= -1;
+  EXPECT_STREQ(sim::preferredDirection(build(spec), 5), "cw");
+  spec.initial.spin = 5;  // the mirrored body reverses when spun counter-clockwise
+  spec.simulation.duration = 4;
+  EXPECT_TRUE(runScene(spec, 100).summary.first_reversal_s.has_value());
+  spec.body.dents.reset();
+  spec.initial.spin = -5;
+  EXPECT_FALSE(runScene(spec, 100).summary.first_reversal_s.has_value());
+}
