@@ -15,6 +15,7 @@
 #include "render/encoder.hpp"
 #include "render/image_io.hpp"
 #include "render/renderer.hpp"
+#include "sim/analysis.hpp"
 #include "sim/initial.hpp"
 #include "sim/run.hpp"
 #include "sim/step.hpp"
@@ -111,16 +112,23 @@ std::variant<std::unique_ptr<render::VideoEncoder>, std::string> openVideo(
   return render::VideoEncoder::open(path, settings);
 }
 
-// Names for --both: the spin that reverses is "reversed", the other "preferred". When
-// neither or both reverse, the scene's own spin is called preferred, with a note.
+// Names for --both: the spin in the direction the linearised theory prefers is "preferred",
+// the other "reversed". A note says when the runs disagree with the prediction.
 std::array<std::string, 2> bothNames(const std::array<Track*, 2>& tracks) {
-  const bool first = tracks[0]->summary.first_reversal_s.has_value();
-  const bool second = tracks[1]->summary.first_reversal_s.has_value();
-  if (first != second) return first ? std::array<std::string, 2>{"reversed", "preferred"}
-                                    : std::array<std::string, 2>{"preferred", "reversed"};
-  std::cerr << "note: " << (first ? "both spins" : "neither spin")
-            << " reversed within the run; the scene's own spin is named preferred\n";
-  return {"preferred", "reversed"};
+  const sim::Model& model = tracks[0]->model;
+  const bool ccw_preferred =
+      std::string(sim::preferredDirection(model, model.initial.spin)) == "ccw";
+  std::array<std::string, 2> names;
+  for (int i = 0; i < 2; ++i) {
+    const bool preferred = (tracks[i]->model.initial.spin > 0) == ccw_preferred;
+    names[i] = preferred ? "preferred" : "reversed";
+    if (preferred == tracks[i]->summary.first_reversal_s.has_value())
+      std::cerr << "note: spun " << tracks[i]->model.initial.spin << " rad/s the body "
+                << (preferred ? "reversed although the theory prefers this direction"
+                              : "did not reverse within the run")
+                << "\n";
+  }
+  return names;
 }
 
 }  // namespace
