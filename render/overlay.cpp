@@ -95,12 +95,6 @@ int Overlay::text(Image& image, int x, int y, const std::string& utf8, Rgba colo
   return x;
 }
 
-int Overlay::textWidth(const std::string& utf8) {
-  int width = 0;
-  for (char32_t code : decode(utf8)) width += glyph(code).advance;
-  return width;
-}
-
 void fillRect(Image& image, int x0, int y0, int x1, int y1, Rgba color) {
   for (int y = std::max(0, y0); y < std::min(image.height, y1); ++y)
     for (int x = std::max(0, x0); x < std::min(image.width, x1); ++x) blend(image, x, y, color, 1);

@@ -57,7 +57,6 @@ Rest restOf(const Model& model) {
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> curvature(hessian);
   // Largest curvature first, so that the radii come out ascending.
   rest.radii = curvature.eigenvalues().reverse().cwiseInverse();
-  rest.radius_axes = curvature.eigenvectors().rowwise().reverse();
   rest.stable = rest.h < rest.radii.minCoeff();
   return rest;
 }

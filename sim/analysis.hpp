@@ -13,7 +13,6 @@ namespace sim {
 struct Rest {
   double h = 0;                        ///< CM height above the rest contact, m
   Eigen::Vector2d radii;               ///< principal radii of curvature, ascending, m
-  Eigen::Matrix2d radius_axes;         ///< columns: their directions in the floor plane
   bool stable = false;                 ///< h below both radii (Bondi 1986: p<1, s<1,
                                        ///< (1−p)(1−s) > q² in his units)
 };
