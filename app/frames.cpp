@@ -28,7 +28,7 @@ render::BodyPoints bodyPointsOf(const sim::Model& model) {
   for (const auto& p : body.bottom_points)
     if (kept(p)) points.bottom.push_back(p.cast<float>());
   points.radius = static_cast<float>(0.35 * k * std::min(grid.dx, grid.dy));
-  points.footprint_half = body.shape.rimHalfWidths().cast<float>();
+  points.footprint_half = body.surface.footprintHalf().cast<float>();
   return points;
 }
 

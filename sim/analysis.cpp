@@ -50,13 +50,7 @@ Rest restOf(const Model& model) {
   Rest rest;
   const Body& body = model.body;
   rest.h = -lowestSurfacePoint(body, -Eigen::Vector3d::UnitZ()).z();
-  // Curvature of the bottom at its apex: the Hessian [p/a, q/a²; q/a², s/a].
-  const Paraboloid& s = body.shape;
-  Eigen::Matrix2d hessian;
-  hessian << s.p / s.a, s.q / (s.a * s.a), s.q / (s.a * s.a), s.s / s.a;
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> curvature(hessian);
-  // Largest curvature first, so that the radii come out ascending.
-  rest.radii = curvature.eigenvalues().reverse().cwiseInverse();
+  rest.radii = body.surface.radiiAtBottom();
   rest.stable = rest.h < rest.radii.minCoeff();
   return rest;
 }

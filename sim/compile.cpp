@@ -134,7 +134,8 @@ std::variant<Body, SpecError> buildBody(const BodySpec& b, double unit) {
   Body body;
   body.mass = b.mass;
   body.mass_properties = built.mass;
-  body.shape = shape;
+  body.surface.kind = Surface::Kind::Paraboloid;
+  body.surface.paraboloid = shape;
   body.grid = grid;
   body.com_geometric = built.mass.com;
   body.inertia = built.mass.inertia;

@@ -65,7 +65,7 @@ State initialState(const Model& model) {
   // flat foot and would kick the body sideways.)
   const Body& body = model.body;
   const Eigen::Vector3d r_low_body =
-      body.shape.lowestPoint(R.transpose() * -Eigen::Vector3d::UnitZ()) - body.com_geometric;
+      lowestSurfacePoint(body, R.transpose() * -Eigen::Vector3d::UnitZ());
   s.v_world = -w_world.cross(R * r_low_body);
   s.L_world = R * model.body.inertia * R.transpose() * w_world;
   return s;

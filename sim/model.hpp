@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "sim/body.hpp"
+#include "sim/surface.hpp"
 
 namespace sim {
 
@@ -28,7 +29,7 @@ struct Body {
   double mass = 0;                     ///< kg
   Eigen::Matrix3d inertia;             ///< about the CM, body axes, kg m²
   Eigen::Matrix3d inertia_inv;         ///< its inverse, 1/(kg m²)
-  Paraboloid shape;                    ///< the smooth surface, geometric frame, m
+  Surface surface;                     ///< the smooth surface, geometric frame, m
   Eigen::Vector3d com_geometric;       ///< CM in the geometric frame, m
   MassProperties mass_properties;      ///< as computed from the grid (geometric frame)
   Grid grid;                           ///< the point grid's spacing, m
@@ -91,7 +92,7 @@ struct State {
 /// The point of the body's smooth surface lowest along `down_body` (a unit vector in body
 /// axes), relative to the CM, body axes, m: where the `smooth` and `rolling` models touch.
 inline Eigen::Vector3d lowestSurfacePoint(const Body& body, const Eigen::Vector3d& down_body) {
-  return body.shape.lowestPointOfBody(down_body) - body.com_geometric;
+  return body.surface.lowestPoint(down_body) - body.com_geometric;
 }
 
 /// ω_world = R I⁻¹ Rᵀ L (rad/s).

@@ -26,7 +26,7 @@ RollingMotion rollingMotion(const Model& model, const Kinematics& k) {
   // The down direction turns in body axes as ḋ = −ω_body × d; the contact point follows.
   const Eigen::Vector3d w_body = k.R.transpose() * w;
   const Eigen::Vector3d down_rate = -w_body.cross(g.down_body);
-  const Eigen::Vector3d r_body_rate = model.body.shape.lowestPointRate(g.down_body, down_rate);
+  const Eigen::Vector3d r_body_rate = model.body.surface.lowestPointRate(g.down_body, down_rate);
   const Eigen::Vector3d r_rate = w.cross(r) + k.R * r_body_rate;
 
   const Eigen::Matrix3d I = k.R * model.body.inertia * k.R.transpose();

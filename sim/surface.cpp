@@ -1,0 +1,54 @@
+#include "sim/surface.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+
+namespace sim {
+
+Eigen::Vector3d Ellipsoid::lowestPoint(const Eigen::Vector3d& down) const {
+  const Eigen::Vector3d a2 = semi_axes.cwiseAbs2();
+  const double s = std::sqrt(down.dot(a2.cwiseProduct(down)));
+  return a2.cwiseProduct(down) / s;
+}
+
+Eigen::Vector3d Ellipsoid::lowestPointRate(const Eigen::Vector3d& down,
+                                           const Eigen::Vector3d& down_rate) const {
+  const Eigen::Vector3d a2 = semi_axes.cwiseAbs2();
+  const double s = std::sqrt(down.dot(a2.cwiseProduct(down)));
+  const Eigen::Vector3d p = a2.cwiseProduct(down) / s;
+  return (a2.cwiseProduct(down_rate) - p * down.dot(a2.cwiseProduct(down_rate)) / s) / s;
+}
+
+Eigen::Vector3d Surface::lowestPoint(const Eigen::Vector3d& down) const {
+  return kind == Kind::Ellipsoid ? ellipsoid.lowestPoint(down)
+                                 : paraboloid.lowestPointOfBody(down);
+}
+
+Eigen::Vector3d Surface::lowestPointRate(const Eigen::Vector3d& down,
+                                         const Eigen::Vector3d& down_rate) const {
+  return kind == Kind::Ellipsoid ? ellipsoid.lowestPointRate(down, down_rate)
+                                 : paraboloid.lowestPointRate(down, down_rate);
+}
+
+Eigen::Vector2d Surface::radiiAtBottom() const {
+  if (kind == Kind::Ellipsoid) {
+    // At (0, 0, −c) the radii are a²/c and b²/c.
+    const Eigen::Vector3d& e = ellipsoid.semi_axes;
+    const Eigen::Vector2d radii(e.x() * e.x() / e.z(), e.y() * e.y() / e.z());
+    return radii.x() < radii.y() ? radii : Eigen::Vector2d(radii.y(), radii.x());
+  }
+  // The paraboloid's apex: radii are the inverse eigenvalues of [p/a, q/a²; q/a², s/a].
+  const Paraboloid& s = paraboloid;
+  Eigen::Matrix2d hessian;
+  hessian << s.p / s.a, s.q / (s.a * s.a), s.q / (s.a * s.a), s.s / s.a;
+  const Eigen::Vector2d curvatures =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(hessian).eigenvalues();
+  return {1 / curvatures(1), 1 / curvatures(0)};
+}
+
+Eigen::Vector2d Surface::footprintHalf() const {
+  return kind == Kind::Ellipsoid ? Eigen::Vector2d(ellipsoid.semi_axes.head<2>())
+                                 : paraboloid.rimHalfWidths();
+}
+
+}  // namespace sim

@@ -1,0 +1,38 @@
+// The body's smooth surface, where the `smooth` and `rolling` contacts touch: the seed's
+// paraboloid body or an ellipsoid (SPEC "The body"). Geometric frame, metres.
+#pragma once
+
+#include <Eigen/Dense>
+
+#include "sim/body.hpp"
+
+namespace sim {
+
+/// x²/a² + y²/b² + z²/c² = 1 about the origin (Kane & Levinson 1982; Garcia & Hubbard 1988).
+struct Ellipsoid {
+  Eigen::Vector3d semi_axes;  ///< (a, b, c), m
+  /// Lowest along `down`: p = A²d / √(dᵀA²d), A = diag(a, b, c).
+  Eigen::Vector3d lowestPoint(const Eigen::Vector3d& down) const;
+  /// ṗ = (A²ḋ − p (dᵀA²ḋ)/√(dᵀA²d)) / √(dᵀA²d).
+  Eigen::Vector3d lowestPointRate(const Eigen::Vector3d& down,
+                                  const Eigen::Vector3d& down_rate) const;
+};
+
+struct Surface {
+  enum class Kind { Paraboloid, Ellipsoid };
+  Kind kind = Kind::Paraboloid;
+  Paraboloid paraboloid{1, 1, 0, 1, 0};
+  Ellipsoid ellipsoid{Eigen::Vector3d::Ones()};
+
+  /// The point lowest along `down` (unit, geometric frame), m.
+  Eigen::Vector3d lowestPoint(const Eigen::Vector3d& down) const;
+  /// How fast that point moves over the surface as `down` turns at `down_rate`, m/s.
+  Eigen::Vector3d lowestPointRate(const Eigen::Vector3d& down,
+                                  const Eigen::Vector3d& down_rate) const;
+  /// Principal radii of curvature at the point lowest when upright, ascending, m.
+  Eigen::Vector2d radiiAtBottom() const;
+  /// Half extents of the outline seen from above, across (x) and along (y), m.
+  Eigen::Vector2d footprintHalf() const;
+};
+
+}  // namespace sim
