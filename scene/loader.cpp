@@ -67,16 +67,28 @@ class MapReader {
       value = node->Scalar();
     }
   }
-  template <typename T>
-  void read(const std::string& key, std::array<T, 2>& value) {
+  template <typename T, std::size_t N>
+  void read(const std::string& key, std::array<T, N>& value) {
     auto node = take(key);
     if (!node) return;
-    if (!node->IsSequence() || node->size() != 2) fail(key, "must be a list of two numbers");
-    for (std::size_t i = 0; i < 2; ++i) {
+    if (!node->IsSequence() || node->size() != N)
+      fail(key, N == 2 ? "must be a list of two numbers" : "must be a list of three numbers");
+    for (std::size_t i = 0; i < N; ++i) {
       if constexpr (std::is_same_v<T, int>)
         value[i] = whole((*node)[i], key);
       else
         value[i] = number((*node)[i], key);
+    }
+  }
+
+  void read(const std::string& key, sim::Matrix3Spec& value) {
+    auto node = take(key);
+    if (!node) return;
+    if (!node->IsSequence() || node->size() != 3) fail(key, "must be three rows of three numbers");
+    for (std::size_t i = 0; i < 3; ++i) {
+      const YAML::Node row = (*node)[i];
+      if (!row.IsSequence() || row.size() != 3) fail(key, "must be three rows of three numbers");
+      for (std::size_t j = 0; j < 3; ++j) value[i][j] = number(row[j], key);
     }
   }
 
@@ -135,15 +147,30 @@ void section(MapReader& parent, const std::string& key,
 
 void readBody(MapReader& root, sim::BodySpec& b) {
   root.require("body");
-  section(root, "body", {"shape", "paraboloid", "dents", "grid", "mass"}, [&](MapReader& r) {
+  section(root, "body",
+          {"shape", "paraboloid", "dents", "grid", "mass", "ellipsoid", "inertia"}, [&](MapReader& r) {
     r.read("shape", b.shape);
-    if (b.shape == "ellipsoid") r.fail("shape", "ellipsoid is not available yet; use paraboloid");
     r.require("mass");
     r.read("mass", b.mass);
-    if (b.shape == "paraboloid") {
+    // Each shape has its own keys; a key of the other shape is an error, not ignored.
+    const bool ellipsoid = b.shape == "ellipsoid";
+    for (const char* key : {"paraboloid", "dents", "grid"})
+      if (ellipsoid && r.has(key)) r.fail(key, "belongs to shape: paraboloid");
+    for (const char* key : {"ellipsoid", "inertia"})
+      if (!ellipsoid && r.has(key)) r.fail(key, "belongs to shape: ellipsoid");
+    if (ellipsoid) {
+      r.require("ellipsoid");
+      r.require("inertia");
+      r.read("inertia", b.inertia);
+    } else {
       r.require("paraboloid");
       r.require("grid");
     }
+    section(r, "ellipsoid", {"semi_axes", "center"}, [&](MapReader& e) {
+      e.require("semi_axes");
+      e.read("semi_axes", b.ellipsoid.semi_axes);
+      e.read("center", b.ellipsoid.center);
+    });
     section(r, "paraboloid", {"a", "p", "q", "s", "top"}, [&](MapReader& p) {
       for (const char* key : {"a", "p", "s", "top"}) p.require(key);
       p.read("a", b.paraboloid.a);

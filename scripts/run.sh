@@ -19,7 +19,7 @@ for view in oblique above front side; do
 done
 
 echo "== telemetry and analysis"
-for scene in rattleback seed-preferred seed-reversed; do
+for scene in rattleback seed-preferred seed-reversed kane-levinson; do
   $rb analyze "scenes/$scene.yaml" > "out/$scene-analysis.txt"
   $rb simulate "scenes/$scene.yaml" -o "out/$scene.csv" -q
 done

@@ -1,5 +1,6 @@
 #include "sim/compile.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <complex>
 #include <sstream>
@@ -44,9 +45,34 @@ std::optional<SpecError> checkParaboloid(const ParaboloidSpec& p) {
   return std::nullopt;
 }
 
+// An inertia tensor a rigid body can have: finite, symmetric, positive definite, and each
+// principal moment at most the sum of the other two.
+std::optional<SpecError> checkInertia(const Matrix3Spec& spec) {
+  Eigen::Matrix3d I;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) I(i, j) = spec[i][j];
+  if (!I.allFinite()) return SpecError{"body.inertia", "must hold finite numbers"};
+  if ((I - I.transpose()).norm() > 1e-12 * I.norm())
+    return SpecError{"body.inertia", "must be symmetric"};
+  const Eigen::Vector3d m = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(I).eigenvalues();
+  if (m(0) <= 0) return SpecError{"body.inertia", "must be positive definite"};
+  if (m(2) > m(0) + m(1) * (1 + 1e-12))
+    return SpecError{"body.inertia", "is impossible: a principal moment exceeds the sum of the "
+                                     "other two"};
+  return std::nullopt;
+}
+
+std::optional<SpecError> checkEllipsoid(const BodySpec& b) {
+  for (double axis : b.ellipsoid.semi_axes)
+    if (auto e = needPositive("body.ellipsoid.semi_axes", axis)) return e;
+  for (double c : b.ellipsoid.center)
+    if (auto e = needFinite("body.ellipsoid.center", c)) return e;
+  if (auto e = needPositive("body.mass", b.mass)) return e;
+  return checkInertia(b.inertia);
+}
+
 std::optional<SpecError> checkBody(const BodySpec& b) {
-  if (b.shape == "ellipsoid")
-    return SpecError{"body.shape", "ellipsoid is not available yet; use paraboloid"};
+  if (b.shape == "ellipsoid") return checkEllipsoid(b);
   if (b.shape != "paraboloid")
     return SpecError{"body.shape", "must be paraboloid or ellipsoid, not '" + b.shape + "'"};
   if (auto e = checkParaboloid(b.paraboloid)) return e;
@@ -114,8 +140,60 @@ Integrator integratorOf(const std::string& name) {
   return Integrator::Symplectic;
 }
 
+// Surface points and contact points from the geometric frame to the CM's.
+void placePoints(Body& body, const SurfacePoints& surface) {
+  for (const Eigen::Vector3d& p_geom : surface.top)
+    body.top_points.push_back(p_geom - body.com_geometric);
+  for (const Eigen::Vector3d& p_geom : surface.bottom) {
+    const Eigen::Vector3d r = p_geom - body.com_geometric;
+    body.bottom_points.push_back(r);
+    body.bottom.x.push_back(r.x());
+    body.bottom.y.push_back(r.y());
+    body.bottom.z.push_back(r.z());
+  }
+}
+
+// An ellipsoid with its given inertia. Geometric frame: the ellipsoid's centre at the origin,
+// so the CM sits at −center. Its surface is sampled like the paraboloid's grid: columns at
+// half-offset (x, y) spaced h = min(a, b)/8, the upper point of each red, the lower blue.
+Body buildEllipsoid(const BodySpec& b, double unit) {
+  Body body;
+  const Eigen::Vector3d axes = Eigen::Vector3d(b.ellipsoid.semi_axes.data()) * unit;
+  body.mass = b.mass;
+  body.surface.kind = Surface::Kind::Ellipsoid;
+  body.surface.ellipsoid = Ellipsoid{axes};
+  body.com_geometric = -Eigen::Vector3d(b.ellipsoid.center.data()) * unit;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) body.inertia(i, j) = b.inertia[i][j];
+  body.inertia_inv = body.inertia.inverse();
+  MassProperties& m = body.mass_properties;
+  m.mass = b.mass;
+  m.com = body.com_geometric;
+  m.inertia = body.inertia;
+  principalAxes(m);
+
+  const double h = std::min(axes.x(), axes.y()) / 8;
+  body.grid = Grid{h, h, h};
+  SurfacePoints surface;
+  const int nx = static_cast<int>(std::floor(axes.x() / h + 0.5));
+  const int ny = static_cast<int>(std::floor(axes.y() / h + 0.5));
+  for (int j = -ny; j < ny; ++j) {
+    for (int i = -nx; i < nx; ++i) {
+      const double x = (i + 0.5) * h, y = (j + 0.5) * h;
+      const double inside = 1 - x * x / (axes.x() * axes.x()) - y * y / (axes.y() * axes.y());
+      if (inside < 0) continue;
+      const double z = axes.z() * std::sqrt(inside);
+      surface.top.emplace_back(x, y, z);
+      surface.bottom.emplace_back(x, y, -z);
+    }
+  }
+  placePoints(body, surface);
+  return body;
+}
+
 // Mass properties from the grid; surface points moved to the CM, in SI units.
 std::variant<Body, SpecError> buildBody(const BodySpec& b, double unit) {
+  if (b.shape == "ellipsoid") return buildEllipsoid(b, unit);
   const ParaboloidSpec& p = b.paraboloid;
   const Paraboloid shape{p.a * unit, p.p, p.q * unit, p.s, p.top * unit};
   const Grid grid{b.grid.dx * unit, b.grid.dy * unit, b.grid.dz * unit};
@@ -142,15 +220,7 @@ std::variant<Body, SpecError> buildBody(const BodySpec& b, double unit) {
   if (built.mass.principal.minCoeff() <= 0)
     return SpecError{"body.grid", "is too coarse: the inertia tensor is singular"};
   body.inertia_inv = body.inertia.inverse();
-  for (const Eigen::Vector3d& p_geom : built.surface.top)
-    body.top_points.push_back(p_geom - body.com_geometric);
-  for (const Eigen::Vector3d& p_geom : built.surface.bottom) {
-    const Eigen::Vector3d r = p_geom - body.com_geometric;
-    body.bottom_points.push_back(r);
-    body.bottom.x.push_back(r.x());
-    body.bottom.y.push_back(r.y());
-    body.bottom.z.push_back(r.z());
-  }
+  placePoints(body, built.surface);
   return body;
 }
 

@@ -40,9 +40,19 @@ struct GridSpec {
   double dx = kUnset, dy = kUnset, dz = kUnset;
 };
 
+/// body.ellipsoid: a smooth ellipsoid (Kane & Levinson 1982), file units.
+struct EllipsoidSpec {
+  std::array<double, 3> semi_axes{kUnset, kUnset, kUnset};  ///< along x, y, z
+  std::array<double, 3> center{0.0, 0.0, 0.0};  ///< the ellipsoid's centre relative to the CM
+};
+
+using Matrix3Spec = std::array<std::array<double, 3>, 3>;
+
 struct BodySpec {
   std::string shape = "paraboloid";  ///< paraboloid | ellipsoid
   ParaboloidSpec paraboloid;
+  EllipsoidSpec ellipsoid;
+  Matrix3Spec inertia{};             ///< ellipsoid: kg m², about the CM, body axes
   std::optional<DentsSpec> dents;    ///< absent: no dents
   GridSpec grid;
   double mass = kUnset;  ///< kg, > 0

@@ -93,7 +93,7 @@ std::string errorFor(const std::string& yaml) {
 TEST(Scenes, TheBaseSceneCompiles) { EXPECT_EQ(errorFor(kBase), ""); }
 
 TEST(Scenes, ShippedScenesLoadAndCompile) {
-  for (const char* name : {"rattleback", "seed-preferred", "seed-reversed"}) {
+  for (const char* name : {"rattleback", "seed-preferred", "seed-reversed", "kane-levinson"}) {
     const std::string path = std::string(RATTLEBACK_SOURCE_DIR) + "/scenes/" + name + ".yaml";
     auto loaded = scene::loadFile(path);
     ASSERT_TRUE(std::holds_alternative<scene::Loaded>(loaded))
