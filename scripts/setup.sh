@@ -9,7 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libosmesa6-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   libpng-dev libfreetype-dev fonts-dejavu-core
-  ffmpeg gnuplot-nox
+  ffmpeg
 )
 
 missing=()

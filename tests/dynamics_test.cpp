@@ -200,7 +200,6 @@ TEST(AtRest, StableBodyStaysUprightAndRocks) {
   const TiltRun r = releasedAtRest(kStableScene, 5.0);
   EXPECT_LT(r.max_tilt, 5.05);
   EXPECT_LT(r.min_tilt_late, 0.5);  // still swinging through upright after 1 s
-  EXPECT_GT(r.final_tilt, 0.0);
 }
 
 namespace {
