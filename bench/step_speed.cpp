@@ -1,0 +1,42 @@
+// Cost of one step for each contact model and integrator (Google Benchmark; never part of
+// the test run). The scenes are the shipped ones; the state is advanced between iterations,
+// so the contact set is the one a real run sees.
+#include <benchmark/benchmark.h>
+
+#include "app/scene_args.hpp"
+#include "sim/initial.hpp"
+#include "sim/step.hpp"
+
+namespace {
+
+void stepScene(benchmark::State& state, const char* scene, const char* model,
+               const char* integrator) {
+  app::Overrides o;
+  o.integrator = integrator;
+  auto loaded = app::loadScene(std::string(RATTLEBACK_SOURCE_DIR "/scenes/") + scene, o);
+  if (auto* e = std::get_if<std::string>(&loaded)) {
+    state.SkipWithError(e->c_str());
+    return;
+  }
+  const sim::Model& m = std::get<sim::Model>(loaded);
+  sim::State s = sim::initialState(m);
+  for (auto _ : state) {
+    sim::step(m, s);
+    benchmark::DoNotOptimize(s.x_world);
+  }
+  // Only the points model visits the bottom points.
+  state.SetLabel(m.contact.model == sim::ContactModel::Points
+                     ? std::string(model) + ", " + std::to_string(m.body.bottom.size()) + " points"
+                     : std::string(model));
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(stepScene, seed_points_euler, "seed-reversed.yaml", "points", "euler");
+BENCHMARK_CAPTURE(stepScene, seed_points_symplectic, "seed-reversed.yaml", "points", "symplectic");
+BENCHMARK_CAPTURE(stepScene, seed_points_rk4, "seed-reversed.yaml", "points", "rk4");
+BENCHMARK_CAPTURE(stepScene, default_rolling_rk4, "rattleback.yaml", "rolling", "rk4");
+BENCHMARK_CAPTURE(stepScene, default_rolling_symplectic, "rattleback.yaml", "rolling", "symplectic");
+BENCHMARK_CAPTURE(stepScene, ellipsoid_rolling_rk4, "kane-levinson.yaml", "rolling", "rk4");
+
+BENCHMARK_MAIN();
