@@ -40,7 +40,7 @@ void printJson(const sim::Model& model, double spin) {
   const sim::FirstOrder first = sim::firstOrderGrowth(model);
   const sim::ContactStability stability = sim::contactStability(model);
   const std::size_t top = model.body.top_points.size();
-  const std::size_t bottom = model.body.bottom_points.size();
+  const std::size_t bottom = model.body.bottom.size();
   std::printf("{\n");
   std::printf("  \"points\": {\"total\": %lld, \"top\": %zu, \"bottom\": %zu, \"surface\": %zu},\n",
               static_cast<long long>(m.points), top, bottom, top + bottom);
@@ -119,7 +119,7 @@ void printText(const std::string& scene, const sim::Model& model) {
   const double unit = model.length_unit;
   const sim::ContactStability stability = sim::contactStability(model);
   const std::size_t top = model.body.top_points.size();
-  const std::size_t bottom = model.body.bottom_points.size();
+  const std::size_t bottom = model.body.bottom.size();
   std::printf("scene            %s (lengths below in the file's unit, %g m)\n", scene.c_str(),
               unit);
   std::printf("points           %lld in all, %zu on the surface (%zu top, %zu bottom)\n",

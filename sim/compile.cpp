@@ -146,7 +146,6 @@ void placePoints(Body& body, const SurfacePoints& surface) {
     body.top_points.push_back(p_geom - body.com_geometric);
   for (const Eigen::Vector3d& p_geom : surface.bottom) {
     const Eigen::Vector3d r = p_geom - body.com_geometric;
-    body.bottom_points.push_back(r);
     body.bottom.x.push_back(r.x());
     body.bottom.y.push_back(r.y());
     body.bottom.z.push_back(r.z());

@@ -22,6 +22,7 @@ enum class Integrator { Euler, Symplectic, Rk4 };
 struct ContactPoints {
   std::vector<double> x, y, z;
   std::size_t size() const { return x.size(); }
+  Eigen::Vector3d operator[](std::size_t i) const { return {x[i], y[i], z[i]}; }
 };
 
 /// Rigid body: mass properties about the CM and the points that can touch the floor.
@@ -33,9 +34,8 @@ struct Body {
   Eigen::Vector3d com_geometric;       ///< CM in the geometric frame, m
   MassProperties mass_properties;      ///< as computed from the grid (geometric frame)
   Grid grid;                           ///< the point grid's spacing, m
-  ContactPoints bottom;                ///< bottom-surface points, body frame, m
+  ContactPoints bottom;                ///< bottom-surface points, body frame, m (blue)
   std::vector<Eigen::Vector3d> top_points;     ///< top-surface points, body frame (rendering)
-  std::vector<Eigen::Vector3d> bottom_points;  ///< bottom-surface points, body frame (rendering)
 };
 
 /// Floor contact (SPEC "Contact and friction"): normal force max(0, k·depth − c·v_n) and

@@ -15,7 +15,7 @@ TEST(SeedGrid, CountsAndRangesMatchTheReport) {
   const sim::Body& body = model.body;
   EXPECT_EQ(body.mass_properties.points, 4256);
   EXPECT_EQ(body.top_points.size(), 308u);
-  EXPECT_EQ(body.bottom_points.size(), 294u);
+  EXPECT_EQ(body.bottom.size(), 294u);
   double x_min = 1e9, x_max = -1e9, y_min = 1e9, y_max = -1e9;
   for (const auto& r : body.top_points) {
     const Eigen::Vector3d p = (r + body.com_geometric) / 0.01;  // back to cm, geometric frame

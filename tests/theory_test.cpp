@@ -182,7 +182,8 @@ TEST(Theory, HalvingTheTiltDelaysTheReversalByLn2OverGrowth) {
 }
 
 // Bondi's rest condition: the seed's body cannot stand (h = 3.97 cm above a radius of 1.33 cm
-// across x); the SPEC body can (h = 0.97 cm, radii 2 and 33 cm).
+// across x); the SPEC body can (h = 0.97 cm, radii 2 and 33 cm). The radii are a/p and a/s
+// exactly: 1e-12 m allows only rounding in a 2×2 eigen-decomposition.
 TEST(Theory, RestStability) {
   const sim::Rest seed = sim::restOf(build(parse(kSeedScene)));
   EXPECT_FALSE(seed.stable);
@@ -230,7 +231,8 @@ video: {fps: 25}
 }  // namespace
 
 // At the bottom of an ellipsoid (0, 0, −c) the radii of curvature are a²/c and b²/c; the CM is
-// c − 0.01 m above the contact. Exact to rounding.
+// c − 0.01 m above the contact. Exact formulas: the tolerances (1e-15 m, 1e-14 m for the
+// 2 m radius) allow rounding only.
 TEST(Ellipsoid, RestGeometryIsClosedForm) {
   const sim::Rest rest = sim::restOf(build(parse(kEllipsoidScene)));
   EXPECT_NEAR(rest.h, 0.01, 1e-15);
