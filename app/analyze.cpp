@@ -39,7 +39,7 @@ void printJson(const sim::Model& model, double spin) {
   const sim::Linearisation spinning = sim::linearise(model, spin);
   const sim::FirstOrder first = sim::firstOrderGrowth(model);
   const sim::ContactStability stability = sim::contactStability(model);
-  const std::size_t top = model.body.top_points.size();
+  const std::size_t top = model.body.top.size();
   const std::size_t bottom = model.body.bottom.size();
   std::printf("{\n");
   std::printf("  \"points\": {\"total\": %lld, \"top\": %zu, \"bottom\": %zu, \"surface\": %zu},\n",
@@ -118,7 +118,7 @@ void printText(const std::string& scene, const sim::Model& model) {
   const sim::MassProperties& m = model.body.mass_properties;
   const double unit = model.length_unit;
   const sim::ContactStability stability = sim::contactStability(model);
-  const std::size_t top = model.body.top_points.size();
+  const std::size_t top = model.body.top.size();
   const std::size_t bottom = model.body.bottom.size();
   std::printf("scene            %s (lengths below in the file's unit, %g m)\n", scene.c_str(),
               unit);

@@ -13,7 +13,7 @@ constexpr double kDrawnPoints = 2500;
 
 render::BodyPoints bodyPointsOf(const sim::Model& model) {
   const sim::Body& body = model.body;
-  const double total = body.top_points.size() + body.bottom.size();
+  const double total = body.top.size() + body.bottom.size();
   const int k = std::max(1, static_cast<int>(std::ceil(std::sqrt(total / kDrawnPoints))));
   const sim::Grid& grid = body.grid;
   auto kept = [&](const Eigen::Vector3d& r) {
@@ -23,8 +23,8 @@ render::BodyPoints bodyPointsOf(const sim::Model& model) {
     return i % k == 0 && j % k == 0;
   };
   render::BodyPoints points;
-  for (const auto& p : body.top_points)
-    if (kept(p)) points.top.push_back(p.cast<float>());
+  for (std::size_t i = 0; i < body.top.size(); ++i)
+    if (kept(body.top[i])) points.top.push_back(body.top[i].cast<float>());
   for (std::size_t i = 0; i < body.bottom.size(); ++i)
     if (kept(body.bottom[i])) points.bottom.push_back(body.bottom[i].cast<float>());
   points.radius = static_cast<float>(0.35 * k * std::min(grid.dx, grid.dy));

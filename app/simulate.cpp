@@ -113,8 +113,8 @@ int simulateCommand(const SimulateArgs& args) {
   progress.finish();
 
   if (summary.divergence) {
-    std::cerr << args.scene << ": the run diverged: " << *summary.divergence
-              << "; no telemetry written (try a smaller simulation.dt)\n";
+    std::cerr << args.scene << ": the run stopped: " << *summary.divergence
+              << ". No telemetry written\n";
     return kDiverged;  // `file` is removed unfinished
   }
   if (auto e = file.commit()) {

@@ -226,8 +226,8 @@ int renderCommand(const RenderArgs& args) {
 
   for (auto& t : tracks)
     if (t->summary.divergence) {
-      std::cerr << args.scene << ": the run diverged: " << *t->summary.divergence
-                << "; no video written\n";
+      std::cerr << args.scene << ": the run stopped: " << *t->summary.divergence
+                << ". No video written\n";
       return kDiverged;
     }
   std::vector<std::string> finals = provisional;

@@ -216,9 +216,10 @@ void readContact(MapReader& root, sim::ContactSpec& c) {
 void readRest(MapReader& root, sim::SceneSpec& s) {
   section(root, "units", {"length"}, [&](MapReader& r) { r.read("length", s.units.length); });
   root.read("gravity", s.gravity);
-  section(root, "initial", {"spin", "tilt"}, [&](MapReader& r) {
+  section(root, "initial", {"spin", "tilt", "height"}, [&](MapReader& r) {
     r.read("spin", s.initial.spin);
     r.read("tilt", s.initial.tilt);
+    r.read("height", s.initial.height);
   });
   root.require("simulation");
   section(root, "simulation", {"integrator", "dt", "duration"}, [&](MapReader& r) {

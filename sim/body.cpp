@@ -39,9 +39,12 @@ Eigen::Vector3d Paraboloid::lowestPoint(const Eigen::Vector3d& down) const {
   return {xy.x(), xy.y(), bottom(xy.x(), xy.y())};
 }
 
+bool Paraboloid::lowestOnRim(const Eigen::Vector3d& down) const {
+  return !(down.z() < 0 && lowestPoint(down).z() <= top);
+}
+
 Eigen::Vector3d Paraboloid::lowestPointOfBody(const Eigen::Vector3d& down) const {
-  const Eigen::Vector3d on_bottom = lowestPoint(down);
-  if (down.z() < 0 && on_bottom.z() <= top) return on_bottom;
+  if (!lowestOnRim(down)) return lowestPoint(down);
   Eigen::Matrix2d hessian;
   hessian << p / a, q / (a * a), q / (a * a), s / a;
   const Eigen::Matrix2d inverse = hessian.inverse();

@@ -29,6 +29,9 @@ struct Paraboloid {
   /// point lies outside the rim, the lowest point is on the rim ellipse z = top, where
   /// ½ uᵀHu = top + a: u = √(2(top+a)) H⁻¹d / √(dᵀH⁻¹d) with d = (down_x, down_y). Metres.
   Eigen::Vector3d lowestPointOfBody(const Eigen::Vector3d& down) const;
+  /// Whether the body's lowest point along `down` lies on the rim of the flat top (the body is
+  /// tipped past the bottom's edge or upside down) rather than on the smooth bottom.
+  bool lowestOnRim(const Eigen::Vector3d& down) const;
   /// How fast the lowest point moves over the bottom when `down` turns at `down_rate`:
   /// with g = −(d_x, d_y)/d_z, (ẋ, ẏ) = H⁻¹ ġ and ż = g·(ẋ, ẏ) (the surface's slope is g
   /// there). m/s.

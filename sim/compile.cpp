@@ -110,8 +110,13 @@ std::optional<SpecError> checkRest(const SceneSpec& spec) {
   if (auto e = needFinite("initial.spin", spec.initial.spin)) return e;
   for (double tilt : spec.initial.tilt) {
     if (auto e = needFinite("initial.tilt", tilt)) return e;
-    if (std::abs(tilt) >= 90) return SpecError{"initial.tilt", "must lie within ±90 degrees"};
+    if (std::abs(tilt) > 180) return SpecError{"initial.tilt", "must lie within ±180 degrees"};
   }
+  if (auto e = needNonNegative("initial.height", spec.initial.height)) return e;
+  if (spec.initial.height > 0 && spec.contact.model == "rolling")
+    return SpecError{"initial.height",
+                     "must be 0 with contact.model rolling (it keeps the body on the floor); "
+                     "drop it with smooth or points"};
   const SimulationSpec& sim = spec.simulation;
   if (sim.integrator != "euler" && sim.integrator != "symplectic" && sim.integrator != "rk4")
     return SpecError{"simulation.integrator",
@@ -142,14 +147,9 @@ Integrator integratorOf(const std::string& name) {
 
 // Surface points and contact points from the geometric frame to the CM's.
 void placePoints(Body& body, const SurfacePoints& surface) {
-  for (const Eigen::Vector3d& p_geom : surface.top)
-    body.top_points.push_back(p_geom - body.com_geometric);
-  for (const Eigen::Vector3d& p_geom : surface.bottom) {
-    const Eigen::Vector3d r = p_geom - body.com_geometric;
-    body.bottom.x.push_back(r.x());
-    body.bottom.y.push_back(r.y());
-    body.bottom.z.push_back(r.z());
-  }
+  for (const Eigen::Vector3d& p_geom : surface.top) body.top.push_back(p_geom - body.com_geometric);
+  for (const Eigen::Vector3d& p_geom : surface.bottom)
+    body.bottom.push_back(p_geom - body.com_geometric);
 }
 
 // An ellipsoid with its given inertia. Geometric frame: the ellipsoid's centre at the origin,
@@ -272,10 +272,10 @@ std::variant<Model, SpecError> compile(const SceneSpec& spec) {
   model.dt = spec.simulation.dt;
   model.steps = std::llround(spec.simulation.duration / spec.simulation.dt);
   model.initial = Initial{spec.initial.spin, spec.initial.tilt[0] * M_PI / 180.0,
-                          spec.initial.tilt[1] * M_PI / 180.0};
+                          spec.initial.tilt[1] * M_PI / 180.0,
+                          spec.initial.height * spec.units.length};
 
-  if (auto e = compileVideo(spec, model)) return *e;
-
+  // The step's stability first: it is the error that matters more than frame timing.
   const ContactStability stability = contactStability(model);
   if (model.dt > stability.largest_step) {
     std::ostringstream msg;
@@ -285,6 +285,7 @@ std::variant<Model, SpecError> compile(const SceneSpec& spec) {
         << stability.largest_step << " s";
     return SpecError{"simulation.dt", msg.str()};
   }
+  if (auto e = compileVideo(spec, model)) return *e;
   return model;
 }
 

@@ -53,17 +53,25 @@ void pressPoint(const Contact& c, const Kinematics& k, const Eigen::Vector3d& r,
   load.normal_force += normal;
 }
 
-ContactLoad pointContact(const Model& model, const Kinematics& k) {
-  const ContactPoints& pts = model.body.bottom;
+void pressPoints(const Contact& c, const Kinematics& k, const ContactPoints& pts,
+                 ContactLoad& load) {
   const double r20 = k.R(2, 0), r21 = k.R(2, 1), r22 = k.R(2, 2);
   const double z_cm = k.x_world.z();
-  ContactLoad load;
   for (std::size_t i = 0; i < pts.size(); ++i) {
     // Height of the point above the floor: z = z_cm + (R r)_z. Most points are above it.
     const double z = z_cm + r20 * pts.x[i] + r21 * pts.y[i] + r22 * pts.z[i];
     if (z >= 0) continue;
-    pressPoint(model.contact, k, k.R * Eigen::Vector3d(pts.x[i], pts.y[i], pts.z[i]), z, load);
+    pressPoint(c, k, k.R * pts[i], z, load);
   }
+}
+
+ContactLoad pointContact(const Model& model, const Kinematics& k) {
+  ContactLoad load;
+  pressPoints(model.contact, k, model.body.bottom, load);
+  // The top surface touches only when the body lies on its side or upside down; its bounding
+  // box says when none of it can, which is nearly always.
+  if (model.body.top.lowestBound(k.R, k.x_world.z()) < 0)
+    pressPoints(model.contact, k, model.body.top, load);
   return load;
 }
 

@@ -6,24 +6,26 @@
 namespace sim {
 namespace {
 
-// Lowest bottom point in world axes relative to the CM, for orientation R.
+// Lowest surface point (top or bottom) in world axes relative to the CM, for orientation R.
 Eigen::Vector3d lowestPoint(const Model& model, const Eigen::Matrix3d& R) {
-  const ContactPoints& p = model.body.bottom;
   Eigen::Vector3d lowest(0, 0, std::numeric_limits<double>::infinity());
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const Eigen::Vector3d r = R * Eigen::Vector3d(p.x[i], p.y[i], p.z[i]);
-    if (r.z() < lowest.z()) lowest = r;
+  for (const ContactPoints* p : {&model.body.bottom, &model.body.top}) {
+    for (std::size_t i = 0; i < p->size(); ++i) {
+      const Eigen::Vector3d r = R * (*p)[i];
+      if (r.z() < lowest.z()) lowest = r;
+    }
   }
   return lowest;
 }
 
 // Σ k·max(0, −z_i): the floor's spring force with the CM at height z_cm, N.
 double springForce(const Model& model, const Eigen::Matrix3d& R, double z_cm) {
-  const ContactPoints& p = model.body.bottom;
   double force = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const double z = z_cm + R(2, 0) * p.x[i] + R(2, 1) * p.y[i] + R(2, 2) * p.z[i];
-    force += model.contact.stiffness * std::max(0.0, -z);
+  for (const ContactPoints* p : {&model.body.bottom, &model.body.top}) {
+    for (std::size_t i = 0; i < p->size(); ++i) {
+      const double z = z_cm + R.row(2).dot((*p)[i]);
+      force += model.contact.stiffness * std::max(0.0, -z);
+    }
   }
   return force;
 }
@@ -58,8 +60,16 @@ State initialState(const Model& model) {
                                 .toRotationMatrix();
   State s;
   s.q = Eigen::Quaterniond(R);
-  s.x_world = Eigen::Vector3d(0, 0, restingHeight(model, R));
   const Eigen::Vector3d w_world = init.spin * R.col(2);
+  s.L_world = R * model.body.inertia * R.transpose() * w_world;
+  if (init.height > 0) {  // released in the air, spinning, the CM at rest
+    const double touching = model.contact.model == ContactModel::Points
+                                ? -lowestPoint(model, R).z()
+                                : -(R * lowestSurfacePoint(model.body, -R.row(2).transpose())).z();
+    s.x_world = Eigen::Vector3d(0, 0, touching + init.height);
+    return s;
+  }
+  s.x_world = Eigen::Vector3d(0, 0, restingHeight(model, R));
   // The lowest point of the smooth surface does not slide: v_cm + ω × r_low = 0. (A grid
   // point would do for a smooth grid, but on a coarse one the lowest point jumps across the
   // flat foot and would kick the body sideways.)
@@ -67,7 +77,6 @@ State initialState(const Model& model) {
   const Eigen::Vector3d r_low_body =
       lowestSurfacePoint(body, R.transpose() * -Eigen::Vector3d::UnitZ());
   s.v_world = -w_world.cross(R * r_low_body);
-  s.L_world = R * model.body.inertia * R.transpose() * w_world;
   return s;
 }
 

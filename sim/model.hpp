@@ -5,6 +5,7 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -21,8 +22,24 @@ enum class Integrator { Euler, Symplectic, Rk4 };
 /// Contact points as structure-of-arrays, body frame (m), for a tight per-step loop.
 struct ContactPoints {
   std::vector<double> x, y, z;
+  Eigen::Vector3d lo = Eigen::Vector3d::Zero(), hi = Eigen::Vector3d::Zero();  ///< bounding box
+
   std::size_t size() const { return x.size(); }
   Eigen::Vector3d operator[](std::size_t i) const { return {x[i], y[i], z[i]}; }
+  void push_back(const Eigen::Vector3d& r) {
+    lo = size() == 0 ? r : Eigen::Vector3d(lo.cwiseMin(r));
+    hi = size() == 0 ? r : Eigen::Vector3d(hi.cwiseMax(r));
+    x.push_back(r.x());
+    y.push_back(r.y());
+    z.push_back(r.z());
+  }
+  /// A lower bound on the height of every point above the floor for the pose (R, z_cm): the
+  /// lowest corner of the bounding box. When it is ≥ 0 no point can touch.
+  double lowestBound(const Eigen::Matrix3d& R, double z_cm) const {
+    double z = z_cm;
+    for (int j = 0; j < 3; ++j) z += std::min(R(2, j) * lo[j], R(2, j) * hi[j]);
+    return z;
+  }
 };
 
 /// Rigid body: mass properties about the CM and the points that can touch the floor.
@@ -35,7 +52,9 @@ struct Body {
   MassProperties mass_properties;      ///< as computed from the grid (geometric frame)
   Grid grid;                           ///< the point grid's spacing, m
   ContactPoints bottom;                ///< bottom-surface points, body frame, m (blue)
-  std::vector<Eigen::Vector3d> top_points;     ///< top-surface points, body frame (rendering)
+  /// Top-surface points, body frame, m (red). They touch the floor only when the body lies
+  /// on its side or upside down (the `points` model checks them then).
+  ContactPoints top;
 };
 
 /// Floor contact (SPEC "Contact and friction"): normal force max(0, k·depth − c·v_n) and
@@ -55,6 +74,7 @@ struct Initial {
   double spin = 0;         ///< rad/s about the body z axis, + counter-clockwise from above
   double tilt_x = 0;       ///< rad, about body x
   double tilt_y = 0;       ///< rad, then about the new body y
+  double height = 0;       ///< m, lowest point above the floor at release (0: resting on it)
 };
 
 /// Video timing and framing (SPEC "Rendering and video"); the renderer reads these.

@@ -1,6 +1,6 @@
 // A whole run: steps the state, hands a telemetry sample to the caller every
 // `steps_per_sample` steps (scheduled by step count, not by comparing times) and
-// watches for the first spin reversal and for divergence.
+// watches for the first spin reversal and for divergence (NaN, inf, or energy growth).
 #pragma once
 
 #include <functional>
@@ -25,7 +25,9 @@ struct RunSummary {
   std::optional<double> first_reversal_s;
   std::int64_t steps = 0;
   double wall_s = 0;                        ///< wall-clock time of the stepping, s
-  std::optional<std::string> divergence;    ///< set when the run stopped on NaN or inf
+  /// Set when the run stopped: a quantity became NaN or infinite, or the energy rose beyond
+  /// what the model can supply. Names the quantity, the time and the step.
+  std::optional<std::string> divergence;
 };
 
 /// Runs model.steps steps from `s` (which it advances).

@@ -71,6 +71,7 @@ struct ContactSpec {
 struct InitialSpec {
   double spin = 0.0;                    ///< rad/s about the vertical, + = counter-clockwise from above
   std::array<double, 2> tilt{0.0, 0.0};  ///< degrees, about body x then the new body y
+  double height = 0.0;  ///< lowest point above the floor at release, length units; 0: resting
 };
 
 struct SimulationSpec {

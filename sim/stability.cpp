@@ -39,6 +39,30 @@ bool acceptable(Integrator integrator, double omega, double zeta, double h, doub
   return 2 * (T / h) * std::log(rho) <= std::log(2.0);
 }
 
+// ω of the stiffest mode of the floor springs in contact with the body resting in pose R.
+double stiffestMode(const Model& model, const Eigen::Matrix3d& R) {
+  const double z_cm = restingHeight(model, R);
+  std::vector<Eigen::Vector3d> springs;  // world axes, from the CM
+  if (model.contact.model == ContactModel::Smooth) {
+    springs.push_back(R * lowestSurfacePoint(model.body, -R.row(2).transpose()));
+  } else {
+    for (const ContactPoints* p : {&model.body.bottom, &model.body.top})
+      for (std::size_t i = 0; i < p->size(); ++i)
+        if (z_cm + R.row(2).dot((*p)[i]) < 0) springs.push_back(R * (*p)[i]);
+  }
+  Eigen::Matrix<double, 6, 6> K = Eigen::Matrix<double, 6, 6>::Zero();
+  for (const Eigen::Vector3d& r : springs) {
+    Eigen::Matrix<double, 6, 1> J;
+    J << Eigen::Vector3d::UnitZ(), r.cross(Eigen::Vector3d::UnitZ());
+    K += model.contact.stiffness * J * J.transpose();
+  }
+  Eigen::Matrix<double, 6, 6> M = Eigen::Matrix<double, 6, 6>::Zero();
+  M.topLeftCorner<3, 3>() = model.body.mass * Eigen::Matrix3d::Identity();
+  M.bottomRightCorner<3, 3>() = R * model.body.inertia * R.transpose();
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> modes(K, M);
+  return std::sqrt(std::max(0.0, modes.eigenvalues().maxCoeff()));
+}
+
 }  // namespace
 
 double stepAmplification(Integrator integrator, double omega, double zeta, double h) {
@@ -49,30 +73,18 @@ ContactStability contactStability(const Model& model) {
   // Rolling has no contact spring: only the integrator's accuracy limits the step.
   if (model.contact.model == ContactModel::Rolling)
     return {0, 0, std::numeric_limits<double>::infinity()};
-  // Springs in contact at the upright rest pose.
-  const Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
-  const double z_cm = restingHeight(model, R);
-  std::vector<Eigen::Vector3d> springs;  // body frame = world frame here
-  if (model.contact.model == ContactModel::Smooth) {
-    springs.push_back(lowestSurfacePoint(model.body, -Eigen::Vector3d::UnitZ()));
-  } else {
-    const ContactPoints& p = model.body.bottom;
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (z_cm + p.z[i] < 0) springs.emplace_back(p.x[i], p.y[i], p.z[i]);
-  }
-  Eigen::Matrix<double, 6, 6> K = Eigen::Matrix<double, 6, 6>::Zero();
-  for (const Eigen::Vector3d& r : springs) {
-    Eigen::Matrix<double, 6, 1> J;
-    J << Eigen::Vector3d::UnitZ(), r.cross(Eigen::Vector3d::UnitZ());
-    K += model.contact.stiffness * J * J.transpose();
-  }
-  Eigen::Matrix<double, 6, 6> M = Eigen::Matrix<double, 6, 6>::Zero();
-  M.topLeftCorner<3, 3>() = model.body.mass * Eigen::Matrix3d::Identity();
-  M.bottomRightCorner<3, 3>() = model.body.inertia;
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> modes(K, M);
-
+  // The pose it starts nearest to: upright, or upside down on its top (a flat top carries
+  // many more points than the bottom, hence much stiffer modes). A body that turns over
+  // during a run onto a stiffer face is caught by run()'s energy bound instead.
+  const Eigen::Vector3d up_in_body =
+      (Eigen::AngleAxisd(model.initial.tilt_x, Eigen::Vector3d::UnitX()) *
+       Eigen::AngleAxisd(model.initial.tilt_y, Eigen::Vector3d::UnitY()))
+          .toRotationMatrix()
+          .row(2)
+          .transpose();
+  const double roll = up_in_body.z() < 0 ? M_PI : 0.0;
   ContactStability out;
-  out.omega = std::sqrt(std::max(0.0, modes.eigenvalues().maxCoeff()));
+  out.omega = stiffestMode(model, Eigen::Matrix3d(Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX())));
   out.zeta = model.contact.damping * out.omega / (2 * model.contact.stiffness);
   if (out.omega == 0) {  // nothing presses on the floor (no gravity): no contact mode
     out.largest_step = std::numeric_limits<double>::infinity();

@@ -7,12 +7,13 @@
 namespace sim {
 
 struct ContactStability {
-  double omega = 0;         ///< stiffest contact mode of the body resting upright, rad/s
+  double omega = 0;         ///< stiffest contact mode of the rest pose nearest the start, rad/s
   double zeta = 0;          ///< its damping ratio
   double largest_step = 0;  ///< s
 };
 
-/// Linearises the floor springs about the upright rest pose: K = Σ k J Jᵀ with
+/// Linearises the floor springs about the rest pose nearest the initial one (upright, or
+/// upside down on the top when the start is upside down): K = Σ k J Jᵀ with
 /// J = (ẑ, r × ẑ) for each point in contact, against the rigid body's mass matrix
 /// diag(M, M, M, I); the stiffest mode is ω² = λ_max(M⁻¹K), and the dampers C = (c/k) K give
 /// it the ratio ζ = c ω / (2k). The largest step is the largest h at which that mode's energy

@@ -26,6 +26,11 @@ struct Surface {
 
   /// The point lowest along `down` (unit, geometric frame), m.
   Eigen::Vector3d lowestPoint(const Eigen::Vector3d& down) const;
+  /// Whether that point is on the rim of a paraboloid's flat top (never for an ellipsoid):
+  /// there the surface has an edge, and rolling on a smooth surface no longer applies.
+  bool lowestOnRim(const Eigen::Vector3d& down) const {
+    return kind == Kind::Paraboloid && paraboloid.lowestOnRim(down);
+  }
   /// How fast that point moves over the surface as `down` turns at `down_rate`, m/s.
   Eigen::Vector3d lowestPointRate(const Eigen::Vector3d& down,
                                   const Eigen::Vector3d& down_rate) const;

@@ -14,11 +14,11 @@ TEST(SeedGrid, CountsAndRangesMatchTheReport) {
   const sim::Model model = build(parse(kSeedScene));
   const sim::Body& body = model.body;
   EXPECT_EQ(body.mass_properties.points, 4256);
-  EXPECT_EQ(body.top_points.size(), 308u);
+  EXPECT_EQ(body.top.size(), 308u);
   EXPECT_EQ(body.bottom.size(), 294u);
   double x_min = 1e9, x_max = -1e9, y_min = 1e9, y_max = -1e9;
-  for (const auto& r : body.top_points) {
-    const Eigen::Vector3d p = (r + body.com_geometric) / 0.01;  // back to cm, geometric frame
+  for (std::size_t i = 0; i < body.top.size(); ++i) {
+    const Eigen::Vector3d p = (body.top[i] + body.com_geometric) / 0.01;  // back to cm, geometric frame
     x_min = std::min(x_min, p.x());
     x_max = std::max(x_max, p.x());
     y_min = std::min(y_min, p.y());

@@ -153,3 +153,31 @@ TEST(Cli, AnalyzeJsonHasTheSeedCounts) {
   for (const char* key : {"\"mass\"", "\"com\"", "\"inertia\"", "\"misalignment_deg\""})
     EXPECT_NE(r.out.find(key), std::string::npos) << key;
 }
+
+TEST(Cli, AStoppedRunExitsThreeNamesWhenAndWhyAndKeepsTheOldOutput) {
+  // The default body spun at −50 rad/s under the rolling model tips onto the edge of its top
+  // (see HardCases.FiftyRadiansPerSecond): the run stops there.
+  std::ifstream in(scene("rattleback"));
+  std::stringstream s;
+  s << in.rdbuf();
+  std::string text = s.str();
+  text.replace(text.find("spin: -5.0"), 10, "spin: -50.0");
+  const fs::path yaml = tempFile("fast.yaml");
+  std::ofstream(yaml) << text;
+  const fs::path csv = tempFile("keep.csv");
+  std::ofstream(csv) << "precious\n";
+  for (const std::string& command : {std::string("simulate"), std::string("render --size 64x36")}) {
+    const fs::path out = command == "simulate" ? csv : tempFile("fast.mp4");
+    const Result r = rattleback(command + " -q " + yaml.string() + " -o " + out.string());
+    EXPECT_EQ(r.status, 3) << r.err;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("t = 0.3"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("(step "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("edge of its top"), std::string::npos) << r.err;
+  }
+  std::ifstream kept(csv);
+  std::string content;
+  std::getline(kept, content);
+  EXPECT_EQ(content, "precious");
+  EXPECT_FALSE(fs::exists(scratchDir() / "fast.mp4"));
+}

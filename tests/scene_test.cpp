@@ -61,7 +61,7 @@ const BadCase kBadCases[] = {
     {"{scale: 0.375, ", "{", "5: body.dents.scale is required"},
     {"length: 0.01", "length: 0", "1: units.length must be > 0"},
     {"tilt: [0.0, 0.0]", "tilt: 5", "9: initial.tilt must be a list of two numbers"},
-    {"tilt: [0.0, 0.0]", "tilt: [95, 0]", "9: initial.tilt must lie within ±90 degrees"},
+    {"tilt: [0.0, 0.0]", "tilt: [181, 0]", "9: initial.tilt must lie within ±180 degrees"},
     {"spin: 0.0", "spin: .inf", "9: initial.spin must be a finite number"},
     {"fps: 25", "fps: 0", "11: video.fps must be within"},
     {"size: [320, 180]", "size: [100000, 100000]", "11: video.size sides must be within"},
