@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/scene_args.hpp"
 
@@ -51,6 +52,19 @@ struct StillArgs {
   bool quiet = false;
 };
 int stillCommand(const StillArgs& args);
+
+struct BenchArgs {
+  std::vector<std::string> scenes;  ///< empty: scenes/rattleback.yaml, scenes/seed-reversed.yaml
+  std::string csv;                  ///< empty: out/bench.csv
+  std::string plot;                 ///< empty: out/bench.png
+  double duration = 3;              ///< simulated seconds per run
+  int repeats = 3;                  ///< timed runs per rung
+  int rungs = 5;                    ///< steps in each ladder of halvings
+  std::vector<std::string> models, integrators;  ///< empty: all that apply
+  bool quiet = false;
+};
+/// Speed against error: prints a table, writes CSV and a log–log plot.
+int benchCommand(const BenchArgs& args);
 
 struct CompareArgs {
   std::string actual, expected;

@@ -72,6 +72,22 @@ int main(int argc, char** argv) {
                       "Fraction of pixels allowed beyond the tolerance (default 0.002)");
   compare->add_option("--diff", compare_args.diff, "Write a diff image here when they differ");
 
+  app::BenchArgs bench_args;
+  CLI::App* bench = cli.add_subcommand(
+      "bench", "Speed against error: each contact model × integrator × step against a reference");
+  bench->add_option("scenes", bench_args.scenes,
+                    "Scene files (default scenes/rattleback.yaml scenes/seed-reversed.yaml)");
+  bench->add_option("-o,--output", bench_args.csv, "CSV table (default out/bench.csv)");
+  bench->add_option("--plot", bench_args.plot, "Error-against-cost plot, PNG (default out/bench.png)");
+  bench->add_option("--duration", bench_args.duration, "Simulated seconds per run (default 3)");
+  bench->add_option("--repeats", bench_args.repeats, "Timed runs per step (default 3)");
+  bench->add_option("--rungs", bench_args.rungs, "Steps in each ladder of halvings (default 5)");
+  bench->add_option("--models", bench_args.models, "points smooth rolling (default: all that apply)")
+      ->delimiter(',');
+  bench->add_option("--integrators", bench_args.integrators, "euler symplectic rk4 (default all)")
+      ->delimiter(',');
+  bench->add_flag("-q,--quiet", bench_args.quiet, "No table on stdout");
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -86,6 +102,7 @@ int main(int argc, char** argv) {
   }
   if (*simulate) return app::simulateCommand(sim_args);
   if (*analyze) return app::analyzeCommand(analyze_args);
+  if (*bench) return app::benchCommand(bench_args);
   for (auto [text, target] : {std::pair{&render_size, &render_args.overrides.size},
                               std::pair{&still_size, &still_args.overrides.size}}) {
     if (text->empty()) continue;

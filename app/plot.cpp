@@ -1,0 +1,155 @@
+#include "app/plot.hpp"
+
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fcntl.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+extern char** environ;
+
+namespace app {
+namespace fs = std::filesystem;
+namespace {
+
+// A gnuplot double-quoted string: backslashes and quotes escaped (enhanced text is off).
+std::string quoted(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+std::string firstLine(const fs::path& file) {
+  std::ifstream in(file);
+  std::string line, last;
+  while (std::getline(in, line))
+    if (!line.empty()) last = line;  // gnuplot's own message is its last line
+  return last;
+}
+
+// Runs `gnuplot script` with stderr into `log`; the exit status, or −1 when gnuplot is missing.
+int runGnuplot(const fs::path& script, const fs::path& log) {
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0600);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  const std::string script_path = script.string();
+  char* argv[] = {const_cast<char*>("gnuplot"), const_cast<char*>(script_path.c_str()), nullptr};
+  pid_t pid;
+  const int spawned = posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) return -1;
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+}
+
+}  // namespace
+
+std::optional<std::string> plotPng(const std::string& png, const std::string& title,
+                                   const std::vector<Panel>& panels, int width, int height) {
+  std::error_code ec;
+  if (fs::is_directory(png, ec)) return png + ": is a directory, not a file";
+  const fs::path parent = fs::absolute(png).parent_path();
+  if (!fs::is_directory(parent, ec)) return png + ": cannot write: the folder does not exist";
+
+  char pattern[] = "/tmp/rattleback-plot-XXXXXX";
+  if (!mkdtemp(pattern)) return png + ": cannot make a temporary folder: " + std::strerror(errno);
+  const fs::path work = pattern;
+  struct Cleanup {
+    fs::path dir;
+    ~Cleanup() {
+      std::error_code ignored;
+      fs::remove_all(dir, ignored);
+    }
+  } cleanup{work};
+  const fs::path temp_png =
+      parent / ("." + fs::path(png).filename().string() + ".partial-" + std::to_string(getpid()));
+
+  std::ofstream script(work / "plot.gp");
+  script << "set terminal pngcairo size " << width << "," << height
+         << " font \"DejaVu Sans,10\" noenhanced\n"
+         << "set output " << quoted(temp_png.string()) << "\n"
+         << "set datafile separator ' '\nset grid lc rgb '#dddddd'\nset key outside right top\n"
+         << "set multiplot layout " << panels.size() << ",1 title " << quoted(title)
+         << " font \",12\"\n";
+  int file_index = 0;
+  for (const Panel& panel : panels) {
+    script << "unset logscale\nunset y2label\nunset y2tics\nset ytics mirror\n"
+           << "set title " << quoted(panel.title) << "\n"
+           << "set xlabel " << quoted(panel.x_label) << "\nset ylabel " << quoted(panel.y_label)
+           << "\n";
+    if (panel.log_x) script << "set logscale x\nset format x '%g'\n";
+    else script << "set format x '% g'\n";
+    if (panel.log_y) script << "set logscale y\nset format y '%.0e'\n";
+    else script << "set format y '% g'\n";
+    if (!panel.y2_label.empty())
+      script << "set y2label " << quoted(panel.y2_label) << "\nset y2tics\nset ytics nomirror\n";
+    std::vector<std::string> clauses;
+    for (const Series& series : panel.series) {
+      const fs::path data = work / ("series" + std::to_string(file_index++) + ".dat");
+      std::ofstream out(data);
+      out.precision(10);
+      int kept = 0;
+      for (const auto& [x, y] : series.points) {
+        // Log axes cannot show zero or negative values; gnuplot would refuse the series.
+        if (!std::isfinite(x) || !std::isfinite(y)) continue;
+        if ((panel.log_x && x <= 0) || (panel.log_y && y <= 0)) continue;
+        out << x << ' ' << y << '\n';
+        ++kept;
+      }
+      if (kept == 0) continue;
+      std::string style = panel.lines_only ? " with lines lw 1.5"
+                                           : " with linespoints lw 1.5 ps 0.9 pt " +
+                                                 std::to_string(series.point_type);
+      style += " dt " + std::to_string(series.dash);
+      if (!series.color.empty()) style += " lc rgb " + quoted(series.color);
+      clauses.push_back(quoted(data.string()) + " using 1:2" +
+                        (series.right_axis ? " axes x1y2" : "") + style + " title " +
+                        quoted(series.title));
+    }
+    if (clauses.empty()) {
+      script << "set label 1 'no data' at graph 0.5, graph 0.5 center\n"
+             << "plot [0:1][0:1] NaN notitle\nunset label 1\n";
+      continue;
+    }
+    script << "plot ";
+    for (std::size_t i = 0; i < clauses.size(); ++i) script << (i ? ", \\\n     " : "") << clauses[i];
+    script << "\n";
+  }
+  script << "unset multiplot\nset output\n";
+  script.close();
+  if (!script) return png + ": cannot write the plot script";
+
+  const int status = runGnuplot(work / "plot.gp", work / "gnuplot.log");
+  if (status == -1) {
+    fs::remove(temp_png, ec);
+    return png + ": cannot run gnuplot (install it: apt-get install gnuplot-nox)";
+  }
+  if (status != 0 || !fs::exists(temp_png, ec) || fs::file_size(temp_png, ec) == 0) {
+    fs::remove(temp_png, ec);
+    return png + ": gnuplot failed: " + firstLine(work / "gnuplot.log");
+  }
+  fs::rename(temp_png, png, ec);
+  if (ec) {
+    fs::remove(temp_png, ec);
+    return png + ": cannot move the finished plot into place: " + ec.message();
+  }
+  return std::nullopt;
+}
+
+}  // namespace app

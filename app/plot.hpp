@@ -1,0 +1,34 @@
+// Figures drawn by gnuplot (Debian's gnuplot-nox), driven by the program: the data go to a
+// private temporary folder, gnuplot writes a PNG under a temporary name beside the target,
+// and it is renamed into place only when gnuplot succeeded.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace app {
+
+struct Series {
+  std::string title;
+  std::vector<std::pair<double, double>> points;
+  bool right_axis = false;  ///< plotted against the panel's second y axis
+  std::string color;        ///< "#rrggbb"; empty: gnuplot's next colour
+  int point_type = 7;       ///< gnuplot point type (7 disc, 5 square, 9 triangle)
+  int dash = 1;             ///< gnuplot dash type (1 solid)
+};
+
+struct Panel {
+  std::string title, x_label, y_label, y2_label;
+  bool log_x = false, log_y = false;
+  bool lines_only = false;  ///< no point markers (time series)
+  std::vector<Series> series;
+};
+
+/// Draws the panels stacked top to bottom into one PNG of width × height pixels.
+/// Returns one error line naming `png` on failure; an existing `png` is then left as it was.
+std::optional<std::string> plotPng(const std::string& png, const std::string& title,
+                                   const std::vector<Panel>& panels, int width, int height);
+
+}  // namespace app
