@@ -117,6 +117,9 @@ class MapReader {
 
   double number(const YAML::Node& node, const std::string& key) const {
     double v = 0;
+    // A quoted scalar ("0.5") is a string: its tag is "!" rather than the plain "?".
+    if (node.IsScalar() && node.Tag() == "!")
+      fail(key, "must be a number, not the quoted string \"" + node.Scalar() + "\"");
     if (!node.IsScalar() || !YAML::convert<double>::decode(node, v))
       fail(key, "must be a number, not '" + (node.IsScalar() ? node.Scalar() : "a list or map") +
                     "'");

@@ -2,7 +2,12 @@
 // file, the line and the key.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "support.hpp"
 
@@ -69,6 +74,37 @@ const BadCase kBadCases[] = {
     {"fps: 25", "fps: 30", "11: video.fps 30 with playback 1 needs 3333.33 steps"},
     {"view: oblique", "view: sideways", "11: video.view must be"},
     {"", "video: {fps: 25}\n", "12: video is given twice"},
+    // More of the same families: types, ranges, shapes and absurd sizes.
+    {"mass: 0.5", "mass: 1e400", "7: body.mass must be"},
+    {"mass: 0.5", "mass: \"0.5\"", "7: body.mass must be a number"},
+    {"mass: 0.5", "mass: {kg: 1}", "7: body.mass must be a number"},
+    {"mass: 0.5", "mass: ", "7: body.mass must be a number"},
+    {"dx: 0.52, dy: 1.42, dz: 0.2", "dx: 1e-4, dy: 1e-4, dz: 1e-4", "6: body.grid makes about"},
+    {"dz: 0.2}", "dz: .nan}", "6: body.grid.dz must be > 0"},
+    {"p: 3,", "p: -3,", "4: body.paraboloid.p must be > 0"},
+    {"q: 0,", "q: 40,", "4: body.paraboloid.q too large"},
+    {"s: 0.15,", "s: .inf,", "4: body.paraboloid.s must be"},
+    {"at: [1.04, 9.23]", "at: [1.04]", "5: body.dents.at must be a list of two numbers"},
+    {"paraboloid: {a: 4,", "paraboloid: {b: 1, a: 4,", "4: body.paraboloid.b is not a known key"},
+    {"shape: paraboloid", "shape: [paraboloid]", "3: body.shape must be a word"},
+    {"initial: {spin: 0.0, tilt: [0.0, 0.0]}", "initial: 5", "9: initial"},
+    {"friction: 0.3", "friction: 0.3, slip_velocity: 0", "8: contact.slip_velocity must be > 0"},
+    {"friction: 0.3", "friction: 0.3, air_drag: -1", "8: contact.air_drag must be ≥ 0"},
+    {"friction: 0.3", "friction: .nan", "8: contact.friction must be ≥ 0"},
+    {"", "gravity: -9.81\n", "12: gravity must be ≥ 0"},
+    {"", "gravity: [0, 0, -9.81]\n", "12: gravity must be a number"},
+    {"spin: 0.0", "spin: 0.0, height: -1", "9: initial.height must be ≥ 0"},
+    {"spin: 0.0", "spin: 0.0, height: .nan", "9: initial.height must be ≥ 0"},
+    {"tilt: [0.0, 0.0]", "tilt: [.nan, 0]", "9: initial.tilt must be a finite number"},
+    {"integrator: symplectic", "integrator: 4", "10: simulation.integrator must be"},
+    {"duration: 1.0", "duration: -1", "10: simulation.duration must be > 0"},
+    {"duration: 1.0", "duration: 1e-9", "10: simulation.duration is shorter than one step"},
+    {"size: [320, 180]", "size: [320]", "11: video.size must be a list of two"},
+    {"size: [320, 180]", "size: [-320, 180]", "11: video.size sides must be within"},
+    {"fps: 25", "fps: 1e9", "11: video.fps must be"},
+    {"fps: 25", "fps: 25, playback: 0", "11: video.playback must be > 0"},
+    {"units: {length: 0.01}", "units: {length: 0.01, mass: 1}", "1: units.mass is not a known key"},
+    {"units: {length: 0.01}", "units: {length: .inf}", "1: units.length must be"},
 };
 
 std::string mutate(const BadCase& c) {
@@ -107,7 +143,8 @@ TEST(Scenes, ShippedScenesLoadAndCompile) {
 TEST(BadScenes, EachGetsOneLineNamingFileLineAndKey) {
   for (const BadCase& c : kBadCases) {
     const std::string message = errorFor(mutate(c));
-    ASSERT_FALSE(message.empty()) << "accepted: " << c.to;
+    EXPECT_FALSE(message.empty()) << "accepted: " << c.to;
+    if (message.empty()) continue;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
     if (*c.expected) {
       EXPECT_EQ(message.rfind(std::string("inline.yaml:") + c.expected, 0), 0u)
@@ -129,4 +166,31 @@ TEST(BadScenes, AMissingFileIsNamed) {
   ASSERT_TRUE(std::holds_alternative<scene::LoadError>(loaded));
   EXPECT_EQ(std::get<scene::LoadError>(loaded).message,
             "/nonexistent/scene.yaml: cannot open the scene file");
+}
+
+TEST(BadScenes, EachExitsTwoFromTheCommandLineWithOneLineAndNoOutput) {
+  // The same battery through the program: exit status 2, one line on stderr starting with the
+  // file's path and line, nothing on stdout, and no telemetry file left behind.
+  const std::filesystem::path dir =
+      std::filesystem::path(testing::TempDir()) / "rattleback_battery";
+  std::filesystem::create_directories(dir);
+  int index = 0;
+  for (const BadCase& c : kBadCases) {
+    const std::filesystem::path yaml = dir / ("case" + std::to_string(index++) + ".yaml");
+    std::ofstream(yaml) << mutate(c);
+    const std::filesystem::path csv = dir / "out.csv", err = dir / "stderr", out = dir / "stdout";
+    std::filesystem::remove(csv);
+    const std::string command = std::string(RATTLEBACK_BIN) + " simulate " + yaml.string() +
+                                " -o " + csv.string() + " >" + out.string() + " 2>" + err.string();
+    const int raw = std::system(command.c_str());
+    std::ifstream in(err);
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string message = text.str();
+    EXPECT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 2) << c.to << ": status " << raw;
+    EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 1) << message;
+    EXPECT_EQ(message.rfind(yaml.string() + ":", 0), 0u) << message;
+    EXPECT_EQ(std::filesystem::file_size(out), 0u) << c.to;
+    EXPECT_FALSE(std::filesystem::exists(csv)) << c.to;
+  }
 }
