@@ -21,7 +21,9 @@ struct SimulateArgs {
   std::string output;  ///< CSV path; empty: out/<scene name>.csv
   std::optional<double> duration, dt, rate;
   std::optional<std::string> integrator;
+  std::string plot_dir;  ///< non-empty: write the four figures (PNG) there
   bool quiet = false;
+  bool verbose = false;
 };
 int simulateCommand(const SimulateArgs& args);
 

@@ -20,7 +20,10 @@ int main(int argc, char** argv) {
   simulate->add_option("--integrator", sim_args.integrator, "euler | symplectic | rk4");
   simulate->add_option("--rate", sim_args.rate,
                        "Telemetry samples per simulated second (default ~500)");
+  simulate->add_option("--plot", sim_args.plot_dir,
+                       "Folder for the figures: energy, spin, tilt and height, normal force (PNG)");
   simulate->add_flag("-q,--quiet", sim_args.quiet, "No summary and no progress bar");
+  simulate->add_flag("-v,--verbose", sim_args.verbose, "Also describe the model before running");
 
   app::AnalyzeArgs analyze_args;
   CLI::App* analyze = cli.add_subcommand(

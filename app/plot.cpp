@@ -90,7 +90,7 @@ std::optional<std::string> plotPng(const std::string& png, const std::string& ti
   int file_index = 0;
   for (const Panel& panel : panels) {
     script << "unset logscale\nunset y2label\nunset y2tics\nset ytics mirror\n"
-           << "set title " << quoted(panel.title) << "\n"
+           << "set title " << quoted(panels.size() > 1 ? panel.title : std::string()) << "\n"
            << "set xlabel " << quoted(panel.x_label) << "\nset ylabel " << quoted(panel.y_label)
            << "\n";
     if (panel.log_x) script << "set logscale x\nset format x '%g'\n";

@@ -5,6 +5,7 @@
 
 #include "app/commands.hpp"
 #include "app/output.hpp"
+#include "app/plot.hpp"
 #include "app/progress.hpp"
 #include "app/scene_args.hpp"
 #include "sim/initial.hpp"
@@ -70,6 +71,64 @@ void printSummary(const SimulateArgs& args, const sim::Model& model,
   std::printf("telemetry       %s (%lld rows)\n", csv.c_str(), static_cast<long long>(rows));
 }
 
+// The seed's figures (6–8, 12–16) from the telemetry: energy, spin, tilt and CM height, and
+// the normal force, each against time, into DIR/<scene>-<what>.png.
+std::optional<std::string> writePlots(const std::string& dir, const std::string& scene,
+                                      const std::vector<sim::Telemetry>& samples) {
+  const std::string stem = std::filesystem::path(scene).stem().string();
+  auto series = [&](const char* title, auto value, bool right = false) {
+    Series s;
+    s.title = title;
+    s.right_axis = right;
+    s.points.reserve(samples.size());
+    for (const sim::Telemetry& t : samples) s.points.emplace_back(t.t, value(t));
+    return s;
+  };
+  auto panel = [&](const char* title, const char* y_label) {
+    Panel p;
+    p.title = title;
+    p.x_label = "time t [s]";
+    p.y_label = y_label;
+    p.lines_only = true;
+    return p;
+  };
+  Panel energy = panel("Energy", "energy [mJ]");
+  energy.series = {series("total", [](const sim::Telemetry& t) { return 1e3 * t.energy; }),
+                   series("kinetic", [](const sim::Telemetry& t) { return 1e3 * t.kinetic; }),
+                   series("potential M g z", [](const sim::Telemetry& t) { return 1e3 * t.potential; }),
+                   series("elastic (floor springs)", [](const sim::Telemetry& t) { return 1e3 * t.elastic; })};
+  Panel spin = panel("Spin about the vertical, n = w.z (+ counter-clockwise from above)",
+                     "spin n [rad/s]");
+  spin.series = {series("n", [](const sim::Telemetry& t) { return t.spin; })};
+  Panel tilt = panel("Tilt of the body axis and height of the centre of mass", "tilt [degrees]");
+  tilt.y2_label = "CM height z [mm]";
+  tilt.series = {series("tilt", [](const sim::Telemetry& t) { return t.tilt_deg; }),
+                 series("CM height", [](const sim::Telemetry& t) { return 1e3 * t.x_world.z(); }, true)};
+  Panel normal = panel("Normal force of the floor", "normal force N [N]");
+  normal.series = {series("N", [](const sim::Telemetry& t) { return t.normal_force; })};
+  const std::pair<const char*, Panel*> figures[] = {
+      {"energy", &energy}, {"spin", &spin}, {"tilt", &tilt}, {"normal", &normal}};
+  for (const auto& [what, p] : figures) {
+    const std::string png = (std::filesystem::path(dir) / (stem + "-" + what + ".png")).string();
+    if (auto e = plotPng(png, stem + ": " + p->title, {*p}, 1000, 500)) return e;
+  }
+  return std::nullopt;
+}
+
+void describe(const sim::Model& model, const std::string& scene, std::int64_t every) {
+  const char* contact[] = {"points", "smooth", "rolling"};
+  const char* integrator[] = {"euler", "symplectic", "rk4"};
+  std::fprintf(stderr, "%s: %zu bottom and %zu top points, mass %g kg, contact %s", scene.c_str(),
+               model.body.bottom.size(), model.body.top.size(), model.body.mass,
+               contact[static_cast<int>(model.contact.model)]);
+  if (model.contact.model != sim::ContactModel::Rolling)
+    std::fprintf(stderr, " (k %g N/m, c %g N s/m, mu %g)", model.contact.stiffness,
+                 model.contact.damping, model.contact.friction);
+  std::fprintf(stderr, ", %s dt %g s, %lld steps, a sample every %lld steps\n",
+               integrator[static_cast<int>(model.integrator)], model.dt,
+               static_cast<long long>(model.steps), static_cast<long long>(every));
+}
+
 }  // namespace
 
 int simulateCommand(const SimulateArgs& args) {
@@ -97,15 +156,26 @@ int simulateCommand(const SimulateArgs& args) {
     return kBadInput;
   }
   AtomicOutput& file = std::get<AtomicOutput>(opened);
+  if (!args.plot_dir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(args.plot_dir, ec);
+    if (!std::filesystem::is_directory(args.plot_dir)) {
+      std::cerr << args.plot_dir << ": --plot needs a folder it can write into\n";
+      return kBadInput;
+    }
+  }
+  if (args.verbose) describe(model, args.scene, std::get<std::int64_t>(every));
   file.stream() << "# rattleback simulate " << args.scene << "\n" << kHeaderUnits << kHeader;
 
   std::int64_t rows = 0;
   Progress progress("simulate", model.steps, !args.quiet);
   sim::RunOptions options;
   options.steps_per_sample = std::get<std::int64_t>(every);
+  std::vector<sim::Telemetry> kept;  // for the plots
   options.on_sample = [&](const sim::Telemetry& t) {
     writeRow(file.stream(), t);
     ++rows;
+    if (!args.plot_dir.empty()) kept.push_back(t);
   };
   options.on_progress = [&](std::int64_t step) { progress.update(step); };
   sim::State state = sim::initialState(model);
@@ -121,7 +191,16 @@ int simulateCommand(const SimulateArgs& args) {
     std::cerr << *e << "\n";
     return kBadInput;
   }
+  if (!args.plot_dir.empty()) {
+    if (auto e = writePlots(args.plot_dir, args.scene, kept)) {
+      std::cerr << *e << "\n";
+      return kBadInput;
+    }
+  }
   if (!args.quiet) printSummary(args, model, summary, csv, rows);
+  if (!args.quiet && !args.plot_dir.empty())
+    std::printf("plots           %s/%s-{energy,spin,tilt,normal}.png\n", args.plot_dir.c_str(),
+                std::filesystem::path(args.scene).stem().string().c_str());
   return kOk;
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -240,11 +241,30 @@ void readRest(MapReader& root, sim::SceneSpec& s) {
   });
 }
 
+// One line, whatever the file holds: control characters (a newline in a quoted key, a NUL
+// byte, an escape yaml-cpp quotes back) are shown escaped.
+std::string printable(const std::string& text) {
+  std::string out;
+  for (unsigned char c : text) {
+    if (c == '\n') out += "\\n";
+    else if (c == '\t') out += "\\t";
+    else if (c == '\r') out += "\\r";
+    else if (c < 0x20 || c == 0x7f) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02x", c);
+      out += hex;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
+}
+
 std::string format(const std::string& file, int line, const std::string& key,
                    const std::string& message) {
   std::ostringstream s;
   s << file << ":" << line << ": " << key << " " << message;
-  return s.str();
+  return printable(s.str());
 }
 
 }  // namespace
@@ -255,8 +275,8 @@ std::variant<Loaded, LoadError> loadString(const std::string& yaml, const std::s
   try {
     const YAML::Node root_node = YAML::Load(yaml);
     if (!root_node.IsDefined() || root_node.IsNull())
-      return LoadError{name + ":1: the scene is empty; expected keys such as body, contact, "
-                              "simulation"};
+      return LoadError{printable(name) +
+                       ":1: the scene is empty; expected keys such as body, contact, simulation"};
     MapReader root(root_node, "", 1, out,
                    {"units", "body", "contact", "gravity", "initial", "simulation", "video"});
     readBody(root, out.spec.body);
@@ -267,23 +287,23 @@ std::variant<Loaded, LoadError> loadString(const std::string& yaml, const std::s
   } catch (const YAML::Exception& e) {
     // Syntax errors: yaml-cpp knows the line but no key.
     const int line = e.mark.is_null() ? 1 : e.mark.line + 1;
-    return LoadError{name + ":" + std::to_string(line) + ": malformed YAML: " + e.msg};
+    return LoadError{printable(name + ":" + std::to_string(line) + ": malformed YAML: " + e.msg)};
   }
   return out;
 }
 
 std::variant<Loaded, LoadError> loadFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) return LoadError{path + ": cannot open the scene file"};
+  if (!in) return LoadError{printable(path) + ": cannot open the scene file"};
   std::ostringstream text;
   text << in.rdbuf();
-  if (in.bad()) return LoadError{path + ": cannot read the scene file"};
+  if (in.bad()) return LoadError{printable(path) + ": cannot read the scene file"};
   return loadString(text.str(), path);
 }
 
 std::string describe(const Loaded& loaded, const sim::SpecError& error) {
   if (auto it = loaded.overrides.find(error.key); it != loaded.overrides.end())
-    return it->second + ": " + error.key + " " + error.message;
+    return printable(it->second + ": " + error.key + " " + error.message);
   // The key's own line, else the nearest enclosing key that the file has.
   std::string key = error.key;
   while (!key.empty()) {

@@ -21,7 +21,7 @@ done
 echo "== telemetry and analysis"
 for scene in rattleback seed-preferred seed-reversed kane-levinson; do
   $rb analyze "scenes/$scene.yaml" > "out/$scene-analysis.txt"
-  $rb simulate "scenes/$scene.yaml" -o "out/$scene.csv" -q
+  $rb simulate "scenes/$scene.yaml" -o "out/$scene.csv" --plot out -q
 done
 
 echo

@@ -181,3 +181,26 @@ TEST(Cli, AStoppedRunExitsThreeNamesWhenAndWhyAndKeepsTheOldOutput) {
   EXPECT_EQ(content, "precious");
   EXPECT_FALSE(fs::exists(scratchDir() / "fast.mp4"));
 }
+
+TEST(Cli, SimulatePlotsTheFourFigures) {
+  const fs::path dir = scratchDir() / "plots";
+  fs::remove_all(dir);
+  const Result r = rattleback("simulate -q " + scene("rattleback") + " --duration 0.5 -o " +
+                              tempFile("r.csv").string() + " --plot " + dir.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* what : {"energy", "spin", "tilt", "normal"}) {
+    const fs::path png = dir / (std::string("rattleback-") + what + ".png");
+    std::ifstream in(png, std::ios::binary);
+    char magic[8] = {};
+    in.read(magic, 8);
+    EXPECT_EQ(std::string(magic + 1, 3), "PNG") << png;
+    EXPECT_GT(fs::file_size(png), 10000u) << png << ": too small for a drawn figure";
+  }
+  // A --plot folder that cannot be made: one line, exit 2, and no telemetry either.
+  const fs::path csv = tempFile("none.csv");
+  const Result bad = rattleback("simulate " + scene("rattleback") + " --duration 0.1 -o " +
+                                csv.string() + " --plot /dev/full/plots");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_EQ(lines(bad.err), 1) << bad.err;
+  EXPECT_FALSE(fs::exists(csv));
+}
