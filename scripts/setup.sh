@@ -9,7 +9,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libosmesa6-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   libpng-dev libfreetype-dev fonts-dejavu-core
-  ffmpeg
+  ffmpeg gnuplot-nox
+  clang libclang-rt-14-dev
 )
 
 missing=()
