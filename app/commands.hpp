@@ -42,6 +42,7 @@ struct RenderArgs {
   int crf = 20;
   std::string preset = "veryfast";
   bool quiet = false;
+  bool verbose = false;
 };
 int renderCommand(const RenderArgs& args);
 

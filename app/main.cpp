@@ -52,6 +52,7 @@ int main(int argc, char** argv) {
                    "Also the reversed spin, named …-preferred.mp4 and …-reversed.mp4, and a "
                    "side-by-side …-both.mp4");
   render->add_flag("-q,--quiet", render_args.quiet, "No summary and no progress bar");
+  render->add_flag("-v,--verbose", render_args.verbose, "Also describe the model before running");
 
   app::StillArgs still_args;
   CLI::App* still = cli.add_subcommand("still", "Render one frame of a scene to a PNG");

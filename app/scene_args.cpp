@@ -29,6 +29,21 @@ std::variant<sim::Model, std::string> loadScene(const std::string& path, const O
   return std::move(std::get<sim::Model>(compiled));
 }
 
+void describeModel(const sim::Model& model, const std::string& scene, std::int64_t every,
+                   const char* what) {
+  const char* contact[] = {"points", "smooth", "rolling"};
+  const char* integrator[] = {"euler", "symplectic", "rk4"};
+  std::fprintf(stderr, "%s: %zu bottom and %zu top points, mass %g kg, contact %s", scene.c_str(),
+               model.body.bottom.size(), model.body.top.size(), model.body.mass,
+               contact[static_cast<int>(model.contact.model)]);
+  if (model.contact.model != sim::ContactModel::Rolling)
+    std::fprintf(stderr, " (k %g N/m, c %g N s/m, mu %g)", model.contact.stiffness,
+                 model.contact.damping, model.contact.friction);
+  std::fprintf(stderr, ", %s dt %g s, %lld steps, a %s every %lld steps\n",
+               integrator[static_cast<int>(model.integrator)], model.dt,
+               static_cast<long long>(model.steps), what, static_cast<long long>(every));
+}
+
 bool parseSize(const std::string& text, std::array<int, 2>& size) {
   int w = 0, h = 0;
   char x = 0, rest = 0;

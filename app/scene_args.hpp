@@ -22,6 +22,10 @@ struct Overrides {
 /// The compiled model, or the one line to print.
 std::variant<sim::Model, std::string> loadScene(const std::string& path, const Overrides& o);
 
+/// For --verbose: one line on stderr with the body, contact, integrator, step and samples.
+void describeModel(const sim::Model& model, const std::string& scene, std::int64_t every,
+                   const char* what);
+
 /// Parses "1280x720"; false when malformed.
 bool parseSize(const std::string& text, std::array<int, 2>& size);
 

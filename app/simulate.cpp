@@ -115,20 +115,6 @@ std::optional<std::string> writePlots(const std::string& dir, const std::string&
   return std::nullopt;
 }
 
-void describe(const sim::Model& model, const std::string& scene, std::int64_t every) {
-  const char* contact[] = {"points", "smooth", "rolling"};
-  const char* integrator[] = {"euler", "symplectic", "rk4"};
-  std::fprintf(stderr, "%s: %zu bottom and %zu top points, mass %g kg, contact %s", scene.c_str(),
-               model.body.bottom.size(), model.body.top.size(), model.body.mass,
-               contact[static_cast<int>(model.contact.model)]);
-  if (model.contact.model != sim::ContactModel::Rolling)
-    std::fprintf(stderr, " (k %g N/m, c %g N s/m, mu %g)", model.contact.stiffness,
-                 model.contact.damping, model.contact.friction);
-  std::fprintf(stderr, ", %s dt %g s, %lld steps, a sample every %lld steps\n",
-               integrator[static_cast<int>(model.integrator)], model.dt,
-               static_cast<long long>(model.steps), static_cast<long long>(every));
-}
-
 }  // namespace
 
 int simulateCommand(const SimulateArgs& args) {
@@ -164,7 +150,7 @@ int simulateCommand(const SimulateArgs& args) {
       return kBadInput;
     }
   }
-  if (args.verbose) describe(model, args.scene, std::get<std::int64_t>(every));
+  if (args.verbose) describeModel(model, args.scene, std::get<std::int64_t>(every), "sample");
   file.stream() << "# rattleback simulate " << args.scene << "\n" << kHeaderUnits << kHeader;
 
   std::int64_t rows = 0;

@@ -144,6 +144,7 @@ int renderCommand(const RenderArgs& args) {
   tracks.push_back(std::make_unique<Track>());
   tracks[0]->model = std::move(std::get<sim::Model>(compiled));
   const sim::Model& model = tracks[0]->model;
+  if (args.verbose) describeModel(model, args.scene, model.video.steps_per_frame, "frame");
   if (model.video.width % 2 || model.video.height % 2) {
     std::cerr << "--size: the width and height of a video must be even\n";
     return kBadInput;

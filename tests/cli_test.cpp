@@ -204,3 +204,19 @@ TEST(Cli, SimulatePlotsTheFourFigures) {
   EXPECT_EQ(lines(bad.err), 1) << bad.err;
   EXPECT_FALSE(fs::exists(csv));
 }
+
+TEST(Cli, VersionQuietAndVerbose) {
+  const Result version = rattleback("--version");
+  EXPECT_EQ(version.status, 0);
+  EXPECT_EQ(version.out.rfind("rattleback ", 0), 0u) << version.out;
+  const std::string run = "simulate " + scene("seed-reversed") + " --duration 0.02 -o " +
+                          tempFile("v.csv").string();
+  const Result quiet = rattleback(run + " -q");
+  EXPECT_EQ(quiet.status, 0);
+  EXPECT_EQ(quiet.out, "");
+  EXPECT_EQ(quiet.err, "");  // stderr is not a terminal here: no progress bar either
+  const Result verbose = rattleback(run + " --verbose");
+  EXPECT_EQ(verbose.status, 0);
+  EXPECT_NE(verbose.err.find("294 bottom and 308 top points"), std::string::npos) << verbose.err;
+  EXPECT_NE(verbose.out.find("first reversal"), std::string::npos) << verbose.out;
+}
