@@ -176,6 +176,7 @@ int benchCommand(const BenchArgs& args) {
     return kBadInput;
   }
   std::vector<scene::Loaded> loaded;
+  std::vector<std::size_t> bottom_points;  // of each scene's body, from its compiled model
   for (const std::string& path : scenes) {
     auto l = scene::loadFile(path);
     if (auto* e = std::get_if<scene::LoadError>(&l)) {
@@ -187,6 +188,7 @@ int benchCommand(const BenchArgs& args) {
       std::cerr << e->message << "\n";
       return kBadInput;
     }
+    bottom_points.push_back(std::get<sim::Model>(model).body.bottom.size());
     loaded.push_back(std::get<scene::Loaded>(std::move(l)));
   }
   // Open the outputs before the long work, so an unwritable path fails at once.
@@ -209,7 +211,8 @@ int benchCommand(const BenchArgs& args) {
                   "max_spin_error_vs_rolling,energy_drift\n";
 
   std::vector<Row> rows;
-  for (const scene::Loaded& scene : loaded) {
+  for (std::size_t scene_index = 0; scene_index < loaded.size(); ++scene_index) {
+    const scene::Loaded& scene = loaded[scene_index];
     sim::SceneSpec base = scene.spec;
     base.simulation.duration = args.duration;
     base.video.fps = 25;
@@ -217,8 +220,7 @@ int benchCommand(const BenchArgs& args) {
     const std::string name = std::filesystem::path(scene.file).filename().string();
     std::vector<std::string> models = args.models;
     if (models.empty()) {
-      auto model = sim::compile(base);
-      const std::size_t bottom = std::get<sim::Model>(model).body.bottom.size();
+      const std::size_t bottom = bottom_points[scene_index];
       if (base.contact.model == "points" || bottom <= kMaxBenchPoints) models.push_back("points");
       models.push_back("smooth");
       models.push_back("rolling");

@@ -123,7 +123,7 @@ std::optional<std::string> plotPng(const std::string& png, const std::string& ti
                         quoted(series.title));
     }
     if (clauses.empty()) {
-      script << "set label 1 'no data' at graph 0.5, graph 0.5 center\n"
+      script << "unset logscale\nset label 1 'no data' at graph 0.5, graph 0.5 center\n"
              << "plot [0:1][0:1] NaN notitle\nunset label 1\n";
       continue;
     }

@@ -220,3 +220,20 @@ TEST(Cli, VersionQuietAndVerbose) {
   EXPECT_NE(verbose.err.find("294 bottom and 308 top points"), std::string::npos) << verbose.err;
   EXPECT_NE(verbose.out.find("first reversal"), std::string::npos) << verbose.out;
 }
+
+TEST(Cli, BenchWritesTableCsvAndPlotEvenWithoutReversals) {
+  // 0.3 s is too short for any reversal: that panel of the plot says so instead of failing.
+  const fs::path csv = tempFile("bench.csv"), png = tempFile("bench.png");
+  const Result r = rattleback("bench " + scene("rattleback") +
+                              " --duration 0.3 --repeats 1 --rungs 2 --integrators rk4 -o " +
+                              csv.string() + " --plot " + png.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("rolling  rk4"), std::string::npos) << r.out;
+  std::ifstream in(csv);
+  std::string line;
+  int rows = 0;
+  while (std::getline(in, line))
+    if (!line.empty() && line[0] != '#') ++rows;
+  EXPECT_EQ(rows, 1 + 2 * 2);  // header + (smooth, rolling) × 2 rungs of rk4
+  EXPECT_GT(fs::file_size(png), 10000u);
+}

@@ -96,7 +96,8 @@ TEST(HardCases, HundredTimesStifferFloor) {
       << "energy rose without a source";
 
   // The seed body's points model at 100×: its 8-point foot, 100× stiffer, still runs at the
-  // seed's 1e-5 s (the stability check accepts it), without energy from nowhere.
+  // seed's 1e-5 s (the stability check accepts it), without energy from nowhere: symplectic
+  // Euler's bounded error stays below 1e-3 of the energy (as in FiftyRadiansPerSecond).
   sim::SceneSpec seed = parse(testing_support::kSeedScene);
   seed.contact.stiffness *= 100;
   seed.simulation.duration = 0.5;
@@ -244,6 +245,7 @@ TEST(HardCases, StartedUpsideDownItLandsOnItsFlatTop) {
   const double top_to_cm = spec.body.paraboloid.top * 0.01 - model.body.com_geometric.z();
   // Rest depth M g / (N k) ≈ 1 µm: 1e-5 m covers it.
   EXPECT_NEAR(last.x_world.z(), top_to_cm, 1e-5);
+  // Symplectic Euler's bounded energy error, as above: 1e-3 of the energy at most.
   EXPECT_LT(largestRise(r.samples), 1e-3 * r.samples.front().energy);
 }
 
@@ -266,6 +268,8 @@ TEST(HardCases, SeedBodyRollsOverAndComesToRest) {
     EXPECT_GT(toppled, 0);
     EXPECT_LT(toppled, 0.5);
     const sim::Telemetry& last = r.samples.back();
+    // Friction (μ 0.3) and the dampers stop a lying body within about 2 s (README figure);
+    // 1e-6 of the energy is what rounding and the springs' µm jitter leave after 5 s.
     EXPECT_LT(last.kinetic, 1e-6 * r.samples.front().energy) << "not at rest, spin " << spin;
     EXPECT_LT(largestRise(r.samples), 1e-3 * r.samples.front().energy);
   }
