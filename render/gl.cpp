@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -60,15 +61,28 @@ void GlContext::readPixels(unsigned char* rgba) const {
 }
 
 std::string assetsDir() {
-  if (const char* env = std::getenv("RATTLEBACK_ASSETS")) return env;
-  return RATTLEBACK_ASSETS_DIR;
+  if (const char* env = std::getenv("RATTLEBACK_ASSETS"); env && *env) return env;
+  std::error_code error;
+  const std::filesystem::path exe_dir =
+      std::filesystem::read_symlink("/proc/self/exe", error).parent_path();
+  if (error) return RATTLEBACK_ASSETS_RELATIVE;
+  // The installed layout (bin/ → share/rattleback, relative so the prefix can move), then the
+  // build tree's copy in <build>/share/rattleback beside <build>/app, <build>/tests, ….
+  const std::filesystem::path candidates[] = {exe_dir / RATTLEBACK_ASSETS_RELATIVE,
+                                              exe_dir / "../share/rattleback"};
+  for (const auto& dir : candidates)
+    if (std::filesystem::is_directory(dir / "shaders", error))
+      return dir.lexically_normal().string();
+  return (exe_dir / RATTLEBACK_ASSETS_RELATIVE).lexically_normal().string();
 }
 
 namespace {
 
 std::string readText(const std::string& path) {
   std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot read the shader");
+  if (!in)
+    throw std::runtime_error(
+        path + ": cannot read the shader (set RATTLEBACK_ASSETS to the assets folder)");
   std::stringstream s;
   s << in.rdbuf();
   return s.str();

@@ -35,7 +35,10 @@ class GlContext {
 /// with the compiler's log.
 GLuint loadProgram(const std::string& vertex_file, const std::string& fragment_file);
 
-/// The assets folder: $RATTLEBACK_ASSETS, else the one in the source tree.
+/// The assets folder (shaders/, fonts.txt): $RATTLEBACK_ASSETS when set; else, found from the
+/// executable's own folder (/proc/self/exe), <exe dir>/../share/rattleback (the installed
+/// layout bin/ → share/rattleback, any prefix) or the build tree's copy <build>/share/rattleback
+/// for programs in <build>/app, <build>/tests, <build>/bench. No absolute path is compiled in.
 std::string assetsDir();
 
 }  // namespace render

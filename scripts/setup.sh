@@ -10,6 +10,7 @@ packages=(
   libosmesa6-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   libpng-dev libfreetype-dev fonts-dejavu-core
   ffmpeg gnuplot-nox
+  dpkg-dev
   clang libclang-rt-14-dev
 )
 

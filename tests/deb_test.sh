@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Builds the Debian package of a build with CPack into a temporary folder and checks its
+# control fields and contents. Exit 77 (CTest: skipped) without dpkg-shlibdeps (dpkg-dev).
+# Usage: tests/deb_test.sh BUILD_DIR
+set -euo pipefail
+build=$(cd "${1:?usage: deb_test.sh BUILD_DIR}" && pwd)
+command -v dpkg-shlibdeps >/dev/null || { echo "skip: no dpkg-shlibdeps (install dpkg-dev)"; exit 77; }
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cpack --config "$build/CPackConfig.cmake" -G DEB -B "$work" >"$work/cpack.log" 2>&1 ||
+  { cat "$work/cpack.log"; exit 1; }
+deb=$(ls "$work"/rattleback_*.deb)
+
+depends=$(dpkg-deb -f "$deb" Depends)
+echo "Depends: $depends"
+for needed in libosmesa6 libavcodec fonts-dejavu-core; do
+  grep -q "$needed" <<<"$depends" || { echo "FAIL: Depends lacks $needed"; exit 1; }
+done
+contents=$(dpkg-deb -c "$deb")
+for f in ./usr/bin/rattleback ./usr/share/rattleback/fonts.txt ./usr/share/rattleback/shaders/points.frag; do
+  grep -q " $f\$" <<<"$contents" || { echo "FAIL: the package lacks $f"; exit 1; }
+done
+echo "ok: $(basename "$deb"), $(stat -c %s "$deb") bytes"
