@@ -3,6 +3,7 @@
 #include <optional>
 #include <vector>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "app/commands.hpp"
@@ -13,18 +14,17 @@
 namespace app {
 namespace {
 
-std::string jsonVector(const Eigen::Vector3d& v) {
-  std::ostringstream s;
-  s.precision(10);
-  s << "[" << v.x() << ", " << v.y() << ", " << v.z() << "]";
-  return s.str();
+nlohmann::json vectorJson(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+nlohmann::json matrixJson(const Eigen::Matrix3d& m) {
+  return {vectorJson(m.row(0)), vectorJson(m.row(1)), vectorJson(m.row(2))};
 }
 
-std::string jsonMatrix(const Eigen::Matrix3d& m) {
-  std::ostringstream s;
-  s << "[" << jsonVector(m.row(0)) << ", " << jsonVector(m.row(1)) << ", "
-    << jsonVector(m.row(2)) << "]";
-  return s.str();
+// A value that is zero but for rounding (a symmetric body's CM at −8.5e−18 m) prints as 0.
+double clean(double v, double scale) { return std::abs(v) < 1e-12 * scale ? 0.0 : v; }
+
+Eigen::Vector3d clean(const Eigen::Vector3d& v, double scale) {
+  return {clean(v.x(), scale), clean(v.y(), scale), clean(v.z(), scale)};
 }
 
 double spinFor(const sim::Model& model, const std::optional<double>& spin) {
@@ -33,44 +33,43 @@ double spinFor(const sim::Model& model, const std::optional<double>& spin) {
 }
 
 void printJson(const sim::Model& model, double spin) {
-  const sim::MassProperties& m = model.body.mass_properties;
+  const sim::Body& body = *model.body;
+  const sim::MassProperties& m = body.mass_properties;
   const sim::Rest rest = sim::restOf(model);
   const sim::Linearisation at_rest = sim::linearise(model, 0);
   const sim::Linearisation spinning = sim::linearise(model, spin);
   const sim::FirstOrder first = sim::firstOrderGrowth(model);
   const sim::ContactStability stability = sim::contactStability(model);
-  const std::size_t top = model.body.top.size();
-  const std::size_t bottom = model.body.bottom.size();
-  std::printf("{\n");
-  std::printf("  \"points\": {\"total\": %lld, \"top\": %zu, \"bottom\": %zu, \"surface\": %zu},\n",
-              static_cast<long long>(m.points), top, bottom, top + bottom);
-  std::printf("  \"length_unit_m\": %.10g,\n", model.length_unit);
-  std::printf("  \"mass\": %.10g,\n", m.mass);
-  std::printf("  \"com\": %s,\n", jsonVector(m.com).c_str());
-  std::printf("  \"inertia\": %s,\n", jsonMatrix(m.inertia).c_str());
-  std::printf("  \"principal_moments\": %s,\n", jsonVector(m.principal).c_str());
-  std::printf("  \"principal_axes\": %s,\n", jsonMatrix(m.axes.transpose()).c_str());
-  std::printf("  \"misalignment_deg\": %.10g,\n", m.misalignment_deg);
-  std::printf("  \"contact\": {\"omega_rad_s\": %.10g, \"damping_ratio\": %.10g, "
-              "\"largest_stable_dt_s\": %.10g},\n",
-              stability.omega, stability.zeta, stability.largest_step);
-  std::printf("  \"h\": %.10g,\n", rest.h);
-  std::printf("  \"radii_of_curvature\": [%.10g, %.10g],\n", rest.radii(0), rest.radii(1));
-  std::printf("  \"rest_stable\": %s,\n", rest.stable ? "true" : "false");
-  std::printf("  \"frequencies_hz\": {\"roll\": %.10g, \"pitch\": %.10g},\n", at_rest.roll_hz,
-              at_rest.pitch_hz);
-  std::printf("  \"spin\": %.10g,\n", spin);
-  std::printf("  \"growth_rates\": {\"roll\": %.10g, \"pitch\": %.10g},\n",
-              spinning.roll_growth, spinning.pitch_growth);
-  std::printf("  \"first_order_growth_per_spin\": {\"roll\": %.10g, \"pitch\": %.10g},\n",
-              first.roll, first.pitch);
-  std::printf("  \"eigenvalues\": [");
-  for (std::size_t i = 0; i < spinning.eigenvalues.size(); ++i)
-    std::printf("%s[%.10g, %.10g]", i ? ", " : "", spinning.eigenvalues[i].real(),
-                spinning.eigenvalues[i].imag());
-  std::printf("],\n");
-  std::printf("  \"preferred\": \"%s\"\n", sim::preferredDirection(model, spin));
-  std::printf("}\n");
+  const double size = body.surface.footprintHalf().maxCoeff();
+  const std::size_t top = body.top.size(), bottom = body.bottom.size();
+  nlohmann::json j;
+  const bool grid = body.surface.kind == sim::Surface::Kind::Paraboloid;
+  j["points"] = {{"total", grid ? nlohmann::json(m.points) : nlohmann::json(nullptr)},
+                 {"top", top},
+                 {"bottom", bottom},
+                 {"surface", top + bottom}};
+  j["length_unit_m"] = model.length_unit;
+  j["mass"] = m.mass;
+  j["com"] = vectorJson(clean(m.com, size));
+  j["inertia"] = matrixJson(m.inertia);
+  j["principal_moments"] = vectorJson(m.principal);
+  j["principal_axes"] = matrixJson(m.axes.transpose());
+  j["misalignment_deg"] = m.misalignment_deg;
+  j["contact"] = {{"omega_rad_s", stability.omega},
+                  {"damping_ratio", stability.zeta},
+                  {"largest_stable_dt_s", stability.largest_step}};  // inf → null
+  j["h"] = rest.h;
+  j["radii_of_curvature"] = {rest.radii(0), rest.radii(1)};
+  j["rest_stable"] = rest.stable;
+  j["frequencies_hz"] = {{"roll", at_rest.roll_hz}, {"pitch", at_rest.pitch_hz}};
+  j["spin"] = spin;
+  j["growth_rates"] = {{"roll", spinning.roll_growth}, {"pitch", spinning.pitch_growth}};
+  j["first_order_growth_per_spin"] = {{"roll", first.roll}, {"pitch", first.pitch}};
+  nlohmann::json eigenvalues = nlohmann::json::array();
+  for (const auto& lambda : spinning.eigenvalues) eigenvalues.push_back({lambda.real(), lambda.imag()});
+  j["eigenvalues"] = eigenvalues;
+  j["preferred"] = sim::preferredDirection(model, spin);
+  std::printf("%s\n", j.dump(2).c_str());
 }
 
 void printTheory(const sim::Model& model, double spin) {
@@ -115,17 +114,22 @@ void printTheory(const sim::Model& model, double spin) {
 }
 
 void printText(const std::string& scene, const sim::Model& model) {
-  const sim::MassProperties& m = model.body.mass_properties;
+  const sim::MassProperties& m = model.body->mass_properties;
   const double unit = model.length_unit;
   const sim::ContactStability stability = sim::contactStability(model);
-  const std::size_t top = model.body.top.size();
-  const std::size_t bottom = model.body.bottom.size();
+  const std::size_t top = model.body->top.size();
+  const std::size_t bottom = model.body->bottom.size();
   std::printf("scene            %s (lengths below in the file's unit, %g m)\n", scene.c_str(),
               unit);
-  std::printf("points           %lld in all, %zu on the surface (%zu top, %zu bottom)\n",
-              static_cast<long long>(m.points), top + bottom, top, bottom);
+  if (model.body->surface.kind == sim::Surface::Kind::Paraboloid)
+    std::printf("points           %lld in all, %zu on the surface (%zu top, %zu bottom)\n",
+                static_cast<long long>(m.points), top + bottom, top, bottom);
+  else
+    std::printf("points           %zu drawn on the surface (%zu top, %zu bottom); the mass "
+                "properties are the scene's\n",
+                top + bottom, top, bottom);
   std::printf("mass             %g kg\n", m.mass);
-  const Eigen::Vector3d com = m.com / unit;
+  const Eigen::Vector3d com = clean(m.com, model.body->surface.footprintHalf().maxCoeff()) / unit;
   std::printf("centre of mass   (%.6g, %.6g, %.6g) in the shape's frame\n", com.x(), com.y(),
               com.z());
   std::printf("inertia about the CM, geometric axes [kg m^2]\n");
@@ -140,20 +144,27 @@ void printText(const std::string& scene, const sim::Model& model) {
   std::printf("misalignment     %+.4f deg (least-inertia axis from the long axis, "
               "counter-clockwise seen from above)\n",
               m.misalignment_deg);
-  std::printf("contact          stiffest mode at rest %.4g rad/s (damping ratio %.3g); "
-              "largest stable dt %.3g s\n",
-              stability.omega, stability.zeta, stability.largest_step);
+  if (model.contact.model == sim::ContactModel::Rolling)
+    std::printf("contact          rolling: no contact spring, so no step limit from the floor\n");
+  else if (sim::isAdaptive(model.integrator))
+    std::printf("contact          stiffest mode at rest %.4g rad/s (damping ratio %.3g); the "
+                "adaptive integrator chooses its steps\n",
+                stability.omega, stability.zeta);
+  else
+    std::printf("contact          stiffest mode at rest %.4g rad/s (damping ratio %.3g); "
+                "largest stable dt %.3g s\n",
+                stability.omega, stability.zeta, stability.largest_step);
 }
 
 }  // namespace
 
 int analyzeCommand(const AnalyzeArgs& args) {
-  auto compiled = loadScene(args.scene, {});
-  if (auto* e = std::get_if<std::string>(&compiled)) {
-    std::cerr << *e << "\n";
+  auto loaded = loadScene(args.scene, {});
+  if (!loaded) {
+    std::cerr << loaded.error().text() << "\n";
     return kBadInput;
   }
-  const sim::Model& model = std::get<sim::Model>(compiled);
+  const sim::Model& model = loaded->model;
   const double spin = spinFor(model, args.spin);
   if (args.json) {
     printJson(model, spin);

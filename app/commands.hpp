@@ -13,13 +13,14 @@ namespace app {
 enum Exit : int {
   kOk = 0,
   kBadInput = 2,  ///< the scene, an option or an output path is unusable; nothing written
-  kDiverged = 3,  ///< the run produced NaN or inf; its partial output was removed
+  kDiverged = 3,  ///< the run stopped itself (NaN, energy, rim); its partial output was removed
+  // 130 / 143: interrupted by SIGINT / SIGTERM (app/interrupt.hpp)
 };
 
 struct SimulateArgs {
   std::string scene;
   std::string output;  ///< CSV path; empty: out/<scene name>.csv
-  std::optional<double> duration, dt, rate;
+  std::optional<double> duration, dt, tolerance, rate;
   std::optional<std::string> integrator;
   std::string plot_dir;  ///< non-empty: write the four figures (PNG) there
   bool quiet = false;
@@ -64,6 +65,7 @@ struct BenchArgs {
   int repeats = 3;                  ///< timed runs per rung
   int rungs = 5;                    ///< steps in each ladder of halvings
   std::vector<std::string> models, integrators;  ///< empty: all that apply
+  std::vector<double> tolerances;   ///< the adaptive ladder; empty: 1e-4, 1e-5, … 1e-10
   bool quiet = false;
 };
 /// Speed against error: prints a table, writes CSV and a log–log plot.

@@ -12,7 +12,7 @@ namespace app {
 constexpr double kDrawnPoints = 2500;
 
 render::BodyPoints bodyPointsOf(const sim::Model& model) {
-  const sim::Body& body = model.body;
+  const sim::Body& body = *model.body;
   const double total = body.top.size() + body.bottom.size();
   const int k = std::max(1, static_cast<int>(std::ceil(std::sqrt(total / kDrawnPoints))));
   const sim::Grid& grid = body.grid;

@@ -3,10 +3,11 @@
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "app/suggest.hpp"
 
 int main(int argc, char** argv) {
   CLI::App cli{"rattleback: simulate the rattleback (celt) that spins back"};
-  cli.set_version_flag("--version", "rattleback 0.1.0");
+  cli.set_version_flag("--version", "rattleback " RATTLEBACK_VERSION);
   cli.require_subcommand(1);
 
   app::SimulateArgs sim_args;
@@ -16,10 +17,12 @@ int main(int argc, char** argv) {
   simulate->add_option("-o,--output", sim_args.output,
                        "CSV telemetry file (default out/<scene>.csv)");
   simulate->add_option("--duration", sim_args.duration, "Simulated time, s (overrides the scene)");
-  simulate->add_option("--dt", sim_args.dt, "Time step, s (overrides the scene)");
-  simulate->add_option("--integrator", sim_args.integrator, "euler | symplectic | rk4");
+  simulate->add_option("--dt", sim_args.dt, "Fixed time step, s (overrides the scene's dt or tolerance)");
+  simulate->add_option("--tolerance", sim_args.tolerance,
+                       "Adaptive steps (dopri5) to this error per step (overrides the scene's dt or tolerance)");
+  simulate->add_option("--integrator", sim_args.integrator, "euler | symplectic | rk4 | dopri5");
   simulate->add_option("--rate", sim_args.rate,
-                       "Telemetry samples per simulated second (default ~500)");
+                       "Telemetry samples per simulated second, at exact times (default 500)");
   simulate->add_option("--plot", sim_args.plot_dir,
                        "Folder for the figures: energy, spin, tilt and height, normal force (PNG)");
   simulate->add_flag("-q,--quiet", sim_args.quiet, "No summary and no progress bar");
@@ -44,9 +47,11 @@ int main(int argc, char** argv) {
   render->add_option("--fps", render_args.overrides.fps, "Frames per second");
   render->add_option("--duration", render_args.overrides.duration, "Simulated time, s");
   render->add_option("--playback", render_args.overrides.playback,
-                     "Video seconds per simulated second");
-  render->add_option("--dt", render_args.overrides.dt, "Time step, s");
-  render->add_option("--crf", render_args.crf, "x264 quality 0–51, lower is better (default 20)");
+                     "Playback speed: simulated seconds per video second (0.5 = slow motion)");
+  render->add_option("--spin", render_args.overrides.spin, "Initial spin, rad/s (overrides the scene)");
+  render->add_option("--dt", render_args.overrides.dt, "Fixed time step, s");
+  render->add_option("--tolerance", render_args.overrides.tolerance, "Adaptive steps to this error per step");
+  render->add_option("--crf", render_args.crf, "x264 quality 1–51, lower is better (default 20)");
   render->add_option("--preset", render_args.preset, "x264 preset (default veryfast)");
   render->add_flag("--both", render_args.both,
                    "Also the reversed spin, named …-preferred.mp4 and …-reversed.mp4, and a "
@@ -62,6 +67,8 @@ int main(int argc, char** argv) {
   still->add_option("--t", still_args.t, "Simulated time of the frame, s (default 0)");
   still->add_option("--size", still_size, "Image size WxH, e.g. 1280x720");
   still->add_option("--spin", still_args.overrides.spin, "Initial spin, rad/s (overrides the scene)");
+  still->add_option("--dt", still_args.overrides.dt, "Fixed time step, s");
+  still->add_option("--tolerance", still_args.overrides.tolerance, "Adaptive steps to this error per step");
   still->add_flag("--no-readouts", still_args.no_readouts, "No time, spin or inset plot");
   still->add_flag("-q,--quiet", still_args.quiet, "Do not print the file name");
 
@@ -88,7 +95,11 @@ int main(int argc, char** argv) {
   bench->add_option("--rungs", bench_args.rungs, "Steps in each ladder of halvings (default 5)");
   bench->add_option("--models", bench_args.models, "points smooth rolling (default: all that apply)")
       ->delimiter(',');
-  bench->add_option("--integrators", bench_args.integrators, "euler symplectic rk4 (default all)")
+  bench->add_option("--integrators", bench_args.integrators,
+                    "euler symplectic rk4 dopri5 (default all; dopri5 runs the tolerance ladder)")
+      ->delimiter(',');
+  bench->add_option("--tolerances", bench_args.tolerances,
+                    "Tolerance ladder for dopri5 (default 1e-4,1e-5,…,1e-10)")
       ->delimiter(',');
   bench->add_flag("-q,--quiet", bench_args.quiet, "No table on stdout");
 
@@ -101,7 +112,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return cli.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "rattleback: " << e.what() << " (see --help)\n";
+    std::cerr << "rattleback: " << app::explainParseError(cli, argc, argv, e.what()) << "\n";
     return app::kBadInput;
   }
   if (*simulate) return app::simulateCommand(sim_args);

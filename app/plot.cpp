@@ -60,6 +60,20 @@ int runGnuplot(const fs::path& script, const fs::path& log) {
 
 }  // namespace
 
+rb::Status checkPlotFolder(const std::string& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (!fs::is_directory(dir, ec))
+    return rb::Status::fail(dir + ": --plot needs a folder it can write into" +
+                            (ec ? ": " + ec.message() : std::string()));
+  const fs::path probe = fs::path(dir) / (".rattleback-probe-" + std::to_string(getpid()));
+  std::ofstream test(probe);
+  if (!test) return rb::Status::fail(dir + ": --plot cannot write into this folder: " + std::strerror(errno));
+  test.close();
+  fs::remove(probe, ec);
+  return {};
+}
+
 std::optional<std::string> plotPng(const std::string& png, const std::string& title,
                                    const std::vector<Panel>& panels, int width, int height) {
   std::error_code ec;

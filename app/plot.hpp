@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "util/result.hpp"
+
 namespace app {
 
 struct Series {
@@ -25,6 +27,10 @@ struct Panel {
   bool lines_only = false;  ///< no point markers (time series)
   std::vector<Series> series;
 };
+
+/// Makes `dir` when missing and checks that a file can be written into it (before a run whose
+/// plots go there); an error line with the system's reason otherwise.
+rb::Status checkPlotFolder(const std::string& dir);
 
 /// Draws the panels stacked top to bottom into one PNG of width × height pixels.
 /// Returns one error line naming `png` on failure; an existing `png` is then left as it was.

@@ -2,14 +2,12 @@
 
 #include <cstdio>
 
-#include "scene/loader.hpp"
-
 namespace app {
 
-std::variant<sim::Model, std::string> loadScene(const std::string& path, const Overrides& o) {
+rb::Result<LoadedScene> loadScene(const std::string& path, const Overrides& o) {
   auto loaded = scene::loadFile(path);
-  if (auto* e = std::get_if<scene::LoadError>(&loaded)) return e->message;
-  scene::Loaded& scene = std::get<scene::Loaded>(loaded);
+  if (!loaded) return loaded.error();
+  scene::Loaded& scene = loaded.value();
   sim::SceneSpec& spec = scene.spec;
   auto set = [&](auto& field, const auto& value, const char* key, const char* option) {
     if (!value) return;
@@ -17,31 +15,37 @@ std::variant<sim::Model, std::string> loadScene(const std::string& path, const O
     scene.overrides[key] = option;
   };
   set(spec.simulation.duration, o.duration, "simulation.duration", "--duration");
+  // A step or a tolerance from the command line replaces whichever of the two the file gives.
+  if (o.dt) spec.simulation.tolerance = sim::kUnset;
+  if (o.tolerance) spec.simulation.dt = sim::kUnset;
+  if ((o.dt || o.tolerance) && !o.integrator) spec.simulation.integrator.clear();
   set(spec.simulation.dt, o.dt, "simulation.dt", "--dt");
+  set(spec.simulation.tolerance, o.tolerance, "simulation.tolerance", "--tolerance");
   set(spec.simulation.integrator, o.integrator, "simulation.integrator", "--integrator");
   set(spec.initial.spin, o.spin, "initial.spin", "--spin");
-  set(spec.video.playback, o.playback, "video.playback", "--playback");
-  set(spec.video.view, o.view, "video.view", "--view");
-  set(spec.video.size, o.size, "video.size", "--size");
-  set(spec.video.fps, o.fps, "video.fps", "--fps");
+  set(scene.video.playback, o.playback, "video.playback", "--playback");
+  set(scene.video.view, o.view, "video.view", "--view");
+  set(scene.video.size, o.size, "video.size", "--size");
+  set(scene.video.fps, o.fps, "video.fps", "--fps");
   auto compiled = scene::loadModel(scene);
-  if (auto* e = std::get_if<scene::LoadError>(&compiled)) return e->message;
-  return std::move(std::get<sim::Model>(compiled));
+  if (!compiled) return compiled.error();
+  return LoadedScene{std::move(scene), std::move(compiled).value()};
 }
 
-void describeModel(const sim::Model& model, const std::string& scene, std::int64_t every,
-                   const char* what) {
-  const char* contact[] = {"points", "smooth", "rolling"};
-  const char* integrator[] = {"euler", "symplectic", "rk4"};
-  std::fprintf(stderr, "%s: %zu bottom and %zu top points, mass %g kg, contact %s", scene.c_str(),
-               model.body.bottom.size(), model.body.top.size(), model.body.mass,
-               contact[static_cast<int>(model.contact.model)]);
+void describeModel(const sim::Model& model, const std::string& scene) {
+  const sim::Body& body = *model.body;
+  std::fprintf(stderr, "%s: %zu bottom and %zu top points, mass %g kg, contact %s",
+               scene.c_str(), body.bottom.size(), body.top.size(), body.mass,
+               std::string(rb::nameOf(model.contact.model)).c_str());
   if (model.contact.model != sim::ContactModel::Rolling)
     std::fprintf(stderr, " (k %g N/m, c %g N s/m, mu %g)", model.contact.stiffness,
                  model.contact.damping, model.contact.friction);
-  std::fprintf(stderr, ", %s dt %g s, %lld steps, a %s every %lld steps\n",
-               integrator[static_cast<int>(model.integrator)], model.dt,
-               static_cast<long long>(model.steps), what, static_cast<long long>(every));
+  const std::string integrator(rb::nameOf(model.integrator));
+  if (sim::isAdaptive(model.integrator))
+    std::fprintf(stderr, ", %s tolerance %g, %g s\n", integrator.c_str(), model.tolerance,
+                 model.duration);
+  else
+    std::fprintf(stderr, ", %s dt %g s, %g s\n", integrator.c_str(), model.dt, model.duration);
 }
 
 bool parseSize(const std::string& text, std::array<int, 2>& size) {

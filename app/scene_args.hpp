@@ -5,26 +5,31 @@
 #include <array>
 #include <optional>
 #include <string>
-#include <variant>
 
+#include "scene/loader.hpp"
 #include "sim/model.hpp"
-#include "sim/spec.hpp"
+#include "util/result.hpp"
 
 namespace app {
 
 struct Overrides {
-  std::optional<double> duration, dt, playback, spin;
+  std::optional<double> duration, dt, tolerance, playback, spin;
   std::optional<std::string> integrator, view;
   std::optional<std::array<int, 2>> size;
   std::optional<int> fps;
 };
 
-/// The compiled model, or the one line to print.
-std::variant<sim::Model, std::string> loadScene(const std::string& path, const Overrides& o);
+/// A scene file as loaded (with the overrides applied) and its compiled run.
+struct LoadedScene {
+  scene::Loaded scene;
+  sim::Model model;
+};
 
-/// For --verbose: one line on stderr with the body, contact, integrator, step and samples.
-void describeModel(const sim::Model& model, const std::string& scene, std::int64_t every,
-                   const char* what);
+/// The compiled scene, or the one line to print.
+rb::Result<LoadedScene> loadScene(const std::string& path, const Overrides& o);
+
+/// For --verbose: one line on stderr with the body, contact, integrator and step.
+void describeModel(const sim::Model& model, const std::string& scene);
 
 /// Parses "1280x720"; false when malformed.
 bool parseSize(const std::string& text, std::array<int, 2>& size);

@@ -2,47 +2,57 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
+#include "app/interrupt.hpp"
+#include "app/json.hpp"
 #include "app/output.hpp"
 #include "app/plot.hpp"
 #include "app/progress.hpp"
 #include "app/scene_args.hpp"
-#include "sim/initial.hpp"
-#include "sim/run.hpp"
+#include "sim/rollout.hpp"
 
 namespace app {
 namespace {
 
 constexpr double kDefaultRate = 500;  // Hz: samples per simulated second when not given
 
-const char* kHeaderUnits =
-    "# units: t s, spin rad/s (n = w.z, + counter-clockwise from above), energy kinetic "
-    "potential elastic J, tilt_deg degrees, x y z m (centre of mass), wx wy wz rad/s (world), "
-    "Lz kg m^2/s (about the CM), contacts count, normal_force N\n";
-const char* kHeader =
-    "t,spin,energy,kinetic,potential,elastic,tilt_deg,x,y,z,wx,wy,wz,Lz,contacts,normal_force\n";
+// The CSV's columns and their units: the header is the first line of the file (so that every
+// CSV reader takes it as the header); the units go to the sidecar X.csv.json.
+const std::pair<const char*, const char*> kColumns[] = {
+    {"t", "s"},
+    {"spin", "rad/s: n = w.z, + counter-clockwise seen from above"},
+    {"energy", "J: kinetic + potential + elastic"},
+    {"kinetic", "J: M v^2/2 + w.L/2"},
+    {"potential", "J: M g z of the centre of mass"},
+    {"elastic", "J: sum of k depth^2/2 over the contact springs"},
+    {"tilt_deg", "degrees between the body's z axis and the vertical"},
+    {"x", "m: centre of mass"},
+    {"y", "m: centre of mass"},
+    {"z", "m: centre of mass"},
+    {"wx", "rad/s: angular velocity, world axes"},
+    {"wy", "rad/s: angular velocity, world axes"},
+    {"wz", "rad/s: angular velocity, world axes"},
+    {"Lz", "kg m^2/s: vertical angular momentum about the centre of mass"},
+    {"contacts", "count of contact points below the floor"},
+    {"normal_force", "N: total normal force of the floor"},
+};
+
+std::string header() {
+  std::string line;
+  for (const auto& [name, unit] : kColumns) line += std::string(line.empty() ? "" : ",") + name;
+  return line + "\n";
+}
 
 void writeRow(std::ostream& out, const sim::Telemetry& s) {
   char line[512];
   std::snprintf(line, sizeof line,
-                "%.6f,%.9g,%.9g,%.9g,%.9g,%.9g,%.6f,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.9g\n",
+                "%.10g,%.9g,%.9g,%.9g,%.9g,%.9g,%.6f,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.9g\n",
                 s.t, s.spin, s.energy, s.kinetic, s.potential, s.elastic, s.tilt_deg,
                 s.x_world.x(), s.x_world.y(), s.x_world.z(), s.w_world.x(), s.w_world.y(),
                 s.w_world.z(), s.L_world.z(), s.contacts, s.normal_force);
   out << line;
-}
-
-// Steps per telemetry sample: exact for an explicit --rate, else the whole number nearest
-// the default rate.
-std::variant<std::int64_t, std::string> stepsPerSample(std::optional<double> rate, double dt) {
-  if (!rate) return std::max<std::int64_t>(1, std::llround(1 / (kDefaultRate * dt)));
-  if (!(*rate > 0) || !std::isfinite(*rate)) return "--rate must be > 0";
-  const double steps = 1 / (*rate * dt);
-  if (steps < 0.999999 || std::abs(steps - std::round(steps)) > 1e-6 * steps)
-    return "--rate " + std::to_string(*rate) + " Hz is not a whole number of steps of " +
-           std::to_string(dt) + " s";
-  return std::llround(steps);
 }
 
 std::string defaultOutput(const std::string& scene) {
@@ -51,23 +61,34 @@ std::string defaultOutput(const std::string& scene) {
 
 void printSummary(const SimulateArgs& args, const sim::Model& model,
                   const sim::RunSummary& run, const std::string& csv, std::int64_t rows) {
-  const double simulated = run.steps * model.dt;
-  const char* names[] = {"euler", "symplectic", "rk4"};
+  const double simulated = run.last.t;
+  const std::string integrator(rb::nameOf(model.integrator));
   std::printf("scene           %s\n", args.scene.c_str());
-  std::printf("integrator      %s, dt %g s, %lld steps (%g s simulated)\n",
-              names[static_cast<int>(model.integrator)], model.dt,
-              static_cast<long long>(run.steps), simulated);
-  if (run.first_reversal_s)
+  if (sim::isAdaptive(model.integrator))
+    std::printf("integrator      %s, tolerance %g, %lld steps (%lld rejected), %g s simulated\n",
+                integrator.c_str(), model.tolerance, static_cast<long long>(run.steps),
+                static_cast<long long>(run.rejected), simulated);
+  else
+    std::printf("integrator      %s, dt %g s, %lld steps (%g s simulated)\n", integrator.c_str(),
+                model.dt, static_cast<long long>(run.steps), simulated);
+  if (run.first_reversal_s) {
     std::printf("first reversal  %.4f s (spin %+g rad/s changed sign)\n", *run.first_reversal_s,
                 model.initial.spin);
-  else
+    if (run.reversals.size() > 1) {
+      std::printf("reversals       %zu, at", run.reversals.size());
+      for (double t : run.reversals) std::printf(" %.4f", t);
+      std::printf(" s\n");
+    }
+  } else {
     std::printf("first reversal  none in %g s\n", simulated);
+  }
   const double change = (run.last.energy - run.first.energy) / std::abs(run.first.energy);
   std::printf("energy          %.6g J -> %.6g J (%+.4g %%)\n", run.first.energy,
               run.last.energy, 100 * change);
   std::printf("final spin      %+.4f rad/s, tilt %.2f deg\n", run.last.spin, run.last.tilt_deg);
   std::printf("wall time       %.3f s: %.4f s per simulated second, %.3f us per step\n",
-              run.wall_s, run.wall_s / simulated, 1e6 * run.wall_s / run.steps);
+              run.wall_s, run.wall_s / simulated,
+              1e6 * run.wall_s / static_cast<double>(std::max<std::int64_t>(1, run.steps)));
   std::printf("telemetry       %s (%lld rows)\n", csv.c_str(), static_cast<long long>(rows));
 }
 
@@ -115,67 +136,109 @@ std::optional<std::string> writePlots(const std::string& dir, const std::string&
   return std::nullopt;
 }
 
+// The sidecar X.csv.json: what the CSV is (scene, program, columns and units, the model) and
+// what the run found.
+nlohmann::json sidecar(const SimulateArgs& args, const sim::Model& model, double rate,
+                       const sim::RunSummary& run, std::int64_t rows) {
+  nlohmann::json columns = nlohmann::json::array();
+  for (const auto& [name, unit] : kColumns) columns.push_back({{"name", name}, {"unit", unit}});
+  nlohmann::json j;
+  j["program"] = "rattleback " RATTLEBACK_VERSION;
+  j["command"] = "simulate";
+  j["scene"] = args.scene;
+  j["columns"] = columns;
+  j["rows"] = rows;
+  j["rate_hz"] = rate;
+  j["model"] = modelJson(model);
+  j["result"] = runJson(run);
+  return j;
+}
+
 }  // namespace
 
 int simulateCommand(const SimulateArgs& args) {
   Overrides overrides;
   overrides.duration = args.duration;
   overrides.dt = args.dt;
+  overrides.tolerance = args.tolerance;
   overrides.integrator = args.integrator;
-  auto compiled = loadScene(args.scene, overrides);
-  if (auto* e = std::get_if<std::string>(&compiled)) {
-    std::cerr << *e << "\n";
+  auto loaded = loadScene(args.scene, overrides);
+  if (!loaded) {
+    std::cerr << loaded.error().text() << "\n";
     return kBadInput;
   }
-  const sim::Model& model = std::get<sim::Model>(compiled);
-
-  auto every = stepsPerSample(args.rate, model.dt);
-  if (auto* e = std::get_if<std::string>(&every)) {
-    std::cerr << *e << "\n";
+  const sim::Model& model = loaded->model;
+  const double rate = args.rate.value_or(kDefaultRate);
+  if (!(rate > 0) || !std::isfinite(rate) || rate > 1e7) {
+    std::cerr << "--rate: samples per simulated second must be within 0 … 1e7, not " << rate << "\n";
+    return kBadInput;
+  }
+  if (model.duration * rate > 1e8) {
+    std::cerr << "--rate: " << rate << " Hz over " << model.duration
+              << " s makes more than 1e8 rows; choose a lower rate\n";
     return kBadInput;
   }
   const std::string csv = args.output.empty() ? defaultOutput(args.scene) : args.output;
-  if (args.output.empty()) std::filesystem::create_directories("out");
-  auto opened = AtomicOutput::open(csv);
-  if (auto* e = std::get_if<std::string>(&opened)) {
-    std::cerr << *e << "\n";
-    return kBadInput;
-  }
-  AtomicOutput& file = std::get<AtomicOutput>(opened);
   if (!args.plot_dir.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(args.plot_dir, ec);
-    if (!std::filesystem::is_directory(args.plot_dir)) {
-      std::cerr << args.plot_dir << ": --plot needs a folder it can write into\n";
+    if (auto plots = checkPlotFolder(args.plot_dir); !plots) {
+      std::cerr << plots.error().text() << "\n";
       return kBadInput;
     }
   }
-  if (args.verbose) describeModel(model, args.scene, std::get<std::int64_t>(every), "sample");
-  file.stream() << "# rattleback simulate " << args.scene << "\n" << kHeaderUnits << kHeader;
+  auto opened = AtomicOutput::open(csv);
+  if (!opened) {
+    std::cerr << opened.error().text() << "\n";
+    return kBadInput;
+  }
+  AtomicOutput& file = opened.value();
+  // The sidecar goes beside a file, not beside a device such as /dev/stdout.
+  const bool regular = !std::filesystem::exists(csv) || std::filesystem::is_regular_file(csv);
+  std::optional<AtomicOutput> meta;
+  if (regular) {
+    auto opened_meta = AtomicOutput::open(csv + ".json");
+    if (!opened_meta) {
+      std::cerr << opened_meta.error().text() << "\n";
+      return kBadInput;
+    }
+    meta.emplace(std::move(opened_meta).value());
+  }
+  if (args.verbose) describeModel(model, args.scene);
+  file.stream() << header();
 
+  installInterruptHandlers();
   std::int64_t rows = 0;
-  Progress progress("simulate", model.steps, !args.quiet);
-  sim::RunOptions options;
-  options.steps_per_sample = std::get<std::int64_t>(every);
+  const std::vector<double> times = sim::sampleTimes(model.duration, rate);
+  Progress progress("simulate", static_cast<std::int64_t>(times.size()), !args.quiet);
   std::vector<sim::Telemetry> kept;  // for the plots
-  options.on_sample = [&](const sim::Telemetry& t) {
-    writeRow(file.stream(), t);
-    ++rows;
-    if (!args.plot_dir.empty()) kept.push_back(t);
-  };
-  options.on_progress = [&](std::int64_t step) { progress.update(step); };
-  sim::State state = sim::initialState(model);
-  const sim::RunSummary summary = sim::run(model, state, options);
+  sim::Rollout rollout(model);
+  for (double t : times) {
+    if (interruptSignal()) break;
+    if (!rollout.advanceTo(t)) break;
+    const sim::Telemetry sample = rollout.sampleAt(t);
+    writeRow(file.stream(), sample);
+    if (!args.plot_dir.empty()) kept.push_back(sample);
+    progress.update(++rows);
+  }
   progress.finish();
+  const sim::RunSummary& summary = rollout.summary();
 
+  if (interruptSignal()) {
+    std::cerr << args.scene << ": interrupted at t = " << summary.last.t
+              << " s; no telemetry written\n";
+    return interruptedStatus();  // the temporary files are removed unfinished
+  }
   if (summary.divergence) {
     std::cerr << args.scene << ": the run stopped: " << *summary.divergence
               << ". No telemetry written\n";
     return kDiverged;  // `file` is removed unfinished
   }
-  if (auto e = file.commit()) {
-    std::cerr << *e << "\n";
-    return kBadInput;
+  if (meta) meta->stream() << sidecar(args, model, rate, summary, rows).dump(2) << "\n";
+  for (AtomicOutput* out : {&file, meta ? &*meta : nullptr}) {
+    if (!out) continue;
+    if (auto e = out->commit(); !e) {
+      std::cerr << e.error().text() << "\n";
+      return kBadInput;
+    }
   }
   if (!args.plot_dir.empty()) {
     if (auto e = writePlots(args.plot_dir, args.scene, kept)) {

@@ -1,38 +1,47 @@
-// render, still and compare: the simulation's frames drawn and encoded. The pipeline runs
-// simulate → render → encode in threads joined by bounded queues, so no run holds its frames.
+// render and still: the simulation's frames drawn and encoded. The main thread pulls each
+// frame's state from the runs (a Rollout per spin direction, sampled at the frame's exact
+// time) and draws it; each output video has its own encoding thread (std::jthread) fed by a
+// bounded queue, so no run holds its frames in memory.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <iostream>
 #include <thread>
 
 #include "app/commands.hpp"
 #include "app/frames.hpp"
+#include "app/interrupt.hpp"
+#include "app/output.hpp"
 #include "app/progress.hpp"
 #include "app/queue.hpp"
 #include "app/scene_args.hpp"
+#include "app/video_plan.hpp"
 #include "render/encoder.hpp"
 #include "render/image_io.hpp"
 #include "render/renderer.hpp"
 #include "sim/analysis.hpp"
-#include "sim/initial.hpp"
-#include "sim/run.hpp"
-#include "sim/step.hpp"
+#include "sim/rollout.hpp"
 
 namespace app {
 namespace {
 
 namespace fs = std::filesystem;
 
-render::RenderSettings settingsOf(const sim::Model& model, const std::string& title) {
+// x264's presets (x264 --fullhelp).
+constexpr const char* kPresets[] = {"ultrafast", "superfast", "veryfast", "faster", "fast",
+                                    "medium",    "slow",      "slower",   "veryslow", "placebo"};
+
+render::RenderSettings settingsOf(const VideoPlan& plan, double duration, double spin,
+                                  const std::string& title) {
   render::RenderSettings s;
-  s.width = model.video.width;
-  s.height = model.video.height;
-  render::parseView(model.video.view, s.view);
+  s.width = plan.width;
+  s.height = plan.height;
+  s.view = plan.view;
   s.title = title;
-  s.duration = model.steps * model.dt;
-  s.spin_range = std::max(1.0, 1.1 * std::abs(model.initial.spin));
+  s.duration = duration;
+  s.spin_range = std::max(1.0, 1.1 * std::abs(spin));
   return s;
 }
 
@@ -45,45 +54,35 @@ std::string describeSpin(double spin) {
   return text;
 }
 
-// One simulated run feeding video frames: a thread that steps the model and queues one frame
-// every steps_per_frame steps, the first `frames` of them.
-struct Track {
-  sim::Model model;
-  std::string title;
-  BoundedQueue<sim::Telemetry> frames{8};
-  sim::RunSummary summary;
-  std::thread thread;
-
-  void start() {
-    thread = std::thread([this] {
-      sim::State state = sim::initialState(model);
-      sim::RunOptions options;
-      options.steps_per_sample = model.video.steps_per_frame;
-      std::int64_t queued = 0;
-      options.on_sample = [&](const sim::Telemetry& t) {
-        if (queued < model.video.frames && frames.push(t)) ++queued;
-      };
-      summary = sim::run(model, state, options);
-      frames.close();
-    });
-  }
-};
-
-// One output video fed by its own encoding thread.
+// One output video fed by its own encoding thread. The thread stops when the queue closes or
+// its stop is requested; an error (or an exception) is kept for the main thread and closes the
+// queue, so that the producer's next push fails and rendering stops.
 struct Output {
   std::unique_ptr<render::VideoEncoder> encoder;
   BoundedQueue<render::Image> images{4};
   std::optional<std::string> error;
-  std::thread thread;
+  std::jthread thread;
 
   void start() {
-    thread = std::thread([this] {
-      while (auto image = images.pop()) {
-        if (error) continue;
-        error = encoder->add(*image);
-        if (error) images.close();
+    thread = std::jthread([this](std::stop_token stop) {
+      try {
+        while (!stop.stop_requested()) {
+          auto image = images.pop();
+          if (!image) break;
+          if ((error = encoder->add(*image))) break;
+        }
+      } catch (const std::exception& e) {
+        error = std::string("encoding failed: ") + e.what();
       }
+      images.close();
     });
+  }
+  void stop() {
+    images.close();
+    if (thread.joinable()) {
+      thread.request_stop();
+      thread.join();
+    }
   }
 };
 
@@ -101,29 +100,19 @@ render::Image sideBySide(const render::Image& a, const render::Image& b) {
   return out;
 }
 
-std::variant<std::unique_ptr<render::VideoEncoder>, std::string> openVideo(
-    const std::string& path, int width, int height, const RenderArgs& args, int fps) {
-  render::EncoderSettings settings;
-  settings.width = width;
-  settings.height = height;
-  settings.fps = fps;
-  settings.crf = args.crf;
-  settings.preset = args.preset;
-  return render::VideoEncoder::open(path, settings);
-}
-
 // Names for --both: the spin in the direction the linearised theory prefers is "preferred",
 // the other "reversed". A note says when the runs disagree with the prediction.
-std::array<std::string, 2> bothNames(const std::array<Track*, 2>& tracks) {
-  const sim::Model& model = tracks[0]->model;
+std::array<std::string, 2> bothNames(const std::vector<sim::Rollout>& runs) {
+  const sim::Model& model = runs[0].model();
   const bool ccw_preferred =
       std::string(sim::preferredDirection(model, model.initial.spin)) == "ccw";
   std::array<std::string, 2> names;
   for (int i = 0; i < 2; ++i) {
-    const bool preferred = (tracks[i]->model.initial.spin > 0) == ccw_preferred;
+    const double spin = runs[i].model().initial.spin;
+    const bool preferred = (spin > 0) == ccw_preferred;
     names[i] = preferred ? "preferred" : "reversed";
-    if (preferred == tracks[i]->summary.first_reversal_s.has_value())
-      std::cerr << "note: spun " << tracks[i]->model.initial.spin << " rad/s the body "
+    if (preferred == runs[i].summary().first_reversal_s.has_value())
+      std::cerr << "note: spun " << spin << " rad/s the body "
                 << (preferred ? "reversed although the theory prefers this direction"
                               : "did not reverse within the run")
                 << "\n";
@@ -131,44 +120,68 @@ std::array<std::string, 2> bothNames(const std::array<Track*, 2>& tracks) {
   return names;
 }
 
+rb::Status checkEncoderOptions(const RenderArgs& args) {
+  if (args.crf < 1 || args.crf > 51)
+    return rb::Status::fail("--crf must be within 1 … 51 (lower is better; 0 would be lossless "
+                            "High 4:4:4, which browsers do not play), not " +
+                            std::to_string(args.crf));
+  for (const char* p : kPresets)
+    if (args.preset == p) return {};
+  std::string names;
+  for (const char* p : kPresets) names += std::string(names.empty() ? "" : ", ") + p;
+  return rb::Status::fail("--preset must be one of x264's: " + names + "; not '" + args.preset + "'");
+}
+
 }  // namespace
 
 int renderCommand(const RenderArgs& args) {
-  Overrides o = args.overrides;
-  auto compiled = loadScene(args.scene, o);
-  if (auto* e = std::get_if<std::string>(&compiled)) {
-    std::cerr << *e << "\n";
+  if (auto ok = checkEncoderOptions(args); !ok) {
+    std::cerr << ok.error().text() << "\n";
     return kBadInput;
   }
-  std::vector<std::unique_ptr<Track>> tracks;
-  tracks.push_back(std::make_unique<Track>());
-  tracks[0]->model = std::move(std::get<sim::Model>(compiled));
-  const sim::Model& model = tracks[0]->model;
-  if (args.verbose) describeModel(model, args.scene, model.video.steps_per_frame, "frame");
-  if (model.video.width % 2 || model.video.height % 2) {
-    std::cerr << "--size: the width and height of a video must be even\n";
+  auto loaded = loadScene(args.scene, args.overrides);
+  if (!loaded) {
+    std::cerr << loaded.error().text() << "\n";
     return kBadInput;
   }
+  const sim::Model& model = loaded->model;
+  auto planned = planVideo(loaded->scene, model.duration);
+  if (!planned) {
+    std::cerr << planned.error().text() << "\n";
+    return kBadInput;
+  }
+  const VideoPlan& plan = planned.value();
+  if (args.verbose) describeModel(model, args.scene);
+  // One run per direction, sharing the body.
+  std::vector<sim::Rollout> runs;
+  runs.emplace_back(model);
   if (args.both) {
-    tracks.push_back(std::make_unique<Track>());
-    tracks[1]->model = model;
-    tracks[1]->model.initial.spin = -model.initial.spin;
+    sim::Model reversed = model;
+    reversed.initial.spin = -model.initial.spin;
+    runs.emplace_back(reversed);
   }
-  for (auto& t : tracks) t->title = stem(args.scene) + ": spun " + describeSpin(t->model.initial.spin);
 
   // Output paths: -o exactly, else out/<scene>.mp4; with --both, -o (less any .mp4) is the
   // base of BASE-preferred.mp4, BASE-reversed.mp4 (renamed at the end) and BASE-both.mp4.
-  if (args.output.empty()) fs::create_directories("out");
   std::string base = args.output.empty() ? "out/" + stem(args.scene) : args.output;
   if (base.size() > 4 && base.substr(base.size() - 4) == ".mp4") base.resize(base.size() - 4);
-  std::vector<std::unique_ptr<Output>> outputs;
   const std::vector<std::string> provisional =
       args.both ? std::vector<std::string>{base + "-preferred.mp4", base + "-reversed.mp4",
                                            base + "-both.mp4"}
                 : std::vector<std::string>{args.output.empty() ? base + ".mp4" : args.output};
+  std::vector<std::unique_ptr<Output>> outputs;
   for (std::size_t i = 0; i < provisional.size(); ++i) {
-    const int width = i == 2 ? 2 * model.video.width : model.video.width;
-    auto opened = openVideo(provisional[i], width, model.video.height, args, model.video.fps);
+    if (auto made = makeParentFolder(provisional[i]); !made) {
+      std::cerr << made.error().text() << "\n";
+      return kBadInput;
+    }
+    render::EncoderSettings settings;
+    settings.width = i == 2 ? 2 * plan.width : plan.width;
+    settings.height = plan.height;
+    settings.fps = plan.fps;
+    settings.crf = args.crf;
+    settings.preset = args.preset;
+    auto opened = render::VideoEncoder::open(provisional[i], settings);
     if (auto* e = std::get_if<std::string>(&opened)) {
       std::cerr << *e << "\n";
       return kBadInput;
@@ -177,71 +190,65 @@ int renderCommand(const RenderArgs& args) {
     outputs.back()->encoder = std::move(std::get<std::unique_ptr<render::VideoEncoder>>(opened));
   }
 
-  auto created = render::Renderer::create(settingsOf(model, tracks[0]->title), bodyPointsOf(model));
-  if (auto* e = std::get_if<std::string>(&created)) {
-    std::cerr << "render: " << *e << "\n";
-    return kBadInput;
-  }
   std::vector<std::unique_ptr<render::Renderer>> renderers;
-  renderers.push_back(std::move(std::get<std::unique_ptr<render::Renderer>>(created)));
-  if (args.both) {
-    auto second = render::Renderer::create(settingsOf(tracks[1]->model, tracks[1]->title),
-                                           bodyPointsOf(model));
-    if (auto* e = std::get_if<std::string>(&second)) {
+  for (const sim::Rollout& run : runs) {
+    const double spin = run.model().initial.spin;
+    auto created = render::Renderer::create(
+        settingsOf(plan, model.duration, spin, stem(args.scene) + ": spun " + describeSpin(spin)),
+        bodyPointsOf(model));
+    if (auto* e = std::get_if<std::string>(&created)) {
       std::cerr << "render: " << *e << "\n";
       return kBadInput;
     }
-    renderers.push_back(std::move(std::get<std::unique_ptr<render::Renderer>>(second)));
+    renderers.push_back(std::move(std::get<std::unique_ptr<render::Renderer>>(created)));
   }
 
-  for (auto& t : tracks) t->start();
+  installInterruptHandlers();
   for (auto& o : outputs) o->start();
-  Progress progress("render", model.video.frames, !args.quiet);
+  Progress progress("render", plan.frames, !args.quiet);
   const auto start = std::chrono::steady_clock::now();
   std::int64_t frames = 0;
-  std::vector<render::Image> images(tracks.size());
-  for (bool running = true; running && frames < model.video.frames;) {
-    for (std::size_t i = 0; i < tracks.size() && running; ++i) {
-      auto telemetry = tracks[i]->frames.pop();
-      if (!telemetry) {
-        running = false;
-        break;
-      }
-      renderers[i]->draw(frameOf(*telemetry), images[i]);
+  std::vector<render::Image> images(runs.size());
+  bool running = true;
+  for (std::int64_t k = 0; running && k < plan.frames && !interruptSignal(); ++k) {
+    const double t = plan.frameTime(k);
+    for (std::size_t i = 0; i < runs.size() && running; ++i) {
+      running = runs[i].advanceTo(t);
+      if (running) renderers[i]->draw(frameOf(runs[i].sampleAt(t)), images[i]);
     }
-    if (!running) break;
-    for (std::size_t i = 0; i < tracks.size(); ++i) outputs[i]->images.push(images[i]);
-    if (args.both) outputs[2]->images.push(sideBySide(images[0], images[1]));
-    progress.update(++frames);
+    for (std::size_t i = 0; running && i < runs.size(); ++i)
+      running = outputs[i]->images.push(images[i]);
+    if (running && args.both) running = outputs[2]->images.push(sideBySide(images[0], images[1]));
+    if (running) progress.update(++frames);
   }
-  for (auto& t : tracks) {
-    t->frames.close();
-    t->thread.join();
-  }
-  for (auto& o : outputs) {
-    o->images.close();
-    o->thread.join();
-  }
+  // The runs go on to the scene's end (frames stop at the last whole frame time), so that the
+  // summary covers the same run as `simulate`.
+  for (auto& run : runs)
+    if (running && !interruptSignal()) run.advanceTo(run.endTime());
+  for (auto& o : outputs) o->stop();
   progress.finish();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  for (auto& t : tracks)
-    if (t->summary.divergence) {
-      std::cerr << args.scene << ": the run stopped: " << *t->summary.divergence
+  if (interruptSignal()) {
+    std::cerr << args.scene << ": interrupted after " << frames << " frames; no video written\n";
+    return interruptedStatus();  // the encoders remove their temporary files
+  }
+  for (const auto& run : runs)
+    if (run.summary().divergence) {
+      std::cerr << args.scene << ": the run stopped: " << *run.summary().divergence
                 << ". No video written\n";
       return kDiverged;
     }
-  std::vector<std::string> finals = provisional;
-  if (args.both) {
-    const auto names = bothNames({tracks[0].get(), tracks[1].get()});
-    finals[0] = base + "-" + names[0] + ".mp4";
-    finals[1] = base + "-" + names[1] + ".mp4";
-  }
-  for (std::size_t i = 0; i < outputs.size(); ++i) {
-    if (outputs[i]->error) {
-      std::cerr << *outputs[i]->error << "\n";
+  for (const auto& o : outputs)
+    if (o->error) {
+      std::cerr << *o->error << "\n";
       return kBadInput;
     }
+  std::vector<std::string> finals = provisional;
+  if (args.both) {
+    const auto names = bothNames(runs);
+    finals[0] = base + "-" + names[0] + ".mp4";
+    finals[1] = base + "-" + names[1] + ".mp4";
   }
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     if (auto e = outputs[i]->encoder->finish(finals[i])) {
@@ -252,12 +259,13 @@ int renderCommand(const RenderArgs& args) {
   if (!args.quiet) {
     for (std::size_t i = 0; i < outputs.size(); ++i) {
       std::printf("%s  (%lld frames", finals[i].c_str(), outputs[i]->encoder->frames());
-      if (i < tracks.size()) {
-        const auto& r = tracks[i]->summary.first_reversal_s;
+      if (i < runs.size()) {
+        const auto& r = runs[i].summary().first_reversal_s;
+        const double spin = runs[i].model().initial.spin;
         if (r)
-          std::printf(", spun %+g rad/s, first reversal at %.3f s", tracks[i]->model.initial.spin, *r);
+          std::printf(", spun %+g rad/s, first reversal at %.3f s", spin, *r);
         else
-          std::printf(", spun %+g rad/s, no reversal", tracks[i]->model.initial.spin);
+          std::printf(", spun %+g rad/s, no reversal", spin);
       }
       std::printf(")\n");
     }
@@ -273,42 +281,56 @@ int stillCommand(const StillArgs& args) {
     std::cerr << "--t must be a time ≥ 0 s\n";
     return kBadInput;
   }
-  auto compiled = loadScene(args.scene, o);
-  if (auto* e = std::get_if<std::string>(&compiled)) {
-    std::cerr << *e << "\n";
+  auto loaded = loadScene(args.scene, o);
+  if (!loaded) {
+    std::cerr << loaded.error().text() << "\n";
     return kBadInput;
   }
-  const sim::Model& model = std::get<sim::Model>(compiled);
-  const std::string path = args.output.empty()
-                               ? "out/" + stem(args.scene) + "-" + model.video.view + ".png"
-                               : args.output;
-  if (args.output.empty()) fs::create_directories("out");
+  sim::Model model = loaded->model;
+  // A still may show a time past the scene's duration: the run then goes on to it.
+  model.duration = std::max(model.duration, args.t);
+  auto planned = planVideo(loaded->scene, model.duration);
+  if (!planned) {
+    std::cerr << planned.error().text() << "\n";
+    return kBadInput;
+  }
+  const VideoPlan& plan = planned.value();
+  const std::string path =
+      args.output.empty()
+          ? "out/" + stem(args.scene) + "-" + std::string(rb::nameOf(plan.view)) + ".png"
+          : args.output;
+  if (auto made = makeParentFolder(path); !made) {
+    std::cerr << made.error().text() << "\n";
+    return kBadInput;
+  }
 
-  render::RenderSettings settings = settingsOf(model, stem(args.scene));
+  render::RenderSettings settings =
+      settingsOf(plan, model.duration, model.initial.spin, stem(args.scene));
   settings.readouts = !args.no_readouts;
-  settings.duration = std::max(settings.duration, args.t);
   auto created = render::Renderer::create(settings, bodyPointsOf(model));
   if (auto* e = std::get_if<std::string>(&created)) {
     std::cerr << "render: " << *e << "\n";
     return kBadInput;
   }
   auto& renderer = *std::get<std::unique_ptr<render::Renderer>>(created);
-  // Run to the still's time, keeping the spin at each video frame for the inset.
-  sim::State state = sim::initialState(model);
-  const std::int64_t steps = std::llround(args.t / model.dt);
-  render::Image image;
-  for (;;) {
-    const bool last = state.step >= steps;
-    if (state.step % model.video.steps_per_frame == 0 || last) {
-      const sim::Telemetry t = sim::telemetryOf(model, state);
-      if (last) {
-        renderer.draw(frameOf(t), image);
-        break;
-      }
-      renderer.remember(t.t, t.spin);
-    }
-    sim::step(model, state);
+  // Run to the still's time, keeping the spin at each earlier video frame for the inset, as
+  // the video would have drawn it.
+  installInterruptHandlers();
+  sim::Rollout run(model);
+  for (std::int64_t k = 0; plan.frameTime(k) < args.t; ++k) {
+    const double t = plan.frameTime(k);
+    if (interruptSignal()) return interruptedStatus();
+    if (!run.advanceTo(t)) break;
+    const sim::Telemetry sample = run.sampleAt(t);
+    renderer.remember(sample.t, sample.spin);
   }
+  if (!run.advanceTo(args.t)) {
+    std::cerr << args.scene << ": the run stopped before t = " << args.t
+              << " s: " << run.summary().divergence.value_or("interrupted") << "\n";
+    return run.summary().divergence ? kDiverged : interruptedStatus();
+  }
+  render::Image image;
+  renderer.draw(frameOf(run.sampleAt(args.t)), image);
   if (auto e = render::writePng(path, image)) {
     std::cerr << *e << "\n";
     return kBadInput;

@@ -9,11 +9,10 @@
 #include "app/commands.hpp"
 #include "app/frames.hpp"
 #include "app/scene_args.hpp"
+#include "app/video_plan.hpp"
 #include "render/encoder.hpp"
 #include "render/renderer.hpp"
-#include "sim/initial.hpp"
-#include "sim/step.hpp"
-#include "sim/telemetry.hpp"
+#include "sim/rollout.hpp"
 
 namespace {
 
@@ -32,26 +31,28 @@ int main(int argc, char** argv) {
     app::Overrides o;
     o.size = std::array<int, 2>{w, h};
     auto loaded = app::loadScene(scene, o);
-    if (auto* e = std::get_if<std::string>(&loaded)) {
-      std::fprintf(stderr, "%s\n", e->c_str());
+    if (!loaded) {
+      std::fprintf(stderr, "%s\n", loaded.error().text().c_str());
       return 2;
     }
-    const sim::Model& model = std::get<sim::Model>(loaded);
+    const sim::Model& model = loaded->model;
+    auto planned = app::planVideo(loaded->scene, model.duration);
+    if (!planned) {
+      std::fprintf(stderr, "%s\n", planned.error().text().c_str());
+      return 2;
+    }
+    const app::VideoPlan& plan = planned.value();
 
     // The poses of the first `frames` video frames.
     std::vector<render::FrameInput> poses;
-    sim::State s = sim::initialState(model);
-    while (static_cast<int>(poses.size()) < frames) {
-      if (s.step % model.video.steps_per_frame == 0) {
-        poses.push_back(app::frameOf(sim::telemetryOf(model, s)));
-      }
-      sim::step(model, s);
-    }
+    sim::Rollout run(model);
+    for (int k = 0; k < frames && run.advanceTo(plan.frameTime(k)); ++k)
+      poses.push_back(app::frameOf(run.sampleAt(plan.frameTime(k))));
 
     render::RenderSettings settings;
     settings.width = w;
     settings.height = h;
-    settings.duration = model.steps * model.dt;
+    settings.duration = model.duration;
     settings.spin_range = 5.5;
     auto created = render::Renderer::create(settings, app::bodyPointsOf(model));
     if (auto* e = std::get_if<std::string>(&created)) {
@@ -61,13 +62,13 @@ int main(int argc, char** argv) {
     auto& renderer = *std::get<std::unique_ptr<render::Renderer>>(created);
     std::vector<render::Image> images(frames);
     auto start = std::chrono::steady_clock::now();
-    for (int i = 0; i < frames; ++i) renderer.draw(poses[i], images[i]);
+    for (std::size_t i = 0; i < poses.size(); ++i) renderer.draw(poses[i], images[i]);
     const double render_fps = frames / seconds(start);
 
     render::EncoderSettings encoding;
     encoding.width = w;
     encoding.height = h;
-    encoding.fps = model.video.fps;
+    encoding.fps = plan.fps;
     auto encoder = std::get<std::unique_ptr<render::VideoEncoder>>(
         render::VideoEncoder::open("/tmp/rattleback_bench.mp4", encoding));
     start = std::chrono::steady_clock::now();
@@ -79,7 +80,7 @@ int main(int argc, char** argv) {
     args.scene = scene;
     args.output = "/tmp/rattleback_bench_e2e.mp4";
     args.overrides = o;
-    args.overrides.duration = frames / (model.video.fps * model.video.playback);
+    args.overrides.duration = frames * plan.playback / plan.fps;
     args.quiet = true;
     start = std::chrono::steady_clock::now();
     app::renderCommand(args);

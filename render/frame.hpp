@@ -4,8 +4,11 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
+#include <array>
 #include <string>
 #include <vector>
+
+#include "util/names.hpp"
 
 namespace render {
 
@@ -42,8 +45,17 @@ struct Image {
   std::vector<unsigned char> rgba;
 };
 
-/// Parses "oblique" … "follow"; false when unknown.
-bool parseView(const std::string& name, View& view);
-const char* viewName(View view);
-
 }  // namespace render
+
+namespace rb {
+template <>
+struct NameTable<render::View> {
+  static constexpr std::array<std::pair<render::View, std::string_view>, 5> entries{{
+      {render::View::Oblique, "oblique"},
+      {render::View::Above, "above"},
+      {render::View::Front, "front"},
+      {render::View::Side, "side"},
+      {render::View::Follow, "follow"},
+  }};
+};
+}  // namespace rb

@@ -15,25 +15,6 @@ void setMatrix(GLuint program, const char* name, const Eigen::Matrix4f& m) {
 
 }  // namespace
 
-bool parseView(const std::string& name, View& view) {
-  for (View v : {View::Oblique, View::Above, View::Front, View::Side, View::Follow})
-    if (name == viewName(v)) {
-      view = v;
-      return true;
-    }
-  return false;
-}
-
-const char* viewName(View view) {
-  switch (view) {
-    case View::Oblique: return "oblique";
-    case View::Above: return "above";
-    case View::Front: return "front";
-    case View::Side: return "side";
-    case View::Follow: return "follow";
-  }
-  return "oblique";
-}
 
 Renderer::Renderer(const RenderSettings& settings, const BodyPoints& body)
     : settings_(settings), body_(body) {}

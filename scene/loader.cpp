@@ -3,7 +3,10 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -226,18 +229,23 @@ void readRest(MapReader& root, sim::SceneSpec& s) {
     r.read("height", s.initial.height);
   });
   root.require("simulation");
-  section(root, "simulation", {"integrator", "dt", "duration"}, [&](MapReader& r) {
-    r.require("dt");
+  section(root, "simulation", {"integrator", "dt", "tolerance", "duration"}, [&](MapReader& r) {
     r.require("duration");
     r.read("integrator", s.simulation.integrator);
     r.read("dt", s.simulation.dt);
+    r.read("tolerance", s.simulation.tolerance);
     r.read("duration", s.simulation.duration);
   });
+}
+
+// The video section's keys and types (a malformed file is malformed for every command); its
+// values are checked only by the commands that draw.
+void readVideo(MapReader& root, VideoSpec& v) {
   section(root, "video", {"fps", "size", "view", "playback"}, [&](MapReader& r) {
-    r.read("fps", s.video.fps);
-    r.read("size", s.video.size);
-    r.read("view", s.video.view);
-    r.read("playback", s.video.playback);
+    r.read("fps", v.fps);
+    r.read("size", v.size);
+    r.read("view", v.view);
+    r.read("playback", v.playback);
   });
 }
 
@@ -269,39 +277,46 @@ std::string format(const std::string& file, int line, const std::string& key,
 
 }  // namespace
 
-std::variant<Loaded, LoadError> loadString(const std::string& yaml, const std::string& name) {
+rb::Result<Loaded> loadString(const std::string& yaml, const std::string& name) {
   Loaded out;
   out.file = name;
   try {
     const YAML::Node root_node = YAML::Load(yaml);
     if (!root_node.IsDefined() || root_node.IsNull())
-      return LoadError{printable(name) +
-                       ":1: the scene is empty; expected keys such as body, contact, simulation"};
+      return rb::Error{"", printable(name) + ":1: the scene is empty; expected keys such as "
+                                             "body, contact, simulation"};
     MapReader root(root_node, "", 1, out,
                    {"units", "body", "contact", "gravity", "initial", "simulation", "video"});
     readBody(root, out.spec.body);
     readContact(root, out.spec.contact);
     readRest(root, out.spec);
+    readVideo(root, out.video);
   } catch (const Failure& f) {
-    return LoadError{format(name, f.line, f.key, f.message)};
+    return rb::Error{"", format(name, f.line, f.key, f.message)};
   } catch (const YAML::Exception& e) {
     // Syntax errors: yaml-cpp knows the line but no key.
     const int line = e.mark.is_null() ? 1 : e.mark.line + 1;
-    return LoadError{printable(name + ":" + std::to_string(line) + ": malformed YAML: " + e.msg)};
+    return rb::Error{"", printable(name + ":" + std::to_string(line) + ": malformed YAML: " + e.msg)};
   }
   return out;
 }
 
-std::variant<Loaded, LoadError> loadFile(const std::string& path) {
+rb::Result<Loaded> loadFile(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    return rb::Error{"", printable(path) + ": is a folder, not a scene file (give a .yaml file, "
+                                           "e.g. scenes/rattleback.yaml)"};
   std::ifstream in(path, std::ios::binary);
-  if (!in) return LoadError{printable(path) + ": cannot open the scene file"};
+  if (!in)
+    return rb::Error{"", printable(path) + ": cannot open the scene file: " + std::strerror(errno)};
   std::ostringstream text;
   text << in.rdbuf();
-  if (in.bad()) return LoadError{printable(path) + ": cannot read the scene file"};
+  if (in.bad())
+    return rb::Error{"", printable(path) + ": cannot read the scene file: " + std::strerror(errno)};
   return loadString(text.str(), path);
 }
 
-std::string describe(const Loaded& loaded, const sim::SpecError& error) {
+std::string describe(const Loaded& loaded, const rb::Error& error) {
   if (auto it = loaded.overrides.find(error.key); it != loaded.overrides.end())
     return printable(it->second + ": " + error.key + " " + error.message);
   // The key's own line, else the nearest enclosing key that the file has.
@@ -315,11 +330,10 @@ std::string describe(const Loaded& loaded, const sim::SpecError& error) {
   return format(loaded.file, 1, error.key, error.message);
 }
 
-std::variant<sim::Model, LoadError> loadModel(const Loaded& loaded) {
+rb::Result<sim::Model> loadModel(const Loaded& loaded) {
   auto compiled = sim::compile(loaded.spec);
-  if (auto* error = std::get_if<sim::SpecError>(&compiled))
-    return LoadError{describe(loaded, *error)};
-  return std::move(std::get<sim::Model>(compiled));
+  if (!compiled) return rb::Error{"", describe(loaded, compiled.error())};
+  return std::move(compiled).value();
 }
 
 }  // namespace scene

@@ -9,31 +9,41 @@
 
 #include "sim/compile.hpp"
 #include "sim/spec.hpp"
+#include "util/result.hpp"
 
 namespace scene {
+
+/// The scene file's `video` section, as written: read only by the commands that draw
+/// (render, still), which check it (app/video_plan). Simulating never looks at it.
+struct VideoSpec {
+  int fps = 30;                        ///< frames per second of video, 1 … 240
+  std::array<int, 2> size{1280, 720};  ///< pixels
+  std::string view = "oblique";        ///< oblique | above | front | side | follow
+  /// Playback speed as players mean it: simulated seconds per second of video (0.5 = slow
+  /// motion, 2 = twice as fast).
+  double playback = 1.0;
+};
 
 /// A parsed scene and where each of its keys sits.
 struct Loaded {
   sim::SceneSpec spec;
+  VideoSpec video;
   std::string file;                  ///< as given, for messages
   std::map<std::string, int> lines;  ///< dotted key → 1-based line
   std::map<std::string, std::string> overrides;  ///< dotted key → the option that set it
 };
 
-/// One line, ready to print: "file:line: key message".
-struct LoadError {
-  std::string message;
-};
-
-std::variant<Loaded, LoadError> loadFile(const std::string& path);
+/// Errors come back as rb::Error with an empty key and one line, ready to print:
+/// "file:line: key message".
+rb::Result<Loaded> loadFile(const std::string& path);
 /// `name` stands for the file in messages.
-std::variant<Loaded, LoadError> loadString(const std::string& yaml, const std::string& name);
+rb::Result<Loaded> loadString(const std::string& yaml, const std::string& name);
 
-/// "file:line: key message" for an error compile() found in a loaded scene; a key set from
-/// the command line is named by its option instead.
-std::string describe(const Loaded& loaded, const sim::SpecError& error);
+/// "file:line: key message" for an error found in a loaded scene (by compile() or a video
+/// check); a key set from the command line is named by its option instead.
+std::string describe(const Loaded& loaded, const rb::Error& error);
 
-/// loadFile + compile, with any error as one line.
-std::variant<sim::Model, LoadError> loadModel(const Loaded& loaded);
+/// compile() of a loaded scene, with any error as one line.
+rb::Result<sim::Model> loadModel(const Loaded& loaded);
 
 }  // namespace scene

@@ -12,6 +12,7 @@ packages=(
   ffmpeg gnuplot-nox
   dpkg-dev
   clang libclang-rt-14-dev
+  libboost-dev nlohmann-json3-dev
 )
 
 missing=()

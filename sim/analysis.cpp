@@ -48,7 +48,7 @@ Model asRolling(const Model& model) {
 
 Rest restOf(const Model& model) {
   Rest rest;
-  const Body& body = model.body;
+  const Body& body = *model.body;
   rest.h = -lowestSurfacePoint(body, -Eigen::Vector3d::UnitZ()).z();
   rest.radii = body.surface.radiiAtBottom();
   rest.stable = rest.h < rest.radii.minCoeff();

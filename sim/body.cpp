@@ -21,21 +21,24 @@ int zLevels(const Paraboloid& shape, double dz) {
 
 }  // namespace
 
+Paraboloid::Paraboloid(double a_, double p_, double q_, double s_, double top_)
+    : a(a_), p(p_), q(q_), s(s_), top(top_) {
+  Eigen::Matrix2d hessian;
+  hessian << p / a, q / (a * a), q / (a * a), s / a;
+  hessian_inv = hessian.inverse();
+}
+
 Eigen::Vector2d Paraboloid::rimHalfWidths() const {
   // The rim is the ellipse ½ uᵀ H u = top + a with H the bottom's Hessian; its half-width
   // along an axis is sqrt(2 (top + a) (H⁻¹)_ii).
-  Eigen::Matrix2d hessian;
-  hessian << p / a, q / (a * a), q / (a * a), s / a;
-  const Eigen::Matrix2d inverse = hessian.inverse();
+  const Eigen::Matrix2d& inverse = hessian_inv;
   const double height = top + a;
   return {std::sqrt(2 * height * inverse(0, 0)), std::sqrt(2 * height * inverse(1, 1))};
 }
 
 Eigen::Vector3d Paraboloid::lowestPoint(const Eigen::Vector3d& down) const {
-  Eigen::Matrix2d hessian;
-  hessian << p / a, q / (a * a), q / (a * a), s / a;
   const Eigen::Vector2d slope(-down.x() / down.z(), -down.y() / down.z());
-  const Eigen::Vector2d xy = hessian.inverse() * slope;
+  const Eigen::Vector2d xy = hessian_inv * slope;
   return {xy.x(), xy.y(), bottom(xy.x(), xy.y())};
 }
 
@@ -45,9 +48,7 @@ bool Paraboloid::lowestOnRim(const Eigen::Vector3d& down) const {
 
 Eigen::Vector3d Paraboloid::lowestPointOfBody(const Eigen::Vector3d& down) const {
   if (!lowestOnRim(down)) return lowestPoint(down);
-  Eigen::Matrix2d hessian;
-  hessian << p / a, q / (a * a), q / (a * a), s / a;
-  const Eigen::Matrix2d inverse = hessian.inverse();
+  const Eigen::Matrix2d& inverse = hessian_inv;
   const Eigen::Vector2d d = down.head<2>();
   const double norm = std::sqrt(d.dot(inverse * d));
   if (norm == 0) return {0, 0, top};
@@ -57,12 +58,10 @@ Eigen::Vector3d Paraboloid::lowestPointOfBody(const Eigen::Vector3d& down) const
 
 Eigen::Vector3d Paraboloid::lowestPointRate(const Eigen::Vector3d& down,
                                             const Eigen::Vector3d& down_rate) const {
-  Eigen::Matrix2d hessian;
-  hessian << p / a, q / (a * a), q / (a * a), s / a;
   const Eigen::Vector2d g(-down.x() / down.z(), -down.y() / down.z());
   const Eigen::Vector2d g_rate =
       -down_rate.head<2>() / down.z() + down.head<2>() * down_rate.z() / (down.z() * down.z());
-  const Eigen::Vector2d xy_rate = hessian.inverse() * g_rate;
+  const Eigen::Vector2d xy_rate = hessian_inv * g_rate;
   return {xy_rate.x(), xy_rate.y(), g.dot(xy_rate)};
 }
 

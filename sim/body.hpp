@@ -15,6 +15,11 @@ namespace sim {
 /// (SPEC; the seed's eq. 24), flat top at z = top.
 struct Paraboloid {
   double a, p, q, s, top;
+  /// H⁻¹ with H = [p/a, q/a²; q/a², s/a] the bottom's Hessian: derived once, here, from the
+  /// five numbers above (every contact evaluation needs it).
+  Eigen::Matrix2d hessian_inv;
+
+  Paraboloid(double a_, double p_, double q_, double s_, double top_);
   /// Height of the bottom surface above (x, y), m.
   double bottom(double x, double y) const {
     return p / (2 * a) * x * x + q / (a * a) * x * y + s / (2 * a) * y * y - a;

@@ -1,27 +1,29 @@
-// compile(spec) → Model, or an error naming the offending key.
+// compile(spec) → Model, or an error naming the offending key. The body and the run are
+// compiled apart: compileBody builds the immutable, shared Body once (the expensive part: the
+// point grid and its mass properties); compileRun makes a run of it (cheap).
 #pragma once
 
+#include <memory>
 #include <string>
-#include <variant>
 
 #include "sim/model.hpp"
 #include "sim/spec.hpp"
+#include "util/result.hpp"
 
 namespace sim {
-
-/// A scene that cannot run: `key` is the dotted path in the scene file ("contact.stiffness"),
-/// `message` says what is wrong and, where it helps, what would be right.
-struct SpecError {
-  std::string key;
-  std::string message;
-};
 
 /// Largest point-grid size compile() accepts (bounding-box estimate), points.
 inline constexpr double kMaxGridPoints = 2.0e8;
 
-/// Checks every field of the spec and builds the model: mass properties from the grid,
-/// bottom points relative to the CM, SI units, a whole number of steps. Refuses a step that
-/// the contact stiffness makes unstable, naming the largest stable one.
-std::variant<Model, SpecError> compile(const SceneSpec& spec);
+/// Checks the body keys and builds the shared body: mass properties from the grid, surface
+/// points relative to the CM, SI units (`length_unit` metres per file unit).
+rb::Result<std::shared_ptr<const Body>> compileBody(const BodySpec& spec, double length_unit);
+
+/// Checks the other keys and makes a run of `body`. Refuses a step that the contact stiffness
+/// makes unstable, naming the largest stable one.
+rb::Result<Model> compileRun(const SceneSpec& spec, std::shared_ptr<const Body> body);
+
+/// compileBody + compileRun.
+rb::Result<Model> compile(const SceneSpec& spec);
 
 }  // namespace sim

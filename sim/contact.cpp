@@ -6,17 +6,13 @@ namespace sim {
 
 Kinematics kinematicsOf(const Model& model, const State& s) {
   Kinematics k;
-  k.R = s.q.toRotationMatrix();
+  // The rotation of the unit quaternion: an adaptive integrator keeps |q| = 1 only to its
+  // tolerance, and the rates must not depend on that drift.
+  k.R = s.q.normalized().toRotationMatrix();
   k.x_world = s.x_world;
   k.v_world = s.v_world;
-  // ω = R I⁻¹ Rᵀ L
-  k.w_world = k.R * (model.body.inertia_inv * (k.R.transpose() * s.L_world));
+  k.w_world = angularVelocity(*model.body, k.R, s.L_world);
   return k;
-}
-
-Eigen::Vector3d angularVelocity(const Model& model, const State& s) {
-  const Eigen::Matrix3d R = s.q.toRotationMatrix();
-  return R * (model.body.inertia_inv * (R.transpose() * s.L_world));
 }
 
 namespace {
@@ -67,18 +63,18 @@ void pressPoints(const Contact& c, const Kinematics& k, const ContactPoints& pts
 
 ContactLoad pointContact(const Model& model, const Kinematics& k) {
   ContactLoad load;
-  pressPoints(model.contact, k, model.body.bottom, load);
+  pressPoints(model.contact, k, model.body->bottom, load);
   // The top surface touches only when the body lies on its side or upside down; its bounding
   // box says when none of it can, which is nearly always.
-  if (model.body.top.lowestBound(k.R, k.x_world.z()) < 0)
-    pressPoints(model.contact, k, model.body.top, load);
+  if (model.body->top.lowestBound(k.R, k.x_world.z()) < 0)
+    pressPoints(model.contact, k, model.body->top, load);
   return load;
 }
 
 ContactLoad smoothContact(const Model& model, const Kinematics& k) {
   ContactLoad load;
   const Eigen::Vector3d down_body = -k.R.row(2).transpose();  // Rᵀ(−ẑ)
-  const Eigen::Vector3d r = k.R * lowestSurfacePoint(model.body, down_body);
+  const Eigen::Vector3d r = k.R * lowestSurfacePoint(*model.body, down_body);
   const double z = k.x_world.z() + r.z();
   if (z < 0) pressPoint(model.contact, k, r, z, load);
   return load;

@@ -1,23 +1,35 @@
-// The immutable model built once from a scene (SI units throughout) and the state a
-// step advances. Frames: "world" has z up with the floor at z = 0; "body" is the body's
-// geometric axes (x short, y long, z up) with its origin moved to the centre of mass.
+// What a run is made of, split as MuJoCo splits mjModel from mjData (SI units throughout):
+//  - Body: immutable and shared, built once from a scene's body keys (points, mass
+//    properties, surface and the constants derived from them); runs hold it by shared_ptr.
+//  - Model: the small per-run value (the shared body, contact, integrator, step or tolerance,
+//    duration, gravity, initial state). Copying it costs a shared_ptr copy.
+//  - State: what a step advances.
+// Frames: "world" has z up with the floor at z = 0; "body" is the body's geometric axes
+// (x short, y long, z up) with its origin moved to the centre of mass.
 #pragma once
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "sim/body.hpp"
 #include "sim/surface.hpp"
+#include "util/names.hpp"
 
 namespace sim {
 
 enum class ContactModel { Points, Smooth, Rolling };
 enum class FrictionLaw { Coulomb, Regularized };
-enum class Integrator { Euler, Symplectic, Rk4 };
+/// Fixed-step methods take simulation.dt; Dopri5 (adaptive, Dormand–Prince 5(4) with dense
+/// output, from Boost.Odeint) takes simulation.tolerance.
+enum class Integrator { Euler, Symplectic, Rk4, Dopri5 };
+
+inline bool isAdaptive(Integrator i) { return i == Integrator::Dopri5; }
 
 /// Contact points as structure-of-arrays, body frame (m), for a tight per-step loop.
 struct ContactPoints {
@@ -77,36 +89,28 @@ struct Initial {
   double height = 0;       ///< m, lowest point above the floor at release (0: resting on it)
 };
 
-/// Video timing and framing (SPEC "Rendering and video"); the renderer reads these.
-struct Video {
-  int fps = 30;
-  int width = 1280, height = 720;   ///< pixels
-  std::string view = "oblique";     ///< oblique | above | front | side | follow
-  double playback = 1;              ///< video seconds per simulated second
-  std::int64_t steps_per_frame = 1; ///< whole steps of dt per video frame
-  std::int64_t frames = 0;          ///< round(duration × playback × fps)
-};
-
+/// One run of a shared body: small, cheap to copy (SPEC "Data flow").
 struct Model {
-  Body body;
-  Video video;
+  std::shared_ptr<const Body> body;  ///< immutable, shared by every run of this body
   Contact contact;
   double gravity = 9.81;   ///< m/s², along −z
   Integrator integrator = Integrator::Symplectic;
-  double dt = 0;           ///< s
-  std::int64_t steps = 0;  ///< whole steps in the run: round(duration / dt)
+  double dt = 0;           ///< s, fixed-step integrators (0 for adaptive ones)
+  double tolerance = 0;    ///< adaptive: error per step relative to the body's scales (0: fixed)
+  double duration = 0;     ///< s, simulated time of the run
   Initial initial;
   double length_unit = 1;  ///< m per length unit of the scene file (for reports)
 };
 
-/// The changing data. Time is derived from the step count: t = step · dt.
+/// The changing data. With a fixed step, t = step · dt (never accumulated); with an adaptive
+/// one, t is the end of the last accepted step.
 struct State {
   Eigen::Vector3d x_world = Eigen::Vector3d::Zero();  ///< CM position, m
   Eigen::Vector3d v_world = Eigen::Vector3d::Zero();  ///< CM velocity, m/s
   Eigen::Quaterniond q = Eigen::Quaterniond::Identity();  ///< body → world rotation
   Eigen::Vector3d L_world = Eigen::Vector3d::Zero();  ///< angular momentum about the CM, kg m²/s
   double t = 0;                                       ///< s
-  std::int64_t step = 0;
+  std::int64_t step = 0;                              ///< accepted steps so far
 };
 
 /// The point of the body's smooth surface lowest along `down_body` (a unit vector in body
@@ -115,7 +119,41 @@ inline Eigen::Vector3d lowestSurfacePoint(const Body& body, const Eigen::Vector3
   return body.surface.lowestPoint(down_body) - body.com_geometric;
 }
 
-/// ω_world = R I⁻¹ Rᵀ L (rad/s).
-Eigen::Vector3d angularVelocity(const Model& model, const State& s);
+/// ω_world = R I⁻¹ Rᵀ L (rad/s) for rotation R (body → world): the one place this is written.
+inline Eigen::Vector3d angularVelocity(const Body& body, const Eigen::Matrix3d& R,
+                                       const Eigen::Vector3d& L_world) {
+  return R * (body.inertia_inv * (R.transpose() * L_world));
+}
+/// ω_world of a state (rad/s).
+inline Eigen::Vector3d angularVelocity(const Model& model, const State& s) {
+  return angularVelocity(*model.body, s.q.normalized().toRotationMatrix(), s.L_world);
+}
 
 }  // namespace sim
+
+namespace rb {
+template <>
+struct NameTable<sim::ContactModel> {
+  static constexpr std::array<std::pair<sim::ContactModel, std::string_view>, 3> entries{{
+      {sim::ContactModel::Points, "points"},
+      {sim::ContactModel::Smooth, "smooth"},
+      {sim::ContactModel::Rolling, "rolling"},
+  }};
+};
+template <>
+struct NameTable<sim::FrictionLaw> {
+  static constexpr std::array<std::pair<sim::FrictionLaw, std::string_view>, 2> entries{{
+      {sim::FrictionLaw::Coulomb, "coulomb"},
+      {sim::FrictionLaw::Regularized, "regularized"},
+  }};
+};
+template <>
+struct NameTable<sim::Integrator> {
+  static constexpr std::array<std::pair<sim::Integrator, std::string_view>, 4> entries{{
+      {sim::Integrator::Euler, "euler"},
+      {sim::Integrator::Symplectic, "symplectic"},
+      {sim::Integrator::Rk4, "rk4"},
+      {sim::Integrator::Dopri5, "dopri5"},
+  }};
+};
+}  // namespace rb

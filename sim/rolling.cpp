@@ -11,7 +11,7 @@ struct ContactGeometry {
 ContactGeometry contactGeometry(const Model& model, const Eigen::Matrix3d& R) {
   ContactGeometry g;
   g.down_body = -R.row(2).transpose();  // Rᵀ(−ẑ)
-  g.r_body = lowestSurfacePoint(model.body, g.down_body);
+  g.r_body = lowestSurfacePoint(*model.body, g.down_body);
   g.r_world = R * g.r_body;
   return g;
 }
@@ -19,17 +19,17 @@ ContactGeometry contactGeometry(const Model& model, const Eigen::Matrix3d& R) {
 }  // namespace
 
 RollingMotion rollingMotion(const Model& model, const Kinematics& k) {
-  const double M = model.body.mass;
+  const double M = model.body->mass;
   const ContactGeometry g = contactGeometry(model, k.R);
   const Eigen::Vector3d& r = g.r_world;
   const Eigen::Vector3d& w = k.w_world;
   // The down direction turns in body axes as ḋ = −ω_body × d; the contact point follows.
   const Eigen::Vector3d w_body = k.R.transpose() * w;
   const Eigen::Vector3d down_rate = -w_body.cross(g.down_body);
-  const Eigen::Vector3d r_body_rate = model.body.surface.lowestPointRate(g.down_body, down_rate);
+  const Eigen::Vector3d r_body_rate = model.body->surface.lowestPointRate(g.down_body, down_rate);
   const Eigen::Vector3d r_rate = w.cross(r) + k.R * r_body_rate;
 
-  const Eigen::Matrix3d I = k.R * model.body.inertia * k.R.transpose();
+  const Eigen::Matrix3d I = k.R * model.body->inertia * k.R.transpose();
   const Eigen::Matrix3d A =
       I + M * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
   const Eigen::Vector3d rhs = -w.cross(I * w) - M * r.cross(w.cross(r_rate)) +
@@ -46,7 +46,7 @@ RollingMotion rollingMotion(const Model& model, const Kinematics& k) {
 void enforceRolling(const Model& model, State& s) {
   const Eigen::Matrix3d R = s.q.toRotationMatrix();
   const Eigen::Vector3d r = contactGeometry(model, R).r_world;
-  const Eigen::Vector3d w = R * (model.body.inertia_inv * (R.transpose() * s.L_world));
+  const Eigen::Vector3d w = angularVelocity(*model.body, R, s.L_world);
   s.x_world.z() = -r.z();
   s.v_world = -w.cross(r);
 }

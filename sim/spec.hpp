@@ -74,17 +74,14 @@ struct InitialSpec {
   double height = 0.0;  ///< lowest point above the floor at release, length units; 0: resting
 };
 
+/// simulation: exactly one of dt (a fixed step) and tolerance (adaptive steps).
 struct SimulationSpec {
-  std::string integrator = "symplectic";  ///< euler | symplectic | rk4
-  double dt = kUnset;                     ///< s, > 0
-  double duration = kUnset;               ///< s, > 0
-};
-
-struct VideoSpec {
-  int fps = 30;
-  std::array<int, 2> size{1280, 720};
-  std::string view = "oblique";  ///< oblique | above | front | side | follow
-  double playback = 1.0;         ///< video seconds per simulated second
+  /// euler | symplectic | rk4 (with dt) | dopri5 (with tolerance); empty: symplectic with
+  /// dt, dopri5 with tolerance.
+  std::string integrator;
+  double dt = kUnset;         ///< s, > 0
+  double tolerance = kUnset;  ///< error per step, relative to the body's own scales, > 0
+  double duration = kUnset;   ///< s, > 0
 };
 
 struct SceneSpec {
@@ -94,7 +91,7 @@ struct SceneSpec {
   double gravity = 9.81;  ///< m/s²
   InitialSpec initial;
   SimulationSpec simulation;
-  VideoSpec video;
+  // The scene file's `video` section is not the simulation's: scene::VideoSpec holds it.
 };
 
 }  // namespace sim

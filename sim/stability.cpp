@@ -29,6 +29,8 @@ Eigen::Matrix2d stepMatrix(Integrator integrator, double omega, double zeta, dou
     }
     case Integrator::Rk4:
       return I + hJ + hJ * hJ / 2 + hJ * hJ * hJ / 6 + hJ * hJ * hJ * hJ / 24;
+    case Integrator::Dopri5:  // its step is chosen by error control, not checked here
+      return I;
   }
   return I;
 }
@@ -44,9 +46,9 @@ double stiffestMode(const Model& model, const Eigen::Matrix3d& R) {
   const double z_cm = restingHeight(model, R);
   std::vector<Eigen::Vector3d> springs;  // world axes, from the CM
   if (model.contact.model == ContactModel::Smooth) {
-    springs.push_back(R * lowestSurfacePoint(model.body, -R.row(2).transpose()));
+    springs.push_back(R * lowestSurfacePoint(*model.body, -R.row(2).transpose()));
   } else {
-    for (const ContactPoints* p : {&model.body.bottom, &model.body.top})
+    for (const ContactPoints* p : {&model.body->bottom, &model.body->top})
       for (std::size_t i = 0; i < p->size(); ++i)
         if (z_cm + R.row(2).dot((*p)[i]) < 0) springs.push_back(R * (*p)[i]);
   }
@@ -57,8 +59,8 @@ double stiffestMode(const Model& model, const Eigen::Matrix3d& R) {
     K += model.contact.stiffness * J * J.transpose();
   }
   Eigen::Matrix<double, 6, 6> M = Eigen::Matrix<double, 6, 6>::Zero();
-  M.topLeftCorner<3, 3>() = model.body.mass * Eigen::Matrix3d::Identity();
-  M.bottomRightCorner<3, 3>() = R * model.body.inertia * R.transpose();
+  M.topLeftCorner<3, 3>() = model.body->mass * Eigen::Matrix3d::Identity();
+  M.bottomRightCorner<3, 3>() = R * model.body->inertia * R.transpose();
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> modes(K, M);
   return std::sqrt(std::max(0.0, modes.eigenvalues().maxCoeff()));
 }
@@ -90,7 +92,12 @@ ContactStability contactStability(const Model& model) {
     out.largest_step = std::numeric_limits<double>::infinity();
     return out;
   }
-  const double T = model.steps * model.dt;
+  // An adaptive integrator chooses its own steps: none to refuse.
+  if (isAdaptive(model.integrator)) {
+    out.largest_step = std::numeric_limits<double>::infinity();
+    return out;
+  }
+  const double T = model.duration;
   // Walk h up geometrically until the growth bound fails, then bisect the last interval.
   double good = 1e-9 / out.omega, bad = good;
   while (bad < 10 / out.omega) {

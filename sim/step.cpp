@@ -5,17 +5,12 @@
 namespace sim {
 namespace {
 
-// Time derivative of the state: ẋ = v, v̇ = F/M, q̇ = ½ (0, ω) ⊗ q, L̇ = τ.
-struct Rates {
-  Eigen::Vector3d dx, dv;
-  Eigen::Vector4d dq;  ///< quaternion coefficients (x, y, z, w)
-  Eigen::Vector3d dL;
-};
-
 Eigen::Vector4d quaternionRate(const Eigen::Quaterniond& q, const Eigen::Vector3d& w_world) {
   const Eigen::Quaterniond w(0, w_world.x(), w_world.y(), w_world.z());
   return 0.5 * (w * q).coeffs();
 }
+
+}  // namespace
 
 Rates ratesOf(const Model& model, const State& s) {
   const Kinematics k = kinematicsOf(model, s);
@@ -24,11 +19,10 @@ Rates ratesOf(const Model& model, const State& s) {
   const Eigen::Vector3d v = model.contact.model == ContactModel::Rolling
                                 ? Eigen::Vector3d(-k.w_world.cross(load.r_contact_world))
                                 : s.v_world;
-  return {v, load.force_world / model.body.mass, quaternionRate(s.q, k.w_world),
+  return {v, load.force_world / model.body->mass, quaternionRate(s.q, k.w_world),
           load.torque_world};
 }
 
-// s + h · rates, with the quaternion renormalised so that rotations stay rotations.
 State advanced(const State& s, const Rates& r, double h) {
   State out = s;
   out.x_world += h * r.dx;
@@ -39,6 +33,8 @@ State advanced(const State& s, const Rates& r, double h) {
   return out;
 }
 
+namespace {
+
 // Forward Euler (seed §3.4): every variable moves with the rates at the start of the step.
 void eulerStep(const Model& model, State& s) { s = advanced(s, ratesOf(model, s), model.dt); }
 
@@ -48,10 +44,10 @@ void symplecticStep(const Model& model, State& s) {
   const double dt = model.dt;
   const Kinematics k = kinematicsOf(model, s);
   const Load load = loadsOn(model, k);
-  s.v_world += dt * load.force_world / model.body.mass;
+  s.v_world += dt * load.force_world / model.body->mass;
   s.L_world += dt * load.torque_world;
   s.x_world += dt * s.v_world;
-  const Eigen::Vector3d w_new = k.R * (model.body.inertia_inv * (k.R.transpose() * s.L_world));
+  const Eigen::Vector3d w_new = angularVelocity(*model.body, k.R, s.L_world);
   const double angle = w_new.norm() * dt;
   if (angle > 0) {
     s.q = Eigen::Quaterniond(Eigen::AngleAxisd(angle, w_new.normalized())) * s.q;
@@ -90,7 +86,7 @@ Load loadsOn(const Model& model, const Kinematics& k) {
     load.contact = penaltyContact(model, k);
   }
   load.force_world = load.contact.force_world;
-  load.force_world.z() -= model.body.mass * model.gravity;
+  load.force_world.z() -= model.body->mass * model.gravity;
   load.torque_world = load.contact.torque_world - model.contact.air_drag * k.w_world;
   return load;
 }
@@ -100,6 +96,7 @@ void step(const Model& model, State& s) {
     case Integrator::Euler: eulerStep(model, s); break;
     case Integrator::Symplectic: symplecticStep(model, s); break;
     case Integrator::Rk4: rk4Step(model, s); break;
+    case Integrator::Dopri5: break;  // driven by the Rollout's adaptive stepper
   }
   if (model.contact.model == ContactModel::Rolling) enforceRolling(model, s);
   ++s.step;

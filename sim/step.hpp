@@ -19,7 +19,20 @@ struct Load {
 /// −M g ẑ + air torque −σω.
 Load loadsOn(const Model& model, const Kinematics& k);
 
-/// Advances the state by one step of model.dt with model.integrator.
+/// Time derivative of the state: ẋ = v (rolling: v = −ω × r), v̇ = F/M, q̇ = ½ (0, ω) ⊗ q,
+/// L̇ = τ.
+struct Rates {
+  Eigen::Vector3d dx, dv;
+  Eigen::Vector4d dq;  ///< quaternion coefficients (x, y, z, w)
+  Eigen::Vector3d dL;
+};
+Rates ratesOf(const Model& model, const State& s);
+
+/// s + h · rates, with the quaternion renormalised so that rotations stay rotations.
+State advanced(const State& s, const Rates& r, double h);
+
+/// Advances the state by one step of model.dt with model.integrator (a fixed-step method;
+/// adaptive ones are driven by the Rollout).
 void step(const Model& model, State& s);
 
 }  // namespace sim

@@ -12,7 +12,7 @@ using namespace testing_support;
 // 294 bottom; mesh ranges x ∈ [−3.9, 3.9], y ∈ [−17.75, 17.75] (seed table, §3.1).
 TEST(SeedGrid, CountsAndRangesMatchTheReport) {
   const sim::Model model = build(parse(kSeedScene));
-  const sim::Body& body = model.body;
+  const sim::Body& body = *model.body;
   EXPECT_EQ(body.mass_properties.points, 4256);
   EXPECT_EQ(body.top.size(), 308u);
   EXPECT_EQ(body.bottom.size(), 294u);
@@ -35,7 +35,7 @@ TEST(SeedGrid, CountsAndRangesMatchTheReport) {
 // moment no larger than the sum of the other two (I₁ + I₂ ≥ I₃, as Σ m z² ≥ 0).
 TEST(MassProperties, InertiaIsAPhysicalTensor) {
   for (const char* yaml : {kSeedScene, kStableScene}) {
-    const sim::MassProperties m = build(parse(yaml)).body.mass_properties;
+    const sim::MassProperties m = build(parse(yaml)).body->mass_properties;
     const double scale = m.inertia.norm();
     EXPECT_LT((m.inertia - m.inertia.transpose()).norm(), 1e-15 * scale);
     EXPECT_GT(m.principal.minCoeff(), 0);
@@ -89,7 +89,7 @@ TEST(MassProperties, GridConvergesToTheContinuumParaboloid) {
   std::vector<double> errors;
   for (double h : {0.04, 0.02, 0.01}) {  // grid spacing, cm
     spec.body.grid = {h, 2 * h, h / 2};
-    const sim::MassProperties m = build(spec).body.mass_properties;
+    const sim::MassProperties m = build(spec).body->mass_properties;
     const double com_height = m.com.z() + a;
     const Eigen::Vector3d diag = m.inertia.diagonal();
     errors.push_back(std::max(std::abs(com_height / (2 * H / 3) - 1),
@@ -110,10 +110,10 @@ TEST(MassProperties, GridConvergesToTheContinuumParaboloid) {
 // axis; mirroring the dents (x → −x) mirrors the angle.
 TEST(MassProperties, MisalignmentOfTheDefaultBodyAndItsMirror) {
   sim::SceneSpec spec = parse(kStableScene);
-  const double angle = build(spec).body.mass_properties.misalignment_deg;
+  const double angle = build(spec).body->mass_properties.misalignment_deg;
   // ±0.1°: SPEC quotes one decimal ("≈ +2.2°"); the grid itself moves it by ~0.05°.
   EXPECT_NEAR(angle, 2.2, 0.1);
   spec.body.dents->at[0] *= -1;
-  const double mirrored = build(spec).body.mass_properties.misalignment_deg;
+  const double mirrored = build(spec).body->mass_properties.misalignment_deg;
   EXPECT_NEAR(mirrored, -angle, 1e-9);
 }

@@ -10,13 +10,15 @@ using namespace testing_support;
 
 namespace {
 
-// Runs `model` from `s`, calling `each` on a telemetry sample every `every` steps.
+// Runs `model` from `s`, calling `each` on a telemetry sample every `every` steps (at exact
+// times, here on the steps themselves), and leaves `s` at the end of the run.
 template <typename Each>
 sim::RunSummary runWith(const sim::Model& model, sim::State& s, std::int64_t every, Each each) {
-  sim::RunOptions options;
-  options.steps_per_sample = every;
-  options.on_sample = each;
-  return sim::run(model, s, options);
+  sim::Rollout rollout(model, s);
+  const sim::RunSummary summary =
+      sim::sampleRun(rollout, 1 / (static_cast<double>(every) * model.dt), each);
+  s = rollout.current();
+  return summary;
 }
 
 // The seed body standing on its 8-point foot, frictionless and undamped, with a small
@@ -38,7 +40,7 @@ sim::Model footModel(const std::string& integrator, double dt, double duration) 
 sim::State footState(const sim::Model& model) {
   sim::State s = sim::initialState(model);
   s.v_world.z() -= 0.005;
-  s.L_world += model.body.inertia * Eigen::Vector3d(0.02, 0.01, 0);
+  s.L_world += model.body->inertia * Eigen::Vector3d(0.02, 0.01, 0);
   return s;
 }
 
@@ -76,7 +78,7 @@ TEST(FreeFall, MatchesHalfGTSquaredWithEachMethodsKnownBias) {
     const sim::Model model = build(spec);
     sim::State s;
     s.x_world = Eigen::Vector3d(0, 0, 10);
-    s.L_world = model.body.inertia * Eigen::Vector3d(0.3, -0.2, 4.0);  // tumbling, torque-free
+    s.L_world = model.body->inertia * Eigen::Vector3d(0.3, -0.2, 4.0);  // tumbling, torque-free
     const sim::RunSummary r = runWith(model, s, 1000, [](const sim::Telemetry&) {});
     const double t = r.last.t, g = model.gravity, dt = model.dt;
     const double bias = std::string(name) == "rk4" ? 0 : (name[0] == 'e' ? 0.5 : -0.5) * g * t * dt;

@@ -208,13 +208,18 @@ TEST(Video, StreamAndLayoutAreWhatBrowsersPlay) {
   EXPECT_LT(moov - boxes.begin(), mdat - boxes.begin());
 }
 
-// Playback 0.5 plays the same simulated time in twice the video time: twice the frames.
+// Playback is a speed, as players mean it: 0.5 (slow motion) shows the same simulated time in
+// twice the video time, so twice the frames; 2 in half.
 TEST(Video, PlaybackScalesTheFrameCount) {
-  const fs::path video = scratch("slow.mp4");
-  ASSERT_EQ(rattleback("render scenes/seed-reversed.yaml --duration 0.4 --playback 2 --size 160x90 "
-                       "-o " + video.string()),
+  const fs::path slow = scratch("slow.mp4"), fast = scratch("fast.mp4");
+  ASSERT_EQ(rattleback("render scenes/seed-reversed.yaml --duration 0.4 --playback 0.5 --size 160x90 "
+                       "-o " + slow.string()),
             0);
-  EXPECT_EQ(probe(video).frames, 20);  // 0.4 s × 2 × 25 fps
+  EXPECT_EQ(probe(slow).frames, 20);  // 0.4 s / 0.5 × 25 fps
+  ASSERT_EQ(rattleback("render scenes/seed-reversed.yaml --duration 0.4 --playback 2 --size 160x90 "
+                       "-o " + fast.string()),
+            0);
+  EXPECT_EQ(probe(fast).frames, 5);  // 0.4 s / 2 × 25 fps
 }
 
 // --both writes the preferred, reversed and side-by-side videos; the side-by-side one is
@@ -236,14 +241,16 @@ TEST(Video, FailureLeavesAnExistingFileAlone) {
   const fs::path video = scratch("keep.mp4");
   std::ofstream(video) << "precious";
   EXPECT_EQ(rattleback("render scenes/seed-reversed.yaml --size 321x180 -o " + video.string()), 2);
-  EXPECT_EQ(rattleback("render scenes/seed-reversed.yaml --fps 30 -o " + video.string()), 2);
+  EXPECT_EQ(rattleback("render scenes/seed-reversed.yaml --fps 500 -o " + video.string()), 2);
+  EXPECT_EQ(rattleback("render scenes/seed-reversed.yaml --crf 60 -o " + video.string()), 2);
+  EXPECT_EQ(rattleback("render scenes/seed-reversed.yaml --preset bogus -o " + video.string()), 2);
   EXPECT_EQ(rattleback("render scenes/seed-reversed.yaml --view sideways -o " + video.string()), 2);
   std::ifstream in(video);
   std::string content;
   in >> content;
   EXPECT_EQ(content, "precious");
-  EXPECT_EQ(rattleback("render scenes/seed-reversed.yaml --duration 0.1 -o /nonexistent/x.mp4"), 2);
-  EXPECT_EQ(rattleback("still scenes/seed-reversed.yaml -o /nonexistent/x.png"), 2);
+  EXPECT_EQ(rattleback("render scenes/seed-reversed.yaml --duration 0.1 -o /dev/null/x.mp4"), 2);
+  EXPECT_EQ(rattleback("still scenes/seed-reversed.yaml -o /dev/null/x.png"), 2);
 }
 
 // `compare` is the snapshot check users can call: 0 when equal within the tolerance, 1 when

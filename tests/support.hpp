@@ -9,7 +9,7 @@
 #include "scene/loader.hpp"
 #include "sim/compile.hpp"
 #include "sim/initial.hpp"
-#include "sim/run.hpp"
+#include "sim/rollout.hpp"
 #include "sim/step.hpp"
 #include "sim/telemetry.hpp"
 
@@ -47,20 +47,29 @@ video: {fps: 25}
 
 inline sim::SceneSpec parse(const std::string& yaml) {
   auto loaded = scene::loadString(yaml, "inline.yaml");
-  if (auto* e = std::get_if<scene::LoadError>(&loaded)) {
-    ADD_FAILURE() << e->message;
+  if (!loaded) {
+    ADD_FAILURE() << loaded.error().text();
     return {};
   }
-  return std::get<scene::Loaded>(loaded).spec;
+  return loaded->spec;
 }
 
+/// The compiled model; a test failure (and an empty model) when the scene is refused.
 inline sim::Model build(const sim::SceneSpec& spec) {
   auto compiled = sim::compile(spec);
-  if (auto* e = std::get_if<sim::SpecError>(&compiled)) {
-    ADD_FAILURE() << e->key << " " << e->message;
+  if (!compiled) {
+    ADD_FAILURE() << compiled.error().text();
     return {};
   }
-  return std::get<sim::Model>(compiled);
+  return std::move(compiled).value();
+}
+
+/// Runs `model` from `start` to its end, handing `each` a sample every `period` seconds (at
+/// exact times k·period, and the end).
+template <typename Each>
+sim::RunSummary runFrom(const sim::Model& model, const sim::State& start, double period, Each each) {
+  sim::Rollout rollout(model, start);
+  return sim::sampleRun(rollout, 1 / period, each);
 }
 
 }  // namespace testing_support

@@ -1,0 +1,36 @@
+#include "app/interrupt.hpp"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <csignal>
+
+#include "app/output.hpp"
+
+namespace app {
+namespace {
+
+std::atomic<int> received{0};
+
+extern "C" void onSignal(int signal) {
+  if (received.exchange(signal) != 0) {  // the second: no more waiting
+    removeTemporaryFilesNow();
+    ::_exit(128 + signal);
+  }
+}
+
+}  // namespace
+
+void installInterruptHandlers() {
+  struct sigaction action {};
+  action.sa_handler = onSignal;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+int interruptSignal() { return received.load(); }
+
+int interruptedStatus() { return 128 + received.load(); }
+
+}  // namespace app

@@ -1,0 +1,52 @@
+#include "app/json.hpp"
+
+#include <string>
+
+namespace app {
+
+nlohmann::json modelJson(const sim::Model& model) {
+  nlohmann::json j;
+  j["contact"] = {{"model", std::string(rb::nameOf(model.contact.model))},
+                  {"air_drag", model.contact.air_drag}};
+  if (model.contact.model != sim::ContactModel::Rolling) {
+    j["contact"]["stiffness"] = model.contact.stiffness;
+    j["contact"]["damping"] = model.contact.damping;
+    j["contact"]["friction"] = model.contact.friction;
+    j["contact"]["friction_law"] = std::string(rb::nameOf(model.contact.law));
+  }
+  j["integrator"] = std::string(rb::nameOf(model.integrator));
+  if (sim::isAdaptive(model.integrator))
+    j["tolerance"] = model.tolerance;
+  else
+    j["dt_s"] = model.dt;
+  j["duration_s"] = model.duration;
+  j["gravity"] = model.gravity;
+  j["initial"] = {{"spin", model.initial.spin},
+                  {"tilt_deg", {model.initial.tilt_x * 180 / M_PI, model.initial.tilt_y * 180 / M_PI}},
+                  {"height_m", model.initial.height}};
+  j["mass_kg"] = model.body->mass;
+  j["length_unit_m"] = model.length_unit;
+  return j;
+}
+
+nlohmann::json runJson(const sim::RunSummary& run) {
+  nlohmann::json j;
+  j["status"] = run.divergence ? "stopped" : run.stop_requested ? "interrupted" : "ok";
+  if (run.divergence) j["stopped_because"] = *run.divergence;
+  j["first_reversal_s"] = run.first_reversal_s ? nlohmann::json(*run.first_reversal_s) : nullptr;
+  j["reversals_s"] = run.reversals;
+  j["initial_spin"] = run.first.spin;
+  j["final_spin"] = run.last.spin;
+  j["final_tilt_deg"] = run.last.tilt_deg;
+  j["energy_j"] = {{"initial", run.first.energy}, {"final", run.last.energy}};
+  j["simulated_s"] = run.last.t;
+  j["steps"] = run.steps;
+  if (run.evaluations > 0) {
+    j["rejected_steps"] = run.rejected;
+    j["evaluations"] = run.evaluations;
+  }
+  j["wall_s"] = run.wall_s;
+  return j;
+}
+
+}  // namespace app

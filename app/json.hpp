@@ -1,0 +1,19 @@
+// JSON for the commands' machine-readable outputs, built with nlohmann::json (never by hand).
+// Non-finite numbers (an infinite largest stable step, a NaN) are written as null: that is what
+// nlohmann::json's dump() does with them, and the README documents it.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "sim/model.hpp"
+#include "sim/rollout.hpp"
+
+namespace app {
+
+/// The run's settings: contact, integrator and step or tolerance, duration, initial state.
+nlohmann::json modelJson(const sim::Model& model);
+/// What a run found: reversals, final spin and tilt, energy, steps, wall time, and why it
+/// stopped when it did.
+nlohmann::json runJson(const sim::RunSummary& run);
+
+}  // namespace app

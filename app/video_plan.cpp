@@ -1,0 +1,50 @@
+#include "app/video_plan.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace app {
+namespace {
+
+rb::Result<VideoPlan> check(const scene::VideoSpec& v, double duration) {
+  if (v.fps < 1 || v.fps > kMaxFps)
+    return rb::Error{"video.fps", "must be within 1 … " + std::to_string(kMaxFps) + ", not " +
+                                      std::to_string(v.fps)};
+  for (int side : v.size) {
+    if (side < 16 || side > 8192)
+      return rb::Error{"video.size", "sides must be within 16 … 8192 pixels, not " +
+                                         std::to_string(side)};
+    if (side % 2)
+      return rb::Error{"video.size",
+                       "sides must be even (H.264 video in yuv420p, and stills by the same rule), "
+                       "not " + std::to_string(side) + ": try " + std::to_string(side + 1)};
+  }
+  const auto view = rb::parseName<render::View>(v.view);
+  if (!view)
+    return rb::Error{"video.view",
+                     "must be " + rb::choices<render::View>() + ", not '" + v.view + "'"};
+  if (!(v.playback > 0) || !std::isfinite(v.playback) || v.playback > 1e6)
+    return rb::Error{"video.playback",
+                     "must be a speed > 0 (1 real time, 0.5 slow motion, 2 twice as fast)"};
+  VideoPlan plan;
+  plan.fps = v.fps;
+  plan.width = v.size[0];
+  plan.height = v.size[1];
+  plan.view = *view;
+  plan.playback = v.playback;
+  const double frames = std::round(duration / v.playback * v.fps);
+  if (frames > 1e7)
+    return rb::Error{"video.playback", "makes more than 10 million frames for the duration"};
+  plan.frames = std::max<std::int64_t>(1, static_cast<std::int64_t>(frames));
+  return plan;
+}
+
+}  // namespace
+
+rb::Result<VideoPlan> planVideo(const scene::Loaded& scene, double duration) {
+  auto plan = check(scene.video, duration);
+  if (!plan) return rb::Error{"", scene::describe(scene, plan.error())};
+  return plan;
+}
+
+}  // namespace app

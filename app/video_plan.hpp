@@ -1,0 +1,33 @@
+// What the drawing commands (render, still) make of a scene's `video` section: checked here,
+// never by the simulation. Frame k shows the simulated time t_k = k · playback / fps exactly
+// (playback is the speed as players mean it: 0.5 = slow motion), whatever the step.
+#pragma once
+
+#include <cstdint>
+
+#include "render/frame.hpp"
+#include "scene/loader.hpp"
+#include "util/result.hpp"
+
+namespace app {
+
+/// The largest frame rate accepted, frames per second of video.
+inline constexpr int kMaxFps = 240;
+
+struct VideoPlan {
+  int fps = 30;                  ///< frames per second of video
+  int width = 1280, height = 720;  ///< pixels, even (H.264 in yuv420p halves the chroma)
+  render::View view = render::View::Oblique;
+  double playback = 1;           ///< simulated seconds per second of video
+  std::int64_t frames = 0;       ///< round(duration / playback · fps), at least 1
+
+  /// Simulated time shown by frame k, s.
+  double frameTime(std::int64_t k) const { return static_cast<double>(k) * playback / fps; }
+};
+
+/// Checks the video section (fps 1 … 240, even sizes 16 … 8192, a known view, playback > 0)
+/// for a run of `duration` simulated seconds; an error is one line naming file, line and key
+/// (or the option that set it).
+rb::Result<VideoPlan> planVideo(const scene::Loaded& scene, double duration);
+
+}  // namespace app

@@ -1,0 +1,114 @@
+// A run the caller pulls (SPEC "Data flow"): a Rollout advances a Model from a state, step by
+// step, only as far as the caller asks, and gives the state at any time inside its last step —
+// so frames and telemetry samples fall at exact times whatever the step. It watches the run as
+// it goes: spin reversals, NaN or infinity, energy from nowhere, a rolling body on its rim, and
+// a stop request. It makes no threads and calls nothing back.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <stop_token>
+#include <string>
+#include <vector>
+
+#include "sim/model.hpp"
+#include "sim/telemetry.hpp"
+
+namespace sim {
+
+class AdaptiveStepper;
+
+/// What a run did so far.
+struct RunSummary {
+  Telemetry first, last;  ///< at the start, and at the last time sampled or reached
+  /// Spin reversals (SPEC; README "first reversal"), s: each is a zero crossing of n = ω·ẑ,
+  /// located on the interpolant between steps, after which n goes on to reach 1% of the
+  /// initial |n| with the new sign. The next reversal is counted from that sign.
+  std::vector<double> reversals;
+  std::optional<double> first_reversal_s;  ///< reversals.front(), when there is one
+  std::int64_t steps = 0;        ///< accepted steps
+  std::int64_t rejected = 0;     ///< adaptive: steps tried and rejected by error control
+  std::int64_t evaluations = 0;  ///< adaptive: evaluations of the equations of motion
+  double wall_s = 0;             ///< wall-clock time spent stepping, s
+  /// Set when the run stopped by itself: a quantity became NaN or infinite, the energy rose
+  /// beyond what the model can supply, or a rolling body tipped onto its rim. Names the
+  /// quantity, the time and the step.
+  std::optional<std::string> divergence;
+  bool stop_requested = false;  ///< stopped because the caller asked
+};
+
+class Rollout {
+ public:
+  /// Starts `model` from its initial state (SPEC "Initial state").
+  explicit Rollout(Model model);
+  /// Starts `model` from `start` (its t and step are kept).
+  Rollout(Model model, const State& start);
+  Rollout(Rollout&&) noexcept;
+  Rollout& operator=(Rollout&&) noexcept;
+  ~Rollout();
+
+  const Model& model() const { return model_; }
+  /// The latest state reached: the end of the last step.
+  const State& current() const { return current_; }
+  /// The end of the run: model.duration, s.
+  double endTime() const { return model_.duration; }
+
+  /// Steps until the state reaches time t (current().t ≥ t). False when the run has stopped
+  /// (divergence or stop request) before reaching it; then summary() says why.
+  bool advanceTo(double t);
+  /// The state at time t, which must lie within the last step [previous().t, current().t]
+  /// (what advanceTo(t) leaves): the steps' own states at their ends; between them the
+  /// integrator's dense output (adaptive) or a cubic Hermite interpolant (fixed steps), with
+  /// the quaternion renormalised and, under rolling, the state put back on the constraint.
+  State stateAt(double t) const;
+  /// Telemetry at time t (as stateAt); also becomes summary().last.
+  Telemetry sampleAt(double t);
+
+  /// Stops the run at its next step; safe from another thread.
+  void requestStop() { stop_.request_stop(); }
+  /// Stops the run when `token` is stopped (e.g. a std::jthread's or a signal handler's).
+  void stopWith(std::stop_token token) { external_ = std::move(token); }
+  bool stopped() const { return summary_.divergence.has_value() || summary_.stop_requested; }
+
+  const RunSummary& summary() const { return summary_; }
+
+ private:
+  void stepOnce();
+  void watch();
+  State interpolate(double t) const;
+  void locateReversal(double previous_spin, double spin);
+
+  Model model_;
+  State previous_, current_;
+  std::unique_ptr<AdaptiveStepper> adaptive_;
+  std::stop_source stop_;
+  std::stop_token external_;
+  RunSummary summary_;
+  // Rates at the ends of the last step for the Hermite interpolant, computed when first needed.
+  mutable bool have_rates_ = false;
+  mutable Eigen::Matrix<double, 13, 1> rates_previous_, rates_current_;
+  // Reversal bookkeeping: the sign being reversed from, and the last crossing to the other.
+  double reference_sign_ = 0;
+  std::optional<double> crossing_;
+  double energy_bound_ = 0;
+  std::int64_t check_every_ = 1;
+};
+
+/// Sample times of a run of `duration` s at `rate` samples per simulated second:
+/// t_k = k / rate for k = 0, 1, … while t_k ≤ duration, and the end itself when it is not one
+/// of them.
+std::vector<double> sampleTimes(double duration, double rate);
+
+/// Runs `rollout` to its end, pulling a sample at each of sampleTimes(end, rate) and handing it
+/// to `each` (may be empty). Returns the summary.
+template <typename Each>
+const RunSummary& sampleRun(Rollout& rollout, double rate, Each&& each) {
+  for (double t : sampleTimes(rollout.endTime(), rate)) {
+    if (!rollout.advanceTo(t)) break;
+    const Telemetry sample = rollout.sampleAt(t);
+    each(sample);
+  }
+  return rollout.summary();
+}
+
+}  // namespace sim

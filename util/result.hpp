@@ -1,0 +1,55 @@
+// One error convention for sim, scene, render and the app (as Jolt's Result<T>): a function that
+// can fail returns Result<T>, the value or an Error; one that returns nothing returns Status.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <variant>
+
+namespace rb {
+
+/// Why something cannot be done. `key` is the dotted scene key it concerns
+/// ("contact.stiffness"), or empty when the message stands alone; `message` says what is
+/// wrong and, where it helps, what would be right.
+struct Error {
+  std::string key;
+  std::string message;
+  /// "key message", or the message alone.
+  std::string text() const { return key.empty() ? message : key + " " + message; }
+};
+
+template <typename T>
+class [[nodiscard]] Result {
+ public:
+  Result(T value) : v_(std::move(value)) {}     // NOLINT: implicit by design
+  Result(Error error) : v_(std::move(error)) {}  // NOLINT: implicit by design
+
+  bool ok() const { return v_.index() == 0; }
+  explicit operator bool() const { return ok(); }
+  T& value() & { return std::get<0>(v_); }
+  const T& value() const& { return std::get<0>(v_); }
+  T&& value() && { return std::get<0>(std::move(v_)); }
+  const Error& error() const { return std::get<1>(v_); }
+  T* operator->() { return &value(); }
+  const T* operator->() const { return &value(); }
+
+ private:
+  std::variant<T, Error> v_;
+};
+
+/// Success, or the error: the result of something that returns nothing.
+class [[nodiscard]] Status {
+ public:
+  Status() = default;
+  Status(Error error) : error_(std::move(error)) {}  // NOLINT: implicit by design
+  static Status fail(std::string message) { return Error{"", std::move(message)}; }
+  bool ok() const { return !error_; }
+  explicit operator bool() const { return ok(); }
+  const Error& error() const { return *error_; }
+
+ private:
+  std::optional<Error> error_;
+};
+
+}  // namespace rb
