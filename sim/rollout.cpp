@@ -207,8 +207,13 @@ State Rollout::interpolate(double t) const {
 }
 
 State Rollout::stateAt(double t) const {
-  if (sameTime(t, current_.t)) return current_;
-  if (sameTime(t, previous_.t)) return previous_;
+  // A time within rounding of a step is that step's own state (stamped with the time asked).
+  for (const State* end : {&current_, &previous_}) {
+    if (!sameTime(t, end->t)) continue;
+    State s = *end;
+    s.t = t;
+    return s;
+  }
   State s = interpolate(t);
   s.q.normalize();
   if (model_.contact.model == ContactModel::Rolling) enforceRolling(model_, s);

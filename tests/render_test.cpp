@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -130,6 +132,7 @@ struct Probe {
   long long frames = 0;
   double duration = 0;
   std::string color;
+  std::vector<double> times;  ///< presentation time of each frame, s, ascending
 };
 
 // Reads the MP4 back with libavformat, counting the packets (frames) of its video stream.
@@ -150,10 +153,14 @@ Probe probe(const fs::path& path) {
     p.duration = format->duration / static_cast<double>(AV_TIME_BASE);
     AVPacket* packet = av_packet_alloc();
     while (av_read_frame(format, packet) >= 0) {
-      if (packet->stream_index == index) ++p.frames;
+      if (packet->stream_index == index) {
+        ++p.frames;
+        p.times.push_back(packet->pts * av_q2d(format->streams[index]->time_base));
+      }
       av_packet_unref(packet);
     }
     av_packet_free(&packet);
+    std::sort(p.times.begin(), p.times.end());
   }
   avformat_close_input(&format);
   return p;
@@ -220,6 +227,27 @@ TEST(Video, PlaybackScalesTheFrameCount) {
                        "-o " + fast.string()),
             0);
   EXPECT_EQ(probe(fast).frames, 5);  // 0.4 s / 2 × 25 fps
+}
+
+// Any frame rate from 1 to 240 works with every shipped scene, whatever its step (frames are
+// drawn at exact times between steps): 24, 30 and 60 fps give round(duration · fps) frames,
+// frame k stamped at k / fps in the MP4 (to the stream's time base).
+TEST(Video, CommonFrameRatesWorkForEveryShippedScene) {
+  for (const char* scene : {"rattleback", "kane-levinson", "seed-reversed", "seed-preferred"}) {
+    for (int fps : {24, 30, 60}) {
+      const fs::path video = scratch(std::string(scene) + "-" + std::to_string(fps) + ".mp4");
+      ASSERT_EQ(rattleback(std::string("render scenes/") + scene + ".yaml --duration 0.25 --fps " +
+                           std::to_string(fps) + " --size 160x90 -q -o " + video.string()),
+                0)
+          << scene << " at " << fps << " fps";
+      const Probe p = probe(video);
+      const long long expected = std::llround(0.25 * fps);
+      EXPECT_EQ(p.frames, expected) << scene << " at " << fps << " fps";
+      ASSERT_EQ(p.times.size(), static_cast<std::size_t>(p.frames));
+      for (std::size_t k = 0; k < p.times.size(); ++k)
+        EXPECT_NEAR(p.times[k], static_cast<double>(k) / fps, 1e-6) << scene << " frame " << k;
+    }
+  }
 }
 
 // --both writes the preferred, reversed and side-by-side videos; the side-by-side one is
