@@ -18,7 +18,13 @@ rb::Result<LoadedScene> loadScene(const std::string& path, const Overrides& o) {
   // A step or a tolerance from the command line replaces whichever of the two the file gives.
   if (o.dt) spec.simulation.tolerance = sim::kUnset;
   if (o.tolerance) spec.simulation.dt = sim::kUnset;
-  if ((o.dt || o.tolerance) && !o.integrator) spec.simulation.integrator.clear();
+  // …and an integrator of the other kind gives way to that kind's default (dopri5 for a
+  // tolerance, symplectic for a step) unless --integrator names one.
+  if (!o.integrator) {
+    const auto named = rb::parseName<sim::Integrator>(spec.simulation.integrator);
+    if (named && ((o.dt && sim::isAdaptive(*named)) || (o.tolerance && !sim::isAdaptive(*named))))
+      spec.simulation.integrator.clear();
+  }
   set(spec.simulation.dt, o.dt, "simulation.dt", "--dt");
   set(spec.simulation.tolerance, o.tolerance, "simulation.tolerance", "--tolerance");
   set(spec.simulation.integrator, o.integrator, "simulation.integrator", "--integrator");

@@ -8,6 +8,9 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 namespace fs = std::filesystem;
 
@@ -70,7 +73,8 @@ int lines(const std::string& text) { return static_cast<int>(std::count(text.beg
 }  // namespace
 
 TEST(Cli, HelpOnEveryCommand) {
-  for (const char* command : {"--help", "simulate --help", "analyze --help"}) {
+  for (const char* command : {"--help", "simulate --help", "analyze --help", "render --help",
+                              "still --help", "compare --help", "bench --help"}) {
     const Result r = rattleback(command);
     EXPECT_EQ(r.status, 0) << command;
     EXPECT_NE(r.out.find("Usage"), std::string::npos) << command;
@@ -236,4 +240,103 @@ TEST(Cli, BenchWritesTableCsvAndPlotEvenWithoutReversals) {
     if (!line.empty() && line[0] != '#') ++rows;
   EXPECT_EQ(rows, 1 + 2 * 2);  // header + (smooth, rolling) × 2 rungs of rk4
   EXPECT_GT(fs::file_size(png), 10000u);
+}
+
+namespace {
+
+// The scene block of the README's "Scene files" section, exactly as a user would copy it.
+std::string readmeScene() {
+  std::ifstream in(std::string(RATTLEBACK_SOURCE_DIR) + "/README.md");
+  std::stringstream s;
+  s << in.rdbuf();
+  const std::string text = s.str();
+  const auto section = text.find("## Scene files");
+  const auto start = text.find("```yaml\n", section);
+  const auto end = text.find("```\n", start + 8);
+  if (section == std::string::npos || start == std::string::npos || end == std::string::npos)
+    return "";
+  return text.substr(start + 8, end - start - 8);
+}
+
+// A scene as a new user writes it from the README: round numbers, no video section.
+const char* kUsersScene = R"(units: {length: 0.01}
+body:
+  shape: paraboloid
+  paraboloid: {a: 1.0, p: 0.5, q: 0.0, s: 0.03, top: 0.5}
+  dents: {scale: 0.45, at: [0.73, 4.50]}
+  grid: {dx: 0.05, dy: 0.05, dz: 0.05}
+  mass: 0.059
+contact: {model: rolling}
+initial: {spin: -5, tilt: [0.5, 0.5]}
+simulation: {integrator: rk4, dt: 1.0e-4, duration: 3}
+)";
+
+// Every command on a scene: simulate, analyze (text and JSON, parsed), still and render.
+void runsInEveryCommand(const fs::path& yaml) {
+  const fs::path csv = tempFile("s.csv"), png = tempFile("s.png"), mp4 = tempFile("s.mp4");
+  Result r = rattleback("simulate " + yaml.string() + " --duration 0.2 -o " + csv.string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(csv));
+  r = rattleback("analyze " + yaml.string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  r = rattleback("analyze --json " + yaml.string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NO_THROW((void)nlohmann::json::parse(r.out)) << r.out;
+  r = rattleback("still " + yaml.string() + " --t 0.1 --size 160x90 -q -o " + png.string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(png));
+  r = rattleback("render " + yaml.string() + " --duration 0.2 --size 160x90 -q -o " + mp4.string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(mp4));
+}
+
+}  // namespace
+
+// The README's example scene runs as written, in every command (its fps 30 with its step was
+// refused when frames had to fall on whole steps).
+TEST(UsersScenes, TheReadmeExampleRunsAsWritten) {
+  const std::string text = readmeScene();
+  ASSERT_NE(text.find("simulation:"), std::string::npos) << "no scene block in the README";
+  const fs::path yaml = tempFile("readme.yaml");
+  std::ofstream(yaml) << text;
+  runsInEveryCommand(yaml);
+}
+
+// A scene with no video section and round numbers (dt 1e-4, 30 fps by default) runs in every
+// command; the drawing commands use the video defaults.
+TEST(UsersScenes, ASceneWithoutVideoRunsInEveryCommand) {
+  const fs::path yaml = tempFile("mine.yaml");
+  std::ofstream(yaml) << kUsersScene;
+  runsInEveryCommand(yaml);
+}
+
+// Telemetry at any rate, above the step rate too: 3000 Hz with a 1 ms step, read with the
+// header on the first line, and the sidecar JSON parsed.
+TEST(UsersScenes, AnyRateAndTheSidecarParses) {
+  const fs::path yaml = tempFile("mine.yaml"), csv = tempFile("fast.csv");
+  std::ofstream(yaml) << kUsersScene;
+  const Result r = rattleback("simulate " + yaml.string() +
+                              " --dt 1e-3 --duration 0.01 --rate 3000 -o " + csv.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream in(csv);
+  std::string line;
+  std::vector<double> t;
+  std::getline(in, line);
+  while (std::getline(in, line)) t.push_back(std::stod(line.substr(0, line.find(','))));
+  ASSERT_EQ(t.size(), 31u);  // 0, 1/3000, …, 30/3000 = 0.01 s
+  for (std::size_t k = 0; k < t.size(); ++k) EXPECT_NEAR(t[k], k / 3000.0, 1e-12);
+  std::ifstream meta(csv.string() + ".json");
+  const nlohmann::json j = nlohmann::json::parse(meta);
+  EXPECT_EQ(j["rows"], 31);
+  EXPECT_EQ(j["columns"][0]["name"], "t");
+  EXPECT_EQ(j["model"]["integrator"], "rk4");
+  EXPECT_DOUBLE_EQ(j["rate_hz"].get<double>(), 3000.0);
+}
+
+// A mistyped command names the nearest one.
+TEST(Cli, AMistypedCommandSuggestsTheNearest) {
+  const Result r = rattleback("simulat " + scene("rattleback"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("did you mean 'simulate'"), std::string::npos) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
 }
