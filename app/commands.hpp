@@ -71,6 +71,13 @@ struct BenchArgs {
 /// Speed against error: prints a table, writes CSV and a log–log plot.
 int benchCommand(const BenchArgs& args);
 
+struct ReportArgs {
+  std::string dir;  ///< the folder the runs wrote into; index.html is written there
+  bool quiet = false;
+};
+/// Writes DIR/index.html from what the runs left in DIR.
+int reportCommand(const ReportArgs& args);
+
 struct CompareArgs {
   std::string actual, expected;
   int channel_tolerance = 2;        ///< 0–255 per channel

@@ -103,6 +103,12 @@ int main(int argc, char** argv) {
       ->delimiter(',');
   bench->add_flag("-q,--quiet", bench_args.quiet, "No table on stdout");
 
+  app::ReportArgs report_args;
+  CLI::App* report = cli.add_subcommand(
+      "report", "Write DIR/index.html: the videos, stills, plots and analysis found in DIR");
+  report->add_option("dir", report_args.dir, "Folder the runs wrote into (e.g. out)")->required();
+  report->add_flag("-q,--quiet", report_args.quiet, "Do not print the page's path");
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -118,6 +124,7 @@ int main(int argc, char** argv) {
   if (*simulate) return app::simulateCommand(sim_args);
   if (*analyze) return app::analyzeCommand(analyze_args);
   if (*bench) return app::benchCommand(bench_args);
+  if (*report) return app::reportCommand(report_args);
   for (auto [text, target] : {std::pair{&render_size, &render_args.overrides.size},
                               std::pair{&still_size, &still_args.overrides.size}}) {
     if (text->empty()) continue;

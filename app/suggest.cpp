@@ -36,7 +36,7 @@ std::string explainParseError(const CLI::App& cli, int argc, char** argv, const 
   std::string line = "'" + word + "' is not a command";
   if (!nearest.empty() && best <= std::max<std::size_t>(2, word.size() / 3))
     line += "; did you mean '" + nearest + "'?";
-  return line + " (commands: simulate, analyze, render, still, compare, bench; see --help)";
+  return line + " (commands: simulate, analyze, render, still, compare, bench, report; see --help)";
 }
 
 }  // namespace app

@@ -77,12 +77,15 @@ struct Output {
       images.close();
     });
   }
-  void stop() {
+  /// Lets the thread encode what is queued, then joins it.
+  void drain() {
     images.close();
-    if (thread.joinable()) {
-      thread.request_stop();
-      thread.join();
-    }
+    if (thread.joinable()) thread.join();
+  }
+  /// Stops the thread at its next frame, dropping what is queued, and joins it.
+  void abort() {
+    if (thread.joinable()) thread.request_stop();
+    drain();
   }
 };
 
@@ -225,7 +228,8 @@ int renderCommand(const RenderArgs& args) {
   // summary covers the same run as `simulate`.
   for (auto& run : runs)
     if (running && !interruptSignal()) run.advanceTo(run.endTime());
-  for (auto& o : outputs) o->stop();
+  const bool complete = running && !interruptSignal();
+  for (auto& o : outputs) complete ? o->drain() : o->abort();
   progress.finish();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

@@ -39,14 +39,14 @@ void checkMessage(const std::string& message) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   auto loaded = scene::loadString(text, "fuzz.yaml");
-  if (auto* e = std::get_if<scene::LoadError>(&loaded)) {
-    checkMessage(e->message);
+  if (!loaded) {
+    checkMessage(loaded.error().text());
     return 0;
   }
-  const scene::Loaded& scene = std::get<scene::Loaded>(loaded);
+  const scene::Loaded& scene = loaded.value();
   const sim::BodySpec& b = scene.spec.body;
   if (b.shape == "paraboloid" && tooManyPoints(scene.spec)) return 0;
   auto model = scene::loadModel(scene);
-  if (auto* e = std::get_if<scene::LoadError>(&model)) checkMessage(e->message);
+  if (!model) checkMessage(model.error().text());
   return 0;
 }

@@ -21,8 +21,15 @@ done
 echo "== telemetry and analysis"
 for scene in rattleback seed-preferred seed-reversed kane-levinson; do
   $rb analyze "scenes/$scene.yaml" > "out/$scene-analysis.txt"
+  $rb analyze "scenes/$scene.yaml" --json > "out/$scene-analysis.json"
   $rb simulate "scenes/$scene.yaml" -o "out/$scene.csv" --plot out -q
 done
+
+echo "== bench (speed against error, 3 s runs)"
+$rb bench -q -o out/bench.csv --plot out/bench.png --repeats 1 --rungs 4
+
+echo "== the report page"
+$rb report out
 
 echo
 echo "Written to $(pwd)/out/:"

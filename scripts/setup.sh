@@ -13,6 +13,7 @@ packages=(
   dpkg-dev
   clang libclang-rt-14-dev
   libboost-dev nlohmann-json3-dev
+  chromium chromium-driver python3-selenium
 )
 
 missing=()

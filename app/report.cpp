@@ -1,0 +1,250 @@
+// `rattleback report DIR`: one static page, DIR/index.html, that shows what the runs left in
+// DIR: each scene's videos (preferred and reversed side by side), stills, plots, and its
+// analysis beside the measured reversal; the bench plot; any other figure. Plain HTML and CSS,
+// no script, no network, every path relative to DIR so the folder can be moved or served.
+#include <algorithm>
+#include <cstring>
+#include <optional>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app/commands.hpp"
+#include "app/output.hpp"
+
+namespace app {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kVideoSuffixes[] = {"-preferred.mp4", "-reversed.mp4", "-both.mp4", ".mp4"};
+const char* kStillSuffixes[] = {"-oblique.png", "-above.png", "-front.png", "-side.png",
+                                "-follow.png"};
+const char* kPlotSuffixes[] = {"-spin.png", "-energy.png", "-tilt.png", "-normal.png"};
+const char* kDataSuffixes[] = {".csv.json", "-analysis.json", "-analysis.txt", ".csv"};
+
+std::string escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+  return s.size() > suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// The files of one scene (by the name before a known suffix), found in DIR.
+struct SceneFiles {
+  std::map<std::string, std::string> by_suffix;  // suffix → file name
+  bool has(const std::string& suffix) const { return by_suffix.count(suffix) > 0; }
+  const std::string& at(const std::string& suffix) const { return by_suffix.at(suffix); }
+};
+
+std::optional<nlohmann::json> readJson(const fs::path& path) {
+  std::ifstream in(path);
+  if (!in) return std::nullopt;
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception&) {
+    return std::nullopt;
+  }
+}
+
+std::string number(const nlohmann::json& j, const char* format) {
+  if (!j.is_number()) return "–";
+  char text[64];
+  std::snprintf(text, sizeof text, format, j.get<double>());
+  return text;
+}
+
+std::string spinWords(double spin) {
+  return spin > 0 ? "counter-clockwise" : spin < 0 ? "clockwise" : "no spin";
+}
+
+void writeVideos(std::ostream& out, const SceneFiles& f) {
+  const std::string poster = f.has("-oblique.png") ? f.at("-oblique.png") : "";
+  auto video = [&](const std::string& file, const std::string& caption) {
+    out << "<figure><video src=\"" << escape(file) << "\" muted loop playsinline controls "
+        << "preload=\"auto\"" << (poster.empty() ? "" : " poster=\"" + escape(poster) + "\"")
+        << "></video><figcaption>" << caption << "</figcaption></figure>\n";
+  };
+  if (f.has("-reversed.mp4") || f.has("-preferred.mp4")) {
+    out << "<div class=\"pair\">\n";
+    if (f.has("-reversed.mp4"))
+      video(f.at("-reversed.mp4"), "Spun the <b>reversing</b> way: it rocks, stops and spins back");
+    if (f.has("-preferred.mp4"))
+      video(f.at("-preferred.mp4"), "Spun the <b>preferred</b> way: it keeps turning");
+    out << "</div>\n";
+  }
+  if (f.has(".mp4")) video(f.at(".mp4"), "The scene as rendered");
+  if (f.has("-both.mp4"))
+    out << "<p><a href=\"" << escape(f.at("-both.mp4")) << "\">Both side by side in one video</a></p>\n";
+}
+
+// Theory (analyze --json) beside what the run measured (simulate's sidecar).
+void writeAnalysis(std::ostream& out, const fs::path& dir, const SceneFiles& f) {
+  std::optional<nlohmann::json> theory, run;
+  if (f.has("-analysis.json")) theory = readJson(dir / f.at("-analysis.json"));
+  if (f.has(".csv.json")) run = readJson(dir / f.at(".csv.json"));
+  if (!theory && !run) return;
+  out << "<table><tr><th>predicted (linearised rolling model)</th><th>measured (simulate)</th></tr>"
+         "<tr><td>";
+  if (theory) {
+    const nlohmann::json& t = *theory;
+    const std::string preferred = t.value("preferred", "");
+    out << "preferred direction: <b>" << escape(preferred == "ccw" ? "counter-clockwise" : "clockwise")
+        << "</b><br>growth rates at n = " << number(t["spin"], "%+g") << " rad/s: roll "
+        << number(t["growth_rates"]["roll"], "%+.3f") << " /s, pitch "
+        << number(t["growth_rates"]["pitch"], "%+.3f") << " /s<br>rocking at rest: roll "
+        << number(t["frequencies_hz"]["roll"], "%.2f") << " Hz, pitch "
+        << number(t["frequencies_hz"]["pitch"], "%.2f") << " Hz<br>misalignment "
+        << number(t["misalignment_deg"], "%+.2f") << "°; "
+        << (t.value("rest_stable", false) ? "stands upright" : "<b>cannot stand upright</b>");
+    if (f.has("-analysis.txt"))
+      out << "<br><a href=\"" << escape(f.at("-analysis.txt")) << "\">full analysis</a>";
+  }
+  out << "</td><td>";
+  if (run) {
+    const nlohmann::json& r = (*run)["result"];
+    const double spin = r.value("initial_spin", 0.0);
+    out << "spun " << number(r["initial_spin"], "%+.3g") << " rad/s (" << spinWords(spin) << ")<br>";
+    if (r["first_reversal_s"].is_number())
+      out << "first reversal at <b>" << number(r["first_reversal_s"], "%.3f") << " s</b>";
+    else
+      out << "no reversal in " << number(r["simulated_s"], "%g") << " s";
+    out << "<br>final spin " << number(r["final_spin"], "%+.3f") << " rad/s<br>energy "
+        << number(r["energy_j"]["initial"], "%.4g") << " J → " << number(r["energy_j"]["final"], "%.4g")
+        << " J";
+    if (f.has(".csv")) out << "<br><a href=\"" << escape(f.at(".csv")) << "\">telemetry (CSV)</a>";
+  }
+  out << "</td></tr></table>\n";
+}
+
+void writeImages(std::ostream& out, const SceneFiles& f, const char* const* suffixes,
+                 std::size_t count, const char* heading) {
+  std::vector<std::string> files;
+  for (std::size_t i = 0; i < count; ++i)
+    if (f.has(suffixes[i])) files.push_back(f.at(suffixes[i]));
+  if (files.empty()) return;
+  out << "<h3>" << heading << "</h3><div class=\"grid\">\n";
+  for (const std::string& file : files)
+    out << "<a href=\"" << escape(file) << "\"><img src=\"" << escape(file) << "\" alt=\""
+        << escape(file) << "\" loading=\"eager\"></a>\n";
+  out << "</div>\n";
+}
+
+const char* kStyle = R"(
+body{font-family:"DejaVu Sans",sans-serif;max-width:1300px;margin:1em auto;padding:0 1em;color:#222}
+h1{margin-bottom:0}section{border-top:1px solid #ccc;margin-top:1.5em}
+.pair{display:flex;gap:1em;flex-wrap:wrap}.pair figure{flex:1 1 500px;margin:0}
+video,img{width:100%;height:auto;background:#eee}figure{margin:0 0 1em}
+.grid{display:grid;grid-template-columns:repeat(auto-fill,minmax(300px,1fr));gap:.7em}
+table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:.4em .8em;vertical-align:top;text-align:left}
+)";
+
+}  // namespace
+
+int reportCommand(const ReportArgs& args) {
+  const fs::path dir = args.dir;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) {
+    std::cerr << args.dir << ": not a folder (give the folder the runs wrote into, e.g. out)\n";
+    return kBadInput;
+  }
+  // Group the folder's files by scene: the name before a known suffix.
+  std::map<std::string, SceneFiles> scenes;
+  std::vector<std::string> others;
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir, ec))
+    if (entry.is_regular_file()) names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  for (const std::string& name : names) {
+    if (name.empty() || name[0] == '.' || name == "index.html") continue;
+    bool claimed = false;
+    // Longer suffixes first (-preferred.mp4 before .mp4, .csv.json before .csv).
+    std::vector<std::string> suffixes;
+    for (const char* s : kVideoSuffixes) suffixes.push_back(s);
+    for (const char* s : kDataSuffixes) suffixes.push_back(s);
+    for (const char* s : kStillSuffixes) suffixes.push_back(s);
+    for (const char* s : kPlotSuffixes) suffixes.push_back(s);
+    for (const std::string& suffix : suffixes)
+      if (!claimed && endsWith(name, suffix)) {
+        scenes[name.substr(0, name.size() - suffix.size())].by_suffix[suffix] = name;
+        claimed = true;
+      }
+    if (!claimed && (endsWith(name, ".png") || endsWith(name, ".csv"))) others.push_back(name);
+  }
+
+  // A CSV of its own (bench.csv, a sweep's table) is no scene: it goes with the other files.
+  for (auto it = scenes.begin(); it != scenes.end();) {
+    if (it->second.by_suffix.size() == 1 && it->second.has(".csv")) {
+      others.push_back(it->second.at(".csv"));
+      it = scenes.erase(it);
+    } else {
+      ++it;
+    }
+  }
+  std::sort(others.begin(), others.end());
+  const std::string path = (dir / "index.html").string();
+  auto opened = AtomicOutput::open(path);
+  if (!opened) {
+    std::cerr << opened.error().text() << "\n";
+    return kBadInput;
+  }
+  std::ostream& out = opened->stream();
+  out << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+         "<meta name=\"viewport\" content=\"width=device-width\">"
+         "<title>rattleback: results</title><style>"
+      << kStyle << "</style></head><body>\n<h1>rattleback: results</h1>\n"
+      << "<p>What the runs left in this folder, by scene. Made by rattleback " RATTLEBACK_VERSION
+         " (<code>rattleback report</code>).</p>\n";
+  // Scenes with videos first, then the rest, each in name order.
+  std::vector<std::string> order;
+  for (const auto& [name, files] : scenes)
+    if (files.has("-reversed.mp4") || files.has("-preferred.mp4") || files.has(".mp4")) order.push_back(name);
+  for (const auto& [name, files] : scenes)
+    if (std::find(order.begin(), order.end(), name) == order.end()) order.push_back(name);
+  for (const std::string& name : order) {
+    const SceneFiles& f = scenes[name];
+    out << "<section id=\"" << escape(name) << "\"><h2>" << escape(name) << "</h2>\n";
+    writeVideos(out, f);
+    writeAnalysis(out, dir, f);
+    writeImages(out, f, kStillSuffixes, std::size(kStillSuffixes), "Stills");
+    writeImages(out, f, kPlotSuffixes, std::size(kPlotSuffixes), "Against time");
+    out << "</section>\n";
+  }
+  if (!others.empty()) {
+    out << "<section id=\"other\"><h2>Benchmarks, sweeps and other figures</h2><div class=\"grid\">\n";
+    for (const std::string& name : others) {
+      if (endsWith(name, ".png"))
+        out << "<a href=\"" << escape(name) << "\"><img src=\"" << escape(name) << "\" alt=\""
+            << escape(name) << "\"></a>\n";
+      else
+        out << "<p><a href=\"" << escape(name) << "\">" << escape(name) << "</a></p>\n";
+    }
+    out << "</div></section>\n";
+  }
+  out << "</body></html>\n";
+  if (auto e = opened->commit(); !e) {
+    std::cerr << e.error().text() << "\n";
+    return kBadInput;
+  }
+  if (!args.quiet) std::printf("%s\n", path.c_str());
+  return kOk;
+}
+
+}  // namespace app

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# The report page in a real browser: a short run of the default scene (both spins, stills,
+# plots, analysis, a tiny bench) into a scratch folder, `rattleback report` over it, and the page
+# checked in headless Chromium by check_report.py. Usage: report_test.sh RATTLEBACK_BINARY
+set -euo pipefail
+rb=$1
+source_dir=$(cd "$(dirname "$0")/../.." && pwd)
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+cd "$source_dir"
+scene=scenes/rattleback.yaml
+# 2 s at 25 fps and speed 1: 50 frames, 2.00 s of video.
+"$rb" render "$scene" --both --duration 2 --size 320x180 -q -o "$dir/rattleback.mp4"
+for view in oblique above; do "$rb" still "$scene" --view "$view" --t 1 --size 320x180 -q -o "$dir/rattleback-$view.png"; done
+"$rb" simulate "$scene" --duration 2 -o "$dir/rattleback.csv" --plot "$dir" -q
+"$rb" analyze "$scene" > "$dir/rattleback-analysis.txt"
+"$rb" analyze "$scene" --json > "$dir/rattleback-analysis.json"
+"$rb" bench "$scene" --duration 0.5 --rungs 1 --repeats 1 --models rolling --integrators rk4 -q \
+  -o "$dir/bench.csv" --plot "$dir/bench.png"
+"$rb" report "$dir" -q
+test -s "$dir/index.html"
+# Relative paths only: the page must not name the folder it was made in.
+if grep -q "$dir" "$dir/index.html"; then echo "FAIL: index.html holds absolute paths"; exit 1; fi
+/usr/bin/python3 "$source_dir/tests/browser/check_report.py" "$dir" 2.0
