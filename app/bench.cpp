@@ -24,6 +24,10 @@ namespace {
 
 // Spin samples every 4 ms (at exact times, whatever the step), so runs compare sample by sample.
 constexpr double kSampleRate = 250;  // Hz
+// Wall time one run may take, s: a rung past it (an adaptive ladder on a tumbling body with
+// Coulomb friction takes millions of steps at tight tolerances) stops there, is listed with the
+// reason, and the ladder's tighter rungs are skipped.
+constexpr double kRunBudget = 10;
 // The adaptive ladder (dopri5) when --tolerances is not given: 1e-4 … 1e-10.
 constexpr double kTolerances[] = {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10};
 // The points model visits every bottom point each step; past this many it is left out unless
@@ -65,11 +69,20 @@ Trace runOnce(const sim::SceneSpec& spec, const std::shared_ptr<const sim::Body>
   }
   const sim::Model& model = compiled.value();
   sim::Rollout rollout(model);
-  const sim::RunSummary& summary = sim::sampleRun(
-      rollout, kSampleRate, [&](const sim::Telemetry& t) { trace.samples.push_back(t); });
+  for (double t : sim::sampleTimes(model.duration, kSampleRate)) {
+    if (!rollout.advanceTo(t)) break;
+    trace.samples.push_back(rollout.sampleAt(t));
+    if (rollout.summary().wall_s > kRunBudget) break;
+  }
+  const sim::RunSummary& summary = rollout.summary();
   trace.steps = summary.steps;
   trace.rejected = summary.rejected;
-  if (summary.divergence) {
+  if (!summary.divergence && summary.wall_s > kRunBudget && rollout.current().t < model.duration) {
+    char text[128];
+    std::snprintf(text, sizeof text, "stopped at %.3g s: over the %g s budget of one run",
+                  rollout.current().t, kRunBudget);
+    trace.failure = trace.brief = text;
+  } else if (summary.divergence) {
     trace.failure = "stopped: " + *summary.divergence;
     const std::string& why = *summary.divergence;
     char text[96];
@@ -80,7 +93,7 @@ Trace runOnce(const sim::SceneSpec& spec, const std::shared_ptr<const sim::Body>
     trace.brief = text;
   }
   trace.reversal = summary.first_reversal_s;
-  trace.wall_per_simulated = summary.wall_s / model.duration;
+  trace.wall_per_simulated = summary.wall_s / rollout.current().t;
   trace.us_per_step = 1e6 * summary.wall_s / std::max<std::int64_t>(1, summary.steps);
   return trace;
 }
@@ -295,6 +308,7 @@ int benchCommand(const BenchArgs& args) {
         // its dopri5 rows only when asked for by name.
         if (adaptive && model == "points" && args.integrators.empty()) continue;
         const int rungs = adaptive ? static_cast<int>(tolerances.size()) : args.rungs;
+        bool over_budget = false;
         for (int rung = 0; rung < rungs; ++rung) {
           Row row;
           row.scene = name;
@@ -312,10 +326,17 @@ int benchCommand(const BenchArgs& args) {
             spec.simulation.dt = row.dt;
             spec.simulation.tolerance = sim::kUnset;
           }
+          if (over_budget) {
+            row.status = row.brief = "skipped: the rung before ran over the budget of one run";
+            if (!args.quiet) printRow(row);
+            rows.push_back(row);
+            continue;
+          }
           std::vector<double> costs;
           Trace first;
           for (int r = 0; r < args.repeats; ++r) {
             Trace t = runOnce(spec, body);
+            if (t.failure && t.failure->find("budget") != std::string::npos) over_budget = true;
             if (t.failure && t.samples.empty()) {  // refused: nothing ran
               row.status = *t.failure;
               row.brief = t.brief;

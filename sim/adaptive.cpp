@@ -70,7 +70,10 @@ struct AdaptiveStepper::Impl {
   // The equations of motion in scaled variables (Odeint's system signature).
   void rates(const Vector& y, Vector& dydt, double t_scaled) {
     ++evaluations;
-    const State s = unpack(y, scales, t_scaled * scales.time);
+    State s = unpack(y, scales, t_scaled * scales.time);
+    // The integrator keeps |q| = 1 only to its tolerance; the rates must not depend on that
+    // drift (q̇ = ½ ω ⊗ q̂ still keeps |q| constant: q · q̇ = 0).
+    s.q.normalize();
     const Rates r = ratesOf(model, s);
     const double k_x = scales.time / scales.length;
     for (int i = 0; i < 3; ++i) {

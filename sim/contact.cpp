@@ -6,9 +6,7 @@ namespace sim {
 
 Kinematics kinematicsOf(const Model& model, const State& s) {
   Kinematics k;
-  // The rotation of the unit quaternion: an adaptive integrator keeps |q| = 1 only to its
-  // tolerance, and the rates must not depend on that drift.
-  k.R = s.q.normalized().toRotationMatrix();
+  k.R = s.q.toRotationMatrix();  // q is a unit quaternion (the adaptive stepper normalises its own)
   k.x_world = s.x_world;
   k.v_world = s.v_world;
   k.w_world = angularVelocity(*model.body, k.R, s.L_world);
