@@ -13,6 +13,7 @@
 #include <map>
 
 #include "app/commands.hpp"
+#include "app/interrupt.hpp"
 #include "app/output.hpp"
 #include "app/plot.hpp"
 #include "scene/loader.hpp"
@@ -191,6 +192,7 @@ double energyDrift(const Trace& t) {
 }  // namespace
 
 int benchCommand(const BenchArgs& args) {
+  installInterruptHandlers();
   std::vector<std::string> scenes = args.scenes;
   if (scenes.empty()) scenes = {"scenes/rattleback.yaml", "scenes/seed-reversed.yaml"};
   for (const std::string& m : args.models)
@@ -325,6 +327,10 @@ int benchCommand(const BenchArgs& args) {
             row.dt = topStep(model) / std::pow(2.0, rung);
             spec.simulation.dt = row.dt;
             spec.simulation.tolerance = sim::kUnset;
+          }
+          if (interruptSignal()) {
+            std::cerr << "bench: interrupted; no table written\n";
+            return interruptedStatus();
           }
           if (over_budget) {
             row.status = row.brief = "skipped: the rung before ran over the budget of one run";

@@ -24,6 +24,8 @@ namespace {
 namespace fs = std::filesystem;
 
 const char* kVideoSuffixes[] = {"-preferred.mp4", "-reversed.mp4", "-both.mp4", ".mp4"};
+// First frames of the reversed and preferred videos, used as their posters.
+const char* kPosterSuffixes[] = {"-reversed.png", "-preferred.png"};
 const char* kStillSuffixes[] = {"-oblique.png", "-above.png", "-front.png", "-side.png",
                                 "-follow.png"};
 const char* kPlotSuffixes[] = {"-spin.png", "-energy.png", "-tilt.png", "-normal.png"};
@@ -76,8 +78,11 @@ std::string spinWords(double spin) {
 }
 
 void writeVideos(std::ostream& out, const SceneFiles& f) {
-  const std::string poster = f.has("-oblique.png") ? f.at("-oblique.png") : "";
-  auto video = [&](const std::string& file, const std::string& caption) {
+  // A video's poster is its own first frame (NAME-reversed.png for NAME-reversed.mp4), when the
+  // run left one; otherwise the browser shows the video's first frame once loaded.
+  auto video = [&](const std::string& file, const std::string& poster_suffix,
+                   const std::string& caption) {
+    const std::string poster = f.has(poster_suffix) ? f.at(poster_suffix) : "";
     out << "<figure><video src=\"" << escape(file) << "\" muted loop playsinline controls "
         << "preload=\"auto\"" << (poster.empty() ? "" : " poster=\"" + escape(poster) + "\"")
         << "></video><figcaption>" << caption << "</figcaption></figure>\n";
@@ -85,12 +90,13 @@ void writeVideos(std::ostream& out, const SceneFiles& f) {
   if (f.has("-reversed.mp4") || f.has("-preferred.mp4")) {
     out << "<div class=\"pair\">\n";
     if (f.has("-reversed.mp4"))
-      video(f.at("-reversed.mp4"), "Spun the <b>reversing</b> way: it rocks, stops and spins back");
+      video(f.at("-reversed.mp4"), "-reversed.png",
+            "Spun the <b>reversing</b> way: it rocks, stops and spins back");
     if (f.has("-preferred.mp4"))
-      video(f.at("-preferred.mp4"), "Spun the <b>preferred</b> way: it keeps turning");
+      video(f.at("-preferred.mp4"), "-preferred.png", "Spun the <b>preferred</b> way: it keeps turning");
     out << "</div>\n";
   }
-  if (f.has(".mp4")) video(f.at(".mp4"), "The scene as rendered");
+  if (f.has(".mp4")) video(f.at(".mp4"), "-oblique.png", "The scene as rendered");
   if (f.has("-both.mp4"))
     out << "<p><a href=\"" << escape(f.at("-both.mp4")) << "\">Both side by side in one video</a></p>\n";
 }
@@ -179,6 +185,7 @@ int reportCommand(const ReportArgs& args) {
     std::vector<std::string> suffixes;
     for (const char* s : kVideoSuffixes) suffixes.push_back(s);
     for (const char* s : kDataSuffixes) suffixes.push_back(s);
+    for (const char* s : kPosterSuffixes) suffixes.push_back(s);
     for (const char* s : kStillSuffixes) suffixes.push_back(s);
     for (const char* s : kPlotSuffixes) suffixes.push_back(s);
     for (const std::string& suffix : suffixes)

@@ -157,6 +157,7 @@ nlohmann::json sidecar(const SimulateArgs& args, const sim::Model& model, double
 }  // namespace
 
 int simulateCommand(const SimulateArgs& args) {
+  installInterruptHandlers();
   Overrides overrides;
   overrides.duration = args.duration;
   overrides.dt = args.dt;
@@ -205,7 +206,6 @@ int simulateCommand(const SimulateArgs& args) {
   if (args.verbose) describeModel(model, args.scene);
   file.stream() << header();
 
-  installInterruptHandlers();
   std::int64_t rows = 0;
   const std::vector<double> times = sim::sampleTimes(model.duration, rate);
   Progress progress("simulate", static_cast<std::int64_t>(times.size()), !args.quiet);

@@ -138,6 +138,7 @@ rb::Status checkEncoderOptions(const RenderArgs& args) {
 }  // namespace
 
 int renderCommand(const RenderArgs& args) {
+  installInterruptHandlers();
   if (auto ok = checkEncoderOptions(args); !ok) {
     std::cerr << ok.error().text() << "\n";
     return kBadInput;
@@ -206,7 +207,6 @@ int renderCommand(const RenderArgs& args) {
     renderers.push_back(std::move(std::get<std::unique_ptr<render::Renderer>>(created)));
   }
 
-  installInterruptHandlers();
   for (auto& o : outputs) o->start();
   Progress progress("render", plan.frames, !args.quiet);
   const auto start = std::chrono::steady_clock::now();
@@ -280,6 +280,7 @@ int renderCommand(const RenderArgs& args) {
 }
 
 int stillCommand(const StillArgs& args) {
+  installInterruptHandlers();
   const Overrides& o = args.overrides;
   if (!(args.t >= 0) || !std::isfinite(args.t)) {
     std::cerr << "--t must be a time ≥ 0 s\n";
@@ -319,7 +320,6 @@ int stillCommand(const StillArgs& args) {
   auto& renderer = *std::get<std::unique_ptr<render::Renderer>>(created);
   // Run to the still's time, keeping the spin at each earlier video frame for the inset, as
   // the video would have drawn it.
-  installInterruptHandlers();
   sim::Rollout run(model);
   for (std::int64_t k = 0; plan.frameTime(k) < args.t; ++k) {
     const double t = plan.frameTime(k);
@@ -344,6 +344,15 @@ int stillCommand(const StillArgs& args) {
 }
 
 int compareCommand(const CompareArgs& args) {
+  if (args.channel_tolerance < 0 || args.channel_tolerance > 255) {
+    std::cerr << "--tolerance: a channel difference within 0 … 255, not " << args.channel_tolerance << "\n";
+    return kBadInput;
+  }
+  if (!(args.pixel_fraction >= 0 && args.pixel_fraction <= 1)) {
+    std::cerr << "--pixels: a fraction of the pixels within 0 … 1 (0.002 = 0.2 %), not "
+              << args.pixel_fraction << "\n";
+    return kBadInput;
+  }
   render::Image a, b;
   for (auto [path, image] : {std::pair{&args.actual, &a}, std::pair{&args.expected, &b}}) {
     if (auto e = render::readPng(*path, *image)) {
@@ -353,7 +362,10 @@ int compareCommand(const CompareArgs& args) {
   }
   const render::Comparison c = render::compareImages(a, b, args.channel_tolerance);
   if (!c.same_size) {
-    std::printf("differ: sizes %dx%d and %dx%d\n", a.width, a.height, b.width, b.height);
+    std::printf("differ: the images have different sizes, %dx%d and %dx%d, so no pixel was "
+                "compared%s\n",
+                a.width, a.height, b.width, b.height,
+                args.diff.empty() ? "" : " and no diff image was written");
     return 1;
   }
   const bool same = c.fraction() <= args.pixel_fraction;

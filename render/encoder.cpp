@@ -75,7 +75,13 @@ std::variant<std::unique_ptr<VideoEncoder>, std::string> VideoEncoder::open(
   const auto status = std::filesystem::status(path, ec);
   if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
     return path + ": is not a regular file (an MP4 must be written to a file)";
-  s.temp = path + ".partial-" + std::to_string(::getpid()) + ".mp4";
+  // Hidden and not ending in .mp4 (no *.mp4 glob takes a half-written file); the format is
+  // named explicitly below, so the name need not say it.
+  {
+    const std::filesystem::path p(path);
+    s.temp = (p.parent_path() / ("." + p.filename().string() + ".part-" + std::to_string(::getpid())))
+                 .string();
+  }
 
   av_log_set_level(AV_LOG_ERROR);
   if (avformat_alloc_output_context2(&s.format, nullptr, "mp4", s.temp.c_str()) < 0)

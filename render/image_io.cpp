@@ -27,7 +27,12 @@ std::optional<std::string> writePng(const std::string& path, const Image& image)
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
   const bool special = std::filesystem::exists(status) && !std::filesystem::is_regular_file(status);
-  const std::string temp = special ? path : path + ".partial-" + std::to_string(::getpid());
+  const std::filesystem::path target(path);
+  const std::string temp =
+      special ? path
+              : (target.parent_path() / ("." + target.filename().string() + ".part-" +
+                                         std::to_string(::getpid())))
+                    .string();
   auto fail = [&](const std::string& why) -> std::optional<std::string> {
     if (!special) std::remove(temp.c_str());
     return path + ": " + why;

@@ -14,6 +14,10 @@ echo "== videos of scenes/rattleback.yaml (spun both ways)"
 $rb render scenes/rattleback.yaml --both -o out/rattleback.mp4
 
 echo "== stills"
+# Posters for the report page: each video's first frame (spun -5 it reverses, +5 it does not,
+# as render --both above named them).
+$rb still scenes/rattleback.yaml --spin -5 -o out/rattleback-reversed.png -q
+$rb still scenes/rattleback.yaml --spin 5 -o out/rattleback-preferred.png -q
 for view in oblique above front side; do
   $rb still scenes/rattleback.yaml --view "$view" --t 1.0 -o "out/rattleback-$view.png" -q
   $rb still scenes/seed-reversed.yaml --view "$view" -o "out/seed-$view.png" -q

@@ -23,7 +23,8 @@ struct RunSummary {
   Telemetry first, last;  ///< at the start, and at the last time sampled or reached
   /// Spin reversals (SPEC; README "first reversal"), s: each is a zero crossing of n = ω·ẑ,
   /// located on the interpolant between steps, after which n goes on to reach 1% of the
-  /// initial |n| with the new sign. The next reversal is counted from that sign.
+  /// initial |n| with the new sign, at least 0.5 s after the body last left the floor (no
+  /// reversals in the air or while it bounces). The next is counted from the new sign.
   std::vector<double> reversals;
   std::optional<double> first_reversal_s;  ///< reversals.front(), when there is one
   std::int64_t steps = 0;        ///< accepted steps
@@ -90,6 +91,7 @@ class Rollout {
   // Reversal bookkeeping: the sign being reversed from, and the last crossing to the other.
   double reference_sign_ = 0;
   std::optional<double> crossing_;
+  double last_airborne_ = -1e300;  ///< last time the floor carried nothing, s
   double energy_bound_ = 0;
   std::int64_t check_every_ = 1;
 };

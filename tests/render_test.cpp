@@ -2,6 +2,9 @@
 // and layout, --both naming, failures that leave nothing behind, and `compare`.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
 
 #include <algorithm>
 #include <cmath>
@@ -298,4 +301,50 @@ TEST(Compare, SameAndDifferentImages) {
   EXPECT_TRUE(fs::exists(diff));
   // Within a looser allowance (5% of pixels) the same pair passes.
   EXPECT_EQ(rattleback("compare " + changed.string() + " " + golden.string() + " --pixels 0.05"), 0);
+  // Options out of range are bad input, not a silent pass.
+  EXPECT_EQ(rattleback("compare " + changed.string() + " " + golden.string() + " --tolerance 300"), 2);
+  EXPECT_EQ(rattleback("compare " + changed.string() + " " + golden.string() + " --pixels 2"), 2);
+  // Different sizes differ, and the message says no diff was written.
+  const fs::path small = scratch("small.png"), out = scratch("compare.txt");
+  ASSERT_EQ(rattleback("still scenes/seed-reversed.yaml --size 160x90 -q -o " + small.string()), 0);
+  const std::string command = "cd " + kSource.string() + " && " + RATTLEBACK_BIN + " compare " +
+                              small.string() + " " + golden.string() + " --diff " +
+                              scratch("none.png").string() + " >" + out.string();
+  EXPECT_EQ(WEXITSTATUS(std::system(command.c_str())), 1);
+  std::ifstream in(out);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_NE(line.find("different sizes, 160x90 and 320x180"), std::string::npos) << line;
+  EXPECT_NE(line.find("no diff image was written"), std::string::npos) << line;
+  EXPECT_FALSE(fs::exists(scratch("none.png")));
+}
+
+// Ctrl-C (SIGINT) or SIGTERM in the middle of a render: exit 130 / 143, the temporary file is
+// gone, and an existing video of the same name is kept.
+TEST(Video, AnInterruptKeepsTheOldFileAndLeavesNoTemporary) {
+  for (int signal : {SIGINT, SIGTERM}) {
+    const fs::path video = scratch("kept.mp4");
+    std::ofstream(video) << "precious";
+    const std::string command = "cd " + kSource.string() + " && exec " + RATTLEBACK_BIN +
+                                " render scenes/rattleback.yaml --size 320x180 -q -o " +
+                                video.string() + " 2>/dev/null";
+    const pid_t child = fork();
+    if (child == 0) {
+      execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    usleep(700000);  // well into its 200 frames (about 8 s of work)
+    kill(child, signal);
+    int status = 0;
+    waitpid(child, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status)) << "killed outright by signal " << signal;
+    EXPECT_EQ(WEXITSTATUS(status), 128 + signal);
+    std::ifstream in(video);
+    std::string content;
+    in >> content;
+    EXPECT_EQ(content, "precious");
+    for (const auto& entry : fs::directory_iterator(video.parent_path()))
+      EXPECT_EQ(entry.path().filename().string().find(".part"), std::string::npos)
+          << entry.path();
+  }
 }

@@ -11,6 +11,7 @@ cd "$source_dir"
 scene=scenes/rattleback.yaml
 # 2 s at 25 fps and speed 1: 50 frames, 2.00 s of video.
 "$rb" render "$scene" --both --duration 2 --size 320x180 -q -o "$dir/rattleback.mp4"
+"$rb" still "$scene" --spin -5 --size 320x180 -q -o "$dir/rattleback-reversed.png"
 for view in oblique above; do "$rb" still "$scene" --view "$view" --t 1 --size 320x180 -q -o "$dir/rattleback-$view.png"; done
 "$rb" simulate "$scene" --duration 2 -o "$dir/rattleback.csv" --plot "$dir" -q
 "$rb" analyze "$scene" > "$dir/rattleback-analysis.txt"
