@@ -24,8 +24,10 @@ std::array<std::atomic<bool>, kMaxTemporaries> temporary_used{};
 
 std::string temporaryPath(const std::string& path) {
   const fs::path p(path);
-  return (p.parent_path() / ("." + p.filename().string() + ".part-" + std::to_string(::getpid())))
-      .string();
+  std::string name = ".";
+  name += p.filename().string();
+  name += ".part-" + std::to_string(::getpid());
+  return (p.parent_path() / name).string();
 }
 
 rb::Status makeParentFolder(const std::string& path) {

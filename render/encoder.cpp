@@ -79,8 +79,10 @@ std::variant<std::unique_ptr<VideoEncoder>, std::string> VideoEncoder::open(
   // named explicitly below, so the name need not say it.
   {
     const std::filesystem::path p(path);
-    s.temp = (p.parent_path() / ("." + p.filename().string() + ".part-" + std::to_string(::getpid())))
-                 .string();
+    std::string name = ".";
+    name += p.filename().string();
+    name += ".part-" + std::to_string(::getpid());
+    s.temp = (p.parent_path() / name).string();
   }
 
   av_log_set_level(AV_LOG_ERROR);

@@ -28,11 +28,10 @@ std::optional<std::string> writePng(const std::string& path, const Image& image)
   const auto status = std::filesystem::status(path, ec);
   const bool special = std::filesystem::exists(status) && !std::filesystem::is_regular_file(status);
   const std::filesystem::path target(path);
-  const std::string temp =
-      special ? path
-              : (target.parent_path() / ("." + target.filename().string() + ".part-" +
-                                         std::to_string(::getpid())))
-                    .string();
+  std::string name = ".";
+  name += target.filename().string();
+  name += ".part-" + std::to_string(::getpid());
+  const std::string temp = special ? path : (target.parent_path() / name).string();
   auto fail = [&](const std::string& why) -> std::optional<std::string> {
     if (!special) std::remove(temp.c_str());
     return path + ": " + why;
