@@ -120,10 +120,10 @@ TEST(Time, APoseBetweenStepsMatchesARunThatStepsOntoIt) {
   EXPECT_LT(poseDistance(between, landing), 1e-8);
 }
 
-// The reversal detector finds the zero crossing on the interpolant, not by a straight line
-// between steps: rk4 reversal times at dt and dt/2 agree to far less than dt (1 ms): measured
-// 5.0 µs at 2 ms vs 1 ms; we allow 50 µs, 1/20 of the finer step (a straight line between
-// samples 0.1 s apart, as the old detector drew, would be off by milliseconds).
+// The reversal time is the zero crossing of n found on the states between steps: rk4 reversal
+// times at dt and dt/2 agree to far less than dt (1 ms): measured 5.0 µs at 2 ms vs 1 ms; we
+// allow 50 µs, 1/20 of the finer step. (A detector that reported the step after the crossing
+// would be off by up to a whole step.)
 TEST(Time, ReversalTimesAgreeToFarLessThanTheStep) {
   const sim::SceneSpec spec = parse(kRolling);
   const auto coarse = runFrom(withStep(spec, "rk4", 2e-3), sim::initialState(build(spec)), 0.1,
