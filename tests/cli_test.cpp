@@ -360,3 +360,30 @@ TEST(Cli, AMistypedCommandSuggestsTheNearest) {
   EXPECT_NE(r.err.find("did you mean 'simulate'"), std::string::npos) << r.err;
   EXPECT_EQ(lines(r.err), 1) << r.err;
 }
+
+// Where the default out/ cannot be made (here a file called `out` is in the way), the command
+// says so in one line and exits 2 (it used to abort with "terminate called …"); and an -o into
+// folders that do not exist yet makes them, as the default out/ is made.
+TEST(Cli, OutputFoldersAreMadeOrRefusedInOneLine) {
+  const fs::path dir = scratchDir() / "blocked";
+  fs::create_directories(dir);
+  std::ofstream(dir / "out") << "a file, not a folder";
+  const std::string command = "cd " + dir.string() + " && " + RATTLEBACK_BIN + " simulate " +
+                              scene("rattleback") + " --duration 0.1 -q 2>" +
+                              (dir / "err").string();
+  const int raw = std::system(command.c_str());
+  EXPECT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 2) << raw;
+  std::ifstream in(dir / "err");
+  std::stringstream err;
+  err << in.rdbuf();
+  EXPECT_EQ(lines(err.str()), 1) << err.str();
+  EXPECT_NE(err.str().find("out/rattleback.csv: cannot make its folder out"), std::string::npos)
+      << err.str();
+
+  const fs::path nested = scratchDir() / "new" / "deeper" / "x.csv";
+  fs::remove_all(scratchDir() / "new");
+  const Result made = rattleback("simulate " + scene("rattleback") + " --duration 0.1 -q -o " +
+                                 nested.string());
+  EXPECT_EQ(made.status, 0) << made.err;
+  EXPECT_TRUE(fs::exists(nested));
+}
