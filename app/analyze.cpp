@@ -104,7 +104,10 @@ void printTheory(const sim::Model& model, double spin) {
   }
   const sim::Linearisation l = sim::linearise(model, spin);
   std::printf("eigenvalues      at n = %g rad/s:", spin);
-  for (const auto& lambda : l.eigenvalues) std::printf(" %.4g%+.4gi", lambda.real(), lambda.imag());
+  double largest = 0;
+  for (const auto& lambda : l.eigenvalues) largest = std::max(largest, std::abs(lambda));
+  for (const auto& lambda : l.eigenvalues)
+    std::printf(" %.4g%+.4gi", clean(lambda.real(), largest), clean(lambda.imag(), largest));
   std::printf("\n");
   const char* preferred = sim::preferredDirection(model, spin);
   std::printf("preferred        %s (%s seen from above); spun the other way it is predicted to "

@@ -81,6 +81,12 @@ void printSummary(const SimulateArgs& args, const sim::Model& model,
     }
   } else {
     std::printf("first reversal  none in %g s\n", simulated);
+    // An exactly upright spin is an equilibrium: the rocking that turns it back has nothing to
+    // grow from.
+    if (model.initial.tilt_x == 0 && model.initial.tilt_y == 0 && model.initial.height == 0 &&
+        model.initial.spin != 0)
+      std::printf("                (it started exactly upright, initial.tilt [0, 0]: with "
+                  "nothing to rock, no spin reverses; try tilt: [0.5, 0.5])\n");
   }
   const double change = (run.last.energy - run.first.energy) / std::abs(run.first.energy);
   std::printf("energy          %.6g J -> %.6g J (%+.4g %%)\n", run.first.energy,
