@@ -442,8 +442,9 @@ int benchCommand(const BenchArgs& args) {
     drift.series.push_back(lines[key][2]);
   }
   if (auto e = plotPng(png_path, "rattleback bench: error against cost (lower left is better)",
-                       {spin, reversal, drift}, 1100, 1500)) {
-    std::cerr << *e << "\n";
+                       {spin, reversal, drift}, 1100, 1500);
+      !e) {
+    std::cerr << e.error().text() << "\n";
     return kBadInput;
   }
   if (!args.quiet) std::printf("\nwrote %s and %s\n", csv_path.c_str(), png_path.c_str());

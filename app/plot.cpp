@@ -74,15 +74,15 @@ rb::Status checkPlotFolder(const std::string& dir) {
   return {};
 }
 
-std::optional<std::string> plotPng(const std::string& png, const std::string& title,
+rb::Status plotPng(const std::string& png, const std::string& title,
                                    const std::vector<Panel>& panels, int width, int height) {
   std::error_code ec;
-  if (fs::is_directory(png, ec)) return png + ": is a directory, not a file";
+  if (fs::is_directory(png, ec)) return rb::Status::fail(png + ": is a directory, not a file");
   const fs::path parent = fs::absolute(png).parent_path();
-  if (!fs::is_directory(parent, ec)) return png + ": cannot write: the folder does not exist";
+  if (!fs::is_directory(parent, ec)) return rb::Status::fail(png + ": cannot write: the folder does not exist");
 
   char pattern[] = "/tmp/rattleback-plot-XXXXXX";
-  if (!mkdtemp(pattern)) return png + ": cannot make a temporary folder: " + std::strerror(errno);
+  if (!mkdtemp(pattern)) return rb::Status::fail(png + ": cannot make a temporary folder: " + std::strerror(errno));
   const fs::path work = pattern;
   struct Cleanup {
     fs::path dir;
@@ -147,23 +147,23 @@ std::optional<std::string> plotPng(const std::string& png, const std::string& ti
   }
   script << "unset multiplot\nset output\n";
   script.close();
-  if (!script) return png + ": cannot write the plot script";
+  if (!script) return rb::Status::fail(png + ": cannot write the plot script");
 
   const int status = runGnuplot(work / "plot.gp", work / "gnuplot.log");
   if (status == -1) {
     fs::remove(temp_png, ec);
-    return png + ": cannot run gnuplot (install it: apt-get install gnuplot-nox)";
+    return rb::Status::fail(png + ": cannot run gnuplot (install it: apt-get install gnuplot-nox)");
   }
   if (status != 0 || !fs::exists(temp_png, ec) || fs::file_size(temp_png, ec) == 0) {
     fs::remove(temp_png, ec);
-    return png + ": gnuplot failed: " + firstLine(work / "gnuplot.log");
+    return rb::Status::fail(png + ": gnuplot failed: " + firstLine(work / "gnuplot.log"));
   }
   fs::rename(temp_png, png, ec);
   if (ec) {
     fs::remove(temp_png, ec);
-    return png + ": cannot move the finished plot into place: " + ec.message();
+    return rb::Status::fail(png + ": cannot move the finished plot into place: " + ec.message());
   }
-  return std::nullopt;
+  return {};
 }
 
 }  // namespace app

@@ -34,7 +34,7 @@ rb::Status checkPlotFolder(const std::string& dir);
 
 /// Draws the panels stacked top to bottom into one PNG of width × height pixels.
 /// Returns one error line naming `png` on failure; an existing `png` is then left as it was.
-std::optional<std::string> plotPng(const std::string& png, const std::string& title,
+rb::Status plotPng(const std::string& png, const std::string& title,
                                    const std::vector<Panel>& panels, int width, int height);
 
 }  // namespace app

@@ -100,7 +100,7 @@ void printSummary(const SimulateArgs& args, const sim::Model& model,
 
 // The seed's figures (6–8, 12–16) from the telemetry: energy, spin, tilt and CM height, and
 // the normal force, each against time, into DIR/<scene>-<what>.png.
-std::optional<std::string> writePlots(const std::string& dir, const std::string& scene,
+rb::Status writePlots(const std::string& dir, const std::string& scene,
                                       const std::vector<sim::Telemetry>& samples) {
   const std::string stem = std::filesystem::path(scene).stem().string();
   auto series = [&](const char* title, auto value, bool right = false) {
@@ -137,9 +137,9 @@ std::optional<std::string> writePlots(const std::string& dir, const std::string&
       {"energy", &energy}, {"spin", &spin}, {"tilt", &tilt}, {"normal", &normal}};
   for (const auto& [what, p] : figures) {
     const std::string png = (std::filesystem::path(dir) / (stem + "-" + what + ".png")).string();
-    if (auto e = plotPng(png, stem + ": " + p->title, {*p}, 1000, 500)) return e;
+    if (auto e = plotPng(png, stem + ": " + p->title, {*p}, 1000, 500); !e) return e;
   }
-  return std::nullopt;
+  return {};
 }
 
 // The sidecar X.csv.json: what the CSV is (scene, program, columns and units, the model) and
@@ -247,8 +247,8 @@ int simulateCommand(const SimulateArgs& args) {
     }
   }
   if (!args.plot_dir.empty()) {
-    if (auto e = writePlots(args.plot_dir, args.scene, kept)) {
-      std::cerr << *e << "\n";
+    if (auto e = writePlots(args.plot_dir, args.scene, kept); !e) {
+      std::cerr << e.error().text() << "\n";
       return kBadInput;
     }
   }

@@ -69,7 +69,10 @@ struct Output {
         while (!stop.stop_requested()) {
           auto image = images.pop();
           if (!image) break;
-          if ((error = encoder->add(*image))) break;
+          if (auto added = encoder->add(*image); !added) {
+            error = added.error().text();
+            break;
+          }
         }
       } catch (const std::exception& e) {
         error = std::string("encoding failed: ") + e.what();
@@ -186,12 +189,12 @@ int renderCommand(const RenderArgs& args) {
     settings.crf = args.crf;
     settings.preset = args.preset;
     auto opened = render::VideoEncoder::open(provisional[i], settings);
-    if (auto* e = std::get_if<std::string>(&opened)) {
-      std::cerr << *e << "\n";
+    if (!opened) {
+      std::cerr << opened.error().text() << "\n";
       return kBadInput;
     }
     outputs.push_back(std::make_unique<Output>());
-    outputs.back()->encoder = std::move(std::get<std::unique_ptr<render::VideoEncoder>>(opened));
+    outputs.back()->encoder = std::move(opened).value();
   }
 
   std::vector<std::unique_ptr<render::Renderer>> renderers;
@@ -200,11 +203,11 @@ int renderCommand(const RenderArgs& args) {
     auto created = render::Renderer::create(
         settingsOf(plan, model.duration, spin, stem(args.scene) + ": spun " + describeSpin(spin)),
         bodyPointsOf(model));
-    if (auto* e = std::get_if<std::string>(&created)) {
-      std::cerr << "render: " << *e << "\n";
+    if (!created) {
+      std::cerr << "render: " << created.error().text() << "\n";
       return kBadInput;
     }
-    renderers.push_back(std::move(std::get<std::unique_ptr<render::Renderer>>(created)));
+    renderers.push_back(std::move(created).value());
   }
 
   for (auto& o : outputs) o->start();
@@ -255,8 +258,8 @@ int renderCommand(const RenderArgs& args) {
     finals[1] = base + "-" + names[1] + ".mp4";
   }
   for (std::size_t i = 0; i < outputs.size(); ++i) {
-    if (auto e = outputs[i]->encoder->finish(finals[i])) {
-      std::cerr << *e << "\n";
+    if (auto e = outputs[i]->encoder->finish(finals[i]); !e) {
+      std::cerr << e.error().text() << "\n";
       return kBadInput;
     }
   }
@@ -313,11 +316,11 @@ int stillCommand(const StillArgs& args) {
       settingsOf(plan, model.duration, model.initial.spin, stem(args.scene));
   settings.readouts = !args.no_readouts;
   auto created = render::Renderer::create(settings, bodyPointsOf(model));
-  if (auto* e = std::get_if<std::string>(&created)) {
-    std::cerr << "render: " << *e << "\n";
+  if (!created) {
+    std::cerr << "render: " << created.error().text() << "\n";
     return kBadInput;
   }
-  auto& renderer = *std::get<std::unique_ptr<render::Renderer>>(created);
+  render::Renderer& renderer = *created.value();
   // Run to the still's time, keeping the spin at each earlier video frame for the inset, as
   // the video would have drawn it.
   sim::Rollout run(model);
@@ -335,8 +338,8 @@ int stillCommand(const StillArgs& args) {
   }
   render::Image image;
   renderer.draw(frameOf(run.sampleAt(args.t)), image);
-  if (auto e = render::writePng(path, image)) {
-    std::cerr << *e << "\n";
+  if (auto e = render::writePng(path, image); !e) {
+    std::cerr << e.error().text() << "\n";
     return kBadInput;
   }
   if (!args.quiet) std::printf("%s\n", path.c_str());
@@ -355,8 +358,8 @@ int compareCommand(const CompareArgs& args) {
   }
   render::Image a, b;
   for (auto [path, image] : {std::pair{&args.actual, &a}, std::pair{&args.expected, &b}}) {
-    if (auto e = render::readPng(*path, *image)) {
-      std::cerr << *e << "\n";
+    if (auto e = render::readPng(*path, *image); !e) {
+      std::cerr << e.error().text() << "\n";
       return kBadInput;
     }
   }
@@ -377,8 +380,8 @@ int compareCommand(const CompareArgs& args) {
     std::printf("; differing pixels within x %d–%d, y %d–%d", c.box[0], c.box[2], c.box[1], c.box[3]);
   std::printf("\n");
   if (!same && !args.diff.empty()) {
-    if (auto e = render::writePng(args.diff, render::diffImage(a, b, args.channel_tolerance))) {
-      std::cerr << *e << "\n";
+    if (auto e = render::writePng(args.diff, render::diffImage(a, b, args.channel_tolerance)); !e) {
+      std::cerr << e.error().text() << "\n";
       return kBadInput;
     }
     std::printf("diff image: %s\n", args.diff.c_str());

@@ -55,11 +55,11 @@ int main(int argc, char** argv) {
     settings.duration = model.duration;
     settings.spin_range = 5.5;
     auto created = render::Renderer::create(settings, app::bodyPointsOf(model));
-    if (auto* e = std::get_if<std::string>(&created)) {
-      std::fprintf(stderr, "%s\n", e->c_str());
+    if (!created) {
+      std::fprintf(stderr, "%s\n", created.error().text().c_str());
       return 2;
     }
-    auto& renderer = *std::get<std::unique_ptr<render::Renderer>>(created);
+    render::Renderer& renderer = *created.value();
     std::vector<render::Image> images(frames);
     auto start = std::chrono::steady_clock::now();
     for (std::size_t i = 0; i < poses.size(); ++i) renderer.draw(poses[i], images[i]);
@@ -69,11 +69,16 @@ int main(int argc, char** argv) {
     encoding.width = w;
     encoding.height = h;
     encoding.fps = plan.fps;
-    auto encoder = std::get<std::unique_ptr<render::VideoEncoder>>(
-        render::VideoEncoder::open("/tmp/rattleback_bench.mp4", encoding));
+    auto opened = render::VideoEncoder::open("/tmp/rattleback_bench.mp4", encoding);
+    if (!opened) {
+      std::fprintf(stderr, "%s\n", opened.error().text().c_str());
+      return 2;
+    }
+    std::unique_ptr<render::VideoEncoder> encoder = std::move(opened).value();
     start = std::chrono::steady_clock::now();
-    for (const auto& image : images) encoder->add(image);
-    encoder->finish();
+    for (const auto& image : images)
+      if (!encoder->add(image)) return 2;
+    if (!encoder->finish()) return 2;
     const double encode_fps = frames / seconds(start);
 
     app::RenderArgs args;

@@ -64,17 +64,17 @@ VideoEncoder::VideoEncoder() : state_(std::make_unique<State>()) {}
 VideoEncoder::~VideoEncoder() = default;
 long long VideoEncoder::frames() const { return state_->count; }
 
-std::variant<std::unique_ptr<VideoEncoder>, std::string> VideoEncoder::open(
+rb::Result<std::unique_ptr<VideoEncoder>> VideoEncoder::open(
     const std::string& path, const EncoderSettings& settings) {
   std::unique_ptr<VideoEncoder> encoder(new VideoEncoder());
   State& s = *encoder->state_;
   s.path = path;
   s.settings = settings;
-  if (settings.width % 2 || settings.height % 2) return path + ": width and height must be even";
+  if (settings.width % 2 || settings.height % 2) return rb::Error{"", path + ": width and height must be even"};
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
   if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
-    return path + ": is not a regular file (an MP4 must be written to a file)";
+    return rb::Error{"", path + ": is not a regular file (an MP4 must be written to a file)"};
   // Hidden and not ending in .mp4 (no *.mp4 glob takes a half-written file); the format is
   // named explicitly below, so the name need not say it.
   {
@@ -87,9 +87,9 @@ std::variant<std::unique_ptr<VideoEncoder>, std::string> VideoEncoder::open(
 
   av_log_set_level(AV_LOG_ERROR);
   if (avformat_alloc_output_context2(&s.format, nullptr, "mp4", s.temp.c_str()) < 0)
-    return s.error("cannot set up an MP4 file");
+    return rb::Error{"", s.error("cannot set up an MP4 file")};
   const AVCodec* h264 = avcodec_find_encoder_by_name("libx264");
-  if (!h264) return s.error("libavcodec has no libx264 encoder");
+  if (!h264) return rb::Error{"", s.error("libavcodec has no libx264 encoder")};
   s.codec = avcodec_alloc_context3(h264);
   AVCodecContext* c = s.codec;
   c->width = settings.width;
@@ -106,18 +106,18 @@ std::variant<std::unique_ptr<VideoEncoder>, std::string> VideoEncoder::open(
   if (s.format->oformat->flags & AVFMT_GLOBALHEADER) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
   av_opt_set(c->priv_data, "preset", settings.preset.c_str(), 0);
   av_opt_set(c->priv_data, "crf", std::to_string(settings.crf).c_str(), 0);
-  if (int r = avcodec_open2(c, h264, nullptr); r < 0) return s.error("cannot open libx264", r);
+  if (int r = avcodec_open2(c, h264, nullptr); r < 0) return rb::Error{"", s.error("cannot open libx264", r)};
 
   s.stream = avformat_new_stream(s.format, nullptr);
   s.stream->time_base = c->time_base;
   avcodec_parameters_from_context(s.stream->codecpar, c);
   if (int r = avio_open(&s.format->pb, s.temp.c_str(), AVIO_FLAG_WRITE); r < 0)
-    return s.error("cannot write", r);
+    return rb::Error{"", s.error("cannot write", r)};
   AVDictionary* options = nullptr;
   av_dict_set(&options, "movflags", "+faststart", 0);
   const int r = avformat_write_header(s.format, &options);
   av_dict_free(&options);
-  if (r < 0) return s.error("cannot write the MP4 header", r);
+  if (r < 0) return rb::Error{"", s.error("cannot write the MP4 header", r)};
   s.header_written = true;
 
   // RGBA (full range) → yuv420p, BT.709 matrix, limited range.
@@ -134,36 +134,37 @@ std::variant<std::unique_ptr<VideoEncoder>, std::string> VideoEncoder::open(
   s.frame->color_trc = AVCOL_TRC_BT709;
   s.frame->colorspace = AVCOL_SPC_BT709;
   s.frame->color_range = AVCOL_RANGE_MPEG;
-  if (av_frame_get_buffer(s.frame, 0) < 0) return s.error("out of memory");
+  if (av_frame_get_buffer(s.frame, 0) < 0) return rb::Error{"", s.error("out of memory")};
   s.packet = av_packet_alloc();
   return encoder;
 }
 
-std::optional<std::string> VideoEncoder::add(const Image& image) {
+rb::Status VideoEncoder::add(const Image& image) {
   State& s = *state_;
   if (image.width != s.settings.width || image.height != s.settings.height)
-    return s.error("frame size does not match the video");
-  if (av_frame_make_writable(s.frame) < 0) return s.error("out of memory");
+    return rb::Status::fail(s.error("frame size does not match the video"));
+  if (av_frame_make_writable(s.frame) < 0) return rb::Status::fail(s.error("out of memory"));
   const uint8_t* source[1] = {image.rgba.data()};
   const int stride[1] = {4 * image.width};
   sws_scale(s.sws, source, stride, 0, image.height, s.frame->data, s.frame->linesize);
   s.frame->pts = s.count++;
-  if (int r = avcodec_send_frame(s.codec, s.frame); r < 0) return s.error("encoding failed", r);
-  return s.drain();
+  if (int r = avcodec_send_frame(s.codec, s.frame); r < 0) return rb::Status::fail(s.error("encoding failed", r));
+  if (auto e = s.drain()) return rb::Status::fail(*e);
+  return {};
 }
 
-std::optional<std::string> VideoEncoder::finish(const std::string& final_path) {
+rb::Status VideoEncoder::finish(const std::string& final_path) {
   State& s = *state_;
   if (!final_path.empty()) s.path = final_path;
-  if (int r = avcodec_send_frame(s.codec, nullptr); r < 0) return s.error("encoding failed", r);
-  if (auto e = s.drain()) return e;
-  if (int r = av_write_trailer(s.format); r < 0) return s.error("writing failed", r);
-  if (int r = avio_closep(&s.format->pb); r < 0) return s.error("writing failed", r);
+  if (int r = avcodec_send_frame(s.codec, nullptr); r < 0) return rb::Status::fail(s.error("encoding failed", r));
+  if (auto e = s.drain()) return rb::Status::fail(*e);
+  if (int r = av_write_trailer(s.format); r < 0) return rb::Status::fail(s.error("writing failed", r));
+  if (int r = avio_closep(&s.format->pb); r < 0) return rb::Status::fail(s.error("writing failed", r));
   std::error_code ec;
   std::filesystem::rename(s.temp, s.path, ec);
-  if (ec) return s.error("cannot move the finished file into place: " + ec.message());
+  if (ec) return rb::Status::fail(s.error("cannot move the finished file into place: " + ec.message()));
   s.finished = true;
-  return std::nullopt;
+  return {};
 }
 
 }  // namespace render

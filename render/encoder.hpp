@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "render/frame.hpp"
+#include "util/result.hpp"
 
 namespace render {
 
@@ -23,15 +24,15 @@ struct EncoderSettings {
 class VideoEncoder {
  public:
   /// Opens the temporary output; an error line naming `path` when impossible.
-  static std::variant<std::unique_ptr<VideoEncoder>, std::string> open(
+  static rb::Result<std::unique_ptr<VideoEncoder>> open(
       const std::string& path, const EncoderSettings& settings);
   ~VideoEncoder();  ///< without finish(): removes the temporary file
 
   /// Encodes one RGBA frame (rows top to bottom, the settings' size); an error line on failure.
-  std::optional<std::string> add(const Image& frame);
+  rb::Status add(const Image& frame);
   /// Flushes the encoder, writes the index and renames the file into place: to the path it
   /// was opened with, or to `final_path` (in the same folder) when given.
-  std::optional<std::string> finish(const std::string& final_path = "");
+  rb::Status finish(const std::string& final_path = "");
   long long frames() const;
 
  private:

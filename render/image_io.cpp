@@ -23,7 +23,7 @@ struct File {
 
 }  // namespace
 
-std::optional<std::string> writePng(const std::string& path, const Image& image) {
+rb::Status writePng(const std::string& path, const Image& image) {
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
   const bool special = std::filesystem::exists(status) && !std::filesystem::is_regular_file(status);
@@ -32,13 +32,13 @@ std::optional<std::string> writePng(const std::string& path, const Image& image)
   name += target.filename().string();
   name += ".part-" + std::to_string(::getpid());
   const std::string temp = special ? path : (target.parent_path() / name).string();
-  auto fail = [&](const std::string& why) -> std::optional<std::string> {
+  auto fail = [&](const std::string& why) -> rb::Status {
     if (!special) std::remove(temp.c_str());
-    return path + ": " + why;
+    return rb::Status::fail(path + ": " + why);
   };
   File file;
   file.f = std::fopen(temp.c_str(), "wb");
-  if (!file.f) return path + ": cannot write: " + std::strerror(errno);
+  if (!file.f) return rb::Status::fail(path + ": cannot write: " + std::strerror(errno));
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   if (!info) {
@@ -61,25 +61,25 @@ std::optional<std::string> writePng(const std::string& path, const Image& image)
   const int close_status = std::fclose(file.f);
   file.f = nullptr;
   if (!flushed || close_status != 0) return fail(std::string("writing failed: ") + std::strerror(errno));
-  if (special) return std::nullopt;
+  if (special) return {};
   std::filesystem::rename(temp, path, ec);
   if (ec) return fail("cannot move the finished file into place: " + ec.message());
-  return std::nullopt;
+  return {};
 }
 
-std::optional<std::string> readPng(const std::string& path, Image& image) {
+rb::Status readPng(const std::string& path, Image& image) {
   png_image png;
   std::memset(&png, 0, sizeof png);
   png.version = PNG_IMAGE_VERSION;
   if (!png_image_begin_read_from_file(&png, path.c_str()))
-    return path + ": cannot read the PNG: " + png.message;
+    return rb::Status::fail(path + ": cannot read the PNG: " + png.message);
   png.format = PNG_FORMAT_RGBA;
   image.width = static_cast<int>(png.width);
   image.height = static_cast<int>(png.height);
   image.rgba.resize(PNG_IMAGE_SIZE(png));
   if (!png_image_finish_read(&png, nullptr, image.rgba.data(), 0, nullptr))
-    return path + ": cannot decode the PNG: " + png.message;
-  return std::nullopt;
+    return rb::Status::fail(path + ": cannot decode the PNG: " + png.message);
+  return {};
 }
 
 Comparison compareImages(const Image& a, const Image& b, int channel_tolerance) {

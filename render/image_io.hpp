@@ -5,14 +5,15 @@
 #include <string>
 
 #include "render/frame.hpp"
+#include "util/result.hpp"
 
 namespace render {
 
 /// Writes an RGBA PNG under a temporary name and renames it into place; an error line
 /// naming the file when anything fails (nothing is left behind then).
-std::optional<std::string> writePng(const std::string& path, const Image& image);
+rb::Status writePng(const std::string& path, const Image& image);
 /// Reads a PNG as RGBA; an error line naming the file when it cannot.
-std::optional<std::string> readPng(const std::string& path, Image& image);
+rb::Status readPng(const std::string& path, Image& image);
 
 /// How two images differ: a pixel differs when any channel differs by more than
 /// `channel_tolerance` (0–255).

@@ -28,10 +28,10 @@ Renderer::~Renderer() {
   if (floor_program_) glDeleteProgram(floor_program_);
 }
 
-std::variant<std::unique_ptr<Renderer>, std::string> Renderer::create(
-    const RenderSettings& settings, const BodyPoints& body) {
+rb::Result<std::unique_ptr<Renderer>> Renderer::create(const RenderSettings& settings,
+                                                      const BodyPoints& body) {
   std::unique_ptr<Renderer> r(new Renderer(settings, body));
-  if (std::string error = r->init(); !error.empty()) return error;
+  if (std::string error = r->init(); !error.empty()) return rb::Error{"", error};
   return r;
 }
 

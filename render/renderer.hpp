@@ -11,13 +11,14 @@
 #include "render/frame.hpp"
 #include "render/gl.hpp"
 #include "render/overlay.hpp"
+#include "util/result.hpp"
 
 namespace render {
 
 class Renderer {
  public:
   /// One renderer per thread: it owns an OpenGL context made current on the calling thread.
-  static std::variant<std::unique_ptr<Renderer>, std::string> create(const RenderSettings& settings,
+  static rb::Result<std::unique_ptr<Renderer>> create(const RenderSettings& settings,
                                                                      const BodyPoints& body);
   ~Renderer();
 

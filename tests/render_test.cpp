@@ -84,13 +84,13 @@ TEST(Snapshots, StillsMatchTheGoldens) {
     const fs::path actual = scratch(still.name + "-actual.png");
     ASSERT_EQ(rattleback("still " + still.args + " -o " + actual.string()), 0) << still.name;
     render::Image a, b;
-    ASSERT_FALSE(render::readPng(actual.string(), a));
-    ASSERT_FALSE(render::readPng((kSource / "tests/golden" / (still.name + ".png")).string(), b));
+    ASSERT_TRUE(render::readPng(actual.string(), a));
+    ASSERT_TRUE(render::readPng((kSource / "tests/golden" / (still.name + ".png")).string(), b));
     const render::Comparison c = render::compareImages(a, b, kChannelTolerance);
     ASSERT_TRUE(c.same_size) << still.name;
     if (c.fraction() > kPixelFraction) {
       const fs::path diff = scratch(still.name + "-diff.png");
-      render::writePng(diff.string(), render::diffImage(a, b, kChannelTolerance));
+      EXPECT_TRUE(render::writePng(diff.string(), render::diffImage(a, b, kChannelTolerance)));
       ADD_FAILURE() << still.name << ": " << c.differing << " pixels (" << 100 * c.fraction()
                     << "%) differ, within x " << c.box[0] << "–" << c.box[2] << ", y " << c.box[1]
                     << "–" << c.box[3] << "; actual " << actual << ", diff " << diff;
@@ -103,7 +103,7 @@ TEST(Snapshots, StillsMatchTheGoldens) {
 // mostly red and the lower half mostly blue.
 TEST(Snapshots, TopIsRedAndBottomIsBlue) {
   render::Image image;
-  ASSERT_FALSE(render::readPng((kSource / "tests/golden/seed-side.png").string(), image));
+  ASSERT_TRUE(render::readPng((kSource / "tests/golden/seed-side.png").string(), image));
   long red_top = 0, blue_top = 0, red_bottom = 0, blue_bottom = 0;
   int first = image.height, last = 0;
   auto colour = [&](int x, int y) {
@@ -290,11 +290,11 @@ TEST(Compare, SameAndDifferentImages) {
   const fs::path golden = kSource / "tests/golden/seed-above.png";
   EXPECT_EQ(rattleback("compare " + golden.string() + " " + golden.string()), 0);
   render::Image image;
-  ASSERT_FALSE(render::readPng(golden.string(), image));
+  ASSERT_TRUE(render::readPng(golden.string(), image));
   for (int y = 20; y < 60; ++y)  // paint a 40×40 square: 1600 of 57600 pixels (2.8%)
     for (int x = 20; x < 60; ++x) image.rgba[(y * image.width + x) * 4] ^= 0x80;
   const fs::path changed = scratch("changed.png"), diff = scratch("diff.png");
-  ASSERT_FALSE(render::writePng(changed.string(), image));
+  ASSERT_TRUE(render::writePng(changed.string(), image));
   EXPECT_EQ(rattleback("compare " + changed.string() + " " + golden.string() + " --diff " +
                        diff.string()),
             1);
