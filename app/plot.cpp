@@ -92,7 +92,7 @@ rb::Status plotPng(const std::string& png, const std::string& title,
     }
   } cleanup{work};
   const fs::path temp_png =
-      parent / ("." + fs::path(png).filename().string() + ".partial-" + std::to_string(getpid()));
+      parent / (std::string(".") + fs::path(png).filename().string() + ".part-" + std::to_string(getpid()));
 
   std::ofstream script(work / "plot.gp");
   script << "set terminal pngcairo size " << width << "," << height

@@ -14,7 +14,7 @@
 namespace scene {
 namespace {
 
-// Thrown inside the loader only; turned into a LoadError at its edge.
+// Thrown inside the loader only; turned into an rb::Error at its edge.
 struct Failure {
   int line;
   std::string key;

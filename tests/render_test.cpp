@@ -264,7 +264,7 @@ TEST(Video, BothWritesThreeVideos) {
     EXPECT_EQ(probe(base.string() + suffix).width, 160) << suffix;
   EXPECT_EQ(probe(base.string() + "-both.mp4").width, 320);
   for (const auto& entry : fs::directory_iterator(base.parent_path()))
-    EXPECT_EQ(entry.path().filename().string().find(".partial-"), std::string::npos);
+    EXPECT_EQ(entry.path().filename().string().find(".part"), std::string::npos);
 }
 
 // A render that cannot run writes nothing and keeps what was there.
