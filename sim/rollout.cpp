@@ -69,6 +69,7 @@ Rollout::Rollout(Model model, const State& start)
     : model_(std::move(model)), previous_(start), current_(start) {
   if (isAdaptive(model_.integrator)) adaptive_ = std::make_unique<AdaptiveStepper>(model_, start);
   summary_.first = summary_.last = telemetryOf(model_, start);
+  spin_ = summary_.first.spin;
   // The sign of the spin n = ω·ẑ at the start (opposite to initial.spin when upside down).
   reference_sign_ = summary_.first.spin == 0 ? 0 : std::copysign(1.0, summary_.first.spin);
   if (summary_.first.contacts == 0 || summary_.first.normal_force <= 0) last_airborne_ = start.t;
@@ -100,7 +101,7 @@ bool Rollout::advanceTo(double t) {
 }
 
 void Rollout::stepOnce() {
-  const double previous_spin = angularVelocity(model_, current_).z();
+  const double previous_spin = spin_;
   previous_ = current_;
   if (adaptive_) {
     current_ = adaptive_->step(current_.step + 1);
@@ -113,7 +114,8 @@ void Rollout::stepOnce() {
     step(model_, current_);  // which puts a rolling state back on the constraint itself
   }
   have_rates_ = false;
-  locateReversal(previous_spin, angularVelocity(model_, current_).z());
+  spin_ = angularVelocity(model_, current_).z();
+  locateReversal(previous_spin, spin_);
   if (current_.step % check_every_ == 0) watch();
 }
 

@@ -91,6 +91,7 @@ class Rollout {
   // Reversal bookkeeping: the sign being reversed from, and the last crossing to the other.
   double reference_sign_ = 0;
   std::optional<double> crossing_;
+  double spin_ = 0;  ///< n = ω·ẑ of current_, rad/s
   double last_airborne_ = -1e300;  ///< last time the floor carried nothing, s
   double energy_bound_ = 0;
   std::int64_t check_every_ = 1;
