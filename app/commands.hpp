@@ -87,4 +87,29 @@ struct CompareArgs {
 /// Exit 0 when the images match within the tolerance, 1 when they differ.
 int compareCommand(const CompareArgs& args);
 
+struct SweepArgs {
+  std::string file;            ///< the sweep file (YAML)
+  std::string output;          ///< CSV; empty: out/<sweep>.csv (with --shard: …-shard-I-of-N.csv)
+  int jobs = 0;                ///< threads; 0: all cores
+  std::string shard;           ///< "I/N": rows I, I+N, … only
+  std::string plot;            ///< heatmap PNG of --metric over the first two axes
+  std::string metric = "first_reversal_s";
+  std::string emit;            ///< "slurm" | "parallel": print a job script instead of running
+  int shards = 0;              ///< with --emit: how many shards
+  bool resume = false;         ///< continue from the rows an interrupted run kept
+  bool quiet = false;
+};
+/// Runs every scene of a sweep (the product of its axes) on a pool of threads; one CSV row each.
+int sweepCommand(const SweepArgs& args);
+
+struct SweepMergeArgs {
+  std::string output;
+  std::vector<std::string> shards;
+  std::string plot;  ///< heatmap PNG of --metric over the first two axes
+  std::string metric = "first_reversal_s";
+  bool quiet = false;
+};
+/// Recombines the shard tables of one sweep in the sweep's order.
+int sweepMergeCommand(const SweepMergeArgs& args);
+
 }  // namespace app

@@ -38,6 +38,7 @@ nlohmann::json runJson(const sim::RunSummary& run) {
   j["initial_spin"] = run.first.spin;
   j["final_spin"] = run.last.spin;
   j["final_tilt_deg"] = run.last.tilt_deg;
+  j["max_tilt_deg"] = run.max_tilt_deg;
   j["energy_j"] = {{"initial", run.first.energy}, {"final", run.last.energy}};
   j["simulated_s"] = run.last.t;
   j["steps"] = run.steps;

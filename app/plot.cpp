@@ -6,6 +6,7 @@
 
 #include <fcntl.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -74,13 +75,17 @@ rb::Status checkPlotFolder(const std::string& dir) {
   return {};
 }
 
-rb::Status plotPng(const std::string& png, const std::string& title,
-                                   const std::vector<Panel>& panels, int width, int height) {
+namespace {
+
+// Runs the gnuplot script that `write` puts into a private temporary folder; the script is
+// handed the folder (for its data files) and the temporary PNG beside `png` to draw into, which
+// is renamed into place only when gnuplot succeeded.
+template <typename Write>
+rb::Status drawWithGnuplot(const std::string& png, Write write) {
   std::error_code ec;
   if (fs::is_directory(png, ec)) return rb::Status::fail(png + ": is a directory, not a file");
   const fs::path parent = fs::absolute(png).parent_path();
   if (!fs::is_directory(parent, ec)) return rb::Status::fail(png + ": cannot write: the folder does not exist");
-
   char pattern[] = "/tmp/rattleback-plot-XXXXXX";
   if (!mkdtemp(pattern)) return rb::Status::fail(png + ": cannot make a temporary folder: " + std::strerror(errno));
   const fs::path work = pattern;
@@ -93,62 +98,10 @@ rb::Status plotPng(const std::string& png, const std::string& title,
   } cleanup{work};
   const fs::path temp_png =
       parent / (std::string(".") + fs::path(png).filename().string() + ".part-" + std::to_string(getpid()));
-
   std::ofstream script(work / "plot.gp");
-  script << "set terminal pngcairo size " << width << "," << height
-         << " font \"DejaVu Sans,10\" noenhanced\n"
-         << "set output " << quoted(temp_png.string()) << "\n"
-         << "set datafile separator ' '\nset grid lc rgb '#dddddd'\nset key outside right top\n"
-         << "set multiplot layout " << panels.size() << ",1 title " << quoted(title)
-         << " font \",12\"\n";
-  int file_index = 0;
-  for (const Panel& panel : panels) {
-    script << "unset logscale\nunset y2label\nunset y2tics\nset ytics mirror\n"
-           << "set title " << quoted(panels.size() > 1 ? panel.title : std::string()) << "\n"
-           << "set xlabel " << quoted(panel.x_label) << "\nset ylabel " << quoted(panel.y_label)
-           << "\n";
-    if (panel.log_x) script << "set logscale x\nset format x '%g'\n";
-    else script << "set format x '% g'\n";
-    if (panel.log_y) script << "set logscale y\nset format y '%.0e'\n";
-    else script << "set format y '% g'\n";
-    if (!panel.y2_label.empty())
-      script << "set y2label " << quoted(panel.y2_label) << "\nset y2tics\nset ytics nomirror\n";
-    std::vector<std::string> clauses;
-    for (const Series& series : panel.series) {
-      const fs::path data = work / ("series" + std::to_string(file_index++) + ".dat");
-      std::ofstream out(data);
-      out.precision(10);
-      int kept = 0;
-      for (const auto& [x, y] : series.points) {
-        // Log axes cannot show zero or negative values; gnuplot would refuse the series.
-        if (!std::isfinite(x) || !std::isfinite(y)) continue;
-        if ((panel.log_x && x <= 0) || (panel.log_y && y <= 0)) continue;
-        out << x << ' ' << y << '\n';
-        ++kept;
-      }
-      if (kept == 0) continue;
-      std::string style = panel.lines_only ? " with lines lw 1.5"
-                                           : " with linespoints lw 1.5 ps 0.9 pt " +
-                                                 std::to_string(series.point_type);
-      style += " dt " + std::to_string(series.dash);
-      if (!series.color.empty()) style += " lc rgb " + quoted(series.color);
-      clauses.push_back(quoted(data.string()) + " using 1:2" +
-                        (series.right_axis ? " axes x1y2" : "") + style + " title " +
-                        quoted(series.title));
-    }
-    if (clauses.empty()) {
-      script << "unset logscale\nset label 1 'no data' at graph 0.5, graph 0.5 center\n"
-             << "plot [0:1][0:1] NaN notitle\nunset label 1\n";
-      continue;
-    }
-    script << "plot ";
-    for (std::size_t i = 0; i < clauses.size(); ++i) script << (i ? ", \\\n     " : "") << clauses[i];
-    script << "\n";
-  }
-  script << "unset multiplot\nset output\n";
+  write(script, work, temp_png);
   script.close();
   if (!script) return rb::Status::fail(png + ": cannot write the plot script");
-
   const int status = runGnuplot(work / "plot.gp", work / "gnuplot.log");
   if (status == -1) {
     fs::remove(temp_png, ec);
@@ -164,6 +117,113 @@ rb::Status plotPng(const std::string& png, const std::string& title,
     return rb::Status::fail(png + ": cannot move the finished plot into place: " + ec.message());
   }
   return {};
+}
+
+}  // namespace
+
+rb::Status plotPng(const std::string& png, const std::string& title,
+                                   const std::vector<Panel>& panels, int width, int height) {
+  return drawWithGnuplot(png, [&](std::ofstream& script, const fs::path& work,
+                                  const fs::path& temp_png) {
+    script << "set terminal pngcairo size " << width << "," << height
+           << " font \"DejaVu Sans,10\" noenhanced\n"
+           << "set output " << quoted(temp_png.string()) << "\n"
+           << "set datafile separator ' '\nset grid lc rgb '#dddddd'\nset key outside right top\n"
+           << "set multiplot layout " << panels.size() << ",1 title " << quoted(title)
+           << " font \",12\"\n";
+    int file_index = 0;
+    for (const Panel& panel : panels) {
+      script << "unset logscale\nunset y2label\nunset y2tics\nset ytics mirror\n"
+             << "set title " << quoted(panels.size() > 1 ? panel.title : std::string()) << "\n"
+             << "set xlabel " << quoted(panel.x_label) << "\nset ylabel " << quoted(panel.y_label)
+             << "\n";
+      if (panel.log_x) script << "set logscale x\nset format x '%g'\n";
+      else script << "set format x '% g'\n";
+      if (panel.log_y) script << "set logscale y\nset format y '%.0e'\n";
+      else script << "set format y '% g'\n";
+      if (!panel.y2_label.empty())
+        script << "set y2label " << quoted(panel.y2_label) << "\nset y2tics\nset ytics nomirror\n";
+      std::vector<std::string> clauses;
+      for (const Series& series : panel.series) {
+        const fs::path data = work / ("series" + std::to_string(file_index++) + ".dat");
+        std::ofstream out(data);
+        out.precision(10);
+        int kept = 0;
+        for (const auto& [x, y] : series.points) {
+          // Log axes cannot show zero or negative values; gnuplot would refuse the series.
+          if (!std::isfinite(x) || !std::isfinite(y)) continue;
+          if ((panel.log_x && x <= 0) || (panel.log_y && y <= 0)) continue;
+          out << x << ' ' << y << '\n';
+          ++kept;
+        }
+        if (kept == 0) continue;
+        std::string style = panel.lines_only ? " with lines lw 1.5"
+                                             : " with linespoints lw 1.5 ps 0.9 pt " +
+                                                   std::to_string(series.point_type);
+        style += " dt " + std::to_string(series.dash);
+        if (!series.color.empty()) style += " lc rgb " + quoted(series.color);
+        clauses.push_back(quoted(data.string()) + " using 1:2" +
+                          (series.right_axis ? " axes x1y2" : "") + style + " title " +
+                          quoted(series.title));
+      }
+      if (clauses.empty()) {
+        script << "unset logscale\nset label 1 'no data' at graph 0.5, graph 0.5 center\n"
+               << "plot [0:1][0:1] NaN notitle\nunset label 1\n";
+        continue;
+      }
+      script << "plot ";
+      for (std::size_t i = 0; i < clauses.size(); ++i) script << (i ? ", \\\n     " : "") << clauses[i];
+      script << "\n";
+    }
+    script << "unset multiplot\nset output\n";
+  });
+}
+
+rb::Status heatmapPng(const std::string& png, const Heatmap& map, int width, int height) {
+  return drawWithGnuplot(png, [&](std::ofstream& script, const fs::path& work,
+                                  const fs::path& temp_png) {
+    // The data as gnuplot's matrix: one line per y value, one column per x value; NaN for a
+    // cell without a value, which shows the grey background.
+    const std::size_t nx = map.x_values.size(), ny = map.y_values.size();
+    std::ofstream data(work / "map.dat");
+    data.precision(10);
+    for (std::size_t iy = 0; iy < ny; ++iy) {
+      for (std::size_t ix = 0; ix < nx; ++ix) {
+        const double v = map.values[ix * ny + iy];
+        data << (ix ? " " : "");
+        if (std::isfinite(v)) data << v;
+        else data << "NaN";
+      }
+      data << "\n";
+    }
+    // At most about a dozen labels on an axis: every k-th value.
+    auto tics = [](const std::vector<std::string>& values) {
+      const std::size_t every = std::max<std::size_t>(1, (values.size() + 11) / 12);
+      std::string list;
+      for (std::size_t i = 0; i < values.size(); i += every)
+        list += (list.empty() ? "" : ", ") + quoted(values[i]) + " " + std::to_string(i);
+      return "(" + list + ")";
+    };
+    script << "set terminal pngcairo size " << width << "," << height
+           << " font \"DejaVu Sans,10\" noenhanced\n"
+           << "set output " << quoted(temp_png.string()) << "\n"
+           << "set title " << quoted(map.title) << "\n"
+           << "set xlabel " << quoted(map.x_label) << "\nset ylabel " << quoted(map.y_label) << "\n"
+           << "set cblabel " << quoted(map.value_label) << "\n"
+           << "set xtics " << tics(map.x_values) << " rotate by -30\n"
+           << "set ytics " << tics(map.y_values) << "\n"
+           << "set xrange [-0.5:" << nx - 0.5 << "]\nset yrange [-0.5:" << ny - 0.5 << "]\n"
+           // Viridis (perceptually uniform, readable in grey and by colour-blind readers).
+           << "set palette defined (0 '#440154', 1 '#3b528b', 2 '#21918c', 3 '#5ec962', 4 '#fde725')\n"
+           << "set object 1 rectangle from graph 0,0 to graph 1,1 behind fc rgb '#c8c8c8' fs solid\n";
+    if (!map.note.empty())
+      script << "set label 1 " << quoted(map.note) << " at screen 0.01, screen 0.02 left\n";
+    bool any = false;
+    for (double v : map.values) any = any || std::isfinite(v);
+    if (!any) script << "set cbrange [0:1]\n";
+    script << "plot " << quoted((work / "map.dat").string()) << " matrix with image notitle\n"
+           << "set output\n";
+  });
 }
 
 }  // namespace app

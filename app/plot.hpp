@@ -37,4 +37,15 @@ rb::Status checkPlotFolder(const std::string& dir);
 rb::Status plotPng(const std::string& png, const std::string& title,
                                    const std::vector<Panel>& panels, int width, int height);
 
+/// A map of values over two axes (a sweep's first two), drawn as coloured cells.
+struct Heatmap {
+  std::string title, x_label, y_label, value_label;
+  std::vector<std::string> x_values, y_values;  ///< labels of the columns and the rows
+  std::vector<double> values;  ///< values[ix · y_values.size() + iy]; NaN: no value (grey)
+  std::string note;            ///< a line under the map (what grey means, fixed axes)
+};
+
+/// Draws `map` into a PNG of width × height pixels, as plotPng.
+rb::Status heatmapPng(const std::string& png, const Heatmap& map, int width, int height);
+
 }  // namespace app

@@ -1,4 +1,5 @@
 #include "scene/loader.hpp"
+#include "scene/tree.hpp"
 
 #include <yaml-cpp/yaml.h>
 
@@ -277,11 +278,12 @@ std::string format(const std::string& file, int line, const std::string& key,
 
 }  // namespace
 
-rb::Result<Loaded> loadString(const std::string& yaml, const std::string& name) {
+rb::Result<Loaded> loadTree(const YAML::Node& root_node, const std::string& name,
+                            const std::map<std::string, std::string>& places) {
   Loaded out;
   out.file = name;
+  out.overrides = places;
   try {
-    const YAML::Node root_node = YAML::Load(yaml);
     if (!root_node.IsDefined() || root_node.IsNull())
       return rb::Error{"", printable(name) + ":1: the scene is empty; expected keys such as "
                                              "body, contact, simulation"};
@@ -292,13 +294,28 @@ rb::Result<Loaded> loadString(const std::string& yaml, const std::string& name) 
     readRest(root, out.spec);
     readVideo(root, out.video);
   } catch (const Failure& f) {
+    // A key set from elsewhere (a sweep's axis) is named where it was set.
+    for (const auto& [key, place] : places)
+      if (f.key == key || f.key.rfind(key + ".", 0) == 0)
+        return rb::Error{"", printable(place + ": " + f.key + " " + f.message)};
     return rb::Error{"", format(name, f.line, f.key, f.message)};
+  } catch (const YAML::Exception& e) {
+    const int line = e.mark.is_null() ? 1 : e.mark.line + 1;
+    return rb::Error{"", printable(name + ":" + std::to_string(line) + ": malformed YAML: " + e.msg)};
+  }
+  return out;
+}
+
+rb::Result<Loaded> loadString(const std::string& yaml, const std::string& name) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml);
   } catch (const YAML::Exception& e) {
     // Syntax errors: yaml-cpp knows the line but no key.
     const int line = e.mark.is_null() ? 1 : e.mark.line + 1;
     return rb::Error{"", printable(name + ":" + std::to_string(line) + ": malformed YAML: " + e.msg)};
   }
-  return out;
+  return loadTree(root, name, {});
 }
 
 rb::Result<Loaded> loadFile(const std::string& path) {

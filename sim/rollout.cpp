@@ -70,6 +70,8 @@ Rollout::Rollout(Model model, const State& start)
   if (isAdaptive(model_.integrator)) adaptive_ = std::make_unique<AdaptiveStepper>(model_, start);
   summary_.first = summary_.last = telemetryOf(model_, start);
   spin_ = summary_.first.spin;
+  summary_.max_tilt_deg = summary_.first.tilt_deg;
+  min_cos_tilt_ = std::cos(summary_.first.tilt_deg * M_PI / 180.0);
   // The sign of the spin n = ω·ẑ at the start (opposite to initial.spin when upside down).
   reference_sign_ = summary_.first.spin == 0 ? 0 : std::copysign(1.0, summary_.first.spin);
   if (summary_.first.contacts == 0 || summary_.first.normal_force <= 0) last_airborne_ = start.t;
@@ -93,6 +95,8 @@ bool Rollout::advanceTo(double t) {
   }
   summary_.wall_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary_.steps = current_.step;
+  summary_.max_tilt_deg =
+      std::max(summary_.max_tilt_deg, std::acos(std::clamp(min_cos_tilt_, -1.0, 1.0)) * 180.0 / M_PI);
   if (adaptive_) {
     summary_.evaluations = adaptive_->evaluations();
     summary_.rejected = adaptive_->rejected(current_.step);
@@ -114,6 +118,10 @@ void Rollout::stepOnce() {
     step(model_, current_);  // which puts a rolling state back on the constraint itself
   }
   have_rates_ = false;
+  // The tilt's cosine is R(2,2) = (w² + z² − x² − y²)/|q|² of the orientation quaternion.
+  const Eigen::Quaterniond& q = current_.q;
+  min_cos_tilt_ = std::min(min_cos_tilt_, (q.w() * q.w() + q.z() * q.z() - q.x() * q.x() -
+                                           q.y() * q.y()) / q.squaredNorm());
   spin_ = angularVelocity(model_, current_).z();
   locateReversal(previous_spin, spin_);
   if (current_.step % check_every_ == 0) watch();

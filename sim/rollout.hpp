@@ -27,6 +27,9 @@ struct RunSummary {
   /// reversals in the air or while it bounces). The next is counted from the new sign.
   std::vector<double> reversals;
   std::optional<double> first_reversal_s;  ///< reversals.front(), when there is one
+  /// Largest tilt of the body's z axis from the vertical at the start or the end of any step
+  /// so far, degrees.
+  double max_tilt_deg = 0;
   std::int64_t steps = 0;        ///< accepted steps
   std::int64_t rejected = 0;     ///< adaptive: steps tried and rejected by error control
   std::int64_t evaluations = 0;  ///< adaptive: evaluations of the equations of motion
@@ -92,6 +95,7 @@ class Rollout {
   double reference_sign_ = 0;
   std::optional<double> crossing_;
   double spin_ = 0;  ///< n = ω·ẑ of current_, rad/s
+  double min_cos_tilt_ = 1;  ///< smallest cosine of the tilt so far
   double last_airborne_ = -1e300;  ///< last time the floor carried nothing, s
   double energy_bound_ = 0;
   std::int64_t check_every_ = 1;

@@ -1,0 +1,13 @@
+// rattleback-render: the commands of `rattleback` that draw (render, still, compare), in a
+// program of their own so that the others start without OSMesa, EGL or libav. `rattleback`
+// runs it with its own arguments; run alone, it takes the same command line.
+#include "app/cli.hpp"
+
+int main(int argc, char** argv) {
+  app::Cli cli;
+  if (auto status = cli.parse(argc, argv)) return *status;
+  if (*cli.render) return app::renderCommand(cli.render_args);
+  if (*cli.still) return app::stillCommand(cli.still_args);
+  if (*cli.compare) return app::compareCommand(cli.compare_args);
+  return cli.runLight();
+}

@@ -1,0 +1,338 @@
+#include "scene/sweep.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <set>
+
+#include "scene/tree.hpp"
+
+namespace scene {
+namespace {
+
+constexpr std::int64_t kMaxRows = 100'000'000;
+
+struct Failure {
+  std::string message;
+};
+
+int lineOf(const YAML::Node& node) { return node.Mark().is_null() ? 1 : node.Mark().line + 1; }
+
+// A key split into its dotted parts and an optional list index: "body.dents.at[1]" →
+// {body, dents, at}, 1.
+struct KeyPath {
+  std::vector<std::string> parts;
+  std::optional<std::size_t> index;
+};
+
+std::optional<KeyPath> splitKey(const std::string& key) {
+  KeyPath path;
+  std::string name = key;
+  if (!name.empty() && name.back() == ']') {
+    const auto open = name.rfind('[');
+    if (open == std::string::npos) return std::nullopt;
+    const std::string digits = name.substr(open + 1, name.size() - open - 2);
+    if (digits.empty() || digits.size() > 3 ||
+        digits.find_first_not_of("0123456789") != std::string::npos)
+      return std::nullopt;
+    path.index = std::stoul(digits);
+    name = name.substr(0, open);
+  }
+  std::size_t start = 0;
+  while (true) {
+    const auto dot = name.find('.', start);
+    const std::string part = name.substr(start, dot == std::string::npos ? dot : dot - start);
+    if (part.empty()) return std::nullopt;
+    path.parts.push_back(part);
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  return path;
+}
+
+std::string withoutIndex(const std::string& key) {
+  const auto open = key.rfind('[');
+  return key.back() == ']' && open != std::string::npos ? key.substr(0, open) : key;
+}
+
+// Puts `value` at `path` in `node`, making the maps on the way when they are missing. The
+// caller has checked that an indexed list exists and is long enough.
+void put(YAML::Node node, const KeyPath& path, std::size_t depth, const YAML::Node& value) {
+  const std::string& part = path.parts[depth];
+  if (depth + 1 == path.parts.size()) {
+    if (path.index)
+      node[part][*path.index] = value;
+    else
+      node[part] = value;
+    return;
+  }
+  if (!node[part].IsMap()) node[part] = YAML::Node(YAML::NodeType::Map);
+  put(node[part], path, depth + 1, value);
+}
+
+// The node at `path` without its index, or an undefined node.
+YAML::Node find(const YAML::Node& root, const KeyPath& path) {
+  YAML::Node node = YAML::Clone(root);
+  for (const std::string& part : path.parts) {
+    if (!node.IsMap()) return YAML::Node(YAML::NodeType::Undefined);
+    YAML::Node child = node[part];
+    if (!child.IsDefined()) return child;
+    node.reset(child);
+  }
+  return node;
+}
+
+std::string flowText(const YAML::Node& node) {
+  if (node.IsScalar()) return node.Scalar();
+  YAML::Emitter out;
+  out.SetSeqFormat(YAML::Flow);
+  out.SetMapFormat(YAML::Flow);
+  out << node;
+  return out.c_str();
+}
+
+// Twelve significant digits: what a range's value is, so the table's text is the value run.
+std::string rangeValue(double v) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.12g", v + 0.0);  // + 0.0: no "-0"
+  return text;
+}
+
+double number(const YAML::Node& node, const std::string& where, const std::string& what) {
+  double v = 0;
+  if (!node.IsDefined() || !node.IsScalar() || node.Tag() == "!" ||
+      !YAML::convert<double>::decode(node, v) || !std::isfinite(v))
+    throw Failure{where + " " + what + " must be a number"};
+  return v;
+}
+
+std::vector<std::string> rangeValues(const YAML::Node& spec, const std::string& where) {
+  std::set<std::string> seen;
+  for (const auto& entry : spec) {
+    const std::string key = entry.first.as<std::string>();
+    if (key != "from" && key != "to" && key != "count" && key != "scale")
+      throw Failure{where + " has '" + key + "', not a key of a range (from, to, count, scale)"};
+  }
+  const double from = number(spec["from"], where, "from");
+  const double to = number(spec["to"], where, "to");
+  const double count_value = number(spec["count"], where, "count");
+  if (count_value != std::floor(count_value) || count_value < 1 || count_value > 1e6)
+    throw Failure{where + " count must be a whole number from 1 to 1e6"};
+  const auto count = static_cast<int>(count_value);
+  std::string scale = "linear";
+  if (spec["scale"]) {
+    if (!spec["scale"].IsScalar()) throw Failure{where + " scale must be linear or log"};
+    scale = spec["scale"].Scalar();
+  }
+  if (scale != "linear" && scale != "log")
+    throw Failure{where + " scale must be linear or log, not '" + scale + "'"};
+  if (scale == "log" && !(from > 0 && to > 0))
+    throw Failure{where + " a log range needs from and to above 0 (from " + rangeValue(from) +
+                  ", to " + rangeValue(to) + ")"};
+  if (count == 1 && from != to)
+    throw Failure{where + " count 1 needs from = to (or give a list of one value)"};
+  std::vector<std::string> values;
+  for (int k = 0; k < count; ++k) {
+    const double f = count == 1 ? 0.0 : static_cast<double>(k) / (count - 1);
+    const double v = k == count - 1 ? to
+                     : scale == "log" ? from * std::pow(to / from, f)
+                                      : from + (to - from) * f;
+    values.push_back(rangeValue(v));
+  }
+  return values;
+}
+
+}  // namespace
+
+std::int64_t Sweep::rows() const {
+  std::int64_t n = 1;
+  for (const SweepAxis& axis : axes) n *= static_cast<std::int64_t>(axis.values.size());
+  return n;
+}
+
+std::vector<int> Sweep::coordinates(std::int64_t row) const {
+  std::vector<int> at(axes.size());
+  for (std::size_t i = axes.size(); i-- > 0;) {
+    const auto n = static_cast<std::int64_t>(axes[i].values.size());
+    at[i] = static_cast<int>(row % n);
+    row /= n;
+  }
+  return at;
+}
+
+std::int64_t Sweep::bodyGroup(std::int64_t row) const {
+  const std::vector<int> at = coordinates(row);
+  std::int64_t group = 0;
+  for (std::size_t i = 0; i < axes.size(); ++i)
+    if (axes[i].body) group = group * static_cast<std::int64_t>(axes[i].values.size()) + at[i];
+  return group;
+}
+
+std::int64_t Sweep::bodyGroups() const {
+  std::int64_t n = 1;
+  for (const SweepAxis& axis : axes)
+    if (axis.body) n *= static_cast<std::int64_t>(axis.values.size());
+  return n;
+}
+
+struct SweepScenes::Impl {
+  Sweep sweep;
+  std::string base_name;
+  YAML::Node base;
+  std::vector<KeyPath> paths;
+  std::vector<std::vector<YAML::Node>> values;  // [axis][value]
+  std::map<std::string, std::string> places;     // varied key (without index) → its place
+  // yaml-cpp's nodes share reference-counted memory that is not safe to touch from two threads
+  // at once; building a scene takes tens of microseconds, so one lock costs nothing measurable.
+  mutable std::mutex mutex;
+
+  rb::Result<Loaded> build(const std::vector<int>& at) const {
+    std::lock_guard lock(mutex);
+    YAML::Node root = YAML::Clone(base);
+    for (std::size_t i = 0; i < paths.size(); ++i) put(root, paths[i], 0, values[i][at[i]]);
+    return loadTree(root, base_name, places);
+  }
+};
+
+SweepScenes::SweepScenes(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+SweepScenes::SweepScenes(SweepScenes&&) noexcept = default;
+SweepScenes::~SweepScenes() = default;
+
+rb::Result<Loaded> SweepScenes::scene(std::int64_t row) const {
+  return impl_->build(impl_->sweep.coordinates(row));
+}
+
+rb::Result<SweepScenes> SweepScenes::open(const Sweep& sweep) {
+  auto impl = std::make_unique<Impl>();
+  impl->sweep = sweep;
+  impl->base_name = sweep.base;
+  try {
+    impl->base = YAML::LoadFile(sweep.base);
+    if (sweep.duration) {
+      const KeyPath path{{"simulation", "duration"}, std::nullopt};
+      put(impl->base, path, 0, YAML::Load(rangeValue(*sweep.duration)));
+    }
+    for (const SweepAxis& axis : sweep.axes) {
+      impl->paths.push_back(*splitKey(axis.key));
+      std::vector<YAML::Node> nodes;
+      for (const std::string& text : axis.values) nodes.push_back(YAML::Load(text));
+      impl->values.push_back(std::move(nodes));
+      impl->places[withoutIndex(axis.key)] = axis.place;
+    }
+  } catch (const YAML::Exception& e) {
+    return rb::Error{"", sweep.base + ": " + e.msg};
+  }
+  return SweepScenes(std::move(impl));
+}
+
+rb::Result<Sweep> loadSweep(const std::string& path) {
+  namespace fs = std::filesystem;
+  Sweep sweep;
+  sweep.file = path;
+  std::error_code ec;
+  if (fs::is_directory(path, ec))
+    return rb::Error{"", path + ": is a folder, not a sweep file (give a .yaml file, e.g. "
+                                "sweeps/spin-drag.yaml)"};
+  if (!fs::exists(path, ec)) return rb::Error{"", path + ": no such sweep file"};
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::BadFile&) {
+    return rb::Error{"", path + ": cannot open the sweep file"};
+  } catch (const YAML::Exception& e) {
+    const int line = e.mark.is_null() ? 1 : e.mark.line + 1;
+    return rb::Error{"", path + ":" + std::to_string(line) + ": malformed YAML: " + e.msg};
+  }
+  auto at = [&](const YAML::Node& node) { return path + ":" + std::to_string(lineOf(node)); };
+  try {
+    if (!root.IsMap())
+      throw Failure{path + ":1: a sweep is a map with the keys base, vary and duration"};
+    YAML::Node base_key, vary_key, duration_key;
+    YAML::Node base_node, vary, duration;
+    for (const auto& entry : root) {
+      const std::string key = entry.first.as<std::string>();
+      if (key == "base") base_key = entry.first, base_node = entry.second;
+      else if (key == "vary") vary_key = entry.first, vary = entry.second;
+      else if (key == "duration") duration_key = entry.first, duration = entry.second;
+      else
+        throw Failure{at(entry.first) + ": " + key +
+                      " is not a key of a sweep (known: base, vary, duration)"};
+    }
+    if (!base_node) throw Failure{path + ":1: base is required: the scene file the runs start from"};
+    if (!base_node.IsScalar() || base_node.Scalar().empty())
+      throw Failure{at(base_key) + ": base must be the path of a scene file"};
+    fs::path base = base_node.Scalar();
+    if (base.is_relative()) base = fs::path(path).parent_path() / base;
+    sweep.base = base.lexically_normal().string();
+    auto loaded_base = loadFile(sweep.base);
+    if (!loaded_base)
+      throw Failure{at(base_key) + ": base: " + loaded_base.error().text()};
+    if (duration) {
+      const double d = number(duration, at(duration_key) + ":", "duration");
+      if (!(d > 0)) throw Failure{at(duration_key) + ": duration must be above 0 s"};
+      sweep.duration = d;
+    }
+    if (!vary || !vary.IsMap() || vary.size() == 0)
+      throw Failure{(vary ? at(vary_key) : path + ":1") +
+                    ": vary must map scene keys to their values, e.g. initial.spin: [-5, 5]"};
+
+    YAML::Node base_tree = YAML::LoadFile(sweep.base);
+    std::set<std::string> keys;
+    double runs = 1;
+    for (const auto& entry : vary) {
+      SweepAxis axis;
+      axis.key = entry.first.as<std::string>();
+      axis.place = at(entry.first);
+      const std::string where = axis.place + ": " + axis.key;
+      const auto key_path = splitKey(axis.key);
+      if (!key_path)
+        throw Failure{where + " is not a scene key (dotted, e.g. contact.air_drag or "
+                              "body.dents.at[0])"};
+      if (!keys.insert(axis.key).second) throw Failure{where + " is varied twice"};
+      if (key_path->parts.front() == "video")
+        throw Failure{where + ": a sweep only simulates; video keys do not change a run"};
+      axis.body = key_path->parts.front() == "body" || key_path->parts.front() == "units";
+      const YAML::Node spec = entry.second;
+      if (spec.IsSequence()) {
+        if (spec.size() == 0) throw Failure{where + " has no values"};
+        for (const auto& value : spec) axis.values.push_back(flowText(value));
+      } else if (spec.IsMap()) {
+        axis.values = rangeValues(spec, where);
+      } else {
+        throw Failure{where + " must be a list of values or a range {from, to, count}"};
+      }
+      // An element of a list needs the list in the base scene.
+      if (key_path->index) {
+        const YAML::Node list = find(base_tree, *key_path);
+        if (!list.IsSequence() || list.size() <= *key_path->index)
+          throw Failure{where + ": the base scene has no list " + withoutIndex(axis.key) +
+                        " with an element " + std::to_string(*key_path->index)};
+      }
+      // The key must be one the scene knows: put its first value into the base and see
+      // whether the loader rejects the key itself (a bad value only refuses rows).
+      YAML::Node probe = YAML::Clone(base_tree);
+      put(probe, *key_path, 0, YAML::Load(axis.values.front()));
+      auto loaded = loadTree(probe, sweep.base, {{withoutIndex(axis.key), axis.place}});
+      if (!loaded && loaded.error().message.find("is not a known key") != std::string::npos &&
+          loaded.error().message.rfind(axis.place + ":", 0) == 0)
+        throw Failure{loaded.error().message};
+      runs *= static_cast<double>(axis.values.size());
+      if (runs > static_cast<double>(kMaxRows))
+        throw Failure{where + ": the axes so far make " + rangeValue(runs) +
+                      " runs; at most 1e8 in one sweep (split it)"};
+      sweep.axes.push_back(std::move(axis));
+    }
+  } catch (const Failure& f) {
+    return rb::Error{"", f.message};
+  } catch (const YAML::Exception& e) {
+    const int line = e.mark.is_null() ? 1 : e.mark.line + 1;
+    return rb::Error{"", path + ":" + std::to_string(line) + ": " + e.msg};
+  }
+  return sweep;
+}
+
+}  // namespace scene

@@ -1,0 +1,72 @@
+// Sweep files (YAML): a base scene and axes of values for any of its keys; the sweep is the
+// product of the axes, first axis slowest (README "Sweeps"). Errors name file, line and key,
+// as for scenes.
+//
+//   base: ../scenes/rattleback.yaml        # relative to the sweep file
+//   vary:
+//     initial.spin: {from: -10, to: 10, count: 41}
+//     contact.air_drag: [0.0, 5.9e-6, 5.9e-5]
+//     body.dents.at[0]: {from: 0.1, to: 1.0, count: 10, scale: log}
+//   duration: 8.0                           # optional: simulation.duration of every run
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/loader.hpp"
+#include "util/result.hpp"
+
+namespace scene {
+
+struct SweepAxis {
+  std::string key;  ///< dotted scene key, optionally ending in [i] for an element of a list
+  std::string place;  ///< "sweeps/x.yaml:4", where the axis is written
+  /// Each value as YAML flow text: what goes into the scene, and into the table.
+  std::vector<std::string> values;
+  /// Whether the key belongs to the body (body.*, units.*): runs that share the values of all
+  /// such axes share one compiled body.
+  bool body = false;
+};
+
+struct Sweep {
+  std::string file;  ///< as given
+  std::string base;  ///< the base scene's path (resolved against the sweep file's folder)
+  std::vector<SweepAxis> axes;
+  std::optional<double> duration;  ///< s; overrides simulation.duration
+
+  /// The number of runs: the product of the axes' sizes.
+  std::int64_t rows() const;
+  /// Which value of each axis row `row` takes (first axis slowest).
+  std::vector<int> coordinates(std::int64_t row) const;
+  /// Rows that share a body have the same body group (0 … bodyGroups() − 1).
+  std::int64_t bodyGroup(std::int64_t row) const;
+  std::int64_t bodyGroups() const;
+};
+
+/// Reads and checks a sweep file: its keys, the base scene (which must load), each axis key
+/// (which must be a scene key), and each range. A value that makes one scene invalid is not an
+/// error here: that run is refused when it is built.
+rb::Result<Sweep> loadSweep(const std::string& path);
+
+/// The scenes of a sweep: the base parsed once, then for each row a copy with one value of
+/// each axis put in. Safe to use from several threads.
+class SweepScenes {
+ public:
+  static rb::Result<SweepScenes> open(const Sweep& sweep);
+  SweepScenes(SweepScenes&&) noexcept;
+  ~SweepScenes();
+
+  /// The scene of `row`, or why it is refused (one line naming the sweep file's line for a
+  /// varied key, the base scene's for the others).
+  rb::Result<Loaded> scene(std::int64_t row) const;
+
+ private:
+  struct Impl;
+  explicit SweepScenes(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace scene

@@ -1,0 +1,19 @@
+// Inside scene/: loading a scene from a YAML tree that was built or changed in code (a sweep's
+// copies of its base scene). Only scene/ includes yaml-cpp.
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <map>
+#include <string>
+
+#include "scene/loader.hpp"
+
+namespace scene {
+
+/// As loadString, from a parsed tree. `places` maps dotted keys that were set from elsewhere
+/// to where ("sweeps/x.yaml:4"): an error in such a key (or inside it) names that place.
+rb::Result<Loaded> loadTree(const YAML::Node& root, const std::string& name,
+                            const std::map<std::string, std::string>& places);
+
+}  // namespace scene
