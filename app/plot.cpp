@@ -217,7 +217,7 @@ rb::Status heatmapPng(const std::string& png, const Heatmap& map, int width, int
            << "set palette defined (0 '#440154', 1 '#3b528b', 2 '#21918c', 3 '#5ec962', 4 '#fde725')\n"
            << "set object 1 rectangle from graph 0,0 to graph 1,1 behind fc rgb '#c8c8c8' fs solid\n";
     if (!map.note.empty())
-      script << "set label 1 " << quoted(map.note) << " at screen 0.01, screen 0.02 left\n";
+      script << "set label 1 " << quoted(map.note) << " at screen 0.99, screen 0.02 right\n";
     bool any = false;
     for (double v : map.values) any = any || std::isfinite(v);
     if (!any) script << "set cbrange [0:1]\n";

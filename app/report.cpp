@@ -196,7 +196,33 @@ int reportCommand(const ReportArgs& args) {
     if (!claimed && (endsWith(name, ".png") || endsWith(name, ".csv"))) others.push_back(name);
   }
 
-  // A CSV of its own (bench.csv, a sweep's table) is no scene: it goes with the other files.
+  // A sweep's table (its sidecar says so), with its heatmaps NAME.png and NAME-*.png.
+  struct SweepFiles {
+    std::string name, csv;
+    nlohmann::json meta;
+    std::vector<std::string> images;
+  };
+  std::vector<SweepFiles> sweeps;
+  for (auto it = scenes.begin(); it != scenes.end();) {
+    std::optional<nlohmann::json> meta;
+    if (it->second.has(".csv.json")) meta = readJson(dir / it->second.at(".csv.json"));
+    if (it->second.has(".csv") && meta && meta->value("command", "") == "sweep") {
+      SweepFiles sweep{it->first, it->second.at(".csv"), *meta, {}};
+      for (auto o = others.begin(); o != others.end();) {
+        if (endsWith(*o, ".png") && (*o == it->first + ".png" || o->rfind(it->first + "-", 0) == 0)) {
+          sweep.images.push_back(*o);
+          o = others.erase(o);
+        } else {
+          ++o;
+        }
+      }
+      sweeps.push_back(std::move(sweep));
+      it = scenes.erase(it);
+    } else {
+      ++it;
+    }
+  }
+  // A CSV of its own (bench.csv) is no scene: it goes with the other files.
   for (auto it = scenes.begin(); it != scenes.end();) {
     if (it->second.by_suffix.size() == 1 && it->second.has(".csv")) {
       others.push_back(it->second.at(".csv"));
@@ -234,8 +260,22 @@ int reportCommand(const ReportArgs& args) {
     writeImages(out, f, kPlotSuffixes, std::size(kPlotSuffixes), "Against time");
     out << "</section>\n";
   }
+  for (const SweepFiles& sweep : sweeps) {
+    out << "<section id=\"sweep-" << escape(sweep.name) << "\"><h2>Sweep: " << escape(sweep.name)
+        << "</h2>\n<p>" << sweep.meta.value("rows", 0) << " runs of "
+        << escape(sweep.meta.value("base", "?")) << " over ";
+    const nlohmann::json axes = sweep.meta.value("axes", nlohmann::json::array());
+    for (std::size_t i = 0; i < axes.size(); ++i)
+      out << (i ? " × " : "") << "<code>" << escape(axes[i].value("key", "?")) << "</code> ("
+          << axes[i].value("values", nlohmann::json::array()).size() << " values)";
+    out << ": <a href=\"" << escape(sweep.csv) << "\">the table (CSV)</a></p><div class=\"grid\">\n";
+    for (const std::string& image : sweep.images)
+      out << "<a href=\"" << escape(image) << "\"><img src=\"" << escape(image) << "\" alt=\""
+          << escape(image) << "\"></a>\n";
+    out << "</div></section>\n";
+  }
   if (!others.empty()) {
-    out << "<section id=\"other\"><h2>Benchmarks, sweeps and other figures</h2><div class=\"grid\">\n";
+    out << "<section id=\"other\"><h2>Benchmarks and other figures</h2><div class=\"grid\">\n";
     for (const std::string& name : others) {
       if (endsWith(name, ".png"))
         out << "<a href=\"" << escape(name) << "\"><img src=\"" << escape(name) << "\" alt=\""

@@ -251,18 +251,20 @@ rb::Result<Sweep> loadSweep(const std::string& path) {
   try {
     if (!root.IsMap())
       throw Failure{path + ":1: a sweep is a map with the keys base, vary and duration"};
+    // (A default-constructed YAML::Node is a defined null, so presence is kept apart.)
     YAML::Node base_key, vary_key, duration_key;
     YAML::Node base_node, vary, duration;
+    bool has_base = false, has_vary = false, has_duration = false;
     for (const auto& entry : root) {
       const std::string key = entry.first.as<std::string>();
-      if (key == "base") base_key = entry.first, base_node = entry.second;
-      else if (key == "vary") vary_key = entry.first, vary = entry.second;
-      else if (key == "duration") duration_key = entry.first, duration = entry.second;
+      if (key == "base") base_key = entry.first, base_node = entry.second, has_base = true;
+      else if (key == "vary") vary_key = entry.first, vary = entry.second, has_vary = true;
+      else if (key == "duration") duration_key = entry.first, duration = entry.second, has_duration = true;
       else
         throw Failure{at(entry.first) + ": " + key +
                       " is not a key of a sweep (known: base, vary, duration)"};
     }
-    if (!base_node) throw Failure{path + ":1: base is required: the scene file the runs start from"};
+    if (!has_base) throw Failure{path + ":1: base is required: the scene file the runs start from"};
     if (!base_node.IsScalar() || base_node.Scalar().empty())
       throw Failure{at(base_key) + ": base must be the path of a scene file"};
     fs::path base = base_node.Scalar();
@@ -271,13 +273,13 @@ rb::Result<Sweep> loadSweep(const std::string& path) {
     auto loaded_base = loadFile(sweep.base);
     if (!loaded_base)
       throw Failure{at(base_key) + ": base: " + loaded_base.error().text()};
-    if (duration) {
+    if (has_duration) {
       const double d = number(duration, at(duration_key) + ":", "duration");
       if (!(d > 0)) throw Failure{at(duration_key) + ": duration must be above 0 s"};
       sweep.duration = d;
     }
-    if (!vary || !vary.IsMap() || vary.size() == 0)
-      throw Failure{(vary ? at(vary_key) : path + ":1") +
+    if (!has_vary || !vary.IsMap() || vary.size() == 0)
+      throw Failure{(has_vary ? at(vary_key) : path + ":1") +
                     ": vary must map scene keys to their values, e.g. initial.spin: [-5, 5]"};
 
     YAML::Node base_tree = YAML::LoadFile(sweep.base);

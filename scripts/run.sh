@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The main job: set up, build, then write into out/ the default scene's preferred, reversed
 # and side-by-side videos and its four still views, the seed body's four still views,
-# telemetry, plots and analysis of every shipped scene, a bench of the default scene, and the
-# report page out/index.html that shows them all.
+# telemetry, plots and analysis of every shipped scene, the shipped sweeps' tables and heatmaps,
+# a bench of the default scene, and the report page out/index.html that shows them all.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -29,6 +29,10 @@ for scene in rattleback seed-preferred seed-reversed kane-levinson; do
   $rb analyze "scenes/$scene.yaml" --json > "out/$scene-analysis.json"
   $rb simulate "scenes/$scene.yaml" -o "out/$scene.csv" --plot out -q
 done
+
+echo "== sweeps on every core: reversal time against spin and drag, and against the dents"
+$rb sweep sweeps/spin-drag.yaml -o out/spin-drag.csv --plot out/spin-drag.png -q
+$rb sweep sweeps/dents.yaml -o out/dents.csv --plot out/dents.png -q
 
 echo "== bench of the default scene (speed against error, 3 s runs)"
 $rb bench scenes/rattleback.yaml -q -o out/bench.csv --plot out/bench.png --repeats 1 --rungs 4

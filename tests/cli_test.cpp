@@ -74,7 +74,8 @@ int lines(const std::string& text) { return static_cast<int>(std::count(text.beg
 
 TEST(Cli, HelpOnEveryCommand) {
   for (const char* command : {"--help", "simulate --help", "analyze --help", "render --help",
-                              "still --help", "compare --help", "bench --help"}) {
+                              "still --help", "compare --help", "bench --help", "report --help",
+                              "sweep --help", "sweep merge --help"}) {
     const Result r = rattleback(command);
     EXPECT_EQ(r.status, 0) << command;
     EXPECT_NE(r.out.find("Usage"), std::string::npos) << command;

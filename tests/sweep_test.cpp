@@ -1,0 +1,329 @@
+// `rattleback sweep` as a user runs it: the same table whatever the threads or shards, rows
+// that equal `simulate` on the same scene, errors that name file, line and key, a bad value
+// that refuses its row only, interrupts that keep the finished rows, and the merge's checks.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <thread>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch() {
+  const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+  const fs::path dir = fs::path(testing::TempDir()) / "rattleback_sweep" /
+                       (std::string(info->test_suite_name()) + "." + info->name());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+struct Outcome {
+  int status;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+Outcome rattleback(const fs::path& dir, const std::string& args) {
+  const std::string command = std::string(RATTLEBACK_BIN) + " " + args + " >" +
+                              (dir / "stdout").string() + " 2>" + (dir / "stderr").string() +
+                              " </dev/null";
+  const int raw = std::system(command.c_str());
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir / "stdout"), slurp(dir / "stderr")};
+}
+
+const std::string kBase = std::string(RATTLEBACK_SOURCE_DIR) + "/scenes/rattleback.yaml";
+
+fs::path writeSweep(const fs::path& dir, const std::string& text) {
+  const fs::path path = dir / "sweep.yaml";
+  std::ofstream(path) << text;
+  return path;
+}
+
+// Splits CSV text into rows of fields (RFC 4180 quotes), as Python's csv module reads it.
+std::vector<std::vector<std::string>> readCsv(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::vector<std::string> row(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') row.back() += '"', ++i;
+      else if (c == '"') quoted = false;
+      else row.back() += c;
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      row.emplace_back();
+    } else if (c == '\n') {
+      rows.push_back(row);
+      row.assign(1, "");
+    } else {
+      row.back() += c;
+    }
+  }
+  return rows;
+}
+
+// The table without its last column (wall_s, the only one that changes from run to run).
+std::string withoutWall(const std::string& text) {
+  std::string out;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) out += line.substr(0, line.rfind(',')) + "\n";
+  return out;
+}
+
+// Two spins (one reverses, one does not) × two dent scales: the body axis is the fast one, so
+// rows that share a body are not neighbours.
+const char* kSmallSweep = R"(base: BASE
+vary:
+  initial.spin: [-5, 5, -7.5]
+  body.dents.scale: [0.45, 0.4]
+duration: 3.0
+)";
+
+std::string smallSweep() {
+  std::string text = kSmallSweep;
+  text.replace(text.find("BASE"), 4, kBase);
+  return text;
+}
+
+}  // namespace
+
+TEST(Sweep, TheTableIsTheSameForOneOrTwoThreadsAndForMergedShards) {
+  const fs::path dir = scratch();
+  const fs::path sweep = writeSweep(dir, smallSweep());
+  const Outcome one = rattleback(dir, "sweep " + sweep.string() + " -q -j 1 -o " + (dir / "j1.csv").string());
+  ASSERT_EQ(one.status, 0) << one.err;
+  const Outcome two = rattleback(dir, "sweep " + sweep.string() + " -q -j 2 -o " + (dir / "j2.csv").string());
+  ASSERT_EQ(two.status, 0) << two.err;
+  std::string shards;
+  for (int i = 0; i < 3; ++i) {
+    const std::string shard = (dir / ("s" + std::to_string(i) + ".csv")).string();
+    const Outcome r = rattleback(dir, "sweep " + sweep.string() + " -q --shard " + std::to_string(i) +
+                                      "/3 -o " + shard);
+    ASSERT_EQ(r.status, 0) << r.err;
+    shards = shard + " " + shards;  // in reverse order: the merge orders the rows itself
+  }
+  const Outcome merged = rattleback(dir, "sweep merge -q " + (dir / "merged.csv").string() + " " + shards);
+  ASSERT_EQ(merged.status, 0) << merged.err;
+
+  const std::string reference = withoutWall(slurp(dir / "j1.csv"));
+  EXPECT_EQ(withoutWall(slurp(dir / "j2.csv")), reference);
+  EXPECT_EQ(withoutWall(slurp(dir / "merged.csv")), reference);
+  const auto rows = readCsv(reference);
+  ASSERT_EQ(rows.size(), 7u);  // the header and 3 × 2 runs
+  EXPECT_EQ(rows[0], (std::vector<std::string>{"row", "initial.spin", "body.dents.scale", "status",
+                                               "first_reversal_s", "reversals", "final_spin",
+                                               "max_tilt_deg", "energy_lost"}));
+  // First axis slowest.
+  EXPECT_EQ(rows[1][1], "-5");
+  EXPECT_EQ(rows[1][2], "0.45");
+  EXPECT_EQ(rows[2][2], "0.4");
+  EXPECT_EQ(rows[3][1], "5");
+  for (std::size_t i = 1; i < rows.size(); ++i) EXPECT_EQ(rows[i][0], std::to_string(i - 1));
+}
+
+// Each row against `simulate` of the same scene written out by hand: the reversal times, the
+// count, the final spin, the largest tilt and the energy lost agree to the table's 10 digits.
+TEST(Sweep, EveryRowIsWhatSimulateReportsForItsScene) {
+  const fs::path dir = scratch();
+  const fs::path sweep = writeSweep(dir, smallSweep());
+  const Outcome r = rattleback(dir, "sweep " + sweep.string() + " -q -o " + (dir / "t.csv").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = readCsv(slurp(dir / "t.csv"));
+  ASSERT_EQ(rows.size(), 7u);
+  const std::string base = slurp(kBase);
+  int reversing = 0;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const auto& row = rows[i];
+    ASSERT_EQ(row[3], "ok") << row[3];
+    std::string text = base;
+    text.replace(text.find("spin: -5.0"), 10, "spin: " + row[1]);
+    text.replace(text.find("scale: 0.45"), 11, "scale: " + row[2]);
+    text.replace(text.find("duration: 8.0"), 13, "duration: 3.0");
+    const fs::path scene = dir / ("row" + std::to_string(i) + ".yaml");
+    std::ofstream(scene) << text;
+    const fs::path csv = dir / ("row" + std::to_string(i) + ".csv");
+    const Outcome s = rattleback(dir, "simulate " + scene.string() + " -q -o " + csv.string());
+    ASSERT_EQ(s.status, 0) << s.err;
+    const auto meta = nlohmann::json::parse(slurp(csv.string() + ".json"));
+    const auto& result = meta["result"];
+    auto near = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(b)); };
+    if (result["first_reversal_s"].is_null()) {
+      EXPECT_EQ(row[4], "") << "row " << i;
+    } else {
+      ++reversing;
+      EXPECT_TRUE(near(std::stod(row[4]), result["first_reversal_s"].get<double>())) << "row " << i;
+    }
+    EXPECT_EQ(std::stoul(row[5]), result["reversals_s"].size()) << "row " << i;
+    EXPECT_TRUE(near(std::stod(row[6]), result["final_spin"].get<double>())) << "row " << i;
+    EXPECT_TRUE(near(std::stod(row[7]), result["max_tilt_deg"].get<double>())) << "row " << i;
+    const double e0 = result["energy_j"]["initial"], e1 = result["energy_j"]["final"];
+    EXPECT_TRUE(near(std::stod(row[8]), (e0 - e1) / e0)) << "row " << i;
+  }
+  // Within 3 s the clockwise spins reverse, except -5 with the shallower dents (a smaller
+  // misalignment: it reverses only after ≈5 s, as sweeps/dents.yaml shows); the
+  // counter-clockwise spin does not: the table is not a column of empty cells.
+  EXPECT_EQ(reversing, 3);
+}
+
+TEST(Sweep, ErrorsInTheSweepFileNameFileLineAndKey) {
+  const fs::path dir = scratch();
+  struct Case {
+    std::string text, expected;
+  };
+  const Case cases[] = {
+      {"base: BASE\nvary:\n  initial.spinn: [1, 2]\n", "sweep.yaml:3: initial.spinn is not a known key"},
+      {"base: BASE\nvary:\n  initial.spin: {from: 1, to: 2, count: 0}\n",
+       "sweep.yaml:3: initial.spin count must be a whole number from 1 to 1e6"},
+      {"base: BASE\nvary:\n  initial.spin: {from: 1, to: 2, count: 3, scale: cubic}\n",
+       "sweep.yaml:3: initial.spin scale must be linear or log, not 'cubic'"},
+      {"base: BASE\nvary:\n  initial.spin: 5\n",
+       "sweep.yaml:3: initial.spin must be a list of values or a range {from, to, count}"},
+      {"base: nowhere.yaml\nvary:\n  initial.spin: [1]\n", "sweep.yaml:1: base: "},
+      {"base: BASE\nvary:\n  initial.spin: [1]\nduraton: 3\n",
+       "sweep.yaml:4: duraton is not a key of a sweep"},
+      {"base: BASE\nvary:\n  body.dents.at[2]: [1]\n",
+       "sweep.yaml:3: body.dents.at[2]: the base scene has no list body.dents.at with an element 2"},
+      {"base: BASE\nvary: [1, 2]\n", "sweep.yaml:2: vary must map scene keys to their values"},
+      {"base: BASE\nvary:\n  initial.spin: [1\n", "malformed YAML"},
+  };
+  for (const Case& c : cases) {
+    std::string text = c.text;
+    if (auto at = text.find("BASE"); at != std::string::npos) text.replace(at, 4, kBase);
+    const fs::path sweep = writeSweep(dir, text);
+    const Outcome r = rattleback(dir, "sweep " + sweep.string() + " -q -o " + (dir / "t.csv").string());
+    EXPECT_EQ(r.status, 2) << c.text;
+    EXPECT_NE(r.err.find(c.expected), std::string::npos) << c.text << "\ngot: " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "t.csv")) << c.text;
+  }
+}
+
+// A value that makes one scene invalid refuses that row, named where the sweep file sets it;
+// the other rows run.
+TEST(Sweep, ABadValueRefusesItsRowOnly) {
+  const fs::path dir = scratch();
+  const fs::path sweep = writeSweep(
+      dir, "base: " + kBase + "\nvary:\n  contact.air_drag: [0.0, -1.0]\n  initial.spin: [-5]\nduration: 1\n");
+  const Outcome r = rattleback(dir, "sweep " + sweep.string() + " -q -o " + (dir / "t.csv").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = readCsv(slurp(dir / "t.csv"));
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[1][3], "ok");
+  EXPECT_EQ(rows[2][3].rfind("refused: " + sweep.string() + ":3: contact.air_drag", 0), 0u) << rows[2][3];
+  EXPECT_EQ(rows[2][4], "");
+}
+
+// Ctrl-C keeps the finished rows (in OUT.partial) and writes no table; --resume runs the rest,
+// and the table equals an uninterrupted run's.
+TEST(Sweep, AnInterruptKeepsTheFinishedRowsAndResumeCompletesThem) {
+  const fs::path dir = scratch();
+  const fs::path sweep = writeSweep(
+      dir, "base: " + kBase + "\nvary:\n  initial.spin: {from: -8, to: 8, count: 161}\nduration: 8\n");
+  const fs::path table = dir / "t.csv";
+  const std::string command = std::string(RATTLEBACK_BIN) + " sweep " + sweep.string() +
+                              " -q -j 1 -o " + table.string();
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    execl("/bin/sh", "sh", "-c", ("exec " + command + " 2>" + (dir / "stderr").string()).c_str(),
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // Wait until some rows are in the journal, then interrupt.
+  const fs::path journal = table.string() + ".partial";
+  for (int i = 0; i < 400; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    const std::string rows = fs::exists(journal) ? slurp(journal) : std::string();
+    if (std::count(rows.begin(), rows.end(), '\n') > 5) break;
+  }
+  kill(pid, SIGINT);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  ASSERT_EQ(WEXITSTATUS(status), 130) << slurp(dir / "stderr");
+  EXPECT_FALSE(fs::exists(table));
+  const std::string kept = slurp(journal);
+  const auto kept_rows = std::count(kept.begin(), kept.end(), '\n') - 1;
+  EXPECT_GT(kept_rows, 0);
+  EXPECT_LT(kept_rows, 161);
+  EXPECT_NE(slurp(dir / "stderr").find("--resume"), std::string::npos);
+
+  const Outcome resumed = rattleback(dir, "sweep " + sweep.string() + " -q --resume -o " + table.string());
+  ASSERT_EQ(resumed.status, 0) << resumed.err;
+  EXPECT_FALSE(fs::exists(journal));
+  const Outcome whole = rattleback(dir, "sweep " + sweep.string() + " -q -o " + (dir / "whole.csv").string());
+  ASSERT_EQ(whole.status, 0) << whole.err;
+  EXPECT_EQ(withoutWall(slurp(table)), withoutWall(slurp(dir / "whole.csv")));
+}
+
+TEST(Sweep, TheMergeRefusesAMissingOrRepeatedRow) {
+  const fs::path dir = scratch();
+  const fs::path sweep = writeSweep(dir, smallSweep());
+  for (int i = 0; i < 2; ++i) {
+    const Outcome r = rattleback(dir, "sweep " + sweep.string() + " -q --shard " + std::to_string(i) +
+                                      "/2 -o " + (dir / ("s" + std::to_string(i) + ".csv")).string());
+    ASSERT_EQ(r.status, 0) << r.err;
+  }
+  const std::string s0 = (dir / "s0.csv").string(), s1 = (dir / "s1.csv").string();
+  const Outcome missing = rattleback(dir, "sweep merge -q " + (dir / "m.csv").string() + " " + s0);
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(missing.err.find("rows missing (3 of 6), e.g. 1 3 5"), std::string::npos) << missing.err;
+  const Outcome repeated = rattleback(dir, "sweep merge -q " + (dir / "m.csv").string() + " " + s0 + " " + s1 + " " + s0);
+  EXPECT_EQ(repeated.status, 2);
+  EXPECT_NE(repeated.err.find("row 0 is also in"), std::string::npos) << repeated.err;
+  EXPECT_FALSE(fs::exists(dir / "m.csv"));
+}
+
+// The Slurm script: a job array of N tasks, one shard each, and the merge after all of them.
+TEST(Sweep, EmitSlurmWritesAJobArrayAndItsMerge) {
+  const fs::path dir = scratch();
+  const fs::path sweep = writeSweep(dir, smallSweep());
+  const Outcome r = rattleback(dir, "sweep " + sweep.string() + " --emit slurm --shards 3 -o " +
+                                    (dir / "t.csv").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("#SBATCH --array=0-2\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("--dependency=afterok:\"$SLURM_ARRAY_JOB_ID\""), std::string::npos);
+  EXPECT_NE(r.out.find("--shard \"$SLURM_ARRAY_TASK_ID/3\""), std::string::npos);
+  std::ofstream(dir / "job.sh") << r.out;
+  EXPECT_EQ(std::system(("bash -n " + (dir / "job.sh").string()).c_str()), 0);
+  const Outcome p = rattleback(dir, "sweep " + sweep.string() + " --emit parallel --shards 3");
+  ASSERT_EQ(p.status, 0) << p.err;
+  EXPECT_EQ(std::count(p.out.begin(), p.out.end(), '\n'), 3);
+  const Outcome none = rattleback(dir, "sweep " + sweep.string() + " --emit slurm");
+  EXPECT_EQ(none.status, 2);
+  EXPECT_NE(none.err.find("--shards"), std::string::npos);
+}
+
+// The commands that only simulate start without the rendering libraries (OSMesa and LLVM behind
+// it, EGL, libav): `rattleback` is not linked to them; rattleback-render is, beside it.
+TEST(Sweep, TheProgramThatSimulatesLoadsNoRenderingLibrary) {
+  const fs::path dir = scratch();
+  const std::string bin = RATTLEBACK_BIN;
+  const int raw = std::system(("ldd " + bin + " > " + (dir / "ldd").string()).c_str());
+  ASSERT_EQ(WEXITSTATUS(raw), 0);
+  const std::string libraries = slurp(dir / "ldd");
+  for (const char* heavy : {"libOSMesa", "libEGL", "libGL", "libLLVM", "libavcodec", "libavformat", "libswscale"})
+    EXPECT_EQ(libraries.find(heavy), std::string::npos) << heavy << " in\n" << libraries;
+  EXPECT_TRUE(fs::exists(fs::path(bin).parent_path() / "rattleback-render"));
+}
