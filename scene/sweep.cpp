@@ -184,16 +184,19 @@ struct SweepScenes::Impl {
   std::string base_name;
   YAML::Node base;
   std::vector<KeyPath> paths;
-  std::vector<std::vector<YAML::Node>> values;  // [axis][value]
   std::map<std::string, std::string> places;     // varied key (without index) → its place
   // yaml-cpp's nodes share reference-counted memory that is not safe to touch from two threads
   // at once; building a scene takes tens of microseconds, so one lock costs nothing measurable.
   mutable std::mutex mutex;
 
+  // Each row's tree is a fresh copy with fresh values parsed from their text: a node put into
+  // another tree merges the two trees' memory for good in yaml-cpp, so values kept from row to
+  // row would collect every row's nodes (and each row would take longer than the last).
   rb::Result<Loaded> build(const std::vector<int>& at) const {
     std::lock_guard lock(mutex);
     YAML::Node root = YAML::Clone(base);
-    for (std::size_t i = 0; i < paths.size(); ++i) put(root, paths[i], 0, values[i][at[i]]);
+    for (std::size_t i = 0; i < paths.size(); ++i)
+      put(root, paths[i], 0, YAML::Load(sweep.axes[i].values[at[i]]));
     return loadTree(root, base_name, places);
   }
 };
@@ -218,9 +221,6 @@ rb::Result<SweepScenes> SweepScenes::open(const Sweep& sweep) {
     }
     for (const SweepAxis& axis : sweep.axes) {
       impl->paths.push_back(*splitKey(axis.key));
-      std::vector<YAML::Node> nodes;
-      for (const std::string& text : axis.values) nodes.push_back(YAML::Load(text));
-      impl->values.push_back(std::move(nodes));
       impl->places[withoutIndex(axis.key)] = axis.place;
     }
   } catch (const YAML::Exception& e) {
