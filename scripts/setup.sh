@@ -14,7 +14,7 @@ packages=(
   clang libclang-rt-14-dev
   libboost-dev nlohmann-json3-dev
   chromium chromium-driver python3-selenium
-  parallel slurm-wlm munge
+  parallel slurm-wlm munge time
 )
 
 missing=()
