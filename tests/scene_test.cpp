@@ -244,7 +244,7 @@ TEST(BadScenes, EachExitsTwoFromTheCommandLineWithOneLineAndNoOutput) {
 TEST(BadScenes, ControlCharactersInTheFileStayOnOneLine) {
   // Found by the fuzzer: yaml-cpp quotes a bad escape's character back, here a newline; and a
   // quoted key can hold one too. The message escapes them.
-  for (const std::string yaml : {std::string("units: {length: \"\\\n\"}\n"),
+  for (const std::string& yaml : {std::string("units: {length: \"\\\n\"}\n"),
                                  std::string("\"bad\\nkey\": 1\n"),
                                  std::string("uits:\377\377\377\377~\377 \377\377{\022\000\n", 18)}) {
     const std::string message = errorFor(yaml);
