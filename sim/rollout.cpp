@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "sim/adaptive.hpp"
+#include "sim/crossing.hpp"
 #include "sim/initial.hpp"
 #include "sim/rolling.hpp"
 #include "sim/step.hpp"
@@ -183,26 +184,8 @@ void Rollout::watch() {
 void Rollout::locateReversal(double previous_spin, double spin) {
   if (reference_sign_ == 0 || !std::isfinite(spin)) return;
   if (spin * reference_sign_ < 0 && previous_spin * reference_sign_ >= 0) {
-    double a = previous_.t, b = current_.t, fa = previous_spin, fb = spin;
-    int side = 0;
-    for (int i = 0; i < 60 && b - a > 1e-14 * std::max(1.0, b); ++i) {
-      const double c = (a * fb - b * fa) / (fb - fa);
-      const double fc = angularVelocity(model_, interpolate(c)).z();
-      if (fc * fb > 0) {
-        b = c, fb = fc;
-        if (side == -1) fa /= 2;
-        side = -1;
-      } else if (fc * fa > 0) {
-        a = c, fa = fc;
-        if (side == 1) fb /= 2;
-        side = 1;
-      } else {
-        a = b = c;
-        break;
-      }
-    }
-    crossing_ = fa == fb ? a : (a * fb - b * fa) / (fb - fa);
-    if (a == b) crossing_ = a;
+    crossing_ = zeroCrossing([&](double t) { return angularVelocity(model_, interpolate(t)).z(); },
+                             previous_.t, current_.t, previous_spin, spin);
   }
   // A crossing while the body was in the air or still bouncing is none.
   if (crossing_ && *crossing_ - last_airborne_ < kSettleTime) crossing_.reset();

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "sim/crossing.hpp"
 #include "support.hpp"
 
 using namespace testing_support;
@@ -226,4 +227,41 @@ TEST(Rollout, AStopRequestEndsTheRun) {
   watched.stopWith(source.get_token());
   source.request_stop();
   EXPECT_FALSE(watched.advanceTo(0.1));
+}
+
+// The reversal detector's root finder on signals whose zero is known: exact (to rounding) for
+// a straight line, as regula falsi's first secant is the line itself; to 1e-14 s for smooth
+// simple roots (the sine's π, the exponential's ln 2, a cubic's 0.3 far off the bracket's
+// middle); and few evaluations: Illinois converges superlinearly (≈1.44 per step, Dowell &
+// Jarratt 1971), so 60 is a generous cap that a slow, linearly converging method would hit.
+TEST(Reversal, TheCrossingIsExactForKnownSignals) {
+  int calls = 0;
+  auto counted = [&](auto f) {
+    return [&calls, f](double t) {
+      ++calls;
+      return f(t);
+    };
+  };
+  auto line = [](double t) { return -4.0 * (t - 2.3); };
+  EXPECT_NEAR(sim::zeroCrossing(counted(line), 2.0, 2.5, line(2.0), line(2.5)), 2.3, 1e-15);
+  EXPECT_LE(calls, 2);
+
+  calls = 0;
+  auto sine = [](double t) { return std::sin(t); };
+  EXPECT_NEAR(sim::zeroCrossing(counted(sine), 3.0, 3.4, sine(3.0), sine(3.4)), M_PI, 1e-14);
+  EXPECT_LE(calls, 12);
+
+  calls = 0;
+  auto exponential = [](double t) { return std::exp(t) - 2.0; };
+  EXPECT_NEAR(sim::zeroCrossing(counted(exponential), 0.0, 1.0, exponential(0.0), exponential(1.0)),
+              std::log(2.0), 1e-14);
+  EXPECT_LE(calls, 15);
+
+  calls = 0;
+  auto cubic = [](double t) { return (t - 0.3) * (t * t + 1.0); };
+  EXPECT_NEAR(sim::zeroCrossing(counted(cubic), 0.0, 5.0, cubic(0.0), cubic(5.0)), 0.3, 1e-14);
+  EXPECT_LE(calls, 30);
+
+  // A zero at an end is that end.
+  EXPECT_EQ(sim::zeroCrossing(sine, 0.0, 1.0, 0.0, sine(1.0)), 0.0);
 }
