@@ -7,10 +7,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "render/image_io.hpp"
 
 namespace fs = std::filesystem;
 
@@ -215,11 +218,25 @@ TEST(Cli, SimulatePlotsTheFourFigures) {
   ASSERT_EQ(r.status, 0) << r.err;
   for (const char* what : {"energy", "spin", "tilt", "normal"}) {
     const fs::path png = dir / (std::string("rattleback-") + what + ".png");
-    std::ifstream in(png, std::ios::binary);
-    char magic[8] = {};
-    in.read(magic, 8);
-    EXPECT_EQ(std::string(magic + 1, 3), "PNG") << png;
-    EXPECT_GT(fs::file_size(png), 10000u) << png << ": too small for a drawn figure";
+    render::Image image;
+    ASSERT_TRUE(render::readPng(png.string(), image).ok()) << png;
+    EXPECT_EQ(image.width, 1000);
+    EXPECT_EQ(image.height, 500);
+    // The first series is drawn in gnuplot's first colour, dark violet #9400d3: count the
+    // columns that hold violet pixels (r and b well above g). The curve runs across the plot
+    // area (measured 690–891 of 1000 columns); the legend's sample line alone is ~40, and axes
+    // without a curve have none.
+    int columns = 0;
+    for (int x = 0; x < image.width; ++x) {
+      for (int y = 0; y < image.height; ++y) {
+        const unsigned char* p = &image.rgba[4 * (static_cast<std::size_t>(y) * image.width + x)];
+        if (p[0] - p[1] > 60 && p[2] - p[1] > 60) {
+          ++columns;
+          break;
+        }
+      }
+    }
+    EXPECT_GT(columns, 500) << png << ": no curve across the plot";
   }
   // A --plot folder that cannot be made: one line, exit 2, and no telemetry either.
   const fs::path csv = tempFile("none.csv");
@@ -302,7 +319,7 @@ void runsInEveryCommand(const fs::path& yaml) {
   EXPECT_EQ(r.status, 0) << r.err;
   r = rattleback("analyze --json " + yaml.string());
   EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_NO_THROW((void)nlohmann::json::parse(r.out)) << r.out;
+  EXPECT_NO_THROW({ const auto parsed = nlohmann::json::parse(r.out); }) << r.out;
   r = rattleback("still " + yaml.string() + " --t 0.1 --size 160x90 -q -o " + png.string());
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(fs::exists(png));
@@ -387,4 +404,94 @@ TEST(Cli, OutputFoldersAreMadeOrRefusedInOneLine) {
                                  nested.string());
   EXPECT_EQ(made.status, 0) << made.err;
   EXPECT_TRUE(fs::exists(nested));
+}
+
+namespace {
+
+// CSV text as rows of fields (no quoting needed for simulate's numbers).
+std::vector<std::vector<std::string>> csvRows(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<std::string> fields;
+    std::istringstream cells(line);
+    std::string cell;
+    while (std::getline(cells, cell, ',')) fields.push_back(cell);
+    rows.push_back(fields);
+  }
+  return rows;
+}
+
+}  // namespace
+
+// What a user reads in the telemetry: samples at exactly k/rate, the initial spin of the scene
+// as n = ω·ẑ (spin about the body axis tilted 0.5° about x and y: n = −5 cos² 0.5°), the total
+// energy the sum of its terms, and the sidecar's figures the table's. Tolerances: the CSV
+// prints 10 and 9 significant digits.
+TEST(Outputs, TheTelemetryHoldsTheScenesNumbers) {
+  const fs::path csv = tempFile("t.csv");
+  const Result r = rattleback("simulate -q " + scene("rattleback") + " --duration 1 --rate 100 -o " +
+                              csv.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream in(csv);
+  std::stringstream text;
+  text << in.rdbuf();
+  const auto rows = csvRows(text.str());
+  ASSERT_EQ(rows.size(), 102u);  // header + t = 0, 0.01, …, 1
+  std::map<std::string, std::size_t> column;
+  for (std::size_t i = 0; i < rows[0].size(); ++i) column[rows[0][i]] = i;
+  for (const char* name : {"t", "spin", "energy", "kinetic", "potential", "elastic", "tilt_deg"})
+    ASSERT_TRUE(column.count(name)) << name;
+  auto value = [&](std::size_t row, const char* name) { return std::stod(rows[row].at(column[name])); };
+  for (std::size_t k = 1; k < rows.size(); ++k) {
+    EXPECT_NEAR(value(k, "t"), static_cast<double>(k - 1) / 100, 1e-12) << "row " << k;
+    const double sum = value(k, "kinetic") + value(k, "potential") + value(k, "elastic");
+    EXPECT_NEAR(value(k, "energy"), sum, 2e-8 * value(k, "energy")) << "row " << k;
+  }
+  const double c = std::cos(0.5 * M_PI / 180);
+  EXPECT_NEAR(value(1, "spin"), -5.0 * c * c, 1e-8);
+  EXPECT_NEAR(value(1, "tilt_deg"), std::acos(c * c) * 180 / M_PI, 1e-6);
+  std::ifstream meta_in(csv.string() + ".json");
+  const nlohmann::json meta = nlohmann::json::parse(meta_in);
+  EXPECT_EQ(meta["rows"], 101);
+  EXPECT_NEAR(meta["result"]["energy_j"]["initial"].get<double>(), value(1, "energy"),
+              1e-8 * value(1, "energy"));
+  EXPECT_NEAR(meta["result"]["final_spin"].get<double>(), value(101, "spin"), 1e-8);
+
+  // With contact springs (the seed's points model) the elastic term is not zero, and it is in
+  // the total too.
+  const fs::path springs = tempFile("s.csv");
+  ASSERT_EQ(rattleback("simulate -q " + scene("seed-reversed") + " --duration 0.2 --rate 100 -o " +
+                       springs.string()).status, 0);
+  std::ifstream springs_in(springs);
+  std::stringstream springs_text;
+  springs_text << springs_in.rdbuf();
+  const auto seed = csvRows(springs_text.str());
+  ASSERT_EQ(seed.size(), 22u);
+  double largest_elastic = 0;
+  for (std::size_t k = 1; k < seed.size(); ++k) {
+    const double kinetic = std::stod(seed[k][column["kinetic"]]),
+                 potential = std::stod(seed[k][column["potential"]]),
+                 elastic = std::stod(seed[k][column["elastic"]]),
+                 energy = std::stod(seed[k][column["energy"]]);
+    largest_elastic = std::max(largest_elastic, elastic);
+    EXPECT_NEAR(energy, kinetic + potential + elastic, 2e-8 * energy) << "row " << k;
+  }
+  EXPECT_GT(largest_elastic, 0);
+}
+
+// The default body's theory as SPEC states it ("Physics caveat": misalignment ≈ +2.2°,
+// roll/pitch ≈ 3.5/7.0 Hz, reverses when spun clockwise): within 0.1 (the SPEC's rounding,
+// and the grid's 0.5 % on the mass properties).
+TEST(Outputs, AnalyzeJsonGivesTheDefaultBodysNumbers) {
+  const Result r = rattleback("analyze " + scene("rattleback") + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_DOUBLE_EQ(j["mass"].get<double>(), 0.059);
+  EXPECT_EQ(j["preferred"], "ccw");
+  EXPECT_NEAR(j["misalignment_deg"].get<double>(), 2.2, 0.1);
+  EXPECT_NEAR(j["frequencies_hz"]["roll"].get<double>(), 3.5, 0.1);
+  EXPECT_NEAR(j["frequencies_hz"]["pitch"].get<double>(), 7.0, 0.1);
+  EXPECT_TRUE(j["rest_stable"].get<bool>());
 }

@@ -181,6 +181,10 @@ TEST(BadScenes, MalformedYamlNamesTheLine) {
   const std::string message = errorFor("units: {length: 0.01}\nbody: [\n  shape: x\n");
   EXPECT_NE(message.find("inline.yaml:"), std::string::npos) << message;
   EXPECT_NE(message.find("malformed YAML"), std::string::npos) << message;
+  // The line is the one at fault: a key indented deeper than its neighbours on line 4.
+  const std::string indented =
+      errorFor("units: {length: 0.01}\nbody:\n  shape: paraboloid\n   mass: 1\n");
+  EXPECT_EQ(indented.rfind("inline.yaml:4: malformed YAML", 0), 0u) << indented;
   EXPECT_EQ(errorFor("").rfind("inline.yaml:1: the scene is empty", 0), 0u);
   EXPECT_EQ(errorFor("- 1\n- 2\n").rfind("inline.yaml:1: scene must be a map", 0), 0u);
 }
