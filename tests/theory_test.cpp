@@ -79,13 +79,18 @@ TEST(Rolling, ConservesEnergyWithoutDrag) {
 }
 
 // The smooth penalty model (k = 2e4 N/m, c = 20 N s/m, μ = 0.5, regularised) rolls almost
-// without slipping: its first reversal agrees with the rolling model's within a few per cent
-// (measured 0.3%; we allow 3%).
+// without slipping: its first reversal comes 0.34 % after the rolling model's (2.3475 against
+// 2.3395 s). That is the models' difference, not integration error (the smooth run's step moves
+// it by 0.013 %: 2.3475, 2.3477, 2.3478 s at dt 20, 10, 5 µs; rolling's rk4 by 3e-6 %): the
+// spring's compliance is about half of it (0.15 % at k = 8e4) and the regularised friction's
+// creep the rest. We allow 0.5 %.
 TEST(Smooth, AgreesWithRollingAtFriction05) {
   sim::SceneSpec spec = parse(kRollingScene);
   spec.body.grid = {0.05, 0.05, 0.05};
   spec.simulation.duration = 4.0;
-  const double rolling = *runScene(spec, 100).summary.first_reversal_s;
+  const SceneRun rolling_run = runScene(spec, 100);
+  ASSERT_TRUE(rolling_run.summary.first_reversal_s.has_value());
+  const double rolling = *rolling_run.summary.first_reversal_s;
   spec.contact.model = "smooth";
   spec.contact.stiffness = 2e4;
   spec.contact.damping = 20;
@@ -94,7 +99,7 @@ TEST(Smooth, AgreesWithRollingAtFriction05) {
   spec.simulation.dt = 2e-5;
   const SceneRun smooth = runScene(spec, 2000);
   ASSERT_TRUE(smooth.summary.first_reversal_s.has_value());
-  EXPECT_NEAR(*smooth.summary.first_reversal_s / rolling, 1.0, 0.03);
+  EXPECT_NEAR(*smooth.summary.first_reversal_s / rolling, 1.0, 0.005);
 }
 
 namespace {
