@@ -1,0 +1,221 @@
+// What the videos show, and when: frames decoded from the MP4s `render` writes (libavcodec)
+// against `still --t t_k` of the same scene, time and size; the colours after the RGBA → YUV
+// → RGB round trip; frames that move; and --both's files, counts and spins.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+extern "C" {
+#include <libavcodec/avcodec.h>
+#include <libavformat/avformat.h>
+#include <libswscale/swscale.h>
+}
+
+#include "render/image_io.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kSource = RATTLEBACK_SOURCE_DIR;
+constexpr int kWidth = 320, kHeight = 180;
+
+fs::path scratch(const std::string& name) {
+  const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+  const fs::path dir = fs::path(testing::TempDir()) / "rattleback_video" /
+                       (std::string(info->test_suite_name()) + "." + info->name());
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+int rattleback(const std::string& args) {
+  const std::string command = "cd " + kSource.string() + " && " + RATTLEBACK_BIN + " " + args +
+                              " >/dev/null 2>" + scratch("stderr.txt").string();
+  const int raw = std::system(command.c_str());
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+}
+
+// Every frame of the MP4's video stream in presentation order, as RGBA; the YUV is read as
+// it is tagged (BT.709, limited range), as a browser does.
+std::vector<render::Image> decodeFrames(const fs::path& path) {
+  std::vector<render::Image> frames;
+  AVFormatContext* format = nullptr;
+  if (avformat_open_input(&format, path.c_str(), nullptr, nullptr) < 0) return frames;
+  avformat_find_stream_info(format, nullptr);
+  const int stream = av_find_best_stream(format, AVMEDIA_TYPE_VIDEO, -1, -1, nullptr, 0);
+  const AVCodec* codec = avcodec_find_decoder(format->streams[stream]->codecpar->codec_id);
+  AVCodecContext* decoder = avcodec_alloc_context3(codec);
+  avcodec_parameters_to_context(decoder, format->streams[stream]->codecpar);
+  decoder->thread_count = 1;
+  avcodec_open2(decoder, codec, nullptr);
+  AVPacket* packet = av_packet_alloc();
+  AVFrame* frame = av_frame_alloc();
+  SwsContext* sws = nullptr;
+  auto drain = [&] {
+    while (avcodec_receive_frame(decoder, frame) == 0) {
+      sws = sws_getCachedContext(sws, frame->width, frame->height,
+                                 static_cast<AVPixelFormat>(frame->format), frame->width,
+                                 frame->height, AV_PIX_FMT_RGBA, SWS_BICUBIC, nullptr, nullptr,
+                                 nullptr);
+      const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
+      sws_setColorspaceDetails(sws, bt709, 0, bt709, 1, 0, 1 << 16, 1 << 16);
+      render::Image image;
+      image.width = frame->width;
+      image.height = frame->height;
+      image.rgba.resize(static_cast<std::size_t>(4) * frame->width * frame->height);
+      uint8_t* out[] = {image.rgba.data()};
+      const int stride[] = {4 * frame->width};
+      sws_scale(sws, frame->data, frame->linesize, 0, frame->height, out, stride);
+      frames.push_back(std::move(image));
+    }
+  };
+  while (av_read_frame(format, packet) >= 0) {
+    if (packet->stream_index == stream) {
+      avcodec_send_packet(decoder, packet);
+      drain();
+    }
+    av_packet_unref(packet);
+  }
+  avcodec_send_packet(decoder, nullptr);
+  drain();
+  sws_freeContext(sws);
+  av_frame_free(&frame);
+  av_packet_free(&packet);
+  avcodec_free_context(&decoder);
+  avformat_close_input(&format);
+  return frames;
+}
+
+render::Image still(const std::string& args) {
+  static int count = 0;
+  const fs::path png = scratch("still" + std::to_string(count++) + ".png");
+  render::Image image;
+  if (rattleback("still " + args + " -q --size " + std::to_string(kWidth) + "x" +
+                 std::to_string(kHeight) + " -o " + png.string()) != 0) {
+    ADD_FAILURE() << "still " << args;
+    return image;
+  }
+  EXPECT_TRUE(render::readPng(png.string(), image).ok());
+  return image;
+}
+
+// Mean absolute difference per channel (0–255) between the 4 × 4-pixel block averages of two
+// images, over the middle of the frame, where the body is in every view; the read-outs (top
+// lines, the inset in a corner) lie outside it, and a video frame's titles say more than a
+// still's. Blocks, because 4:2:0 video keeps colour at 2 × 2 pixels and x264 smooths the
+// body's fine point pattern: pixel by pixel the round trip alone moves the middle by 7–9
+// steps, block by block by 2.2–2.6 (measured below), while a body one frame later moves it by
+// 12 or more.
+double difference(const render::Image& a, const render::Image& b) {
+  if (a.width != b.width || a.height != b.height || a.rgba.empty()) return 1e9;
+  constexpr int kBlock = 4;
+  double sum = 0;
+  long count = 0;
+  for (int by = a.height / 5 / kBlock; by < a.height * 4 / 5 / kBlock; ++by)
+    for (int bx = a.width / 4 / kBlock; bx < a.width * 3 / 4 / kBlock; ++bx)
+      for (int c = 0; c < 3; ++c) {
+        int sa = 0, sb = 0;
+        for (int y = by * kBlock; y < (by + 1) * kBlock; ++y)
+          for (int x = bx * kBlock; x < (bx + 1) * kBlock; ++x) {
+            const std::size_t i = 4 * (static_cast<std::size_t>(y) * a.width + x) + c;
+            sa += a.rgba[i];
+            sb += b.rgba[i];
+          }
+        sum += std::abs(sa - sb) / static_cast<double>(kBlock * kBlock);
+        ++count;
+      }
+  return sum / static_cast<double>(count);
+}
+
+// The right time against the next frame's: 5 separates 2.6 from 12.
+constexpr double kRoundTrip = 5.0;
+
+}  // namespace
+
+// Frame k of a video is the still at t_k = k · playback / fps: first, middle and last frame, at
+// 25 and 30 fps and in slow motion; and the frame is not the still of the next frame's time.
+TEST(VideoContent, FrameKIsTheStillAtItsTime) {
+  struct Case {
+    int fps;
+    double playback;
+  };
+  for (const Case c : {Case{25, 1.0}, Case{30, 1.0}, Case{25, 0.5}}) {
+    const fs::path mp4 = scratch("v" + std::to_string(c.fps) + ".mp4");
+    const double duration = 1.0;
+    ASSERT_EQ(rattleback("render scenes/rattleback.yaml -q --duration 1 --fps " +
+                         std::to_string(c.fps) + " --playback " + std::to_string(c.playback) +
+                         " --size 320x180 -o " + mp4.string()),
+              0);
+    const std::vector<render::Image> frames = decodeFrames(mp4);
+    const int expected = static_cast<int>(std::lround(duration / c.playback * c.fps));
+    ASSERT_EQ(static_cast<int>(frames.size()), expected) << mp4;
+    for (const int k : {0, expected / 2, expected - 1}) {
+      const double t = k * c.playback / c.fps;
+      char time[32];
+      std::snprintf(time, sizeof time, "%.9g", t);
+      const double same = difference(frames[k], still("scenes/rattleback.yaml --t " + std::string(time)));
+      std::snprintf(time, sizeof time, "%.9g", t + 1.0 / c.fps);
+      const double next = difference(frames[k], still("scenes/rattleback.yaml --t " + std::string(time)));
+      EXPECT_LT(same, kRoundTrip) << c.fps << " fps, playback " << c.playback << ", frame " << k;
+      EXPECT_GT(next, kRoundTrip) << c.fps << " fps, playback " << c.playback << ", frame " << k;
+      EXPECT_GT(next, 2 * same) << c.fps << " fps, playback " << c.playback << ", frame " << k;
+    }
+    // A spinning body moves between consecutive frames.
+    EXPECT_GT(difference(frames[10], frames[11]), 1.0) << mp4;
+  }
+}
+
+// After the YUV round trip the top is still red and the bottom still blue: seen from the side,
+// both show (red: r > 150 with g, b < 100; blue: b > 120 with r < 90), and a swap of the
+// chroma planes or of R and B would turn one into the other.
+TEST(VideoContent, RedTopAndBlueBottomSurviveTheRoundTrip) {
+  const fs::path mp4 = scratch("side.mp4");
+  ASSERT_EQ(rattleback("render scenes/rattleback.yaml -q --duration 0.2 --view side --size 320x180 -o " +
+                       mp4.string()),
+            0);
+  const std::vector<render::Image> frames = decodeFrames(mp4);
+  ASSERT_FALSE(frames.empty());
+  long red = 0, blue = 0;
+  const render::Image& f = frames[0];
+  double red_y = 0, blue_y = 0;
+  for (int y = 0; y < f.height; ++y)
+    for (int x = 0; x < f.width; ++x) {
+      const unsigned char* p = &f.rgba[4 * (static_cast<std::size_t>(y) * f.width + x)];
+      if (p[0] > 150 && p[1] < 100 && p[2] < 100) ++red, red_y += y;
+      if (p[2] > 120 && p[0] < 90 && p[2] > p[1] + 30) ++blue, blue_y += y;
+    }
+  EXPECT_GT(red, 50);
+  EXPECT_GT(blue, 50);
+  if (red > 0 && blue > 0) {
+    EXPECT_LT(red_y / red, blue_y / blue) << "the red top above the blue bottom";
+  }
+}
+
+// --both: each file has the frames of the duration, and each one's first frame is the still of
+// its own spin (−5 reverses, +5 is the preferred way), not of the other's.
+TEST(VideoContent, BothFilesHoldTheirOwnSpin) {
+  const fs::path base = scratch("pair");
+  ASSERT_EQ(rattleback("render scenes/rattleback.yaml -q --both --duration 0.4 --fps 25 --size 320x180 -o " +
+                       base.string()),
+            0);
+  const auto reversed = decodeFrames(base.string() + "-reversed.mp4");
+  const auto preferred = decodeFrames(base.string() + "-preferred.mp4");
+  const auto both = decodeFrames(base.string() + "-both.mp4");
+  ASSERT_EQ(reversed.size(), 10u);
+  ASSERT_EQ(preferred.size(), 10u);
+  ASSERT_EQ(both.size(), 10u);
+  EXPECT_EQ(both[0].width, 2 * kWidth);
+  // At t = 0 the two spins look alike but for their read-outs; a frame later they have
+  // turned 11° apart. Compare the last frames with the stills at t = 0.36 s.
+  const render::Image minus = still("scenes/rattleback.yaml --spin -5 --t 0.36");
+  const render::Image plus = still("scenes/rattleback.yaml --spin 5 --t 0.36");
+  EXPECT_LT(difference(reversed.back(), minus), kRoundTrip);
+  EXPECT_LT(difference(preferred.back(), plus), kRoundTrip);
+  EXPECT_GT(difference(reversed.back(), plus), kRoundTrip);
+  EXPECT_GT(difference(preferred.back(), minus), kRoundTrip);
+}
