@@ -1,6 +1,7 @@
 #include "app/cli.hpp"
 
 #include <array>
+#include <cstdlib>
 #include <iostream>
 
 #include "app/suggest.hpp"
@@ -35,6 +36,9 @@ Cli::Cli() {
                       "Spin for the growth rates and eigenvalues, rad/s (default: the scene's)");
 
   RenderArgs& r = render_args;
+  // The backend's default can come from the environment (CI runs the render tests on both).
+  if (const char* backend = std::getenv("RATTLEBACK_BACKEND"); backend && *backend)
+    render_args.backend = still_args.backend = backend;
   render = app.add_subcommand("render", "Render a scene to an MP4 video (H.264)");
   render->add_option("scene", r.scene, "Scene file (YAML)")->required();
   render->add_option("-o,--output", r.output,
@@ -50,11 +54,15 @@ Cli::Cli() {
   render->add_option("--tolerance", r.overrides.tolerance, "Adaptive steps to this error per step");
   render->add_option("--crf", r.crf, "x264 quality 1–51, lower is better (default 20)");
   render->add_option("--preset", r.preset, "x264 preset (default veryfast)");
+  render->add_option("--backend", r.backend,
+                     "OpenGL through egl (a GPU, or Mesa's llvmpipe without a display), osmesa, or "
+                     "auto: EGL when it starts, else OSMesa (default: $RATTLEBACK_BACKEND, or auto)");
   render->add_flag("--both", r.both,
                    "Also the reversed spin, named …-preferred.mp4 and …-reversed.mp4, and a "
                    "side-by-side …-both.mp4");
   render->add_flag("-q,--quiet", r.quiet, "No summary and no progress bar");
-  render->add_flag("-v,--verbose", r.verbose, "Also describe the model before running");
+  render->add_flag("-v,--verbose", r.verbose,
+                   "Also describe the model and the OpenGL in use (backend, vendor, renderer)");
 
   StillArgs& st = still_args;
   still = app.add_subcommand("still", "Render one frame of a scene to a PNG");
@@ -67,7 +75,9 @@ Cli::Cli() {
   still->add_option("--dt", st.overrides.dt, "Fixed time step, s");
   still->add_option("--tolerance", st.overrides.tolerance, "Adaptive steps to this error per step");
   still->add_flag("--no-readouts", st.no_readouts, "No time, spin or inset plot");
+  still->add_option("--backend", st.backend, "auto (default) | egl | osmesa: as for render");
   still->add_flag("-q,--quiet", st.quiet, "Do not print the file name");
+  still->add_flag("-v,--verbose", st.verbose, "Also name the OpenGL in use (backend, vendor, renderer)");
 
   CompareArgs& c = compare_args;
   compare = app.add_subcommand(

@@ -42,6 +42,7 @@ struct RenderArgs {
   bool both = false;   ///< also the reversed spin and a side-by-side video
   int crf = 20;
   std::string preset = "veryfast";
+  std::string backend = "auto";  ///< auto | egl | osmesa
   bool quiet = false;
   bool verbose = false;
 };
@@ -53,7 +54,9 @@ struct StillArgs {
   Overrides overrides;
   double t = 0;        ///< s
   bool no_readouts = false;
+  std::string backend = "auto";  ///< auto | egl | osmesa
   bool quiet = false;
+  bool verbose = false;
 };
 int stillCommand(const StillArgs& args);
 

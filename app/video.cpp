@@ -34,8 +34,9 @@ constexpr const char* kPresets[] = {"ultrafast", "superfast", "veryfast", "faste
                                     "medium",    "slow",      "slower",   "veryslow", "placebo"};
 
 render::RenderSettings settingsOf(const VideoPlan& plan, double duration, double spin,
-                                  const std::string& title) {
+                                  const std::string& title, render::Backend backend) {
   render::RenderSettings s;
+  s.backend = backend;
   s.width = plan.width;
   s.height = plan.height;
   s.view = plan.view;
@@ -146,6 +147,12 @@ int renderCommand(const RenderArgs& args) {
     std::cerr << ok.error().text() << "\n";
     return kBadInput;
   }
+  const auto backend = rb::parseName<render::Backend>(args.backend);
+  if (!backend) {
+    std::cerr << "--backend: " << rb::choices<render::Backend>() << ", not '" << args.backend
+              << "'\n";
+    return kBadInput;
+  }
   auto loaded = loadScene(args.scene, args.overrides);
   if (!loaded) {
     std::cerr << loaded.error().text() << "\n";
@@ -201,12 +208,15 @@ int renderCommand(const RenderArgs& args) {
   for (const sim::Rollout& run : runs) {
     const double spin = run.model().initial.spin;
     auto created = render::Renderer::create(
-        settingsOf(plan, model.duration, spin, stem(args.scene) + ": spun " + describeSpin(spin)),
+        settingsOf(plan, model.duration, spin, stem(args.scene) + ": spun " + describeSpin(spin),
+                   *backend),
         bodyPointsOf(model));
     if (!created) {
       std::cerr << "render: " << created.error().text() << "\n";
       return kBadInput;
     }
+    if (args.verbose && renderers.empty())
+      std::cerr << "render: OpenGL " << created.value()->description() << "\n";
     renderers.push_back(std::move(created).value());
   }
 
@@ -312,14 +322,21 @@ int stillCommand(const StillArgs& args) {
     return kBadInput;
   }
 
+  const auto backend = rb::parseName<render::Backend>(args.backend);
+  if (!backend) {
+    std::cerr << "--backend: " << rb::choices<render::Backend>() << ", not '" << args.backend
+              << "'\n";
+    return kBadInput;
+  }
   render::RenderSettings settings =
-      settingsOf(plan, model.duration, model.initial.spin, stem(args.scene));
+      settingsOf(plan, model.duration, model.initial.spin, stem(args.scene), *backend);
   settings.readouts = !args.no_readouts;
   auto created = render::Renderer::create(settings, bodyPointsOf(model));
   if (!created) {
-    std::cerr << "render: " << created.error().text() << "\n";
+    std::cerr << "still: " << created.error().text() << "\n";
     return kBadInput;
   }
+  if (args.verbose) std::cerr << "still: OpenGL " << created.value()->description() << "\n";
   render::Renderer& renderer = *created.value();
   // Run to the still's time, keeping the spin at each earlier video frame for the inset, as
   // the video would have drawn it.

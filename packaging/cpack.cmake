@@ -13,7 +13,8 @@ set(CPACK_PACKAGE_DESCRIPTION
     "Simulates the rattleback (celt), the toy that, spun the wrong way, rocks, stops and
 spins back. YAML scene files in; MP4 videos (H.264), PNG stills, CSV telemetry, plots
 (gnuplot) and a report of the body's mass properties and linear stability out.
-It renders headlessly with OSMesa: no display or GPU needed.")
+It renders headlessly through EGL (Mesa's llvmpipe, or a GPU) or OSMesa: no display or
+GPU needed.")
 if(RATTLEBACK_HOMEPAGE)
   set(CPACK_DEBIAN_PACKAGE_HOMEPAGE "${RATTLEBACK_HOMEPAGE}")
 endif()
@@ -22,12 +23,13 @@ set(CPACK_STRIP_FILES ON)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
-# Shared libraries (OSMesa, FFmpeg, libpng, FreeType, yaml-cpp, libstdc++) through
-# dpkg-shlibdeps (package dpkg-dev); the font is opened at run time, so it is named here.
+# Shared libraries (libEGL, FFmpeg, libpng, FreeType, yaml-cpp, libstdc++) through
+# dpkg-shlibdeps (package dpkg-dev). Opened at run time, so named here: the font; Mesa's EGL
+# vendor library (libglvnd's libEGL finds it, and llvmpipe behind it, through its JSON file).
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "fonts-dejavu-core")
-# `simulate --plot` runs gnuplot.
-set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "gnuplot-nox")
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "fonts-dejavu-core, libegl-mesa0")
+# `simulate --plot` and sweeps' heatmaps run gnuplot; OSMesa (dlopen) is the second backend.
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "gnuplot-nox, libosmesa6")
 # Without dpkg-shlibdeps CPack would quietly write a package without its library Depends.
 set(CPACK_PROJECT_CONFIG_FILE "${CMAKE_CURRENT_LIST_DIR}/cpack_checks.cmake")
 

@@ -30,8 +30,13 @@ struct FrameInput {
   double spin = 0;  ///< n, rad/s
 };
 
+/// How OpenGL is reached (render/gl.hpp): EGL (a GPU, or Mesa's surfaceless llvmpipe) or OSMesa;
+/// Auto tries EGL first.
+enum class Backend { Auto, Egl, OsMesa };
+
 struct RenderSettings {
   int width = 1280, height = 720;  ///< pixels
+  Backend backend{};               ///< OpenGL through EGL or OSMesa (Backend::Auto: EGL first)
   View view = View::Oblique;
   std::string title;               ///< printed in the corner ("" for none)
   bool readouts = true;            ///< time, spin and the n(t) inset
@@ -56,6 +61,14 @@ struct NameTable<render::View> {
       {render::View::Front, "front"},
       {render::View::Side, "side"},
       {render::View::Follow, "follow"},
+  }};
+};
+template <>
+struct NameTable<render::Backend> {
+  static constexpr std::array<std::pair<render::Backend, std::string_view>, 3> entries{{
+      {render::Backend::Auto, "auto"},
+      {render::Backend::Egl, "egl"},
+      {render::Backend::OsMesa, "osmesa"},
   }};
 };
 }  // namespace rb

@@ -1,5 +1,10 @@
 #include "render/gl.hpp"
 
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#include <GL/osmesa.h>
+#include <dlfcn.h>
+
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -9,45 +14,259 @@
 #include <vector>
 
 namespace render {
+namespace {
 
-GlContext::~GlContext() {
-  if (!context_) return;
-  glDeleteFramebuffers(1, &fbo_);
-  glDeleteRenderbuffers(1, &color_);
-  glDeleteRenderbuffers(1, &depth_);
-  OSMesaDestroyContext(context_);
+// The context current on this thread, as far as our contexts go.
+thread_local GlContext* current_context = nullptr;
+
+template <typename Lookup>
+std::string loadApi(GlApi& api, Lookup lookup) {
+  std::string missing;
+#define RATTLEBACK_GL_LOAD(name)                                          \
+  api.name = reinterpret_cast<decltype(api.name)>(lookup(#name));         \
+  if (!api.name) missing += std::string(missing.empty() ? "" : ", ") + #name;
+  RATTLEBACK_GL_FUNCTIONS(RATTLEBACK_GL_LOAD)
+#undef RATTLEBACK_GL_LOAD
+  return missing.empty() ? "" : "OpenGL functions missing: " + missing;
 }
 
-std::string GlContext::create(int width, int height) {
-  const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24,
-                            OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 3,
-                            OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
-  context_ = OSMesaCreateContextAttribs(attributes, nullptr);
-  if (!context_) return "cannot create an OpenGL 3.3 core context (OSMesa)";
-  width_ = width;
-  height_ = height;
-  buffer_.assign(static_cast<std::size_t>(width) * height * 4, '\0');
-  if (!OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, width, height))
-    return "cannot make the OSMesa context current";
-  glGenRenderbuffers(1, &color_);
-  glBindRenderbuffer(GL_RENDERBUFFER, color_);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-  glGenRenderbuffers(1, &depth_);
-  glBindRenderbuffer(GL_RENDERBUFFER, depth_);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-  glGenFramebuffers(1, &fbo_);
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
-  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+// ---- OSMesa, opened at run time -------------------------------------------------------------
+
+struct OsMesaLibrary {
+  void* handle = nullptr;
+  decltype(&::OSMesaCreateContextAttribs) createContextAttribs = nullptr;
+  decltype(&::OSMesaMakeCurrent) makeCurrent = nullptr;
+  decltype(&::OSMesaDestroyContext) destroyContext = nullptr;
+  decltype(&::OSMesaGetProcAddress) getProcAddress = nullptr;
+  std::string error;
+};
+
+// Opened once for the process and never closed (Mesa keeps state until exit).
+const OsMesaLibrary& osMesa() {
+  static const OsMesaLibrary library = [] {
+    OsMesaLibrary l;
+    for (const char* name : {"libOSMesa.so.8", "libOSMesa.so"}) {
+      l.handle = dlopen(name, RTLD_NOW | RTLD_LOCAL);
+      if (l.handle) break;
+    }
+    if (!l.handle) {
+      l.error = "OSMesa is not installed (libOSMesa.so.8; Debian: apt-get install libosmesa6)";
+      return l;
+    }
+    l.createContextAttribs = reinterpret_cast<decltype(l.createContextAttribs)>(
+        dlsym(l.handle, "OSMesaCreateContextAttribs"));
+    l.makeCurrent = reinterpret_cast<decltype(l.makeCurrent)>(dlsym(l.handle, "OSMesaMakeCurrent"));
+    l.destroyContext =
+        reinterpret_cast<decltype(l.destroyContext)>(dlsym(l.handle, "OSMesaDestroyContext"));
+    l.getProcAddress =
+        reinterpret_cast<decltype(l.getProcAddress)>(dlsym(l.handle, "OSMesaGetProcAddress"));
+    if (!l.createContextAttribs || !l.makeCurrent || !l.destroyContext || !l.getProcAddress)
+      l.error = "libOSMesa lacks OSMesaCreateContextAttribs (needs Mesa 12 or later)";
+    return l;
+  }();
+  return library;
+}
+
+class OsMesaContext final : public GlContext {
+ public:
+  ~OsMesaContext() override {
+    if (!context_) return;
+    {
+      CurrentContext current(*this);
+      if (current.ok()) destroyFramebuffer();
+    }
+    osMesa().destroyContext(context_);
+  }
+
+  std::string create(int width, int height) {
+    backend_ = Backend::OsMesa;
+    const OsMesaLibrary& lib = osMesa();
+    if (!lib.error.empty()) return lib.error;
+    const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24,
+                              OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 3,
+                              OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+    context_ = lib.createContextAttribs(attributes, nullptr);
+    if (!context_) return "cannot create an OpenGL 3.3 core context";
+    buffer_.assign(static_cast<std::size_t>(width) * height * 4, '\0');
+    width_ = width;
+    height_ = height;
+    if (std::string e = loadApi(api_, [&](const char* name) {
+          return reinterpret_cast<void*>(lib.getProcAddress(name));
+        });
+        !e.empty())
+      return e;
+    CurrentContext current(*this);
+    if (!current.ok()) return "cannot make the context current";
+    return createFramebuffer(width, height);
+  }
+
+ protected:
+  bool makeCurrent() override {
+    // OSMesa draws into its own buffer of the context's size; ours go to the FBO.
+    return osMesa().makeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, width_, height_);
+  }
+  void release() override { osMesa().makeCurrent(nullptr, nullptr, GL_UNSIGNED_BYTE, 0, 0); }
+
+ private:
+  OSMesaContext context_ = nullptr;
+  std::string buffer_;
+};
+
+// ---- EGL ------------------------------------------------------------------------------------
+
+class EglContext final : public GlContext {
+ public:
+  ~EglContext() override {
+    if (context_ == EGL_NO_CONTEXT) return;
+    {
+      CurrentContext current(*this);
+      if (current.ok()) destroyFramebuffer();
+    }
+    eglDestroyContext(display_, context_);
+    // No eglTerminate: every context of this process gets the same display from
+    // eglGetPlatformDisplay, and terminating it would end the others' contexts too.
+  }
+
+  std::string create(int width, int height) {
+    backend_ = Backend::Egl;
+    width_ = width;
+    height_ = height;
+    std::string platform;
+    if (std::string e = openDisplay(platform); !e.empty()) return e;
+    if (!eglBindAPI(EGL_OPENGL_API)) return "EGL cannot bind the OpenGL API";
+    const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
+                                 EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                 EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    // Surfaceless: no config and no surface; everything is drawn into our FBO.
+    context_ = eglCreateContext(display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
+    if (context_ == EGL_NO_CONTEXT)
+      return "EGL cannot create an OpenGL 3.3 core context (error 0x" + hex(eglGetError()) + ")";
+    if (std::string e = loadApi(api_, [](const char* name) {
+          return reinterpret_cast<void*>(eglGetProcAddress(name));
+        });
+        !e.empty())
+      return e;
+    CurrentContext current(*this);
+    if (!current.ok()) return "EGL cannot make the context current";
+    if (std::string e = createFramebuffer(width, height); !e.empty()) return e;
+    description_ = "EGL (" + platform + "): " + description_;
+    return "";
+  }
+
+ protected:
+  bool makeCurrent() override {
+    return eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_) == EGL_TRUE;
+  }
+  void release() override {
+    eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  }
+
+ private:
+  static std::string hex(EGLint value) {
+    char text[16];
+    std::snprintf(text, sizeof text, "%x", static_cast<unsigned>(value));
+    return text;
+  }
+
+  // A GPU through the device platform when there is one (a device with a DRM node), else
+  // Mesa's surfaceless platform (which itself uses a render node when it can, or llvmpipe).
+  std::string openDisplay(std::string& platform) {
+    const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    const std::string extensions = client ? client : "";
+    auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+        eglGetProcAddress("eglGetPlatformDisplayEXT"));
+    if (!getPlatformDisplay) return "EGL has no eglGetPlatformDisplayEXT";
+    if (extensions.find("EGL_EXT_platform_device") != std::string::npos) {
+      auto queryDevices =
+          reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+      auto queryDeviceString = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(
+          eglGetProcAddress("eglQueryDeviceStringEXT"));
+      EGLDeviceEXT devices[16];
+      EGLint count = 0;
+      if (queryDevices && queryDeviceString && queryDevices(16, devices, &count)) {
+        for (EGLint i = 0; i < count; ++i) {
+          // A GPU: a device with a DRM node that is not Mesa's software device.
+          const char* names = queryDeviceString(devices[i], EGL_EXTENSIONS);
+          const std::string device = names ? std::string(" ") + names + " " : "";
+          if (device.find(" EGL_EXT_device_drm ") == std::string::npos ||
+              device.find(" EGL_MESA_device_software ") != std::string::npos)
+            continue;
+          display_ = getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+          if (display_ != EGL_NO_DISPLAY && eglInitialize(display_, nullptr, nullptr)) {
+            platform = "device";
+            return "";
+          }
+        }
+      }
+    }
+    if (extensions.find("EGL_MESA_platform_surfaceless") == std::string::npos)
+      return "EGL has neither a GPU device nor the surfaceless platform";
+    display_ = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    if (display_ == EGL_NO_DISPLAY || !eglInitialize(display_, nullptr, nullptr))
+      return "EGL cannot initialise the surfaceless platform (error 0x" + hex(eglGetError()) + ")";
+    platform = "surfaceless";
+    return "";
+  }
+
+  EGLDisplay display_ = EGL_NO_DISPLAY;
+  EGLContext context_ = EGL_NO_CONTEXT;
+};
+
+}  // namespace
+
+rb::Result<std::unique_ptr<GlContext>> GlContext::create(Backend backend, int width, int height) {
+  std::string egl_error, osmesa_error;
+  if (backend != Backend::OsMesa) {
+    auto egl = std::make_unique<EglContext>();
+    egl_error = egl->create(width, height);
+    if (egl_error.empty()) return std::unique_ptr<GlContext>(std::move(egl));
+    if (backend == Backend::Egl) return rb::Error{"", "--backend egl: " + egl_error};
+  }
+  auto osmesa = std::make_unique<OsMesaContext>();
+  osmesa_error = osmesa->create(width, height);
+  if (osmesa_error.empty()) {
+    osmesa->description_ = "OSMesa: " + osmesa->description_;
+    return std::unique_ptr<GlContext>(std::move(osmesa));
+  }
+  if (backend == Backend::OsMesa) return rb::Error{"", "--backend osmesa: " + osmesa_error};
+  return rb::Error{"", "no OpenGL for rendering: EGL: " + egl_error + "; OSMesa: " + osmesa_error};
+}
+
+std::string GlContext::createFramebuffer(int width, int height) {
+  const GlApi& gl = api_;
+  auto text = [&](GLenum name) {
+    const auto* s = reinterpret_cast<const char*>(gl.glGetString(name));
+    return std::string(s ? s : "?");
+  };
+  description_ = text(GL_VENDOR) + " " + text(GL_RENDERER) + ", OpenGL " + text(GL_VERSION);
+  gl.glGenRenderbuffers(1, &color_);
+  gl.glBindRenderbuffer(GL_RENDERBUFFER, color_);
+  gl.glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+  gl.glGenRenderbuffers(1, &depth_);
+  gl.glBindRenderbuffer(GL_RENDERBUFFER, depth_);
+  gl.glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+  gl.glGenFramebuffers(1, &fbo_);
+  gl.glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  gl.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_);
+  gl.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+  if (gl.glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     return "the framebuffer object is incomplete";
-  glViewport(0, 0, width, height);
+  gl.glViewport(0, 0, width, height);
   return "";
 }
 
+void GlContext::destroyFramebuffer() {
+  const GlApi& gl = api_;
+  if (fbo_) gl.glDeleteFramebuffers(1, &fbo_);
+  if (color_) gl.glDeleteRenderbuffers(1, &color_);
+  if (depth_) gl.glDeleteRenderbuffers(1, &depth_);
+  fbo_ = color_ = depth_ = 0;
+}
+
 void GlContext::readPixels(unsigned char* rgba) const {
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+  const GlApi& gl = api_;
+  gl.glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  gl.glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
   // OpenGL's rows run bottom-up: flip them.
   const std::size_t row = static_cast<std::size_t>(width_) * 4;
   std::vector<unsigned char> swap(row);
@@ -57,6 +276,25 @@ void GlContext::readPixels(unsigned char* rgba) const {
     std::memcpy(swap.data(), a, row);
     std::memcpy(a, b, row);
     std::memcpy(b, swap.data(), row);
+  }
+}
+
+CurrentContext::CurrentContext(GlContext& context) : previous_(current_context), context_(context) {
+  if (previous_ == &context_) {
+    ok_ = true;
+    return;
+  }
+  ok_ = context_.makeCurrent();
+  if (ok_) current_context = &context_;
+}
+
+CurrentContext::~CurrentContext() {
+  if (previous_ == &context_ || !ok_) return;
+  if (previous_ && previous_->makeCurrent()) {
+    current_context = previous_;
+  } else {
+    context_.release();
+    current_context = nullptr;
   }
 }
 
@@ -88,17 +326,17 @@ std::string readText(const std::string& path) {
   return s.str();
 }
 
-GLuint compile(GLenum type, const std::string& path) {
+GLuint compile(const GlApi& gl, GLenum type, const std::string& path) {
   const std::string source = readText(path);
   const char* text = source.c_str();
-  const GLuint shader = glCreateShader(type);
-  glShaderSource(shader, 1, &text, nullptr);
-  glCompileShader(shader);
+  const GLuint shader = gl.glCreateShader(type);
+  gl.glShaderSource(shader, 1, &text, nullptr);
+  gl.glCompileShader(shader);
   GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  gl.glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
   if (!ok) {
     char log[2048];
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+    gl.glGetShaderInfoLog(shader, sizeof log, nullptr, log);
     throw std::runtime_error(path + ": " + log);
   }
   return shader;
@@ -106,21 +344,21 @@ GLuint compile(GLenum type, const std::string& path) {
 
 }  // namespace
 
-GLuint loadProgram(const std::string& vertex_file, const std::string& fragment_file) {
+GLuint loadProgram(const GlApi& gl, const std::string& vertex_file, const std::string& fragment_file) {
   const std::string dir = assetsDir() + "/shaders/";
-  const GLuint vertex = compile(GL_VERTEX_SHADER, dir + vertex_file);
-  const GLuint fragment = compile(GL_FRAGMENT_SHADER, dir + fragment_file);
-  const GLuint program = glCreateProgram();
-  glAttachShader(program, vertex);
-  glAttachShader(program, fragment);
-  glLinkProgram(program);
-  glDeleteShader(vertex);
-  glDeleteShader(fragment);
+  const GLuint vertex = compile(gl, GL_VERTEX_SHADER, dir + vertex_file);
+  const GLuint fragment = compile(gl, GL_FRAGMENT_SHADER, dir + fragment_file);
+  const GLuint program = gl.glCreateProgram();
+  gl.glAttachShader(program, vertex);
+  gl.glAttachShader(program, fragment);
+  gl.glLinkProgram(program);
+  gl.glDeleteShader(vertex);
+  gl.glDeleteShader(fragment);
   GLint ok = 0;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  gl.glGetProgramiv(program, GL_LINK_STATUS, &ok);
   if (!ok) {
     char log[2048];
-    glGetProgramInfoLog(program, sizeof log, nullptr, log);
+    gl.glGetProgramInfoLog(program, sizeof log, nullptr, log);
     throw std::runtime_error(vertex_file + " + " + fragment_file + ": " + log);
   }
   return program;

@@ -1,39 +1,100 @@
-// OpenGL through OSMesa only (never libGL: its stubs draw black frames).
+// OpenGL off screen, through one of two backends behind one interface:
+//   - EGL (libglvnd's libEGL with Mesa's EGL vendor library, or a GPU's): the device platform
+//     where a GPU is present, else the surfaceless platform (llvmpipe); the way Mesa renders
+//     without a display since Mesa 25.1 removed OSMesa;
+//   - OSMesa (Debian 12's libOSMesa.so.8), opened at run time with dlopen, so that the program
+//     also starts on a system without it.
+// No GL function is linked: every one is looked up from the backend in use (OSMesaGetProcAddress,
+// eglGetProcAddress) into a table, so libGL's stubs can never take a call meant for OSMesa (they
+// would draw black frames), and the two backends can be linked into one program.
 #pragma once
 
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
 #include <GL/glext.h>
-#include <GL/osmesa.h>
 
+#include <memory>
 #include <string>
+
+#include "render/frame.hpp"
+#include "util/result.hpp"
 
 namespace render {
 
-/// An off-screen OpenGL 3.3 core context (OSMesa, llvmpipe) drawing into a framebuffer object
-/// with colour and depth.
+// The GL functions the renderer calls, looked up per backend (types from GL/gl.h's and
+// GL/glext.h's declarations; nothing is linked).
+#define RATTLEBACK_GL_FUNCTIONS(X)                                                          \
+  X(glAttachShader) X(glBindBuffer) X(glBindFramebuffer) X(glBindRenderbuffer)              \
+  X(glBindVertexArray) X(glBlendFunc) X(glBufferData) X(glCheckFramebufferStatus)           \
+  X(glClear) X(glClearColor) X(glCompileShader) X(glCreateProgram) X(glCreateShader)        \
+  X(glDeleteBuffers) X(glDeleteFramebuffers) X(glDeleteProgram) X(glDeleteRenderbuffers)    \
+  X(glDeleteShader) X(glDeleteVertexArrays) X(glDisable) X(glDrawArrays) X(glEnable)        \
+  X(glEnableVertexAttribArray) X(glFinish) X(glFramebufferRenderbuffer) X(glGenBuffers)     \
+  X(glGenFramebuffers) X(glGenRenderbuffers) X(glGenVertexArrays) X(glGetProgramInfoLog)    \
+  X(glGetProgramiv) X(glGetShaderInfoLog) X(glGetShaderiv) X(glGetString)                   \
+  X(glGetUniformLocation) X(glLinkProgram) X(glPixelStorei) X(glReadPixels)                 \
+  X(glRenderbufferStorage) X(glShaderSource) X(glUniform1f) X(glUniform2f) X(glUniform3fv)  \
+  X(glUniformMatrix4fv) X(glUseProgram) X(glVertexAttribPointer) X(glViewport)              \
+  X(glBlendFuncSeparate)
+
+struct GlApi {
+#define RATTLEBACK_GL_MEMBER(name) decltype(&::name) name = nullptr;
+  RATTLEBACK_GL_FUNCTIONS(RATTLEBACK_GL_MEMBER)
+#undef RATTLEBACK_GL_MEMBER
+};
+
+/// An off-screen OpenGL 3.3 core context drawing into a framebuffer object with colour and
+/// depth. Its GL calls are valid only while it is current: see CurrentContext.
 class GlContext {
  public:
-  GlContext() = default;
-  GlContext(const GlContext&) = delete;
-  GlContext& operator=(const GlContext&) = delete;
-  ~GlContext();
+  /// Creates the context and its FBO. Auto tries EGL, then OSMesa; the error names what each
+  /// backend said.
+  static rb::Result<std::unique_ptr<GlContext>> create(Backend backend, int width, int height);
+  virtual ~GlContext() = default;
 
-  /// Creates the context and the FBO; an error message when impossible.
-  std::string create(int width, int height);
-  /// Reads the FBO's pixels, rows top to bottom.
+  const GlApi& api() const { return api_; }
+  Backend backend() const { return backend_; }
+  /// "EGL (surfaceless): Mesa/X.org llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 …"
+  const std::string& description() const { return description_; }
+  /// Reads the FBO's pixels, rows top to bottom (the context must be current).
   void readPixels(unsigned char* rgba) const;
 
- private:
-  OSMesaContext context_ = nullptr;
-  std::string buffer_;  // OSMesa's own (unused) colour buffer
+ protected:
+  friend class CurrentContext;
+  virtual bool makeCurrent() = 0;
+  virtual void release() = 0;
+  /// After the backend's context exists and is current: the FBO and the description.
+  std::string createFramebuffer(int width, int height);
+  void destroyFramebuffer();
+
+  GlApi api_;
+  Backend backend_ = Backend::Auto;
+  std::string description_;
   GLuint fbo_ = 0, color_ = 0, depth_ = 0;
   int width_ = 0, height_ = 0;
 };
 
-/// Compiles and links a program from two files under the assets folder; throws on failure
-/// with the compiler's log.
-GLuint loadProgram(const std::string& vertex_file, const std::string& fragment_file);
+/// Makes a context current on this thread for the guard's lifetime, and on leaving puts back
+/// whichever of ours was current before (or none): two renderers on one thread each draw with
+/// their own context, whatever the order.
+class CurrentContext {
+ public:
+  explicit CurrentContext(GlContext& context);
+  ~CurrentContext();
+  CurrentContext(const CurrentContext&) = delete;
+  CurrentContext& operator=(const CurrentContext&) = delete;
+  /// False when the backend refused to make the context current.
+  bool ok() const { return ok_; }
+
+ private:
+  GlContext* previous_;
+  GlContext& context_;
+  bool ok_ = false;
+};
+
+/// Compiles and links a program from two files under the assets folder, with the current
+/// context's functions; throws on failure with the compiler's log.
+GLuint loadProgram(const GlApi& gl, const std::string& vertex_file, const std::string& fragment_file);
 
 /// The assets folder (shaders/, fonts.txt): $RATTLEBACK_ASSETS when set; else, found from the
 /// executable's own folder (/proc/self/exe), <exe dir>/../share/rattleback (the installed

@@ -9,8 +9,8 @@ namespace {
 
 const Eigen::Vector3f kBackground(0.93f, 0.94f, 0.96f);
 
-void setMatrix(GLuint program, const char* name, const Eigen::Matrix4f& m) {
-  glUniformMatrix4fv(glGetUniformLocation(program, name), 1, GL_FALSE, m.data());
+void setMatrix(const GlApi& gl, GLuint program, const char* name, const Eigen::Matrix4f& m) {
+  gl.glUniformMatrix4fv(gl.glGetUniformLocation(program, name), 1, GL_FALSE, m.data());
 }
 
 }  // namespace
@@ -20,12 +20,16 @@ Renderer::Renderer(const RenderSettings& settings, const BodyPoints& body)
     : settings_(settings), body_(body) {}
 
 Renderer::~Renderer() {
-  if (points_vbo_) glDeleteBuffers(1, &points_vbo_);
-  if (floor_vbo_) glDeleteBuffers(1, &floor_vbo_);
-  if (points_vao_) glDeleteVertexArrays(1, &points_vao_);
-  if (floor_vao_) glDeleteVertexArrays(1, &floor_vao_);
-  if (points_program_) glDeleteProgram(points_program_);
-  if (floor_program_) glDeleteProgram(floor_program_);
+  if (!context_) return;
+  CurrentContext current(*context_);
+  if (!current.ok()) return;
+  const GlApi& gl = context_->api();
+  if (points_vbo_) gl.glDeleteBuffers(1, &points_vbo_);
+  if (floor_vbo_) gl.glDeleteBuffers(1, &floor_vbo_);
+  if (points_vao_) gl.glDeleteVertexArrays(1, &points_vao_);
+  if (floor_vao_) gl.glDeleteVertexArrays(1, &floor_vao_);
+  if (points_program_) gl.glDeleteProgram(points_program_);
+  if (floor_program_) gl.glDeleteProgram(floor_program_);
 }
 
 rb::Result<std::unique_ptr<Renderer>> Renderer::create(const RenderSettings& settings,
@@ -36,11 +40,16 @@ rb::Result<std::unique_ptr<Renderer>> Renderer::create(const RenderSettings& set
 }
 
 std::string Renderer::init() {
-  if (std::string e = gl_.create(settings_.width, settings_.height); !e.empty()) return e;
+  auto context = GlContext::create(settings_.backend, settings_.width, settings_.height);
+  if (!context) return context.error().text();
+  context_ = std::move(context).value();
   if (std::string e = font_.load(std::max(8, settings_.height / 36)); !e.empty()) return e;
+  CurrentContext current(*context_);
+  if (!current.ok()) return "cannot make the OpenGL context current";
+  const GlApi& gl = context_->api();
   try {
-    points_program_ = loadProgram("points.vert", "points.frag");
-    floor_program_ = loadProgram("floor.vert", "floor.frag");
+    points_program_ = loadProgram(gl, "points.vert", "points.frag");
+    floor_program_ = loadProgram(gl, "floor.vert", "floor.frag");
   } catch (const std::exception& e) {
     return e.what();
   }
@@ -60,32 +69,32 @@ std::string Renderer::init() {
   point_count_ = static_cast<GLsizei>(data.size() / 4);
   half_extent_ = 0.5f * (high - low) + Eigen::Vector3f::Constant(body_.radius);
   middle_height_ = 0.5f * (high.z() + low.z());
-  glGenVertexArrays(1, &points_vao_);
-  glBindVertexArray(points_vao_);
-  glGenBuffers(1, &points_vbo_);
-  glBindBuffer(GL_ARRAY_BUFFER, points_vbo_);
-  glBufferData(GL_ARRAY_BUFFER, data.size() * sizeof(float), data.data(), GL_STATIC_DRAW);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 4 * sizeof(float), nullptr);
-  glVertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, 4 * sizeof(float),
+  gl.glGenVertexArrays(1, &points_vao_);
+  gl.glBindVertexArray(points_vao_);
+  gl.glGenBuffers(1, &points_vbo_);
+  gl.glBindBuffer(GL_ARRAY_BUFFER, points_vbo_);
+  gl.glBufferData(GL_ARRAY_BUFFER, data.size() * sizeof(float), data.data(), GL_STATIC_DRAW);
+  gl.glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 4 * sizeof(float), nullptr);
+  gl.glVertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, 4 * sizeof(float),
                         reinterpret_cast<void*>(3 * sizeof(float)));
-  glEnableVertexAttribArray(0);
-  glEnableVertexAttribArray(1);
+  gl.glEnableVertexAttribArray(0);
+  gl.glEnableVertexAttribArray(1);
 
   // Floor: a quad far larger than the body; the shader fades it out with distance.
   const float r = 40 * half_extent_.maxCoeff();
   const float quad[] = {-r, -r, r, -r, -r, r, r, r};
-  glGenVertexArrays(1, &floor_vao_);
-  glBindVertexArray(floor_vao_);
-  glGenBuffers(1, &floor_vbo_);
-  glBindBuffer(GL_ARRAY_BUFFER, floor_vbo_);
-  glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STATIC_DRAW);
-  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
-  glEnableVertexAttribArray(0);
+  gl.glGenVertexArrays(1, &floor_vao_);
+  gl.glBindVertexArray(floor_vao_);
+  gl.glGenBuffers(1, &floor_vbo_);
+  gl.glBindBuffer(GL_ARRAY_BUFFER, floor_vbo_);
+  gl.glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STATIC_DRAW);
+  gl.glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+  gl.glEnableVertexAttribArray(0);
 
-  glEnable(GL_DEPTH_TEST);
-  glEnable(GL_PROGRAM_POINT_SIZE);
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  gl.glEnable(GL_DEPTH_TEST);
+  gl.glEnable(GL_PROGRAM_POINT_SIZE);
+  gl.glEnable(GL_BLEND);
+  gl.glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   return "";
 }
 
@@ -100,21 +109,22 @@ void Renderer::drawFloor(const Camera& camera, const FrameInput& frame) {
   axis = axis.norm() > 1e-6f ? axis.normalized() : Eigen::Vector2f(0, 1);
   const Eigen::Vector2f position = frame.position_world.head<2>().cast<float>();
 
-  glUseProgram(floor_program_);
-  setMatrix(floor_program_, "u_view", camera.view);
-  setMatrix(floor_program_, "u_proj", camera.proj);
-  glUniform1f(glGetUniformLocation(floor_program_, "u_tile"), tile);
-  glUniform2f(glGetUniformLocation(floor_program_, "u_center"), fixed_target_.x(), fixed_target_.y());
-  glUniform1f(glGetUniformLocation(floor_program_, "u_fade_near"), 3 * size);
-  glUniform1f(glGetUniformLocation(floor_program_, "u_fade_far"), 12 * size);
-  glUniform3fv(glGetUniformLocation(floor_program_, "u_background"), 1, kBackground.data());
-  glUniform2f(glGetUniformLocation(floor_program_, "u_shadow_center"), position.x(), position.y());
-  glUniform2f(glGetUniformLocation(floor_program_, "u_shadow_axis"), axis.x(), axis.y());
-  glUniform2f(glGetUniformLocation(floor_program_, "u_shadow_half"), body_.footprint_half.x(),
+  const GlApi& gl = context_->api();
+  gl.glUseProgram(floor_program_);
+  setMatrix(gl, floor_program_, "u_view", camera.view);
+  setMatrix(gl, floor_program_, "u_proj", camera.proj);
+  gl.glUniform1f(gl.glGetUniformLocation(floor_program_, "u_tile"), tile);
+  gl.glUniform2f(gl.glGetUniformLocation(floor_program_, "u_center"), fixed_target_.x(), fixed_target_.y());
+  gl.glUniform1f(gl.glGetUniformLocation(floor_program_, "u_fade_near"), 3 * size);
+  gl.glUniform1f(gl.glGetUniformLocation(floor_program_, "u_fade_far"), 12 * size);
+  gl.glUniform3fv(gl.glGetUniformLocation(floor_program_, "u_background"), 1, kBackground.data());
+  gl.glUniform2f(gl.glGetUniformLocation(floor_program_, "u_shadow_center"), position.x(), position.y());
+  gl.glUniform2f(gl.glGetUniformLocation(floor_program_, "u_shadow_axis"), axis.x(), axis.y());
+  gl.glUniform2f(gl.glGetUniformLocation(floor_program_, "u_shadow_half"), body_.footprint_half.x(),
               body_.footprint_half.y());
-  glUniform1f(glGetUniformLocation(floor_program_, "u_shadow_strength"), 0.45f);
-  glBindVertexArray(floor_vao_);
-  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  gl.glUniform1f(gl.glGetUniformLocation(floor_program_, "u_shadow_strength"), 0.45f);
+  gl.glBindVertexArray(floor_vao_);
+  gl.glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
 }
 
 void Renderer::drawPoints(const Camera& camera, const FrameInput& frame) {
@@ -125,16 +135,17 @@ void Renderer::drawPoints(const Camera& camera, const FrameInput& frame) {
   const Eigen::Vector3f light_world = Eigen::Vector3f(0.3f, -0.6f, 1.0f).normalized();
   const Eigen::Vector3f light_view = camera.view.topLeftCorner<3, 3>() * light_world;
 
-  glUseProgram(points_program_);
-  setMatrix(points_program_, "u_model", model);
-  setMatrix(points_program_, "u_view", camera.view);
-  setMatrix(points_program_, "u_proj", camera.proj);
-  glUniform1f(glGetUniformLocation(points_program_, "u_radius"), body_.radius);
-  glUniform1f(glGetUniformLocation(points_program_, "u_viewport_h"),
+  const GlApi& gl = context_->api();
+  gl.glUseProgram(points_program_);
+  setMatrix(gl, points_program_, "u_model", model);
+  setMatrix(gl, points_program_, "u_view", camera.view);
+  setMatrix(gl, points_program_, "u_proj", camera.proj);
+  gl.glUniform1f(gl.glGetUniformLocation(points_program_, "u_radius"), body_.radius);
+  gl.glUniform1f(gl.glGetUniformLocation(points_program_, "u_viewport_h"),
               static_cast<float>(settings_.height));
-  glUniform3fv(glGetUniformLocation(points_program_, "u_light_view"), 1, light_view.data());
-  glBindVertexArray(points_vao_);
-  glDrawArrays(GL_POINTS, 0, point_count_);
+  gl.glUniform3fv(gl.glGetUniformLocation(points_program_, "u_light_view"), 1, light_view.data());
+  gl.glBindVertexArray(points_vao_);
+  gl.glDrawArrays(GL_POINTS, 0, point_count_);
 }
 
 void Renderer::drawReadouts(const FrameInput& frame, Image& out) {
@@ -161,14 +172,16 @@ void Renderer::draw(const FrameInput& frame, Image& out) {
   const Camera camera = cameraFor(settings_.view,
                                   settings_.view == View::Follow ? middle : fixed_target_,
                                   half_extent_, aspect);
-  glClearColor(kBackground.x(), kBackground.y(), kBackground.z(), 1);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  CurrentContext current(*context_);
+  const GlApi& gl = context_->api();
+  gl.glClearColor(kBackground.x(), kBackground.y(), kBackground.z(), 1);
+  gl.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   drawFloor(camera, frame);
   drawPoints(camera, frame);
   out.width = settings_.width;
   out.height = settings_.height;
   out.rgba.resize(static_cast<std::size_t>(out.width) * out.height * 4);
-  gl_.readPixels(out.rgba.data());
+  context_->readPixels(out.rgba.data());
   drawReadouts(frame, out);
 }
 

@@ -1,4 +1,4 @@
-// Draws frames of the body on the floor: OSMesa, OpenGL 3.3 core, into an FBO.
+// Draws frames of the body on the floor: OpenGL 3.3 core (EGL or OSMesa), into an FBO.
 #pragma once
 
 #include <array>
@@ -17,10 +17,14 @@ namespace render {
 
 class Renderer {
  public:
-  /// One renderer per thread: it owns an OpenGL context made current on the calling thread.
+  /// A renderer owns an OpenGL context, made current (and put back) around each of its calls,
+  /// so several renderers can take turns on one thread; one thread at a time.
   static rb::Result<std::unique_ptr<Renderer>> create(const RenderSettings& settings,
                                                                      const BodyPoints& body);
   ~Renderer();
+
+  /// The backend and the GL vendor, renderer and version (for --verbose).
+  const std::string& description() const { return context_->description(); }
 
   /// Draws one frame into `out` (resized to the settings' size), read-outs included; the
   /// frame's spin joins the inset's history.
@@ -39,7 +43,7 @@ class Renderer {
 
   RenderSettings settings_;
   BodyPoints body_;
-  GlContext gl_;
+  std::unique_ptr<GlContext> context_;
   Overlay font_;
   GLuint points_program_ = 0, floor_program_ = 0;
   GLuint points_vao_ = 0, points_vbo_ = 0, floor_vao_ = 0, floor_vbo_ = 0;

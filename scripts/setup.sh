@@ -7,7 +7,7 @@ packages=(
   g++ cmake ninja-build pkg-config
   libeigen3-dev libyaml-cpp-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libosmesa6-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
+  libosmesa6-dev libegl-dev libegl-mesa0 libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   libpng-dev libfreetype-dev fonts-dejavu-core
   ffmpeg gnuplot-nox
   dpkg-dev

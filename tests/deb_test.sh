@@ -14,11 +14,13 @@ deb=$(ls "$work"/rattleback_*.deb)
 
 depends=$(dpkg-deb -f "$deb" Depends)
 echo "Depends: $depends"
-for needed in libosmesa6 libavcodec fonts-dejavu-core; do
+for needed in libegl1 libegl-mesa0 libavcodec fonts-dejavu-core; do
   grep -q "$needed" <<<"$depends" || { echo "FAIL: Depends lacks $needed"; exit 1; }
 done
+# OSMesa is opened at run time (the second backend): recommended, not required.
+grep -q libosmesa6 <<<"$(dpkg-deb -f "$deb" Recommends)" || { echo "FAIL: Recommends lacks libosmesa6"; exit 1; }
 contents=$(dpkg-deb -c "$deb")
-for f in ./usr/bin/rattleback ./usr/share/rattleback/fonts.txt ./usr/share/rattleback/shaders/points.frag; do
+for f in ./usr/bin/rattleback ./usr/libexec/rattleback-render ./usr/share/rattleback/fonts.txt ./usr/share/rattleback/shaders/points.frag; do
   grep -q " $f\$" <<<"$contents" || { echo "FAIL: the package lacks $f"; exit 1; }
 done
 echo "ok: $(basename "$deb"), $(stat -c %s "$deb") bytes"
