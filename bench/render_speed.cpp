@@ -1,6 +1,7 @@
 // Frames per second of the video pipeline's stages, measured side by side in one run:
 // render only (draw + read back + read-outs), encode only (RGBA → yuv420p → x264), and end
-// to end (`rattleback render`: simulate, render and encode in overlapping threads).
+// to end (`rattleback render`: simulate, render and encode in overlapping threads), and
+// `render --both` (two renderers on one thread, three encoders), for each OpenGL backend.
 // Usage: rattleback_render_bench [SCENE] [FRAMES]
 #include <chrono>
 #include <cstdio>
@@ -26,7 +27,9 @@ int main(int argc, char** argv) {
   const std::string scene = argc > 1 ? argv[1] : RATTLEBACK_SOURCE_DIR "/scenes/rattleback.yaml";
   const int frames = argc > 2 ? std::stoi(argv[2]) : 150;
   std::printf("scene %s, %d frames per measurement\n", scene.c_str(), frames);
-  std::printf("%-10s %12s %12s %12s\n", "size", "render fps", "encode fps", "end-to-end");
+  std::printf("%-8s %-10s %11s %11s %11s %11s %14s\n", "backend", "size", "render fps",
+              "encode fps", "end-to-end", "--both", "end/encode");
+  for (render::Backend backend : {render::Backend::Egl, render::Backend::OsMesa})
   for (auto [w, h] : {std::pair{1280, 720}, std::pair{1920, 1080}}) {
     app::Overrides o;
     o.size = std::array<int, 2>{w, h};
@@ -54,6 +57,7 @@ int main(int argc, char** argv) {
     settings.height = h;
     settings.duration = model.duration;
     settings.spin_range = 5.5;
+    settings.backend = backend;
     auto created = render::Renderer::create(settings, app::bodyPointsOf(model));
     if (!created) {
       std::fprintf(stderr, "%s\n", created.error().text().c_str());
@@ -87,13 +91,23 @@ int main(int argc, char** argv) {
     args.overrides = o;
     args.overrides.duration = frames * plan.playback / plan.fps;
     args.quiet = true;
+    args.backend = std::string(rb::nameOf(backend));
     start = std::chrono::steady_clock::now();
     app::renderCommand(args);
     const double e2e_fps = frames / seconds(start);
-    std::printf("%-10s %12.1f %12.1f %12.1f\n", (std::to_string(w) + "x" + std::to_string(h)).c_str(),
-                render_fps, encode_fps, e2e_fps);
+    args.both = true;
+    args.output = "/tmp/rattleback_bench_both.mp4";
+    start = std::chrono::steady_clock::now();
+    app::renderCommand(args);
+    const double both_fps = frames / seconds(start);
+    std::printf("%-8s %-10s %11.1f %11.1f %11.1f %11.1f %13.2fx\n",
+                std::string(rb::nameOf(backend)).c_str(),
+                (std::to_string(w) + "x" + std::to_string(h)).c_str(), render_fps, encode_fps,
+                e2e_fps, both_fps, encode_fps / e2e_fps);
   }
-  std::remove("/tmp/rattleback_bench.mp4");
-  std::remove("/tmp/rattleback_bench_e2e.mp4");
+  for (const char* f : {"/tmp/rattleback_bench.mp4", "/tmp/rattleback_bench_e2e.mp4",
+                        "/tmp/rattleback_bench_both-preferred.mp4",
+                        "/tmp/rattleback_bench_both-reversed.mp4", "/tmp/rattleback_bench_both-both.mp4"})
+    std::remove(f);
   return 0;
 }

@@ -75,6 +75,7 @@ class OsMesaContext final : public GlContext {
       CurrentContext current(*this);
       if (current.ok()) destroyFramebuffer();
     }
+    releaseIfCurrent();
     osMesa().destroyContext(context_);
   }
 
@@ -122,6 +123,7 @@ class EglContext final : public GlContext {
       CurrentContext current(*this);
       if (current.ok()) destroyFramebuffer();
     }
+    releaseIfCurrent();
     eglDestroyContext(display_, context_);
     // No eglTerminate: every context of this process gets the same display from
     // eglGetPlatformDisplay, and terminating it would end the others' contexts too.
@@ -279,23 +281,19 @@ void GlContext::readPixels(unsigned char* rgba) const {
   }
 }
 
-CurrentContext::CurrentContext(GlContext& context) : previous_(current_context), context_(context) {
-  if (previous_ == &context_) {
+CurrentContext::CurrentContext(GlContext& context) : context_(context) {
+  if (current_context == &context_) {
     ok_ = true;
     return;
   }
   ok_ = context_.makeCurrent();
-  if (ok_) current_context = &context_;
+  current_context = ok_ ? &context_ : nullptr;
 }
 
-CurrentContext::~CurrentContext() {
-  if (previous_ == &context_ || !ok_) return;
-  if (previous_ && previous_->makeCurrent()) {
-    current_context = previous_;
-  } else {
-    context_.release();
-    current_context = nullptr;
-  }
+void GlContext::releaseIfCurrent() {
+  if (current_context != this) return;
+  release();
+  current_context = nullptr;
 }
 
 std::string assetsDir() {

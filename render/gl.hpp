@@ -63,6 +63,8 @@ class GlContext {
   friend class CurrentContext;
   virtual bool makeCurrent() = 0;
   virtual void release() = 0;
+  /// Unbinds this context from the thread if it is the current one (before destroying it).
+  void releaseIfCurrent();
   /// After the backend's context exists and is current: the FBO and the description.
   std::string createFramebuffer(int width, int height);
   void destroyFramebuffer();
@@ -74,20 +76,20 @@ class GlContext {
   int width_ = 0, height_ = 0;
 };
 
-/// Makes a context current on this thread for the guard's lifetime, and on leaving puts back
-/// whichever of ours was current before (or none): two renderers on one thread each draw with
-/// their own context, whatever the order.
+/// Makes a context current on this thread (unless it already is) for the GL calls in the
+/// guard's scope: every draw and every destruction takes one, so two renderers on one thread
+/// each draw with their own context, whatever the order. The context stays current after the
+/// scope, until another guard takes the thread or the context is destroyed (which unbinds it):
+/// one renderer drawing frame after frame switches nothing.
 class CurrentContext {
  public:
   explicit CurrentContext(GlContext& context);
-  ~CurrentContext();
   CurrentContext(const CurrentContext&) = delete;
   CurrentContext& operator=(const CurrentContext&) = delete;
   /// False when the backend refused to make the context current.
   bool ok() const { return ok_; }
 
  private:
-  GlContext* previous_;
   GlContext& context_;
   bool ok_ = false;
 };
