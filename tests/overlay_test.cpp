@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -19,11 +20,18 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The OpenGL backend the program is run with (CTest runs these tests once per backend, at
+// the same time: each run keeps its own scratch folder).
+std::string backendName() {
+  const char* backend = std::getenv("RATTLEBACK_BACKEND");
+  return backend && *backend ? backend : "auto";
+}
+
 const fs::path kSource = RATTLEBACK_SOURCE_DIR;
 
 fs::path scratch(const std::string& name) {
   const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::path(testing::TempDir()) / "rattleback_overlay" /
+  const fs::path dir = fs::path(testing::TempDir()) / (std::string("rattleback_overlay-") + backendName()) /
                        (std::string(info->test_suite_name()) + "." + info->name());
   fs::create_directories(dir);
   return dir / name;

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -24,12 +25,19 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The OpenGL backend the program is run with (CTest runs these tests once per backend, at
+// the same time: each run keeps its own scratch folder).
+std::string backendName() {
+  const char* backend = std::getenv("RATTLEBACK_BACKEND");
+  return backend && *backend ? backend : "auto";
+}
+
 const fs::path kSource = RATTLEBACK_SOURCE_DIR;
 
 // A file in a scratch folder of the running test's own (CTest runs tests in parallel).
 fs::path scratch(const std::string& name) {
   const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::path(testing::TempDir()) / "rattleback_render" /
+  const fs::path dir = fs::path(testing::TempDir()) / (std::string("rattleback_render-") + backendName()) /
                        (std::string(info->test_suite_name()) + "." + info->name());
   fs::create_directories(dir);
   fs::remove(dir / name);

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -22,12 +23,19 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The OpenGL backend the program is run with (CTest runs these tests once per backend, at
+// the same time: each run keeps its own scratch folder).
+std::string backendName() {
+  const char* backend = std::getenv("RATTLEBACK_BACKEND");
+  return backend && *backend ? backend : "auto";
+}
+
 const fs::path kSource = RATTLEBACK_SOURCE_DIR;
 constexpr int kWidth = 320, kHeight = 180;
 
 fs::path scratch(const std::string& name) {
   const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::path(testing::TempDir()) / "rattleback_video" /
+  const fs::path dir = fs::path(testing::TempDir()) / (std::string("rattleback_video-") + backendName()) /
                        (std::string(info->test_suite_name()) + "." + info->name());
   fs::create_directories(dir);
   return dir / name;
