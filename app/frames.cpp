@@ -33,7 +33,22 @@ render::BodyPoints bodyPointsOf(const sim::Model& model) {
 }
 
 render::FrameInput frameOf(const sim::Telemetry& t) {
-  return {t.x_world, t.orientation, t.t, t.spin};
+  render::FrameInput f;
+  f.position_world = t.x_world;
+  f.orientation = t.orientation;
+  f.t = t.t;
+  f.spin = t.spin;
+  return f;
+}
+
+render::Framing framingOf(const sim::Telemetry& start, const render::BodyPoints& points) {
+  float reach = 0;
+  for (const auto* set : {&points.top, &points.bottom})
+    for (const auto& p : *set) reach = std::max(reach, p.norm() + points.radius);
+  render::Framing framing;
+  framing.center = start.x_world.cast<float>();
+  framing.radius = 1.25f * reach;
+  return framing;
 }
 
 }  // namespace app

@@ -11,4 +11,9 @@ namespace app {
 render::BodyPoints bodyPointsOf(const sim::Model& model);
 render::FrameInput frameOf(const sim::Telemetry& t);
 
+/// What the fixed views keep in frame over a run: a sphere around the centre of mass at the
+/// start that holds every drawn point in any orientation, with a quarter more for the body's
+/// wander as it rocks and rolls.
+render::Framing framingOf(const sim::Telemetry& start, const render::BodyPoints& points);
+
 }  // namespace app

@@ -205,12 +205,18 @@ int renderCommand(const RenderArgs& args) {
   }
 
   std::vector<std::unique_ptr<render::Renderer>> renderers;
+  const render::BodyPoints points = bodyPointsOf(model);
+  // Each run's camera for the fixed views, and the spin of its frames so far for the inset:
+  // the frame values the renderers draw from.
+  std::vector<render::Framing> framings;
+  std::vector<std::vector<std::array<float, 2>>> histories(runs.size());
+  for (const sim::Rollout& run : runs) framings.push_back(framingOf(run.summary().first, points));
   for (const sim::Rollout& run : runs) {
     const double spin = run.model().initial.spin;
     auto created = render::Renderer::create(
         settingsOf(plan, model.duration, spin, stem(args.scene) + ": spun " + describeSpin(spin),
                    *backend),
-        bodyPointsOf(model));
+        points);
     if (!created) {
       std::cerr << "render: " << created.error().text() << "\n";
       return kBadInput;
@@ -230,7 +236,13 @@ int renderCommand(const RenderArgs& args) {
     const double t = plan.frameTime(k);
     for (std::size_t i = 0; i < runs.size() && running; ++i) {
       running = runs[i].advanceTo(t);
-      if (running) renderers[i]->draw(frameOf(runs[i].sampleAt(t)), images[i]);
+      if (!running) break;
+      const sim::Telemetry sample = runs[i].sampleAt(t);
+      histories[i].push_back({static_cast<float>(sample.t), static_cast<float>(sample.spin)});
+      render::FrameInput frame = frameOf(sample);
+      frame.framing = framings[i];
+      frame.history = histories[i];
+      renderers[i]->draw(frame, images[i]);
     }
     for (std::size_t i = 0; running && i < runs.size(); ++i)
       running = outputs[i]->images.push(images[i]);
@@ -331,7 +343,8 @@ int stillCommand(const StillArgs& args) {
   render::RenderSettings settings =
       settingsOf(plan, model.duration, model.initial.spin, stem(args.scene), *backend);
   settings.readouts = !args.no_readouts;
-  auto created = render::Renderer::create(settings, bodyPointsOf(model));
+  const render::BodyPoints points = bodyPointsOf(model);
+  auto created = render::Renderer::create(settings, points);
   if (!created) {
     std::cerr << "still: " << created.error().text() << "\n";
     return kBadInput;
@@ -341,12 +354,13 @@ int stillCommand(const StillArgs& args) {
   // Run to the still's time, keeping the spin at each earlier video frame for the inset, as
   // the video would have drawn it.
   sim::Rollout run(model);
+  std::vector<std::array<float, 2>> history;
   for (std::int64_t k = 0; plan.frameTime(k) < args.t; ++k) {
     const double t = plan.frameTime(k);
     if (interruptSignal()) return interruptedStatus();
     if (!run.advanceTo(t)) break;
     const sim::Telemetry sample = run.sampleAt(t);
-    renderer.remember(sample.t, sample.spin);
+    history.push_back({static_cast<float>(sample.t), static_cast<float>(sample.spin)});
   }
   if (!run.advanceTo(args.t)) {
     std::cerr << args.scene << ": the run stopped before t = " << args.t
@@ -354,7 +368,12 @@ int stillCommand(const StillArgs& args) {
     return run.summary().divergence ? kDiverged : interruptedStatus();
   }
   render::Image image;
-  renderer.draw(frameOf(run.sampleAt(args.t)), image);
+  const sim::Telemetry sample = run.sampleAt(args.t);
+  history.push_back({static_cast<float>(sample.t), static_cast<float>(sample.spin)});
+  render::FrameInput frame = frameOf(sample);
+  frame.framing = framingOf(run.summary().first, points);
+  frame.history = history;
+  renderer.draw(frame, image);
   if (auto e = render::writePng(path, image); !e) {
     std::cerr << e.error().text() << "\n";
     return kBadInput;

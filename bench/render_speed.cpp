@@ -48,9 +48,17 @@ int main(int argc, char** argv) {
 
     // The poses of the first `frames` video frames.
     std::vector<render::FrameInput> poses;
+    std::vector<std::array<float, 2>> history;
+    history.reserve(frames);
     sim::Rollout run(model);
-    for (int k = 0; k < frames && run.advanceTo(plan.frameTime(k)); ++k)
-      poses.push_back(app::frameOf(run.sampleAt(plan.frameTime(k))));
+    const render::Framing framing = app::framingOf(run.summary().first, app::bodyPointsOf(model));
+    for (int k = 0; k < frames && run.advanceTo(plan.frameTime(k)); ++k) {
+      const sim::Telemetry sample = run.sampleAt(plan.frameTime(k));
+      history.push_back({static_cast<float>(sample.t), static_cast<float>(sample.spin)});
+      poses.push_back(app::frameOf(sample));
+      poses.back().framing = framing;
+      poses.back().history = std::span(history.data(), history.size());
+    }
 
     render::RenderSettings settings;
     settings.width = w;

@@ -43,44 +43,64 @@ Eigen::Matrix4f orthographic(float half_w, float half_h, float near, float far) 
   return m;
 }
 
-Camera cameraFor(View view, const Eigen::Vector3f& target, const Eigen::Vector3f& half,
-                 float aspect) {
-  const float size = half.maxCoeff();
+Camera fixedCamera(View view, const Framing& framing, float half_height, float aspect) {
+  const Eigen::Vector3f& target = framing.center;
+  const float r = framing.radius;
   Camera c;
-  // Orthographic views: the visible half extents (across the screen, up the screen) with a
-  // margin, fitted to the frame's aspect.
+  // Orthographic views: the visible half extents (across the screen, up the screen) hold
+  // `across` and `upwards` with a 10 % margin, at the frame's aspect.
   auto ortho = [&](const Eigen::Vector3f& direction, const Eigen::Vector3f& up, float across,
                    float upwards) {
-    const float half_w = 1.3f * std::max(across, upwards * aspect);
-    c.eye = target + 4 * size * direction;
+    const float half_w = 1.1f * std::max(across, upwards * aspect);
+    c.eye = target + 4 * r * direction;
     c.view = lookAt(c.eye, target, up);
-    c.proj = orthographic(half_w, half_w / aspect, 0.1f * size, 10 * size);
+    c.proj = orthographic(half_w, half_w / aspect, 0.1f * r, 10 * r);
   };
+  const Eigen::Vector3f look_down(std::cos(kElevation), 0, std::sin(kElevation));
   switch (view) {
-    case View::Above:  // long axis across the screen, +y to the right, +x down
-      ortho(Eigen::Vector3f::UnitZ(), -Eigen::Vector3f::UnitX(), half.y(), half.x());
+    case View::Above:  // +y to the right, +x down; the body turns within the circle r
+      ortho(Eigen::Vector3f::UnitZ(), -Eigen::Vector3f::UnitX(), r, r);
       break;
-    // Front and side look 10° down so that the floor shows as a band, not a line.
-    case View::Front:  // along the long axis: x across, z up
+    // Front and side look 10° down so that the floor shows as a band, not a line; the body
+    // turns within r across, and its height plus r·sin 10° up the screen.
+    case View::Front:
       ortho(Eigen::Vector3f(0, -std::cos(kElevation), std::sin(kElevation)),
-            Eigen::Vector3f::UnitZ(), half.x(), half.z() + half.y() * std::sin(kElevation));
+            Eigen::Vector3f::UnitZ(), r, half_height + r * std::sin(kElevation));
       break;
-    case View::Side:  // across the long axis: y across, z up
-      ortho(Eigen::Vector3f(std::cos(kElevation), 0, std::sin(kElevation)),
-            Eigen::Vector3f::UnitZ(), half.y(), half.z() + half.x() * std::sin(kElevation));
+    case View::Side:
+    case View::Follow:  // (follow has its own camera: chaseCamera)
+      ortho(look_down, Eigen::Vector3f::UnitZ(), r, half_height + r * std::sin(kElevation));
       break;
-    case View::Oblique:
-    case View::Follow: {
+    case View::Oblique: {
+      // Fixed: from the front right, 30° field of view; far enough that the sphere fits the
+      // narrower of the two angles with a 10 % margin.
       const float fov = 30.0f * static_cast<float>(M_PI) / 180;
+      const float narrow = aspect >= 1 ? fov : 2 * std::atan(std::tan(fov / 2) * aspect);
       const Eigen::Vector3f direction = Eigen::Vector3f(0.75f, -0.55f, 0.55f).normalized();
-      // Far enough that the whole length fits across the frame with a margin.
-      const float distance = 0.95f * size / std::tan(fov / 2) / std::min(1.0f, aspect);
+      const float distance = 1.1f * r / std::sin(narrow / 2);
       c.eye = target + distance * direction;
       c.view = lookAt(c.eye, target, Eigen::Vector3f::UnitZ());
-      c.proj = perspective(fov, aspect, 0.05f * distance, 4 * distance);
+      c.proj = perspective(fov, aspect, 0.05f * distance, 8 * distance);
       break;
     }
   }
+  return c;
+}
+
+Camera chaseCamera(const Eigen::Vector3f& middle, const Eigen::Vector2f& heading, float radius,
+                   float aspect) {
+  const float fov = 30.0f * static_cast<float>(M_PI) / 180;
+  const float narrow = aspect >= 1 ? fov : 2 * std::atan(std::tan(fov / 2) * aspect);
+  const float elevation = 25.0f * static_cast<float>(M_PI) / 180;
+  // Beside the body: across its long axis, so the whole length shows.
+  const Eigen::Vector2f across(-heading.y(), heading.x());
+  const Eigen::Vector3f direction(std::cos(elevation) * across.x(), std::cos(elevation) * across.y(),
+                                  std::sin(elevation));
+  const float distance = 1.1f * radius / std::sin(narrow / 2);
+  Camera c;
+  c.eye = middle + distance * direction;
+  c.view = lookAt(c.eye, middle, Eigen::Vector3f::UnitZ());
+  c.proj = perspective(fov, aspect, 0.05f * distance, 8 * distance);
   return c;
 }
 

@@ -14,11 +14,16 @@ struct Camera {
   Eigen::Vector3f eye = Eigen::Vector3f::Zero();  ///< world, m
 };
 
-/// Frames a body of half extents `half` (x across, y along, z up; m) whose middle is at
-/// `target` (world, m). Above, front and side are orthographic, like the seed's figures;
-/// oblique and follow are perspective.
-Camera cameraFor(View view, const Eigen::Vector3f& target, const Eigen::Vector3f& half,
-                 float aspect);
+/// The fixed views: they keep `framing`'s sphere in the frame with a margin, whatever the
+/// body's turn (above, front and side are orthographic, like the seed's figures; oblique is
+/// perspective). `half_height` is the body's half height (m), for front and side.
+Camera fixedCamera(View view, const Framing& framing, float half_height, float aspect);
+
+/// The follow view: a chase camera beside the body, looking across its long axis (`heading`,
+/// horizontal, world) at `middle` from 25° above, turning and moving with it; `radius` is the
+/// body's own (m).
+Camera chaseCamera(const Eigen::Vector3f& middle, const Eigen::Vector2f& heading, float radius,
+                   float aspect);
 
 Eigen::Matrix4f lookAt(const Eigen::Vector3f& eye, const Eigen::Vector3f& target,
                        const Eigen::Vector3f& up);

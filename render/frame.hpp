@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 #include <array>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -22,12 +23,23 @@ struct BodyPoints {
   Eigen::Vector2f footprint_half{0.01f, 0.05f};  ///< outline half extents across and along y, m
 };
 
-/// One frame: where the body is and what to print.
+/// What the fixed views (oblique, above, front, side) keep in frame for a whole run: a sphere
+/// that holds the body in any orientation, around where it starts.
+struct Framing {
+  Eigen::Vector3f center = Eigen::Vector3f::Zero();  ///< world, m
+  float radius = 0.1f;                               ///< m
+};
+
+/// One frame, and everything drawn from it: the renderer keeps nothing from frame to frame,
+/// so a frame depends on its own values only (drawn in any order, it is the same).
 struct FrameInput {
   Eigen::Vector3d position_world = Eigen::Vector3d::Zero();  ///< CM, m
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  ///< body → world
   double t = 0;     ///< s
   double spin = 0;  ///< n, rad/s
+  Framing framing;  ///< the fixed views' camera: the same for every frame of a run
+  /// (t, n) of the run's frames so far, this one included: the inset's curve.
+  std::span<const std::array<float, 2>> history;
 };
 
 /// How OpenGL is reached (render/gl.hpp): EGL (a GPU, or Mesa's surfaceless llvmpipe) or OSMesa;

@@ -118,7 +118,7 @@ void drawLine(Image& image, float x0, float y0, float x1, float y1, float width,
   }
 }
 
-void drawSpinInset(Image& image, Overlay& font, const std::vector<std::array<float, 2>>& history,
+void drawSpinInset(Image& image, Overlay& font, std::span<const std::array<float, 2>> history,
                    double duration, double range) {
   const int w = image.width * 3 / 10, h = image.height * 2 / 9;
   const int margin = image.height / 40;

@@ -5,6 +5,7 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -43,7 +44,7 @@ void fillRect(Image& image, int x0, int y0, int x1, int y1, Rgba color);
 void drawLine(Image& image, float x0, float y0, float x1, float y1, float width, Rgba color);
 
 /// The inset: n(t) so far against a fixed time axis [0, duration] and spin axis ±range.
-void drawSpinInset(Image& image, Overlay& font, const std::vector<std::array<float, 2>>& history,
+void drawSpinInset(Image& image, Overlay& font, std::span<const std::array<float, 2>> history,
                    double duration, double range);
 
 }  // namespace render

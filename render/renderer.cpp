@@ -66,6 +66,8 @@ std::string Renderer::init() {
   };
   add(body_.top, 0);
   add(body_.bottom, 1);
+  for (const auto* points : {&body_.top, &body_.bottom})
+    for (const auto& p : *points) radius_ = std::max(radius_, p.norm() + body_.radius);
   point_count_ = static_cast<GLsizei>(data.size() / 4);
   half_extent_ = 0.5f * (high - low) + Eigen::Vector3f::Constant(body_.radius);
   middle_height_ = 0.5f * (high.z() + low.z());
@@ -98,7 +100,8 @@ std::string Renderer::init() {
   return "";
 }
 
-void Renderer::drawFloor(const Camera& camera, const FrameInput& frame) {
+void Renderer::drawFloor(const Camera& camera, const FrameInput& frame,
+                         const Eigen::Vector2f& center) {
   const float size = half_extent_.maxCoeff();
   // A checker square of 1, 2 or 5 × 10ⁿ m, about a fifth of the body's half length.
   const float raw = size / 5;
@@ -114,7 +117,7 @@ void Renderer::drawFloor(const Camera& camera, const FrameInput& frame) {
   setMatrix(gl, floor_program_, "u_view", camera.view);
   setMatrix(gl, floor_program_, "u_proj", camera.proj);
   gl.glUniform1f(gl.glGetUniformLocation(floor_program_, "u_tile"), tile);
-  gl.glUniform2f(gl.glGetUniformLocation(floor_program_, "u_center"), fixed_target_.x(), fixed_target_.y());
+  gl.glUniform2f(gl.glGetUniformLocation(floor_program_, "u_center"), center.x(), center.y());
   gl.glUniform1f(gl.glGetUniformLocation(floor_program_, "u_fade_near"), 3 * size);
   gl.glUniform1f(gl.glGetUniformLocation(floor_program_, "u_fade_far"), 12 * size);
   gl.glUniform3fv(gl.glGetUniformLocation(floor_program_, "u_background"), 1, kBackground.data());
@@ -154,29 +157,30 @@ void Renderer::drawReadouts(const FrameInput& frame, Image& out) {
   if (!settings_.title.empty()) font_.text(out, x, y, settings_.title, {30, 30, 30, 255});
   if (!settings_.readouts) return;
   char text[128];
-  std::snprintf(text, sizeof text, "t = %6.2f s    spin n = %+6.2f rad/s  %s", frame.t, frame.spin,
-                frame.spin > 0.05 ? "(counter-clockwise)" : frame.spin < -0.05 ? "(clockwise)" : "");
+  // A spin that rounds to zero is shown as +0.00, not -0.00.
+  const double spin = std::abs(frame.spin) < 0.005 ? 0.0 : frame.spin;
+  std::snprintf(text, sizeof text, "t = %6.2f s    spin n = %+6.2f rad/s  %s", frame.t, spin,
+                spin > 0.05 ? "(counter-clockwise)" : spin < -0.05 ? "(clockwise)" : "");
   font_.text(out, x, y + (settings_.title.empty() ? 0 : line * 3 / 2), text, {30, 30, 30, 255});
-  remember(frame.t, frame.spin);
-  drawSpinInset(out, font_, history_, settings_.duration, settings_.spin_range);
+  drawSpinInset(out, font_, frame.history, settings_.duration, settings_.spin_range);
 }
 
 void Renderer::draw(const FrameInput& frame, Image& out) {
   const Eigen::Vector3f position = frame.position_world.cast<float>();
   const Eigen::Vector3f middle(position.x(), position.y(), position.z() + middle_height_);
-  if (!have_target_) {
-    fixed_target_ = middle;
-    have_target_ = true;
-  }
   const float aspect = static_cast<float>(settings_.width) / settings_.height;
-  const Camera camera = cameraFor(settings_.view,
-                                  settings_.view == View::Follow ? middle : fixed_target_,
-                                  half_extent_, aspect);
+  const bool follow = settings_.view == View::Follow;
+  Eigen::Vector2f heading =
+      frame.orientation.cast<float>().toRotationMatrix().col(1).head<2>();  // the long axis
+  heading = heading.norm() > 1e-6f ? heading.normalized() : Eigen::Vector2f(0, 1);
+  const Camera camera = follow ? chaseCamera(middle, heading, radius_, aspect)
+                               : fixedCamera(settings_.view, frame.framing, half_extent_.z(), aspect);
+  const Eigen::Vector2f center = follow ? middle.head<2>() : frame.framing.center.head<2>();
   CurrentContext current(*context_);
   const GlApi& gl = context_->api();
   gl.glClearColor(kBackground.x(), kBackground.y(), kBackground.z(), 1);
   gl.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  drawFloor(camera, frame);
+  drawFloor(camera, frame, center);
   drawPoints(camera, frame);
   out.width = settings_.width;
   out.height = settings_.height;

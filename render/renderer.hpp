@@ -26,18 +26,14 @@ class Renderer {
   /// The backend and the GL vendor, renderer and version (for --verbose).
   const std::string& description() const { return context_->description(); }
 
-  /// Draws one frame into `out` (resized to the settings' size), read-outs included; the
-  /// frame's spin joins the inset's history.
+  /// Draws one frame into `out` (resized to the settings' size), read-outs included, from the
+  /// frame's values and the renderer's fixed setup only.
   void draw(const FrameInput& frame, Image& out);
-  /// Adds a point to the inset's history without drawing (for a still at a later time).
-  void remember(double t, double spin) {
-    history_.push_back({static_cast<float>(t), static_cast<float>(spin)});
-  }
 
  private:
   Renderer(const RenderSettings& settings, const BodyPoints& body);
   std::string init();
-  void drawFloor(const Camera& camera, const FrameInput& frame);
+  void drawFloor(const Camera& camera, const FrameInput& frame, const Eigen::Vector2f& center);
   void drawPoints(const Camera& camera, const FrameInput& frame);
   void drawReadouts(const FrameInput& frame, Image& out);
 
@@ -50,9 +46,7 @@ class Renderer {
   GLsizei point_count_ = 0;
   Eigen::Vector3f half_extent_;   ///< body half extents, m
   float middle_height_ = 0;       ///< height of the body's middle above its CM, m
-  bool have_target_ = false;
-  Eigen::Vector3f fixed_target_;  ///< what the fixed views look at (the first frame's body)
-  std::vector<std::array<float, 2>> history_;  ///< (t, n) for the inset
+  float radius_ = 0;              ///< the largest distance of a drawn point from the CM, m
 };
 
 }  // namespace render

@@ -123,3 +123,41 @@ TEST(Renderer, BothBackendsDrawTheSameFrame) {
   EXPECT_NE(egl->description().find("EGL"), std::string::npos) << egl->description();
   EXPECT_NE(osmesa->description().find("OSMesa"), std::string::npos) << osmesa->description();
 }
+
+// A frame depends on its own values only: frames drawn in reverse order (each with its own
+// history of the spin so far) equal the frames drawn in order, byte for byte.
+TEST(Renderer, FramesDrawnInReverseOrderEqualFramesDrawnInOrder) {
+  std::vector<std::array<float, 2>> history;
+  std::vector<render::FrameInput> frames;
+  for (int k = 0; k < 5; ++k) {
+    render::FrameInput f = pose(0.2 * k);
+    f.spin = 2 - k;
+    f.position_world.x() = 0.01 * k;  // it moves: a camera that followed it would show it
+    f.framing.center = {0, 0, 0.02f};
+    f.framing.radius = 0.12f;
+    frames.push_back(f);
+  }
+  std::vector<std::vector<std::array<float, 2>>> histories(frames.size());
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    history.push_back({static_cast<float>(frames[k].t), static_cast<float>(frames[k].spin)});
+    histories[k] = history;
+  }
+  for (std::size_t k = 0; k < frames.size(); ++k) frames[k].history = histories[k];
+  for (render::View view : {render::View::Oblique, render::View::Follow, render::View::Above}) {
+    render::RenderSettings s;
+    s.width = 160;
+    s.height = 90;
+    s.view = view;
+    s.duration = 1;
+    s.spin_range = 3;
+    auto forward = render::Renderer::create(s, row());
+    auto backward = render::Renderer::create(s, row());
+    ASSERT_TRUE(forward && backward);
+    std::vector<render::Image> in_order(frames.size()), reversed(frames.size());
+    for (std::size_t k = 0; k < frames.size(); ++k) forward.value()->draw(frames[k], in_order[k]);
+    for (std::size_t k = frames.size(); k-- > 0;) backward.value()->draw(frames[k], reversed[k]);
+    for (std::size_t k = 0; k < frames.size(); ++k)
+      EXPECT_EQ(in_order[k].rgba, reversed[k].rgba) << rb::nameOf(view) << ", frame " << k;
+    EXPECT_NE(in_order[0].rgba, in_order[4].rgba);
+  }
+}
