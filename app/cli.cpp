@@ -75,6 +75,9 @@ Cli::Cli() {
   still->add_option("--dt", st.overrides.dt, "Fixed time step, s");
   still->add_option("--tolerance", st.overrides.tolerance, "Adaptive steps to this error per step");
   still->add_flag("--no-readouts", st.no_readouts, "No time, spin or inset plot");
+  still->add_flag("--transparent", st.transparent,
+                  "PNG with alpha for figures and slides: the body and its shadow over nothing (no "
+                  "floor, background or read-outs)");
   still->add_option("--backend", st.backend, "auto (default) | egl | osmesa: as for render");
   still->add_flag("-q,--quiet", st.quiet, "Do not print the file name");
   still->add_flag("-v,--verbose", st.verbose, "Also name the OpenGL in use (backend, vendor, renderer)");

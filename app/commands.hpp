@@ -54,6 +54,7 @@ struct StillArgs {
   Overrides overrides;
   double t = 0;        ///< s
   bool no_readouts = false;
+  bool transparent = false;  ///< PNG with alpha: no floor, no background, no read-outs
   std::string backend = "auto";  ///< auto | egl | osmesa
   bool quiet = false;
   bool verbose = false;

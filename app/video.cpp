@@ -342,7 +342,9 @@ int stillCommand(const StillArgs& args) {
   }
   render::RenderSettings settings =
       settingsOf(plan, model.duration, model.initial.spin, stem(args.scene), *backend);
-  settings.readouts = !args.no_readouts;
+  settings.readouts = !args.no_readouts && !args.transparent;
+  settings.transparent = args.transparent;
+  if (args.transparent) settings.title.clear();
   const render::BodyPoints points = bodyPointsOf(model);
   auto created = render::Renderer::create(settings, points);
   if (!created) {

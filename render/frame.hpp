@@ -52,6 +52,7 @@ struct RenderSettings {
   View view = View::Oblique;
   std::string title;               ///< printed in the corner ("" for none)
   bool readouts = true;            ///< time, spin and the n(t) inset
+  bool transparent = false;        ///< no floor and no background: alpha 0 but the body and its shadow
   double duration = 1;             ///< s, the inset's time axis
   double spin_range = 1;           ///< rad/s, the inset's ± spin axis
 };

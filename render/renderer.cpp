@@ -96,7 +96,9 @@ std::string Renderer::init() {
   gl.glEnable(GL_DEPTH_TEST);
   gl.glEnable(GL_PROGRAM_POINT_SIZE);
   gl.glEnable(GL_BLEND);
-  gl.glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  // Colour blends by the source's alpha; alpha accumulates (a + (1 − a)·dst), so a shadow over
+  // a transparent background keeps its own alpha.
+  gl.glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   return "";
 }
 
@@ -126,6 +128,8 @@ void Renderer::drawFloor(const Camera& camera, const FrameInput& frame,
   gl.glUniform2f(gl.glGetUniformLocation(floor_program_, "u_shadow_half"), body_.footprint_half.x(),
               body_.footprint_half.y());
   gl.glUniform1f(gl.glGetUniformLocation(floor_program_, "u_shadow_strength"), 0.45f);
+  gl.glUniform1f(gl.glGetUniformLocation(floor_program_, "u_transparent"),
+                 settings_.transparent ? 1.0f : 0.0f);
   gl.glBindVertexArray(floor_vao_);
   gl.glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
 }
@@ -178,7 +182,10 @@ void Renderer::draw(const FrameInput& frame, Image& out) {
   const Eigen::Vector2f center = follow ? middle.head<2>() : frame.framing.center.head<2>();
   CurrentContext current(*context_);
   const GlApi& gl = context_->api();
-  gl.glClearColor(kBackground.x(), kBackground.y(), kBackground.z(), 1);
+  if (settings_.transparent)
+    gl.glClearColor(0, 0, 0, 0);
+  else
+    gl.glClearColor(kBackground.x(), kBackground.y(), kBackground.z(), 1);
   gl.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   drawFloor(camera, frame, center);
   drawPoints(camera, frame);

@@ -271,3 +271,26 @@ TEST(VideoContent, FollowIsNotOblique) {
   const render::Image follow = still("scenes/rattleback.yaml --t 1 --view follow --no-readouts");
   EXPECT_GT(difference(oblique, follow), 10.0);
 }
+
+// still --transparent: nothing but the body and its shadow. The corners (floor and background
+// elsewhere) are fully transparent; the body's red and blue pixels opaque; the shadow partly
+// transparent black (alpha between 0 and 255, colour dark).
+TEST(Still, TransparentKeepsOnlyTheBodyAndItsShadow) {
+  const render::Image image = still("scenes/rattleback.yaml --t 1 --view above --transparent");
+  ASSERT_FALSE(image.rgba.empty());
+  auto at = [&](int x, int y) { return &image.rgba[4 * (static_cast<std::size_t>(y) * image.width + x)]; };
+  for (auto [x, y] : {std::pair{0, 0}, std::pair{kWidth - 1, 0}, std::pair{0, kHeight - 1},
+                      std::pair{kWidth - 1, kHeight - 1}, std::pair{kWidth / 10, kHeight / 2}})
+    EXPECT_EQ(at(x, y)[3], 0) << x << "," << y;
+  long opaque_body = 0, shadow = 0, transparent = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const unsigned char* p = at(x, y);
+      if (p[3] == 255 && ((p[0] > 120 && p[1] < 90) || (p[2] > 120 && p[0] < 90))) ++opaque_body;
+      if (p[3] > 10 && p[3] < 200 && p[0] < 40 && p[1] < 40 && p[2] < 40) ++shadow;
+      if (p[3] == 0) ++transparent;
+    }
+  EXPECT_GT(opaque_body, 300);
+  EXPECT_GT(shadow, 20);
+  EXPECT_GT(transparent, kWidth * kHeight / 2);
+}

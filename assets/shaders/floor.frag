@@ -11,6 +11,7 @@ uniform vec2 u_shadow_center;   // m
 uniform vec2 u_shadow_axis;     // unit vector along the body's long axis, floor plane
 uniform vec2 u_shadow_half;     // half extents across and along the long axis, m
 uniform float u_shadow_strength;
+uniform float u_transparent;    // 1: no floor, only the shadow, as alpha over nothing
 out vec4 frag_color;
 
 void main() {
@@ -23,7 +24,12 @@ void main() {
   vec2 d = v_xy - u_shadow_center;
   vec2 local = vec2(dot(d, vec2(u_shadow_axis.y, -u_shadow_axis.x)), dot(d, u_shadow_axis));
   float e = length(local / u_shadow_half);
-  color *= 1.0 - u_shadow_strength * (1.0 - smoothstep(0.55, 1.15, e));
+  float shadow = u_shadow_strength * (1.0 - smoothstep(0.55, 1.15, e));
+  if (u_transparent > 0.5) {
+    frag_color = vec4(0.0, 0.0, 0.0, shadow);
+    return;
+  }
+  color *= 1.0 - shadow;
 
   float fade = smoothstep(u_fade_near, u_fade_far, length(v_xy - u_center));
   frag_color = vec4(mix(color, u_background, fade), 1.0);
