@@ -126,7 +126,10 @@ void drawSpinInset(Image& image, Overlay& font, std::span<const std::array<float
   fillRect(image, x0, y0, x0 + w, y0 + h, {255, 255, 255, 200});
   const int pad = font.lineHeight() / 2;
   const float left = x0 + pad, right = x0 + w - pad;
-  const float top = y0 + pad + font.lineHeight(), bottom = y0 + h - pad;
+  // The curve's band starts below the title's descenders (the title's line ends at
+  // y0 + pad + lineHeight) with room for the curve's 2-pixel width and its antialiased edge,
+  // so the curve never runs through the title (issue 11; found by the helper on its branch).
+  const float top = y0 + pad + font.lineHeight() + 0.5f * pad + 2, bottom = y0 + h - pad - 2;
   const float mid = 0.5f * (top + bottom);
   drawLine(image, left, mid, right, mid, 1, {90, 90, 90, 255});  // n = 0
   char label[64];
