@@ -3,7 +3,9 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdarg>
 #include <filesystem>
+#include <mutex>
 
 extern "C" {
 #include <libavcodec/avcodec.h>
@@ -14,6 +16,30 @@ extern "C" {
 }
 
 namespace render {
+namespace {
+
+// libavcodec's and x264's own log lines never reach the terminal: the last error-level line
+// is kept and becomes part of our one-line message when something fails.
+std::mutex log_mutex;
+std::string last_log;
+
+void keepLog(void* object, int level, const char* format, va_list args) {
+  if (level > AV_LOG_ERROR) return;
+  char line[512];
+  int prefix = 1;
+  av_log_format_line(object, level, format, args, line, sizeof line, &prefix);
+  std::string text(line);
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+  const std::lock_guard lock(log_mutex);
+  last_log = text;
+}
+
+std::string lastLog() {
+  const std::lock_guard lock(log_mutex);
+  return last_log;
+}
+
+}  // namespace
 
 struct VideoEncoder::State {
   std::string path, temp;
@@ -42,7 +68,9 @@ struct VideoEncoder::State {
   std::string error(const std::string& what, int code = 0) const {
     char text[AV_ERROR_MAX_STRING_SIZE] = "";
     if (code) av_strerror(code, text, sizeof text);
-    return path + ": " + what + (code ? std::string(": ") + text : "");
+    const std::string log = lastLog();
+    return path + ": " + what + (code ? std::string(": ") + text : "") +
+           (log.empty() ? "" : " (" + log + ")");
   }
 
   // Moves every packet the encoder has ready into the file.
@@ -86,6 +114,7 @@ rb::Result<std::unique_ptr<VideoEncoder>> VideoEncoder::open(
   }
 
   av_log_set_level(AV_LOG_ERROR);
+  av_log_set_callback(keepLog);
   if (avformat_alloc_output_context2(&s.format, nullptr, "mp4", s.temp.c_str()) < 0)
     return rb::Error{"", s.error("cannot set up an MP4 file")};
   const AVCodec* h264 = avcodec_find_encoder_by_name("libx264");

@@ -358,3 +358,16 @@ TEST(Video, AnInterruptKeepsTheOldFileAndLeavesNoTemporary) {
           << entry.path();
   }
 }
+
+// libavcodec's and x264's own log lines never reach the terminal: a render's stderr is empty
+// (x264 logs its CPU capabilities and statistics at libav's info level).
+TEST(Video, NoLibraryLogLinesOnTheTerminal) {
+  const fs::path video = scratch("quiet.mp4");
+  ASSERT_EQ(rattleback("render scenes/seed-reversed.yaml --duration 0.2 --size 160x90 -q -o " +
+                       video.string()),
+            0);
+  std::ifstream err(video.parent_path() / "stderr.txt");
+  std::stringstream text;
+  text << err.rdbuf();
+  EXPECT_EQ(text.str(), "");
+}
