@@ -42,12 +42,9 @@ render::FrameInput frameOf(const sim::Telemetry& t) {
 }
 
 render::Framing framingOf(const sim::Telemetry& start, const render::BodyPoints& points) {
-  float reach = 0;
-  for (const auto* set : {&points.top, &points.bottom})
-    for (const auto& p : *set) reach = std::max(reach, p.norm() + points.radius);
   render::Framing framing;
   framing.center = start.x_world.cast<float>();
-  framing.radius = 1.25f * reach;
+  framing.radius = 1.25f * render::reachOf(points);
   return framing;
 }
 

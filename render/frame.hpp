@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <array>
 #include <span>
 #include <string>
@@ -22,6 +23,15 @@ struct BodyPoints {
   float radius = 0.001f;                ///< sphere radius, m
   Eigen::Vector2f footprint_half{0.01f, 0.05f};  ///< outline half extents across and along y, m
 };
+
+/// The largest distance of a drawn sphere's edge from the CM, m: the body fits in a sphere of
+/// this radius in any orientation.
+inline float reachOf(const BodyPoints& body) {
+  float reach = 0;
+  for (const auto* points : {&body.top, &body.bottom})
+    for (const auto& p : *points) reach = std::max(reach, p.norm() + body.radius);
+  return reach;
+}
 
 /// What the fixed views (oblique, above, front, side) keep in frame for a whole run: a sphere
 /// that holds the body in any orientation, around where it starts.

@@ -66,8 +66,7 @@ std::string Renderer::init() {
   };
   add(body_.top, 0);
   add(body_.bottom, 1);
-  for (const auto* points : {&body_.top, &body_.bottom})
-    for (const auto& p : *points) radius_ = std::max(radius_, p.norm() + body_.radius);
+  radius_ = reachOf(body_);
   point_count_ = static_cast<GLsizei>(data.size() / 4);
   half_extent_ = 0.5f * (high - low) + Eigen::Vector3f::Constant(body_.radius);
   middle_height_ = 0.5f * (high.z() + low.z());

@@ -20,38 +20,13 @@ extern "C" {
 }
 
 #include "render/image_io.hpp"
+#include "render_support.hpp"
 
 namespace fs = std::filesystem;
+using namespace render_support;
 
 namespace {
 
-// The OpenGL backend the program is run with (CTest runs these tests once per backend, at
-// the same time: each run keeps its own scratch folder).
-std::string backendName() {
-  const char* backend = std::getenv("RATTLEBACK_BACKEND");
-  return backend && *backend ? backend : "auto";
-}
-
-const fs::path kSource = RATTLEBACK_SOURCE_DIR;
-
-// A file in a scratch folder of the running test's own (CTest runs tests in parallel).
-fs::path scratch(const std::string& name) {
-  const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::path(testing::TempDir()) / (std::string("rattleback_render-") + backendName()) /
-                       (std::string(info->test_suite_name()) + "." + info->name());
-  fs::create_directories(dir);
-  fs::remove(dir / name);
-  return dir / name;
-}
-
-// Runs rattleback from the source tree (scene paths in the arguments are relative to it);
-// returns the exit status.
-int rattleback(const std::string& args) {
-  const std::string command = "cd " + kSource.string() + " && " + RATTLEBACK_BIN + " " + args +
-                              " >/dev/null 2>" + scratch("stderr.txt").string();
-  const int raw = std::system(command.c_str());
-  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-}
 
 // Snapshot tolerance. The same build draws byte-identical pixels run after run; another CPU
 // can move ~0.1% of pixels by one step (DEVELOPERS.md, measured on llvmpipe), and the PNG

@@ -18,35 +18,14 @@ extern "C" {
 }
 
 #include "render/image_io.hpp"
+#include "render_support.hpp"
 
 namespace fs = std::filesystem;
+using namespace render_support;
 
 namespace {
 
-// The OpenGL backend the program is run with (CTest runs these tests once per backend, at
-// the same time: each run keeps its own scratch folder).
-std::string backendName() {
-  const char* backend = std::getenv("RATTLEBACK_BACKEND");
-  return backend && *backend ? backend : "auto";
-}
-
-const fs::path kSource = RATTLEBACK_SOURCE_DIR;
 constexpr int kWidth = 320, kHeight = 180;
-
-fs::path scratch(const std::string& name) {
-  const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::path(testing::TempDir()) / (std::string("rattleback_video-") + backendName()) /
-                       (std::string(info->test_suite_name()) + "." + info->name());
-  fs::create_directories(dir);
-  return dir / name;
-}
-
-int rattleback(const std::string& args) {
-  const std::string command = "cd " + kSource.string() + " && " + RATTLEBACK_BIN + " " + args +
-                              " >/dev/null 2>" + scratch("stderr.txt").string();
-  const int raw = std::system(command.c_str());
-  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-}
 
 // Every frame of the MP4's video stream in presentation order, as RGBA; the YUV is read as
 // it is tagged (BT.709, limited range), as a browser does.
