@@ -27,6 +27,13 @@ Eigen::Vector3d clean(const Eigen::Vector3d& v, double scale) {
   return {clean(v.x(), scale), clean(v.y(), scale), clean(v.z(), scale)};
 }
 
+// Where the mass properties came from (body.mass_properties), as analyze reports it.
+std::string massSourceText(const sim::Body& body) {
+  if (body.surface.kind != sim::Surface::Kind::Paraboloid) return "scene";
+  if (body.mass_source == sim::MassSource::Grid) return "grid";
+  return body.mass_by_cubature ? "continuum (cubature)" : "continuum (closed form)";
+}
+
 double spinFor(const sim::Model& model, const std::optional<double>& spin) {
   if (spin) return *spin;
   return model.initial.spin != 0 ? model.initial.spin : 5.0;
@@ -48,6 +55,7 @@ void printJson(const sim::Model& model, double spin) {
                  {"top", top},
                  {"bottom", bottom},
                  {"surface", top + bottom}};
+  j["mass_properties"] = massSourceText(body);
   j["length_unit_m"] = model.length_unit;
   j["mass"] = m.mass;
   j["com"] = vectorJson(clean(m.com, size));
@@ -131,6 +139,7 @@ void printText(const std::string& scene, const sim::Model& model) {
     std::printf("points           %zu drawn on the surface (%zu top, %zu bottom); the mass "
                 "properties are the scene's\n",
                 top + bottom, top, bottom);
+  std::printf("mass properties  %s\n", massSourceText(*model.body).c_str());
   std::printf("mass             %g kg\n", m.mass);
   const Eigen::Vector3d com = clean(m.com, model.body->surface.footprintHalf().maxCoeff()) / unit;
   std::printf("centre of mass   (%.6g, %.6g, %.6g) in the shape's frame\n", com.x(), com.y(),

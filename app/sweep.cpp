@@ -134,7 +134,7 @@ class Bodies {
 
   Compiled get(std::int64_t row, const sim::SceneSpec& spec) {
     Slot& slot = slots_[static_cast<std::size_t>(sweep_.bodyGroup(row))];
-    std::call_once(slot.once, [&] { slot.body.emplace(sim::compileBody(spec.body, spec.units.length)); });
+    std::call_once(slot.once, [&] { slot.body.emplace(sim::compileBody(spec)); });
     return *slot.body;
   }
 

@@ -78,7 +78,7 @@ void sweepRowOverhead(benchmark::State& state) {
   }
   auto scenes = scene::SweepScenes::open(sweep.value());
   auto first = scenes->scene(0);
-  auto body = sim::compileBody(first->spec.body, first->spec.units.length);
+  auto body = sim::compileBody(first->spec);
   std::int64_t row = 0;
   for (auto _ : state) {
     auto loaded = scenes->scene(row);

@@ -156,14 +156,16 @@ void section(MapReader& parent, const std::string& key,
 void readBody(MapReader& root, sim::BodySpec& b) {
   root.require("body");
   section(root, "body",
-          {"shape", "paraboloid", "dents", "grid", "mass", "ellipsoid", "inertia"}, [&](MapReader& r) {
+          {"shape", "paraboloid", "dents", "grid", "mass_properties", "mass", "ellipsoid", "inertia"},
+          [&](MapReader& r) {
     r.read("shape", b.shape);
     r.require("mass");
     r.read("mass", b.mass);
     // Each shape has its own keys; a key of the other shape is an error, not ignored.
     const bool ellipsoid = b.shape == "ellipsoid";
-    for (const char* key : {"paraboloid", "dents", "grid"})
+    for (const char* key : {"mass_properties", "paraboloid", "dents", "grid"})
       if (ellipsoid && r.has(key)) r.fail(key, "belongs to shape: paraboloid");
+    r.read("mass_properties", b.mass_properties);
     for (const char* key : {"ellipsoid", "inertia"})
       if (!ellipsoid && r.has(key)) r.fail(key, "belongs to shape: ellipsoid");
     if (ellipsoid) {

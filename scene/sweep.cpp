@@ -297,7 +297,10 @@ rb::Result<Sweep> loadSweep(const std::string& path) {
       if (!keys.insert(axis.key).second) throw Failure{where + " is varied twice"};
       if (key_path->parts.front() == "video")
         throw Failure{where + ": a sweep only simulates; video keys do not change a run"};
-      axis.body = key_path->parts.front() == "body" || key_path->parts.front() == "units";
+      // Axes that change the compiled body: its keys, the units, and the contact model (which
+      // picks the mass properties' source when the body does not name one).
+      axis.body = key_path->parts.front() == "body" || key_path->parts.front() == "units" ||
+                  axis.key == "contact.model";
       const YAML::Node spec = entry.second;
       if (spec.IsSequence()) {
         if (spec.size() == 0) throw Failure{where + " has no values"};

@@ -5,6 +5,7 @@
 #include <complex>
 #include <sstream>
 
+#include "sim/continuum.hpp"
 #include "sim/initial.hpp"
 #include "sim/stability.hpp"
 
@@ -85,6 +86,9 @@ std::optional<rb::Error> checkBody(const BodySpec& b) {
   if (auto e = needPositive("body.grid.dx", b.grid.dx)) return e;
   if (auto e = needPositive("body.grid.dy", b.grid.dy)) return e;
   if (auto e = needPositive("body.grid.dz", b.grid.dz)) return e;
+  if (!b.mass_properties.empty() && !rb::parseName<MassSource>(b.mass_properties))
+    return rb::Error{"body.mass_properties", "must be " + rb::choices<MassSource>() + ", not '" +
+                                                 b.mass_properties + "'"};
   if (auto e = needPositive("body.mass", b.mass)) return e;
   return std::nullopt;
 }
@@ -211,8 +215,8 @@ Body buildEllipsoid(const BodySpec& b, double unit) {
   return body;
 }
 
-// Mass properties from the grid; surface points moved to the CM, in SI units.
-rb::Result<Body> buildBody(const BodySpec& b, double unit) {
+// Mass properties from the shape or the grid; surface points moved to the CM, in SI units.
+rb::Result<Body> buildBody(const BodySpec& b, double unit, MassSource source) {
   if (b.shape == "ellipsoid") return buildEllipsoid(b, unit);
   const ParaboloidSpec& p = b.paraboloid;
   const Paraboloid shape(p.a * unit, p.p, p.q * unit, p.s, p.top * unit);
@@ -231,13 +235,20 @@ rb::Result<Body> buildBody(const BodySpec& b, double unit) {
 
   Body body;
   body.mass = b.mass;
+  body.mass_source = source;
   body.mass_properties = built.mass;
+  if (source == MassSource::Continuum) {
+    const Continuum continuum = continuumMassProperties(shape, dents, b.mass);
+    body.mass_properties = continuum.mass;
+    body.mass_properties.points = built.mass.points;  // the grid's points, drawn
+    body.mass_by_cubature = continuum.method == ContinuumMethod::Cubature;
+  }
   body.surface.kind = Surface::Kind::Paraboloid;
   body.surface.paraboloid = shape;
   body.grid = grid;
-  body.com_geometric = built.mass.com;
-  body.inertia = built.mass.inertia;
-  if (built.mass.principal.minCoeff() <= 0)
+  body.com_geometric = body.mass_properties.com;
+  body.inertia = body.mass_properties.inertia;
+  if (body.mass_properties.principal.minCoeff() <= 0)
     return rb::Error{"body.grid", "is too coarse: the inertia tensor is singular"};
   body.inertia_inv = body.inertia.inverse();
   placePoints(body, built.surface);
@@ -246,10 +257,17 @@ rb::Result<Body> buildBody(const BodySpec& b, double unit) {
 
 }  // namespace
 
-rb::Result<std::shared_ptr<const Body>> compileBody(const BodySpec& spec, double length_unit) {
+MassSource massSourceOf(const SceneSpec& spec) {
+  if (auto named = rb::parseName<MassSource>(spec.body.mass_properties)) return *named;
+  return spec.contact.model == "points" ? MassSource::Grid : MassSource::Continuum;
+}
+
+rb::Result<std::shared_ptr<const Body>> compileBody(const SceneSpec& scene) {
+  const BodySpec& spec = scene.body;
+  const double length_unit = scene.units.length;
   if (auto e = checkBody(spec)) return *e;
   if (auto e = needPositive("units.length", length_unit)) return *e;
-  auto body = buildBody(spec, length_unit);
+  auto body = buildBody(spec, length_unit, massSourceOf(scene));
   if (!body) return body.error();
   return std::shared_ptr<const Body>(std::make_shared<Body>(std::move(body).value()));
 }
@@ -296,7 +314,7 @@ rb::Result<Model> compile(const SceneSpec& spec) {
   // The run's keys first: they are cheap to check, and the body may take a while to build.
   if (auto e = checkContact(spec.contact)) return *e;
   if (auto e = checkRest(spec)) return *e;
-  auto body = compileBody(spec.body, spec.units.length);
+  auto body = compileBody(spec);
   if (!body) return body.error();
   return compileRun(spec, std::move(body).value());
 }

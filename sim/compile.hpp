@@ -15,9 +15,15 @@ namespace sim {
 /// Largest point-grid size compile() accepts (bounding-box estimate), points.
 inline constexpr double kMaxGridPoints = 2.0e8;
 
-/// Checks the body keys and builds the shared body: mass properties from the grid, surface
-/// points relative to the CM, SI units (`length_unit` metres per file unit).
-rb::Result<std::shared_ptr<const Body>> compileBody(const BodySpec& spec, double length_unit);
+/// Where the scene's body takes its mass properties from: body.mass_properties, or when the
+/// scene leaves it out the grid's sums for contact.model points (the seed's rule, so its scenes
+/// reproduce its report) and the continuum's integrals for the others.
+MassSource massSourceOf(const SceneSpec& spec);
+
+/// Checks the body keys and builds the shared body of `spec` (its body, units and, for the
+/// mass properties' default, contact.model): mass properties (massSourceOf), surface points
+/// relative to the CM, SI units.
+rb::Result<std::shared_ptr<const Body>> compileBody(const SceneSpec& spec);
 
 /// Checks the other keys and makes a run of `body`. Refuses a step that the contact stiffness
 /// makes unstable, naming the largest stable one.

@@ -24,6 +24,8 @@
 namespace sim {
 
 enum class ContactModel { Points, Smooth, Rolling };
+/// Where a body's mass properties come from (body.mass_properties).
+enum class MassSource { Grid, Continuum };
 enum class FrictionLaw { Coulomb, Regularized };
 /// Fixed-step methods take simulation.dt; Dopri5 (adaptive, Dormand–Prince 5(4) with dense
 /// output, from Boost.Odeint) takes simulation.tolerance.
@@ -61,7 +63,10 @@ struct Body {
   Eigen::Matrix3d inertia_inv;         ///< its inverse, 1/(kg m²)
   Surface surface;                     ///< the smooth surface, geometric frame, m
   Eigen::Vector3d com_geometric;       ///< CM in the geometric frame, m
-  MassProperties mass_properties;      ///< as computed from the grid (geometric frame)
+  MassProperties mass_properties;      ///< geometric frame; from `mass_source`
+  /// The paraboloid's: the grid's sums or the continuum's integrals (ellipsoid: the scene's).
+  MassSource mass_source = MassSource::Continuum;
+  bool mass_by_cubature = false;       ///< continuum: by cubature, not the closed form
   Grid grid;                           ///< the point grid's spacing, m
   ContactPoints bottom;                ///< bottom-surface points, body frame, m (blue)
   /// Top-surface points, body frame, m (red). They touch the floor only when the body lies
@@ -138,6 +143,13 @@ struct NameTable<sim::ContactModel> {
       {sim::ContactModel::Points, "points"},
       {sim::ContactModel::Smooth, "smooth"},
       {sim::ContactModel::Rolling, "rolling"},
+  }};
+};
+template <>
+struct NameTable<sim::MassSource> {
+  static constexpr std::array<std::pair<sim::MassSource, std::string_view>, 2> entries{{
+      {sim::MassSource::Continuum, "continuum"},
+      {sim::MassSource::Grid, "grid"},
   }};
 };
 template <>

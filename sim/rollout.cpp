@@ -20,6 +20,10 @@ constexpr double kReversalFraction = 0.01;
 // axis and says nothing of the rattleback's spin (a body dropped from 5 cm at 30° bounces for
 // about 0.6 s and wobbles through n = 0 several times before it settles).
 constexpr double kSettleTime = 0.5;  // s
+// …and n must then keep its new sign for this long. A body rocking through tens of degrees
+// (after a drop, or tipped far) swings n = ω·ẑ through zero and back within a rocking period
+// (the default body: 0.14–0.29 s at 7.0/3.5 Hz, the dips last 20–60 ms); a reversal goes on.
+constexpr double kHoldTime = 0.2;  // s
 
 // Nothing in the model adds energy (no drive; friction, dampers and drag only remove it), so a
 // rise of the total energy by more than this fraction of its initial value is no integration
@@ -183,19 +187,28 @@ void Rollout::watch() {
 // (Illinois), so it is as accurate as the states between steps.
 void Rollout::locateReversal(double previous_spin, double spin) {
   if (reference_sign_ == 0 || !std::isfinite(spin)) return;
-  if (spin * reference_sign_ < 0 && previous_spin * reference_sign_ >= 0) {
+  const double threshold = kReversalFraction * std::abs(summary_.first.spin);
+  // Before n has reached the threshold the other way, the latest crossing is the candidate;
+  // after it, the crossing stays, and only n back beyond the threshold the old way undoes it
+  // (a wiggle about zero in the middle of a reversal keeps its first crossing).
+  if (spin * reference_sign_ < 0 && previous_spin * reference_sign_ >= 0 && !crossing_reached_) {
     crossing_ = zeroCrossing([&](double t) { return angularVelocity(model_, interpolate(t)).z(); },
                              previous_.t, current_.t, previous_spin, spin);
   }
-  // A crossing while the body was in the air or still bouncing is none.
+  // A crossing while the body was in the air or still bouncing is none, nor one that n takes
+  // back before it has held the new side for kHoldTime.
   if (crossing_ && *crossing_ - last_airborne_ < kSettleTime) crossing_.reset();
-  if (crossing_ &&
-      spin * reference_sign_ < -kReversalFraction * std::abs(summary_.first.spin)) {
+  if (crossing_ && crossing_reached_ && spin * reference_sign_ > threshold) crossing_.reset();
+  if (crossing_ && spin * reference_sign_ < -threshold) crossing_reached_ = true;
+  // At the run's end a crossing that has reached the threshold counts: nothing undid it.
+  const bool at_end = current_.t >= model_.duration * (1 - kSameTime);
+  if (crossing_ && crossing_reached_ && (current_.t - *crossing_ >= kHoldTime || at_end)) {
     summary_.reversals.push_back(*crossing_);
     if (!summary_.first_reversal_s) summary_.first_reversal_s = *crossing_;
     crossing_.reset();
     reference_sign_ = -reference_sign_;
   }
+  if (!crossing_) crossing_reached_ = false;
 }
 
 // Between the ends of the last step: the adaptive stepper's dense output, or a cubic Hermite

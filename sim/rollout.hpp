@@ -23,8 +23,10 @@ struct RunSummary {
   Telemetry first, last;  ///< at the start, and at the last time sampled or reached
   /// Spin reversals (SPEC; README "first reversal"), s: each is a zero crossing of n = ω·ẑ,
   /// located on the interpolant between steps, after which n goes on to reach 1% of the
-  /// initial |n| with the new sign, at least 0.5 s after the body last left the floor (no
-  /// reversals in the air or while it bounces). The next is counted from the new sign.
+  /// initial |n| with the new sign and keeps that sign for 0.2 s (a body rocking through tens
+  /// of degrees swings n through zero and back), at least 0.5 s after the body last left the
+  /// floor (no reversals in the air or while it bounces). The next is counted from the new
+  /// sign. At the end of the run a crossing that has reached 1% counts without the 0.2 s.
   std::vector<double> reversals;
   std::optional<double> first_reversal_s;  ///< reversals.front(), when there is one
   /// Largest tilt of the body's z axis from the vertical at the start or the end of any step
@@ -94,6 +96,7 @@ class Rollout {
   // Reversal bookkeeping: the sign being reversed from, and the last crossing to the other.
   double reference_sign_ = 0;
   std::optional<double> crossing_;
+  bool crossing_reached_ = false;  ///< n has reached kReversalFraction since crossing_
   double spin_ = 0;  ///< n = ω·ẑ of current_, rad/s
   double min_cos_tilt_ = 1;  ///< smallest cosine of the tilt so far
   double last_airborne_ = -1e300;  ///< last time the floor carried nothing, s

@@ -55,6 +55,10 @@ struct BodySpec {
   Matrix3Spec inertia{};             ///< ellipsoid: kg m², about the CM, body axes
   std::optional<DentsSpec> dents;    ///< absent: no dents
   GridSpec grid;
+  /// paraboloid: where the mass properties come from: "continuum" (the shape's volume, exact)
+  /// or "grid" (the point grid's sums, the seed's first-order rule); "" leaves it to the
+  /// contact model: grid for points (the seed's scenes reproduce its report), else continuum.
+  std::string mass_properties;
   double mass = kUnset;  ///< kg, > 0
 };
 

@@ -139,7 +139,8 @@ def crossing(state, new, h, sign):
 def reversals(h, duration, count):
     """Reversals as rattleback counts them (sim/rollout.hpp): a zero crossing of n against the
     current sign that goes on to reach 1 % of the initial |n| the other way before crossing
-    back; the time is the crossing's."""
+    back; the time is the crossing's. (rattleback also asks the new sign to hold for 0.2 s,
+    which does not move Kane & Levinson's reversals: their spin goes on.)"""
     state, t = initial(), 0.0
     threshold = 0.01 * abs(spin(state))
     sign = 1.0 if spin(state) > 0 else -1.0
