@@ -159,7 +159,8 @@ bool videoValueCase(const BadCase& c) {
 TEST(Scenes, TheBaseSceneCompiles) { EXPECT_EQ(errorFor(kBase), ""); }
 
 TEST(Scenes, ShippedScenesLoadAndCompile) {
-  for (const char* name : {"rattleback", "seed-preferred", "seed-reversed", "kane-levinson"}) {
+  for (const char* name :
+       {"rattleback", "seed-preferred", "seed-reversed", "kane-levinson", "kane-levinson-long"}) {
     const std::string path = std::string(RATTLEBACK_SOURCE_DIR) + "/scenes/" + name + ".yaml";
     auto loaded = scene::loadFile(path);
     ASSERT_TRUE(loaded.ok()) << loaded.error().text();
