@@ -45,7 +45,7 @@ const char* kIntegrators[] = {"euler", "symplectic", "rk4", "dopri5"};
 // to 4 digits at 1 ms); the penalty models need steps near 1/ω of their floor and, with
 // friction, of its slip regularisation.
 double topStep(const std::string& model) {
-  if (model == "rolling") return 2e-3;
+  if (model == "rolling" || model == "auto") return 2e-3;  // auto slides in steps of its own
   if (model == "smooth") return 1.6e-4;
   return 4e-5;
 }
@@ -57,6 +57,7 @@ struct Trace {
   std::optional<double> reversal;
   double wall_per_simulated = 0, us_per_step = 0;
   std::int64_t steps = 0, rejected = 0;
+  int switches = 0;  ///< auto: changes between rolling and smooth
 };
 
 // One run of the shared body: compileRun only (the body was built once for the scene).
@@ -78,6 +79,7 @@ Trace runOnce(const sim::SceneSpec& spec, const std::shared_ptr<const sim::Body>
   const sim::RunSummary& summary = rollout.summary();
   trace.steps = summary.steps;
   trace.rejected = summary.rejected;
+  trace.switches = summary.switches;
   if (!summary.divergence && summary.wall_s > kRunBudget && rollout.current().t < model.duration) {
     char text[128];
     std::snprintf(text, sizeof text, "stopped at %.3g s: over the %g s budget of one run",
@@ -118,6 +120,7 @@ struct Row {
   double dt = 0;          ///< fixed step, s (NaN for adaptive rows)
   double tolerance = NAN;  ///< adaptive rows
   std::int64_t steps = 0, rejected = 0;
+  std::optional<double> switches;  ///< auto rows: changes of contact model
   std::string status = "ok";  ///< or the failure in full (CSV)
   std::string brief;          ///< the failure in a few words (table)
   double cost_median = NAN, cost_min = NAN, cost_max = NAN, us_per_step = NAN;
@@ -136,9 +139,9 @@ std::string show(std::optional<double> v, const char* format = "%.3g") {
 std::string cell(std::optional<double> v, const char* format) { return v ? show(v, format) : ""; }
 
 void printHeader() {
-  std::printf("%-8s %-10s %13s %10s %7s %8s %9s %9s %9s %9s %9s %9s %9s\n", "model",
+  std::printf("%-8s %-10s %13s %10s %7s %8s %9s %9s %9s %9s %9s %9s %9s %8s\n", "model",
               "integrator", "dt [s] / tol", "cost [s/s]", "spread", "us/step", "steps (rej)",
-              "reversal", "d_rev", "d_rev_roll", "max|dn|", "|dn|_roll", "drift");
+              "reversal", "d_rev", "d_rev_roll", "max|dn|", "|dn|_roll", "drift", "switches");
 }
 
 std::string stepText(const Row& r) {
@@ -160,12 +163,13 @@ void printRow(const Row& r) {
   char steps[40];
   std::snprintf(steps, sizeof steps, "%lld (%lld)", static_cast<long long>(r.steps),
                 static_cast<long long>(r.rejected));
-  std::printf("%-8s %-10s %13s %10.3g %6.0f%% %8.3g %11s %9s %9s %9s %9s %9s %9s%s\n",
+  std::printf("%-8s %-10s %13s %10.3g %6.0f%% %8.3g %11s %9s %9s %9s %9s %9s %9s %8s%s\n",
               r.model.c_str(), r.integrator.c_str(), stepText(r).c_str(), r.cost_median,
               100 * spread, r.us_per_step, steps,
               show(r.reversal, "%.4f").c_str(), show(r.reversal_error).c_str(),
               show(r.reversal_error_rolling).c_str(), show(r.spin_error).c_str(),
               show(r.spin_error_rolling).c_str(), show(r.energy_drift).c_str(),
+              show(r.switches, "%.0f").c_str(),
               r.status == "ok" ? "" : ("  " + r.brief).c_str());
 }
 
@@ -254,7 +258,7 @@ int benchCommand(const BenchArgs& args) {
   // in the README ("bench").
   csv.stream() << "scene,model,integrator,dt,tolerance,steps,rejected,status,cost_median,cost_min,"
                   "cost_max,us_per_step,reversal_s,reversal_error_s,reversal_error_vs_rolling_s,"
-                  "max_spin_error,max_spin_error_vs_rolling,energy_drift\n";
+                  "max_spin_error,max_spin_error_vs_rolling,energy_drift,switches\n";
 
   std::vector<Row> rows;
   for (std::size_t scene_index = 0; scene_index < loaded.size(); ++scene_index) {
@@ -269,6 +273,7 @@ int benchCommand(const BenchArgs& args) {
       if (base.contact.model == "points" || bottom <= kMaxBenchPoints) models.push_back("points");
       models.push_back("smooth");
       models.push_back("rolling");
+      models.push_back("auto");
       if (!args.quiet && bottom > kMaxBenchPoints && base.contact.model != "points")
         std::printf("(%s: points model left out: %zu bottom points; --models points adds it)\n",
                     name.c_str(), bottom);
@@ -359,6 +364,7 @@ int benchCommand(const BenchArgs& args) {
             row.us_per_step = first.us_per_step;
             row.steps = first.steps;
             row.rejected = first.rejected;
+            if (model == "auto") row.switches = first.switches;
             if (first.failure) {
               row.status = *first.failure;
               row.brief = first.brief;
@@ -384,7 +390,7 @@ int benchCommand(const BenchArgs& args) {
     std::replace(status.begin(), status.end(), ',', ';');
     char line[1024];
     std::snprintf(line, sizeof line,
-                  "%s,%s,%s,%s,%s,%lld,%lld,\"%s\",%.6g,%.6g,%.6g,%.6g,%s,%s,%s,%s,%s,%s\n",
+                  "%s,%s,%s,%s,%s,%lld,%lld,\"%s\",%.6g,%.6g,%.6g,%.6g,%s,%s,%s,%s,%s,%s,%s\n",
                   r.scene.c_str(), r.model.c_str(), r.integrator.c_str(),
                   std::isnan(r.dt) ? "" : show(r.dt, "%.6g").c_str(),
                   std::isnan(r.tolerance) ? "" : show(r.tolerance, "%.3g").c_str(),
@@ -392,7 +398,8 @@ int benchCommand(const BenchArgs& args) {
                   r.cost_median, r.cost_min, r.cost_max, r.us_per_step,
                   cell(r.reversal, "%.9g").c_str(), cell(r.reversal_error, "%.6g").c_str(),
                   cell(r.reversal_error_rolling, "%.6g").c_str(), cell(r.spin_error, "%.6g").c_str(),
-                  cell(r.spin_error_rolling, "%.6g").c_str(), cell(r.energy_drift, "%.6g").c_str());
+                  cell(r.spin_error_rolling, "%.6g").c_str(), cell(r.energy_drift, "%.6g").c_str(),
+                  cell(r.switches, "%.0f").c_str());
     csv.stream() << line;
   }
   if (auto e = csv.commit(); !e) {

@@ -46,6 +46,10 @@ nlohmann::json runJson(const sim::RunSummary& run) {
     j["rejected_steps"] = run.rejected;
     j["evaluations"] = run.evaluations;
   }
+  nlohmann::json changes = nlohmann::json::array();
+  for (const auto& [t, mode] : run.mode_changes)
+    changes.push_back({{"t", t}, {"to", std::string(rb::nameOf(mode))}});
+  j["mode_changes"] = changes;
   j["wall_s"] = run.wall_s;
   return j;
 }

@@ -37,6 +37,8 @@ const std::pair<const char*, const char*> kColumns[] = {
     {"Lz", "kg m^2/s: vertical angular momentum about the centre of mass"},
     {"contacts", "count of contact points below the floor"},
     {"normal_force", "N: total normal force of the floor"},
+    {"mode", "the contact model integrated: points, smooth or rolling (contact.model auto "
+             "switches between rolling and smooth)"},
 };
 
 std::string header() {
@@ -48,10 +50,11 @@ std::string header() {
 void writeRow(std::ostream& out, const sim::Telemetry& s) {
   char line[512];
   std::snprintf(line, sizeof line,
-                "%.10g,%.9g,%.9g,%.9g,%.9g,%.9g,%.6f,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.9g\n",
+                "%.10g,%.9g,%.9g,%.9g,%.9g,%.9g,%.6f,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.9g,%s\n",
                 s.t, s.spin, s.energy, s.kinetic, s.potential, s.elastic, s.tilt_deg,
                 s.x_world.x(), s.x_world.y(), s.x_world.z(), s.w_world.x(), s.w_world.y(),
-                s.w_world.z(), s.L_world.z(), s.contacts, s.normal_force);
+                s.w_world.z(), s.L_world.z(), s.contacts, s.normal_force,
+                std::string(rb::nameOf(s.mode)).c_str());
   out << line;
 }
 
@@ -87,6 +90,13 @@ void printSummary(const SimulateArgs& args, const sim::Model& model,
         model.initial.spin != 0)
       std::printf("                (it started exactly upright, initial.tilt [0, 0]: with "
                   "nothing to rock, no spin reverses; try tilt: [0.5, 0.5])\n");
+  }
+  if (model.contact.model == sim::ContactModel::Auto) {
+    std::printf("contact modes   %d switches", run.switches);
+    for (const auto& [t, mode] : run.mode_changes)
+      std::printf("%s %s at %.4f s", &t == &run.mode_changes.front().first ? ":" : ",",
+                  std::string(rb::nameOf(mode)).c_str(), t);
+    std::printf("\n");
   }
   const double change = (run.last.energy - run.first.energy) / std::abs(run.first.energy);
   std::printf("energy          %.6g J -> %.6g J (%+.4g %%)\n", run.first.energy,

@@ -155,7 +155,7 @@ std::optional<rb::Error> checkRest(const SceneSpec& spec) {
     if (std::abs(tilt) > 180) return rb::Error{"initial.tilt", "must lie within ±180 degrees"};
   }
   if (auto e = needNonNegative("initial.height", spec.initial.height)) return e;
-  if (spec.initial.height > 0 && spec.contact.model == "rolling")
+  if (spec.initial.height > 0 && spec.contact.model == "rolling")  // auto starts sliding
     return rb::Error{"initial.height",
                      "must be 0 with contact.model rolling (it keeps the body on the floor); "
                      "drop it with smooth or points"};
@@ -298,8 +298,9 @@ rb::Result<Model> compileRun(const SceneSpec& spec, std::shared_ptr<const Body> 
                           spec.initial.tilt[1] * M_PI / 180.0,
                           spec.initial.height * spec.units.length};
 
+  // Auto runs its smooth phases in steps of their own (sim/switching.hpp: smoothStep).
   const ContactStability stability = contactStability(model);
-  if (model.dt > stability.largest_step) {
+  if (model.contact.model != ContactModel::Auto && model.dt > stability.largest_step) {
     std::ostringstream msg;
     msg << "= " << model.dt << " s is too large for contact.stiffness " << c.stiffness
         << " N/m with " << rb::nameOf(model.integrator) << ": the stiffest contact mode ("

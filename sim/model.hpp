@@ -23,7 +23,8 @@
 
 namespace sim {
 
-enum class ContactModel { Points, Smooth, Rolling };
+/// Auto: rolling while rolling holds, smooth while it does not (sim/switching.hpp).
+enum class ContactModel { Points, Smooth, Rolling, Auto };
 /// Where a body's mass properties come from (body.mass_properties).
 enum class MassSource { Grid, Continuum };
 enum class FrictionLaw { Coulomb, Regularized };
@@ -105,6 +106,10 @@ struct Model {
   double duration = 0;     ///< s, simulated time of the run
   Initial initial;
   double length_unit = 1;  ///< m per length unit of the scene file (for reports)
+  /// Rolling under auto: the contact point is held this far below the floor (the smooth
+  /// spring's compression when rolling began), and that spring's ½ k δ² counts in the energy.
+  /// 0 for a plain rolling run. m.
+  double rolling_depth = 0;
 };
 
 /// The changing data. With a fixed step, t = step · dt (never accumulated); with an adaptive
@@ -139,10 +144,11 @@ inline Eigen::Vector3d angularVelocity(const Model& model, const State& s) {
 namespace rb {
 template <>
 struct NameTable<sim::ContactModel> {
-  static constexpr std::array<std::pair<sim::ContactModel, std::string_view>, 3> entries{{
+  static constexpr std::array<std::pair<sim::ContactModel, std::string_view>, 4> entries{{
       {sim::ContactModel::Points, "points"},
       {sim::ContactModel::Smooth, "smooth"},
       {sim::ContactModel::Rolling, "rolling"},
+      {sim::ContactModel::Auto, "auto"},
   }};
 };
 template <>

@@ -47,7 +47,7 @@ void enforceRolling(const Model& model, State& s) {
   const Eigen::Matrix3d R = s.q.toRotationMatrix();
   const Eigen::Vector3d r = contactGeometry(model, R).r_world;
   const Eigen::Vector3d w = angularVelocity(*model.body, R, s.L_world);
-  s.x_world.z() = -r.z();
+  s.x_world.z() = -r.z() - model.rolling_depth;
   s.v_world = -w.cross(r);
 }
 

@@ -22,8 +22,8 @@ struct RollingMotion {
 /// (derived from Newton and Euler about the CM with the constraint differentiated once).
 RollingMotion rollingMotion(const Model& model, const Kinematics& k);
 
-/// Puts the state back on the constraint: contact point on the floor (z_cm = −r_z) and not
-/// sliding (v = −ω × r).
+/// Puts the state back on the constraint: contact point on the floor, or model.rolling_depth
+/// below it (z_cm = −r_z − depth), and not sliding (v = −ω × r).
 void enforceRolling(const Model& model, State& s);
 
 }  // namespace sim

@@ -10,6 +10,7 @@
 #include "sim/initial.hpp"
 #include "sim/rolling.hpp"
 #include "sim/step.hpp"
+#include "sim/switching.hpp"
 
 namespace sim {
 namespace {
@@ -71,9 +72,10 @@ std::string stepAdvice(const Model& model) {
 Rollout::Rollout(Model model) : Rollout(model, initialState(model)) {}
 
 Rollout::Rollout(Model model, const State& start)
-    : model_(std::move(model)), previous_(start), current_(start) {
-  if (isAdaptive(model_.integrator)) adaptive_ = std::make_unique<AdaptiveStepper>(model_, start);
-  summary_.first = summary_.last = telemetryOf(model_, start);
+    : model_(std::move(model)), active_(model_), previous_(start), current_(start) {
+  if (model_.contact.model == ContactModel::Auto) startAuto();
+  if (isAdaptive(model_.integrator)) adaptive_ = std::make_unique<AdaptiveStepper>(active_, current_);
+  summary_.first = summary_.last = telemetryOf(active_, current_);
   spin_ = summary_.first.spin;
   summary_.max_tilt_deg = summary_.first.tilt_deg;
   min_cos_tilt_ = std::cos(summary_.first.tilt_deg * M_PI / 180.0);
@@ -103,8 +105,8 @@ bool Rollout::advanceTo(double t) {
   summary_.max_tilt_deg =
       std::max(summary_.max_tilt_deg, std::acos(std::clamp(min_cos_tilt_, -1.0, 1.0)) * 180.0 / M_PI);
   if (adaptive_) {
-    summary_.evaluations = adaptive_->evaluations();
-    summary_.rejected = adaptive_->rejected(current_.step);
+    summary_.evaluations = evaluations_before_ + adaptive_->evaluations();
+    summary_.rejected = rejected_before_ + adaptive_->rejected(current_.step - stepper_start_);
   }
   return !stopped() || current_.t >= t || sameTime(current_.t, t);
 }
@@ -118,11 +120,23 @@ void Rollout::stepOnce() {
     // equations (ẋ = −ω × r comes from q and L), and the rates use q normalised, so putting
     // the handed-out state back on the constraint here is the same as restoring it inside.
     current_.q.normalize();
-    if (model_.contact.model == ContactModel::Rolling) enforceRolling(model_, current_);
+    if (active_.contact.model == ContactModel::Rolling) enforceRolling(active_, current_);
+    if (active_.contact.model != model_.contact.model &&
+        active_.contact.model == ContactModel::Smooth)
+      countStuck(current_, current_.t - previous_.t);
+  } else if (active_.contact.model != model_.contact.model &&
+             active_.contact.model == ContactModel::Smooth) {
+    // Auto sliding: the smooth contact in steps of its own up to the step's end.
+    const std::int64_t index = current_.step + 1;
+    advanceSmooth(current_, static_cast<double>(index) * model_.dt);
+    current_.step = index;
+    current_.t = static_cast<double>(index) * model_.dt;
   } else {
-    step(model_, current_);  // which puts a rolling state back on the constraint itself
+    step(active_, current_);  // which puts a rolling state back on the constraint itself
   }
   have_rates_ = false;
+  hermite_ = false;
+  if (model_.contact.model == ContactModel::Auto) switchModes();
   // The tilt's cosine is R(2,2) = (w² + z² − x² − y²)/|q|² of the orientation quaternion.
   const Eigen::Quaterniond& q = current_.q;
   min_cos_tilt_ = std::min(min_cos_tilt_, (q.w() * q.w() + q.z() * q.z() - q.x() * q.x() -
@@ -144,15 +158,16 @@ void Rollout::watch() {
   }
   // The energy, and whether the floor carries the body. Rolling keeps it on the floor and has
   // no spring: its energy needs no contact solve (this check runs every step or millisecond).
-  const bool rolling = model_.contact.model == ContactModel::Rolling;
+  const bool rolling = active_.contact.model == ContactModel::Rolling;
   double energy = 0;
   if (rolling) {
-    const Eigen::Vector3d w = angularVelocity(model_, current_);
-    const double M = model_.body->mass;
+    const Eigen::Vector3d w = angularVelocity(active_, current_);
+    const double M = active_.body->mass, depth = active_.rolling_depth;
     energy = 0.5 * M * current_.v_world.squaredNorm() + 0.5 * w.dot(current_.L_world) +
-             M * model_.gravity * current_.x_world.z();
+             M * active_.gravity * current_.x_world.z() +
+             (depth > 0 ? 0.5 * active_.contact.stiffness * depth * depth : 0.0);
   } else {
-    const Telemetry now = telemetryOf(model_, current_);
+    const Telemetry now = telemetryOf(active_, current_);
     if (now.contacts == 0 || now.normal_force <= 0) last_airborne_ = current_.t;
     energy = now.energy;
   }
@@ -167,8 +182,8 @@ void Rollout::watch() {
     return;
   }
   // Rolling is a smooth surface rolling on the floor; tipped onto the edge of its flat top the
-  // body pivots on an edge, which that model cannot describe.
-  if (rolling) {
+  // body pivots on an edge, which that model cannot describe (auto slides instead).
+  if (model_.contact.model == ContactModel::Rolling) {
     const Eigen::Matrix3d R = current_.q.toRotationMatrix();
     if (!model_.body->surface.lowestOnRim(-R.row(2).transpose())) return;
     const double tilt = std::acos(std::clamp(R(2, 2), -1.0, 1.0)) * 180.0 / M_PI;
@@ -216,10 +231,10 @@ void Rollout::locateReversal(double previous_spin, double spin) {
 // L with τ): its error is O(h⁴) for a smooth motion, below the integrators' own, and it hits
 // both ends exactly. (Slerp would interpolate the rotation at only O(h²) and ignore ω.)
 State Rollout::interpolate(double t) const {
-  if (adaptive_) return adaptive_->at(t);
+  if (adaptive_ && !hermite_) return adaptive_->at(t);
   if (!have_rates_) {
-    rates_previous_ = packRates(ratesOf(model_, previous_));
-    rates_current_ = packRates(ratesOf(model_, current_));
+    rates_previous_ = packRates(ratesOf(active_, previous_));
+    rates_current_ = packRates(ratesOf(active_, current_));
     have_rates_ = true;
   }
   const double h = current_.t - previous_.t;
@@ -248,13 +263,125 @@ State Rollout::stateAt(double t) const {
   }
   State s = interpolate(t);
   s.q.normalize();
-  if (model_.contact.model == ContactModel::Rolling) enforceRolling(model_, s);
+  if (active_.contact.model == ContactModel::Rolling) enforceRolling(active_, s);
   return s;
 }
 
 Telemetry Rollout::sampleAt(double t) {
-  summary_.last = telemetryOf(model_, stateAt(t));
+  summary_.last = telemetryOf(active_, stateAt(t));
   return summary_.last;
+}
+
+// Auto's first mode: rolling when the run starts on the floor and rolling holds there, with
+// the spring's compression at the start as its depth (at rest M g / k); else sliding.
+void Rollout::startAuto() {
+  const Model smooth = modeOf(model_, ContactModel::Smooth, 0);
+  const SmoothContactState contact = smoothContactState(smooth, current_);
+  active_ = smooth;
+  if (contact.depth <= 0 || contact.slip > model_.contact.slip_velocity) return;
+  const Model rolling = modeOf(model_, ContactModel::Rolling, contact.depth);
+  State s = current_;
+  projectOntoRolling(smooth, s);
+  enforceRolling(rolling, s);
+  if (!rollingMargins(rolling, s).hold()) return;
+  active_ = rolling;
+  previous_ = current_ = s;
+}
+
+// The smooth contact from s to `t_end` in equal steps no longer than smoothStep, keeping
+// count of how long the contact point has stuck (slip below ε with the spring pressing).
+void Rollout::advanceSmooth(State& s, double t_end) {
+  const double span = t_end - s.t;
+  if (!(span > 0)) return;
+  const int n = static_cast<int>(std::ceil(span / smoothStep(active_) - 1e-9));
+  const double h = span / std::max(n, 1);
+  for (int i = 0; i < std::max(n, 1); ++i) {
+    advanceBy(active_, s, h);
+    countStuck(s, h);
+  }
+}
+
+// Auto sliding: how long the contact point has stuck (slip below ε, the spring pressing).
+void Rollout::countStuck(const State& s, double h) {
+  const SmoothContactState c = smoothContactState(active_, s);
+  stuck_for_ = c.normal > 0 && c.slip < model_.contact.slip_velocity ? stuck_for_ + h : 0;
+}
+
+// Auto: after each step, whether the other model takes over, and from when.
+void Rollout::switchModes() {
+  if (active_.contact.model == ContactModel::Rolling) {
+    const RollingMargins end = rollingMargins(active_, current_);
+    if (end.hold()) return;
+    // The earliest time in the step at which a margin that fails at its end reaches zero.
+    const RollingMargins start = rollingMargins(active_, previous_);
+    double t_switch = current_.t;
+    auto locate = [&](double RollingMargins::*margin) {
+      if (end.*margin > 0) return;
+      if (!(start.*margin > 0)) {
+        t_switch = previous_.t;
+        return;
+      }
+      const double t = zeroCrossing(
+          [&](double time) { return rollingMargins(active_, stateAt(time)).*margin; },
+          previous_.t, current_.t, start.*margin, end.*margin);
+      t_switch = std::min(t_switch, t);
+    };
+    locate(&RollingMargins::friction);
+    locate(&RollingMargins::normal);
+    locate(&RollingMargins::rim);
+    State s = stateAt(t_switch);
+    active_ = modeOf(model_, ContactModel::Smooth, 0);
+    stuck_for_ = 0;
+    changeMode(s, t_switch);
+    return;
+  }
+  if (stuck_for_ < kStickTime) return;
+  // Rolling resumes where the slip has stayed below ε: the contact point stopped by a plastic
+  // impulse, the spring's compression kept as rolling's depth.
+  const SmoothContactState contact = smoothContactState(active_, current_);
+  const Model rolling = modeOf(model_, ContactModel::Rolling, contact.depth);
+  State s = current_;
+  projectOntoRolling(active_, s);
+  enforceRolling(rolling, s);
+  const RollingMargins m = rollingMargins(rolling, s);
+  if (!(m.normal > 0 && m.rim > 0 &&
+        m.friction > (1 - kRollFriction) * rolling.contact.friction * m.normal)) {
+    stuck_for_ = 0;  // rolling would need nearly all the friction there is: slide on
+    return;
+  }
+  active_ = rolling;
+  changeMode(s, current_.t);
+}
+
+// Carries out a switch found in the last step at t_switch, from state s (already in the new
+// mode's terms): fixed steps finish the step in the new mode; adaptive ones restart there.
+void Rollout::changeMode(State s, double t_switch) {
+  ++summary_.switches;
+  summary_.mode_changes.push_back({t_switch, active_.contact.model});
+  if (adaptive_) {
+    evaluations_before_ += adaptive_->evaluations();
+    rejected_before_ += adaptive_->rejected(current_.step - stepper_start_);
+    s.t = t_switch;
+    s.step = current_.step;
+    current_ = s;
+    adaptive_ = std::make_unique<AdaptiveStepper>(active_, current_);
+    stepper_start_ = current_.step;
+    hermite_ = true;  // the new stepper has no dense output for the step just ended
+  } else if (t_switch < current_.t) {
+    const double t_end = current_.t;
+    const std::int64_t index = current_.step;
+    if (active_.contact.model == ContactModel::Smooth) {
+      advanceSmooth(s, t_end);
+    } else {
+      advanceBy(active_, s, t_end - t_switch);
+    }
+    s.t = t_end;
+    s.step = index;
+    current_ = s;
+  } else {
+    current_ = s;
+  }
+  have_rates_ = false;
 }
 
 std::vector<double> sampleTimes(double duration, double rate) {

@@ -41,6 +41,9 @@ struct RunSummary {
   /// quantity, the time and the step.
   std::optional<std::string> divergence;
   bool stop_requested = false;  ///< stopped because the caller asked
+  /// contact.model auto: how many times the model changed, and when to which.
+  int switches = 0;
+  std::vector<std::pair<double, ContactModel>> mode_changes;
 };
 
 class Rollout {
@@ -54,6 +57,8 @@ class Rollout {
   ~Rollout();
 
   const Model& model() const { return model_; }
+  /// The contact model being integrated now (under auto: rolling or smooth).
+  ContactModel mode() const { return active_.contact.model; }
   /// The latest state reached: the end of the last step.
   const State& current() const { return current_; }
   /// The end of the run: model.duration, s.
@@ -83,8 +88,14 @@ class Rollout {
   void watch();
   State interpolate(double t) const;
   void locateReversal(double previous_spin, double spin);
+  void startAuto();
+  void advanceSmooth(State& s, double t_end);
+  void countStuck(const State& s, double h);
+  void switchModes();
+  void changeMode(State s, double t_switch);
 
-  Model model_;
+  Model model_;   ///< the run as compiled
+  Model active_;  ///< the model being integrated: model_, or under auto its rolling or smooth mode
   State previous_, current_;
   std::unique_ptr<AdaptiveStepper> adaptive_;
   std::stop_source stop_;
@@ -102,6 +113,10 @@ class Rollout {
   double last_airborne_ = -1e300;  ///< last time the floor carried nothing, s
   double energy_bound_ = 0;
   std::int64_t check_every_ = 1;
+  // Auto: how long the contact point has stuck while sliding; adaptive counts of earlier steppers.
+  double stuck_for_ = 0;
+  bool hermite_ = false;  ///< adaptive: interpolate the last step by Hermite (a switch ended it)
+  std::int64_t evaluations_before_ = 0, rejected_before_ = 0, stepper_start_ = 0;
 };
 
 /// Sample times of a run of `duration` s at `rate` samples per simulated second:

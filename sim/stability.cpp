@@ -45,7 +45,7 @@ bool acceptable(Integrator integrator, double omega, double zeta, double h, doub
 double stiffestMode(const Model& model, const Eigen::Matrix3d& R) {
   const double z_cm = restingHeight(model, R);
   std::vector<Eigen::Vector3d> springs;  // world axes, from the CM
-  if (model.contact.model == ContactModel::Smooth) {
+  if (model.contact.model == ContactModel::Smooth || model.contact.model == ContactModel::Auto) {
     springs.push_back(R * lowestSurfacePoint(*model.body, -R.row(2).transpose()));
   } else {
     for (const ContactPoints* p : {&model.body->bottom, &model.body->top})

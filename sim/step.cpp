@@ -36,12 +36,11 @@ State advanced(const State& s, const Rates& r, double h) {
 namespace {
 
 // Forward Euler (seed §3.4): every variable moves with the rates at the start of the step.
-void eulerStep(const Model& model, State& s) { s = advanced(s, ratesOf(model, s), model.dt); }
+void eulerStep(const Model& model, State& s, double h) { s = advanced(s, ratesOf(model, s), h); }
 
 // Semi-implicit Euler: kick the momenta with the loads at the start, then drift the pose with
 // the new velocities; the rotation by the exact exponential map q ← exp(½ ω dt) ⊗ q.
-void symplecticStep(const Model& model, State& s) {
-  const double dt = model.dt;
+void symplecticStep(const Model& model, State& s, double dt) {
   const Kinematics k = kinematicsOf(model, s);
   const Load load = loadsOn(model, k);
   s.v_world += dt * load.force_world / model.body->mass;
@@ -56,8 +55,7 @@ void symplecticStep(const Model& model, State& s) {
 }
 
 // Classical fourth-order Runge–Kutta on (x, v, q, L).
-void rk4Step(const Model& model, State& s) {
-  const double h = model.dt;
+void rk4Step(const Model& model, State& s, double h) {
   const Rates k1 = ratesOf(model, s);
   const Rates k2 = ratesOf(model, advanced(s, k1, h / 2));
   const Rates k3 = ratesOf(model, advanced(s, k2, h / 2));
@@ -82,6 +80,9 @@ Load loadsOn(const Model& model, const Kinematics& k) {
     load.contact.torque_world = motion.r_world.cross(motion.force_world);
     load.contact.normal_force = motion.force_world.z();
     load.contact.contacts = 1;
+    if (model.rolling_depth > 0)  // auto: the spring's compression rolling holds (no k otherwise)
+      load.contact.elastic_energy =
+          0.5 * model.contact.stiffness * model.rolling_depth * model.rolling_depth;
   } else {
     load.contact = penaltyContact(model, k);
   }
@@ -91,14 +92,18 @@ Load loadsOn(const Model& model, const Kinematics& k) {
   return load;
 }
 
-void step(const Model& model, State& s) {
+void advanceBy(const Model& model, State& s, double h) {
   switch (model.integrator) {
-    case Integrator::Euler: eulerStep(model, s); break;
-    case Integrator::Symplectic: symplecticStep(model, s); break;
-    case Integrator::Rk4: rk4Step(model, s); break;
+    case Integrator::Euler: eulerStep(model, s, h); break;
+    case Integrator::Symplectic: symplecticStep(model, s, h); break;
+    case Integrator::Rk4: rk4Step(model, s, h); break;
     case Integrator::Dopri5: break;  // driven by the Rollout's adaptive stepper
   }
   if (model.contact.model == ContactModel::Rolling) enforceRolling(model, s);
+}
+
+void step(const Model& model, State& s) {
+  advanceBy(model, s, model.dt);
   ++s.step;
   s.t = static_cast<double>(s.step) * model.dt;
 }

@@ -31,6 +31,10 @@ Rates ratesOf(const Model& model, const State& s);
 /// s + h · rates, with the quaternion renormalised so that rotations stay rotations.
 State advanced(const State& s, const Rates& r, double h);
 
+/// Advances the state by h with model.integrator's fixed-step method (rolling: back on the
+/// constraint after), leaving s.t and s.step as they were.
+void advanceBy(const Model& model, State& s, double h);
+
 /// Advances the state by one step of model.dt with model.integrator (a fixed-step method;
 /// adaptive ones are driven by the Rollout).
 void step(const Model& model, State& s);

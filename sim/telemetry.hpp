@@ -20,6 +20,7 @@ struct Telemetry {
   Eigen::Vector3d w_world = Eigen::Vector3d::Zero();  ///< ω, rad/s
   Eigen::Vector3d L_world = Eigen::Vector3d::Zero();  ///< angular momentum about the CM
   int contacts = 0;        ///< points below the floor
+  ContactModel mode = ContactModel::Points;  ///< the contact model integrated (auto: its mode)
   double normal_force = 0;  ///< N
 };
 

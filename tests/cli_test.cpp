@@ -276,7 +276,7 @@ TEST(Cli, BenchWritesTableCsvAndPlotEvenWithoutReversals) {
   int rows = 0;
   while (std::getline(in, line))
     if (!line.empty() && line[0] != '#') ++rows;
-  EXPECT_EQ(rows, 1 + 2 * 2);  // header + (smooth, rolling) × 2 rungs of rk4
+  EXPECT_EQ(rows, 1 + 3 * 2);  // header + (smooth, rolling, auto) × 2 rungs of rk4
   EXPECT_GT(fs::file_size(png), 10000u);
 }
 

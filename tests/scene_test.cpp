@@ -62,7 +62,7 @@ const BadCase kBadCases[] = {
     {"friction: 0.3", "friction: -1", "8: contact.friction must be ≥ 0"},
     {"damping: 20", "damping: -.inf", "8: contact.damping must be ≥ 0"},
     {"friction_law: coulomb", "friction_law: sticky", "8: contact.friction_law must be"},
-    {"model: points", "model: magic", "8: contact.model must be points, smooth or rolling"},
+    {"model: points", "model: magic", "8: contact.model must be points, smooth, rolling or auto"},
     {"shape: paraboloid", "shape: cube", "3: body.shape must be paraboloid or ellipsoid"},
     {"a: 4,", "a: 0,", "4: body.paraboloid.a must be > 0"},
     {"top: 2}", "top: -5}", "4: body.paraboloid.top must be above the apex"},
