@@ -21,6 +21,11 @@ constexpr double kReversalFraction = 0.01;
 // axis and says nothing of the rattleback's spin (a body dropped from 5 cm at 30° bounces for
 // about 0.6 s and wobbles through n = 0 several times before it settles).
 constexpr double kSettleTime = 0.5;  // s
+// "In the air" means a flight: the floor carrying nothing for at least this long. Contact lost
+// for a few milliseconds (a hop of a few µm when auto starts to slide with its spring pushing
+// M g where rolling needed less, or chatter of a skidding body) is no flight; the bounces
+// after a drop from 5 cm last tens of milliseconds.
+constexpr double kFlightTime = 0.01;  // s
 // …and n must then keep its new sign for this long. A body rocking through tens of degrees
 // (after a drop, or tipped far) swings n = ω·ẑ through zero and back within a rocking period
 // (the default body: 0.14–0.29 s at 7.0/3.5 Hz, the dips last 20–60 ms); a reversal goes on.
@@ -81,7 +86,8 @@ Rollout::Rollout(Model model, const State& start)
   min_cos_tilt_ = std::cos(summary_.first.tilt_deg * M_PI / 180.0);
   // The sign of the spin n = ω·ẑ at the start (opposite to initial.spin when upside down).
   reference_sign_ = summary_.first.spin == 0 ? 0 : std::copysign(1.0, summary_.first.spin);
-  if (summary_.first.contacts == 0 || summary_.first.normal_force <= 0) last_airborne_ = start.t;
+  if (summary_.first.contacts == 0 || summary_.first.normal_force <= 0)
+    last_airborne_ = airborne_since_ = start.t;
   const double e0 = summary_.first.energy;
   energy_bound_ = e0 + kEnergyGrowthBound * std::abs(e0) + 1e-12;
   check_every_ = adaptive_ ? 1 : std::max<std::int64_t>(1, std::llround(kEnergyCheckPeriod / model_.dt));
@@ -168,7 +174,13 @@ void Rollout::watch() {
              (depth > 0 ? 0.5 * active_.contact.stiffness * depth * depth : 0.0);
   } else {
     const Telemetry now = telemetryOf(active_, current_);
-    if (now.contacts == 0 || now.normal_force <= 0) last_airborne_ = current_.t;
+    if (now.contacts == 0 || now.normal_force <= 0) {
+      if (!(airborne_since_ <= current_.t)) airborne_since_ = current_.t;
+      if (current_.t - airborne_since_ >= kFlightTime || airborne_since_ == summary_.first.t)
+        last_airborne_ = current_.t;
+    } else {
+      airborne_since_ = kNever;
+    }
     energy = now.energy;
   }
   if (!(energy <= energy_bound_)) {

@@ -5,6 +5,7 @@
 // a stop request. It makes no threads and calls nothing back.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <stop_token>
@@ -25,7 +26,7 @@ struct RunSummary {
   /// located on the interpolant between steps, after which n goes on to reach 1% of the
   /// initial |n| with the new sign and keeps that sign for 0.2 s (a body rocking through tens
   /// of degrees swings n through zero and back), at least 0.5 s after the body last left the
-  /// floor (no reversals in the air or while it bounces). The next is counted from the new
+  /// floor for 10 ms or more (no reversals in the air or while it bounces). The next is counted from the new
   /// sign. At the end of the run a crossing that has reached 1% counts without the 0.2 s.
   std::vector<double> reversals;
   std::optional<double> first_reversal_s;  ///< reversals.front(), when there is one
@@ -110,7 +111,9 @@ class Rollout {
   bool crossing_reached_ = false;  ///< n has reached kReversalFraction since crossing_
   double spin_ = 0;  ///< n = ω·ẑ of current_, rad/s
   double min_cos_tilt_ = 1;  ///< smallest cosine of the tilt so far
-  double last_airborne_ = -1e300;  ///< last time the floor carried nothing, s
+  double last_airborne_ = -1e300;  ///< last time of a flight (the floor carrying nothing), s
+  static constexpr double kNever = std::numeric_limits<double>::quiet_NaN();
+  double airborne_since_ = kNever;  ///< since when the floor has carried nothing, s (NaN: it does)
   double energy_bound_ = 0;
   std::int64_t check_every_ = 1;
   // Auto: how long the contact point has stuck while sliding; adaptive counts of earlier steppers.
