@@ -9,6 +9,7 @@ Exit status 0 when every check passes, 1 when one fails (each failure printed), 
 Selenium or Chromium is not installed (CTest's "skipped")."""
 import os
 import pathlib
+import shutil
 import sys
 import tempfile
 import time
@@ -100,6 +101,7 @@ def main():
         print(f"{len(images)} images, {len(results)} videos checked")
     finally:
         driver.quit()
+        shutil.rmtree(profile, ignore_errors=True)  # the browser's profile: ours to remove
     for f in failures:
         print("FAIL:", f)
     return 1 if failures else 0
