@@ -56,6 +56,15 @@ Camera fixedCamera(View view, const Framing& framing, float half_height, float a
     c.view = lookAt(c.eye, target, up);
     c.proj = orthographic(half_w, half_w / aspect, 0.1f * r, 10 * r);
   };
+  // Front and side: a floor point d behind the target shows d·sin e − z·cos e above it on the
+  // screen (e the elevation, z the target's height); the floor is gone into the background
+  // at 80 % of the way to the top of the frame, its checker from just behind the body.
+  auto horizon = [&](const Eigen::Vector3f& direction) {
+    const float half_h = 1.0f / c.proj(1, 1);
+    c.depth_direction = -direction.head<2>().normalized();
+    c.fog_far = (0.8f * half_h + target.z() * std::cos(kElevation)) / std::sin(kElevation);
+    c.fog_near = std::min(r, 0.5f * c.fog_far);
+  };
   const Eigen::Vector3f look_down(std::cos(kElevation), 0, std::sin(kElevation));
   switch (view) {
     case View::Above:  // +y to the right, +x down; the body turns within the circle r
@@ -66,10 +75,12 @@ Camera fixedCamera(View view, const Framing& framing, float half_height, float a
     case View::Front:
       ortho(Eigen::Vector3f(0, -std::cos(kElevation), std::sin(kElevation)),
             Eigen::Vector3f::UnitZ(), r, half_height + r * std::sin(kElevation));
+      horizon(Eigen::Vector3f(0, -std::cos(kElevation), std::sin(kElevation)));
       break;
     case View::Side:
     case View::Follow:  // (follow has its own camera: chaseCamera)
       ortho(look_down, Eigen::Vector3f::UnitZ(), r, half_height + r * std::sin(kElevation));
+      horizon(look_down);
       break;
     case View::Oblique: {
       // Fixed: from the front right, 30° field of view; far enough that the sphere fits the

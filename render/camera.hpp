@@ -12,6 +12,12 @@ struct Camera {
   Eigen::Matrix4f view = Eigen::Matrix4f::Identity();
   Eigen::Matrix4f proj = Eigen::Matrix4f::Identity();
   Eigen::Vector3f eye = Eigen::Vector3f::Zero();  ///< world, m
+  /// Front and side (orthographic, 10° down): the floor has no horizon of its own, so it fades
+  /// into the background by depth behind the target, along `depth_direction` (horizontal,
+  /// away from the camera): its checker from `fog_near` (m), its colour by `fog_far`, which
+  /// lies below the top of the frame. fog_far 0: the other views' fade with distance.
+  Eigen::Vector2f depth_direction = Eigen::Vector2f::Zero();
+  float fog_near = 0, fog_far = 0;
 };
 
 /// The fixed views: they keep `framing`'s sphere in the frame with a margin, whatever the

@@ -107,7 +107,9 @@ void Renderer::drawFloor(const Camera& camera, const FrameInput& frame,
   // A checker square of 1, 2 or 5 × 10ⁿ m, about a fifth of the body's half length.
   const float raw = size / 5;
   const float decade = std::pow(10.0f, std::floor(std::log10(raw)));
-  const float tile = raw / decade < 2 ? decade : raw / decade < 5 ? 2 * decade : 5 * decade;
+  float tile = raw / decade < 2 ? decade : raw / decade < 5 ? 2 * decade : 5 * decade;
+  // Front and side see the floor at 10°: squares 4× deeper show as bands, not stripes.
+  if (camera.fog_far > 0) tile *= 4;
   const Eigen::Matrix3f R = frame.orientation.cast<float>().toRotationMatrix();
   Eigen::Vector2f axis = R.col(1).head<2>();
   axis = axis.norm() > 1e-6f ? axis.normalized() : Eigen::Vector2f(0, 1);
@@ -121,6 +123,10 @@ void Renderer::drawFloor(const Camera& camera, const FrameInput& frame,
   gl.glUniform2f(gl.glGetUniformLocation(floor_program_, "u_center"), center.x(), center.y());
   gl.glUniform1f(gl.glGetUniformLocation(floor_program_, "u_fade_near"), 3 * size);
   gl.glUniform1f(gl.glGetUniformLocation(floor_program_, "u_fade_far"), 12 * size);
+  gl.glUniform2f(gl.glGetUniformLocation(floor_program_, "u_depth_direction"),
+                 camera.depth_direction.x(), camera.depth_direction.y());
+  gl.glUniform1f(gl.glGetUniformLocation(floor_program_, "u_fog_near"), camera.fog_near);
+  gl.glUniform1f(gl.glGetUniformLocation(floor_program_, "u_fog_far"), camera.fog_far);
   gl.glUniform3fv(gl.glGetUniformLocation(floor_program_, "u_background"), 1, kBackground.data());
   gl.glUniform2f(gl.glGetUniformLocation(floor_program_, "u_shadow_center"), position.x(), position.y());
   gl.glUniform2f(gl.glGetUniformLocation(floor_program_, "u_shadow_axis"), axis.x(), axis.y());
