@@ -95,6 +95,12 @@ int Overlay::text(Image& image, int x, int y, const std::string& utf8, Rgba colo
   return x;
 }
 
+int Overlay::width(const std::string& utf8) {
+  int x = 0;
+  for (char32_t code : decode(utf8)) x += glyph(code).advance;
+  return x;
+}
+
 void fillRect(Image& image, int x0, int y0, int x1, int y1, Rgba color) {
   for (int y = std::max(0, y0); y < std::min(image.height, y1); ++y)
     for (int x = std::max(0, x0); x < std::min(image.width, x1); ++x) blend(image, x, y, color, 1);
@@ -120,11 +126,17 @@ void drawLine(Image& image, float x0, float y0, float x1, float y1, float width,
 
 void drawSpinInset(Image& image, Overlay& font, std::span<const std::array<float, 2>> history,
                    double duration, double range) {
-  const int w = image.width * 3 / 10, h = image.height * 2 / 9;
+  char label[64];
+  std::snprintf(label, sizeof label, "n ±%g rad/s, 0–%g s", range, duration);
+  const int pad = font.lineHeight() / 2;
   const int margin = image.height / 40;
+  // Three tenths of the width, and at least its title's (a narrow frame's text is relatively
+  // wider), within the frame.
+  const int w = std::min(std::max(image.width * 3 / 10, font.width(label) + 2 * pad),
+                         image.width - 2 * margin);
+  const int h = image.height * 2 / 9;
   const int x0 = image.width - w - margin, y0 = image.height - h - margin;
   fillRect(image, x0, y0, x0 + w, y0 + h, {255, 255, 255, 200});
-  const int pad = font.lineHeight() / 2;
   const float left = x0 + pad, right = x0 + w - pad;
   // The curve's band starts below the title's descenders (the title's line ends at
   // y0 + pad + lineHeight) with room for the curve's 2-pixel width and its antialiased edge,
@@ -132,8 +144,6 @@ void drawSpinInset(Image& image, Overlay& font, std::span<const std::array<float
   const float top = y0 + pad + font.lineHeight() + 0.5f * pad + 2, bottom = y0 + h - pad - 2;
   const float mid = 0.5f * (top + bottom);
   drawLine(image, left, mid, right, mid, 1, {90, 90, 90, 255});  // n = 0
-  char label[64];
-  std::snprintf(label, sizeof label, "n ±%g rad/s, 0–%g s", range, duration);
   font.text(image, x0 + pad, y0 + pad + font.lineHeight() * 3 / 4, label, {40, 40, 40, 255});
   auto to_screen = [&](const std::array<float, 2>& p) {
     const float x = left + (right - left) * static_cast<float>(p[0] / duration);

@@ -24,6 +24,8 @@ class Overlay {
   std::string load(int pixels);
   /// Draws UTF-8 text with its baseline at y; returns the x after it.
   int text(Image& image, int x, int y, const std::string& utf8, Rgba color);
+  /// How far text() would advance for this text, pixels.
+  int width(const std::string& utf8);
   int lineHeight() const { return pixels_; }
 
  private:

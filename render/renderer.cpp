@@ -43,7 +43,10 @@ std::string Renderer::init() {
   auto context = GlContext::create(settings_.backend, settings_.width, settings_.height);
   if (!context) return context.error().text();
   context_ = std::move(context).value();
-  if (std::string e = font_.load(std::max(8, settings_.height / 36)); !e.empty()) return e;
+  // Text a 36th of the height (20 px at 720p), but no wider than a 16:9 frame's: the read-out
+  // line (about 50 characters) takes a third of the width at 16:9 and must fit a portrait one.
+  const int text_px = std::min(settings_.height / 36, settings_.width / 64);
+  if (std::string e = font_.load(std::max(8, text_px)); !e.empty()) return e;
   CurrentContext current(*context_);
   if (!current.ok()) return "cannot make the OpenGL context current";
   const GlApi& gl = context_->api();
@@ -165,12 +168,20 @@ void Renderer::drawReadouts(const FrameInput& frame, Image& out) {
   const int x = line, y = line * 2;
   if (!settings_.title.empty()) font_.text(out, x, y, settings_.title, {30, 30, 30, 255});
   if (!settings_.readouts) return;
-  char text[128];
+  char time[32], spin_text[96];
   // A spin that rounds to zero is shown as +0.00, not -0.00.
   const double spin = std::abs(frame.spin) < 0.005 ? 0.0 : frame.spin;
-  std::snprintf(text, sizeof text, "t = %6.2f s    spin n = %+6.2f rad/s  %s", frame.t, spin,
+  std::snprintf(time, sizeof time, "t = %6.2f s", frame.t);
+  std::snprintf(spin_text, sizeof spin_text, "spin n = %+6.2f rad/s  %s", spin,
                 spin > 0.05 ? "(counter-clockwise)" : spin < -0.05 ? "(clockwise)" : "");
-  font_.text(out, x, y + (settings_.title.empty() ? 0 : line * 3 / 2), text, {30, 30, 30, 255});
+  const std::string one_line = std::string(time) + "    " + spin_text;
+  const int at = y + (settings_.title.empty() ? 0 : line * 3 / 2);
+  if (x + font_.width(one_line) <= settings_.width - x) {
+    font_.text(out, x, at, one_line, {30, 30, 30, 255});
+  } else {  // a narrow frame: time and spin on a line each
+    font_.text(out, x, at, time, {30, 30, 30, 255});
+    font_.text(out, x, at + line * 5 / 4, spin_text, {30, 30, 30, 255});
+  }
   drawSpinInset(out, font_, frame.history, settings_.duration, settings_.spin_range);
 }
 

@@ -62,3 +62,67 @@ TEST(Snapshots, ReadoutsAndInsetMatchTheGoldensToOneStep) {
   }
   EXPECT_GE(checked, 4);
 }
+
+// The read-outs and the inset never cover the body (issue 11): for each shipped scene, in every
+// view, a quarter of the way through the run, the pixels the read-outs change
+// (a still against its --no-readouts twin, beyond 2 levels) hold no body pixel of the twin (a
+// saturated red or blue point: red > 120 with green, blue < 80; blue > 120 with red < 80 and
+// green < 120). Zero such pixels are allowed: the overlay is drawn after the scene, so any is a
+// point hidden from the viewer.
+TEST(Overlay, ReadoutsNeverCoverTheBody) {
+  struct Scene {
+    const char* name;
+    double duration;
+  };
+  for (const Scene scene : {Scene{"rattleback", 8}, Scene{"kane-levinson", 8}, Scene{"seed-reversed", 10}}) {
+    for (const char* view : {"oblique", "above", "front", "side", "follow"}) {
+      for (double fraction : {0.25}) {
+        const std::string base = std::string("still scenes/") + scene.name + ".yaml --size 480x270 --view " +
+                                 view + " --t " + std::to_string(fraction * scene.duration);
+        const fs::path with = scratch("with.png"), bare = scratch("bare.png");
+        ASSERT_EQ(rattleback(base + " -o " + with.string()), 0) << base;
+        ASSERT_EQ(rattleback(base + " --no-readouts -o " + bare.string()), 0) << base;
+        render::Image a, b;
+        ASSERT_TRUE(render::readPng(with.string(), a).ok());
+        ASSERT_TRUE(render::readPng(bare.string(), b).ok());
+        ASSERT_EQ(a.rgba.size(), b.rgba.size());
+        long covered = 0;
+        for (std::size_t p = 0; p < a.rgba.size(); p += 4) {
+          bool drawn = false;
+          for (int c = 0; c < 3; ++c) drawn = drawn || std::abs(a.rgba[p + c] - b.rgba[p + c]) > 2;
+          const int r = b.rgba[p], g = b.rgba[p + 1], bl = b.rgba[p + 2];
+          const bool body = (r > 120 && g < 80 && bl < 80) || (bl > 120 && r < 80 && g < 120);
+          covered += drawn && body;
+        }
+        EXPECT_EQ(covered, 0) << scene.name << ", " << view << ", t = " << fraction * scene.duration
+                              << ": " << covered << " body pixels under the read-outs";
+      }
+    }
+  }
+}
+
+// The read-outs fit the frame whatever its shape: in a portrait still the time/spin line (about
+// 50 characters) ran off the right edge at a 36th of the height. No pixel the read-outs change
+// lies on the outermost two columns or rows, for landscape, portrait and tall frames.
+TEST(Overlay, ReadoutsFitPortraitAndLandscapeFrames) {
+  for (const char* size : {"640x360", "360x640", "200x600"}) {
+    const std::string base = std::string("still scenes/rattleback.yaml --t 2 --size ") + size;
+    const fs::path with = scratch("with.png"), bare = scratch("bare.png");
+    ASSERT_EQ(rattleback(base + " -o " + with.string()), 0) << base;
+    ASSERT_EQ(rattleback(base + " --no-readouts -o " + bare.string()), 0) << base;
+    render::Image a, b;
+    ASSERT_TRUE(render::readPng(with.string(), a).ok());
+    ASSERT_TRUE(render::readPng(bare.string(), b).ok());
+    long on_edge = 0, drawn = 0;
+    for (int y = 0; y < a.height; ++y)
+      for (int x = 0; x < a.width; ++x) {
+        const std::size_t p = (static_cast<std::size_t>(y) * a.width + x) * 4;
+        bool changed = false;
+        for (int c = 0; c < 3; ++c) changed = changed || std::abs(a.rgba[p + c] - b.rgba[p + c]) > 2;
+        drawn += changed;
+        on_edge += changed && (x < 2 || y < 2 || x >= a.width - 2 || y >= a.height - 2);
+      }
+    EXPECT_GT(drawn, 100) << size << ": no read-outs drawn";
+    EXPECT_EQ(on_edge, 0) << size << ": read-outs reach the edge of the frame";
+  }
+}
