@@ -35,6 +35,25 @@ class BoundedQueue {
     return item;
   }
 
+  /// An item if one is waiting, without waiting.
+  std::optional<T> tryPop() {
+    std::lock_guard lock(mutex_);
+    if (items_.empty()) return std::nullopt;
+    T item = std::move(items_.front());
+    items_.pop_front();
+    not_full_.notify_one();
+    return item;
+  }
+
+  /// Adds the item if there is room, without waiting; false (the item dropped) otherwise.
+  bool tryPush(T item) {
+    std::lock_guard lock(mutex_);
+    if (closed_ || items_.size() >= capacity_) return false;
+    items_.push_back(std::move(item));
+    not_empty_.notify_one();
+    return true;
+  }
+
   void close() {
     std::lock_guard lock(mutex_);
     closed_ = true;

@@ -61,6 +61,16 @@ std::string describeSpin(double spin) {
 struct Output {
   std::unique_ptr<render::VideoEncoder> encoder;
   BoundedQueue<render::Image> images{4};
+  // Frame buffers the encoder is done with, handed back for the next frames: after the first
+  // few frames nothing on the render → encode path allocates (a 720p frame is 3.7 MB, and
+  // fresh pages cost page faults and zeroing each time).
+  BoundedQueue<render::Image> spare{8};
+
+  /// A frame buffer to draw into: a spare one, or a new one while the pool fills.
+  render::Image buffer() {
+    if (auto image = spare.tryPop()) return std::move(*image);
+    return {};
+  }
   std::optional<std::string> error;
   std::jthread thread;
 
@@ -74,6 +84,7 @@ struct Output {
             error = added.error().text();
             break;
           }
+          spare.tryPush(std::move(*image));
         }
       } catch (const std::exception& e) {
         error = std::string("encoding failed: ") + e.what();
@@ -93,9 +104,8 @@ struct Output {
   }
 };
 
-// Places a and b side by side.
-render::Image sideBySide(const render::Image& a, const render::Image& b) {
-  render::Image out;
+// Places a and b side by side, into `out` (its buffer reused).
+void sideBySide(const render::Image& a, const render::Image& b, render::Image& out) {
   out.width = a.width + b.width;
   out.height = a.height;
   out.rgba.resize(static_cast<std::size_t>(out.width) * out.height * 4);
@@ -104,7 +114,6 @@ render::Image sideBySide(const render::Image& a, const render::Image& b) {
     std::copy_n(&a.rgba[static_cast<std::size_t>(y) * a.width * 4], a.width * 4, row);
     std::copy_n(&b.rgba[static_cast<std::size_t>(y) * b.width * 4], b.width * 4, row + a.width * 4);
   }
-  return out;
 }
 
 // Names for --both: the spin in the direction the linearised theory prefers is "preferred",
@@ -242,11 +251,16 @@ int renderCommand(const RenderArgs& args) {
       render::FrameInput frame = frameOf(sample);
       frame.framing = framings[i];
       frame.history = histories[i];
+      images[i] = outputs[i]->buffer();
       renderers[i]->draw(frame, images[i]);
     }
+    if (running && args.both) {
+      render::Image both = outputs[2]->buffer();
+      sideBySide(images[0], images[1], both);
+      running = outputs[2]->images.push(std::move(both));
+    }
     for (std::size_t i = 0; running && i < runs.size(); ++i)
-      running = outputs[i]->images.push(images[i]);
-    if (running && args.both) running = outputs[2]->images.push(sideBySide(images[0], images[1]));
+      running = outputs[i]->images.push(std::move(images[i]));
     if (running) progress.update(++frames);
   }
   // The runs go on to the scene's end (frames stop at the last whole frame time), so that the
