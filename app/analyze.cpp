@@ -10,6 +10,7 @@
 #include "app/scene_args.hpp"
 #include "sim/analysis.hpp"
 #include "sim/stability.hpp"
+#include "sim/switching.hpp"
 
 namespace app {
 namespace {
@@ -158,6 +159,16 @@ void printText(const std::string& scene, const sim::Model& model) {
               m.misalignment_deg);
   if (model.contact.model == sim::ContactModel::Rolling)
     std::printf("contact          rolling: no contact spring, so no step limit from the floor\n");
+  else if (model.contact.model == sim::ContactModel::Auto && sim::isAdaptive(model.integrator))
+    std::printf("contact          auto: rolls while the floor can give the force rolling needs, "
+                "else slides (smooth: stiffest mode %.4g rad/s, damping ratio %.3g); the "
+                "adaptive integrator chooses its steps\n",
+                stability.omega, stability.zeta);
+  else if (model.contact.model == sim::ContactModel::Auto)
+    std::printf("contact          auto: rolls while the floor can give the force rolling needs, "
+                "else slides (smooth: stiffest mode %.4g rad/s, damping ratio %.3g) in steps of "
+                "%.3g s within each step\n",
+                stability.omega, stability.zeta, std::min(sim::smoothStep(model), model.dt));
   else if (sim::isAdaptive(model.integrator))
     std::printf("contact          stiffest mode at rest %.4g rad/s (damping ratio %.3g); the "
                 "adaptive integrator chooses its steps\n",
