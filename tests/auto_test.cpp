@@ -31,32 +31,10 @@ initial: {spin: -5.0, tilt: [0.5, 0.5]}
 simulation: {integrator: rk4, dt: 5.0e-4, duration: 4.0}
 )";
 
-struct Recorded {
-  sim::RunSummary summary;
-  std::vector<sim::Telemetry> samples;
-};
-
-Recorded runOf(const sim::Model& model, double rate = 1000) {
-  Recorded out;
-  sim::Rollout rollout(model);
-  out.summary = sim::sampleRun(rollout, rate, [&](const sim::Telemetry& t) { out.samples.push_back(t); });
-  return out;
-}
-
 sim::SceneSpec hardCase(const char* name) {
   auto loaded = scene::loadFile(std::string(RATTLEBACK_SOURCE_DIR) + "/bench/hard/" + name);
   EXPECT_TRUE(loaded.ok()) << loaded.error().text();
   return loaded.value().spec;
-}
-
-// Largest rise of the energy above its lowest value so far, J.
-double largestRise(const std::vector<sim::Telemetry>& samples) {
-  double lowest = samples.front().energy, rise = 0;
-  for (const sim::Telemetry& t : samples) {
-    rise = std::max(rise, t.energy - lowest);
-    lowest = std::min(lowest, t.energy);
-  }
-  return rise;
 }
 
 }  // namespace
@@ -66,9 +44,9 @@ double largestRise(const std::vector<sim::Telemetry>& samples) {
 // the CM sits δ = M g/k = 29 µm lower) and the same reversal, in the same number of steps.
 TEST(Auto, WhereRollingHoldsItIsTheRollingRun) {
   sim::SceneSpec spec = parse(kDefaultAuto);
-  const Recorded automatic = runOf(build(spec), 100);
+  const Recorded automatic = record(build(spec), 0.01);
   spec.contact.model = "rolling";
-  const Recorded rolling = runOf(build(spec), 100);
+  const Recorded rolling = record(build(spec), 0.01);
   EXPECT_EQ(automatic.summary.switches, 0);
   ASSERT_EQ(automatic.samples.size(), rolling.samples.size());
   for (std::size_t i = 0; i < rolling.samples.size(); ++i) {
@@ -175,7 +153,7 @@ TEST(Auto, TheSwitchTimeIsFoundInsideTheStep) {
 TEST(Auto, HardCasesRunToTheEndWithoutGainingEnergy) {
   for (const char* name : {"spin-45.yaml", "drop.yaml", "seed-topple.yaml"}) {
     const sim::SceneSpec spec = hardCase(name);
-    const Recorded run = runOf(build(spec));
+    const Recorded run = record(build(spec));
     EXPECT_FALSE(run.summary.divergence) << name << ": " << *run.summary.divergence;
     EXPECT_NEAR(run.samples.back().t, spec.simulation.duration, 1e-12) << name;
     EXPECT_GE(run.summary.switches, 1) << name;

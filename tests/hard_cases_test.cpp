@@ -13,7 +13,10 @@
 namespace {
 
 using testing_support::build;
+using testing_support::largestRise;
 using testing_support::parse;
+using testing_support::record;
+using testing_support::Recorded;
 
 /// The default body (scenes/rattleback.yaml) on the `smooth` contact: k 2e4 N/m, c 4 N s/m.
 const char* kDefaultSmooth = R"(
@@ -29,29 +32,6 @@ initial: {spin: -5.0, tilt: [0.5, 0.5]}
 simulation: {integrator: symplectic, dt: 2.0e-5, duration: 3.0}
 video: {fps: 25}
 )";
-
-struct Recorded {
-  sim::RunSummary summary;
-  std::vector<sim::Telemetry> samples;
-};
-
-Recorded record(const sim::Model& model, double sample_period = 1e-3) {
-  Recorded out;
-  sim::Rollout rollout(model);
-  out.summary = sim::sampleRun(rollout, 1 / sample_period,
-                               [&](const sim::Telemetry& t) { out.samples.push_back(t); });
-  return out;
-}
-
-/// Largest rise of the total energy above its value at any earlier sample, J.
-double largestRise(const std::vector<sim::Telemetry>& samples) {
-  double lowest = samples.front().energy, rise = 0;
-  for (const sim::Telemetry& t : samples) {
-    rise = std::max(rise, t.energy - lowest);
-    lowest = std::min(lowest, t.energy);
-  }
-  return rise;
-}
 
 
 /// The reference reversal time of the default body: the rolling model (rk4, 0.5 ms).

@@ -22,6 +22,28 @@ using namespace render_support;
 
 namespace {
 
+// A still (`rattleback ARGS`) and its --no-readouts twin, and which pixels the read-outs
+// changed (beyond 2 levels in a channel), one flag per pixel. False (a test failure) when
+// either could not be made.
+struct Twins {
+  render::Image with, bare;
+  std::vector<bool> drawn;
+};
+bool twins(const std::string& args, Twins& out) {
+  const fs::path with = scratch("with.png"), bare = scratch("bare.png");
+  EXPECT_EQ(rattleback(args + " -o " + with.string()), 0) << args;
+  EXPECT_EQ(rattleback(args + " --no-readouts -o " + bare.string()), 0) << args;
+  if (!render::readPng(with.string(), out.with).ok() || !render::readPng(bare.string(), out.bare).ok() ||
+      out.with.rgba.size() != out.bare.rgba.size()) {
+    ADD_FAILURE() << "unreadable stills for " << args;
+    return false;
+  }
+  out.drawn.assign(out.with.rgba.size() / 4, false);
+  for (std::size_t p = 0; p < out.with.rgba.size(); p += 4)
+    for (int c = 0; c < 3; ++c)
+      if (std::abs(out.with.rgba[p + c] - out.bare.rgba[p + c]) > 2) out.drawn[p / 4] = true;
+  return true;
+}
 
 }  // namespace
 
@@ -77,22 +99,15 @@ TEST(Overlay, ReadoutsNeverCoverTheBody) {
   for (const Scene scene : {Scene{"rattleback", 8}, Scene{"kane-levinson", 8}, Scene{"seed-reversed", 10}}) {
     for (const char* view : {"oblique", "above", "front", "side", "follow"}) {
       for (double fraction : {0.25}) {
-        const std::string base = std::string("still scenes/") + scene.name + ".yaml --size 480x270 --view " +
-                                 view + " --t " + std::to_string(fraction * scene.duration);
-        const fs::path with = scratch("with.png"), bare = scratch("bare.png");
-        ASSERT_EQ(rattleback(base + " -o " + with.string()), 0) << base;
-        ASSERT_EQ(rattleback(base + " --no-readouts -o " + bare.string()), 0) << base;
-        render::Image a, b;
-        ASSERT_TRUE(render::readPng(with.string(), a).ok());
-        ASSERT_TRUE(render::readPng(bare.string(), b).ok());
-        ASSERT_EQ(a.rgba.size(), b.rgba.size());
+        Twins t;
+        ASSERT_TRUE(twins(std::string("still scenes/") + scene.name + ".yaml --size 480x270 --view " +
+                              view + " --t " + std::to_string(fraction * scene.duration),
+                          t));
         long covered = 0;
-        for (std::size_t p = 0; p < a.rgba.size(); p += 4) {
-          bool drawn = false;
-          for (int c = 0; c < 3; ++c) drawn = drawn || std::abs(a.rgba[p + c] - b.rgba[p + c]) > 2;
-          const int r = b.rgba[p], g = b.rgba[p + 1], bl = b.rgba[p + 2];
+        for (std::size_t i = 0; i < t.drawn.size(); ++i) {
+          const int r = t.bare.rgba[4 * i], g = t.bare.rgba[4 * i + 1], bl = t.bare.rgba[4 * i + 2];
           const bool body = (r > 120 && g < 80 && bl < 80) || (bl > 120 && r < 80 && g < 120);
-          covered += drawn && body;
+          covered += t.drawn[i] && body;
         }
         EXPECT_EQ(covered, 0) << scene.name << ", " << view << ", t = " << fraction * scene.duration
                               << ": " << covered << " body pixels under the read-outs";
@@ -106,21 +121,15 @@ TEST(Overlay, ReadoutsNeverCoverTheBody) {
 // lies on the outermost two columns or rows, for landscape, portrait and tall frames.
 TEST(Overlay, ReadoutsFitPortraitAndLandscapeFrames) {
   for (const char* size : {"640x360", "360x640", "200x600"}) {
-    const std::string base = std::string("still scenes/rattleback.yaml --t 2 --size ") + size;
-    const fs::path with = scratch("with.png"), bare = scratch("bare.png");
-    ASSERT_EQ(rattleback(base + " -o " + with.string()), 0) << base;
-    ASSERT_EQ(rattleback(base + " --no-readouts -o " + bare.string()), 0) << base;
-    render::Image a, b;
-    ASSERT_TRUE(render::readPng(with.string(), a).ok());
-    ASSERT_TRUE(render::readPng(bare.string(), b).ok());
+    Twins t;
+    ASSERT_TRUE(twins(std::string("still scenes/rattleback.yaml --t 2 --size ") + size, t));
+    const int width = t.with.width, height = t.with.height;
     long on_edge = 0, drawn = 0;
-    for (int y = 0; y < a.height; ++y)
-      for (int x = 0; x < a.width; ++x) {
-        const std::size_t p = (static_cast<std::size_t>(y) * a.width + x) * 4;
-        bool changed = false;
-        for (int c = 0; c < 3; ++c) changed = changed || std::abs(a.rgba[p + c] - b.rgba[p + c]) > 2;
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        const bool changed = t.drawn[static_cast<std::size_t>(y) * width + x];
         drawn += changed;
-        on_edge += changed && (x < 2 || y < 2 || x >= a.width - 2 || y >= a.height - 2);
+        on_edge += changed && (x < 2 || y < 2 || x >= width - 2 || y >= height - 2);
       }
     EXPECT_GT(drawn, 100) << size << ": no read-outs drawn";
     EXPECT_EQ(on_edge, 0) << size << ": read-outs reach the edge of the frame";

@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include "scene/loader.hpp"
 #include "sim/compile.hpp"
@@ -70,6 +72,31 @@ template <typename Each>
 sim::RunSummary runFrom(const sim::Model& model, const sim::State& start, double period, Each each) {
   sim::Rollout rollout(model, start);
   return sim::sampleRun(rollout, 1 / period, each);
+}
+
+/// A run's summary and its samples.
+struct Recorded {
+  sim::RunSummary summary;
+  std::vector<sim::Telemetry> samples;
+};
+
+/// Runs `model` from its initial state to its end, sampling every `sample_period` seconds.
+inline Recorded record(const sim::Model& model, double sample_period = 1e-3) {
+  Recorded out;
+  sim::Rollout rollout(model);
+  out.summary = sim::sampleRun(rollout, 1 / sample_period,
+                               [&](const sim::Telemetry& t) { out.samples.push_back(t); });
+  return out;
+}
+
+/// Largest rise of the total energy above its value at any earlier sample, J.
+inline double largestRise(const std::vector<sim::Telemetry>& samples) {
+  double lowest = samples.front().energy, rise = 0;
+  for (const sim::Telemetry& t : samples) {
+    rise = std::max(rise, t.energy - lowest);
+    lowest = std::min(lowest, t.energy);
+  }
+  return rise;
 }
 
 }  // namespace testing_support
