@@ -351,14 +351,23 @@ TEST(Video, AnInterruptKeepsTheOldFileAndLeavesNoTemporary) {
     const fs::path video = scratch("kept.mp4");
     std::ofstream(video) << "precious";
     const std::string command = "cd " + kSource.string() + " && exec " + RATTLEBACK_BIN +
-                                " render scenes/rattleback.yaml --size 320x180 -q -o " +
+                                " render scenes/rattleback.yaml --size 640x360 --duration 60 -q -o " +
                                 video.string() + " 2>/dev/null";
     const pid_t child = fork();
     if (child == 0) {
       execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
       _exit(127);
     }
-    usleep(700000);  // well into its 200 frames (about 8 s of work)
+    // Signal once the temporary file exists (the encoder is writing), with 1500 frames (tens of
+    // seconds of work) still ahead, so the signal lands mid-render on a fast machine too.
+    const auto hasTemporary = [&] {
+      for (const auto& entry : fs::directory_iterator(video.parent_path()))
+        if (entry.path().filename().string().find(".part") != std::string::npos) return true;
+      return false;
+    };
+    for (int tries = 0; tries < 1000 && !hasTemporary(); ++tries) usleep(10000);
+    ASSERT_TRUE(hasTemporary()) << "no temporary file appeared within 10 s";
+    usleep(100000);
     kill(child, signal);
     int status = 0;
     waitpid(child, &status, 0);
