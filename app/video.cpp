@@ -60,6 +60,12 @@ std::string describeSpin(double spin) {
 // queue, so that the producer's next push fails and rendering stops.
 struct Output {
   std::unique_ptr<render::VideoEncoder> encoder;
+  // Known to the signal handler, which removes it on a second Ctrl-C (it exits at once).
+  std::string temporary;
+  ~Output() {
+    abort();
+    if (!temporary.empty()) unregisterTemporary(temporary);
+  }
   BoundedQueue<render::Image> images{4};
   // Frame buffers the encoder is done with, handed back for the next frames: after the first
   // few frames nothing on the render → encode path allocates (a 720p frame is 3.7 MB, and
@@ -211,6 +217,8 @@ int renderCommand(const RenderArgs& args) {
     }
     outputs.push_back(std::make_unique<Output>());
     outputs.back()->encoder = std::move(opened).value();
+    outputs.back()->temporary = outputs.back()->encoder->temporaryPath();
+    registerTemporary(outputs.back()->temporary);
   }
 
   std::vector<std::unique_ptr<render::Renderer>> renderers;

@@ -90,6 +90,9 @@ struct VideoEncoder::State {
 
 VideoEncoder::VideoEncoder() : state_(std::make_unique<State>()) {}
 VideoEncoder::~VideoEncoder() = default;
+
+const std::string& VideoEncoder::temporaryPath() const { return state_->temp; }
+
 long long VideoEncoder::frames() const { return state_->count; }
 
 rb::Result<std::unique_ptr<VideoEncoder>> VideoEncoder::open(

@@ -34,6 +34,8 @@ class VideoEncoder {
   /// was opened with, or to `final_path` (in the same folder) when given.
   rb::Status finish(const std::string& final_path = "");
   long long frames() const;
+  /// The file being written until finish() renames it into place.
+  const std::string& temporaryPath() const;
 
  private:
   VideoEncoder();

@@ -345,10 +345,14 @@ TEST(Compare, SameAndDifferentImages) {
 }
 
 // Ctrl-C (SIGINT) or SIGTERM in the middle of a render: exit 130 / 143, the temporary file is
-// gone, and an existing video of the same name is kept.
+// gone, and an existing video of the same name is kept; also with a second Ctrl-C right after
+// the first (as `timeout -s INT` sends, to the process and then its group), which ends the
+// process at once.
 TEST(Video, AnInterruptKeepsTheOldFileAndLeavesNoTemporary) {
-  for (int signal : {SIGINT, SIGTERM}) {
+  for (auto [signal, twice] : {std::pair{SIGINT, false}, std::pair{SIGTERM, false},
+                               std::pair{SIGINT, true}}) {
     const fs::path video = scratch("kept.mp4");
+    for (const auto& entry : fs::directory_iterator(video.parent_path())) fs::remove(entry.path());
     std::ofstream(video) << "precious";
     const std::string command = "cd " + kSource.string() + " && exec " + RATTLEBACK_BIN +
                                 " render scenes/rattleback.yaml --size 640x360 --duration 60 -q -o " +
@@ -369,6 +373,7 @@ TEST(Video, AnInterruptKeepsTheOldFileAndLeavesNoTemporary) {
     ASSERT_TRUE(hasTemporary()) << "no temporary file appeared within 10 s";
     usleep(100000);
     kill(child, signal);
+    if (twice) kill(child, signal);
     int status = 0;
     waitpid(child, &status, 0);
     ASSERT_TRUE(WIFEXITED(status)) << "killed outright by signal " << signal;
