@@ -1,5 +1,6 @@
 #include "scene/loader.hpp"
 #include "scene/tree.hpp"
+#include "sim/model.hpp"
 
 #include <yaml-cpp/yaml.h>
 
@@ -213,7 +214,10 @@ void readContact(MapReader& root, sim::ContactSpec& c) {
            "air_drag"},
           [&](MapReader& r) {
     r.read("model", c.model);
-    if (c.model != "rolling") r.require("stiffness");
+    // A misspelt model is reported as such (by the check after loading), not as a missing
+    // stiffness.
+    const auto model = rb::parseName<sim::ContactModel>(c.model);
+    if (model && *model != sim::ContactModel::Rolling) r.require("stiffness");
     r.read("stiffness", c.stiffness);
     r.read("damping", c.damping);
     r.read("friction", c.friction);

@@ -63,6 +63,9 @@ const BadCase kBadCases[] = {
     {"damping: 20", "damping: -.inf", "8: contact.damping must be ≥ 0"},
     {"friction_law: coulomb", "friction_law: sticky", "8: contact.friction_law must be"},
     {"model: points", "model: magic", "8: contact.model must be points, smooth, rolling or auto"},
+    // A misspelt model without a stiffness: the model is what is wrong, not a missing stiffness.
+    {"model: points, stiffness: 2.0e4,", "model: rollin,",
+     "8: contact.model must be points, smooth, rolling or auto, not 'rollin'"},
     {"shape: paraboloid", "shape: cube", "3: body.shape must be paraboloid or ellipsoid"},
     {"a: 4,", "a: 0,", "4: body.paraboloid.a must be > 0"},
     {"top: 2}", "top: -5}", "4: body.paraboloid.top must be above the apex"},
