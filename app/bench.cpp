@@ -244,7 +244,7 @@ int benchCommand(const BenchArgs& args) {
   // Open the outputs before the long work, so an unwritable path fails at once.
   const std::string csv_path = args.csv.empty() ? "out/bench.csv" : args.csv;
   const std::string png_path = args.plot.empty() ? "out/bench.png" : args.plot;
-  if (auto made = makeParentFolder(png_path); !made) {
+  if (auto made = checkPlotFile(png_path); !made) {
     std::cerr << made.error().text() << "\n";
     return kBadInput;
   }

@@ -103,7 +103,7 @@ Cli::Cli() {
   bench->add_option("--duration", b.duration, "Simulated seconds per run (default 3)");
   bench->add_option("--repeats", b.repeats, "Timed runs per step (default 3)");
   bench->add_option("--rungs", b.rungs, "Steps in each ladder of halvings (default 5)");
-  bench->add_option("--models", b.models, "points smooth rolling (default: all that apply)")
+  bench->add_option("--models", b.models, "points smooth rolling auto (default: all that apply)")
       ->delimiter(',');
   bench->add_option("--integrators", b.integrators,
                     "euler symplectic rk4 dopri5 (default all; dopri5 runs the tolerance ladder)")

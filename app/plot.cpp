@@ -1,4 +1,5 @@
 #include "app/plot.hpp"
+#include "app/output.hpp"
 
 #include <spawn.h>
 #include <sys/wait.h>
@@ -70,6 +71,21 @@ rb::Status checkPlotFolder(const std::string& dir) {
   const fs::path probe = fs::path(dir) / (".rattleback-probe-" + std::to_string(getpid()));
   std::ofstream test(probe);
   if (!test) return rb::Status::fail(dir + ": --plot cannot write into this folder: " + std::strerror(errno));
+  test.close();
+  fs::remove(probe, ec);
+  return {};
+}
+
+rb::Status checkPlotFile(const std::string& png) {
+  std::error_code ec;
+  if (fs::is_directory(png, ec)) return rb::Status::fail(png + ": --plot is a folder, not a file");
+  if (auto made = makeParentFolder(png); !made) return made;
+  const fs::path dir = fs::absolute(png).parent_path();
+  const fs::path probe = dir / (".rattleback-probe-" + std::to_string(getpid()));
+  std::ofstream test(probe);
+  if (!test)
+    return rb::Status::fail(png + ": --plot cannot write into " + dir.string() + ": " +
+                            std::strerror(errno) + " (give --plot a path in a folder you can write)");
   test.close();
   fs::remove(probe, ec);
   return {};

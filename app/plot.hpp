@@ -31,6 +31,9 @@ struct Panel {
 /// Makes `dir` when missing and checks that a file can be written into it (before a run whose
 /// plots go there); an error line with the system's reason otherwise.
 rb::Status checkPlotFolder(const std::string& dir);
+/// The same for one PNG: its folder made when missing and a file written into it and removed,
+/// so that an unwritable --plot fails before the run, not after it.
+rb::Status checkPlotFile(const std::string& png);
 
 /// Draws the panels stacked top to bottom into one PNG of width × height pixels.
 /// Returns one error line naming `png` on failure; an existing `png` is then left as it was.

@@ -36,7 +36,10 @@ std::string explainParseError(const CLI::App& cli, int argc, char** argv, const 
   std::string line = "'" + word + "' is not a command";
   if (!nearest.empty() && best <= std::max<std::size_t>(2, word.size() / 3))
     line += "; did you mean '" + nearest + "'?";
-  return line + " (commands: simulate, analyze, render, still, compare, bench, report; see --help)";
+  std::string names;
+  for (const CLI::App* sub : cli.get_subcommands([](const CLI::App*) { return true; }))
+    names += (names.empty() ? "" : ", ") + sub->get_name();
+  return line + " (commands: " + names + "; see --help)";
 }
 
 }  // namespace app

@@ -423,7 +423,7 @@ int sweepCommand(const SweepArgs& args) {
   }
   if (shard && args.output.empty()) output = shardPath(output, *shard);
   if (!args.plot.empty()) {
-    if (auto made = makeParentFolder(args.plot); !made) {
+    if (auto made = checkPlotFile(args.plot); !made) {
       std::cerr << made.error().text() << "\n";
       return kBadInput;
     }
@@ -600,6 +600,12 @@ int sweepMergeCommand(const SweepMergeArgs& args) {
   if (args.shards.empty()) {
     std::cerr << "sweep merge: give the shard tables to merge (OUT.csv SHARD.csv…)\n";
     return kBadInput;
+  }
+  if (!args.plot.empty()) {
+    if (auto made = checkPlotFile(args.plot); !made) {
+      std::cerr << made.error().text() << "\n";
+      return kBadInput;
+    }
   }
   std::optional<nlohmann::json> first;
   std::string head;

@@ -404,6 +404,23 @@ TEST(Cli, OutputFoldersAreMadeOrRefusedInOneLine) {
                                  nested.string());
   EXPECT_EQ(made.status, 0) << made.err;
   EXPECT_TRUE(fs::exists(nested));
+
+  // A --plot that cannot be written is refused before the run, for bench, sweep and merge
+  // alike, and nothing else is written (it used to fail after the whole run, table written).
+  const fs::path table = scratchDir() / "unplotted.csv";
+  fs::remove(table);
+  for (const std::string& command :
+       {"bench " + scene("rattleback") + " --duration 0.2 -o " + table.string(),
+        "sweep " + std::string(RATTLEBACK_SOURCE_DIR) + "/sweeps/spin-drag.yaml -o " + table.string(),
+        "sweep merge " + table.string() + " " + table.string()}) {
+    const Result refused = rattleback(command + " --plot /proc/unwritable.png");
+    EXPECT_EQ(refused.status, 2) << command << "\n" << refused.err;
+    EXPECT_EQ(lines(refused.err), 1) << refused.err;
+    EXPECT_NE(refused.err.find("/proc/unwritable.png: --plot cannot write into /proc"),
+              std::string::npos)
+        << refused.err;
+    EXPECT_FALSE(fs::exists(table)) << command;
+  }
 }
 
 namespace {
