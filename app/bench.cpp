@@ -426,9 +426,13 @@ int benchCommand(const BenchArgs& args) {
     if (!lines.count(key)) order.push_back(key);
     auto& s = lines[key];
     // Colour by integrator, marker by contact model, dashes by scene.
-    const std::string color = r.integrator == "euler" ? "#d62728"
-                              : r.integrator == "symplectic" ? "#1f77b4" : "#2ca02c";
-    const int marker = r.model == "points" ? 7 : r.model == "smooth" ? 5 : 9;
+    // (Each integrator its own colour and each model its own marker: rk4 and dopri5 shared
+    // green, rolling and auto a triangle, so their legend entries could not be told apart.)
+    const std::string color = r.integrator == "euler"        ? "#d62728"
+                              : r.integrator == "symplectic" ? "#1f77b4"
+                              : r.integrator == "rk4"        ? "#2ca02c"
+                                                             : "#9467bd";
+    const int marker = r.model == "points" ? 7 : r.model == "smooth" ? 5 : r.model == "rolling" ? 9 : 13;
     const int dash = 1 + static_cast<int>(std::find_if(loaded.begin(), loaded.end(), [&](const scene::Loaded& l) {
                        return std::filesystem::path(l.file).filename().string() == r.scene;
                      }) - loaded.begin());

@@ -17,7 +17,7 @@ struct Series {
   std::vector<std::pair<double, double>> points;
   bool right_axis = false;  ///< plotted against the panel's second y axis
   std::string color;        ///< "#rrggbb"; empty: gnuplot's next colour
-  int point_type = 7;       ///< gnuplot point type (7 disc, 5 square, 9 triangle)
+  int point_type = 7;       ///< gnuplot point type (7 disc, 5 square, 9 triangle, 13 diamond)
   int dash = 1;             ///< gnuplot dash type (1 solid)
 };
 
