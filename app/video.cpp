@@ -33,8 +33,19 @@ namespace fs = std::filesystem;
 constexpr const char* kPresets[] = {"ultrafast", "superfast", "veryfast", "faster", "fast",
                                     "medium",    "slow",      "slower",   "veryslow", "placebo"};
 
+std::string stem(const std::string& path) { return fs::path(path).stem().string(); }
+
+std::string describeSpin(double spin) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%+g rad/s, %s", spin,
+                spin > 0 ? "counter-clockwise" : spin < 0 ? "clockwise" : "no spin");
+  return text;
+}
+
+// The title of a run's frames, the same in its video and its stills: the scene and the spin.
 render::RenderSettings settingsOf(const VideoPlan& plan, double duration, double spin,
-                                  const std::string& title, render::Backend backend) {
+                                  const std::string& scene, render::Backend backend) {
+  const std::string title = stem(scene) + ": spun " + describeSpin(spin);
   render::RenderSettings s;
   s.backend = backend;
   s.width = plan.width;
@@ -44,15 +55,6 @@ render::RenderSettings settingsOf(const VideoPlan& plan, double duration, double
   s.duration = duration;
   s.spin_range = std::max(1.0, 1.1 * std::abs(spin));
   return s;
-}
-
-std::string stem(const std::string& path) { return fs::path(path).stem().string(); }
-
-std::string describeSpin(double spin) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%+g rad/s, %s", spin,
-                spin > 0 ? "counter-clockwise" : spin < 0 ? "clockwise" : "no spin");
-  return text;
 }
 
 // One output video fed by its own encoding thread. The thread stops when the queue closes or
@@ -231,8 +233,7 @@ int renderCommand(const RenderArgs& args) {
   for (const sim::Rollout& run : runs) {
     const double spin = run.model().initial.spin;
     auto created = render::Renderer::create(
-        settingsOf(plan, model.duration, spin, stem(args.scene) + ": spun " + describeSpin(spin),
-                   *backend),
+        settingsOf(plan, model.duration, spin, args.scene, *backend),
         points);
     if (!created) {
       std::cerr << "render: " << created.error().text() << "\n";
@@ -363,7 +364,7 @@ int stillCommand(const StillArgs& args) {
     return kBadInput;
   }
   render::RenderSettings settings =
-      settingsOf(plan, model.duration, model.initial.spin, stem(args.scene), *backend);
+      settingsOf(plan, model.duration, model.initial.spin, args.scene, *backend);
   settings.readouts = !args.no_readouts && !args.transparent;
   settings.transparent = args.transparent;
   if (args.transparent) settings.title.clear();
