@@ -1,5 +1,7 @@
 #include "app/scene_args.hpp"
+#include "app/video_plan.hpp"
 
+#include <cmath>
 #include <cstdio>
 
 namespace app {
@@ -32,7 +34,17 @@ rb::Result<LoadedScene> loadScene(const std::string& path, const Overrides& o) {
   set(scene.video.playback, o.playback, "video.playback", "--playback");
   set(scene.video.view, o.view, "video.view", "--view");
   set(scene.video.size, o.size, "video.size", "--size");
-  set(scene.video.fps, o.fps, "video.fps", "--fps");
+  if (o.fps) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%g", *o.fps);
+    if (*o.fps != std::floor(*o.fps))  // (NaN too)
+      return rb::Error{"", std::string("--fps: must be a whole number of frames per second "
+                                       "(24, 25, 30, 60 …), not ") + text};
+    if (*o.fps < 1 || *o.fps > kMaxFps)
+      return rb::Error{"", "--fps: must be within 1 … " + std::to_string(kMaxFps) + ", not " + text};
+    scene.video.fps = static_cast<int>(*o.fps);
+    scene.overrides["video.fps"] = "--fps";
+  }
   auto compiled = scene::loadModel(scene);
   if (!compiled) return compiled.error();
   return LoadedScene{std::move(scene), std::move(compiled).value()};

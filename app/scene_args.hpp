@@ -16,7 +16,7 @@ struct Overrides {
   std::optional<double> duration, dt, tolerance, playback, spin;
   std::optional<std::string> integrator, view;
   std::optional<std::array<int, 2>> size;
-  std::optional<int> fps;
+  std::optional<double> fps;  ///< checked to be whole: a scene's video.fps is an integer
 };
 
 /// A scene file as loaded (with the overrides applied) and its compiled run.

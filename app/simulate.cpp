@@ -187,7 +187,7 @@ int simulateCommand(const SimulateArgs& args) {
   const sim::Model& model = loaded->model;
   const double rate = args.rate.value_or(kDefaultRate);
   if (!(rate > 0) || !std::isfinite(rate) || rate > 1e7) {
-    std::cerr << "--rate: samples per simulated second must be within 0 … 1e7, not " << rate << "\n";
+    std::cerr << "--rate: samples per simulated second must be > 0 and at most 1e7, not " << rate << "\n";
     return kBadInput;
   }
   if (model.duration * rate > 1e8) {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace app {
 namespace {
@@ -14,11 +15,13 @@ rb::Result<VideoPlan> check(const scene::VideoSpec& v, double duration) {
     if (side < 16 || side > 8192)
       return rb::Error{"video.size", "sides must be within 16 … 8192 pixels, not " +
                                          std::to_string(side)};
-    if (side % 2)
-      return rb::Error{"video.size",
-                       "sides must be even (H.264 video in yuv420p, and stills by the same rule), "
-                       "not " + std::to_string(side) + ": try " + std::to_string(side + 1)};
   }
+  const auto [w, h] = std::pair{v.size[0], v.size[1]};
+  if (w % 2 || h % 2)  // both sides in one message, so one retry fixes both
+    return rb::Error{"video.size",
+                     "sides must be even (H.264 video in yuv420p, and stills by the same rule), "
+                     "not " + std::to_string(w) + "x" + std::to_string(h) + ": try " +
+                         std::to_string(w + w % 2) + "x" + std::to_string(h + h % 2)};
   const auto view = rb::parseName<render::View>(v.view);
   if (!view)
     return rb::Error{"video.view",

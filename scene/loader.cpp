@@ -340,8 +340,11 @@ rb::Result<Loaded> loadFile(const std::string& path) {
 }
 
 std::string describe(const Loaded& loaded, const rb::Error& error) {
-  if (auto it = loaded.overrides.find(error.key); it != loaded.overrides.end())
-    return printable(it->second + ": " + error.key + " " + error.message);
+  if (auto it = loaded.overrides.find(error.key); it != loaded.overrides.end()) {
+    // An option (--fps) is named alone, not with the key it sets; a sweep's line with it.
+    const bool option = it->second.rfind("--", 0) == 0;
+    return printable(it->second + ": " + (option ? "" : error.key + " ") + error.message);
+  }
   // The key's own line, else the nearest enclosing key that the file has.
   std::string key = error.key;
   while (!key.empty()) {

@@ -135,11 +135,11 @@ std::optional<rb::Error> checkSimulation(const SimulationSpec& sim) {
   if (isAdaptive(integrator) && has_dt)
     return rb::Error{"simulation.integrator",
                      std::string(rb::nameOf(integrator)) +
-                         " chooses its own steps: give simulation.tolerance instead of dt"};
+                         " chooses its own steps: give simulation.tolerance (or --tolerance) instead of dt"};
   if (!isAdaptive(integrator) && has_tolerance)
     return rb::Error{"simulation.integrator",
                      std::string(rb::nameOf(integrator)) +
-                         " takes a fixed step: give simulation.dt, or use dopri5 with the tolerance"};
+                         " takes a fixed step: give simulation.dt (or --dt), or use dopri5 with the tolerance"};
   if (auto e = needPositive("simulation.duration", sim.duration)) return e;
   if (has_dt && sim.duration / sim.dt > 1e11)
     return rb::Error{"simulation.dt", "makes more than 1e11 steps for the duration"};

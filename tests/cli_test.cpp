@@ -377,6 +377,41 @@ TEST(Cli, AMistypedCommandSuggestsTheNearest) {
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("did you mean 'simulate'"), std::string::npos) << r.err;
   EXPECT_EQ(lines(r.err), 1) << r.err;
+  // The list of commands names every command.
+  for (const char* command : {"simulate", "analyze", "render", "still", "compare", "bench",
+                              "sweep", "report"})
+    EXPECT_NE(r.err.find(command), std::string::npos) << command << ": " << r.err;
+}
+
+// Options people type wrong get one line that names the option (not the scene key it sets)
+// and, for an odd size, a size that works for both sides at once.
+TEST(Cli, OptionErrorsNameTheOptionAndTheWayOut) {
+  const std::string render = "render " + scene("rattleback") + " --duration 0.1 -q -o " +
+                             tempFile("x.mp4").string();
+  struct Case {
+    std::string options, message;
+  };
+  for (const Case& c : {Case{"--size 641x363", "--size: sides must be even"},
+                        Case{"--size 641x363", "not 641x363: try 642x364"},
+                        Case{"--fps 29.97", "--fps: must be a whole number of frames per second"},
+                        Case{"--fps 0", "--fps: must be within 1 … 240, not 0"},
+                        Case{"--fps 1e9", "--fps: must be within 1 … 240, not 1e+09"}}) {
+    const Result r = rattleback(render + " " + c.options);
+    EXPECT_EQ(r.status, 2) << c.options;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.options << ": " << r.err;
+    EXPECT_EQ(r.err.find("video."), std::string::npos) << c.options << ": " << r.err;
+  }
+  const Result rate = rattleback("simulate " + scene("rattleback") + " --rate 0 -q -o " +
+                                 tempFile("x.csv").string());
+  EXPECT_EQ(rate.status, 2);
+  EXPECT_NE(rate.err.find("must be > 0 and at most 1e7, not 0"), std::string::npos) << rate.err;
+  const Result adaptive = rattleback("simulate " + scene("rattleback") +
+                                     " --integrator dopri5 -q -o " + tempFile("x.csv").string());
+  EXPECT_EQ(adaptive.status, 2);
+  EXPECT_NE(adaptive.err.find("give simulation.tolerance (or --tolerance) instead of dt"),
+            std::string::npos)
+      << adaptive.err;
 }
 
 // Where the default out/ cannot be made (here a file called `out` is in the way), the command
