@@ -52,9 +52,12 @@ Camera fixedCamera(View view, const Framing& framing, float half_height, float a
   auto ortho = [&](const Eigen::Vector3f& direction, const Eigen::Vector3f& up, float across,
                    float upwards) {
     const float half_w = 1.1f * std::max(across, upwards * aspect);
-    c.eye = target + 4 * r * direction;
+    // Far enough back (20 r) that the floor runs to the bottom of the frame even when the scene
+    // is drawn shrunk into a band (narrow frames, renderer.cpp): nearer, the floor in front of
+    // the body would pass behind the eye.
+    c.eye = target + 20 * r * direction;
     c.view = lookAt(c.eye, target, up);
-    c.proj = orthographic(half_w, half_w / aspect, 0.1f * r, 10 * r);
+    c.proj = orthographic(half_w, half_w / aspect, 0.1f * r, 40 * r);
   };
   // Front and side: a floor point d behind the target shows d·sin e − z·cos e above it on the
   // screen (e the elevation, z the target's height); the floor is gone into the background

@@ -1,5 +1,6 @@
 #include "render/renderer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -163,7 +164,22 @@ void Renderer::drawPoints(const Camera& camera, const FrameInput& frame) {
   gl.glDrawArrays(GL_POINTS, 0, point_count_);
 }
 
+bool Renderer::readoutsShown() const {
+  // Below 180 pixels a side the text and the inset would cover the body (a 100×100 frame is
+  // almost all body): such frames carry none.
+  return std::min(settings_.width, settings_.height) >= kSmallestSideForReadouts &&
+         (settings_.readouts || !settings_.title.empty());
+}
+
+int Renderer::readoutBandHeight() const {
+  // As drawReadouts lays them out at most: the title's baseline at two lines, the read-outs
+  // 1½ lines below it on two lines, and half a line under the last for the descenders.
+  const int line = font_.lineHeight();
+  return line * 2 + line * 3 / 2 + line * 5 / 4 + line / 2;
+}
+
 void Renderer::drawReadouts(const FrameInput& frame, Image& out) {
+  if (!readoutsShown()) return;
   const int line = font_.lineHeight();
   const int x = line, y = line * 2;
   if (!settings_.title.empty()) font_.text(out, x, y, settings_.title, {30, 30, 30, 255});
@@ -193,8 +209,23 @@ void Renderer::draw(const FrameInput& frame, Image& out) {
   Eigen::Vector2f heading =
       frame.orientation.cast<float>().toRotationMatrix().col(1).head<2>();  // the long axis
   heading = heading.norm() > 1e-6f ? heading.normalized() : Eigen::Vector2f(0, 1);
-  const Camera camera = follow ? chaseCamera(middle, heading, radius_, aspect)
-                               : fixedCamera(settings_.view, frame.framing, half_extent_.z(), aspect);
+  Camera camera = follow ? chaseCamera(middle, heading, radius_, aspect)
+                         : fixedCamera(settings_.view, frame.framing, half_extent_.z(), aspect);
+  // In a frame narrower than 3:2 the body reaches the corners where the title and read-outs
+  // (top left) and the inset (bottom right) go; seen from above it spans the height. The scene
+  // is drawn scaled into the band between them, so that they never cover it.
+  // (The same whether or not this frame draws them, so that a frame and its --no-readouts or
+  // --transparent twin show the body alike.)
+  if (aspect < 1.5f && std::min(settings_.width, settings_.height) >= kSmallestSideForReadouts) {
+    // Between the read-outs at the top and the inset at the bottom (2/9 of the height and a
+    // 40th under it; overlay.cpp), with a pixel to spare.
+    const float top = static_cast<float>(readoutBandHeight()) / settings_.height;
+    const float bottom = 2.0f / 9 + 1.0f / 40 + 1.0f / settings_.height;
+    Eigen::Matrix4f between = Eigen::Matrix4f::Identity();
+    between(0, 0) = between(1, 1) = 1 - top - bottom;
+    between(1, 3) = bottom - top;  // in clip coordinates (× w), so perspective too
+    camera.proj = between * camera.proj;
+  }
   const Eigen::Vector2f center = follow ? middle.head<2>() : frame.framing.center.head<2>();
   CurrentContext current(*context_);
   const GlApi& gl = context_->api();

@@ -15,6 +15,9 @@
 
 namespace render {
 
+/// Frames with a side shorter than this carry no title, read-outs or inset, pixels.
+inline constexpr int kSmallestSideForReadouts = 180;
+
 class Renderer {
  public:
   /// A renderer owns an OpenGL context, made current (and put back) around each of its calls,
@@ -36,6 +39,8 @@ class Renderer {
   void drawFloor(const Camera& camera, const FrameInput& frame, const Eigen::Vector2f& center);
   void drawPoints(const Camera& camera, const FrameInput& frame);
   void drawReadouts(const FrameInput& frame, Image& out);
+  bool readoutsShown() const;
+  int readoutBandHeight() const;  ///< pixels from the top that the title and read-outs take
 
   RenderSettings settings_;
   BodyPoints body_;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -99,9 +100,10 @@ TEST(Overlay, ReadoutsNeverCoverTheBody) {
   for (const Scene scene : {Scene{"rattleback", 8}, Scene{"kane-levinson", 8}, Scene{"seed-reversed", 10}}) {
     for (const char* view : {"oblique", "above", "front", "side", "follow"}) {
       for (double fraction : {0.25}) {
+      for (const char* size : {"480x270", "180x180"}) {
         Twins t;
-        ASSERT_TRUE(twins(std::string("still scenes/") + scene.name + ".yaml --size 480x270 --view " +
-                              view + " --t " + std::to_string(fraction * scene.duration),
+        ASSERT_TRUE(twins(std::string("still scenes/") + scene.name + ".yaml --size " + size +
+                              " --view " + view + " --t " + std::to_string(fraction * scene.duration),
                           t));
         long covered = 0;
         for (std::size_t i = 0; i < t.drawn.size(); ++i) {
@@ -109,8 +111,10 @@ TEST(Overlay, ReadoutsNeverCoverTheBody) {
           const bool body = (r > 120 && g < 80 && bl < 80) || (bl > 120 && r < 80 && g < 120);
           covered += t.drawn[i] && body;
         }
-        EXPECT_EQ(covered, 0) << scene.name << ", " << view << ", t = " << fraction * scene.duration
-                              << ": " << covered << " body pixels under the read-outs";
+        EXPECT_EQ(covered, 0) << scene.name << ", " << view << ", " << size << ", t = "
+                              << fraction * scene.duration << ": " << covered
+                              << " body pixels under the read-outs";
+      }
       }
     }
   }
@@ -119,6 +123,19 @@ TEST(Overlay, ReadoutsNeverCoverTheBody) {
 // The read-outs fit the frame whatever its shape: in a portrait still the time/spin line (about
 // 50 characters) ran off the right edge at a 36th of the height. No pixel the read-outs change
 // lies on the outermost two columns or rows, for landscape, portrait and tall frames.
+// Frames smaller than 180 pixels a side (the body fills them) carry no read-outs at all; from
+// 180 up they do.
+TEST(Overlay, SmallFramesCarryNoReadouts) {
+  for (const char* size : {"100x100", "160x90", "400x170"}) {
+    Twins t;
+    ASSERT_TRUE(twins(std::string("still scenes/rattleback.yaml --t 2 --size ") + size, t));
+    EXPECT_EQ(std::count(t.drawn.begin(), t.drawn.end(), true), 0) << size;
+  }
+  Twins t;
+  ASSERT_TRUE(twins("still scenes/rattleback.yaml --t 2 --size 180x180", t));
+  EXPECT_GT(std::count(t.drawn.begin(), t.drawn.end(), true), 100);
+}
+
 TEST(Overlay, ReadoutsFitPortraitAndLandscapeFrames) {
   for (const char* size : {"640x360", "360x640", "200x600"}) {
     Twins t;
