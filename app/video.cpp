@@ -2,6 +2,8 @@
 // frame's state from the runs (a Rollout per spin direction, sampled at the frame's exact
 // time) and draws it; each output video has its own encoding thread (std::jthread) fed by a
 // bounded queue, so no run holds its frames in memory.
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -156,11 +158,26 @@ rb::Status checkEncoderOptions(const RenderArgs& args) {
   return rb::Status::fail("--preset must be one of x264's: " + names + "; not '" + args.preset + "'");
 }
 
+// An output name whose extension says another format than the one written (x.avi holding
+// MP4, s.jpg holding PNG) is refused; with --both a base without extension is fine.
+rb::Status checkExtension(const std::string& output, const std::string& wanted, bool base_allowed) {
+  if (output.empty()) return {};
+  std::string ext = fs::path(output).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext == wanted || (base_allowed && ext.empty())) return {};
+  return rb::Status::fail("-o " + output + ": writes " + (wanted == ".mp4" ? "MP4 video" : "PNG") +
+                          "; give a name ending in " + wanted);
+}
+
 }  // namespace
 
 int renderCommand(const RenderArgs& args) {
   installInterruptHandlers();
   if (auto ok = checkEncoderOptions(args); !ok) {
+    std::cerr << ok.error().text() << "\n";
+    return kBadInput;
+  }
+  if (auto ok = checkExtension(args.output, ".mp4", args.both); !ok) {
     std::cerr << ok.error().text() << "\n";
     return kBadInput;
   }
@@ -332,6 +349,10 @@ int stillCommand(const StillArgs& args) {
   const Overrides& o = args.overrides;
   if (!(args.t >= 0) || !std::isfinite(args.t)) {
     std::cerr << "--t must be a time ≥ 0 s\n";
+    return kBadInput;
+  }
+  if (auto ok = checkExtension(args.output, ".png", false); !ok) {
+    std::cerr << ok.error().text() << "\n";
     return kBadInput;
   }
   auto loaded = loadScene(args.scene, o);

@@ -402,6 +402,17 @@ TEST(Cli, OptionErrorsNameTheOptionAndTheWayOut) {
     EXPECT_NE(r.err.find(c.message), std::string::npos) << c.options << ": " << r.err;
     EXPECT_EQ(r.err.find("video."), std::string::npos) << c.options << ": " << r.err;
   }
+  // An output name that says another format than the one written is refused, nothing made.
+  const fs::path avi = tempFile("x.avi"), jpg = tempFile("s.jpg");
+  const Result as_avi = rattleback("render " + scene("rattleback") + " --duration 0.1 -q -o " + avi.string());
+  EXPECT_EQ(as_avi.status, 2);
+  EXPECT_NE(as_avi.err.find("writes MP4 video; give a name ending in .mp4"), std::string::npos) << as_avi.err;
+  const Result as_jpg = rattleback("still " + scene("rattleback") + " -q -o " + jpg.string());
+  EXPECT_EQ(as_jpg.status, 2);
+  EXPECT_NE(as_jpg.err.find("writes PNG; give a name ending in .png"), std::string::npos) << as_jpg.err;
+  EXPECT_FALSE(fs::exists(avi));
+  EXPECT_FALSE(fs::exists(jpg));
+
   const Result rate = rattleback("simulate " + scene("rattleback") + " --rate 0 -q -o " +
                                  tempFile("x.csv").string());
   EXPECT_EQ(rate.status, 2);

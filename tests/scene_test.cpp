@@ -255,7 +255,8 @@ TEST(BadScenes, EachExitsTwoFromTheCommandLineWithOneLineAndNoOutput) {
   for (const BadCase& c : kBadCases) {
     const std::filesystem::path yaml = dir / ("case" + std::to_string(index++) + ".yaml");
     std::ofstream(yaml) << mutate(c);
-    const std::filesystem::path csv = dir / "out.csv", err = dir / "stderr", out = dir / "stdout";
+    const std::filesystem::path csv = dir / (videoValueCase(c) ? "out.png" : "out.csv"),
+                                err = dir / "stderr", out = dir / "stdout";
     std::filesystem::remove(csv);
     // Faults in the video section's values reach only the drawing commands: those go to still.
     const std::string command =
