@@ -35,7 +35,7 @@ namespace render {
   X(glGetUniformLocation) X(glLinkProgram) X(glPixelStorei) X(glReadPixels)                 \
   X(glRenderbufferStorage) X(glShaderSource) X(glUniform1f) X(glUniform2f) X(glUniform3fv)  \
   X(glUniformMatrix4fv) X(glUseProgram) X(glVertexAttribPointer) X(glViewport)              \
-  X(glBlendFuncSeparate)
+  X(glBlendFuncSeparate) X(glBlitFramebuffer) X(glBufferSubData)
 
 struct GlApi {
 #define RATTLEBACK_GL_MEMBER(name) decltype(&::name) name = nullptr;
@@ -56,6 +56,8 @@ class GlContext {
   Backend backend() const { return backend_; }
   /// "EGL (surfaceless): Mesa/X.org llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 …"
   const std::string& description() const { return description_; }
+  /// The FBO that frames are drawn into and read from.
+  GLuint framebuffer() const { return fbo_; }
   /// Reads the FBO's pixels, rows top to bottom (the context must be current).
   void readPixels(unsigned char* rgba) const;
 

@@ -29,6 +29,11 @@ Renderer::~Renderer() {
   if (floor_vbo_) gl.glDeleteBuffers(1, &floor_vbo_);
   if (points_vao_) gl.glDeleteVertexArrays(1, &points_vao_);
   if (floor_vao_) gl.glDeleteVertexArrays(1, &floor_vao_);
+  if (shadow_vbo_) gl.glDeleteBuffers(1, &shadow_vbo_);
+  if (shadow_vao_) gl.glDeleteVertexArrays(1, &shadow_vao_);
+  if (cache_fbo_) gl.glDeleteFramebuffers(1, &cache_fbo_);
+  if (cache_color_) gl.glDeleteRenderbuffers(1, &cache_color_);
+  if (cache_depth_) gl.glDeleteRenderbuffers(1, &cache_depth_);
   if (points_program_) gl.glDeleteProgram(points_program_);
   if (floor_program_) gl.glDeleteProgram(floor_program_);
 }
@@ -96,6 +101,30 @@ std::string Renderer::init() {
   gl.glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
   gl.glEnableVertexAttribArray(0);
 
+  // The shadow's quad: four floor points, rewritten for each frame.
+  gl.glGenVertexArrays(1, &shadow_vao_);
+  gl.glBindVertexArray(shadow_vao_);
+  gl.glGenBuffers(1, &shadow_vbo_);
+  gl.glBindBuffer(GL_ARRAY_BUFFER, shadow_vbo_);
+  gl.glBufferData(GL_ARRAY_BUFFER, 8 * sizeof(float), nullptr, GL_DYNAMIC_DRAW);
+  gl.glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+  gl.glEnableVertexAttribArray(0);
+
+  // The cached floor's own framebuffer, of the frame's size and formats (so a blit copies it).
+  gl.glGenRenderbuffers(1, &cache_color_);
+  gl.glBindRenderbuffer(GL_RENDERBUFFER, cache_color_);
+  gl.glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, settings_.width, settings_.height);
+  gl.glGenRenderbuffers(1, &cache_depth_);
+  gl.glBindRenderbuffer(GL_RENDERBUFFER, cache_depth_);
+  gl.glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, settings_.width, settings_.height);
+  gl.glGenFramebuffers(1, &cache_fbo_);
+  gl.glBindFramebuffer(GL_FRAMEBUFFER, cache_fbo_);
+  gl.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, cache_color_);
+  gl.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, cache_depth_);
+  const bool complete = gl.glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+  gl.glBindFramebuffer(GL_FRAMEBUFFER, context_->framebuffer());
+  if (!complete) return "the floor's framebuffer object is incomplete";
+
   gl.glEnable(GL_DEPTH_TEST);
   gl.glEnable(GL_PROGRAM_POINT_SIZE);
   gl.glEnable(GL_BLEND);
@@ -106,7 +135,7 @@ std::string Renderer::init() {
 }
 
 void Renderer::drawFloor(const Camera& camera, const FrameInput& frame,
-                         const Eigen::Vector2f& center) {
+                         const Eigen::Vector2f& center, bool shadow, bool shadow_only) {
   const float size = half_extent_.maxCoeff();
   // A checker square of 1, 2 or 5 × 10ⁿ m, about a fifth of the body's half length.
   const float raw = size / 5;
@@ -136,11 +165,50 @@ void Renderer::drawFloor(const Camera& camera, const FrameInput& frame,
   gl.glUniform2f(gl.glGetUniformLocation(floor_program_, "u_shadow_axis"), axis.x(), axis.y());
   gl.glUniform2f(gl.glGetUniformLocation(floor_program_, "u_shadow_half"), body_.footprint_half.x(),
               body_.footprint_half.y());
-  gl.glUniform1f(gl.glGetUniformLocation(floor_program_, "u_shadow_strength"), 0.45f);
+  gl.glUniform1f(gl.glGetUniformLocation(floor_program_, "u_shadow_strength"), shadow ? 0.45f : 0.0f);
   gl.glUniform1f(gl.glGetUniformLocation(floor_program_, "u_transparent"),
                  settings_.transparent ? 1.0f : 0.0f);
-  gl.glBindVertexArray(floor_vao_);
+  if (!shadow_only) {
+    gl.glBindVertexArray(floor_vao_);
+    gl.glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    return;
+  }
+  // The shader's shadow is zero beyond 1.15 of the half extents (floor.frag): a quad out to
+  // 1.25 of them holds all of it. It is drawn without the depth test over the copied floor
+  // (whose depth it shares), each pixel as the whole floor's pass would have drawn it.
+  const Eigen::Vector2f across(axis.y(), -axis.x());
+  const Eigen::Vector2f a = 1.25f * body_.footprint_half.x() * across;
+  const Eigen::Vector2f b = 1.25f * body_.footprint_half.y() * axis;
+  const Eigen::Vector2f corners[4] = {position - a - b, position + a - b, position - a + b,
+                                      position + a + b};
+  float quad[8];
+  for (int i = 0; i < 4; ++i) quad[2 * i] = corners[i].x(), quad[2 * i + 1] = corners[i].y();
+  gl.glBindVertexArray(shadow_vao_);
+  gl.glBindBuffer(GL_ARRAY_BUFFER, shadow_vbo_);
+  gl.glBufferSubData(GL_ARRAY_BUFFER, 0, sizeof quad, quad);
+  gl.glDisable(GL_DEPTH_TEST);
   gl.glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  gl.glEnable(GL_DEPTH_TEST);
+}
+
+void Renderer::copyCachedFloor(const Camera& camera, const FrameInput& frame,
+                               const Eigen::Vector2f& center) {
+  const GlApi& gl = context_->api();
+  if (!cache_valid_ || cache_view_ != camera.view || cache_proj_ != camera.proj ||
+      cache_center_ != center) {
+    gl.glBindFramebuffer(GL_FRAMEBUFFER, cache_fbo_);
+    gl.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    drawFloor(camera, frame, center, false, false);
+    cache_view_ = camera.view;
+    cache_proj_ = camera.proj;
+    cache_center_ = center;
+    cache_valid_ = true;
+  }
+  gl.glBindFramebuffer(GL_READ_FRAMEBUFFER, cache_fbo_);
+  gl.glBindFramebuffer(GL_DRAW_FRAMEBUFFER, context_->framebuffer());
+  gl.glBlitFramebuffer(0, 0, settings_.width, settings_.height, 0, 0, settings_.width,
+                       settings_.height, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  gl.glBindFramebuffer(GL_FRAMEBUFFER, context_->framebuffer());
 }
 
 void Renderer::drawPoints(const Camera& camera, const FrameInput& frame) {
@@ -233,8 +301,13 @@ void Renderer::draw(const FrameInput& frame, Image& out) {
     gl.glClearColor(0, 0, 0, 0);
   else
     gl.glClearColor(kBackground.x(), kBackground.y(), kBackground.z(), 1);
-  gl.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  drawFloor(camera, frame, center);
+  if (follow) {  // the camera moves with the body: the whole floor, every frame
+    gl.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    drawFloor(camera, frame, center, true, false);
+  } else {
+    copyCachedFloor(camera, frame, center);  // (clear colour set above, for the cache's clear)
+    drawFloor(camera, frame, center, true, true);
+  }
   drawPoints(camera, frame);
   out.width = settings_.width;
   out.height = settings_.height;

@@ -36,7 +36,15 @@ class Renderer {
  private:
   Renderer(const RenderSettings& settings, const BodyPoints& body);
   std::string init();
-  void drawFloor(const Camera& camera, const FrameInput& frame, const Eigen::Vector2f& center);
+  /// The floor under `camera`, with the body's shadow when `shadow`; over `shadow_only` the
+  /// quad around the shadow alone (drawn over the cached floor), else the whole floor.
+  void drawFloor(const Camera& camera, const FrameInput& frame, const Eigen::Vector2f& center,
+                 bool shadow, bool shadow_only);
+  /// The fixed views' floor without the shadow, drawn once into its own FBO and copied into
+  /// each frame: the same for every frame of a run, and most of the drawing's cost (its
+  /// shader runs at every pixel). Redrawn whenever the camera or the centre changes, so a
+  /// frame still depends only on its own values.
+  void copyCachedFloor(const Camera& camera, const FrameInput& frame, const Eigen::Vector2f& center);
   void drawPoints(const Camera& camera, const FrameInput& frame);
   void drawReadouts(const FrameInput& frame, Image& out);
   bool readoutsShown() const;
@@ -49,6 +57,11 @@ class Renderer {
   GLuint points_program_ = 0, floor_program_ = 0;
   GLuint points_vao_ = 0, points_vbo_ = 0, floor_vao_ = 0, floor_vbo_ = 0;
   GLsizei point_count_ = 0;
+  GLuint shadow_vao_ = 0, shadow_vbo_ = 0;
+  GLuint cache_fbo_ = 0, cache_color_ = 0, cache_depth_ = 0;
+  bool cache_valid_ = false;
+  Eigen::Matrix4f cache_view_, cache_proj_;  ///< the camera the cached floor was drawn with
+  Eigen::Vector2f cache_center_;
   Eigen::Vector3f half_extent_;   ///< body half extents, m
   float middle_height_ = 0;       ///< height of the body's middle above its CM, m
   float radius_ = 0;              ///< the largest distance of a drawn point from the CM, m
