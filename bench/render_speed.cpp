@@ -3,6 +3,8 @@
 // to end (`rattleback render`: simulate, render and encode in overlapping threads), and
 // `render --both` (two renderers on one thread, three encoders), for each OpenGL backend.
 // Usage: rattleback_render_bench [SCENE] [FRAMES]
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <string>
@@ -17,6 +19,13 @@
 
 namespace {
 
+constexpr int kRepeats = 3;
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
 double seconds(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
@@ -25,8 +34,9 @@ double seconds(std::chrono::steady_clock::time_point since) {
 
 int main(int argc, char** argv) {
   const std::string scene = argc > 1 ? argv[1] : RATTLEBACK_SOURCE_DIR "/scenes/rattleback.yaml";
-  const int frames = argc > 2 ? std::stoi(argv[2]) : 150;
-  std::printf("scene %s, %d frames per measurement\n", scene.c_str(), frames);
+  const int frames = argc > 2 ? std::stoi(argv[2]) : 200;
+  std::printf("scene %s, %d frames per measurement, median of %d\n", scene.c_str(), frames,
+              kRepeats);
   std::printf("%-8s %-10s %11s %11s %11s %11s %14s\n", "backend", "size", "render fps",
               "encode fps", "end-to-end", "--both", "end/encode");
   for (render::Backend backend : {render::Backend::Egl, render::Backend::OsMesa})
@@ -73,41 +83,48 @@ int main(int argc, char** argv) {
     }
     render::Renderer& renderer = *created.value();
     std::vector<render::Image> images(frames);
-    auto start = std::chrono::steady_clock::now();
-    for (std::size_t i = 0; i < poses.size(); ++i) renderer.draw(poses[i], images[i]);
-    const double render_fps = frames / seconds(start);
+    // Each stage three times, interleaved; the median of each (one pass's figures move by
+    // ±20 % here from run to run).
+    std::array<std::vector<double>, 4> fps;
+    for (int repeat = 0; repeat < kRepeats; ++repeat) {
+      auto start = std::chrono::steady_clock::now();
+      for (std::size_t i = 0; i < poses.size(); ++i) renderer.draw(poses[i], images[i]);
+      fps[0].push_back(frames / seconds(start));
 
-    render::EncoderSettings encoding;
-    encoding.width = w;
-    encoding.height = h;
-    encoding.fps = plan.fps;
-    auto opened = render::VideoEncoder::open("/tmp/rattleback_bench.mp4", encoding);
-    if (!opened) {
-      std::fprintf(stderr, "%s\n", opened.error().text().c_str());
-      return 2;
+      render::EncoderSettings encoding;
+      encoding.width = w;
+      encoding.height = h;
+      encoding.fps = plan.fps;
+      auto opened = render::VideoEncoder::open("/tmp/rattleback_bench.mp4", encoding);
+      if (!opened) {
+        std::fprintf(stderr, "%s\n", opened.error().text().c_str());
+        return 2;
+      }
+      std::unique_ptr<render::VideoEncoder> encoder = std::move(opened).value();
+      start = std::chrono::steady_clock::now();
+      for (const auto& image : images)
+        if (!encoder->add(image)) return 2;
+      if (!encoder->finish()) return 2;
+      fps[1].push_back(frames / seconds(start));
+
+      app::RenderArgs args;
+      args.scene = scene;
+      args.output = "/tmp/rattleback_bench_e2e.mp4";
+      args.overrides = o;
+      args.overrides.duration = frames * plan.playback / plan.fps;
+      args.quiet = true;
+      args.backend = std::string(rb::nameOf(backend));
+      start = std::chrono::steady_clock::now();
+      app::renderCommand(args);
+      fps[2].push_back(frames / seconds(start));
+      args.both = true;
+      args.output = "/tmp/rattleback_bench_both.mp4";
+      start = std::chrono::steady_clock::now();
+      app::renderCommand(args);
+      fps[3].push_back(frames / seconds(start));
     }
-    std::unique_ptr<render::VideoEncoder> encoder = std::move(opened).value();
-    start = std::chrono::steady_clock::now();
-    for (const auto& image : images)
-      if (!encoder->add(image)) return 2;
-    if (!encoder->finish()) return 2;
-    const double encode_fps = frames / seconds(start);
-
-    app::RenderArgs args;
-    args.scene = scene;
-    args.output = "/tmp/rattleback_bench_e2e.mp4";
-    args.overrides = o;
-    args.overrides.duration = frames * plan.playback / plan.fps;
-    args.quiet = true;
-    args.backend = std::string(rb::nameOf(backend));
-    start = std::chrono::steady_clock::now();
-    app::renderCommand(args);
-    const double e2e_fps = frames / seconds(start);
-    args.both = true;
-    args.output = "/tmp/rattleback_bench_both.mp4";
-    start = std::chrono::steady_clock::now();
-    app::renderCommand(args);
-    const double both_fps = frames / seconds(start);
+    const double render_fps = median(fps[0]), encode_fps = median(fps[1]),
+                 e2e_fps = median(fps[2]), both_fps = median(fps[3]);
     std::printf("%-8s %-10s %11.1f %11.1f %11.1f %11.1f %13.2fx\n",
                 std::string(rb::nameOf(backend)).c_str(),
                 (std::to_string(w) + "x" + std::to_string(h)).c_str(), render_fps, encode_fps,
