@@ -269,16 +269,6 @@ void GlContext::readPixels(unsigned char* rgba) const {
   const GlApi& gl = api_;
   gl.glPixelStorei(GL_PACK_ALIGNMENT, 1);
   gl.glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
-  // OpenGL's rows run bottom-up: flip them.
-  const std::size_t row = static_cast<std::size_t>(width_) * 4;
-  std::vector<unsigned char> swap(row);
-  for (int y = 0; y < height_ / 2; ++y) {
-    unsigned char* a = rgba + y * row;
-    unsigned char* b = rgba + (height_ - 1 - y) * row;
-    std::memcpy(swap.data(), a, row);
-    std::memcpy(a, b, row);
-    std::memcpy(b, swap.data(), row);
-  }
 }
 
 CurrentContext::CurrentContext(GlContext& context) : context_(context) {

@@ -35,7 +35,7 @@ namespace render {
   X(glGetUniformLocation) X(glLinkProgram) X(glPixelStorei) X(glReadPixels)                 \
   X(glRenderbufferStorage) X(glShaderSource) X(glUniform1f) X(glUniform2f) X(glUniform3fv)  \
   X(glUniformMatrix4fv) X(glUseProgram) X(glVertexAttribPointer) X(glViewport)              \
-  X(glBlendFuncSeparate) X(glBlitFramebuffer) X(glBufferSubData)
+  X(glBlendFuncSeparate) X(glBlitFramebuffer) X(glBufferSubData) X(glPointParameteri)
 
 struct GlApi {
 #define RATTLEBACK_GL_MEMBER(name) decltype(&::name) name = nullptr;
@@ -58,7 +58,9 @@ class GlContext {
   const std::string& description() const { return description_; }
   /// The FBO that frames are drawn into and read from.
   GLuint framebuffer() const { return fbo_; }
-  /// Reads the FBO's pixels, rows top to bottom (the context must be current).
+  /// Reads the FBO's pixels as they lie, bottom row of the window first: the renderer draws
+  /// upside down so that this is the image's top row (no copy to flip it; the context must be
+  /// current).
   void readPixels(unsigned char* rgba) const;
 
  protected:

@@ -127,6 +127,7 @@ std::string Renderer::init() {
 
   gl.glEnable(GL_DEPTH_TEST);
   gl.glEnable(GL_PROGRAM_POINT_SIZE);
+  gl.glPointParameteri(GL_POINT_SPRITE_COORD_ORIGIN, GL_LOWER_LEFT);
   gl.glEnable(GL_BLEND);
   // Colour blends by the source's alpha; alpha accumulates (a + (1 − a)·dst), so a shadow over
   // a transparent background keeps its own alpha.
@@ -294,6 +295,10 @@ void Renderer::draw(const FrameInput& frame, Image& out) {
     between(1, 3) = bottom - top;  // in clip coordinates (× w), so perspective too
     camera.proj = between * camera.proj;
   }
+  // Upside down: OpenGL's first row is the window's bottom one, so a picture drawn flipped
+  // reads back top row first, with no copy to flip it (sprites count their y from the window's
+  // bottom to match: init).
+  camera.proj.row(1) *= -1;
   const Eigen::Vector2f center = follow ? middle.head<2>() : frame.framing.center.head<2>();
   CurrentContext current(*context_);
   const GlApi& gl = context_->api();

@@ -10,7 +10,7 @@ uniform vec3 u_light_view;  // unit vector towards the light, view frame
 out vec4 frag_color;
 
 void main() {
-  // Position on the sprite in sphere radii (gl_PointCoord runs downwards in y).
+  // Position on the sprite in sphere radii (gl_PointCoord runs down the picture in y: the renderer draws upside down, with the sprites' origin at the lower left).
   vec2 p = (gl_PointCoord * 2.0 - 1.0) * (v_radius_px + 1.0) / v_radius_px;
   p.y = -p.y;
   float r = length(p);
