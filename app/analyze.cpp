@@ -175,8 +175,9 @@ void printText(const std::string& scene, const sim::Model& model) {
                 stability.omega, stability.zeta);
   else
     std::printf("contact          stiffest mode at rest %.4g rad/s (damping ratio %.3g); "
-                "largest stable dt %.3g s\n",
-                stability.omega, stability.zeta, stability.largest_step);
+                "largest stable dt %.3g s with %s (the scene's integrator)\n",
+                stability.omega, stability.zeta, stability.largest_step,
+                std::string(rb::nameOf(model.integrator)).c_str());
 }
 
 }  // namespace

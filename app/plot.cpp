@@ -149,7 +149,10 @@ rb::Status plotPng(const std::string& png, const std::string& title,
            << " font \",12\"\n";
     int file_index = 0;
     for (const Panel& panel : panels) {
+      // A twentieth of the height above and below the data, so that a line at its top or
+      // bottom (a conserved energy) is not drawn on the frame.
       script << "unset logscale\nunset y2label\nunset y2tics\nset ytics mirror\n"
+             << "set offsets 0, 0, graph 0.05, graph 0.05\n"
              << "set title " << quoted(panels.size() > 1 ? panel.title : std::string()) << "\n"
              << "set xlabel " << quoted(panel.x_label) << "\nset ylabel " << quoted(panel.y_label)
              << "\n";

@@ -583,8 +583,11 @@ int sweepCommand(const SweepArgs& args) {
     std::printf(", %d ok", counts["ok"]);
     if (counts["stopped"]) std::printf(", %d stopped", counts["stopped"]);
     if (counts["refused"]) std::printf(", %d refused", counts["refused"]);
-    std::printf("\nwall time       %.3f s on %d threads (%.1f runs/s)\n", wall, jobs,
-                todo.empty() ? 0.0 : static_cast<double>(todo.size()) / wall);
+    if (!done.empty())
+      std::printf(" (%zu from the journal of the interrupted run, %zu run now)", done.size(),
+                  todo.size());
+    std::printf("\nwall time       %.3f s on %d threads (%.1f runs/s, of the %zu run now)\n", wall,
+                jobs, todo.empty() ? 0.0 : static_cast<double>(todo.size()) / wall, todo.size());
     std::printf("table           %s\n", output.c_str());
     if (!args.plot.empty()) std::printf("plot            %s\n", args.plot.c_str());
   }
