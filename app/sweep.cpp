@@ -40,7 +40,7 @@ const std::pair<const char*, const char*> kResults[] = {
     {"first_reversal_s", "s: first spin reversal (as simulate), empty when none"},
     {"reversals", "count of spin reversals (as simulate)"},
     {"final_spin", "rad/s: n = w.z at the end of the run"},
-    {"max_tilt_deg", "degrees: largest tilt of the body axis over the steps"},
+    {"max_tilt_deg", "degrees: largest tilt of the body axis over the steps (to the stop, if it stopped)"},
     {"energy_lost", "fraction of the initial energy lost by the end"},
     {"wall_s", "s: wall-clock time of the run (the only column that varies between runs)"},
 };
@@ -180,11 +180,12 @@ std::optional<std::string> runRow(const scene::SweepScenes& scenes,
   const sim::RunSummary& run = rollout.summary();
   if (run.stop_requested) return std::nullopt;
   std::string status = "ok";
-  std::string final_spin, max_tilt, energy_lost;
+  std::string final_spin, energy_lost;
+  // A stopped run's largest tilt too: how far it went over is often why it stopped.
+  const std::string max_tilt = number(run.max_tilt_deg);
   if (reached) {
     const sim::Telemetry last = rollout.sampleAt(end);
     final_spin = number(last.spin);
-    max_tilt = number(run.max_tilt_deg);
     energy_lost = number((run.first.energy - last.energy) / std::abs(run.first.energy));
   } else {
     status = "stopped: " + run.divergence.value_or("the run did not reach its end");

@@ -234,6 +234,25 @@ TEST(Sweep, ABadValueRefusesItsRowOnly) {
   EXPECT_EQ(rows[2][4], "");
 }
 
+// A row whose run stops (rolling cannot hold the default body spun at 45 rad/s: it tips onto
+// its rim, past 50°) says why, and still gives its largest tilt, past the 50° it stopped at;
+// the values only a finished run has stay empty.
+TEST(Sweep, AStoppedRowKeepsItsLargestTilt) {
+  const fs::path dir = scratch();
+  const fs::path sweep =
+      writeSweep(dir, "base: " + kBase + "\nvary:\n  initial.spin: [-5, -45]\nduration: 1\n");
+  const Outcome r = rattleback(dir, "sweep " + sweep.string() + " -q -o " + (dir / "t.csv").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = readCsv(slurp(dir / "t.csv"));
+  ASSERT_EQ(rows.size(), 3u);
+  ASSERT_EQ(rows[0][6], "max_tilt_deg");
+  EXPECT_EQ(rows[1][2], "ok");
+  EXPECT_EQ(rows[2][2].rfind("stopped: the body tipped onto the edge of its top", 0), 0u) << rows[2][2];
+  ASSERT_FALSE(rows[2][6].empty());
+  EXPECT_GT(std::stod(rows[2][6]), 50.0);
+  EXPECT_EQ(rows[2][5], "");  // no final spin
+}
+
 // Ctrl-C keeps the finished rows (in OUT.partial) and writes no table; --resume runs the rest,
 // and the table equals an uninterrupted run's.
 TEST(Sweep, AnInterruptKeepsTheFinishedRowsAndResumeCompletesThem) {
