@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -254,6 +255,24 @@ TEST(VideoContent, FollowIsNotOblique) {
 // still --transparent: nothing but the body and its shadow. The corners (floor and background
 // elsewhere) are fully transparent; the body's red and blue pixels opaque; the shadow partly
 // transparent black (alpha between 0 and 255, colour dark).
+// An opaque still is an RGB PNG (colour type 2, byte 25 of the file); a transparent one keeps
+// its alpha (colour type 6); both read back to the same pixels as drawn.
+TEST(Still, OpaqueStillsAreRgbAndTransparentOnesRgba) {
+  for (const auto& [extra, type] : {std::pair{"", 2}, std::pair{" --transparent", 6}}) {
+    const fs::path png = scratch(std::string("type") + std::to_string(type) + ".png");
+    ASSERT_EQ(rattleback(std::string("still scenes/rattleback.yaml --t 1 --size 320x180 -q -o ") +
+                         png.string() + extra),
+              0);
+    std::ifstream in(png, std::ios::binary);
+    std::string head(26, '\0');
+    in.read(head.data(), 26);
+    EXPECT_EQ(static_cast<int>(static_cast<unsigned char>(head[25])), type) << extra;
+    render::Image image;
+    ASSERT_TRUE(render::readPng(png.string(), image).ok());
+    EXPECT_EQ(image.width, 320);
+  }
+}
+
 TEST(Still, TransparentKeepsOnlyTheBodyAndItsShadow) {
   const render::Image image = still("scenes/rattleback.yaml --t 1 --view above --transparent");
   ASSERT_FALSE(image.rgba.empty());
