@@ -195,13 +195,18 @@ void Renderer::drawFloor(const Camera& camera, const FrameInput& frame,
 void Renderer::copyCachedFloor(const Camera& camera, const FrameInput& frame,
                                const Eigen::Vector2f& center) {
   const GlApi& gl = context_->api();
-  if (!cache_valid_ || cache_view_ != camera.view || cache_proj_ != camera.proj ||
-      cache_center_ != center) {
+  // Everything the floor's pass reads that can change: the camera (with its fog) and the
+  // centre the floor fades from; the rest is the renderer's fixed setup.
+  const bool same = cache_valid_ && cache_camera_.view == camera.view &&
+                    cache_camera_.proj == camera.proj &&
+                    cache_camera_.depth_direction == camera.depth_direction &&
+                    cache_camera_.fog_near == camera.fog_near &&
+                    cache_camera_.fog_far == camera.fog_far && cache_center_ == center;
+  if (!same) {
     gl.glBindFramebuffer(GL_FRAMEBUFFER, cache_fbo_);
     gl.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     drawFloor(camera, frame, center, false, false);
-    cache_view_ = camera.view;
-    cache_proj_ = camera.proj;
+    cache_camera_ = camera;
     cache_center_ = center;
     cache_valid_ = true;
   }

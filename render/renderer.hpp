@@ -60,7 +60,7 @@ class Renderer {
   GLuint shadow_vao_ = 0, shadow_vbo_ = 0;
   GLuint cache_fbo_ = 0, cache_color_ = 0, cache_depth_ = 0;
   bool cache_valid_ = false;
-  Eigen::Matrix4f cache_view_, cache_proj_;  ///< the camera the cached floor was drawn with
+  Camera cache_camera_;  ///< the camera the cached floor was drawn with
   Eigen::Vector2f cache_center_;
   Eigen::Vector3f half_extent_;   ///< body half extents, m
   float middle_height_ = 0;       ///< height of the body's middle above its CM, m
