@@ -62,17 +62,29 @@ int runGnuplot(const fs::path& script, const fs::path& log) {
 
 }  // namespace
 
+namespace {
+
+// Writes a file into `dir` and removes it: "" when that works, else the system's reason.
+std::string probeWrite(const fs::path& dir) {
+  const fs::path probe = dir / (".rattleback-probe-" + std::to_string(getpid()));
+  std::ofstream test(probe);
+  if (!test) return std::strerror(errno);
+  test.close();
+  std::error_code ec;
+  fs::remove(probe, ec);
+  return "";
+}
+
+}  // namespace
+
 rb::Status checkPlotFolder(const std::string& dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (!fs::is_directory(dir, ec))
     return rb::Status::fail(dir + ": --plot needs a folder it can write into" +
                             (ec ? ": " + ec.message() : std::string()));
-  const fs::path probe = fs::path(dir) / (".rattleback-probe-" + std::to_string(getpid()));
-  std::ofstream test(probe);
-  if (!test) return rb::Status::fail(dir + ": --plot cannot write into this folder: " + std::strerror(errno));
-  test.close();
-  fs::remove(probe, ec);
+  if (std::string why = probeWrite(dir); !why.empty())
+    return rb::Status::fail(dir + ": --plot cannot write into this folder: " + why);
   return {};
 }
 
@@ -81,13 +93,9 @@ rb::Status checkPlotFile(const std::string& png) {
   if (fs::is_directory(png, ec)) return rb::Status::fail(png + ": --plot is a folder, not a file");
   if (auto made = makeParentFolder(png); !made) return made;
   const fs::path dir = fs::absolute(png).parent_path();
-  const fs::path probe = dir / (".rattleback-probe-" + std::to_string(getpid()));
-  std::ofstream test(probe);
-  if (!test)
-    return rb::Status::fail(png + ": --plot cannot write into " + dir.string() + ": " +
-                            std::strerror(errno) + " (give --plot a path in a folder you can write)");
-  test.close();
-  fs::remove(probe, ec);
+  if (std::string why = probeWrite(dir); !why.empty())
+    return rb::Status::fail(png + ": --plot cannot write into " + dir.string() + ": " + why +
+                            " (give --plot a path in a folder you can write)");
   return {};
 }
 

@@ -64,11 +64,11 @@ render::RenderSettings settingsOf(const VideoPlan& plan, double duration, double
 // queue, so that the producer's next push fails and rendering stops.
 struct Output {
   std::unique_ptr<render::VideoEncoder> encoder;
-  // Known to the signal handler, which removes it on a second Ctrl-C (it exits at once).
-  std::string temporary;
+  // The encoder's temporary file is known to the signal handler (registered when opened),
+  // which removes it on a second Ctrl-C (it exits at once); forgotten here.
   ~Output() {
     abort();
-    if (!temporary.empty()) unregisterTemporary(temporary);
+    if (encoder) unregisterTemporary(encoder->temporaryPath());
   }
   BoundedQueue<render::Image> images{4};
   // Frame buffers the encoder is done with, handed back for the next frames: after the first
@@ -160,13 +160,13 @@ rb::Status checkEncoderOptions(const RenderArgs& args) {
 
 // An output name whose extension says another format than the one written (x.avi holding
 // MP4, s.jpg holding PNG) is refused; with --both a base without extension is fine.
-rb::Status checkExtension(const std::string& output, const std::string& wanted, bool base_allowed) {
+rb::Status checkExtension(const std::string& output, const std::string& wanted,
+                          const std::string& format, bool base_allowed) {
   if (output.empty()) return {};
   std::string ext = fs::path(output).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   if (ext == wanted || (base_allowed && ext.empty())) return {};
-  return rb::Status::fail("-o " + output + ": writes " + (wanted == ".mp4" ? "MP4 video" : "PNG") +
-                          "; give a name ending in " + wanted);
+  return rb::Status::fail("-o " + output + ": writes " + format + "; give a name ending in " + wanted);
 }
 
 }  // namespace
@@ -177,7 +177,7 @@ int renderCommand(const RenderArgs& args) {
     std::cerr << ok.error().text() << "\n";
     return kBadInput;
   }
-  if (auto ok = checkExtension(args.output, ".mp4", args.both); !ok) {
+  if (auto ok = checkExtension(args.output, ".mp4", "MP4 video", args.both); !ok) {
     std::cerr << ok.error().text() << "\n";
     return kBadInput;
   }
@@ -236,8 +236,7 @@ int renderCommand(const RenderArgs& args) {
     }
     outputs.push_back(std::make_unique<Output>());
     outputs.back()->encoder = std::move(opened).value();
-    outputs.back()->temporary = outputs.back()->encoder->temporaryPath();
-    registerTemporary(outputs.back()->temporary);
+    registerTemporary(outputs.back()->encoder->temporaryPath());
   }
 
   std::vector<std::unique_ptr<render::Renderer>> renderers;
@@ -351,7 +350,7 @@ int stillCommand(const StillArgs& args) {
     std::cerr << "--t must be a time ≥ 0 s\n";
     return kBadInput;
   }
-  if (auto ok = checkExtension(args.output, ".png", false); !ok) {
+  if (auto ok = checkExtension(args.output, ".png", "PNG", false); !ok) {
     std::cerr << ok.error().text() << "\n";
     return kBadInput;
   }

@@ -84,7 +84,7 @@ int main(int argc, char** argv) {
     render::Renderer& renderer = *created.value();
     std::vector<render::Image> images(frames);
     // Each stage three times, interleaved; the median of each (one pass's figures move by
-    // ±20 % here from run to run).
+    // ±15 % here from run to run: the stages share two cores).
     std::array<std::vector<double>, 4> fps;
     for (int repeat = 0; repeat < kRepeats; ++repeat) {
       auto start = std::chrono::steady_clock::now();

@@ -234,6 +234,27 @@ rb::Result<std::unique_ptr<GlContext>> GlContext::create(Backend backend, int wi
   return rb::Error{"", "no OpenGL for rendering: EGL: " + egl_error + "; OSMesa: " + osmesa_error};
 }
 
+bool makeFramebuffer(const GlApi& gl, int width, int height, Framebuffer& out) {
+  gl.glGenRenderbuffers(1, &out.color);
+  gl.glBindRenderbuffer(GL_RENDERBUFFER, out.color);
+  gl.glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+  gl.glGenRenderbuffers(1, &out.depth);
+  gl.glBindRenderbuffer(GL_RENDERBUFFER, out.depth);
+  gl.glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+  gl.glGenFramebuffers(1, &out.fbo);
+  gl.glBindFramebuffer(GL_FRAMEBUFFER, out.fbo);
+  gl.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, out.color);
+  gl.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, out.depth);
+  return gl.glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+}
+
+void deleteFramebuffer(const GlApi& gl, Framebuffer& f) {
+  if (f.fbo) gl.glDeleteFramebuffers(1, &f.fbo);
+  if (f.color) gl.glDeleteRenderbuffers(1, &f.color);
+  if (f.depth) gl.glDeleteRenderbuffers(1, &f.depth);
+  f = {};
+}
+
 std::string GlContext::createFramebuffer(int width, int height) {
   const GlApi& gl = api_;
   auto text = [&](GLenum name) {
@@ -241,29 +262,12 @@ std::string GlContext::createFramebuffer(int width, int height) {
     return std::string(s ? s : "?");
   };
   description_ = text(GL_VENDOR) + " " + text(GL_RENDERER) + ", OpenGL " + text(GL_VERSION);
-  gl.glGenRenderbuffers(1, &color_);
-  gl.glBindRenderbuffer(GL_RENDERBUFFER, color_);
-  gl.glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-  gl.glGenRenderbuffers(1, &depth_);
-  gl.glBindRenderbuffer(GL_RENDERBUFFER, depth_);
-  gl.glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-  gl.glGenFramebuffers(1, &fbo_);
-  gl.glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-  gl.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_);
-  gl.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
-  if (gl.glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-    return "the framebuffer object is incomplete";
+  if (!makeFramebuffer(gl, width, height, frame_)) return "the framebuffer object is incomplete";
   gl.glViewport(0, 0, width, height);
   return "";
 }
 
-void GlContext::destroyFramebuffer() {
-  const GlApi& gl = api_;
-  if (fbo_) gl.glDeleteFramebuffers(1, &fbo_);
-  if (color_) gl.glDeleteRenderbuffers(1, &color_);
-  if (depth_) gl.glDeleteRenderbuffers(1, &depth_);
-  fbo_ = color_ = depth_ = 0;
-}
+void GlContext::destroyFramebuffer() { deleteFramebuffer(api_, frame_); }
 
 void GlContext::readPixels(unsigned char* rgba) const {
   const GlApi& gl = api_;

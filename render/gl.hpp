@@ -45,6 +45,15 @@ struct GlApi {
 
 /// An off-screen OpenGL 3.3 core context drawing into a framebuffer object with colour and
 /// depth. Its GL calls are valid only while it is current: see CurrentContext.
+/// A framebuffer object with an RGBA8 colour and a 24-bit depth renderbuffer: the frame's, and
+/// the renderer's cached floor (same formats, so one can be blitted into the other).
+struct Framebuffer {
+  GLuint fbo = 0, color = 0, depth = 0;
+};
+/// Makes one of width × height and leaves it bound; false when it is incomplete.
+bool makeFramebuffer(const GlApi& gl, int width, int height, Framebuffer& out);
+void deleteFramebuffer(const GlApi& gl, Framebuffer& framebuffer);
+
 class GlContext {
  public:
   /// Creates the context and its FBO. Auto tries EGL, then OSMesa; the error names what each
@@ -57,7 +66,7 @@ class GlContext {
   /// "EGL (surfaceless): Mesa/X.org llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 …"
   const std::string& description() const { return description_; }
   /// The FBO that frames are drawn into and read from.
-  GLuint framebuffer() const { return fbo_; }
+  GLuint framebuffer() const { return frame_.fbo; }
   /// Reads the FBO's pixels as they lie, bottom row of the window first: the renderer draws
   /// upside down so that this is the image's top row (no copy to flip it; the context must be
   /// current).
@@ -76,7 +85,7 @@ class GlContext {
   GlApi api_;
   Backend backend_ = Backend::Auto;
   std::string description_;
-  GLuint fbo_ = 0, color_ = 0, depth_ = 0;
+  Framebuffer frame_;
   int width_ = 0, height_ = 0;
 };
 

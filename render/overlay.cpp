@@ -124,18 +124,28 @@ void drawLine(Image& image, float x0, float y0, float x1, float y1, float width,
   }
 }
 
+namespace {
+// The inset is 2/9 of the frame's height, a 40th above its bottom edge.
+int insetHeight(int image_height) { return image_height * 2 / 9; }
+int insetMargin(int image_height) { return image_height / 40; }
+}  // namespace
+
+int insetTop(int image_height) {
+  return image_height - insetHeight(image_height) - insetMargin(image_height);
+}
+
 void drawSpinInset(Image& image, Overlay& font, std::span<const std::array<float, 2>> history,
                    double duration, double range) {
   char label[64];
   std::snprintf(label, sizeof label, "n ±%g rad/s, 0–%g s", range, duration);
   const int pad = font.lineHeight() / 2;
-  const int margin = image.height / 40;
+  const int margin = insetMargin(image.height);
   // Three tenths of the width, and at least its title's (a narrow frame's text is relatively
   // wider), within the frame.
   const int w = std::min(std::max(image.width * 3 / 10, font.width(label) + 2 * pad),
                          image.width - 2 * margin);
-  const int h = image.height * 2 / 9;
-  const int x0 = image.width - w - margin, y0 = image.height - h - margin;
+  const int h = insetHeight(image.height);
+  const int x0 = image.width - w - margin, y0 = insetTop(image.height);
   fillRect(image, x0, y0, x0 + w, y0 + h, {255, 255, 255, 200});
   const float left = x0 + pad, right = x0 + w - pad;
   // The curve's band starts below the title's descenders (the title's line ends at

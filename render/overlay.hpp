@@ -45,6 +45,9 @@ void fillRect(Image& image, int x0, int y0, int x1, int y1, Rgba color);
 /// An anti-aliased line about `width` pixels wide.
 void drawLine(Image& image, float x0, float y0, float x1, float y1, float width, Rgba color);
 
+/// The top row of the inset in a frame of this height (it sits in the bottom-right corner).
+int insetTop(int image_height);
+
 /// The inset: n(t) so far against a fixed time axis [0, duration] and spin axis ±range.
 void drawSpinInset(Image& image, Overlay& font, std::span<const std::array<float, 2>> history,
                    double duration, double range);

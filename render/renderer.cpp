@@ -31,9 +31,7 @@ Renderer::~Renderer() {
   if (floor_vao_) gl.glDeleteVertexArrays(1, &floor_vao_);
   if (shadow_vbo_) gl.glDeleteBuffers(1, &shadow_vbo_);
   if (shadow_vao_) gl.glDeleteVertexArrays(1, &shadow_vao_);
-  if (cache_fbo_) gl.glDeleteFramebuffers(1, &cache_fbo_);
-  if (cache_color_) gl.glDeleteRenderbuffers(1, &cache_color_);
-  if (cache_depth_) gl.glDeleteRenderbuffers(1, &cache_depth_);
+  deleteFramebuffer(gl, cache_);
   if (points_program_) gl.glDeleteProgram(points_program_);
   if (floor_program_) gl.glDeleteProgram(floor_program_);
 }
@@ -111,17 +109,7 @@ std::string Renderer::init() {
   gl.glEnableVertexAttribArray(0);
 
   // The cached floor's own framebuffer, of the frame's size and formats (so a blit copies it).
-  gl.glGenRenderbuffers(1, &cache_color_);
-  gl.glBindRenderbuffer(GL_RENDERBUFFER, cache_color_);
-  gl.glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, settings_.width, settings_.height);
-  gl.glGenRenderbuffers(1, &cache_depth_);
-  gl.glBindRenderbuffer(GL_RENDERBUFFER, cache_depth_);
-  gl.glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, settings_.width, settings_.height);
-  gl.glGenFramebuffers(1, &cache_fbo_);
-  gl.glBindFramebuffer(GL_FRAMEBUFFER, cache_fbo_);
-  gl.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, cache_color_);
-  gl.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, cache_depth_);
-  const bool complete = gl.glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+  const bool complete = makeFramebuffer(gl, settings_.width, settings_.height, cache_);
   gl.glBindFramebuffer(GL_FRAMEBUFFER, context_->framebuffer());
   if (!complete) return "the floor's framebuffer object is incomplete";
 
@@ -203,14 +191,14 @@ void Renderer::copyCachedFloor(const Camera& camera, const FrameInput& frame,
                     cache_camera_.fog_near == camera.fog_near &&
                     cache_camera_.fog_far == camera.fog_far && cache_center_ == center;
   if (!same) {
-    gl.glBindFramebuffer(GL_FRAMEBUFFER, cache_fbo_);
+    gl.glBindFramebuffer(GL_FRAMEBUFFER, cache_.fbo);
     gl.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     drawFloor(camera, frame, center, false, false);
     cache_camera_ = camera;
     cache_center_ = center;
     cache_valid_ = true;
   }
-  gl.glBindFramebuffer(GL_READ_FRAMEBUFFER, cache_fbo_);
+  gl.glBindFramebuffer(GL_READ_FRAMEBUFFER, cache_.fbo);
   gl.glBindFramebuffer(GL_DRAW_FRAMEBUFFER, context_->framebuffer());
   gl.glBlitFramebuffer(0, 0, settings_.width, settings_.height, 0, 0, settings_.width,
                        settings_.height, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
@@ -245,18 +233,24 @@ bool Renderer::readoutsShown() const {
          (settings_.readouts || !settings_.title.empty());
 }
 
-int Renderer::readoutBandHeight() const {
-  // As drawReadouts lays them out at most: the title's baseline at two lines, the read-outs
-  // 1½ lines below it on two lines, and half a line under the last for the descenders.
+Renderer::ReadoutLayout Renderer::readoutLayout() const {
+  // The title's baseline two lines down, the read-outs 1½ lines below it (or where it would
+  // be), their second line (narrow frames) 1¼ lines lower, and half a line for descenders.
   const int line = font_.lineHeight();
-  return line * 2 + line * 3 / 2 + line * 5 / 4 + line / 2;
+  ReadoutLayout l;
+  l.x = line;
+  l.title = line * 2;
+  l.first = l.title + (settings_.title.empty() ? 0 : line * 3 / 2);
+  l.second = l.first + line * 5 / 4;
+  l.band = line * 2 + line * 3 / 2 + line * 5 / 4 + line / 2;  // with a title and two lines
+  return l;
 }
 
 void Renderer::drawReadouts(const FrameInput& frame, Image& out) {
   if (!readoutsShown()) return;
-  const int line = font_.lineHeight();
-  const int x = line, y = line * 2;
-  if (!settings_.title.empty()) font_.text(out, x, y, settings_.title, {30, 30, 30, 255});
+  const ReadoutLayout layout = readoutLayout();
+  const int x = layout.x;
+  if (!settings_.title.empty()) font_.text(out, x, layout.title, settings_.title, {30, 30, 30, 255});
   if (!settings_.readouts) return;
   char time[32], spin_text[96];
   // A spin that rounds to zero is shown as +0.00, not -0.00.
@@ -265,12 +259,11 @@ void Renderer::drawReadouts(const FrameInput& frame, Image& out) {
   std::snprintf(spin_text, sizeof spin_text, "spin n = %+6.2f rad/s  %s", spin,
                 spin > 0.05 ? "(counter-clockwise)" : spin < -0.05 ? "(clockwise)" : "");
   const std::string one_line = std::string(time) + "    " + spin_text;
-  const int at = y + (settings_.title.empty() ? 0 : line * 3 / 2);
   if (x + font_.width(one_line) <= settings_.width - x) {
-    font_.text(out, x, at, one_line, {30, 30, 30, 255});
+    font_.text(out, x, layout.first, one_line, {30, 30, 30, 255});
   } else {  // a narrow frame: time and spin on a line each
-    font_.text(out, x, at, time, {30, 30, 30, 255});
-    font_.text(out, x, at + line * 5 / 4, spin_text, {30, 30, 30, 255});
+    font_.text(out, x, layout.first, time, {30, 30, 30, 255});
+    font_.text(out, x, layout.second, spin_text, {30, 30, 30, 255});
   }
   drawSpinInset(out, font_, frame.history, settings_.duration, settings_.spin_range);
 }
@@ -291,10 +284,10 @@ void Renderer::draw(const FrameInput& frame, Image& out) {
   // (The same whether or not this frame draws them, so that a frame and its --no-readouts or
   // --transparent twin show the body alike.)
   if (aspect < 1.5f && std::min(settings_.width, settings_.height) >= kSmallestSideForReadouts) {
-    // Between the read-outs at the top and the inset at the bottom (2/9 of the height and a
-    // 40th under it; overlay.cpp), with a pixel to spare.
-    const float top = static_cast<float>(readoutBandHeight()) / settings_.height;
-    const float bottom = 2.0f / 9 + 1.0f / 40 + 1.0f / settings_.height;
+    // Between the read-outs at the top and the inset at the bottom, with a pixel to spare.
+    const float top = static_cast<float>(readoutLayout().band) / settings_.height;
+    const float bottom =
+        static_cast<float>(settings_.height - insetTop(settings_.height) + 1) / settings_.height;
     Eigen::Matrix4f between = Eigen::Matrix4f::Identity();
     between(0, 0) = between(1, 1) = 1 - top - bottom;
     between(1, 3) = bottom - top;  // in clip coordinates (× w), so perspective too

@@ -48,7 +48,11 @@ class Renderer {
   void drawPoints(const Camera& camera, const FrameInput& frame);
   void drawReadouts(const FrameInput& frame, Image& out);
   bool readoutsShown() const;
-  int readoutBandHeight() const;  ///< pixels from the top that the title and read-outs take
+  /// Baselines of the title and of the read-outs' first and (in a narrow frame) second line.
+  struct ReadoutLayout {
+    int x, title, first, second, band;  ///< band: pixels from the top the text takes at most
+  };
+  ReadoutLayout readoutLayout() const;
 
   RenderSettings settings_;
   BodyPoints body_;
@@ -58,7 +62,7 @@ class Renderer {
   GLuint points_vao_ = 0, points_vbo_ = 0, floor_vao_ = 0, floor_vbo_ = 0;
   GLsizei point_count_ = 0;
   GLuint shadow_vao_ = 0, shadow_vbo_ = 0;
-  GLuint cache_fbo_ = 0, cache_color_ = 0, cache_depth_ = 0;
+  Framebuffer cache_;  ///< the fixed views' floor, drawn once (copyCachedFloor)
   bool cache_valid_ = false;
   Camera cache_camera_;  ///< the camera the cached floor was drawn with
   Eigen::Vector2f cache_center_;
