@@ -7,12 +7,13 @@
 #include <filesystem>
 #include <mutex>
 
+#include "render/yuv.hpp"
+
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
 #include <libavutil/imgutils.h>
 #include <libavutil/opt.h>
-#include <libswscale/swscale.h>
 }
 
 namespace render {
@@ -47,14 +48,13 @@ struct VideoEncoder::State {
   AVFormatContext* format = nullptr;
   AVCodecContext* codec = nullptr;
   AVStream* stream = nullptr;
-  SwsContext* sws = nullptr;
+  Yuv420Converter converter;
   AVFrame* frame = nullptr;
   AVPacket* packet = nullptr;
   long long count = 0;
   bool header_written = false, finished = false;
 
   ~State() {
-    if (sws) sws_freeContext(sws);
     av_frame_free(&frame);
     av_packet_free(&packet);
     avcodec_free_context(&codec);
@@ -135,6 +135,7 @@ rb::Result<std::unique_ptr<VideoEncoder>> VideoEncoder::open(
   c->color_trc = AVCOL_TRC_BT709;
   c->colorspace = AVCOL_SPC_BT709;
   c->color_range = AVCOL_RANGE_MPEG;
+  c->chroma_sample_location = AVCHROMA_LOC_LEFT;  // as render/yuv.cpp samples it
   if (s.format->oformat->flags & AVFMT_GLOBALHEADER) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
   av_opt_set(c->priv_data, "preset", settings.preset.c_str(), 0);
   av_opt_set(c->priv_data, "crf", std::to_string(settings.crf).c_str(), 0);
@@ -152,12 +153,6 @@ rb::Result<std::unique_ptr<VideoEncoder>> VideoEncoder::open(
   if (r < 0) return rb::Error{"", s.error("cannot write the MP4 header", r)};
   s.header_written = true;
 
-  // RGBA (full range) → yuv420p, BT.709 matrix, limited range.
-  s.sws = sws_getContext(settings.width, settings.height, AV_PIX_FMT_RGBA, settings.width,
-                         settings.height, AV_PIX_FMT_YUV420P, SWS_BICUBIC, nullptr, nullptr,
-                         nullptr);
-  const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
-  sws_setColorspaceDetails(s.sws, bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16);
   s.frame = av_frame_alloc();
   s.frame->format = AV_PIX_FMT_YUV420P;
   s.frame->width = settings.width;
@@ -166,6 +161,7 @@ rb::Result<std::unique_ptr<VideoEncoder>> VideoEncoder::open(
   s.frame->color_trc = AVCOL_TRC_BT709;
   s.frame->colorspace = AVCOL_SPC_BT709;
   s.frame->color_range = AVCOL_RANGE_MPEG;
+  s.frame->chroma_location = AVCHROMA_LOC_LEFT;
   if (av_frame_get_buffer(s.frame, 0) < 0) return rb::Error{"", s.error("out of memory")};
   s.packet = av_packet_alloc();
   return encoder;
@@ -176,9 +172,8 @@ rb::Status VideoEncoder::add(const Image& image) {
   if (image.width != s.settings.width || image.height != s.settings.height)
     return rb::Status::fail(s.error("frame size does not match the video"));
   if (av_frame_make_writable(s.frame) < 0) return rb::Status::fail(s.error("out of memory"));
-  const uint8_t* source[1] = {image.rgba.data()};
-  const int stride[1] = {4 * image.width};
-  sws_scale(s.sws, source, stride, 0, image.height, s.frame->data, s.frame->linesize);
+  AVFrame* f = s.frame;
+  s.converter.convert(image, {f->data[0], f->data[1], f->data[2], f->linesize[0], f->linesize[1]});
   s.frame->pts = s.count++;
   if (int r = avcodec_send_frame(s.codec, s.frame); r < 0) return rb::Status::fail(s.error("encoding failed", r));
   if (auto e = s.drain()) return rb::Status::fail(*e);

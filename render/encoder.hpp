@@ -1,6 +1,6 @@
-// H.264 in MP4 through libavcodec / libavformat / libswscale (SPEC "Rendering and video"):
-// yuv420p, BT.709 tagged, moov atom first (+faststart), a fixed thread count for repeatable
-// bytes. Written under a temporary name and renamed into place by finish().
+// H.264 in MP4 through libavcodec / libavformat (SPEC "Rendering and video"): RGBA frames
+// converted to yuv420p by render/yuv.hpp, BT.709 tagged, moov atom first (+faststart), a
+// fixed thread count for repeatable bytes. Written under a temporary name and renamed into place by finish().
 #pragma once
 
 #include <memory>
