@@ -336,22 +336,24 @@ GLuint compile(const GlApi& gl, GLenum type, const std::string& path) {
 
 }  // namespace
 
-GLuint loadProgram(const GlApi& gl, const std::string& vertex_file, const std::string& fragment_file) {
+GLuint loadProgram(const GlApi& gl, const std::string& vertex_file,
+                   const std::vector<std::string>& fragment_files) {
   const std::string dir = assetsDir() + "/shaders/";
-  const GLuint vertex = compile(gl, GL_VERTEX_SHADER, dir + vertex_file);
-  const GLuint fragment = compile(gl, GL_FRAGMENT_SHADER, dir + fragment_file);
+  std::vector<GLuint> shaders = {compile(gl, GL_VERTEX_SHADER, dir + vertex_file)};
+  for (const std::string& file : fragment_files)
+    shaders.push_back(compile(gl, GL_FRAGMENT_SHADER, dir + file));
   const GLuint program = gl.glCreateProgram();
-  gl.glAttachShader(program, vertex);
-  gl.glAttachShader(program, fragment);
+  for (GLuint shader : shaders) gl.glAttachShader(program, shader);
   gl.glLinkProgram(program);
-  gl.glDeleteShader(vertex);
-  gl.glDeleteShader(fragment);
+  for (GLuint shader : shaders) gl.glDeleteShader(shader);
   GLint ok = 0;
   gl.glGetProgramiv(program, GL_LINK_STATUS, &ok);
   if (!ok) {
     char log[2048];
     gl.glGetProgramInfoLog(program, sizeof log, nullptr, log);
-    throw std::runtime_error(vertex_file + " + " + fragment_file + ": " + log);
+    std::string names = vertex_file;
+    for (const std::string& file : fragment_files) names += " + " + file;
+    throw std::runtime_error(names + ": " + log);
   }
   return program;
 }

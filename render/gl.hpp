@@ -15,6 +15,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "render/frame.hpp"
 #include "util/result.hpp"
@@ -34,6 +35,7 @@ namespace render {
   X(glGetProgramiv) X(glGetShaderInfoLog) X(glGetShaderiv) X(glGetString)                   \
   X(glGetUniformLocation) X(glLinkProgram) X(glPixelStorei) X(glReadPixels)                 \
   X(glRenderbufferStorage) X(glShaderSource) X(glUniform1f) X(glUniform2f) X(glUniform3fv)  \
+  X(glUniform4f)                                                                             \
   X(glUniformMatrix4fv) X(glUseProgram) X(glVertexAttribPointer) X(glViewport)              \
   X(glBlendFuncSeparate) X(glBlitFramebuffer) X(glBufferSubData) X(glPointParameteri)
 
@@ -107,9 +109,11 @@ class CurrentContext {
   bool ok_ = false;
 };
 
-/// Compiles and links a program from two files under the assets folder, with the current
-/// context's functions; throws on failure with the compiler's log.
-GLuint loadProgram(const GlApi& gl, const std::string& vertex_file, const std::string& fragment_file);
+/// Compiles and links a program from files under the assets folder: a vertex shader and one
+/// or more fragment shader parts, with the current context's functions; throws on failure
+/// with the compiler's log.
+GLuint loadProgram(const GlApi& gl, const std::string& vertex_file,
+                   const std::vector<std::string>& fragment_files);
 
 /// The assets folder (shaders/, fonts.txt): $RATTLEBACK_ASSETS when set; else, found from the
 /// executable's own folder (/proc/self/exe), <exe dir>/../share/rattleback (the installed

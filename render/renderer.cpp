@@ -34,6 +34,7 @@ Renderer::~Renderer() {
   deleteFramebuffer(gl, cache_);
   if (points_program_) gl.glDeleteProgram(points_program_);
   if (floor_program_) gl.glDeleteProgram(floor_program_);
+  if (shadow_program_) gl.glDeleteProgram(shadow_program_);
 }
 
 rb::Result<std::unique_ptr<Renderer>> Renderer::create(const RenderSettings& settings,
@@ -55,8 +56,9 @@ std::string Renderer::init() {
   if (!current.ok()) return "cannot make the OpenGL context current";
   const GlApi& gl = context_->api();
   try {
-    points_program_ = loadProgram(gl, "points.vert", "points.frag");
-    floor_program_ = loadProgram(gl, "floor.vert", "floor.frag");
+    points_program_ = loadProgram(gl, "points.vert", {"points.frag"});
+    floor_program_ = loadProgram(gl, "floor.vert", {"floor.frag", "floor_common.frag"});
+    shadow_program_ = loadProgram(gl, "floor.vert", {"shadow.frag", "floor_common.frag"});
   } catch (const std::exception& e) {
     return e.what();
   }
@@ -117,14 +119,19 @@ std::string Renderer::init() {
   gl.glEnable(GL_PROGRAM_POINT_SIZE);
   gl.glPointParameteri(GL_POINT_SPRITE_COORD_ORIGIN, GL_LOWER_LEFT);
   gl.glEnable(GL_BLEND);
-  // Colour blends by the source's alpha; alpha accumulates (a + (1 − a)·dst), so a shadow over
-  // a transparent background keeps its own alpha.
-  gl.glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  setBlending();
   return "";
 }
 
-void Renderer::drawFloor(const Camera& camera, const FrameInput& frame,
-                         const Eigen::Vector2f& center, bool shadow, bool shadow_only) {
+void Renderer::setBlending() {
+  // Colour blends by the source's alpha; alpha accumulates (a + (1 − a)·dst), so a sphere's
+  // smoothed edge over a transparent background keeps its own alpha.
+  context_->api().glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE,
+                                      GL_ONE_MINUS_SRC_ALPHA);
+}
+
+void Renderer::useFloorProgram(GLuint program, const Camera& camera, const FrameInput& frame,
+                               const Eigen::Vector2f& center, bool shadow) {
   const float size = half_extent_.maxCoeff();
   // A checker square of 1, 2 or 5 × 10ⁿ m, about a fifth of the body's half length.
   const float raw = size / 5;
@@ -132,39 +139,51 @@ void Renderer::drawFloor(const Camera& camera, const FrameInput& frame,
   float tile = raw / decade < 2 ? decade : raw / decade < 5 ? 2 * decade : 5 * decade;
   // Front and side see the floor at 10°: squares 4× deeper show as bands, not stripes.
   if (camera.fog_far > 0) tile *= 4;
-  const Eigen::Matrix3f R = frame.orientation.cast<float>().toRotationMatrix();
-  Eigen::Vector2f axis = R.col(1).head<2>();
-  axis = axis.norm() > 1e-6f ? axis.normalized() : Eigen::Vector2f(0, 1);
+  const Eigen::Vector2f axis = longAxisOnFloor(frame);
   const Eigen::Vector2f position = frame.position_world.head<2>().cast<float>();
 
   const GlApi& gl = context_->api();
-  gl.glUseProgram(floor_program_);
-  setMatrix(gl, floor_program_, "u_view", camera.view);
-  setMatrix(gl, floor_program_, "u_proj", camera.proj);
-  gl.glUniform1f(gl.glGetUniformLocation(floor_program_, "u_tile"), tile);
-  gl.glUniform2f(gl.glGetUniformLocation(floor_program_, "u_center"), center.x(), center.y());
-  gl.glUniform1f(gl.glGetUniformLocation(floor_program_, "u_fade_near"), 3 * size);
-  gl.glUniform1f(gl.glGetUniformLocation(floor_program_, "u_fade_far"), 12 * size);
-  gl.glUniform2f(gl.glGetUniformLocation(floor_program_, "u_depth_direction"),
-                 camera.depth_direction.x(), camera.depth_direction.y());
-  gl.glUniform1f(gl.glGetUniformLocation(floor_program_, "u_fog_near"), camera.fog_near);
-  gl.glUniform1f(gl.glGetUniformLocation(floor_program_, "u_fog_far"), camera.fog_far);
-  gl.glUniform3fv(gl.glGetUniformLocation(floor_program_, "u_background"), 1, kBackground.data());
-  gl.glUniform2f(gl.glGetUniformLocation(floor_program_, "u_shadow_center"), position.x(), position.y());
-  gl.glUniform2f(gl.glGetUniformLocation(floor_program_, "u_shadow_axis"), axis.x(), axis.y());
-  gl.glUniform2f(gl.glGetUniformLocation(floor_program_, "u_shadow_half"), body_.footprint_half.x(),
-              body_.footprint_half.y());
-  gl.glUniform1f(gl.glGetUniformLocation(floor_program_, "u_shadow_strength"), shadow ? 0.45f : 0.0f);
-  gl.glUniform1f(gl.glGetUniformLocation(floor_program_, "u_transparent"),
-                 settings_.transparent ? 1.0f : 0.0f);
-  if (!shadow_only) {
-    gl.glBindVertexArray(floor_vao_);
-    gl.glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-    return;
-  }
-  // The shader's shadow is zero beyond 1.15 of the half extents (floor.frag): a quad out to
+  gl.glUseProgram(program);
+  auto at = [&](const char* name) { return gl.glGetUniformLocation(program, name); };
+  setMatrix(gl, program, "u_view", camera.view);
+  setMatrix(gl, program, "u_proj", camera.proj);
+  gl.glUniform1f(at("u_tile"), tile);
+  gl.glUniform2f(at("u_center"), center.x(), center.y());
+  gl.glUniform1f(at("u_fade_near"), 3 * size);
+  gl.glUniform1f(at("u_fade_far"), 12 * size);
+  gl.glUniform2f(at("u_depth_direction"), camera.depth_direction.x(), camera.depth_direction.y());
+  gl.glUniform1f(at("u_fog_near"), camera.fog_near);
+  gl.glUniform1f(at("u_fog_far"), camera.fog_far);
+  gl.glUniform3fv(at("u_background"), 1, kBackground.data());
+  gl.glUniform2f(at("u_shadow_center"), position.x(), position.y());
+  gl.glUniform2f(at("u_shadow_axis"), axis.x(), axis.y());
+  gl.glUniform2f(at("u_shadow_half"), body_.footprint_half.x(), body_.footprint_half.y());
+  gl.glUniform1f(at("u_shadow_strength"), shadow ? 0.45f : 0.0f);
+  gl.glUniform1f(at("u_transparent"), settings_.transparent ? 1.0f : 0.0f);
+}
+
+Eigen::Vector2f Renderer::longAxisOnFloor(const FrameInput& frame) {
+  const Eigen::Vector2f axis =
+      frame.orientation.cast<float>().toRotationMatrix().col(1).head<2>();  // the long axis
+  return axis.norm() > 1e-6f ? axis.normalized() : Eigen::Vector2f(0, 1);
+}
+
+void Renderer::drawFloor(const Camera& camera, const FrameInput& frame,
+                         const Eigen::Vector2f& center, bool shadow) {
+  useFloorProgram(floor_program_, camera, frame, center, shadow);
+  const GlApi& gl = context_->api();
+  gl.glBindVertexArray(floor_vao_);
+  gl.glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+}
+
+void Renderer::drawShadow(const Camera& camera, const FrameInput& frame,
+                          const Eigen::Vector2f& center) {
+  useFloorProgram(shadow_program_, camera, frame, center, true);
+  // The shadow is zero beyond 1.15 of the half extents (floor_common.frag): a quad out to
   // 1.25 of them holds all of it. It is drawn without the depth test over the copied floor
-  // (whose depth it shares), each pixel as the whole floor's pass would have drawn it.
+  // (whose depth it shares), blended as shadow.frag says.
+  const Eigen::Vector2f axis = longAxisOnFloor(frame);
+  const Eigen::Vector2f position = frame.position_world.head<2>().cast<float>();
   const Eigen::Vector2f across(axis.y(), -axis.x());
   const Eigen::Vector2f a = 1.25f * body_.footprint_half.x() * across;
   const Eigen::Vector2f b = 1.25f * body_.footprint_half.y() * axis;
@@ -172,11 +191,14 @@ void Renderer::drawFloor(const Camera& camera, const FrameInput& frame,
                                       position + a + b};
   float quad[8];
   for (int i = 0; i < 4; ++i) quad[2 * i] = corners[i].x(), quad[2 * i + 1] = corners[i].y();
+  const GlApi& gl = context_->api();
   gl.glBindVertexArray(shadow_vao_);
   gl.glBindBuffer(GL_ARRAY_BUFFER, shadow_vbo_);
   gl.glBufferSubData(GL_ARRAY_BUFFER, 0, sizeof quad, quad);
   gl.glDisable(GL_DEPTH_TEST);
+  gl.glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   gl.glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  setBlending();
   gl.glEnable(GL_DEPTH_TEST);
 }
 
@@ -193,7 +215,7 @@ void Renderer::copyCachedFloor(const Camera& camera, const FrameInput& frame,
   if (!same) {
     gl.glBindFramebuffer(GL_FRAMEBUFFER, cache_.fbo);
     gl.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    drawFloor(camera, frame, center, false, false);
+    drawFloor(camera, frame, center, false);
     cache_camera_ = camera;
     cache_center_ = center;
     cache_valid_ = true;
@@ -222,6 +244,11 @@ void Renderer::drawPoints(const Camera& camera, const FrameInput& frame) {
   gl.glUniform1f(gl.glGetUniformLocation(points_program_, "u_viewport_h"),
               static_cast<float>(settings_.height));
   gl.glUniform3fv(gl.glGetUniformLocation(points_program_, "u_light_view"), 1, light_view.data());
+  const Eigen::Vector3f half_view = (light_view + Eigen::Vector3f::UnitZ()).normalized();
+  gl.glUniform3fv(gl.glGetUniformLocation(points_program_, "u_half_view"), 1, half_view.data());
+  const Eigen::Matrix4f& P = camera.proj;
+  gl.glUniform4f(gl.glGetUniformLocation(points_program_, "u_depth"), P(2, 2), P(2, 3), P(3, 2),
+                 P(3, 3));
   gl.glBindVertexArray(points_vao_);
   gl.glDrawArrays(GL_POINTS, 0, point_count_);
 }
@@ -273,9 +300,7 @@ void Renderer::draw(const FrameInput& frame, Image& out) {
   const Eigen::Vector3f middle(position.x(), position.y(), position.z() + middle_height_);
   const float aspect = static_cast<float>(settings_.width) / settings_.height;
   const bool follow = settings_.view == View::Follow;
-  Eigen::Vector2f heading =
-      frame.orientation.cast<float>().toRotationMatrix().col(1).head<2>();  // the long axis
-  heading = heading.norm() > 1e-6f ? heading.normalized() : Eigen::Vector2f(0, 1);
+  const Eigen::Vector2f heading = longAxisOnFloor(frame);
   Camera camera = follow ? chaseCamera(middle, heading, radius_, aspect)
                          : fixedCamera(settings_.view, frame.framing, half_extent_.z(), aspect);
   // In a frame narrower than 3:2 the body reaches the corners where the title and read-outs
@@ -306,10 +331,10 @@ void Renderer::draw(const FrameInput& frame, Image& out) {
     gl.glClearColor(kBackground.x(), kBackground.y(), kBackground.z(), 1);
   if (follow) {  // the camera moves with the body: the whole floor, every frame
     gl.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    drawFloor(camera, frame, center, true, false);
+    drawFloor(camera, frame, center, true);
   } else {
     copyCachedFloor(camera, frame, center);  // (clear colour set above, for the cache's clear)
-    drawFloor(camera, frame, center, true, true);
+    drawShadow(camera, frame, center);
   }
   drawPoints(camera, frame);
   out.width = settings_.width;

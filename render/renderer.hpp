@@ -36,10 +36,19 @@ class Renderer {
  private:
   Renderer(const RenderSettings& settings, const BodyPoints& body);
   std::string init();
-  /// The floor under `camera`, with the body's shadow when `shadow`; over `shadow_only` the
-  /// quad around the shadow alone (drawn over the cached floor), else the whole floor.
+  /// The whole floor under `camera`, with the body's shadow when `shadow`.
   void drawFloor(const Camera& camera, const FrameInput& frame, const Eigen::Vector2f& center,
-                 bool shadow, bool shadow_only);
+                 bool shadow);
+  /// The body's shadow alone, over the cached floor: a quad around it (shadow.frag).
+  void drawShadow(const Camera& camera, const FrameInput& frame, const Eigen::Vector2f& center);
+  /// Makes `program` (floor.frag's or shadow.frag's) current with the floor's uniforms.
+  void useFloorProgram(GLuint program, const Camera& camera, const FrameInput& frame,
+                       const Eigen::Vector2f& center, bool shadow);
+  /// The body's long axis on the floor, a unit vector (the shadow's and the chase camera's
+  /// heading).
+  static Eigen::Vector2f longAxisOnFloor(const FrameInput& frame);
+  /// The blending of every pass but the shadow's.
+  void setBlending();
   /// The fixed views' floor without the shadow, drawn once into its own FBO and copied into
   /// each frame: the same for every frame of a run, and most of the drawing's cost (its
   /// shader runs at every pixel). Redrawn whenever the camera or the centre changes, so a
@@ -58,7 +67,7 @@ class Renderer {
   BodyPoints body_;
   std::unique_ptr<GlContext> context_;
   Overlay font_;
-  GLuint points_program_ = 0, floor_program_ = 0;
+  GLuint points_program_ = 0, floor_program_ = 0, shadow_program_ = 0;
   GLuint points_vao_ = 0, points_vbo_ = 0, floor_vao_ = 0, floor_vbo_ = 0;
   GLsizei point_count_ = 0;
   GLuint shadow_vao_ = 0, shadow_vbo_ = 0;
