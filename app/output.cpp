@@ -22,14 +22,6 @@ std::array<std::atomic<bool>, kMaxTemporaries> temporary_used{};
 
 }  // namespace
 
-std::string temporaryPath(const std::string& path) {
-  const fs::path p(path);
-  std::string name = ".";
-  name += p.filename().string();
-  name += ".part-" + std::to_string(::getpid());
-  return (p.parent_path() / name).string();
-}
-
 rb::Status makeParentFolder(const std::string& path) {
   const fs::path parent = fs::path(path).parent_path();
   if (parent.empty()) return {};
@@ -63,11 +55,12 @@ void removeTemporaryFilesNow() {
     if (temporary_used[i].load()) ::unlink(temporaries[i]);
 }
 
-AtomicOutput::AtomicOutput(std::string path, std::string temp)
-    : path_(std::move(path)), temp_(std::move(temp)) {}
+AtomicOutput::AtomicOutput(std::string path, rb::OutputPlace place)
+    : path_(std::move(path)), target_(std::move(place.target)), temp_(std::move(place.temporary)) {}
 
 AtomicOutput::AtomicOutput(AtomicOutput&& other) noexcept
     : path_(std::move(other.path_)),
+      target_(std::move(other.target_)),
       temp_(std::move(other.temp_)),
       out_(std::move(other.out_)),
       done_(other.done_) {
@@ -78,16 +71,15 @@ rb::Result<AtomicOutput> AtomicOutput::open(const std::string& path) {
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
   if (fs::is_directory(status)) return rb::Error{"", path + ": is a folder, not a file"};
-  if (auto made = makeParentFolder(path); !made) return made.error();
-  // A device or pipe (/dev/stdout, /dev/full) is written in place: it cannot be renamed over.
-  const bool special = fs::exists(status) && !fs::is_regular_file(status);
-  std::string temp = special ? path : temporaryPath(path);
-  AtomicOutput file(path, temp);
-  file.done_ = special;
+  rb::OutputPlace place = rb::outputPlace(path);
+  if (auto made = makeParentFolder(place.target); !made) return made.error();
+  const bool in_place = place.temporary.empty();
+  AtomicOutput file(path, std::move(place));
+  file.done_ = in_place;
   errno = 0;
-  file.out_.open(temp, std::ios::binary | std::ios::trunc);
+  file.out_.open(in_place ? file.target_ : file.temp_, std::ios::binary | std::ios::trunc);
   if (!file.out_) return rb::Error{"", path + ": cannot write: " + std::strerror(errno ? errno : EACCES)};
-  if (!special) registerTemporary(temp);
+  if (!in_place) registerTemporary(file.temp_);
   return file;
 }
 
@@ -106,7 +98,7 @@ rb::Status AtomicOutput::commit() {
   }
   if (done_) return {};
   std::error_code ec;
-  fs::rename(temp_, path_, ec);
+  fs::rename(temp_, target_, ec);
   done_ = true;
   unregisterTemporary(temp_);
   if (ec) {

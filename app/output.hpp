@@ -1,17 +1,15 @@
 // Output files that appear whole or not at all: written under a temporary name beside the
-// target (".NAME.part-PID": hidden, and not ending in the output's extension, so no `*.csv` or
-// `*.mp4` glob picks it up) and renamed over it only once everything is written and flushed.
+// file they replace and renamed over it only once everything is written and flushed
+// (util/output_place.hpp says where, for every writer).
 #pragma once
 
 #include <fstream>
 #include <string>
 
+#include "util/output_place.hpp"
 #include "util/result.hpp"
 
 namespace app {
-
-/// The temporary name beside `path` used while writing it.
-std::string temporaryPath(const std::string& path);
 
 /// Creates the folder `path` will be written into, when missing. The same rule for a default
 /// output (out/…) and one given with -o; an error line naming the folder and the system's
@@ -37,8 +35,10 @@ class AtomicOutput {
   rb::Status commit();
 
  private:
-  AtomicOutput(std::string path, std::string temp);
-  std::string path_, temp_;
+  AtomicOutput(std::string path, rb::OutputPlace place);
+  std::string path_;    ///< as given, for messages
+  std::string target_;  ///< the file replaced (through links)
+  std::string temp_;    ///< "" when written in place
   std::ofstream out_;
   bool done_ = false;
 };

@@ -91,8 +91,11 @@ rb::Status checkPlotFolder(const std::string& dir) {
 rb::Status checkPlotFile(const std::string& png) {
   std::error_code ec;
   if (fs::is_directory(png, ec)) return rb::Status::fail(png + ": --plot is a folder, not a file");
-  if (auto made = makeParentFolder(png); !made) return made;
-  const fs::path dir = fs::absolute(png).parent_path();
+  const rb::OutputPlace place = rb::outputPlace(png);
+  if (place.temporary.empty())
+    return rb::Status::fail(png + ": --plot writes a PNG file, not to a device or pipe");
+  if (auto made = makeParentFolder(place.target); !made) return made;
+  const fs::path dir = fs::absolute(place.target).parent_path();
   if (std::string why = probeWrite(dir); !why.empty())
     return rb::Status::fail(png + ": --plot cannot write into " + dir.string() + ": " + why +
                             " (give --plot a path in a folder you can write)");
@@ -108,7 +111,10 @@ template <typename Write>
 rb::Status drawWithGnuplot(const std::string& png, Write write) {
   std::error_code ec;
   if (fs::is_directory(png, ec)) return rb::Status::fail(png + ": is a directory, not a file");
-  const fs::path parent = fs::absolute(png).parent_path();
+  const rb::OutputPlace place = rb::outputPlace(png);
+  if (place.temporary.empty())
+    return rb::Status::fail(png + ": a plot is a PNG file, not written to a device or pipe");
+  const fs::path parent = fs::absolute(place.target).parent_path();
   if (!fs::is_directory(parent, ec)) return rb::Status::fail(png + ": cannot write: the folder does not exist");
   char pattern[] = "/tmp/rattleback-plot-XXXXXX";
   if (!mkdtemp(pattern)) return rb::Status::fail(png + ": cannot make a temporary folder: " + std::strerror(errno));
@@ -120,8 +126,7 @@ rb::Status drawWithGnuplot(const std::string& png, Write write) {
       fs::remove_all(dir, ignored);
     }
   } cleanup{work};
-  const fs::path temp_png =
-      parent / (std::string(".") + fs::path(png).filename().string() + ".part-" + std::to_string(getpid()));
+  const fs::path temp_png = place.temporary;
   std::ofstream script(work / "plot.gp");
   write(script, work, temp_png);
   script.close();
@@ -135,7 +140,7 @@ rb::Status drawWithGnuplot(const std::string& png, Write write) {
     fs::remove(temp_png, ec);
     return rb::Status::fail(png + ": gnuplot failed: " + firstLine(work / "gnuplot.log"));
   }
-  fs::rename(temp_png, png, ec);
+  fs::rename(temp_png, place.target, ec);
   if (ec) {
     fs::remove(temp_png, ec);
     return rb::Status::fail(png + ": cannot move the finished plot into place: " + ec.message());

@@ -8,6 +8,7 @@
 #include <mutex>
 
 #include "render/yuv.hpp"
+#include "util/output_place.hpp"
 
 extern "C" {
 #include <libavcodec/avcodec.h>
@@ -107,14 +108,8 @@ rb::Result<std::unique_ptr<VideoEncoder>> VideoEncoder::open(
   if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
     return rb::Error{"", path + ": is not a regular file (an MP4 must be written to a file)"};
   // Hidden and not ending in .mp4 (no *.mp4 glob takes a half-written file); the format is
-  // named explicitly below, so the name need not say it.
-  {
-    const std::filesystem::path p(path);
-    std::string name = ".";
-    name += p.filename().string();
-    name += ".part-" + std::to_string(::getpid());
-    s.temp = (p.parent_path() / name).string();
-  }
+  // named explicitly below, so the name need not say it. Through links (util/output_place.hpp).
+  s.temp = rb::outputPlace(path).temporary;
 
   av_log_set_level(AV_LOG_ERROR);
   av_log_set_callback(keepLog);
@@ -188,7 +183,7 @@ rb::Status VideoEncoder::finish(const std::string& final_path) {
   if (int r = av_write_trailer(s.format); r < 0) return rb::Status::fail(s.error("writing failed", r));
   if (int r = avio_closep(&s.format->pb); r < 0) return rb::Status::fail(s.error("writing failed", r));
   std::error_code ec;
-  std::filesystem::rename(s.temp, s.path, ec);
+  std::filesystem::rename(s.temp, rb::outputPlace(s.path).target, ec);
   if (ec) return rb::Status::fail(s.error("cannot move the finished file into place: " + ec.message()));
   s.finished = true;
   return {};

@@ -1,7 +1,6 @@
 #include "render/image_io.hpp"
 
 #include <png.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -9,6 +8,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+
+#include "util/output_place.hpp"
 
 namespace render {
 
@@ -24,14 +25,9 @@ struct File {
 }  // namespace
 
 rb::Status writePng(const std::string& path, const Image& image) {
-  std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  const bool special = std::filesystem::exists(status) && !std::filesystem::is_regular_file(status);
-  const std::filesystem::path target(path);
-  std::string name = ".";
-  name += target.filename().string();
-  name += ".part-" + std::to_string(::getpid());
-  const std::string temp = special ? path : (target.parent_path() / name).string();
+  const rb::OutputPlace place = rb::outputPlace(path);
+  const bool special = place.temporary.empty();  // written in place
+  const std::string temp = special ? place.target : place.temporary;
   auto fail = [&](const std::string& why) -> rb::Status {
     if (!special) std::remove(temp.c_str());
     return rb::Status::fail(path + ": " + why);
@@ -68,7 +64,8 @@ rb::Status writePng(const std::string& path, const Image& image) {
   file.f = nullptr;
   if (!flushed || close_status != 0) return fail(std::string("writing failed: ") + std::strerror(errno));
   if (special) return {};
-  std::filesystem::rename(temp, path, ec);
+  std::error_code ec;
+  std::filesystem::rename(temp, place.target, ec);
   if (ec) return fail("cannot move the finished file into place: " + ec.message());
   return {};
 }

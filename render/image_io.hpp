@@ -9,8 +9,9 @@
 
 namespace render {
 
-/// Writes an RGBA PNG under a temporary name and renames it into place; an error line
-/// naming the file when anything fails (nothing is left behind then).
+/// Writes an RGBA PNG under a temporary name and renames it into place (through links, in
+/// place to a device: util/output_place.hpp); an error line naming the file when anything
+/// fails (nothing is left behind then).
 rb::Status writePng(const std::string& path, const Image& image);
 /// Reads a PNG as RGBA; an error line naming the file when it cannot.
 rb::Status readPng(const std::string& path, Image& image);

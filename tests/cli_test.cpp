@@ -127,6 +127,45 @@ TEST(Cli, UnwritableOutputIsReportedCleanly) {
   }
 }
 
+// -o through a symbolic link writes the file the link leads to and keeps the link: for a table,
+// a still and a video (each written under a temporary name and renamed into place), a link to
+// a file not yet made, and a link to the process's standard output (written in place). Found
+// by a new user: `-o /dev/stdout` with stdout redirected replaced the machine's /dev/stdout
+// link with a file.
+TEST(Cli, OutputsAreWrittenThroughSymbolicLinks) {
+  const fs::path dir = scratchDir();
+  for (const char* name : {"table.csv", "link.csv", "still.png", "link.png", "video.mp4",
+                           "link.mp4", "late.csv", "made/later.csv", "stdout.csv", "piped"})
+    fs::remove(dir / name);
+  fs::remove(dir / "made");
+  std::ofstream(dir / "table.csv") << "old\n";
+  fs::create_symlink("table.csv", dir / "link.csv");
+  fs::create_symlink("still.png", dir / "link.png");
+  fs::create_symlink(dir / "video.mp4", dir / "link.mp4");  // absolute, to a file not yet made
+  fs::create_symlink("made/later.csv", dir / "late.csv");   // into a folder not yet made
+  fs::create_symlink("/proc/self/fd/1", dir / "stdout.csv");
+  const std::string run = scene("seed-reversed") + " --duration 0.1 --rate 100 -q -o ";
+  ASSERT_EQ(rattleback("simulate " + run + (dir / "link.csv").string()).status, 0);
+  ASSERT_EQ(rattleback("simulate " + run + (dir / "late.csv").string()).status, 0);
+  ASSERT_EQ(rattleback("still " + scene("seed-reversed") + " --size 320x180 -q -o " +
+                       (dir / "link.png").string()).status, 0);
+  ASSERT_EQ(rattleback("render " + scene("seed-reversed") + " --duration 0.2 --size 320x180 -q -o " +
+                       (dir / "link.mp4").string()).status, 0);
+  const Result piped = rattleback("simulate " + run + (dir / "stdout.csv").string());
+  ASSERT_EQ(piped.status, 0) << piped.err;
+  for (const char* link : {"link.csv", "link.png", "link.mp4", "late.csv", "stdout.csv"})
+    EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir / link))) << link;
+  for (const char* file : {"table.csv", "still.png", "video.mp4", "made/later.csv"}) {
+    EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(dir / file))) << file;
+    EXPECT_GT(fs::file_size(dir / file), 100u) << file;
+  }
+  // The table through the link to stdout is what the run printed: the header and 11 rows.
+  EXPECT_EQ(piped.out.rfind("t,spin,energy", 0), 0u);
+  EXPECT_EQ(lines(piped.out), 12);
+  for (const auto& entry : fs::directory_iterator(dir))
+    EXPECT_EQ(entry.path().filename().string().find(".part"), std::string::npos);
+}
+
 TEST(Cli, SimulateWritesTelemetryWithUnitsAndSummary) {
   const fs::path csv = tempFile("run.csv");
   const Result r = rattleback("simulate " + scene("seed-reversed") +

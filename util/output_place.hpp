@@ -1,0 +1,50 @@
+// Where an output file goes and how it is written, one rule for every writer (tables, PNGs,
+// plots, videos): written under a temporary name beside the file it replaces (".NAME.part-PID":
+// hidden, and not ending in the output's extension, so no `*.csv` or `*.mp4` glob picks it up)
+// and renamed over it once whole. A symbolic link is written through: the file it leads to is
+// replaced and the link stays (renaming over the link itself would turn it into a file, and
+// `-o /dev/stdout` into a file named /dev/stdout). Devices, pipes and the process's own
+// descriptors (/dev/stdout, /dev/full, /proc/self/fd/N) are written in place: they cannot be
+// renamed over, and a program writing to them is expected to open them as they are.
+#pragma once
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+#include <system_error>
+
+namespace rb {
+
+struct OutputPlace {
+  std::string target;     ///< the file replaced: the path, or the file its links lead to
+  std::string temporary;  ///< written first, then renamed over `target`; "" to write in place
+};
+
+inline OutputPlace outputPlace(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  auto device = [&ec](const fs::path& p) {
+    const std::string s = p.string();
+    return (s.starts_with("/dev/") || s.starts_with("/proc/")) && fs::exists(p, ec);
+  };
+  const fs::file_status status = fs::status(path, ec);  // through links
+  if (device(path) || (fs::exists(status) && !fs::is_regular_file(status) &&
+                       !fs::is_directory(status)))
+    return {path, ""};
+  // Follow the links one by one (a relative link is relative to its own folder), so that one
+  // to a file not yet made leads to where that file will be.
+  fs::path target = path;
+  for (int hop = 0; hop < 40 && fs::is_symlink(fs::symlink_status(target, ec)); ++hop) {
+    const fs::path next = fs::read_symlink(target, ec);
+    if (ec) break;
+    target = next.is_absolute() ? next : target.parent_path() / next;
+    if (device(target)) return {path, ""};  // a link to /dev/stdout or /proc/self/fd/1
+  }
+  std::string name = ".";
+  name += target.filename().string();
+  name += ".part-" + std::to_string(::getpid());
+  return {target.string(), (target.parent_path() / name).string()};
+}
+
+}  // namespace rb
