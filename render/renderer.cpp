@@ -14,6 +14,18 @@ void setMatrix(const GlApi& gl, GLuint program, const char* name, const Eigen::M
   gl.glUniformMatrix4fv(gl.glGetUniformLocation(program, name), 1, GL_FALSE, m.data());
 }
 
+// Blending over a transparent background leaves colour multiplied by alpha (c·a over 0);
+// PNG stores colour unmultiplied ("straight"), and viewers composite it so: divide it out.
+void straightenAlpha(Image& image) {
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+    const int a = image.rgba[i + 3];
+    if (a == 0 || a == 255) continue;
+    for (int k = 0; k < 3; ++k)
+      image.rgba[i + k] =
+          static_cast<unsigned char>(std::min(255, (image.rgba[i + k] * 255 + a / 2) / a));
+  }
+}
+
 }  // namespace
 
 
@@ -341,6 +353,7 @@ void Renderer::draw(const FrameInput& frame, Image& out) {
   out.height = settings_.height;
   out.rgba.resize(static_cast<std::size_t>(out.width) * out.height * 4);
   context_->readPixels(out.rgba.data());
+  if (settings_.transparent) straightenAlpha(out);
   drawReadouts(frame, out);
 }
 
