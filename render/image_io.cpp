@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <vector>
 
 #include "util/output_place.hpp"
 
@@ -71,17 +72,44 @@ rb::Status writePng(const std::string& path, const Image& image) {
 }
 
 rb::Status readPng(const std::string& path, Image& image) {
-  png_image png;
-  std::memset(&png, 0, sizeof png);
-  png.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_file(&png, path.c_str()))
-    return rb::Status::fail(path + ": cannot read the PNG: " + png.message);
-  png.format = PNG_FORMAT_RGBA;
-  image.width = static_cast<int>(png.width);
-  image.height = static_cast<int>(png.height);
-  image.rgba.resize(PNG_IMAGE_SIZE(png));
-  if (!png_image_finish_read(&png, nullptr, image.rgba.data(), 0, nullptr))
-    return rb::Status::fail(path + ": cannot decode the PNG: " + png.message);
+  // The stored values, as they are: libpng's simplified reader would convert them by the
+  // file's gAMA/cHRM chunks (ffmpeg writes them), and a pixel comparison must not.
+  File file;
+  file.f = std::fopen(path.c_str(), "rb");
+  if (!file.f) return rb::Status::fail(path + ": cannot read: " + std::strerror(errno));
+  unsigned char signature[8] = {};
+  if (std::fread(signature, 1, 8, file.f) != 8 || png_sig_cmp(signature, 0, 8))
+    return rb::Status::fail(path + ": cannot read the PNG: not a PNG file");
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  std::vector<png_bytep> rows;  // before setjmp: nothing with a destructor is made after it
+  if (!info) {
+    png_destroy_read_struct(&png, nullptr, nullptr);
+    return rb::Status::fail(path + ": cannot start libpng");
+  }
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_read_struct(&png, &info, nullptr);
+    return rb::Status::fail(path + ": cannot decode the PNG");
+  }
+  png_init_io(png, file.f);
+  png_set_sig_bytes(png, 8);
+  png_read_info(png, info);
+  // Any PNG as 8-bit RGBA: palettes and grey expanded, 16 bits scaled, opaque alpha added.
+  png_set_expand(png);
+  png_set_scale_16(png);
+  png_set_gray_to_rgb(png);
+  png_set_add_alpha(png, 0xFF, PNG_FILLER_AFTER);
+  png_set_interlace_handling(png);
+  png_read_update_info(png, info);
+  image.width = static_cast<int>(png_get_image_width(png, info));
+  image.height = static_cast<int>(png_get_image_height(png, info));
+  image.rgba.resize(static_cast<std::size_t>(image.width) * image.height * 4);
+  rows.resize(image.height);
+  for (int y = 0; y < image.height; ++y)
+    rows[y] = &image.rgba[static_cast<std::size_t>(y) * image.width * 4];
+  png_read_image(png, rows.data());
+  png_read_end(png, nullptr);
+  png_destroy_read_struct(&png, &info, nullptr);
   return {};
 }
 

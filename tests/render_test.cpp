@@ -15,6 +15,7 @@
 #include <sstream>
 
 extern "C" {
+#include <png.h>
 #include <libavformat/avformat.h>
 #include <libavutil/pixdesc.h>
 }
@@ -342,6 +343,39 @@ TEST(Compare, SameAndDifferentImages) {
   EXPECT_NE(line.find("different sizes, 160x90 and 320x180"), std::string::npos) << line;
   EXPECT_NE(line.find("no diff image was written"), std::string::npos) << line;
   EXPECT_FALSE(fs::exists(scratch("none.png")));
+}
+
+// A PNG's stored values are compared as stored, whatever gAMA/cHRM chunks it carries (ffmpeg
+// writes them into frames it extracts; libpng's simplified reader would convert by them, by up
+// to 11 steps for a gamma of 1/1.8). The chunks are written here through libpng itself.
+TEST(Compare, ColourChunksDoNotChangeTheValuesCompared) {
+  render::Image plain;
+  plain.width = 64;
+  plain.height = 8;
+  for (int i = 0; i < plain.width * plain.height; ++i)
+    plain.rgba.insert(plain.rgba.end(), {static_cast<unsigned char>(4 * (i % 64)), 128,
+                                         static_cast<unsigned char>(255 - 4 * (i % 64)), 255});
+  const fs::path stored = scratch("stored.png"), tagged = scratch("tagged.png");
+  ASSERT_TRUE(render::writePng(stored.string(), plain));
+  FILE* f = std::fopen(tagged.c_str(), "wb");
+  ASSERT_NE(f, nullptr);
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  png_init_io(png, f);
+  png_set_IHDR(png, info, plain.width, plain.height, 8, PNG_COLOR_TYPE_RGB_ALPHA,
+               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_gAMA(png, info, 1 / 1.8);
+  png_set_cHRM(png, info, 0.3127, 0.3290, 0.64, 0.33, 0.30, 0.60, 0.15, 0.06);  // BT.709
+  png_write_info(png, info);
+  for (int y = 0; y < plain.height; ++y)
+    png_write_row(png, &plain.rgba[static_cast<std::size_t>(y) * plain.width * 4]);
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  std::fclose(f);
+  render::Image read;
+  ASSERT_TRUE(render::readPng(tagged.string(), read));
+  EXPECT_EQ(read.rgba, plain.rgba);
+  EXPECT_EQ(rattleback("compare " + tagged.string() + " " + stored.string() + " --tolerance 0"), 0);
 }
 
 // Ctrl-C (SIGINT) or SIGTERM in the middle of a render: exit 130 / 143, the temporary file is
