@@ -478,6 +478,7 @@ int sweepCommand(const SweepArgs& args) {
   std::vector<std::int64_t> todo;
   for (std::int64_t r : rows)
     if (!done.count(r)) todo.push_back(r);
+  const std::size_t from_journal = done.size();  // `done` takes this run's rows too, below
 
   // The journal: every finished row as soon as it is finished, for --resume after Ctrl-C, a
   // kill or a crash. Removed once the table is in place.
@@ -584,8 +585,8 @@ int sweepCommand(const SweepArgs& args) {
     std::printf(", %d ok", counts["ok"]);
     if (counts["stopped"]) std::printf(", %d stopped", counts["stopped"]);
     if (counts["refused"]) std::printf(", %d refused", counts["refused"]);
-    if (!done.empty())
-      std::printf(" (%zu from the journal of the interrupted run, %zu run now)", done.size(),
+    if (from_journal)
+      std::printf(" (%zu from the journal of the interrupted run, %zu run now)", from_journal,
                   todo.size());
     std::printf("\nwall time       %.3f s on %d threads (%.1f runs/s, of the %zu run now)\n", wall,
                 jobs, todo.empty() ? 0.0 : static_cast<double>(todo.size()) / wall, todo.size());

@@ -199,6 +199,11 @@ int renderCommand(const RenderArgs& args) {
     return kBadInput;
   }
   const VideoPlan& plan = planned.value();
+  if (args.both && model.initial.spin == 0) {
+    std::cerr << args.scene << ": --both renders the spin and its reverse, which at spin 0 are "
+              << "the same run; give a spin (--spin, or initial.spin in the scene)\n";
+    return kBadInput;
+  }
   if (args.verbose) describeModel(model, args.scene);
   // One run per direction, sharing the body.
   std::vector<sim::Rollout> runs;

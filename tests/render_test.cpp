@@ -291,6 +291,14 @@ TEST(Video, BothWritesThreeVideos) {
   EXPECT_EQ(probe(base.string() + "-both.mp4").width, 320);
   for (const auto& entry : fs::directory_iterator(base.parent_path()))
     EXPECT_EQ(entry.path().filename().string().find(".part"), std::string::npos);
+  // At spin 0 the spin and its reverse are one run (the two videos were written over each
+  // other): refused, with nothing written.
+  const fs::path zero = scratch("zero");
+  EXPECT_EQ(rattleback("render scenes/seed-reversed.yaml --both --spin 0 --duration 0.2 --size "
+                       "160x90 -o " + zero.string()),
+            2);
+  for (const char* suffix : {"-preferred.mp4", "-reversed.mp4", "-both.mp4"})
+    EXPECT_FALSE(fs::exists(zero.string() + suffix)) << suffix;
 }
 
 // A render that cannot run writes nothing and keeps what was there.

@@ -288,11 +288,16 @@ TEST(Sweep, AnInterruptKeepsTheFinishedRowsAndResumeCompletesThem) {
   EXPECT_LT(kept_rows, 161);
   EXPECT_NE(slurp(dir / "stderr").find("--resume"), std::string::npos);
 
-  const Outcome resumed = rattleback(dir, "sweep " + sweep.string() + " -q --resume -o " + table.string());
+  const Outcome resumed = rattleback(dir, "sweep " + sweep.string() + " --resume -o " + table.string());
   ASSERT_EQ(resumed.status, 0) << resumed.err;
   EXPECT_FALSE(fs::exists(journal));
-  const Outcome whole = rattleback(dir, "sweep " + sweep.string() + " -q -o " + (dir / "whole.csv").string());
+  // The summary counts the journal's rows and this run's (a fresh run mentions no journal).
+  const std::string split = "(" + std::to_string(kept_rows) + " from the journal of the interrupted run, " +
+                            std::to_string(161 - kept_rows) + " run now)";
+  EXPECT_NE(resumed.out.find(split), std::string::npos) << resumed.out;
+  const Outcome whole = rattleback(dir, "sweep " + sweep.string() + " -o " + (dir / "whole.csv").string());
   ASSERT_EQ(whole.status, 0) << whole.err;
+  EXPECT_EQ(whole.out.find("journal"), std::string::npos) << whole.out;
   EXPECT_EQ(withoutWall(slurp(table)), withoutWall(slurp(dir / "whole.csv")));
 }
 
