@@ -45,7 +45,8 @@ Cli::Cli() {
                      "Video file (default out/<scene>.mp4; with --both the base name)");
   render->add_option("--view", r.overrides.view, "oblique | above | front | side | follow");
   render->add_option("--size", render_size, "Frame size WxH, e.g. 1280x720");
-  render->add_option("--fps", r.overrides.fps, "Frames per second");
+  render->add_option("--fps", r.overrides.fps,
+                     "Frames per second, a whole number 1–240 (default: the scene's video.fps, or 30)");
   render->add_option("--duration", r.overrides.duration, "Simulated time, s");
   render->add_option("--playback", r.overrides.playback,
                      "Playback speed: simulated seconds per video second (0.5 = slow motion)");
@@ -71,6 +72,13 @@ Cli::Cli() {
   still->add_option("--view", st.overrides.view, "oblique | above | front | side | follow");
   still->add_option("--t", st.t, "Simulated time of the frame, s (default 0)");
   still->add_option("--size", still_size, "Image size WxH, e.g. 1280x720");
+  // The video's options that change a frame's inset (its time axis and the frames its curve
+  // runs through), so that `still --t` gives a frame of a video rendered with them.
+  still->add_option("--duration", st.overrides.duration,
+                    "Simulated time of the run, s: the inset's time axis (as render --duration)");
+  still->add_option("--fps", st.overrides.fps, "Frames per second of the video (as render --fps)");
+  still->add_option("--playback", st.overrides.playback,
+                    "Playback speed of the video (as render --playback)");
   still->add_option("--spin", st.overrides.spin, "Initial spin, rad/s (overrides the scene)");
   still->add_option("--dt", st.overrides.dt, "Fixed time step, s");
   still->add_option("--tolerance", st.overrides.tolerance, "Adaptive steps to this error per step");
