@@ -85,6 +85,11 @@ struct Contact {
   FrictionLaw law = FrictionLaw::Regularized;
   double slip_velocity = 0;  ///< ε, m/s: F_t = −μN v_t / sqrt(|v_t|² + ε²)
   double air_drag = 0;       ///< σ, N m s: torque −σω
+
+  /// Whether the model keeps the energy exactly: rolling without slipping does no work and
+  /// gravity is conservative, so without air drag the total is constant (Kane & Levinson
+  /// 1982); any change is the integrator's error.
+  bool conservesEnergy() const { return model == ContactModel::Rolling && air_drag == 0; }
 };
 
 /// Initial condition (SPEC "Initial state").
