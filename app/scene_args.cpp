@@ -17,6 +17,9 @@ rb::Result<LoadedScene> loadScene(const std::string& path, const Overrides& o) {
     scene.overrides[key] = option;
   };
   set(spec.simulation.duration, o.duration, "simulation.duration", "--duration");
+  if (o.dt && o.tolerance)
+    return rb::Error{"", "--dt and --tolerance: give one, a fixed step or adaptive steps to a "
+                         "tolerance"};
   // A step or a tolerance from the command line replaces whichever of the two the file gives.
   if (o.dt) spec.simulation.tolerance = sim::kUnset;
   if (o.tolerance) spec.simulation.dt = sim::kUnset;

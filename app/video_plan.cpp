@@ -1,11 +1,18 @@
 #include "app/video_plan.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <utility>
 
 namespace app {
 namespace {
+
+std::string show(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
 
 rb::Result<VideoPlan> check(const scene::VideoSpec& v, double duration) {
   if (v.fps < 1 || v.fps > kMaxFps)
@@ -37,7 +44,11 @@ rb::Result<VideoPlan> check(const scene::VideoSpec& v, double duration) {
   plan.playback = v.playback;
   const double frames = std::round(duration / v.playback * v.fps);
   if (frames > 1e7)
-    return rb::Error{"video.playback", "makes more than 10 million frames for the duration"};
+    return rb::Error{"video.playback",
+                     "makes more than 10 million frames of " + show(duration) +
+                         " s of simulated time (at playback " + show(v.playback) + " and " +
+                         std::to_string(v.fps) +
+                         " fps): shorten the run (--duration) or speed up the playback"};
   plan.frames = std::max<std::int64_t>(1, static_cast<std::int64_t>(frames));
   return plan;
 }
@@ -46,7 +57,14 @@ rb::Result<VideoPlan> check(const scene::VideoSpec& v, double duration) {
 
 rb::Result<VideoPlan> planVideo(const scene::Loaded& scene, double duration) {
   auto plan = check(scene.video, duration);
-  if (!plan) return rb::Error{"", scene::describe(scene, plan.error())};
+  if (!plan) {
+    rb::Error error = plan.error();
+    // Too many frames because --duration asked for a long run: that option is named.
+    if (error.key == "video.playback" && scene.overrides.count("simulation.duration") &&
+        !scene.overrides.count("video.playback"))
+      error.key = "simulation.duration";
+    return rb::Error{"", scene::describe(scene, error)};
+  }
   return plan;
 }
 

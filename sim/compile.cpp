@@ -142,7 +142,10 @@ std::optional<rb::Error> checkSimulation(const SimulationSpec& sim) {
                          " takes a fixed step: give simulation.dt (or --dt), or use dopri5 with the tolerance"};
   if (auto e = needPositive("simulation.duration", sim.duration)) return e;
   if (has_dt && sim.duration / sim.dt > 1e11)
-    return rb::Error{"simulation.dt", "makes more than 1e11 steps for the duration"};
+    return rb::Error{"simulation.dt", show(sim.dt) + " s over simulation.duration " +
+                                          show(sim.duration) +
+                                          " s makes more than 1e11 steps: shorten the run or "
+                                          "lengthen the step"};
   return std::nullopt;
 }
 

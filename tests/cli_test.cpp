@@ -466,6 +466,17 @@ TEST(Cli, OptionErrorsNameTheOptionAndTheWayOut) {
   EXPECT_FALSE(fs::exists(avi));
   EXPECT_FALSE(fs::exists(jpg));
 
+  // A limit reached through an option names the option, not a key the scene may lack.
+  const Result long_run = rattleback("render " + scene("rattleback") + " --duration 1e6 -q -o " +
+                                     tempFile("x.mp4").string());
+  EXPECT_EQ(long_run.status, 2);
+  EXPECT_EQ(long_run.err.rfind("--duration: makes more than 10 million frames of 1e+06 s", 0), 0u)
+      << long_run.err;
+  const Result both_steps = rattleback("simulate " + scene("rattleback") +
+                                       " --dt 1e-4 --tolerance 1e-8 -q -o " + tempFile("x.csv").string());
+  EXPECT_EQ(both_steps.status, 2);
+  EXPECT_EQ(both_steps.err.rfind("--dt and --tolerance: give one", 0), 0u) << both_steps.err;
+
   const Result rate = rattleback("simulate " + scene("rattleback") + " --rate 0 -q -o " +
                                  tempFile("x.csv").string());
   EXPECT_EQ(rate.status, 2);
