@@ -27,7 +27,8 @@ render::BodyPoints bodyPointsOf(const sim::Model& model) {
     if (kept(body.top[i])) points.top.push_back(body.top[i].cast<float>());
   for (std::size_t i = 0; i < body.bottom.size(); ++i)
     if (kept(body.bottom[i])) points.bottom.push_back(body.bottom[i].cast<float>());
-  points.radius = static_cast<float>(0.35 * k * std::min(grid.dx, grid.dy));
+  points.spacing = static_cast<float>(k * std::min(grid.dx, grid.dy));
+  points.radius = 0.35f * points.spacing;
   points.footprint_half = body.surface.footprintHalf().cast<float>();
   return points;
 }

@@ -21,6 +21,7 @@ struct BodyPoints {
   std::vector<Eigen::Vector3f> top;     ///< drawn red
   std::vector<Eigen::Vector3f> bottom;  ///< drawn blue
   float radius = 0.001f;                ///< sphere radius, m
+  float spacing = 0.003f;               ///< distance between neighbouring points, m
   Eigen::Vector2f footprint_half{0.01f, 0.05f};  ///< outline half extents across and along y, m
 };
 

@@ -253,6 +253,7 @@ void Renderer::drawPoints(const Camera& camera, const FrameInput& frame) {
   setMatrix(gl, points_program_, "u_view", camera.view);
   setMatrix(gl, points_program_, "u_proj", camera.proj);
   gl.glUniform1f(gl.glGetUniformLocation(points_program_, "u_radius"), body_.radius);
+  gl.glUniform1f(gl.glGetUniformLocation(points_program_, "u_spacing"), body_.spacing);
   gl.glUniform1f(gl.glGetUniformLocation(points_program_, "u_viewport_h"),
               static_cast<float>(settings_.height));
   gl.glUniform3fv(gl.glGetUniformLocation(points_program_, "u_light_view"), 1, light_view.data());

@@ -298,11 +298,15 @@ TEST(Still, OpaqueStillsAreRgbAndTransparentOnesRgba) {
 // A transparent still's colours are straight, as PNG stores them (not multiplied by alpha):
 // at the body's smoothed edge a red sphere keeps its red while its alpha falls, so in the
 // partly transparent red pixels red exceeds alpha, which premultiplied colour (c·a ≤ a) never
-// does. Measured: 462 of 570 such pixels at 320 × 180 (found by a new user: every one was
-// premultiplied, so slides showed the outline darkened).
+// does. Measured: 1307 of 2193 such pixels, where premultiplied colour gives none (found by a
+// new user: every one was premultiplied, so slides showed the outline darkened).
 TEST(Still, TransparentColoursAreStraightNotPremultiplied) {
-  const render::Image image = still("scenes/rattleback.yaml --t 1 --view oblique --transparent");
-  ASSERT_FALSE(image.rgba.empty());
+  // At the scene's 1280 × 720, where the spheres' edges are smoothed (small frames draw them
+  // hard: tests/render_test.cpp).
+  const fs::path png = scratch("straight.png");
+  ASSERT_EQ(rattleback("still scenes/rattleback.yaml --t 1 --transparent -q -o " + png.string()), 0);
+  render::Image image;
+  ASSERT_TRUE(render::readPng(png.string(), image).ok());
   long red_edge = 0, red_above_alpha = 0;
   for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
     const int r = image.rgba[i], g = image.rgba[i + 1], a = image.rgba[i + 3];
@@ -311,7 +315,7 @@ TEST(Still, TransparentColoursAreStraightNotPremultiplied) {
     if (r > a) ++red_above_alpha;
   }
   ASSERT_GT(red_edge, 50);
-  EXPECT_GT(red_above_alpha, red_edge / 2);
+  EXPECT_GT(red_above_alpha, red_edge / 4);
 }
 
 TEST(Still, TransparentKeepsOnlyTheBodyAndItsShadow) {

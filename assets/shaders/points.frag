@@ -4,7 +4,7 @@
 in vec3 v_color;
 in vec3 v_center_view;
 in float v_radius_px;
-uniform float u_radius;
+in float v_radius_m;
 // The projection's rows 2 and 3 against view z and 1: (P22, P23, P32, P33); neither row
 // depends on view x or y, so the depth needs only z.
 uniform vec4 u_depth;
@@ -19,13 +19,19 @@ void main() {
   p.y = -p.y;
   float rr = dot(p, p);
   float r = sqrt(rr);
-  float coverage = clamp((1.0 - r) * v_radius_px + 0.5, 0.0, 1.0);
+  // The edge is smoothed over a pixel; on spheres under 2.5 px over less, down to a hard edge
+  // at 1.5 px: there nearly every pixel is an edge, and edges blended over the floor (a
+  // neighbour behind fails the depth test) would let it show through the body.
+  float edge_px = clamp(v_radius_px - 1.5, 0.05, 1.0);
+  float coverage = clamp((1.0 - r) * v_radius_px / edge_px + 0.5, 0.0, 1.0);
   if (coverage <= 0.0) discard;
   vec3 n = vec3(p, sqrt(max(0.0, 1.0 - rr)));
-  float z = v_center_view.z + n.z * u_radius;
+  float z = v_center_view.z + n.z * v_radius_m;
   gl_FragDepth = (u_depth.x * z + u_depth.y) / (u_depth.z * z + u_depth.w) * 0.5 + 0.5;
   float diffuse = max(dot(n, u_light_view), 0.0);
-  float specular = pow(max(dot(n, u_half_view), 0.0), 40.0);
+  // The highlight, smaller than a pixel on spheres a pixel or two across, would read as white
+  // speckle: it fades out below 2.5 px.
+  float specular = pow(max(dot(n, u_half_view), 0.0), 40.0) * smoothstep(1.0, 2.5, v_radius_px);
   vec3 color = v_color * (0.30 + 0.75 * diffuse) + vec3(0.35) * specular;
   frag_color = vec4(color, coverage);
 }

@@ -7,10 +7,12 @@ uniform mat4 u_model;       // body -> world
 uniform mat4 u_view;
 uniform mat4 u_proj;
 uniform float u_radius;     // sphere radius, m
+uniform float u_spacing;    // distance between neighbouring points, m
 uniform float u_viewport_h; // pixels
 out vec3 v_color;
 out vec3 v_center_view;
 out float v_radius_px;
+out float v_radius_m;       // the sphere as drawn, m
 
 void main() {
   vec4 view = u_view * u_model * vec4(a_position, 1.0);
@@ -18,7 +20,13 @@ void main() {
   // Projected radius: r · |P[1][1]| · h/2 / w, where w = −z_view in perspective and 1 in
   // ortho (P[1][1] is negative: the renderer draws upside down).
   float w = (u_proj[2][3] == 0.0) ? 1.0 : -view.z;
-  v_radius_px = max(u_radius * abs(u_proj[1][1]) * u_viewport_h * 0.5 / w, 0.75);
+  float px_per_m = abs(u_proj[1][1]) * u_viewport_h * 0.5 / w;
+  // Spheres a pixel or two across leave gaps the floor shows through, and a small frame's body
+  // reads as pink speckle: below 2 px they grow towards overlapping their neighbours (0.6 of
+  // the spacing), so the surface reads as one.
+  float radius_px = max(u_radius * px_per_m, min(0.6 * u_spacing * px_per_m, 2.0));
+  v_radius_m = radius_px / px_per_m;
+  v_radius_px = max(radius_px, 0.75);
   gl_PointSize = 2.0 * v_radius_px + 2.0;  // one pixel of margin for the smoothed edge
   v_center_view = view.xyz;
   v_color = a_kind < 0.5 ? vec3(0.86, 0.13, 0.10) : vec3(0.13, 0.32, 0.88);
