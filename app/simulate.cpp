@@ -214,8 +214,9 @@ int simulateCommand(const SimulateArgs& args) {
     return kBadInput;
   }
   AtomicOutput& file = opened.value();
-  // The sidecar goes beside a file, not beside a device such as /dev/stdout.
-  const bool regular = !std::filesystem::exists(csv) || std::filesystem::is_regular_file(csv);
+  // The sidecar goes beside a file, not beside a device or descriptor written in place (such
+  // as /dev/stdout, even when the shell sends it to a file: /dev/stdout.json would be made).
+  const bool regular = !rb::outputPlace(csv).temporary.empty();
   std::optional<AtomicOutput> meta;
   if (regular) {
     auto opened_meta = AtomicOutput::open(csv + ".json");

@@ -361,6 +361,15 @@ rb::Status plotTable(const std::string& png, const std::string& metric, const st
   return heatmapPng(png, map, 900, 600);
 }
 
+// A sweep's table has a sidecar and a journal beside it: it must be a file, not a device or
+// descriptor written in place (/dev/stdout.json would be made).
+rb::Status checkTableIsAFile(const std::string& output) {
+  if (rb::outputPlace(output).temporary.empty())
+    return rb::Status::fail(output + ": a sweep's table is a file (its sidecar " + output +
+                            ".json and its journal go beside it), not a device or pipe");
+  return {};
+}
+
 rb::Status writeTable(const std::string& output, const std::vector<std::string>& keys,
                       const std::vector<std::string>& lines, nlohmann::json sidecar) {
   if (auto made = makeParentFolder(output); !made) return made;
@@ -415,6 +424,10 @@ int sweepCommand(const SweepArgs& args) {
   }
   const std::string stem = fs::path(args.file).stem().string();
   std::string output = args.output.empty() ? "out/" + stem + ".csv" : args.output;
+  if (auto ok = checkTableIsAFile(output); !ok) {
+    std::cerr << ok.error().text() << "\n";
+    return kBadInput;
+  }
   if (!args.emit.empty()) {
     if (args.emit != "slurm" && args.emit != "parallel") {
       std::cerr << "--emit: 'slurm' or 'parallel', not '" << args.emit << "'\n";
@@ -604,6 +617,10 @@ int sweepMergeCommand(const SweepMergeArgs& args) {
   }
   if (args.shards.empty()) {
     std::cerr << "sweep merge: give the shard tables to merge (OUT.csv SHARD.csv…)\n";
+    return kBadInput;
+  }
+  if (auto ok = checkTableIsAFile(args.output); !ok) {
+    std::cerr << ok.error().text() << "\n";
     return kBadInput;
   }
   if (!args.plot.empty()) {

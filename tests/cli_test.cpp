@@ -135,7 +135,8 @@ TEST(Cli, UnwritableOutputIsReportedCleanly) {
 TEST(Cli, OutputsAreWrittenThroughSymbolicLinks) {
   const fs::path dir = scratchDir();
   for (const char* name : {"table.csv", "link.csv", "still.png", "link.png", "video.mp4",
-                           "link.mp4", "late.csv", "made/later.csv", "stdout.csv", "piped"})
+                           "link.mp4", "late.csv", "made/later.csv", "stdout.csv",
+                           "stdout.csv.json"})
     fs::remove(dir / name);
   fs::remove(dir / "made");
   std::ofstream(dir / "table.csv") << "old\n";
@@ -155,6 +156,7 @@ TEST(Cli, OutputsAreWrittenThroughSymbolicLinks) {
   ASSERT_EQ(piped.status, 0) << piped.err;
   for (const char* link : {"link.csv", "link.png", "link.mp4", "late.csv", "stdout.csv"})
     EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir / link))) << link;
+  EXPECT_FALSE(fs::exists(dir / "stdout.csv.json"));  // no sidecar beside a descriptor
   for (const char* file : {"table.csv", "still.png", "video.mp4", "made/later.csv"}) {
     EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(dir / file))) << file;
     EXPECT_GT(fs::file_size(dir / file), 100u) << file;

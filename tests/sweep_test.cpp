@@ -317,6 +317,18 @@ TEST(Sweep, TheMergeRefusesAMissingOrRepeatedRow) {
   EXPECT_EQ(repeated.status, 2);
   EXPECT_NE(repeated.err.find("row 0 is also in"), std::string::npos) << repeated.err;
   EXPECT_FALSE(fs::exists(dir / "m.csv"));
+  // A table has its sidecar and journal beside it: a device is refused, and nothing is made
+  // beside the descriptor's link (it would be /dev/stdout.json).
+  fs::remove(dir / "out.csv");
+  fs::create_symlink("/proc/self/fd/1", dir / "out.csv");
+  for (const std::string& command : {"sweep " + sweep.string() + " -q -o " + (dir / "out.csv").string(),
+                                     "sweep merge -q " + (dir / "out.csv").string() + " " + s0 + " " + s1}) {
+    const Outcome device = rattleback(dir, command);
+    EXPECT_EQ(device.status, 2) << command;
+    EXPECT_NE(device.err.find("a sweep's table is a file"), std::string::npos) << device.err;
+  }
+  EXPECT_FALSE(fs::exists(dir / "out.csv.json"));
+  EXPECT_FALSE(fs::exists(dir / "out.csv.partial"));
 }
 
 // The Slurm script: a job array of N tasks, one shard each, and the merge after all of them.
