@@ -103,13 +103,11 @@ rb::Result<std::unique_ptr<VideoEncoder>> VideoEncoder::open(
   s.path = path;
   s.settings = settings;
   if (settings.width % 2 || settings.height % 2) return rb::Error{"", path + ": width and height must be even"};
-  std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
-    return rb::Error{"", path + ": is not a regular file (an MP4 must be written to a file)"};
   // Hidden and not ending in .mp4 (no *.mp4 glob takes a half-written file); the format is
   // named explicitly below, so the name need not say it. Through links (util/output_place.hpp).
   s.temp = rb::outputPlace(path).temporary;
+  if (s.temp.empty())  // a device, pipe or descriptor, which would be written in place
+    return rb::Error{"", path + ": is not a regular file (an MP4 must be written to a file)"};
 
   av_log_set_level(AV_LOG_ERROR);
   av_log_set_callback(keepLog);
