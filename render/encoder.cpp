@@ -1,7 +1,5 @@
 #include "render/encoder.hpp"
 
-#include <unistd.h>
-
 #include <cstdio>
 #include <cstdarg>
 #include <filesystem>

@@ -64,16 +64,16 @@ void chromaOfRowPair(const std::int16_t* __restrict sums, std::uint8_t* __restri
 
 }  // namespace
 
-void Yuv420Converter::convert(const Image& image, const Yuv420Planes& out, int x) {
-  assert(image.width % 2 == 0 && image.height % 2 == 0 && x % 2 == 0);
+void Yuv420Converter::convert(const Image& image, const Yuv420Planes& out) {
+  assert(image.width % 2 == 0 && image.height % 2 == 0);
   const int w = image.width;
   sums_.resize(3 * static_cast<std::size_t>(w));
   const std::size_t row = 4 * static_cast<std::size_t>(w);
   for (int top = 0; top < image.height; top += 2) {
     const std::uint8_t* a = image.rgba.data() + top * row;
-    std::uint8_t* y = out.y + static_cast<std::ptrdiff_t>(top) * out.y_stride + x;
+    std::uint8_t* y = out.y + static_cast<std::ptrdiff_t>(top) * out.y_stride;
     lumaOfRowPair(a, a + row, y, y + out.y_stride, sums_.data(), w);
-    const std::ptrdiff_t c = static_cast<std::ptrdiff_t>(top / 2) * out.uv_stride + x / 2;
+    const std::ptrdiff_t c = static_cast<std::ptrdiff_t>(top / 2) * out.uv_stride;
     chromaOfRowPair(sums_.data(), out.u + c, out.v + c, w);
   }
 }

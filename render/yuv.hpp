@@ -2,8 +2,7 @@
 // chroma sited left of each pixel pair and between its two rows (H.264's default chroma
 // location, type 0). Written here rather than taken from swscale: the same conversion took
 // 1.9 ms a 720p frame in swscale 6.7 and 0.5 ms here (libyuv, faster still, has no BT.709
-// conversion from RGB in Debian 12), and for `render --both` it writes each half of the
-// side-by-side frame in place.
+// conversion from RGB in Debian 12).
 #pragma once
 
 #include <cstdint>
@@ -23,9 +22,8 @@ struct Yuv420Planes {
 
 class Yuv420Converter {
  public:
-  /// Converts `image` (even width and height; alpha ignored) into `out`, its left edge at
-  /// pixel column `x` (even) of the planes, which must hold it.
-  void convert(const Image& image, const Yuv420Planes& out, int x = 0);
+  /// Converts `image` (even width and height; alpha ignored) into `out`, which must hold it.
+  void convert(const Image& image, const Yuv420Planes& out);
 
  private:
   std::vector<std::int16_t> sums_;  ///< a row pair's R, G and B summed over its two rows

@@ -1,7 +1,6 @@
 // The RGBA → yuv420p conversion the encoder uses (render/yuv.cpp): the 8-bit values of
 // BT.709 for 100 % colour bars, every sample of a random picture against the standard's
-// formulas evaluated in double precision, where the chroma sits, and pictures placed side by
-// side in one frame.
+// formulas evaluated in double precision, and where the chroma sits.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -102,28 +101,4 @@ TEST(Yuv, ChromaIsSitedOnTheLeftPixelOfEachPair) {
   EXPECT_EQ(out.v[edge / 2], std::lround(seam[2]));
   EXPECT_EQ(out.u[edge / 2 - 1], 102);  // pure red, the bars' value
   EXPECT_EQ(out.u[edge / 2 + 1], 240);  // pure blue
-}
-
-// Two pictures converted into one frame at columns 0 and w fill its halves: each half as the
-// picture alone (its first chroma column too: the left picture's colours do not bleed over).
-TEST(Yuv, PicturesSideBySideFillTheirHalves) {
-  const int w = 10, h = 4;
-  Yuv420 left(w, h), right(w, h), both(2 * w, h);
-  const render::Image red = flat(w, h, 255, 0, 0), grey = flat(w, h, 120, 130, 140);
-  render::Yuv420Converter converter;
-  converter.convert(red, left.planes());
-  converter.convert(grey, right.planes());
-  converter.convert(red, both.planes(), 0);
-  converter.convert(grey, both.planes(), w);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      EXPECT_EQ(both.y[y * 2 * w + x], left.y[y * w + x]);
-      EXPECT_EQ(both.y[y * 2 * w + w + x], right.y[y * w + x]);
-    }
-  for (int j = 0; j < h / 2; ++j)
-    for (int i = 0; i < w / 2; ++i) {
-      EXPECT_EQ(both.u[j * w + i], left.u[j * w / 2 + i]);
-      EXPECT_EQ(both.v[j * w + w / 2 + i], right.v[j * w / 2 + i]);
-      EXPECT_EQ(both.u[j * w + w / 2 + i], right.u[j * w / 2 + i]);
-    }
 }
