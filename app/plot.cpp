@@ -75,6 +75,12 @@ std::string probeWrite(const fs::path& dir) {
   return "";
 }
 
+// A plot is drawn into a temporary file and renamed into place: never onto a device or pipe.
+rb::Status refuseDevice(const std::string& png, const rb::OutputPlace& place) {
+  if (!place.temporary.empty()) return {};
+  return rb::Status::fail(png + ": a plot is a PNG file, not written to a device or pipe");
+}
+
 }  // namespace
 
 rb::Status checkPlotFolder(const std::string& dir) {
@@ -92,8 +98,7 @@ rb::Status checkPlotFile(const std::string& png) {
   std::error_code ec;
   if (fs::is_directory(png, ec)) return rb::Status::fail(png + ": --plot is a folder, not a file");
   const rb::OutputPlace place = rb::outputPlace(png);
-  if (place.temporary.empty())
-    return rb::Status::fail(png + ": --plot writes a PNG file, not to a device or pipe");
+  if (auto refused = refuseDevice(png, place); !refused) return refused;
   if (auto made = makeParentFolder(place.target); !made) return made;
   const fs::path dir = fs::absolute(place.target).parent_path();
   if (std::string why = probeWrite(dir); !why.empty())
@@ -112,8 +117,7 @@ rb::Status drawWithGnuplot(const std::string& png, Write write) {
   std::error_code ec;
   if (fs::is_directory(png, ec)) return rb::Status::fail(png + ": is a directory, not a file");
   const rb::OutputPlace place = rb::outputPlace(png);
-  if (place.temporary.empty())
-    return rb::Status::fail(png + ": a plot is a PNG file, not written to a device or pipe");
+  if (auto refused = refuseDevice(png, place); !refused) return refused;
   const fs::path parent = fs::absolute(place.target).parent_path();
   if (!fs::is_directory(parent, ec)) return rb::Status::fail(png + ": cannot write: the folder does not exist");
   char pattern[] = "/tmp/rattleback-plot-XXXXXX";

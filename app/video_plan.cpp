@@ -1,18 +1,15 @@
 #include "app/video_plan.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <string>
 #include <utility>
+
+#include "util/format.hpp"
 
 namespace app {
 namespace {
 
-std::string show(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", v);
-  return text;
-}
+using rb::show;
 
 rb::Result<VideoPlan> check(const scene::VideoSpec& v, double duration) {
   if (v.fps < 1 || v.fps > kMaxFps)

@@ -8,15 +8,12 @@
 #include "sim/continuum.hpp"
 #include "sim/initial.hpp"
 #include "sim/stability.hpp"
+#include "util/format.hpp"
 
 namespace sim {
 namespace {
 
-std::string show(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
+using rb::show;
 
 // Range checks, each returning the error for `key` or nothing.
 std::optional<rb::Error> needFinite(const std::string& key, double v) {
