@@ -100,6 +100,7 @@ Cli::Cli() {
   compare->add_option("--pixels", c.pixel_fraction,
                       "Fraction of pixels allowed beyond the tolerance (default 0.002)");
   compare->add_option("--diff", c.diff, "Write a diff image here when they differ");
+  compare->add_flag("-q,--quiet", c.quiet, "Print nothing: the exit status says same (0) or different (1)");
 
   BenchArgs& b = bench_args;
   bench = app.add_subcommand(

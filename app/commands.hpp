@@ -87,6 +87,7 @@ struct CompareArgs {
   int channel_tolerance = 2;        ///< 0–255 per channel
   double pixel_fraction = 0.002;    ///< of the pixels may differ beyond it
   std::string diff;                 ///< where to write a diff image when they differ
+  bool quiet = false;               ///< no verdict line: the exit status says it
 };
 /// Exit 0 when the images match within the tolerance, 1 when they differ.
 int compareCommand(const CompareArgs& args);

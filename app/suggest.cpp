@@ -1,6 +1,7 @@
 #include "app/suggest.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <vector>
 
 namespace app {
@@ -20,6 +21,66 @@ std::size_t editDistance(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
+namespace {
+
+// The options a command takes, spelt as typed: "--fps", "-o".
+std::vector<std::string> optionNames(const CLI::App& command) {
+  std::vector<std::string> names;
+  for (const CLI::Option* option : command.get_options()) {
+    for (const std::string& l : option->get_lnames()) names.push_back("--" + l);
+    for (const std::string& s : option->get_snames()) names.push_back("-" + s);
+  }
+  return names;
+}
+
+bool looksLikeANumber(const std::string& word) {
+  return word.size() > 1 && (std::isdigit(static_cast<unsigned char>(word[1])) || word[1] == '.');
+}
+
+// A known command with a word that is none of its options: the line names the word and the
+// nearest option; otherwise CLI11's message and a pointer to the command's --help.
+std::string explainOptionError(const CLI::App& cli, int argc, char** argv,
+                               const std::string& what) {
+  const CLI::App* command = cli.get_subcommand(argv[1]);
+  std::string path = argv[1];
+  int first = 2;
+  if (argc > 2) {
+    for (const CLI::App* sub : command->get_subcommands([](const CLI::App*) { return true; }))
+      if (sub->get_name() == argv[2]) command = sub, path += std::string(" ") + argv[2], first = 3;
+  }
+  const std::vector<std::string> names = optionNames(*command);
+  auto known = [&](const std::string& name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+  };
+  for (int i = first; i < argc; ++i) {
+    std::string word = argv[i];
+    if (word == "--") break;  // what follows is positional
+    if (word.size() < 2 || word[0] != '-' || looksLikeANumber(word)) continue;
+    word = word.substr(0, word.find('='));
+    if (word[1] != '-' && word.size() > 2) {  // -qv: short flags together
+      bool all = true;
+      for (std::size_t c = 1; c < word.size(); ++c) all = all && known(std::string("-") + word[c]);
+      if (all) continue;
+    } else if (known(word)) {
+      continue;
+    }
+    std::string nearest;
+    std::size_t best = 0;
+    for (const std::string& name : names) {
+      const std::size_t d = editDistance(word, name);
+      if (nearest.empty() || d < best) nearest = name, best = d;
+    }
+    std::string line = path + ": no option " + word;
+    // A one-letter option is one edit from every other: no guess for those.
+    if (word.size() > 2 && !nearest.empty() && best <= std::max<std::size_t>(2, word.size() / 3))
+      line += "; did you mean " + nearest + "?";
+    return line + " (see rattleback " + path + " --help)";
+  }
+  return what + " (see rattleback " + path + " --help)";
+}
+
+}  // namespace
+
 std::string explainParseError(const CLI::App& cli, int argc, char** argv, const std::string& what) {
   if (argc < 2 || argv[1][0] == '-') return what + " (see rattleback --help)";
   const std::string word = argv[1];
@@ -32,7 +93,7 @@ std::string explainParseError(const CLI::App& cli, int argc, char** argv, const 
     const std::size_t d = editDistance(word, name);
     if (nearest.empty() || d < best) nearest = name, best = d;
   }
-  if (known) return what + " (see rattleback " + word + " --help)";
+  if (known) return explainOptionError(cli, argc, argv, what);
   std::string line = "'" + word + "' is not a command";
   if (!nearest.empty() && best <= std::max<std::size_t>(2, word.size() / 3))
     line += "; did you mean '" + nearest + "'?";

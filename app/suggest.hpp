@@ -1,5 +1,5 @@
-// A mistyped command ("simulat") named with the nearest one, instead of CLI11's "A subcommand
-// is required".
+// A mistyped command ("simulat") or option ("--fsp") named with the nearest one, instead of
+// CLI11's "A subcommand is required" or "The following arguments were not expected".
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -11,7 +11,8 @@ namespace app {
 std::size_t editDistance(const std::string& a, const std::string& b);
 
 /// The line to print for a command-line error: when the first word is no command, it says so
-/// and names the nearest one; otherwise CLI11's message and a pointer to --help.
+/// and names the nearest one; when a word of a known command is none of its options ("--fsp"),
+/// it names the nearest option; otherwise CLI11's message and a pointer to --help.
 std::string explainParseError(const CLI::App& cli, int argc, char** argv, const std::string& what);
 
 }  // namespace app

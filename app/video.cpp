@@ -451,26 +451,30 @@ int compareCommand(const CompareArgs& args) {
   }
   const render::Comparison c = render::compareImages(a, b, args.channel_tolerance);
   if (!c.same_size) {
-    std::printf("differ: the images have different sizes, %dx%d and %dx%d, so no pixel was "
-                "compared%s\n",
-                a.width, a.height, b.width, b.height,
-                args.diff.empty() ? "" : " and no diff image was written");
+    if (!args.quiet)
+      std::printf("differ: the images have different sizes, %dx%d and %dx%d, so no pixel was "
+                  "compared%s\n",
+                  a.width, a.height, b.width, b.height,
+                  args.diff.empty() ? "" : " and no diff image was written");
     return 1;
   }
   const bool same = c.fraction() <= args.pixel_fraction;
-  std::printf("%s: %lld of %lld pixels (%.4f%%) differ by more than %d in a channel "
-              "(allowed %.4f%%); largest channel difference %d",
-              same ? "same" : "differ", c.differing, c.pixels, 100 * c.fraction(),
-              args.channel_tolerance, 100 * args.pixel_fraction, c.max_channel_delta);
-  if (c.differing)
-    std::printf("; differing pixels within x %d–%d, y %d–%d", c.box[0], c.box[2], c.box[1], c.box[3]);
-  std::printf("\n");
+  if (!args.quiet) {
+    std::printf("%s: %lld of %lld pixels (%.4f%%) differ by more than %d in a channel "
+                "(allowed %.4f%%); largest channel difference %d",
+                same ? "same" : "differ", c.differing, c.pixels, 100 * c.fraction(),
+                args.channel_tolerance, 100 * args.pixel_fraction, c.max_channel_delta);
+    if (c.differing)
+      std::printf("; differing pixels within x %d–%d, y %d–%d", c.box[0], c.box[2], c.box[1],
+                  c.box[3]);
+    std::printf("\n");
+  }
   if (!same && !args.diff.empty()) {
     if (auto e = render::writePng(args.diff, render::diffImage(a, b, args.channel_tolerance)); !e) {
       std::cerr << e.error().text() << "\n";
       return kBadInput;
     }
-    std::printf("diff image: %s\n", args.diff.c_str());
+    if (!args.quiet) std::printf("diff image: %s\n", args.diff.c_str());
   }
   return same ? 0 : 1;
 }

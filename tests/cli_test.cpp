@@ -168,6 +168,26 @@ TEST(Cli, OutputsAreWrittenThroughSymbolicLinks) {
     EXPECT_EQ(entry.path().filename().string().find(".part"), std::string::npos);
 }
 
+// "-o -" is standard output, as people type it for tables: the CSV alone on stdout (read by
+// Python's csv module), the summary on stderr, and no file named "-" or "-.json" made.
+TEST(Cli, ADashSendsTheTableToStandardOutput) {
+  const fs::path dir = scratchDir() / "dash";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string command = "cd " + dir.string() + " && " + RATTLEBACK_BIN + " simulate " +
+                              scene("seed-reversed") + " --duration 0.1 --rate 100 -o - 2>err.txt " +
+                              "| python3 -c 'import csv, sys; rows = list(csv.DictReader(sys.stdin)); " +
+                              "print(len(rows), rows[-1][\"t\"])' >out.txt";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  std::ifstream out(dir / "out.txt"), err(dir / "err.txt");
+  std::string parsed, summary((std::istreambuf_iterator<char>(err)), {});
+  std::getline(out, parsed);
+  EXPECT_EQ(parsed, "11 0.1");
+  EXPECT_NE(summary.find("telemetry       standard output (11 rows)"), std::string::npos) << summary;
+  EXPECT_FALSE(fs::exists(dir / "-"));
+  EXPECT_FALSE(fs::exists(dir / "-.json"));
+}
+
 // Rolling without slipping and without drag keeps the energy exactly, so a change in it is the
 // integrator's error: a step too coarse for the run (Kane & Levinson at dt 0.01: −13 % in 2 s)
 // is pointed out; at the scene's own step (−5e-8 % in 2 s) nothing is said.
@@ -436,6 +456,27 @@ TEST(Cli, AMistypedCommandSuggestsTheNearest) {
   for (const char* command : {"simulate", "analyze", "render", "still", "compare", "bench",
                               "sweep", "report"})
     EXPECT_NE(r.err.find(command), std::string::npos) << command << ": " << r.err;
+}
+
+// A mistyped option gets one line naming it and the nearest option of its command, also for
+// `sweep merge`; a value that starts with a minus (--spin -5) is not taken for an option, and
+// a one-letter option gets no guess (every other is one edit away).
+TEST(Cli, AMistypedOptionSuggestsTheNearest) {
+  struct Case {
+    std::string args, message;
+  };
+  for (const Case& c :
+       {Case{"render " + scene("rattleback") + " --spin -5 --fsp 30",
+             "render: no option --fsp; did you mean --fps?"},
+        Case{"still " + scene("rattleback") + " --trasparent", "did you mean --transparent?"},
+        Case{"sweep merge a.csv b.csv --plto x.png",
+             "sweep merge: no option --plto; did you mean --plot?"},
+        Case{"simulate " + scene("rattleback") + " -x", "simulate: no option -x (see"}}) {
+    const Result r = rattleback(c.args);
+    EXPECT_EQ(r.status, 2) << c.args;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+  }
 }
 
 // Options people type wrong get one line that names the option (not the scene key it sets)

@@ -377,6 +377,15 @@ TEST(Compare, SameAndDifferentImages) {
   EXPECT_NE(line.find("different sizes, 160x90 and 320x180"), std::string::npos) << line;
   EXPECT_NE(line.find("no diff image was written"), std::string::npos) << line;
   EXPECT_FALSE(fs::exists(scratch("none.png")));
+  // -q: nothing printed, the same verdicts, the diff image still written.
+  const fs::path quiet_diff = scratch("quiet-diff.png"), quiet_out = scratch("quiet.txt");
+  const std::string quiet = "cd " + kSource.string() + " && " + RATTLEBACK_BIN + " compare -q " +
+                            changed.string() + " " + golden.string() + " --diff " +
+                            quiet_diff.string() + " >" + quiet_out.string();
+  EXPECT_EQ(WEXITSTATUS(std::system(quiet.c_str())), 1);
+  EXPECT_TRUE(fs::exists(quiet_diff));
+  EXPECT_EQ(fs::file_size(quiet_out), 0u);
+  EXPECT_EQ(rattleback("compare -q " + golden.string() + " " + golden.string()), 0);
 }
 
 // A PNG's stored values are compared as stored, whatever gAMA/cHRM chunks it carries (ffmpeg
