@@ -115,6 +115,8 @@ struct Output {
 };
 
 // Places a and b side by side, into `out` (its buffer reused).
+constexpr unsigned char kDivider = 48;  // the grey of the line between --both's halves
+
 void sideBySide(const render::Image& a, const render::Image& b, render::Image& out) {
   out.width = a.width + b.width;
   out.height = a.height;
@@ -123,6 +125,13 @@ void sideBySide(const render::Image& a, const render::Image& b, render::Image& o
     auto* row = &out.rgba[static_cast<std::size_t>(y) * out.width * 4];
     std::copy_n(&a.rgba[static_cast<std::size_t>(y) * a.width * 4], a.width * 4, row);
     std::copy_n(&b.rgba[static_cast<std::size_t>(y) * b.width * 4], b.width * 4, row + a.width * 4);
+    // A dark line two pixels wide (the last column of the left, the first of the right) marks
+    // where one run ends and the other begins, also where both show the same floor.
+    for (int x : {a.width - 1, a.width}) {
+      unsigned char* p = row + 4 * x;
+      p[0] = p[1] = p[2] = kDivider;
+      p[3] = 255;
+    }
   }
 }
 

@@ -138,7 +138,7 @@ TEST(VideoContent, FrameKIsTheStillAtItsTime) {
     double playback;
   };
   for (const Case c : {Case{25, 1.0}, Case{30, 1.0}, Case{25, 0.5}}) {
-    const fs::path mp4 = scratch("v" + std::to_string(c.fps) + ".mp4");
+    const fs::path mp4 = scratch(std::to_string(c.fps) + "fps.mp4");
     const double duration = 1.0;
     ASSERT_EQ(rattleback("render scenes/rattleback.yaml -q --duration 1 --fps " +
                          std::to_string(c.fps) + " --playback " + std::to_string(c.playback) +
@@ -221,6 +221,17 @@ TEST(VideoContent, BothFilesHoldTheirOwnSpin) {
   ASSERT_EQ(preferred.size(), 10u);
   ASSERT_EQ(both.size(), 10u);
   EXPECT_EQ(both[0].width, 2 * kWidth);
+  // A dark grey line two pixels wide between the halves, on every row (48 as drawn; ±12 for the
+  // YUV round trip beside the light floor), and the floor just beside it.
+  for (int y = 0; y < kHeight; ++y)
+    for (int x : {kWidth - 1, kWidth})
+      for (int c = 0; c < 3; ++c) {
+        const int v = both[0].rgba[4 * (static_cast<std::size_t>(y) * both[0].width + x) + c];
+        ASSERT_NEAR(v, 48, 12) << "x " << x << ", y " << y;
+      }
+  const int beside = both[0].rgba[4 * (static_cast<std::size_t>(kHeight / 2) * both[0].width +
+                                       kWidth - 4)];
+  EXPECT_GT(beside, 100);
   // At t = 0 the two spins look alike but for their read-outs; a frame later they have
   // turned 11° apart. Compare the last frames with the stills at t = 0.36 s.
   const render::Image minus = still("scenes/rattleback.yaml --spin -5 --t 0.36");
