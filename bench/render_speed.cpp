@@ -2,7 +2,9 @@
 // render only (draw + read back + read-outs), encode only (RGBA → yuv420p → x264), and end
 // to end (`rattleback render`: simulate, render and encode in overlapping threads), and
 // `render --both` (two renderers on one thread, three encoders), for each OpenGL backend.
-// Usage: rattleback_render_bench [SCENE] [FRAMES]
+// Usage: rattleback_render_bench [SCENE] [FRAMES] [draw]
+// With "draw" it only draws the frames, 720p with EGL, ten times over: a steady load for a
+// profiler (perf record), and the render-only figure alone.
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -35,6 +37,7 @@ double seconds(std::chrono::steady_clock::time_point since) {
 int main(int argc, char** argv) {
   const std::string scene = argc > 1 ? argv[1] : RATTLEBACK_SOURCE_DIR "/scenes/rattleback.yaml";
   const int frames = argc > 2 ? std::stoi(argv[2]) : 200;
+  const bool draw_only = argc > 3 && std::string(argv[3]) == "draw";
   std::printf("scene %s, %d frames per measurement, median of %d\n", scene.c_str(), frames,
               kRepeats);
   std::printf("%-8s %-10s %11s %11s %11s %11s %14s\n", "backend", "size", "render fps",
@@ -83,6 +86,15 @@ int main(int argc, char** argv) {
     }
     render::Renderer& renderer = *created.value();
     std::vector<render::Image> images(frames);
+    if (draw_only) {
+      const auto start = std::chrono::steady_clock::now();
+      for (int pass = 0; pass < 10; ++pass)
+        for (std::size_t i = 0; i < poses.size(); ++i) renderer.draw(poses[i], images[i]);
+      std::printf("%-8s %-10s %11.1f\n", std::string(rb::nameOf(backend)).c_str(),
+                  (std::to_string(w) + "x" + std::to_string(h)).c_str(),
+                  10 * poses.size() / seconds(start));
+      return 0;
+    }
     // Each stage three times, interleaved; the median of each (one pass's figures move by
     // ±15 % here from run to run: the stages share two cores).
     std::array<std::vector<double>, 4> fps;

@@ -5,6 +5,8 @@ in vec3 v_color;
 in vec3 v_center_view;
 in float v_radius_px;
 in float v_radius_m;
+in float v_edge_px;
+in float v_sprite_radii;
 // The projection's rows 2 and 3 against view z and 1: (P22, P23, P32, P33); neither row
 // depends on view x or y, so the depth needs only z.
 uniform vec4 u_depth;
@@ -15,15 +17,11 @@ out vec4 frag_color;
 void main() {
   // Position on the sprite in sphere radii (gl_PointCoord runs down the picture in y: the
   // renderer draws upside down, with the sprites' origin at the lower left).
-  vec2 p = (gl_PointCoord * 2.0 - 1.0) * (v_radius_px + 1.0) / v_radius_px;
+  vec2 p = (gl_PointCoord * 2.0 - 1.0) * v_sprite_radii;
   p.y = -p.y;
   float rr = dot(p, p);
   float r = sqrt(rr);
-  // The edge is smoothed over a pixel; on spheres under 2.5 px over less, down to a hard edge
-  // at 1.5 px: there nearly every pixel is an edge, and edges blended over the floor (a
-  // neighbour behind fails the depth test) would let it show through the body.
-  float edge_px = clamp(v_radius_px - 1.5, 0.05, 1.0);
-  float coverage = clamp((1.0 - r) * v_radius_px / edge_px + 0.5, 0.0, 1.0);
+  float coverage = clamp((1.0 - r) * v_radius_px / v_edge_px + 0.5, 0.0, 1.0);
   if (coverage <= 0.0) discard;
   vec3 n = vec3(p, sqrt(max(0.0, 1.0 - rr)));
   float z = v_center_view.z + n.z * v_radius_m;
@@ -31,7 +29,10 @@ void main() {
   float diffuse = max(dot(n, u_light_view), 0.0);
   // The highlight, smaller than a pixel on spheres a pixel or two across, would read as white
   // speckle: it fades out below 2.5 px.
-  float specular = pow(max(dot(n, u_half_view), 0.0), 40.0) * smoothstep(1.0, 2.5, v_radius_px);
+  // (x⁴⁰ = x³² x⁸ by squaring: five products, where pow() takes a logarithm and an exponential.)
+  float h = max(dot(n, u_half_view), 0.0);
+  float h2 = h * h, h4 = h2 * h2, h8 = h4 * h4, h16 = h8 * h8;
+  float specular = h16 * h16 * h8 * smoothstep(1.0, 2.5, v_radius_px);
   vec3 color = v_color * (0.30 + 0.75 * diffuse) + vec3(0.35) * specular;
   frag_color = vec4(color, coverage);
 }

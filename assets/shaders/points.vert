@@ -13,6 +13,8 @@ out vec3 v_color;
 out vec3 v_center_view;
 out float v_radius_px;
 out float v_radius_m;       // the sphere as drawn, m
+out float v_edge_px;        // width of the smoothed edge, px
+out float v_sprite_radii;   // the sprite's half-width in sphere radii
 
 void main() {
   vec4 view = u_view * u_model * vec4(a_position, 1.0);
@@ -27,7 +29,15 @@ void main() {
   float radius_px = max(u_radius * px_per_m, min(0.6 * u_spacing * px_per_m, 2.0));
   v_radius_m = radius_px / px_per_m;
   v_radius_px = max(radius_px, 0.75);
-  gl_PointSize = 2.0 * v_radius_px + 2.0;  // one pixel of margin for the smoothed edge
+  // The edge is smoothed over a pixel; on spheres under 2.5 px over less, down to a hard edge
+  // at 1.5 px: there nearly every pixel is an edge, and edges blended over the floor (a
+  // neighbour behind fails the depth test) would let it show through the body.
+  v_edge_px = clamp(v_radius_px - 1.5, 0.05, 1.0);
+  // The coverage reaches 0 half an edge beyond the radius: the sprite ends there. (llvmpipe
+  // shades whole 4 × 4 blocks, so each pixel of margin costs blocks on every sphere.)
+  float half_px = v_radius_px + 0.5 * v_edge_px;
+  gl_PointSize = 2.0 * half_px;
+  v_sprite_radii = half_px / v_radius_px;
   v_center_view = view.xyz;
   v_color = a_kind < 0.5 ? vec3(0.86, 0.13, 0.10) : vec3(0.13, 0.32, 0.88);
 }
