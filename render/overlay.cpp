@@ -102,8 +102,22 @@ int Overlay::width(const std::string& utf8) {
 }
 
 void fillRect(Image& image, int x0, int y0, int x1, int y1, Rgba color) {
-  for (int y = std::max(0, y0); y < std::min(image.height, y1); ++y)
-    for (int x = std::max(0, x0); x < std::min(image.width, x1); ++x) blend(image, x, y, color, 1);
+  // Every pixel gets the same blend, so each channel's result is a function of its old value
+  // alone: a table of 256 per channel, filled by blend() itself (the same values as pixel by
+  // pixel, at a fraction of the cost: the inset is 6 % of a frame).
+  std::array<std::array<unsigned char, 256>, 3> table;
+  Image ramp{256, 1, std::vector<unsigned char>(256 * 4)};
+  for (int v = 0; v < 256; ++v) {
+    for (int k = 0; k < 3; ++k) ramp.rgba[4 * v + k] = static_cast<unsigned char>(v);
+    blend(ramp, v, 0, color, 1);
+    for (int k = 0; k < 3; ++k) table[k][v] = ramp.rgba[4 * v + k];
+  }
+  const int xa = std::max(0, x0), xb = std::min(image.width, x1);
+  for (int y = std::max(0, y0); y < std::min(image.height, y1); ++y) {
+    unsigned char* p = &image.rgba[(static_cast<std::size_t>(y) * image.width + xa) * 4];
+    for (int x = xa; x < xb; ++x, p += 4)
+      for (int k = 0; k < 3; ++k) p[k] = table[k][p[k]];
+  }
 }
 
 void drawLine(Image& image, float x0, float y0, float x1, float y1, float width, Rgba color) {
@@ -118,7 +132,8 @@ void drawLine(Image& image, float x0, float y0, float x1, float y1, float width,
     for (int x = xa; x <= xb; ++x) {
       const float px = x + 0.5f - x0, py = y + 0.5f - y0;
       const float u = length2 > 0 ? std::clamp((px * dx + py * dy) / length2, 0.0f, 1.0f) : 0;
-      const float d = std::hypot(px - u * dx, py - u * dy);
+      const float ex = px - u * dx, ey = py - u * dy;
+      const float d = std::sqrt(ex * ex + ey * ey);  // (hypot guards against overflow: slow)
       blend(image, x, y, color, std::clamp(width / 2 + 0.5f - d, 0.0f, 1.0f));
     }
   }
