@@ -66,6 +66,9 @@ struct RenderSettings {
   bool transparent = false;        ///< no floor and no background: alpha 0 but the body and its shadow
   double duration = 1;             ///< s, the inset's time axis
   double spin_range = 1;           ///< rad/s, the inset's ± spin axis
+  /// Every sphere's fragments at their true depth, also where the spheres are small enough to
+  /// be drawn as discs (under 4 px in radius; tests compare the two).
+  bool exact_sphere_depth = false;
 };
 
 /// An RGBA image, rows top to bottom.

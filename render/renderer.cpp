@@ -45,6 +45,7 @@ Renderer::~Renderer() {
   if (shadow_vao_) gl.glDeleteVertexArrays(1, &shadow_vao_);
   deleteFramebuffer(gl, cache_);
   if (points_program_) gl.glDeleteProgram(points_program_);
+  if (flat_points_program_) gl.glDeleteProgram(flat_points_program_);
   if (floor_program_) gl.glDeleteProgram(floor_program_);
   if (shadow_program_) gl.glDeleteProgram(shadow_program_);
 }
@@ -68,7 +69,8 @@ std::string Renderer::init() {
   if (!current.ok()) return "cannot make the OpenGL context current";
   const GlApi& gl = context_->api();
   try {
-    points_program_ = loadProgram(gl, "points.vert", {"points.frag"});
+    points_program_ = loadProgram(gl, "points.vert", {"points.frag", "points_depth_sphere.frag"});
+    flat_points_program_ = loadProgram(gl, "points.vert", {"points.frag", "points_depth_flat.frag"});
     floor_program_ = loadProgram(gl, "floor.vert", {"floor.frag", "floor_common.frag"});
     shadow_program_ = loadProgram(gl, "floor.vert", {"shadow.frag", "floor_common.frag"});
   } catch (const std::exception& e) {
@@ -247,21 +249,36 @@ void Renderer::drawPoints(const Camera& camera, const FrameInput& frame) {
   const Eigen::Vector3f light_world = Eigen::Vector3f(0.3f, -0.6f, 1.0f).normalized();
   const Eigen::Vector3f light_view = camera.view.topLeftCorner<3, 3>() * light_world;
 
+  // Spheres under 4 px in radius (the default body's are 1–3 px at 720p) are drawn as discs at
+  // their nearest point: where two overlap, the true surfaces would meet along a curve a pixel
+  // or two long. (At 720p 0.1–0.2 % of pixels differ; from 4 px up the curve shows, and each
+  // fragment gets its own depth.) The largest radius is that of a sphere as near the camera as
+  // any point of the body can be, as points.vert computes it.
+  const Eigen::Vector3f center_view =
+      (camera.view * frame.position_world.cast<float>().homogeneous()).head<3>();
+  const bool perspective = camera.proj(3, 3) == 0;
+  const float nearest = perspective ? std::max(-center_view.z() - radius_, 1e-6f) : 1.0f;
+  const float px_per_m = std::abs(camera.proj(1, 1)) * settings_.height * 0.5f / nearest;
+  const float largest_px = std::max(body_.radius * px_per_m,
+                                    std::min(0.6f * body_.spacing * px_per_m, 2.0f));
+  const GLuint program =
+      !settings_.exact_sphere_depth && largest_px < 4 ? flat_points_program_ : points_program_;
+
   const GlApi& gl = context_->api();
-  gl.glUseProgram(points_program_);
-  setMatrix(gl, points_program_, "u_model", model);
-  setMatrix(gl, points_program_, "u_view", camera.view);
-  setMatrix(gl, points_program_, "u_proj", camera.proj);
-  gl.glUniform1f(gl.glGetUniformLocation(points_program_, "u_radius"), body_.radius);
-  gl.glUniform1f(gl.glGetUniformLocation(points_program_, "u_spacing"), body_.spacing);
-  gl.glUniform1f(gl.glGetUniformLocation(points_program_, "u_viewport_h"),
-              static_cast<float>(settings_.height));
-  gl.glUniform3fv(gl.glGetUniformLocation(points_program_, "u_light_view"), 1, light_view.data());
+  gl.glUseProgram(program);
+  setMatrix(gl, program, "u_model", model);
+  setMatrix(gl, program, "u_view", camera.view);
+  setMatrix(gl, program, "u_proj", camera.proj);
+  gl.glUniform1f(gl.glGetUniformLocation(program, "u_radius"), body_.radius);
+  gl.glUniform1f(gl.glGetUniformLocation(program, "u_spacing"), body_.spacing);
+  gl.glUniform1f(gl.glGetUniformLocation(program, "u_viewport_h"),
+                 static_cast<float>(settings_.height));
+  gl.glUniform3fv(gl.glGetUniformLocation(program, "u_light_view"), 1, light_view.data());
   const Eigen::Vector3f half_view = (light_view + Eigen::Vector3f::UnitZ()).normalized();
-  gl.glUniform3fv(gl.glGetUniformLocation(points_program_, "u_half_view"), 1, half_view.data());
+  gl.glUniform3fv(gl.glGetUniformLocation(program, "u_half_view"), 1, half_view.data());
   const Eigen::Matrix4f& P = camera.proj;
-  gl.glUniform4f(gl.glGetUniformLocation(points_program_, "u_depth"), P(2, 2), P(2, 3), P(3, 2),
-                 P(3, 3));
+  gl.glUniform4f(gl.glGetUniformLocation(program, "u_depth"), P(2, 2), P(2, 3), P(3, 2),
+                 P(3, 3));  // (not in the flat program: location −1, ignored)
   gl.glBindVertexArray(points_vao_);
   gl.glDrawArrays(GL_POINTS, 0, point_count_);
 }

@@ -67,7 +67,10 @@ class Renderer {
   BodyPoints body_;
   std::unique_ptr<GlContext> context_;
   Overlay font_;
-  GLuint points_program_ = 0, floor_program_ = 0, shadow_program_ = 0;
+  /// The spheres with each fragment's depth on their surface, and as discs at their nearest
+  /// point (cheaper: depth is tested before shading); drawPoints picks by the spheres' size.
+  GLuint points_program_ = 0, flat_points_program_ = 0;
+  GLuint floor_program_ = 0, shadow_program_ = 0;
   GLuint points_vao_ = 0, points_vbo_ = 0, floor_vao_ = 0, floor_vbo_ = 0;
   GLsizei point_count_ = 0;
   GLuint shadow_vao_ = 0, shadow_vbo_ = 0;

@@ -1,18 +1,20 @@
 #version 330 core
-// Shades a sphere impostor: the normal from the point's coordinates, the true sphere depth,
-// and an edge smoothed over one pixel (cheaper than multisampling on llvmpipe).
+// Shades a sphere impostor: the normal from the point's coordinates, its depth
+// (points_depth_*.frag), and an edge smoothed over one pixel (cheaper than multisampling on
+// llvmpipe).
 in vec3 v_color;
 in vec3 v_center_view;
 in float v_radius_px;
 in float v_radius_m;
 in float v_edge_px;
 in float v_sprite_radii;
-// The projection's rows 2 and 3 against view z and 1: (P22, P23, P32, P33); neither row
-// depends on view x or y, so the depth needs only z.
-uniform vec4 u_depth;
 uniform vec3 u_light_view;  // unit vector towards the light, view frame
 uniform vec3 u_half_view;   // unit vector halfway between the light and the eye, view frame
 out vec4 frag_color;
+
+// The depth of the sphere's surface at this fragment (view z, m): written by
+// points_depth_sphere.frag, left at the sphere's nearest point by points_depth_flat.frag.
+void writeDepth(float z_view);
 
 void main() {
   // Position on the sprite in sphere radii (gl_PointCoord runs down the picture in y: the
@@ -24,8 +26,7 @@ void main() {
   float coverage = clamp((1.0 - r) * v_radius_px / v_edge_px + 0.5, 0.0, 1.0);
   if (coverage <= 0.0) discard;
   vec3 n = vec3(p, sqrt(max(0.0, 1.0 - rr)));
-  float z = v_center_view.z + n.z * v_radius_m;
-  gl_FragDepth = (u_depth.x * z + u_depth.y) / (u_depth.z * z + u_depth.w) * 0.5 + 0.5;
+  writeDepth(v_center_view.z + n.z * v_radius_m);
   float diffuse = max(dot(n, u_light_view), 0.0);
   // The highlight, smaller than a pixel on spheres a pixel or two across, would read as white
   // speckle: it fades out below 2.5 px.

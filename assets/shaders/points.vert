@@ -39,5 +39,9 @@ void main() {
   gl_PointSize = 2.0 * half_px;
   v_sprite_radii = half_px / v_radius_px;
   v_center_view = view.xyz;
+  // The sprite's depth is the sphere's nearest point, for the program that does not compute
+  // each fragment's depth (points_depth_flat.frag: small spheres); the other replaces it.
+  vec4 front = u_proj * vec4(view.xy, view.z + v_radius_m, 1.0);
+  gl_Position.z = front.z / front.w * gl_Position.w;
   v_color = a_kind < 0.5 ? vec3(0.86, 0.13, 0.10) : vec3(0.13, 0.32, 0.88);
 }
