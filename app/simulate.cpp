@@ -63,7 +63,8 @@ void writeRow(std::ostream& out, const sim::Telemetry& s) {
 
 // Whether `path` leads to the file, pipe or terminal this process's standard output is.
 bool isStandardOutput(const std::string& path) {
-  struct stat file {}, out {};
+  struct stat file;
+  struct stat out;
   return ::stat(path.c_str(), &file) == 0 && ::fstat(STDOUT_FILENO, &out) == 0 &&
          file.st_dev == out.st_dev && file.st_ino == out.st_ino;
 }
@@ -78,15 +79,16 @@ void printSummary(std::FILE* out, const SimulateArgs& args, const sim::Model& mo
   const std::string integrator(rb::nameOf(model.integrator));
   std::fprintf(out, "scene           %s\n", args.scene.c_str());
   if (sim::isAdaptive(model.integrator))
-    std::fprintf(out, "integrator      %s, tolerance %g, %lld steps (%lld rejected), %g s simulated\n",
-                integrator.c_str(), model.tolerance, static_cast<long long>(run.steps),
-                static_cast<long long>(run.rejected), simulated);
+    std::fprintf(out,
+                 "integrator      %s, tolerance %g, %lld steps (%lld rejected), %g s simulated\n",
+                 integrator.c_str(), model.tolerance, static_cast<long long>(run.steps),
+                 static_cast<long long>(run.rejected), simulated);
   else
-    std::fprintf(out, "integrator      %s, dt %g s, %lld steps (%g s simulated)\n", integrator.c_str(),
-                model.dt, static_cast<long long>(run.steps), simulated);
+    std::fprintf(out, "integrator      %s, dt %g s, %lld steps (%g s simulated)\n",
+                 integrator.c_str(), model.dt, static_cast<long long>(run.steps), simulated);
   if (run.first_reversal_s) {
-    std::fprintf(out, "first reversal  %.4f s (spin %+g rad/s changed sign)\n", *run.first_reversal_s,
-                model.initial.spin);
+    std::fprintf(out, "first reversal  %.4f s (spin %+g rad/s changed sign)\n",
+                 *run.first_reversal_s, model.initial.spin);
     if (run.reversals.size() > 1) {
       std::fprintf(out, "reversals       %zu, at", run.reversals.size());
       for (double t : run.reversals) std::fprintf(out, " %.4f", t);
@@ -98,29 +100,32 @@ void printSummary(std::FILE* out, const SimulateArgs& args, const sim::Model& mo
     // grow from.
     if (model.initial.tilt_x == 0 && model.initial.tilt_y == 0 && model.initial.height == 0 &&
         model.initial.spin != 0)
-      std::fprintf(out, "                (it started exactly upright, initial.tilt [0, 0]: with "
-                  "nothing to rock, no spin reverses; try tilt: [0.5, 0.5])\n");
+      std::fprintf(out,
+                   "                (it started exactly upright, initial.tilt [0, 0]: with "
+                   "nothing to rock, no spin reverses; try tilt: [0.5, 0.5])\n");
   }
   if (model.contact.model == sim::ContactModel::Auto) {
     std::fprintf(out, "contact modes   %d switches", run.switches);
     for (const auto& [t, mode] : run.mode_changes)
       std::fprintf(out, "%s %s at %.4f s", &t == &run.mode_changes.front().first ? ":" : ",",
-                  std::string(rb::nameOf(mode)).c_str(), t);
+                   std::string(rb::nameOf(mode)).c_str(), t);
     std::fprintf(out, "\n");
   }
   const double change = (run.last.energy - run.first.energy) / std::abs(run.first.energy);
   std::fprintf(out, "energy          %.6g J -> %.6g J (%+.4g %%)\n", run.first.energy,
-              run.last.energy, 100 * change);
+               run.last.energy, 100 * change);
   // Beyond 0.1 % the reversal time is off too (2.19 s against 1.844 s at dt 0.02, where the
   // energy fell by 9.9 %); rk4 at the shipped steps keeps it within 1e-8.
   if (model.contact.conservesEnergy() && std::abs(change) > 1e-3)
-    std::fprintf(out, "                (this model keeps the energy exactly: the change is the "
-                "integrator's error, and the step is too large for this run; try a smaller "
-                "--dt, or --tolerance with dopri5)\n");
-  std::fprintf(out, "final spin      %+.4f rad/s, tilt %.2f deg\n", run.last.spin, run.last.tilt_deg);
+    std::fprintf(out,
+                 "                (this model keeps the energy exactly: the change is the "
+                 "integrator's error, and the step is too large for this run; try a smaller "
+                 "--dt, or --tolerance with dopri5)\n");
+  std::fprintf(out, "final spin      %+.4f rad/s, tilt %.2f deg\n", run.last.spin,
+               run.last.tilt_deg);
   std::fprintf(out, "wall time       %.3f s: %.4f s per simulated second, %.3f us per step\n",
-              run.wall_s, run.wall_s / simulated,
-              1e6 * run.wall_s / static_cast<double>(std::max<std::int64_t>(1, run.steps)));
+               run.wall_s, run.wall_s / simulated,
+               1e6 * run.wall_s / static_cast<double>(std::max<std::int64_t>(1, run.steps)));
   std::fprintf(out, "telemetry       %s (%lld rows)\n", csv.c_str(), static_cast<long long>(rows));
 }
 
@@ -214,9 +219,8 @@ int simulateCommand(const SimulateArgs& args) {
   // "-o -" is standard output, as for most tools that write a table. When the table goes to
   // standard output (so also through /dev/stdout or a link to it), the summary goes to standard
   // error, so that the table can be piped on whole.
-  const std::string csv = args.output.empty() ? defaultOutput(args.scene)
-                          : args.output == "-" ? "/dev/stdout"
-                                               : args.output;
+  std::string csv = args.output.empty() ? defaultOutput(args.scene) : args.output;
+  if (csv == "-") csv = "/dev/stdout";
   const bool to_stdout = isStandardOutput(csv);
   if (!args.plot_dir.empty()) {
     if (auto plots = checkPlotFolder(args.plot_dir); !plots) {
@@ -289,8 +293,8 @@ int simulateCommand(const SimulateArgs& args) {
   if (!args.quiet)
     printSummary(report, args, model, summary, to_stdout ? "standard output" : csv, rows);
   if (!args.quiet && !args.plot_dir.empty())
-    std::fprintf(report, "plots           %s/%s-{energy,spin,tilt,normal}.png\n", args.plot_dir.c_str(),
-                std::filesystem::path(args.scene).stem().string().c_str());
+    std::fprintf(report, "plots           %s/%s-{energy,spin,tilt,normal}.png\n",
+                 args.plot_dir.c_str(), std::filesystem::path(args.scene).stem().string().c_str());
   return kOk;
 }
 

@@ -114,9 +114,9 @@ struct Output {
   }
 };
 
-// Places a and b side by side, into `out` (its buffer reused).
 constexpr unsigned char kDivider = 48;  // the grey of the line between --both's halves
 
+// Places a and b side by side, into `out` (its buffer reused).
 void sideBySide(const render::Image& a, const render::Image& b, render::Image& out) {
   out.width = a.width + b.width;
   out.height = a.height;

@@ -69,8 +69,10 @@ std::string Renderer::init() {
   if (!current.ok()) return "cannot make the OpenGL context current";
   const GlApi& gl = context_->api();
   try {
-    points_program_ = loadProgram(gl, "points.vert", {"points.frag", "points_depth_sphere.frag"});
-    flat_points_program_ = loadProgram(gl, "points.vert", {"points.frag", "points_depth_flat.frag"});
+    points_program_ =
+        loadProgram(gl, "points.vert", {"points.frag", "points_depth_sphere.frag"});
+    flat_points_program_ =
+        loadProgram(gl, "points.vert", {"points.frag", "points_depth_flat.frag"});
     floor_program_ = loadProgram(gl, "floor.vert", {"floor.frag", "floor_common.frag"});
     shadow_program_ = loadProgram(gl, "floor.vert", {"shadow.frag", "floor_common.frag"});
   } catch (const std::exception& e) {

@@ -174,16 +174,17 @@ TEST(Cli, ADashSendsTheTableToStandardOutput) {
   const fs::path dir = scratchDir() / "dash";
   fs::remove_all(dir);
   fs::create_directories(dir);
-  const std::string command = "cd " + dir.string() + " && " + RATTLEBACK_BIN + " simulate " +
-                              scene("seed-reversed") + " --duration 0.1 --rate 100 -o - 2>err.txt " +
-                              "| python3 -c 'import csv, sys; rows = list(csv.DictReader(sys.stdin)); " +
-                              "print(len(rows), rows[-1][\"t\"])' >out.txt";
+  const std::string command =
+      "cd " + dir.string() + " && " + RATTLEBACK_BIN + " simulate " + scene("seed-reversed") +
+      " --duration 0.1 --rate 100 -o - 2>err.txt | python3 -c 'import csv, sys; " +
+      "rows = list(csv.DictReader(sys.stdin)); print(len(rows), rows[-1][\"t\"])' >out.txt";
   ASSERT_EQ(std::system(command.c_str()), 0);
   std::ifstream out(dir / "out.txt"), err(dir / "err.txt");
   std::string parsed, summary((std::istreambuf_iterator<char>(err)), {});
   std::getline(out, parsed);
   EXPECT_EQ(parsed, "11 0.1");
-  EXPECT_NE(summary.find("telemetry       standard output (11 rows)"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("telemetry       standard output (11 rows)"), std::string::npos)
+      << summary;
   EXPECT_FALSE(fs::exists(dir / "-"));
   EXPECT_FALSE(fs::exists(dir / "-.json"));
 }

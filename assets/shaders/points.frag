@@ -30,7 +30,7 @@ void main() {
   float diffuse = max(dot(n, u_light_view), 0.0);
   // The highlight, smaller than a pixel on spheres a pixel or two across, would read as white
   // speckle: it fades out below 2.5 px.
-  // (x⁴⁰ = x³² x⁸ by squaring: five products, where pow() takes a logarithm and an exponential.)
+  // (x⁴⁰ = x³² x⁸ by squaring: six products, where pow() takes a logarithm and an exponential.)
   float h = max(dot(n, u_half_view), 0.0);
   float h2 = h * h, h4 = h2 * h2, h8 = h4 * h4, h16 = h8 * h8;
   float specular = h16 * h16 * h8 * smoothstep(1.0, 2.5, v_radius_px);
