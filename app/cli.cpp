@@ -15,7 +15,8 @@ Cli::Cli() {
   SimulateArgs& s = simulate_args;
   simulate = app.add_subcommand("simulate", "Run a scene; write CSV telemetry and print a summary");
   simulate->add_option("scene", s.scene, "Scene file (YAML)")->required();
-  simulate->add_option("-o,--output", s.output, "CSV telemetry file (default out/<scene>.csv)");
+  simulate->add_option("-o,--output", s.output,
+                       "CSV telemetry file (default out/<scene>.csv; - for standard output)");
   simulate->add_option("--duration", s.duration, "Simulated time, s (overrides the scene)");
   simulate->add_option("--dt", s.dt, "Fixed time step, s (overrides the scene's dt or tolerance)");
   simulate->add_option("--tolerance", s.tolerance,
