@@ -251,8 +251,8 @@ void Renderer::drawPoints(const Camera& camera, const FrameInput& frame) {
   const Eigen::Vector3f light_world = Eigen::Vector3f(0.3f, -0.6f, 1.0f).normalized();
   const Eigen::Vector3f light_view = camera.view.topLeftCorner<3, 3>() * light_world;
 
-  // Spheres under 4 px in radius (the default body's are 1–3 px at 720p) are drawn as discs at
-  // their nearest point: where two overlap, the true surfaces would meet along a curve a pixel
+  // Spheres under 4 px in radius (the default body's are about 1–2 px at 720p) are drawn as discs
+  // at their nearest point: where two overlap, the true surfaces would meet along a curve a pixel
   // or two long. (At 720p 0.1–0.2 % of pixels differ; from 4 px up the curve shows, and each
   // fragment gets its own depth.) The largest radius is that of a sphere as near the camera as
   // any point of the body can be, as points.vert computes it.
