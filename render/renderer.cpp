@@ -93,6 +93,8 @@ std::string Renderer::init() {
   add(body_.bottom, 1);
   radius_ = reachOf(body_);
   point_count_ = static_cast<GLsizei>(data.size() / 4);
+  low_ = low;
+  high_ = high;
   half_extent_ = 0.5f * (high - low) + Eigen::Vector3f::Constant(body_.radius);
   middle_height_ = 0.5f * (high.z() + low.z());
   gl.glGenVertexArrays(1, &points_vao_);
@@ -192,19 +194,22 @@ void Renderer::drawFloor(const Camera& camera, const FrameInput& frame,
   gl.glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
 }
 
+std::array<Eigen::Vector2f, 4> Renderer::shadowQuad(const FrameInput& frame) const {
+  const Eigen::Vector2f axis = longAxisOnFloor(frame);
+  const Eigen::Vector2f position = frame.position_world.head<2>().cast<float>();
+  const Eigen::Vector2f across(axis.y(), -axis.x());
+  const Eigen::Vector2f a = 1.25f * body_.footprint_half.x() * across;
+  const Eigen::Vector2f b = 1.25f * body_.footprint_half.y() * axis;
+  return {position - a - b, position + a - b, position - a + b, position + a + b};
+}
+
 void Renderer::drawShadow(const Camera& camera, const FrameInput& frame,
                           const Eigen::Vector2f& center) {
   useFloorProgram(shadow_program_, camera, frame, center, true);
   // The shadow is zero beyond 1.15 of the half extents (floor_common.frag): a quad out to
   // 1.25 of them holds all of it. It is drawn without the depth test over the copied floor
   // (whose depth it shares), blended as shadow.frag says.
-  const Eigen::Vector2f axis = longAxisOnFloor(frame);
-  const Eigen::Vector2f position = frame.position_world.head<2>().cast<float>();
-  const Eigen::Vector2f across(axis.y(), -axis.x());
-  const Eigen::Vector2f a = 1.25f * body_.footprint_half.x() * across;
-  const Eigen::Vector2f b = 1.25f * body_.footprint_half.y() * axis;
-  const Eigen::Vector2f corners[4] = {position - a - b, position + a - b, position - a + b,
-                                      position + a + b};
+  const std::array<Eigen::Vector2f, 4> corners = shadowQuad(frame);
   float quad[8];
   for (int i = 0; i < 4; ++i) quad[2 * i] = corners[i].x(), quad[2 * i + 1] = corners[i].y();
   const GlApi& gl = context_->api();
@@ -235,12 +240,64 @@ void Renderer::copyCachedFloor(const Camera& camera, const FrameInput& frame,
     cache_camera_ = camera;
     cache_center_ = center;
     cache_valid_ = true;
+    dirty_.reset();
   }
-  gl.glBindFramebuffer(GL_READ_FRAMEBUFFER, cache_.fbo);
-  gl.glBindFramebuffer(GL_DRAW_FRAMEBUFFER, context_->framebuffer());
-  gl.glBlitFramebuffer(0, 0, settings_.width, settings_.height, 0, 0, settings_.width,
-                       settings_.height, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  // Only what the last frame drew over the floor is copied back (a 720p frame's colour and
+  // depth are 7 MB; the body and its shadow cover a tenth of it or less).
+  const PixelRect r = dirty_.value_or(PixelRect{0, 0, settings_.width, settings_.height});
+  if (r.x0 < r.x1 && r.y0 < r.y1) {
+    gl.glBindFramebuffer(GL_READ_FRAMEBUFFER, cache_.fbo);
+    gl.glBindFramebuffer(GL_DRAW_FRAMEBUFFER, context_->framebuffer());
+    gl.glBlitFramebuffer(r.x0, r.y0, r.x1, r.y1, r.x0, r.y0, r.x1, r.y1,
+                         GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  }
   gl.glBindFramebuffer(GL_FRAMEBUFFER, context_->framebuffer());
+}
+
+float Renderer::largestSpherePx(const Camera& camera, const FrameInput& frame) const {
+  // As points.vert sizes a sphere, at the nearest any point of the body can be to the camera.
+  const Eigen::Vector3f center_view =
+      (camera.view * frame.position_world.cast<float>().homogeneous()).head<3>();
+  const bool perspective = camera.proj(3, 3) == 0;
+  const float nearest = perspective ? std::max(-center_view.z() - radius_, 1e-6f) : 1.0f;
+  const float px_per_m = std::abs(camera.proj(1, 1)) * settings_.height * 0.5f / nearest;
+  return std::max(body_.radius * px_per_m, std::min(0.6f * body_.spacing * px_per_m, 2.0f));
+}
+
+Renderer::PixelRect Renderer::drawnRect(const Camera& camera, const FrameInput& frame) const {
+  const PixelRect whole{0, 0, settings_.width, settings_.height};
+  // The sphere centres lie in their box; projected, in the hull of its corners' images, and
+  // each sprite reaches at most its half size (points.vert: the radius and half an edge of at
+  // most a pixel) beyond its centre. The shadow lies in its quad (drawShadow). Two pixels more
+  // for rounding.
+  const Eigen::Matrix4f to_clip = camera.proj * camera.view;
+  const Eigen::Matrix3f rotation = frame.orientation.cast<float>().toRotationMatrix();
+  const Eigen::Vector3f position = frame.position_world.cast<float>();
+  float x0 = 1e9f, y0 = 1e9f, x1 = -1e9f, y1 = -1e9f;
+  auto add = [&](const Eigen::Vector3f& world, float margin_px) {
+    const Eigen::Vector4f clip = to_clip * world.homogeneous();
+    if (!(clip.w() > 1e-6f)) return false;
+    const float x = (clip.x() / clip.w() * 0.5f + 0.5f) * settings_.width;
+    const float y = (clip.y() / clip.w() * 0.5f + 0.5f) * settings_.height;
+    x0 = std::min(x0, x - margin_px), x1 = std::max(x1, x + margin_px);
+    y0 = std::min(y0, y - margin_px), y1 = std::max(y1, y + margin_px);
+    return true;
+  };
+  const float sprite_px = std::max(largestSpherePx(camera, frame), 0.75f) + 0.5f + 2;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Eigen::Vector3f local((corner & 1 ? high_ : low_).x(), (corner & 2 ? high_ : low_).y(),
+                                (corner & 4 ? high_ : low_).z());
+    if (!add(rotation * local + position, sprite_px)) return whole;
+  }
+  for (const Eigen::Vector2f& c : shadowQuad(frame))
+    if (!add(Eigen::Vector3f(c.x(), c.y(), 0), 2)) return whole;
+  if (!(x1 - x0 < 4.0f * settings_.width && y1 - y0 < 4.0f * settings_.height)) return whole;
+  PixelRect r;
+  r.x0 = std::clamp(static_cast<int>(std::floor(x0)), 0, settings_.width);
+  r.y0 = std::clamp(static_cast<int>(std::floor(y0)), 0, settings_.height);
+  r.x1 = std::clamp(static_cast<int>(std::ceil(x1)), 0, settings_.width);
+  r.y1 = std::clamp(static_cast<int>(std::ceil(y1)), 0, settings_.height);
+  return r;
 }
 
 void Renderer::drawPoints(const Camera& camera, const FrameInput& frame) {
@@ -256,15 +313,9 @@ void Renderer::drawPoints(const Camera& camera, const FrameInput& frame) {
   // or two long. (At 720p 0.1–0.2 % of pixels differ; from 4 px up the curve shows, and each
   // fragment gets its own depth.) The largest radius is that of a sphere as near the camera as
   // any point of the body can be, as points.vert computes it.
-  const Eigen::Vector3f center_view =
-      (camera.view * frame.position_world.cast<float>().homogeneous()).head<3>();
-  const bool perspective = camera.proj(3, 3) == 0;
-  const float nearest = perspective ? std::max(-center_view.z() - radius_, 1e-6f) : 1.0f;
-  const float px_per_m = std::abs(camera.proj(1, 1)) * settings_.height * 0.5f / nearest;
-  const float largest_px = std::max(body_.radius * px_per_m,
-                                    std::min(0.6f * body_.spacing * px_per_m, 2.0f));
-  const GLuint program =
-      !settings_.exact_sphere_depth && largest_px < 4 ? flat_points_program_ : points_program_;
+  const GLuint program = !settings_.exact_sphere_depth && largestSpherePx(camera, frame) < 4
+                             ? flat_points_program_
+                             : points_program_;
 
   const GlApi& gl = context_->api();
   gl.glUseProgram(program);
@@ -364,9 +415,11 @@ void Renderer::draw(const FrameInput& frame, Image& out) {
   if (follow) {  // the camera moves with the body: the whole floor, every frame
     gl.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     drawFloor(camera, frame, center, true);
+    dirty_.reset();
   } else {
     copyCachedFloor(camera, frame, center);  // (clear colour set above, for the cache's clear)
     drawShadow(camera, frame, center);
+    dirty_ = drawnRect(camera, frame);
   }
   drawPoints(camera, frame);
   out.width = settings_.width;

@@ -3,6 +3,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -47,6 +48,8 @@ class Renderer {
   /// The body's long axis on the floor, a unit vector (the shadow's and the chase camera's
   /// heading).
   static Eigen::Vector2f longAxisOnFloor(const FrameInput& frame);
+  /// The floor quad the shadow is drawn on (world x, y), around the body's footprint.
+  std::array<Eigen::Vector2f, 4> shadowQuad(const FrameInput& frame) const;
   /// The blending of every pass but the shadow's.
   void setBlending();
   /// The fixed views' floor without the shadow, drawn once into its own FBO and copied into
@@ -54,6 +57,15 @@ class Renderer {
   /// shader runs at every pixel). Redrawn whenever the camera or the centre changes, so a
   /// frame still depends only on its own values.
   void copyCachedFloor(const Camera& camera, const FrameInput& frame, const Eigen::Vector2f& center);
+  /// Pixels, in window coordinates (rows from the bottom), from x0, y0 up to x1, y1 exclusive.
+  struct PixelRect {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  };
+  /// A rectangle holding every pixel the shadow and the body change in this frame, with a
+  /// margin; the whole frame where the body is too near the camera to bound.
+  PixelRect drawnRect(const Camera& camera, const FrameInput& frame) const;
+  /// The radius in pixels of the largest sphere any point of the body could be drawn with.
+  float largestSpherePx(const Camera& camera, const FrameInput& frame) const;
   void drawPoints(const Camera& camera, const FrameInput& frame);
   void drawReadouts(const FrameInput& frame, Image& out);
   bool readoutsShown() const;
@@ -78,6 +90,10 @@ class Renderer {
   bool cache_valid_ = false;
   Camera cache_camera_;  ///< the camera the cached floor was drawn with
   Eigen::Vector2f cache_center_;
+  /// Where the frame buffer may differ from the cached floor: what the last frame drew over
+  /// it (drawnRect), or nothing known (the whole frame). The next frame copies only this back.
+  std::optional<PixelRect> dirty_;
+  Eigen::Vector3f low_, high_;    ///< the sphere centres' box, body frame, m
   Eigen::Vector3f half_extent_;   ///< body half extents, m
   float middle_height_ = 0;       ///< height of the body's middle above its CM, m
   float radius_ = 0;              ///< the largest distance of a drawn point from the CM, m

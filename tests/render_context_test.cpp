@@ -206,3 +206,43 @@ TEST(Renderer, SmallSpheresAsDiscsDifferOnlyWhereTheyOverlap) {
                                                          frame(2560, 1440, true), 0);
   EXPECT_EQ(large.differing, 0);
 }
+
+// Each frame copies back only the part of the cached floor the frame before drew over (the
+// body and its shadow, bounded on screen): a frame drawn after others is byte for byte the
+// frame a new renderer draws first (which copies the whole floor). The body turns, tips, moves
+// across the floor and towards the camera, so the bounds move and grow frame to frame.
+TEST(Renderer, AFrameAfterOthersEqualsTheSameFrameDrawnFirst) {
+  render::BodyPoints body = row();
+  body.radius = 0.004f;  // large spheres: the margin around their centres counts
+  std::vector<render::FrameInput> frames;
+  for (int k = 0; k < 8; ++k) {
+    render::FrameInput f = pose(0.4 * k);
+    f.orientation = Eigen::AngleAxisd(0.9 * k, Eigen::Vector3d::UnitZ()) *
+                    Eigen::AngleAxisd(0.3 * std::sin(k), Eigen::Vector3d::UnitX());
+    f.position_world = {0.03 * std::cos(k), -0.02 * k, 0.02 + 0.004 * k};
+    f.framing.center = {0, -0.07f, 0.02f};
+    f.framing.radius = 0.16f;
+    frames.push_back(f);
+  }
+  for (render::View view :
+       {render::View::Oblique, render::View::Above, render::View::Front, render::View::Side}) {
+    render::RenderSettings s;
+    s.width = 320;
+    s.height = 180;
+    s.view = view;
+    s.readouts = false;
+    auto running = render::Renderer::create(s, body);
+    ASSERT_TRUE(running) << running.error().text();
+    for (std::size_t k = 0; k < frames.size(); ++k) {
+      render::Image after_others, first;
+      running.value()->draw(frames[k], after_others);
+      auto fresh = render::Renderer::create(s, body);
+      ASSERT_TRUE(fresh);
+      fresh.value()->draw(frames[k], first);
+      const render::Comparison c = render::compareImages(after_others, first, 0);
+      EXPECT_EQ(c.differing, 0) << rb::nameOf(view) << ", frame " << k << ": within x "
+                                << c.box[0] << "–" << c.box[2] << ", y " << c.box[1] << "–"
+                                << c.box[3];
+    }
+  }
+}
