@@ -119,12 +119,12 @@ std::string Renderer::init() {
   gl.glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
   gl.glEnableVertexAttribArray(0);
 
-  // The shadow's quad: four floor points, rewritten for each frame.
+  // The polygon the shadow is drawn in: floor points, rewritten for each frame.
   gl.glGenVertexArrays(1, &shadow_vao_);
   gl.glBindVertexArray(shadow_vao_);
   gl.glGenBuffers(1, &shadow_vbo_);
   gl.glBindBuffer(GL_ARRAY_BUFFER, shadow_vbo_);
-  gl.glBufferData(GL_ARRAY_BUFFER, 8 * sizeof(float), nullptr, GL_DYNAMIC_DRAW);
+  gl.glBufferData(GL_ARRAY_BUFFER, 2 * kShadowSides * sizeof(float), nullptr, GL_DYNAMIC_DRAW);
   gl.glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
   gl.glEnableVertexAttribArray(0);
 
@@ -194,31 +194,41 @@ void Renderer::drawFloor(const Camera& camera, const FrameInput& frame,
   gl.glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
 }
 
-std::array<Eigen::Vector2f, 4> Renderer::shadowQuad(const FrameInput& frame) const {
+Renderer::ShadowOutline Renderer::shadowOutline(const FrameInput& frame) const {
+  // The shadow is zero beyond the ellipse of 1.15 half extents (floor_common.frag), so a
+  // polygon around that ellipse changes every pixel the shadow does, and none outside it
+  // (there the shader's colour and alpha are 0). Its sides touch the ellipse of 1.16 (a margin
+  // for rounding): the vertices lie at 1.16/cos(π/n) in units of the half extents. It covers
+  // a third less floor than the rectangle around the ellipse, and each pixel costs shading.
   const Eigen::Vector2f axis = longAxisOnFloor(frame);
   const Eigen::Vector2f position = frame.position_world.head<2>().cast<float>();
   const Eigen::Vector2f across(axis.y(), -axis.x());
-  const Eigen::Vector2f a = 1.25f * body_.footprint_half.x() * across;
-  const Eigen::Vector2f b = 1.25f * body_.footprint_half.y() * axis;
-  return {position - a - b, position + a - b, position - a + b, position + a + b};
+  const float n = static_cast<float>(kShadowSides);
+  const float reach = 1.16f / std::cos(static_cast<float>(M_PI) / n);
+  ShadowOutline outline;
+  for (int k = 0; k < kShadowSides; ++k) {
+    const float angle = 2 * static_cast<float>(M_PI) * static_cast<float>(k) / n;
+    outline[k] = position + reach * (body_.footprint_half.x() * std::cos(angle) * across +
+                                     body_.footprint_half.y() * std::sin(angle) * axis);
+  }
+  return outline;
 }
 
 void Renderer::drawShadow(const Camera& camera, const FrameInput& frame,
                           const Eigen::Vector2f& center) {
   useFloorProgram(shadow_program_, camera, frame, center, true);
-  // The shadow is zero beyond 1.15 of the half extents (floor_common.frag): a quad out to
-  // 1.25 of them holds all of it. It is drawn without the depth test over the copied floor
-  // (whose depth it shares), blended as shadow.frag says.
-  const std::array<Eigen::Vector2f, 4> corners = shadowQuad(frame);
-  float quad[8];
-  for (int i = 0; i < 4; ++i) quad[2 * i] = corners[i].x(), quad[2 * i + 1] = corners[i].y();
+  // Drawn without the depth test over the copied floor (whose depth it shares), blended as
+  // shadow.frag says.
+  const ShadowOutline outline = shadowOutline(frame);
+  float fan[2 * kShadowSides];
+  for (int i = 0; i < kShadowSides; ++i) fan[2 * i] = outline[i].x(), fan[2 * i + 1] = outline[i].y();
   const GlApi& gl = context_->api();
   gl.glBindVertexArray(shadow_vao_);
   gl.glBindBuffer(GL_ARRAY_BUFFER, shadow_vbo_);
-  gl.glBufferSubData(GL_ARRAY_BUFFER, 0, sizeof quad, quad);
+  gl.glBufferSubData(GL_ARRAY_BUFFER, 0, sizeof fan, fan);
   gl.glDisable(GL_DEPTH_TEST);
   gl.glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  gl.glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  gl.glDrawArrays(GL_TRIANGLE_FAN, 0, kShadowSides);
   setBlending();
   gl.glEnable(GL_DEPTH_TEST);
 }
@@ -268,7 +278,7 @@ Renderer::PixelRect Renderer::drawnRect(const Camera& camera, const FrameInput& 
   const PixelRect whole{0, 0, settings_.width, settings_.height};
   // The sphere centres lie in their box; projected, in the hull of its corners' images, and
   // each sprite reaches at most its half size (points.vert: the radius and half an edge of at
-  // most a pixel) beyond its centre. The shadow lies in its quad (drawShadow). Two pixels more
+  // most a pixel) beyond its centre. The shadow lies in its polygon (shadowOutline). Two pixels more
   // for rounding.
   const Eigen::Matrix4f to_clip = camera.proj * camera.view;
   const Eigen::Matrix3f rotation = frame.orientation.cast<float>().toRotationMatrix();
@@ -289,7 +299,7 @@ Renderer::PixelRect Renderer::drawnRect(const Camera& camera, const FrameInput& 
                                 (corner & 4 ? high_ : low_).z());
     if (!add(rotation * local + position, sprite_px)) return whole;
   }
-  for (const Eigen::Vector2f& c : shadowQuad(frame))
+  for (const Eigen::Vector2f& c : shadowOutline(frame))
     if (!add(Eigen::Vector3f(c.x(), c.y(), 0), 2)) return whole;
   if (!(x1 - x0 < 4.0f * settings_.width && y1 - y0 < 4.0f * settings_.height)) return whole;
   PixelRect r;

@@ -48,8 +48,10 @@ class Renderer {
   /// The body's long axis on the floor, a unit vector (the shadow's and the chase camera's
   /// heading).
   static Eigen::Vector2f longAxisOnFloor(const FrameInput& frame);
-  /// The floor quad the shadow is drawn on (world x, y), around the body's footprint.
-  std::array<Eigen::Vector2f, 4> shadowQuad(const FrameInput& frame) const;
+  /// The polygon on the floor (world x, y) the shadow is drawn in, around the body's footprint.
+  static constexpr int kShadowSides = 16;
+  using ShadowOutline = std::array<Eigen::Vector2f, kShadowSides>;
+  ShadowOutline shadowOutline(const FrameInput& frame) const;
   /// The blending of every pass but the shadow's.
   void setBlending();
   /// The fixed views' floor without the shadow, drawn once into its own FBO and copied into
