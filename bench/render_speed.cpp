@@ -1,7 +1,9 @@
 // Frames per second of the video pipeline's stages, measured side by side in one run:
 // render only (draw + read back + read-outs), encode only (RGBA → yuv420p → x264), and end
 // to end (`rattleback render`: simulate, render and encode in overlapping threads), and
-// `render --both` (two renderers on one thread, three encoders), for each OpenGL backend.
+// `render --both` (two renderers on one thread, three encoders), for each OpenGL backend; and
+// the CPU time (all threads) encoding alone and end to end take, which on two cores bounds
+// how near the two can come.
 // Usage: rattleback_render_bench [SCENE] [FRAMES] [draw]
 // With "draw" it only draws the frames, 720p with EGL, ten times over: a steady load for a
 // profiler (perf record), and the render-only figure alone.
@@ -10,6 +12,7 @@
 #include <chrono>
 #include <cstdio>
 #include <string>
+#include <sys/resource.h>
 
 #include "app/commands.hpp"
 #include "app/frames.hpp"
@@ -28,6 +31,12 @@ double median(std::vector<double> values) {
   return values[values.size() / 2];
 }
 
+double cpuSeconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
 double seconds(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
@@ -40,8 +49,9 @@ int main(int argc, char** argv) {
   const bool draw_only = argc > 3 && std::string(argv[3]) == "draw";
   std::printf("scene %s, %d frames per measurement, median of %d\n", scene.c_str(), frames,
               kRepeats);
-  std::printf("%-8s %-10s %11s %11s %11s %11s %14s\n", "backend", "size", "render fps",
-              "encode fps", "end-to-end", "--both", "end/encode");
+  std::printf("%-8s %-10s %11s %11s %11s %11s %11s %11s %11s\n", "backend", "size",
+              "render fps", "encode fps", "end-to-end", "--both", "end/encode", "encode cpu",
+              "e2e cpu");
   for (render::Backend backend : {render::Backend::Egl, render::Backend::OsMesa})
   for (auto [w, h] : {std::pair{1280, 720}, std::pair{1920, 1080}}) {
     app::Overrides o;
@@ -98,6 +108,7 @@ int main(int argc, char** argv) {
     // Each stage three times, interleaved; the median of each (one pass's figures move by
     // ±15 % here from run to run: the stages share two cores).
     std::array<std::vector<double>, 4> fps;
+    std::array<std::vector<double>, 2> cpu;  // CPU seconds of all threads: encode only, end to end
     for (int repeat = 0; repeat < kRepeats; ++repeat) {
       auto start = std::chrono::steady_clock::now();
       for (std::size_t i = 0; i < poses.size(); ++i) renderer.draw(poses[i], images[i]);
@@ -114,10 +125,12 @@ int main(int argc, char** argv) {
       }
       std::unique_ptr<render::VideoEncoder> encoder = std::move(opened).value();
       start = std::chrono::steady_clock::now();
+      double cpu_start = cpuSeconds();
       for (const auto& image : images)
         if (!encoder->add(image)) return 2;
       if (!encoder->finish()) return 2;
       fps[1].push_back(frames / seconds(start));
+      cpu[0].push_back(cpuSeconds() - cpu_start);
 
       app::RenderArgs args;
       args.scene = scene;
@@ -127,8 +140,10 @@ int main(int argc, char** argv) {
       args.quiet = true;
       args.backend = std::string(rb::nameOf(backend));
       start = std::chrono::steady_clock::now();
+      cpu_start = cpuSeconds();
       app::renderCommand(args);
       fps[2].push_back(frames / seconds(start));
+      cpu[1].push_back(cpuSeconds() - cpu_start);
       args.both = true;
       args.output = "/tmp/rattleback_bench_both.mp4";
       start = std::chrono::steady_clock::now();
@@ -137,10 +152,10 @@ int main(int argc, char** argv) {
     }
     const double render_fps = median(fps[0]), encode_fps = median(fps[1]),
                  e2e_fps = median(fps[2]), both_fps = median(fps[3]);
-    std::printf("%-8s %-10s %11.1f %11.1f %11.1f %11.1f %13.2fx\n",
+    std::printf("%-8s %-10s %11.1f %11.1f %11.1f %11.1f %10.2fx %10.2fs %10.2fs\n",
                 std::string(rb::nameOf(backend)).c_str(),
                 (std::to_string(w) + "x" + std::to_string(h)).c_str(), render_fps, encode_fps,
-                e2e_fps, both_fps, encode_fps / e2e_fps);
+                e2e_fps, both_fps, encode_fps / e2e_fps, median(cpu[0]), median(cpu[1]));
   }
   for (const char* f : {"/tmp/rattleback_bench.mp4", "/tmp/rattleback_bench_e2e.mp4",
                         "/tmp/rattleback_bench_both-preferred.mp4",

@@ -91,6 +91,10 @@ BodyGrid buildBodyGrid(const Paraboloid& shape, const std::optional<Dents>& dent
 
   PointMoments moments;
   BodyGrid out;
+  // At most one point of each kind per column (no regrowth: the default body has 120 000).
+  const std::size_t columns = static_cast<std::size_t>(4) * nx * ny;
+  out.surface.top.reserve(columns);
+  out.surface.bottom.reserve(columns);
   for (int j = -ny; j < ny; ++j) {
     const double y = (j + 0.5) * grid.dy;
     for (int i = -nx; i < nx; ++i) {

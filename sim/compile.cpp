@@ -172,6 +172,8 @@ Integrator integratorOf(const SimulationSpec& sim) {
 
 // Surface points and contact points from the geometric frame to the CM's.
 void placePoints(Body& body, const SurfacePoints& surface) {
+  body.top.reserve(surface.top.size());
+  body.bottom.reserve(surface.bottom.size());
   for (const Eigen::Vector3d& p_geom : surface.top) body.top.push_back(p_geom - body.com_geometric);
   for (const Eigen::Vector3d& p_geom : surface.bottom)
     body.bottom.push_back(p_geom - body.com_geometric);

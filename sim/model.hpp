@@ -40,6 +40,11 @@ struct ContactPoints {
   Eigen::Vector3d lo = Eigen::Vector3d::Zero(), hi = Eigen::Vector3d::Zero();  ///< bounding box
 
   std::size_t size() const { return x.size(); }
+  void reserve(std::size_t n) {
+    x.reserve(n);
+    y.reserve(n);
+    z.reserve(n);
+  }
   Eigen::Vector3d operator[](std::size_t i) const { return {x[i], y[i], z[i]}; }
   void push_back(const Eigen::Vector3d& r) {
     lo = size() == 0 ? r : Eigen::Vector3d(lo.cwiseMin(r));
