@@ -157,7 +157,7 @@ const char* kStyle = R"(
 body{font-family:"DejaVu Sans",sans-serif;max-width:1300px;margin:1em auto;padding:0 1em;color:#222}
 h1{margin-bottom:0}section{border-top:1px solid #ccc;margin-top:1.5em}
 .pair{display:flex;gap:1em;flex-wrap:wrap}.pair figure{flex:1 1 500px;margin:0}
-video,img{width:100%;height:auto;background:#eee}figure{margin:0 0 1em}
+video,img{max-width:100%;height:auto;background:#eee}figure{margin:0 0 1em}
 .grid{display:grid;grid-template-columns:repeat(auto-fill,minmax(300px,1fr));gap:.7em}
 table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:.4em .8em;vertical-align:top;text-align:left}
 )";

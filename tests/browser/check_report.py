@@ -2,7 +2,7 @@
 """Opens DIR/index.html in headless Chromium (Selenium, Debian's chromium and chromium-driver)
 and checks what a reader would see: the page loads with no console errors, every image decodes
 (naturalWidth > 0), every video reaches readyState >= 2 with the expected duration, and its
-currentTime advances when it plays.
+currentTime advances when it plays; and no image or video is drawn larger than its own size.
 
 Usage: check_report.py DIR EXPECTED_VIDEO_SECONDS
 Exit status 0 when every check passes, 1 when one fails (each failure printed), 77 when
@@ -94,6 +94,14 @@ def main():
                 failures.append(f"video {name} does not play: {r['playError']}")
             elif not r["after"] > r["before"]:
                 failures.append(f"video {name}: currentTime did not advance ({r['before']} -> {r['after']})")
+        # Nothing drawn larger than it is: a 320 × 180 video or still keeps its own size on a
+        # wide page (blown up, its pixels blur), and a large one shrinks to fit.
+        sizes = driver.execute_script("""
+            return Array.from(document.querySelectorAll('img, video')).map(e =>
+                [e.getAttribute('src'), e.clientWidth, e.naturalWidth || e.videoWidth]);""")
+        for src, shown, natural in sizes:
+            if natural > 0 and shown > natural + 1:
+                failures.append(f"{src} is drawn {shown} px wide, larger than its own {natural} px")
         # The console: no errors.
         for entry in driver.get_log("browser"):
             if entry["level"] == "SEVERE":
