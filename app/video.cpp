@@ -196,6 +196,8 @@ int renderCommand(const RenderArgs& args) {
               << "'\n";
     return kBadInput;
   }
+  // The OpenGL driver loads (about 40 ms) while the scene does.
+  std::jthread preload([b = *backend] { render::preloadBackend(b); });
   auto loaded = loadScene(args.scene, args.overrides);
   if (!loaded) {
     std::cerr << loaded.error().text() << "\n";
@@ -253,6 +255,7 @@ int renderCommand(const RenderArgs& args) {
     registerTemporary(outputs.back()->encoder->temporaryPath());
   }
 
+  preload.join();
   std::vector<std::unique_ptr<render::Renderer>> renderers;
   const render::BodyPoints points = bodyPointsOf(model);
   // Each run's camera for the fixed views, and the spin of its frames so far for the inset:
@@ -368,6 +371,14 @@ int stillCommand(const StillArgs& args) {
     std::cerr << ok.error().text() << "\n";
     return kBadInput;
   }
+  const auto backend = rb::parseName<render::Backend>(args.backend);
+  if (!backend) {
+    std::cerr << "--backend: " << rb::choices<render::Backend>() << ", not '" << args.backend
+              << "'\n";
+    return kBadInput;
+  }
+  // The OpenGL driver loads (about 40 ms) while the scene does.
+  std::jthread preload([b = *backend] { render::preloadBackend(b); });
   auto loaded = loadScene(args.scene, o);
   if (!loaded) {
     std::cerr << loaded.error().text() << "\n";
@@ -391,18 +402,13 @@ int stillCommand(const StillArgs& args) {
     return kBadInput;
   }
 
-  const auto backend = rb::parseName<render::Backend>(args.backend);
-  if (!backend) {
-    std::cerr << "--backend: " << rb::choices<render::Backend>() << ", not '" << args.backend
-              << "'\n";
-    return kBadInput;
-  }
   render::RenderSettings settings =
       settingsOf(plan, model.duration, model.initial.spin, args.scene, *backend);
   settings.readouts = !args.no_readouts && !args.transparent;
   settings.transparent = args.transparent;
   if (args.transparent) settings.title.clear();
   const render::BodyPoints points = bodyPointsOf(model);
+  preload.join();
   auto created = render::Renderer::create(settings, points);
   if (!created) {
     std::cerr << "still: " << created.error().text() << "\n";

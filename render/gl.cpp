@@ -115,6 +115,52 @@ class OsMesaContext final : public GlContext {
 
 // ---- EGL ------------------------------------------------------------------------------------
 
+std::string eglHex(EGLint value) {
+  char text[16];
+  std::snprintf(text, sizeof text, "%x", static_cast<unsigned>(value));
+  return text;
+}
+
+// A GPU through the device platform when there is one (a device with a DRM node), else
+// Mesa's surfaceless platform (which itself uses a render node when it can, or llvmpipe).
+std::string openEglDisplay(EGLDisplay& display, std::string& platform) {
+  const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+  const std::string extensions = client ? client : "";
+  auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+      eglGetProcAddress("eglGetPlatformDisplayEXT"));
+  if (!getPlatformDisplay) return "EGL has no eglGetPlatformDisplayEXT";
+  if (extensions.find("EGL_EXT_platform_device") != std::string::npos) {
+    auto queryDevices =
+        reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+    auto queryDeviceString = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(
+        eglGetProcAddress("eglQueryDeviceStringEXT"));
+    EGLDeviceEXT devices[16];
+    EGLint count = 0;
+    if (queryDevices && queryDeviceString && queryDevices(16, devices, &count)) {
+      for (EGLint i = 0; i < count; ++i) {
+        // A GPU: a device with a DRM node that is not Mesa's software device.
+        const char* names = queryDeviceString(devices[i], EGL_EXTENSIONS);
+        const std::string device = names ? std::string(" ") + names + " " : "";
+        if (device.find(" EGL_EXT_device_drm ") == std::string::npos ||
+            device.find(" EGL_MESA_device_software ") != std::string::npos)
+          continue;
+        display = getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+        if (display != EGL_NO_DISPLAY && eglInitialize(display, nullptr, nullptr)) {
+          platform = "device";
+          return "";
+        }
+      }
+    }
+  }
+  if (extensions.find("EGL_MESA_platform_surfaceless") == std::string::npos)
+    return "EGL has neither a GPU device nor the surfaceless platform";
+  display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+  if (display == EGL_NO_DISPLAY || !eglInitialize(display, nullptr, nullptr))
+    return "EGL cannot initialise the surfaceless platform (error 0x" + eglHex(eglGetError()) + ")";
+  platform = "surfaceless";
+  return "";
+}
+
 class EglContext final : public GlContext {
  public:
   ~EglContext() override {
@@ -134,7 +180,7 @@ class EglContext final : public GlContext {
     width_ = width;
     height_ = height;
     std::string platform;
-    if (std::string e = openDisplay(platform); !e.empty()) return e;
+    if (std::string e = openEglDisplay(display_, platform); !e.empty()) return e;
     if (!eglBindAPI(EGL_OPENGL_API)) return "EGL cannot bind the OpenGL API";
     const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
                                  EGL_CONTEXT_OPENGL_PROFILE_MASK,
@@ -142,7 +188,7 @@ class EglContext final : public GlContext {
     // Surfaceless: no config and no surface; everything is drawn into our FBO.
     context_ = eglCreateContext(display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
     if (context_ == EGL_NO_CONTEXT)
-      return "EGL cannot create an OpenGL 3.3 core context (error 0x" + hex(eglGetError()) + ")";
+      return "EGL cannot create an OpenGL 3.3 core context (error 0x" + eglHex(eglGetError()) + ")";
     if (std::string e = loadApi(api_, [](const char* name) {
           return reinterpret_cast<void*>(eglGetProcAddress(name));
         });
@@ -164,57 +210,20 @@ class EglContext final : public GlContext {
   }
 
  private:
-  static std::string hex(EGLint value) {
-    char text[16];
-    std::snprintf(text, sizeof text, "%x", static_cast<unsigned>(value));
-    return text;
-  }
-
-  // A GPU through the device platform when there is one (a device with a DRM node), else
-  // Mesa's surfaceless platform (which itself uses a render node when it can, or llvmpipe).
-  std::string openDisplay(std::string& platform) {
-    const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-    const std::string extensions = client ? client : "";
-    auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
-        eglGetProcAddress("eglGetPlatformDisplayEXT"));
-    if (!getPlatformDisplay) return "EGL has no eglGetPlatformDisplayEXT";
-    if (extensions.find("EGL_EXT_platform_device") != std::string::npos) {
-      auto queryDevices =
-          reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
-      auto queryDeviceString = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(
-          eglGetProcAddress("eglQueryDeviceStringEXT"));
-      EGLDeviceEXT devices[16];
-      EGLint count = 0;
-      if (queryDevices && queryDeviceString && queryDevices(16, devices, &count)) {
-        for (EGLint i = 0; i < count; ++i) {
-          // A GPU: a device with a DRM node that is not Mesa's software device.
-          const char* names = queryDeviceString(devices[i], EGL_EXTENSIONS);
-          const std::string device = names ? std::string(" ") + names + " " : "";
-          if (device.find(" EGL_EXT_device_drm ") == std::string::npos ||
-              device.find(" EGL_MESA_device_software ") != std::string::npos)
-            continue;
-          display_ = getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
-          if (display_ != EGL_NO_DISPLAY && eglInitialize(display_, nullptr, nullptr)) {
-            platform = "device";
-            return "";
-          }
-        }
-      }
-    }
-    if (extensions.find("EGL_MESA_platform_surfaceless") == std::string::npos)
-      return "EGL has neither a GPU device nor the surfaceless platform";
-    display_ = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-    if (display_ == EGL_NO_DISPLAY || !eglInitialize(display_, nullptr, nullptr))
-      return "EGL cannot initialise the surfaceless platform (error 0x" + hex(eglGetError()) + ")";
-    platform = "surfaceless";
-    return "";
-  }
-
   EGLDisplay display_ = EGL_NO_DISPLAY;
   EGLContext context_ = EGL_NO_CONTEXT;
 };
 
 }  // namespace
+
+void preloadBackend(Backend backend) {
+  if (backend != Backend::OsMesa) {
+    EGLDisplay display = EGL_NO_DISPLAY;
+    std::string platform;
+    if (openEglDisplay(display, platform).empty() || backend == Backend::Egl) return;
+  }
+  osMesa();
+}
 
 rb::Result<std::unique_ptr<GlContext>> GlContext::create(Backend backend, int width, int height) {
   std::string egl_error, osmesa_error;

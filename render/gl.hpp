@@ -109,6 +109,13 @@ class CurrentContext {
   bool ok_ = false;
 };
 
+/// Loads and initialises the driver behind `backend` (EGL's display and the driver it loads, or
+/// the OSMesa library), so that a GlContext::create() after it finds them ready: about 40 ms a
+/// process with llvmpipe, which a caller can spend on a thread of its own while it loads its
+/// scene (the library makes no threads). Safe on any thread, also while another creates a
+/// context; errors are left for create() to report.
+void preloadBackend(Backend backend);
+
 /// Compiles and links a program from files under the assets folder: a vertex shader and one
 /// or more fragment shader parts, with the current context's functions; throws on failure
 /// with the compiler's log.

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <memory>
+#include <thread>
 #include <vector>
 
 #include "render/gl.hpp"
@@ -244,5 +245,25 @@ TEST(Renderer, AFrameAfterOthersEqualsTheSameFrameDrawnFirst) {
                                 << c.box[0] << "–" << c.box[2] << ", y " << c.box[1] << "–"
                                 << c.box[3];
     }
+  }
+}
+
+// The driver can be loaded on another thread while this one loads its scene (as `render` and
+// `still` do), also while a context is being made: the frames are the same as without.
+TEST(Renderer, ADriverLoadedOnAnotherThreadDrawsTheSameFrames) {
+  for (render::Backend backend : {render::Backend::Egl, render::Backend::OsMesa}) {
+    render::Image without, with;
+    {
+      auto r = make(backend, row());
+      ASSERT_TRUE(r);
+      r->draw(pose(0.3), without);
+    }
+    std::thread preload([backend] { render::preloadBackend(backend); });
+    auto r = make(backend, row());  // maybe while the other thread still loads
+    preload.join();
+    std::thread([backend] { render::preloadBackend(backend); }).join();  // and again, after
+    ASSERT_TRUE(r);
+    r->draw(pose(0.3), with);
+    EXPECT_EQ(with.rgba, without.rgba) << rb::nameOf(backend);
   }
 }
