@@ -41,8 +41,9 @@ struct Framing {
   float radius = 0.1f;                               ///< m
 };
 
-/// One frame, and everything drawn from it: the renderer keeps nothing from frame to frame,
-/// so a frame depends on its own values only (drawn in any order, it is the same).
+/// One frame, and everything drawn from it: what the renderer keeps from frame to frame (the
+/// floor it drew, where the last frame drew over it) changes how much it draws, never what, so
+/// a frame depends on its own values only (drawn in any order, it is the same).
 struct FrameInput {
   Eigen::Vector3d position_world = Eigen::Vector3d::Zero();  ///< CM, m
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  ///< body → world

@@ -221,7 +221,10 @@ void Renderer::drawShadow(const Camera& camera, const FrameInput& frame,
   // shadow.frag says.
   const ShadowOutline outline = shadowOutline(frame);
   float fan[2 * kShadowSides];
-  for (int i = 0; i < kShadowSides; ++i) fan[2 * i] = outline[i].x(), fan[2 * i + 1] = outline[i].y();
+  for (int i = 0; i < kShadowSides; ++i) {
+    fan[2 * i] = outline[i].x();
+    fan[2 * i + 1] = outline[i].y();
+  }
   const GlApi& gl = context_->api();
   gl.glBindVertexArray(shadow_vao_);
   gl.glBindBuffer(GL_ARRAY_BUFFER, shadow_vbo_);
@@ -278,8 +281,8 @@ Renderer::PixelRect Renderer::drawnRect(const Camera& camera, const FrameInput& 
   const PixelRect whole{0, 0, settings_.width, settings_.height};
   // The sphere centres lie in their box; projected, in the hull of its corners' images, and
   // each sprite reaches at most its half size (points.vert: the radius and half an edge of at
-  // most a pixel) beyond its centre. The shadow lies in its polygon (shadowOutline). Two pixels more
-  // for rounding.
+  // most a pixel) beyond its centre. The shadow lies in its polygon (shadowOutline). Two
+  // pixels more for rounding.
   const Eigen::Matrix4f to_clip = camera.proj * camera.view;
   const Eigen::Matrix3f rotation = frame.orientation.cast<float>().toRotationMatrix();
   const Eigen::Vector3f position = frame.position_world.cast<float>();

@@ -55,9 +55,10 @@ class Renderer {
   /// The blending of every pass but the shadow's.
   void setBlending();
   /// The fixed views' floor without the shadow, drawn once into its own FBO and copied into
-  /// each frame: the same for every frame of a run, and most of the drawing's cost (its
-  /// shader runs at every pixel). Redrawn whenever the camera or the centre changes, so a
-  /// frame still depends only on its own values.
+  /// the frame: the same for every frame of a run, and most of the drawing's cost (its
+  /// shader runs at every pixel). Only what the last frame drew over it (dirty_) is copied
+  /// back. Redrawn, and copied whole, whenever the camera or the centre changes, so a frame
+  /// still depends only on its own values.
   void copyCachedFloor(const Camera& camera, const FrameInput& frame, const Eigen::Vector2f& center);
   /// Pixels, in window coordinates (rows from the bottom), from x0, y0 up to x1, y1 exclusive.
   struct PixelRect {
