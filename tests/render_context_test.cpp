@@ -225,11 +225,13 @@ TEST(Renderer, AFrameAfterOthersEqualsTheSameFrameDrawnFirst) {
     f.framing.radius = 0.16f;
     frames.push_back(f);
   }
+  // 16:9, and a portrait frame (the scene drawn scaled between the read-outs and the inset).
+  for (auto [width, height] : {std::pair{320, 180}, std::pair{200, 240}})
   for (render::View view :
        {render::View::Oblique, render::View::Above, render::View::Front, render::View::Side}) {
     render::RenderSettings s;
-    s.width = 320;
-    s.height = 180;
+    s.width = width;
+    s.height = height;
     s.view = view;
     s.readouts = false;
     auto running = render::Renderer::create(s, body);
@@ -241,9 +243,9 @@ TEST(Renderer, AFrameAfterOthersEqualsTheSameFrameDrawnFirst) {
       ASSERT_TRUE(fresh);
       fresh.value()->draw(frames[k], first);
       const render::Comparison c = render::compareImages(after_others, first, 0);
-      EXPECT_EQ(c.differing, 0) << rb::nameOf(view) << ", frame " << k << ": within x "
-                                << c.box[0] << "–" << c.box[2] << ", y " << c.box[1] << "–"
-                                << c.box[3];
+      EXPECT_EQ(c.differing, 0) << width << "x" << height << " " << rb::nameOf(view)
+                                << ", frame " << k << ": within x " << c.box[0] << "–" << c.box[2]
+                                << ", y " << c.box[1] << "–" << c.box[3];
     }
   }
 }
