@@ -155,6 +155,20 @@ std::array<std::string, 2> bothNames(const std::vector<sim::Rollout>& runs) {
   return names;
 }
 
+// --backend's value; none after a line naming the choices.
+std::optional<render::Backend> parseBackend(const std::string& name) {
+  const auto backend = rb::parseName<render::Backend>(name);
+  if (!backend)
+    std::cerr << "--backend: " << rb::choices<render::Backend>() << ", not '" << name << "'\n";
+  return backend;
+}
+
+// Loads the OpenGL driver behind `backend` (about 40 ms with llvmpipe) on a thread of its own
+// while the caller loads its scene; joined before a renderer is made.
+std::jthread preloadDriver(render::Backend backend) {
+  return std::jthread([backend] { render::preloadBackend(backend); });
+}
+
 rb::Status checkEncoderOptions(const RenderArgs& args) {
   if (args.crf < 1 || args.crf > 51)
     return rb::Status::fail("--crf must be within 1 … 51 (lower is better; 0 would be lossless "
@@ -190,14 +204,9 @@ int renderCommand(const RenderArgs& args) {
     std::cerr << ok.error().text() << "\n";
     return kBadInput;
   }
-  const auto backend = rb::parseName<render::Backend>(args.backend);
-  if (!backend) {
-    std::cerr << "--backend: " << rb::choices<render::Backend>() << ", not '" << args.backend
-              << "'\n";
-    return kBadInput;
-  }
-  // The OpenGL driver loads (about 40 ms) while the scene does.
-  std::jthread preload([b = *backend] { render::preloadBackend(b); });
+  const auto backend = parseBackend(args.backend);
+  if (!backend) return kBadInput;
+  std::jthread preload = preloadDriver(*backend);
   auto loaded = loadScene(args.scene, args.overrides);
   if (!loaded) {
     std::cerr << loaded.error().text() << "\n";
@@ -371,14 +380,9 @@ int stillCommand(const StillArgs& args) {
     std::cerr << ok.error().text() << "\n";
     return kBadInput;
   }
-  const auto backend = rb::parseName<render::Backend>(args.backend);
-  if (!backend) {
-    std::cerr << "--backend: " << rb::choices<render::Backend>() << ", not '" << args.backend
-              << "'\n";
-    return kBadInput;
-  }
-  // The OpenGL driver loads (about 40 ms) while the scene does.
-  std::jthread preload([b = *backend] { render::preloadBackend(b); });
+  const auto backend = parseBackend(args.backend);
+  if (!backend) return kBadInput;
+  std::jthread preload = preloadDriver(*backend);
   auto loaded = loadScene(args.scene, o);
   if (!loaded) {
     std::cerr << loaded.error().text() << "\n";
