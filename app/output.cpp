@@ -14,11 +14,14 @@ namespace fs = std::filesystem;
 namespace {
 
 // Temporary files being written, for the signal handler: a fixed table of C strings, so that
-// removing them needs no allocation and no lock.
+// removing them needs no allocation and no lock. A slot is claimed (so that encoders opening
+// on threads of their own never take the same one), then written, then marked ready: the
+// handler only reads ready slots.
 constexpr std::size_t kMaxTemporaries = 16;
 constexpr std::size_t kMaxPath = 4096;
+enum Slot : int { kFree, kClaimed, kReady };
 std::array<char[kMaxPath], kMaxTemporaries> temporaries{};
-std::array<std::atomic<bool>, kMaxTemporaries> temporary_used{};
+std::array<std::atomic<int>, kMaxTemporaries> temporary_state{};
 
 }  // namespace
 
@@ -38,21 +41,23 @@ rb::Status makeParentFolder(const std::string& path) {
 void registerTemporary(const std::string& temp) {
   if (temp.size() >= kMaxPath) return;
   for (std::size_t i = 0; i < kMaxTemporaries; ++i) {
-    if (temporary_used[i].load()) continue;
+    int expected = kFree;
+    if (!temporary_state[i].compare_exchange_strong(expected, kClaimed)) continue;
     std::memcpy(temporaries[i], temp.c_str(), temp.size() + 1);
-    temporary_used[i].store(true);
+    temporary_state[i].store(kReady);
     return;
   }
 }
 
 void unregisterTemporary(const std::string& temp) {
   for (std::size_t i = 0; i < kMaxTemporaries; ++i)
-    if (temporary_used[i].load() && temp == temporaries[i]) temporary_used[i].store(false);
+    if (temporary_state[i].load() == kReady && temp == temporaries[i])
+      temporary_state[i].store(kFree);
 }
 
 void removeTemporaryFilesNow() {
   for (std::size_t i = 0; i < kMaxTemporaries; ++i)
-    if (temporary_used[i].load()) ::unlink(temporaries[i]);
+    if (temporary_state[i].load() == kReady) ::unlink(temporaries[i]);
 }
 
 AtomicOutput::AtomicOutput(std::string path, rb::OutputPlace place)

@@ -59,10 +59,17 @@ render::RenderSettings settingsOf(const VideoPlan& plan, double duration, double
   return s;
 }
 
-// One output video fed by its own encoding thread. The thread stops when the queue closes or
-// its stop is requested; an error (or an exception) is kept for the main thread and closes the
-// queue, so that the producer's next push fails and rendering stops.
+// One output video fed by its own encoding thread. The thread first opens the encoder (x264's
+// set-up takes about 10 ms, spent while the main thread makes its renderers), then encodes
+// what the queue brings. It stops when the queue closes or its stop is requested; an error (or
+// an exception), opening or encoding, is kept for the main thread and closes the queue, so
+// that the producer's next push fails and rendering stops.
 struct Output {
+  Output(std::string path, const render::EncoderSettings& settings)
+      : path(std::move(path)), settings(settings) {}
+  std::string path;
+  render::EncoderSettings settings;
+  /// Set by the thread once open; read by others only after joining it.
   std::unique_ptr<render::VideoEncoder> encoder;
   // The encoder's temporary file is known to the signal handler (registered when opened),
   // which removes it on a second Ctrl-C (it exits at once); forgotten here.
@@ -87,6 +94,14 @@ struct Output {
   void start() {
     thread = std::jthread([this](std::stop_token stop) {
       try {
+        auto opened = render::VideoEncoder::open(path, settings);
+        if (!opened) {
+          error = opened.error().text();
+          images.close();
+          return;
+        }
+        encoder = std::move(opened).value();
+        registerTemporary(encoder->temporaryPath());
         while (!stop.stop_requested()) {
           auto image = images.pop();
           if (!image) break;
@@ -254,14 +269,8 @@ int renderCommand(const RenderArgs& args) {
     settings.fps = plan.fps;
     settings.crf = args.crf;
     settings.preset = args.preset;
-    auto opened = render::VideoEncoder::open(provisional[i], settings);
-    if (!opened) {
-      std::cerr << opened.error().text() << "\n";
-      return kBadInput;
-    }
-    outputs.push_back(std::make_unique<Output>());
-    outputs.back()->encoder = std::move(opened).value();
-    registerTemporary(outputs.back()->encoder->temporaryPath());
+    outputs.push_back(std::make_unique<Output>(provisional[i], settings));
+    outputs.back()->start();  // opens its encoder while the renderers are made
   }
 
   preload.join();
@@ -286,7 +295,6 @@ int renderCommand(const RenderArgs& args) {
     renderers.push_back(std::move(created).value());
   }
 
-  for (auto& o : outputs) o->start();
   Progress progress("render", plan.frames, !args.quiet);
   const auto start = std::chrono::steady_clock::now();
   std::int64_t frames = 0;

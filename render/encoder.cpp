@@ -107,8 +107,11 @@ rb::Result<std::unique_ptr<VideoEncoder>> VideoEncoder::open(
   if (s.temp.empty())  // a device, pipe or descriptor, which would be written in place
     return rb::Error{"", path + ": is not a regular file (an MP4 must be written to a file)"};
 
-  av_log_set_level(AV_LOG_ERROR);
-  av_log_set_callback(keepLog);
+  static std::once_flag logging;  // (encoders may open on several threads at once)
+  std::call_once(logging, [] {
+    av_log_set_level(AV_LOG_ERROR);
+    av_log_set_callback(keepLog);
+  });
   if (avformat_alloc_output_context2(&s.format, nullptr, "mp4", s.temp.c_str()) < 0)
     return rb::Error{"", s.error("cannot set up an MP4 file")};
   const AVCodec* h264 = avcodec_find_encoder_by_name("libx264");
