@@ -72,6 +72,14 @@ struct VideoEncoder::State {
            (log.empty() ? "" : " (" + log + ")");
   }
 
+  // Encodes the picture in `frame`, and writes what the encoder has ready.
+  rb::Status send() {
+    frame->pts = count++;
+    if (int r = avcodec_send_frame(codec, frame); r < 0) return rb::Status::fail(error("encoding failed", r));
+    if (auto e = drain()) return rb::Status::fail(*e);
+    return {};
+  }
+
   // Moves every packet the encoder has ready into the file.
   std::optional<std::string> drain() {
     for (;;) {
@@ -168,10 +176,20 @@ rb::Status VideoEncoder::add(const Image& image) {
   if (av_frame_make_writable(s.frame) < 0) return rb::Status::fail(s.error("out of memory"));
   AVFrame* f = s.frame;
   s.converter.convert(image, {f->data[0], f->data[1], f->data[2], f->linesize[0], f->linesize[1]});
-  s.frame->pts = s.count++;
-  if (int r = avcodec_send_frame(s.codec, s.frame); r < 0) return rb::Status::fail(s.error("encoding failed", r));
-  if (auto e = s.drain()) return rb::Status::fail(*e);
-  return {};
+  return s.send();
+}
+
+rb::Status VideoEncoder::add(const Yuv420Image& picture) {
+  State& s = *state_;
+  const int w = s.settings.width, h = s.settings.height;
+  if (picture.width != w || picture.height != h)
+    return rb::Status::fail(s.error("frame size does not match the video"));
+  if (av_frame_make_writable(s.frame) < 0) return rb::Status::fail(s.error("out of memory"));
+  AVFrame* f = s.frame;
+  av_image_copy_plane(f->data[0], f->linesize[0], picture.y(), w, w, h);
+  av_image_copy_plane(f->data[1], f->linesize[1], picture.u(), w / 2, w / 2, h / 2);
+  av_image_copy_plane(f->data[2], f->linesize[2], picture.v(), w / 2, w / 2, h / 2);
+  return s.send();
 }
 
 rb::Status VideoEncoder::finish(const std::string& final_path) {

@@ -1,5 +1,5 @@
 // H.264 in MP4 through libavcodec / libavformat (SPEC "Rendering and video"): RGBA frames
-// converted to yuv420p by render/yuv.hpp, BT.709 tagged, moov atom first (+faststart), a
+// converted to yuv420p by render/yuv.hpp (here, or by the caller), BT.709 tagged, moov atom first (+faststart), a
 // fixed thread count for repeatable bytes. Written under a temporary name and renamed into place by finish().
 #pragma once
 
@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "render/frame.hpp"
+#include "render/yuv.hpp"
 #include "util/result.hpp"
 
 namespace render {
@@ -30,6 +31,9 @@ class VideoEncoder {
 
   /// Encodes one RGBA frame (rows top to bottom, the settings' size); an error line on failure.
   rb::Status add(const Image& frame);
+  /// Encodes one frame already converted to yuv420p (render/yuv.hpp): the conversion can then
+  /// run on another thread than the encoding.
+  rb::Status add(const Yuv420Image& frame);
   /// Flushes the encoder, writes the index and renames the file into place: to the path it
   /// was opened with, or to `final_path` (in the same folder) when given.
   rb::Status finish(const std::string& final_path = "");

@@ -64,6 +64,24 @@ void chromaOfRowPair(const std::int16_t* __restrict sums, std::uint8_t* __restri
 
 }  // namespace
 
+void Yuv420Image::resize(int w, int h) {
+  width = w;
+  height = h;
+  data.resize(static_cast<std::size_t>(w) * h * 3 / 2);
+}
+
+Yuv420Planes Yuv420Image::planes() {
+  std::uint8_t* y = data.data();
+  std::uint8_t* u = y + static_cast<std::size_t>(width) * height;
+  std::uint8_t* v = u + static_cast<std::size_t>(width / 2) * (height / 2);
+  return {y, u, v, width, width / 2};
+}
+
+void Yuv420Converter::convert(const Image& image, Yuv420Image& out) {
+  out.resize(image.width, image.height);
+  convert(image, out.planes());
+}
+
 void Yuv420Converter::convert(const Image& image, const Yuv420Planes& out) {
   assert(image.width % 2 == 0 && image.height % 2 == 0);
   const int w = image.width;

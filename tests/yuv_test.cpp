@@ -1,16 +1,26 @@
 // The RGBA → yuv420p conversion the encoder uses (render/yuv.cpp): the 8-bit values of
 // BT.709 for 100 % colour bars, every sample of a random picture against the standard's
-// formulas evaluated in double precision, and where the chroma sits.
+// formulas evaluated in double precision, and where the chroma sits; and that frames
+// converted before the encoder encode as those it converts.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <random>
 #include <vector>
 
+#include "render/encoder.hpp"
 #include "render/yuv.hpp"
 
 namespace {
+
+namespace fs = std::filesystem;
 
 struct Yuv420 {
   int width, height;
@@ -101,4 +111,72 @@ TEST(Yuv, ChromaIsSitedOnTheLeftPixelOfEachPair) {
   EXPECT_EQ(out.v[edge / 2], std::lround(seam[2]));
   EXPECT_EQ(out.u[edge / 2 - 1], 102);  // pure red, the bars' value
   EXPECT_EQ(out.u[edge / 2 + 1], 240);  // pure blue
+}
+
+// The one-buffer picture the drawing thread converts into (app/video.cpp) holds exactly what
+// the converter writes into separate planes: Y, then U, then V, rows without padding.
+TEST(Yuv, OneBufferHoldsThePlanesInOrder) {
+  const int w = 38, h = 10;
+  render::Image image{w, h, std::vector<unsigned char>(4 * w * h)};
+  std::mt19937 random(11);
+  for (auto& c : image.rgba) c = static_cast<unsigned char>(random() & 255);
+  Yuv420 planes(w, h);
+  render::Yuv420Converter converter;
+  converter.convert(image, planes.planes());
+  render::Yuv420Image picture;
+  converter.convert(image, picture);
+  ASSERT_EQ(picture.data.size(), std::size_t{w * h * 3 / 2});
+  EXPECT_TRUE(std::equal(planes.y.begin(), planes.y.end(), picture.y()));
+  EXPECT_TRUE(std::equal(planes.u.begin(), planes.u.end(), picture.u()));
+  EXPECT_TRUE(std::equal(planes.v.begin(), planes.v.end(), picture.v()));
+}
+
+// Frames converted by the caller (render's drawing thread) and frames the encoder converts
+// itself (the bench's encoding alone) give the same file, byte for byte; a picture of another
+// size is refused.
+TEST(Yuv, EncodingConvertedFramesWritesTheSameVideo) {
+  const int w = 64, h = 48;
+  const fs::path folder = fs::temp_directory_path() / ("rattleback_yuv_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  render::EncoderSettings settings;
+  settings.width = w;
+  settings.height = h;
+  settings.fps = 25;
+  std::mt19937 random(3);
+  std::vector<render::Image> frames;
+  for (int k = 0; k < 5; ++k) {
+    render::Image image{w, h, std::vector<unsigned char>(4 * w * h)};
+    for (int i = 0; i < w * h; ++i)
+      for (int c = 0; c < 3; ++c)
+        image.rgba[4 * i + c] = static_cast<unsigned char>((i % w) * 4 + k * 20 + c * 50 + (random() & 15));
+    frames.push_back(std::move(image));
+  }
+  auto encode = [&](const fs::path& path, bool converted) {
+    auto opened = render::VideoEncoder::open(path.string(), settings);
+    EXPECT_TRUE(opened) << (opened ? "" : opened.error().text());
+    if (!opened) return;
+    render::Yuv420Converter converter;
+    render::Yuv420Image picture;
+    for (const auto& image : frames) {
+      if (converted) converter.convert(image, picture);
+      const auto added = converted ? opened.value()->add(picture) : opened.value()->add(image);
+      EXPECT_TRUE(added) << (added ? "" : added.error().text());
+    }
+    EXPECT_TRUE(opened.value()->finish());
+  };
+  encode(folder / "rgba.mp4", false);
+  encode(folder / "yuv.mp4", true);
+  auto bytes = [](const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_GT(bytes(folder / "rgba.mp4").size(), 1000u);
+  EXPECT_EQ(bytes(folder / "rgba.mp4"), bytes(folder / "yuv.mp4"));
+
+  auto opened = render::VideoEncoder::open((folder / "small.mp4").string(), settings);
+  ASSERT_TRUE(opened);
+  render::Yuv420Image small;
+  small.resize(w / 2, h);
+  EXPECT_FALSE(opened.value()->add(small));
+  fs::remove_all(folder);
 }
