@@ -364,8 +364,10 @@ int renderCommand(const RenderArgs& args) {
         running = send(*outputs[i], images[i]);
       if (running) progress.update(++frames);
     }
-    // The runs go on to the scene's end (frames stop at the last whole frame time), so that the
-    // summary covers the same run as `simulate`.
+    // The renderers (their contexts and the driver's threads) go while the encoders finish
+    // what is queued; the runs go on to the scene's end (frames stop at the last whole frame
+    // time), so that the summary covers the same run as `simulate`.
+    renderers.clear();
     for (auto& run : runs)
       if (running && !interruptSignal()) run.advanceTo(run.endTime());
     const bool complete = running && !interruptSignal();
