@@ -1,7 +1,8 @@
-// render and still: the simulation's frames drawn and encoded. The main thread pulls each
+// render and still: the simulation's frames drawn and encoded. A drawing thread pulls each
 // frame's state from the runs (a Rollout per spin direction, sampled at the frame's exact
-// time) and draws it; each output video has its own encoding thread (std::jthread) fed by a
-// bounded queue, so no run holds its frames in memory.
+// time), draws it and converts it to yuv420p; each output video has its own encoding thread
+// (std::jthread), which opens its encoder and is fed by a bounded queue (about 48 MB), so no
+// run holds its frames in memory.
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
