@@ -71,7 +71,7 @@ Cli::Cli() {
   still->add_option("scene", st.scene, "Scene file (YAML)")->required();
   still->add_option("-o,--output", st.output, "PNG file (default out/<scene>-<view>.png)");
   still->add_option("--view", st.overrides.view, "oblique | above | front | side | follow");
-  still->add_option("--t", st.t, "Simulated time of the frame, s (default 0)");
+  still->add_option("--t,--time", st.t, "Simulated time of the frame, s (default 0)");
   still->add_option("--size", still_size, "Image size WxH, e.g. 1280x720");
   // The video's options that change a frame's inset (its time axis and the frames its curve
   // runs through), so that `still --t` gives a frame of a video rendered with them.

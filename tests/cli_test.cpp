@@ -470,6 +470,8 @@ TEST(Cli, AMistypedOptionSuggestsTheNearest) {
        {Case{"render " + scene("rattleback") + " --spin -5 --fsp 30",
              "render: no option --fsp; did you mean --fps?"},
         Case{"still " + scene("rattleback") + " --trasparent", "did you mean --transparent?"},
+        // (--time is --t's long name, so the nearest to --tim is no longer --size)
+        Case{"still " + scene("rattleback") + " --tim 1", "did you mean --time?"},
         Case{"sweep merge a.csv b.csv --plto x.png",
              "sweep merge: no option --plto; did you mean --plot?"},
         Case{"simulate " + scene("rattleback") + " -x", "simulate: no option -x (see"}}) {
