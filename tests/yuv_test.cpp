@@ -29,6 +29,14 @@ struct Yuv420 {
   render::Yuv420Planes planes() { return {y.data(), u.data(), v.data(), width, width / 2}; }
 };
 
+// A picture of random bytes (alpha too, which the conversion ignores).
+render::Image noise(int w, int h, unsigned seed) {
+  render::Image image{w, h, std::vector<unsigned char>(4 * w * h)};
+  std::mt19937 random(seed);
+  for (auto& c : image.rgba) c = static_cast<unsigned char>(random() & 255);
+  return image;
+}
+
 render::Image flat(int w, int h, int r, int g, int b) {
   render::Image image{w, h, {}};
   for (int i = 0; i < w * h; ++i)
@@ -72,9 +80,7 @@ TEST(Yuv, ColourBarsHaveTheirBt709Values) {
 // in for column −1). The width 38 is no multiple of a vector's lanes: the loops' tails count.
 TEST(Yuv, EverySampleIsTheStandardsFormulaRounded) {
   const int w = 38, h = 10;
-  render::Image image{w, h, std::vector<unsigned char>(4 * w * h)};
-  std::mt19937 random(7);
-  for (auto& c : image.rgba) c = static_cast<unsigned char>(random() & 255);
+  const render::Image image = noise(w, h, 7);
   Yuv420 out(w, h);
   render::Yuv420Converter().convert(image, out.planes());
   auto at = [&](int x, int y, int c) { return double(image.rgba[4 * (y * w + x) + c]); };
@@ -117,9 +123,7 @@ TEST(Yuv, ChromaIsSitedOnTheLeftPixelOfEachPair) {
 // the converter writes into separate planes: Y, then U, then V, rows without padding.
 TEST(Yuv, OneBufferHoldsThePlanesInOrder) {
   const int w = 38, h = 10;
-  render::Image image{w, h, std::vector<unsigned char>(4 * w * h)};
-  std::mt19937 random(11);
-  for (auto& c : image.rgba) c = static_cast<unsigned char>(random() & 255);
+  const render::Image image = noise(w, h, 11);
   Yuv420 planes(w, h);
   render::Yuv420Converter converter;
   converter.convert(image, planes.planes());
