@@ -66,8 +66,8 @@ render::RenderSettings settingsOf(const VideoPlan& plan, double duration, double
 }
 
 // How many frames may wait for an encoder: as many as fit in about 48 MB of yuv420p, 4 to 32
-// (32 at 720p, 15 at 1080p). The drawing thread yields to the encoders (see drawingThread),
-// and draws ahead into this queue whenever they leave a core idle.
+// (32 at 720p, 15 at 1080p). For one video the drawing thread yields to the encoder
+// (yieldToEncoders) and draws ahead into this queue whenever it leaves a core idle.
 std::size_t queueDepth(const render::EncoderSettings& s) {
   constexpr std::size_t kBytes = 48u << 20;
   const std::size_t frame = static_cast<std::size_t>(s.width) * s.height * 3 / 2;
@@ -377,8 +377,9 @@ int renderCommand(const RenderArgs& args) {
     wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return std::nullopt;
   };
-  // The renderers are made, and the frames drawn, on a thread that yields to the encoders
-  // (yieldToEncoders); the OpenGL driver's threads, made with the renderers, inherit that.
+  // The renderers are made, and the frames drawn, on a thread of their own, which for one
+  // video yields to its encoder (yieldToEncoders); the OpenGL driver's threads, made with the
+  // renderers, inherit its priority.
   preload.join();
   std::optional<int> failed;
   std::jthread([&] {
