@@ -106,8 +106,14 @@ class MapReader {
     return MapReader(*node, join(path_, key), key_lines_.at(key), out_, allowed);
   }
 
-  void require(const std::string& key) const {
-    if (!has(key)) throw Failure{line_, join(path_, key), "is required"};
+  /// `example`, when given, is a line that would do (from the README's scene block), so that
+  /// the message shows the way out.
+  void require(const std::string& key, const std::string& example = "") const {
+    if (!has(key))
+      throw Failure{line_, join(path_, key),
+                    example.empty() ? "is required"
+                                    : "is required, e.g. " + example +
+                                          " (the README's scene block has every key)"};
   }
 
   [[noreturn]] void fail(const std::string& key, const std::string& message) const {
@@ -160,7 +166,7 @@ void readBody(MapReader& root, sim::BodySpec& b) {
           {"shape", "paraboloid", "dents", "grid", "mass_properties", "mass", "ellipsoid", "inertia"},
           [&](MapReader& r) {
     r.read("shape", b.shape);
-    r.require("mass");
+    r.require("mass", "mass: 0.059 (kg)");
     r.read("mass", b.mass);
     // Each shape has its own keys; a key of the other shape is an error, not ignored.
     const bool ellipsoid = b.shape == "ellipsoid";
@@ -170,12 +176,12 @@ void readBody(MapReader& root, sim::BodySpec& b) {
     for (const char* key : {"ellipsoid", "inertia"})
       if (!ellipsoid && r.has(key)) r.fail(key, "belongs to shape: ellipsoid");
     if (ellipsoid) {
-      r.require("ellipsoid");
-      r.require("inertia");
+      r.require("ellipsoid", "ellipsoid: {semi_axes: [0.03, 0.20, 0.02], center: [0, 0, 0.01]}");
+      r.require("inertia", "inertia: [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] (kg m², about the CM)");
       r.read("inertia", b.inertia);
     } else {
-      r.require("paraboloid");
-      r.require("grid");
+      r.require("paraboloid", "paraboloid: {a: 1.0, p: 0.5, q: 0.0, s: 0.03, top: 0.5}");
+      r.require("grid", "grid: {dx: 0.05, dy: 0.05, dz: 0.05}");
     }
     section(r, "ellipsoid", {"semi_axes", "center"}, [&](MapReader& e) {
       e.require("semi_axes");
@@ -217,7 +223,8 @@ void readContact(MapReader& root, sim::ContactSpec& c) {
     // A misspelt model is reported as such (by the check after loading), not as a missing
     // stiffness.
     const auto model = rb::parseName<sim::ContactModel>(c.model);
-    if (model && *model != sim::ContactModel::Rolling) r.require("stiffness");
+    if (model && *model != sim::ContactModel::Rolling)
+      r.require("stiffness", "stiffness: 2.0e4 (N/m), or model: rolling, which needs none");
     r.read("stiffness", c.stiffness);
     r.read("damping", c.damping);
     r.read("friction", c.friction);
@@ -237,7 +244,7 @@ void readRest(MapReader& root, sim::SceneSpec& s) {
   });
   root.require("simulation");
   section(root, "simulation", {"integrator", "dt", "tolerance", "duration"}, [&](MapReader& r) {
-    r.require("duration");
+    r.require("duration", "duration: 8.0 (s)");
     r.read("integrator", s.simulation.integrator);
     r.read("dt", s.simulation.dt);
     r.read("tolerance", s.simulation.tolerance);
