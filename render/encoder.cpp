@@ -75,7 +75,8 @@ struct VideoEncoder::State {
   // Encodes the picture in `frame`, and writes what the encoder has ready.
   rb::Status send() {
     frame->pts = count++;
-    if (int r = avcodec_send_frame(codec, frame); r < 0) return rb::Status::fail(error("encoding failed", r));
+    if (int r = avcodec_send_frame(codec, frame); r < 0)
+      return rb::Status::fail(error("encoding failed", r));
     if (auto e = drain()) return rb::Status::fail(*e);
     return {};
   }

@@ -1,6 +1,7 @@
 // H.264 in MP4 through libavcodec / libavformat (SPEC "Rendering and video"): RGBA frames
-// converted to yuv420p by render/yuv.hpp (here, or by the caller), BT.709 tagged, moov atom first (+faststart), a
-// fixed thread count for repeatable bytes. Written under a temporary name and renamed into place by finish().
+// converted to yuv420p by render/yuv.hpp (here, or by the caller), BT.709 tagged, moov atom
+// first (+faststart), a fixed thread count for repeatable bytes. Written under a temporary
+// name and renamed into place by finish().
 #pragma once
 
 #include <memory>

@@ -177,7 +177,8 @@ void readBody(MapReader& root, sim::BodySpec& b) {
       if (!ellipsoid && r.has(key)) r.fail(key, "belongs to shape: ellipsoid");
     if (ellipsoid) {
       r.require("ellipsoid", "ellipsoid: {semi_axes: [0.03, 0.20, 0.02], center: [0, 0, 0.01]}");
-      r.require("inertia", "inertia: [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] (kg m², about the CM)");
+      r.require("inertia",
+                "inertia: [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] (kg m², about the CM)");
       r.read("inertia", b.inertia);
     } else {
       r.require("paraboloid", "paraboloid: {a: 1.0, p: 0.5, q: 0.0, s: 0.03, top: 0.5}");

@@ -49,10 +49,12 @@ const BadCase kBadCases[] = {
     {"  mass: 0.5\n", "", "2: body.mass is required, e.g. mass: 0.059 (kg)"},
     // A missing key the README's first scene may leave out names a line that would do.
     {"  paraboloid: {a: 4, p: 3, q: 0, s: 0.15, top: 2}\n", "",
-     "2: body.paraboloid is required, e.g. paraboloid: {a: 1.0, p: 0.5, q: 0.0, s: 0.03, top: 0.5}"},
+     "2: body.paraboloid is required, e.g. "
+     "paraboloid: {a: 1.0, p: 0.5, q: 0.0, s: 0.03, top: 0.5}"},
     {"  grid: {dx: 0.52, dy: 1.42, dz: 0.2}\n", "",
      "2: body.grid is required, e.g. grid: {dx: 0.05, dy: 0.05, dz: 0.05}"},
-    {"stiffness: 2.0e4, ", "", "8: contact.stiffness is required, e.g. stiffness: 2.0e4 (N/m), or model: rolling"},
+    {"stiffness: 2.0e4, ", "",
+     "8: contact.stiffness is required, e.g. stiffness: 2.0e4 (N/m), or model: rolling"},
     {" duration: 1.0", "", "10: simulation.duration is required, e.g. duration: 8.0 (s)"},
     {"  mass: 0.5\n", "  mass: 0.5\n  mass: 0.6\n", "8: body.mass is given twice"},
     {"  mass: 0.5\n", "  mass: 0.5\n  colour: red\n", "8: body.colour is not a known key"},

@@ -140,7 +140,8 @@ TEST(Yuv, OneBufferHoldsThePlanesInOrder) {
 // size is refused.
 TEST(Yuv, EncodingConvertedFramesWritesTheSameVideo) {
   const int w = 64, h = 48;
-  const fs::path folder = fs::temp_directory_path() / ("rattleback_yuv_" + std::to_string(::getpid()));
+  const fs::path folder =
+      fs::temp_directory_path() / ("rattleback_yuv_" + std::to_string(::getpid()));
   fs::create_directories(folder);
   render::EncoderSettings settings;
   settings.width = w;
@@ -152,7 +153,8 @@ TEST(Yuv, EncodingConvertedFramesWritesTheSameVideo) {
     render::Image image{w, h, std::vector<unsigned char>(4 * w * h)};
     for (int i = 0; i < w * h; ++i)
       for (int c = 0; c < 3; ++c)
-        image.rgba[4 * i + c] = static_cast<unsigned char>((i % w) * 4 + k * 20 + c * 50 + (random() & 15));
+        image.rgba[4 * i + c] =
+            static_cast<unsigned char>((i % w) * 4 + k * 20 + c * 50 + (random() & 15));
     frames.push_back(std::move(image));
   }
   auto encode = [&](const fs::path& path, bool converted) {
