@@ -2,8 +2,9 @@
 // render only (draw + read back + read-outs), encode only (RGBA → yuv420p → x264), and end
 // to end (`rattleback render`: simulate, render and encode in overlapping threads), and
 // `render --both` (two renderers on one thread, three encoders), for each OpenGL backend; and
-// the CPU time (all threads) encoding alone and end to end take, which on two cores bounds
-// how near the two can come.
+// the CPU time (all threads) encoding alone and end to end take. The last column is the
+// least end / encode those cores allow: end to end cannot take less wall time than its CPU
+// time spread over every core (its CPU time ÷ cores ÷ encoding's wall time).
 // Usage: rattleback_render_bench [SCENE] [FRAMES] [draw]
 // With "draw" it only draws the frames, 720p with EGL, ten times over: a steady load for a
 // profiler (perf record), and the render-only figure alone.
@@ -13,6 +14,7 @@
 #include <cstdio>
 #include <string>
 #include <sys/resource.h>
+#include <thread>
 
 #include "app/commands.hpp"
 #include "app/frames.hpp"
@@ -47,11 +49,12 @@ int main(int argc, char** argv) {
   const std::string scene = argc > 1 ? argv[1] : RATTLEBACK_SOURCE_DIR "/scenes/rattleback.yaml";
   const int frames = argc > 2 ? std::stoi(argv[2]) : 200;
   const bool draw_only = argc > 3 && std::string(argv[3]) == "draw";
-  std::printf("scene %s, %d frames per measurement, median of %d\n", scene.c_str(), frames,
-              kRepeats);
-  std::printf("%-8s %-10s %11s %11s %11s %11s %11s %11s %11s\n", "backend", "size",
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  std::printf("scene %s, %d frames per measurement, median of %d, %u cores\n", scene.c_str(),
+              frames, kRepeats, cores);
+  std::printf("%-8s %-10s %11s %11s %11s %11s %11s %11s %11s %11s\n", "backend", "size",
               "render fps", "encode fps", "end-to-end", "--both", "end/encode", "encode cpu",
-              "e2e cpu");
+              "e2e cpu", "bound");
   for (render::Backend backend : {render::Backend::Egl, render::Backend::OsMesa})
   for (auto [w, h] : {std::pair{1280, 720}, std::pair{1920, 1080}}) {
     app::Overrides o;
@@ -152,10 +155,13 @@ int main(int argc, char** argv) {
     }
     const double render_fps = median(fps[0]), encode_fps = median(fps[1]),
                  e2e_fps = median(fps[2]), both_fps = median(fps[3]);
-    std::printf("%-8s %-10s %11.1f %11.1f %11.1f %11.1f %10.2fx %10.2fs %10.2fs\n",
+    // The least end / encode the cores allow, from the CPU time end to end takes.
+    const double bound = std::max(1.0, median(cpu[1]) / cores * encode_fps / frames);
+    std::printf("%-8s %-10s %11.1f %11.1f %11.1f %11.1f %10.2fx %10.2fs %10.2fs %10.2fx\n",
                 std::string(rb::nameOf(backend)).c_str(),
                 (std::to_string(w) + "x" + std::to_string(h)).c_str(), render_fps, encode_fps,
-                e2e_fps, both_fps, encode_fps / e2e_fps, median(cpu[0]), median(cpu[1]));
+                e2e_fps, both_fps, encode_fps / e2e_fps, median(cpu[0]), median(cpu[1]),
+                bound);
   }
   for (const char* f : {"/tmp/rattleback_bench.mp4", "/tmp/rattleback_bench_e2e.mp4",
                         "/tmp/rattleback_bench_both-preferred.mp4",
