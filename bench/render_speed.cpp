@@ -165,7 +165,8 @@ int main(int argc, char** argv) {
   }
   for (const char* f : {"/tmp/rattleback_bench.mp4", "/tmp/rattleback_bench_e2e.mp4",
                         "/tmp/rattleback_bench_both-preferred.mp4",
-                        "/tmp/rattleback_bench_both-reversed.mp4", "/tmp/rattleback_bench_both-both.mp4"})
+                        "/tmp/rattleback_bench_both-reversed.mp4",
+                        "/tmp/rattleback_bench_both-both.mp4"})
     std::remove(f);
   return 0;
 }
