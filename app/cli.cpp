@@ -18,6 +18,7 @@ Cli::Cli() {
   simulate->add_option("-o,--output", s.output,
                        "CSV telemetry file (default out/<scene>.csv; - for standard output)");
   simulate->add_option("--duration", s.duration, "Simulated time, s (overrides the scene)");
+  simulate->add_option("--spin", s.spin, "Initial spin, rad/s (overrides the scene)");
   simulate->add_option("--dt", s.dt, "Fixed time step, s (overrides the scene's dt or tolerance)");
   simulate->add_option("--tolerance", s.tolerance,
                        "Adaptive steps (dopri5) to this error per step (overrides the scene's dt or tolerance)");

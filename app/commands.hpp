@@ -20,7 +20,7 @@ enum Exit : int {
 struct SimulateArgs {
   std::string scene;
   std::string output;  ///< CSV path; empty: out/<scene name>.csv
-  std::optional<double> duration, dt, tolerance, rate;
+  std::optional<double> duration, dt, tolerance, rate, spin;
   std::optional<std::string> integrator;
   std::string plot_dir;  ///< non-empty: write the four figures (PNG) there
   bool quiet = false;

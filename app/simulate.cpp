@@ -197,6 +197,7 @@ int simulateCommand(const SimulateArgs& args) {
   installInterruptHandlers();
   Overrides overrides;
   overrides.duration = args.duration;
+  overrides.spin = args.spin;
   overrides.dt = args.dt;
   overrides.tolerance = args.tolerance;
   overrides.integrator = args.integrator;
