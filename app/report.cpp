@@ -4,12 +4,12 @@
 // no script, no network, every path relative to DIR so the folder can be moved or served.
 #include <algorithm>
 #include <cstring>
-#include <optional>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -35,18 +35,28 @@ std::string escape(const std::string& text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
 }
 
 bool endsWith(const std::string& s, const std::string& suffix) {
-  return s.size() > suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return s.size() > suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 // The files of one scene (by the name before a known suffix), found in DIR.
@@ -66,6 +76,20 @@ std::optional<nlohmann::json> readJson(const fs::path& path) {
   }
 }
 
+// j[key] when j is an object that holds it, else null: a hand-edited or foreign file then
+// shows "–" in the page instead of stopping the report.
+const nlohmann::json& field(const nlohmann::json& j, const char* key) {
+  static const nlohmann::json none;
+  if (!j.is_object()) return none;
+  const auto it = j.find(key);
+  return it == j.end() ? none : *it;
+}
+
+// j as text when it is a string, else `otherwise`.
+std::string text(const nlohmann::json& j, const std::string& otherwise) {
+  return j.is_string() ? j.get<std::string>() : otherwise;
+}
+
 std::string number(const nlohmann::json& j, const char* format) {
   if (!j.is_number()) return "–";
   char text[64];
@@ -77,9 +101,30 @@ std::string spinWords(double spin) {
   return spin > 0 ? "counter-clockwise" : spin < 0 ? "clockwise" : "no spin";
 }
 
-void writeVideos(std::ostream& out, const SceneFiles& f) {
-  // A video's poster is its own first frame (NAME-reversed.png for NAME-reversed.mp4), when the
-  // run left one; otherwise the browser shows the video's first frame once loaded.
+// What simulate measured (its sidecar's result), when its run was spun counter-clockwise
+// (`ccw`) or clockwise as a video was; empty otherwise.
+std::string measuredAs(const std::optional<nlohmann::json>& run, bool ccw) {
+  if (!run) return "";
+  const nlohmann::json& r = field(*run, "result");
+  const nlohmann::json& spin = field(r, "initial_spin");
+  if (!spin.is_number() || spin == 0 || (spin > 0) != ccw) return "";
+  const std::string said =
+      "<br>measured (<code>simulate</code>, " + number(spin, "%+.3g") + " rad/s): ";
+  if (field(r, "first_reversal_s").is_number())
+    return said + "<b>reversed at " + number(field(r, "first_reversal_s"), "%.3f") + " s</b>";
+  return said + "no reversal in " + number(field(r, "simulated_s"), "%g") + " s";
+}
+
+// The videos, each captioned with what the theory predicts for its direction and, where
+// simulate's run was spun the same way, what that run did: the theory is linear and holds
+// near upright, and a body that loses no energy can reverse both ways, so the page never says
+// what the videos show without a run that measured it.
+void writeVideos(std::ostream& out, const SceneFiles& f,
+                 const std::optional<nlohmann::json>& theory,
+                 const std::optional<nlohmann::json>& run) {
+  // A video's poster is its own first frame (NAME-reversed.png for NAME-reversed.mp4, as the
+  // main job renders with `still --spin`), when the run left one; otherwise the browser shows
+  // the video's first frame once loaded.
   auto video = [&](const std::string& file, const std::string& poster_suffix,
                    const std::string& caption) {
     const std::string poster = f.has(poster_suffix) ? f.at(poster_suffix) : "";
@@ -87,54 +132,72 @@ void writeVideos(std::ostream& out, const SceneFiles& f) {
         << "preload=\"auto\"" << (poster.empty() ? "" : " poster=\"" + escape(poster) + "\"")
         << "></video><figcaption>" << caption << "</figcaption></figure>\n";
   };
+  // The preferred direction as analyze found it (render --both names its videos the same way).
+  std::optional<bool> ccw_preferred;
+  if (theory) {
+    const nlohmann::json& preferred = field(*theory, "preferred");
+    if (preferred == "ccw" || preferred == "cw") ccw_preferred = preferred == "ccw";
+  }
+  auto measured = [&](bool preferred) {
+    return ccw_preferred ? measuredAs(run, preferred == *ccw_preferred) : std::string();
+  };
   if (f.has("-reversed.mp4") || f.has("-preferred.mp4")) {
     out << "<div class=\"pair\">\n";
     if (f.has("-reversed.mp4"))
       video(f.at("-reversed.mp4"), "-reversed.png",
-            "Spun the <b>reversing</b> way: it rocks, stops and spins back");
+            "Spun the <b>reversing</b> way: the theory predicts it rocks, stops and spins back" +
+                measured(false));
     if (f.has("-preferred.mp4"))
-      video(f.at("-preferred.mp4"), "-preferred.png", "Spun the <b>preferred</b> way: it keeps turning");
+      video(f.at("-preferred.mp4"), "-preferred.png",
+            "Spun the <b>preferred</b> way: the theory predicts it keeps turning" + measured(true));
     out << "</div>\n";
   }
   if (f.has(".mp4")) video(f.at(".mp4"), "-oblique.png", "The scene as rendered");
   if (f.has("-both.mp4"))
-    out << "<p><a href=\"" << escape(f.at("-both.mp4")) << "\">Both side by side in one video</a></p>\n";
+    out << "<p><a href=\"" << escape(f.at("-both.mp4"))
+        << "\">Both side by side in one video</a></p>\n";
 }
 
 // Theory (analyze --json) beside what the run measured (simulate's sidecar).
-void writeAnalysis(std::ostream& out, const fs::path& dir, const SceneFiles& f) {
-  std::optional<nlohmann::json> theory, run;
-  if (f.has("-analysis.json")) theory = readJson(dir / f.at("-analysis.json"));
-  if (f.has(".csv.json")) run = readJson(dir / f.at(".csv.json"));
+void writeAnalysis(std::ostream& out, const SceneFiles& f,
+                   const std::optional<nlohmann::json>& theory,
+                   const std::optional<nlohmann::json>& run) {
   if (!theory && !run) return;
   out << "<table><tr><th>predicted (linearised rolling model)</th><th>measured (simulate)</th></tr>"
          "<tr><td>";
   if (theory) {
     const nlohmann::json& t = *theory;
-    const std::string preferred = t.value("preferred", "");
-    out << "preferred direction: <b>" << escape(preferred == "ccw" ? "counter-clockwise" : "clockwise")
-        << "</b><br>growth rates at n = " << number(t["spin"], "%+g") << " rad/s: roll "
-        << number(t["growth_rates"]["roll"], "%+.3f") << " /s, pitch "
-        << number(t["growth_rates"]["pitch"], "%+.3f") << " /s<br>rocking at rest: roll "
-        << number(t["frequencies_hz"]["roll"], "%.2f") << " Hz, pitch "
-        << number(t["frequencies_hz"]["pitch"], "%.2f") << " Hz<br>misalignment "
-        << number(t["misalignment_deg"], "%+.2f") << "°; "
-        << (t.value("rest_stable", false) ? "stands upright" : "<b>cannot stand upright</b>");
+    const nlohmann::json& preferred = field(t, "preferred");
+    out << "preferred direction: <b>"
+        << (preferred == "ccw"  ? "counter-clockwise"
+            : preferred == "cw" ? "clockwise"
+                                : "–")
+        << "</b><br>growth rates at n = " << number(field(t, "spin"), "%+g") << " rad/s: roll "
+        << number(field(field(t, "growth_rates"), "roll"), "%+.3f") << " /s, pitch "
+        << number(field(field(t, "growth_rates"), "pitch"), "%+.3f")
+        << " /s<br>rocking at rest: roll "
+        << number(field(field(t, "frequencies_hz"), "roll"), "%.2f") << " Hz, pitch "
+        << number(field(field(t, "frequencies_hz"), "pitch"), "%.2f") << " Hz<br>misalignment "
+        << number(field(t, "misalignment_deg"), "%+.2f") << "°; "
+        << (field(t, "rest_stable") == true    ? "stands upright"
+            : field(t, "rest_stable") == false ? "<b>cannot stand upright</b>"
+                                               : "upright: –");
     if (f.has("-analysis.txt"))
       out << "<br><a href=\"" << escape(f.at("-analysis.txt")) << "\">full analysis</a>";
   }
   out << "</td><td>";
   if (run) {
-    const nlohmann::json& r = (*run)["result"];
-    const double spin = r.value("initial_spin", 0.0);
-    out << "spun " << number(r["initial_spin"], "%+.3g") << " rad/s (" << spinWords(spin) << ")<br>";
-    if (r["first_reversal_s"].is_number())
-      out << "first reversal at <b>" << number(r["first_reversal_s"], "%.3f") << " s</b>";
+    const nlohmann::json& r = field(*run, "result");
+    const nlohmann::json& spin = field(r, "initial_spin");
+    out << "spun " << number(spin, "%+.3g") << " rad/s ("
+        << spinWords(spin.is_number() ? spin.get<double>() : 0.0) << ")<br>";
+    if (field(r, "first_reversal_s").is_number())
+      out << "first reversal at <b>" << number(field(r, "first_reversal_s"), "%.3f") << " s</b>";
     else
-      out << "no reversal in " << number(r["simulated_s"], "%g") << " s";
-    out << "<br>final spin " << number(r["final_spin"], "%+.3f") << " rad/s<br>energy "
-        << number(r["energy_j"]["initial"], "%.4g") << " J → " << number(r["energy_j"]["final"], "%.4g")
-        << " J";
+      out << "no reversal in " << number(field(r, "simulated_s"), "%g") << " s";
+    out << "<br>final spin " << number(field(r, "final_spin"), "%+.3f") << " rad/s<br>energy "
+        << number(field(field(r, "energy_j"), "initial"), "%.4g") << " J → "
+        << number(field(field(r, "energy_j"), "final"), "%.4g") << " J";
     if (f.has(".csv")) out << "<br><a href=\"" << escape(f.at(".csv")) << "\">telemetry (CSV)</a>";
   }
   out << "</td></tr></table>\n";
@@ -159,7 +222,8 @@ h1{margin-bottom:0}section{border-top:1px solid #ccc;margin-top:1.5em}
 .pair{display:flex;gap:1em;flex-wrap:wrap}.pair figure{flex:1 1 500px;margin:0}
 video,img{max-width:100%;height:auto;background:#eee}figure{margin:0 0 1em}
 .grid{display:grid;grid-template-columns:repeat(auto-fill,minmax(300px,1fr));gap:.7em}
-table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:.4em .8em;vertical-align:top;text-align:left}
+table{border-collapse:collapse;margin:1em 0}
+td,th{border:1px solid #ccc;padding:.4em .8em;vertical-align:top;text-align:left}
 )";
 
 }  // namespace
@@ -206,10 +270,11 @@ int reportCommand(const ReportArgs& args) {
   for (auto it = scenes.begin(); it != scenes.end();) {
     std::optional<nlohmann::json> meta;
     if (it->second.has(".csv.json")) meta = readJson(dir / it->second.at(".csv.json"));
-    if (it->second.has(".csv") && meta && meta->value("command", "") == "sweep") {
+    if (it->second.has(".csv") && meta && field(*meta, "command") == "sweep") {
       SweepFiles sweep{it->first, it->second.at(".csv"), *meta, {}};
       for (auto o = others.begin(); o != others.end();) {
-        if (endsWith(*o, ".png") && (*o == it->first + ".png" || o->rfind(it->first + "-", 0) == 0)) {
+        if (endsWith(*o, ".png") &&
+            (*o == it->first + ".png" || o->rfind(it->first + "-", 0) == 0)) {
           sweep.images.push_back(*o);
           o = others.erase(o);
         } else {
@@ -248,27 +313,34 @@ int reportCommand(const ReportArgs& args) {
   // Scenes with videos first, then the rest, each in name order.
   std::vector<std::string> order;
   for (const auto& [name, files] : scenes)
-    if (files.has("-reversed.mp4") || files.has("-preferred.mp4") || files.has(".mp4")) order.push_back(name);
+    if (files.has("-reversed.mp4") || files.has("-preferred.mp4") || files.has(".mp4"))
+      order.push_back(name);
   for (const auto& [name, files] : scenes)
     if (std::find(order.begin(), order.end(), name) == order.end()) order.push_back(name);
   for (const std::string& name : order) {
     const SceneFiles& f = scenes[name];
     out << "<section id=\"" << escape(name) << "\"><h2>" << escape(name) << "</h2>\n";
-    writeVideos(out, f);
-    writeAnalysis(out, dir, f);
+    std::optional<nlohmann::json> theory, run;
+    if (f.has("-analysis.json")) theory = readJson(dir / f.at("-analysis.json"));
+    if (f.has(".csv.json")) run = readJson(dir / f.at(".csv.json"));
+    writeVideos(out, f, theory, run);
+    writeAnalysis(out, f, theory, run);
     writeImages(out, f, kStillSuffixes, std::size(kStillSuffixes), "Stills");
     writeImages(out, f, kPlotSuffixes, std::size(kPlotSuffixes), "Against time");
     out << "</section>\n";
   }
   for (const SweepFiles& sweep : sweeps) {
     out << "<section id=\"sweep-" << escape(sweep.name) << "\"><h2>Sweep: " << escape(sweep.name)
-        << "</h2>\n<p>" << sweep.meta.value("rows", 0) << " runs of "
-        << escape(sweep.meta.value("base", "?")) << " over ";
-    const nlohmann::json axes = sweep.meta.value("axes", nlohmann::json::array());
-    for (std::size_t i = 0; i < axes.size(); ++i)
-      out << (i ? " × " : "") << "<code>" << escape(axes[i].value("key", "?")) << "</code> ("
-          << axes[i].value("values", nlohmann::json::array()).size() << " values)";
-    out << ": <a href=\"" << escape(sweep.csv) << "\">the table (CSV)</a></p><div class=\"grid\">\n";
+        << "</h2>\n<p>" << number(field(sweep.meta, "rows"), "%g") << " runs of "
+        << escape(text(field(sweep.meta, "base"), "?")) << " over ";
+    const nlohmann::json& axes = field(sweep.meta, "axes");
+    for (std::size_t i = 0; axes.is_array() && i < axes.size(); ++i) {
+      const nlohmann::json& values = field(axes[i], "values");
+      out << (i ? " × " : "") << "<code>" << escape(text(field(axes[i], "key"), "?")) << "</code> ("
+          << (values.is_array() ? values.size() : 0) << " values)";
+    }
+    out << ": <a href=\"" << escape(sweep.csv)
+        << "\">the table (CSV)</a></p><div class=\"grid\">\n";
     for (const std::string& image : sweep.images)
       out << "<a href=\"" << escape(image) << "\"><img src=\"" << escape(image) << "\" alt=\""
           << escape(image) << "\"></a>\n";

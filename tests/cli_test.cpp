@@ -668,3 +668,73 @@ TEST(Outputs, AnalyzeJsonGivesTheDefaultBodysNumbers) {
   EXPECT_NEAR(j["frequencies_hz"]["pitch"].get<double>(), 7.0, 0.1);
   EXPECT_TRUE(j["rest_stable"].get<bool>());
 }
+
+namespace {
+
+// The captions under a report's videos, in the page's order (reversing, then preferred).
+std::vector<std::string> captions(const fs::path& page) {
+  std::ifstream in(page);
+  std::stringstream s;
+  s << in.rdbuf();
+  const std::string html = s.str();
+  std::vector<std::string> found;
+  for (std::size_t at = html.find("<figcaption>"); at != std::string::npos;
+       at = html.find("<figcaption>", at + 1))
+    found.push_back(html.substr(at, html.find("</figcaption>", at) - at));
+  return found;
+}
+
+}  // namespace
+
+// Each video of a report is captioned with what the linear theory predicts for its direction,
+// and with what simulate measured only under the video spun as simulate's run was: a user's
+// body without air drag reversed spun the preferred way too, under a caption that said "it keeps
+// turning". The default body reverses spun clockwise (2.366 s, README) and not in 1 s spun
+// counter-clockwise (its growth rates: it cannot rock that way).
+TEST(Cli, ReportCaptionsSayWhatIsPredictedAndWhatWasMeasured) {
+  const fs::path dir = scratchDir() / "page";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const Result theory = rattleback("analyze " + scene("rattleback") + " --json");
+  ASSERT_EQ(theory.status, 0) << theory.err;
+  std::ofstream(dir / "rattleback-analysis.json") << theory.out;
+  // The page only links the videos: empty files stand for them.
+  std::ofstream(dir / "rattleback-reversed.mp4");
+  std::ofstream(dir / "rattleback-preferred.mp4");
+  const std::string csv = (dir / "rattleback.csv").string();
+  const std::string page = (dir / "index.html").string();
+
+  ASSERT_EQ(rattleback("simulate " + scene("rattleback") + " --spin -5 --duration 3 -q -o " + csv)
+                .status,
+            0);
+  const nlohmann::json run = nlohmann::json::parse(std::ifstream(csv + ".json"));
+  ASSERT_TRUE(run["result"]["first_reversal_s"].is_number());
+  char reversal[32];
+  std::snprintf(reversal, sizeof reversal, "reversed at %.3f s",
+                run["result"]["first_reversal_s"].get<double>());
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  auto said = captions(page);
+  ASSERT_EQ(said.size(), 2u);
+  EXPECT_NE(said[0].find("reversing"), std::string::npos) << said[0];
+  EXPECT_NE(said[0].find("predicts it rocks, stops and spins back"), std::string::npos);
+  EXPECT_NE(said[0].find(reversal), std::string::npos) << said[0];
+  EXPECT_NE(said[1].find("predicts it keeps turning"), std::string::npos) << said[1];
+  EXPECT_EQ(said[1].find("measured"), std::string::npos) << said[1];
+
+  ASSERT_EQ(rattleback("simulate " + scene("rattleback") + " --spin 5 --duration 1 -q -o " + csv)
+                .status,
+            0);
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  said = captions(page);
+  ASSERT_EQ(said.size(), 2u);
+  EXPECT_EQ(said[0].find("measured"), std::string::npos) << said[0];
+  EXPECT_NE(said[1].find("no reversal in 1 s"), std::string::npos) << said[1];
+
+  // Files the report did not write, of the wrong shape: a page with "–" where a number would
+  // be, not an abort (an array as the sidecar, a number as the preferred direction).
+  std::ofstream(csv + ".json") << "[1]";
+  std::ofstream(dir / "rattleback-analysis.json") << R"({"preferred": 3, "growth_rates": 1})";
+  const Result odd = rattleback("report " + dir.string() + " -q");
+  EXPECT_EQ(odd.status, 0) << odd.err;
+  EXPECT_EQ(captions(page).size(), 2u);
+}
