@@ -39,8 +39,10 @@ Cli::Cli() {
 
   RenderArgs& r = render_args;
   // The backend's default can come from the environment (CI runs the render tests on both).
-  if (const char* backend = std::getenv("RATTLEBACK_BACKEND"); backend && *backend)
+  if (const char* backend = std::getenv("RATTLEBACK_BACKEND"); backend && *backend) {
     render_args.backend = still_args.backend = backend;
+    render_args.backend_from = still_args.backend_from = "RATTLEBACK_BACKEND (the environment)";
+  }
   render = app.add_subcommand("render", "Render a scene to an MP4 video (H.264)");
   render->add_option("scene", r.scene, "Scene file (YAML)")->required();
   render->add_option("-o,--output", r.output,
@@ -59,7 +61,8 @@ Cli::Cli() {
   render->add_option("--preset", r.preset, "x264 preset (default veryfast)");
   render->add_option("--backend", r.backend,
                      "OpenGL through egl (a GPU, or Mesa's llvmpipe without a display), osmesa, or "
-                     "auto: EGL when it starts, else OSMesa (default: $RATTLEBACK_BACKEND, or auto)");
+                     "auto: EGL when it starts, else OSMesa (default: $RATTLEBACK_BACKEND, or auto)")
+      ->each([&r](const std::string&) { r.backend_from = "--backend"; });
   render->add_flag("--both", r.both,
                    "Also the reversed spin, named …-preferred.mp4 and …-reversed.mp4, and a "
                    "side-by-side …-both.mp4");
@@ -88,7 +91,8 @@ Cli::Cli() {
   still->add_flag("--transparent", st.transparent,
                   "PNG with alpha for figures and slides: the body and its shadow over nothing (no "
                   "floor, background or read-outs)");
-  still->add_option("--backend", st.backend, "auto (default) | egl | osmesa: as for render");
+  still->add_option("--backend", st.backend, "auto (default) | egl | osmesa: as for render")
+      ->each([&st](const std::string&) { st.backend_from = "--backend"; });
   still->add_flag("-q,--quiet", st.quiet, "Do not print the file name");
   still->add_flag("-v,--verbose", st.verbose, "Also name the OpenGL in use (backend, vendor, renderer)");
 

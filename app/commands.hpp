@@ -43,6 +43,7 @@ struct RenderArgs {
   int crf = 20;
   std::string preset = "veryfast";
   std::string backend = "auto";  ///< auto | egl | osmesa
+  std::string backend_from = "--backend";  ///< where `backend` came from, for its error
   bool quiet = false;
   bool verbose = false;
 };
@@ -56,6 +57,7 @@ struct StillArgs {
   bool no_readouts = false;
   bool transparent = false;  ///< PNG with alpha: no floor, no background, no read-outs
   std::string backend = "auto";  ///< auto | egl | osmesa
+  std::string backend_from = "--backend";  ///< where `backend` came from, for its error
   bool quiet = false;
   bool verbose = false;
 };

@@ -203,11 +203,12 @@ void yieldToEncoders() {
   if (errno == 0) ::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), nice + 5);
 }
 
-// --backend's value; none after a line naming the choices.
-std::optional<render::Backend> parseBackend(const std::string& name) {
+// --backend's value (or the environment's, named by `from`); none after a line naming the
+// choices.
+std::optional<render::Backend> parseBackend(const std::string& name, const std::string& from) {
   const auto backend = rb::parseName<render::Backend>(name);
   if (!backend)
-    std::cerr << "--backend: " << rb::choices<render::Backend>() << ", not '" << name << "'\n";
+    std::cerr << from << ": " << rb::choices<render::Backend>() << ", not '" << name << "'\n";
   return backend;
 }
 
@@ -252,7 +253,7 @@ int renderCommand(const RenderArgs& args) {
     std::cerr << ok.error().text() << "\n";
     return kBadInput;
   }
-  const auto backend = parseBackend(args.backend);
+  const auto backend = parseBackend(args.backend, args.backend_from);
   if (!backend) return kBadInput;
   std::jthread preload = preloadDriver(*backend);
   auto loaded = loadScene(args.scene, args.overrides);
@@ -450,7 +451,7 @@ int stillCommand(const StillArgs& args) {
     std::cerr << ok.error().text() << "\n";
     return kBadInput;
   }
-  const auto backend = parseBackend(args.backend);
+  const auto backend = parseBackend(args.backend, args.backend_from);
   if (!backend) return kBadInput;
   std::jthread preload = preloadDriver(*backend);
   auto loaded = loadScene(args.scene, o);

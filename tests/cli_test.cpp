@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -737,4 +738,24 @@ TEST(Cli, ReportCaptionsSayWhatIsPredictedAndWhatWasMeasured) {
   const Result odd = rattleback("report " + dir.string() + " -q");
   EXPECT_EQ(odd.status, 0) << odd.err;
   EXPECT_EQ(captions(page).size(), 2u);
+}
+
+// A backend from the environment that is not one is named as the environment's, not as an
+// option the user never typed; --backend given on the line is named as itself.
+TEST(Cli, ABadBackendNamesWhereItCameFrom) {
+  const char* before = std::getenv("RATTLEBACK_BACKEND");
+  const std::string kept = before ? before : "";
+  ::setenv("RATTLEBACK_BACKEND", "bogus", 1);
+  const fs::path png = tempFile("x.png");
+  const Result env = rattleback("still " + scene("rattleback") + " -o " + png.string());
+  const Result option =
+      rattleback("still " + scene("rattleback") + " --backend nope -o " + png.string());
+  if (before) ::setenv("RATTLEBACK_BACKEND", kept.c_str(), 1);
+  else ::unsetenv("RATTLEBACK_BACKEND");
+  EXPECT_EQ(env.status, 2);
+  EXPECT_EQ(env.err.rfind("RATTLEBACK_BACKEND", 0), 0u) << env.err;
+  EXPECT_EQ(lines(env.err), 1);
+  EXPECT_EQ(option.status, 2);
+  EXPECT_EQ(option.err.rfind("--backend: ", 0), 0u) << option.err;
+  EXPECT_FALSE(fs::exists(png));
 }
