@@ -146,9 +146,12 @@ void printText(const std::string& scene, const sim::Model& model) {
   std::printf("centre of mass   (%.6g, %.6g, %.6g) in the shape's frame\n", com.x(), com.y(),
               com.z());
   std::printf("inertia about the CM, geometric axes [kg m^2]\n");
+  // Products of inertia a symmetric body does not have come out of cubature as 1e-19 of the
+  // moments, not 0: shown as the 0 they are.
+  const double moment = m.inertia.cwiseAbs().maxCoeff();
   for (int i = 0; i < 3; ++i)
-    std::printf("                 [% .6e  % .6e  % .6e]\n", m.inertia(i, 0), m.inertia(i, 1),
-                m.inertia(i, 2));
+    std::printf("                 [% .6e  % .6e  % .6e]\n", clean(m.inertia(i, 0), moment),
+                clean(m.inertia(i, 1), moment), clean(m.inertia(i, 2), moment));
   std::printf("principal        %.6e  %.6e  %.6e kg m^2, along (columns)\n", m.principal(0),
               m.principal(1), m.principal(2));
   for (int i = 0; i < 3; ++i)
