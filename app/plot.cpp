@@ -167,9 +167,10 @@ rb::Status plotPng(const std::string& png, const std::string& title,
     int file_index = 0;
     for (const Panel& panel : panels) {
       // A twentieth of the height above and below the data, so that a line at its top or
-      // bottom (a conserved energy) is not drawn on the frame.
+      // bottom (a conserved energy) is not drawn on the frame; none below an axis from 0.
       script << "unset logscale\nunset y2label\nunset y2tics\nset ytics mirror\n"
-             << "set offsets 0, 0, graph 0.05, graph 0.05\n"
+             << "set offsets 0, 0, graph 0.05, " << (panel.y_from_zero ? "0" : "graph 0.05")
+             << "\n"
              << "set title " << quoted(panels.size() > 1 ? panel.title : std::string()) << "\n"
              << "set xlabel " << quoted(panel.x_label) << "\nset ylabel " << quoted(panel.y_label)
              << "\n";
@@ -177,6 +178,7 @@ rb::Status plotPng(const std::string& png, const std::string& title,
       else script << "set format x '% g'\n";
       if (panel.log_y) script << "set logscale y\nset format y '%.0e'\n";
       else script << "set format y '% g'\n";
+      script << (panel.y_from_zero ? "set yrange [0:*]\n" : "set autoscale y\n");
       if (!panel.y2_label.empty())
         script << "set y2label " << quoted(panel.y2_label) << "\nset y2tics\nset ytics nomirror\n";
       std::vector<std::string> clauses;

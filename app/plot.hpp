@@ -25,6 +25,7 @@ struct Panel {
   std::string title, x_label, y_label, y2_label;
   bool log_x = false, log_y = false;
   bool lines_only = false;  ///< no point markers (time series)
+  bool y_from_zero = false;  ///< a quantity never negative (a tilt): its axis starts at 0
   std::vector<Series> series;
 };
 

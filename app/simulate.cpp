@@ -160,6 +160,7 @@ rb::Status writePlots(const std::string& dir, const std::string& scene,
   spin.series = {series("n", [](const sim::Telemetry& t) { return t.spin; })};
   Panel tilt = panel("Tilt of the body axis and height of the centre of mass", "tilt [degrees]");
   tilt.y2_label = "CM height z [mm]";
+  tilt.y_from_zero = true;
   tilt.series = {series("tilt", [](const sim::Telemetry& t) { return t.tilt_deg; }),
                  series("CM height", [](const sim::Telemetry& t) { return 1e3 * t.x_world.z(); }, true)};
   Panel normal = panel("Normal force of the floor", "normal force N [N]");
