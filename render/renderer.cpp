@@ -61,9 +61,11 @@ std::string Renderer::init() {
   auto context = GlContext::create(settings_.backend, settings_.width, settings_.height);
   if (!context) return context.error().text();
   context_ = std::move(context).value();
-  // Text a 36th of the height (20 px at 720p), but no wider than a 16:9 frame's: the read-out
-  // line (about 50 characters) takes a third of the width at 16:9 and must fit a portrait one.
-  const int text_px = std::min(settings_.height / 36, settings_.width / 64);
+  // Text a 36th of the height (20 px at 720p), and at most a 40th of the width: the title and
+  // each read-out line (up to about 45 characters, each about 0.6 of the size wide) then fit
+  // in two thirds of a portrait or square frame, where the time and the spin take a line
+  // each. (A 64th of the width made a 480-wide portrait frame's text 8 px high.)
+  const int text_px = std::min(settings_.height / 36, settings_.width / 40);
   if (std::string e = font_.load(std::max(8, text_px)); !e.empty()) return e;
   CurrentContext current(*context_);
   if (!current.ok()) return "cannot make the OpenGL context current";
