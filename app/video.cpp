@@ -19,6 +19,7 @@
 
 #include "app/commands.hpp"
 #include "app/frames.hpp"
+#include "app/spin_history.hpp"
 #include "app/interrupt.hpp"
 #include "app/output.hpp"
 #include "app/progress.hpp"
@@ -317,8 +318,11 @@ int renderCommand(const RenderArgs& args) {
     // Each run's camera for the fixed views, and the spin of its frames so far for the inset:
     // the frame values the renderers draw from.
     std::vector<render::Framing> framings;
-    std::vector<std::vector<std::array<float, 2>>> histories(runs.size());
-    for (const sim::Rollout& run : runs) framings.push_back(framingOf(run.summary().first, points));
+    std::vector<SpinHistory> histories;
+    for (const sim::Rollout& run : runs) {
+      framings.push_back(framingOf(run.summary().first, points));
+      histories.emplace_back(model.duration, plan.width);
+    }
     for (const sim::Rollout& run : runs) {
       const double spin = run.model().initial.spin;
       auto created = render::Renderer::create(
@@ -349,13 +353,12 @@ int renderCommand(const RenderArgs& args) {
     for (std::int64_t k = 0; running && k < plan.frames && !interruptSignal(); ++k) {
       const double t = plan.frameTime(k);
       for (std::size_t i = 0; i < runs.size() && running; ++i) {
-        running = runs[i].advanceTo(t);
+        running = histories[i].advanceTo(runs[i], t) && runs[i].advanceTo(t);
         if (!running) break;
         const sim::Telemetry sample = runs[i].sampleAt(t);
-        histories[i].push_back({static_cast<float>(sample.t), static_cast<float>(sample.spin)});
         render::FrameInput frame = frameOf(sample);
         frame.framing = framings[i];
-        frame.history = histories[i];
+        frame.history = histories[i].with(sample);
         renderers[i]->draw(frame, images[i]);
       }
       if (running && args.both) {
@@ -491,28 +494,20 @@ int stillCommand(const StillArgs& args) {
   }
   if (args.verbose) std::cerr << "still: OpenGL " << created.value()->description() << "\n";
   render::Renderer& renderer = *created.value();
-  // Run to the still's time, keeping the spin at each earlier video frame for the inset, as
-  // the video would have drawn it.
+  // Run to the still's time, keeping the spin for the inset as the video would have.
   sim::Rollout run(model);
-  std::vector<std::array<float, 2>> history;
-  for (std::int64_t k = 0; plan.frameTime(k) < args.t; ++k) {
-    const double t = plan.frameTime(k);
+  SpinHistory history(model.duration, plan.width);
+  if (!history.advanceTo(run, args.t) || !run.advanceTo(args.t)) {
     if (interruptSignal()) return interruptedStatus();
-    if (!run.advanceTo(t)) break;
-    const sim::Telemetry sample = run.sampleAt(t);
-    history.push_back({static_cast<float>(sample.t), static_cast<float>(sample.spin)});
-  }
-  if (!run.advanceTo(args.t)) {
     std::cerr << args.scene << ": the run stopped before t = " << args.t
               << " s: " << run.summary().divergence.value_or("interrupted") << "\n";
     return run.summary().divergence ? kDiverged : interruptedStatus();
   }
   render::Image image;
   const sim::Telemetry sample = run.sampleAt(args.t);
-  history.push_back({static_cast<float>(sample.t), static_cast<float>(sample.spin)});
   render::FrameInput frame = frameOf(sample);
   frame.framing = framingOf(run.summary().first, points);
-  frame.history = history;
+  frame.history = history.with(sample);
   renderer.draw(frame, image);
   if (auto e = render::writePng(path, image); !e) {
     std::cerr << e.error().text() << "\n";

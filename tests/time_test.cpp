@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "app/spin_history.hpp"
 #include "sim/crossing.hpp"
 #include "support.hpp"
 
@@ -290,4 +291,64 @@ TEST(Reversal, TheCrossingIsExactForKnownSignals) {
 
   // A zero at an end is that end.
   EXPECT_EQ(sim::zeroCrossing(sine, 0.0, 1.0, 0.0, sine(1.0)), 0.0);
+}
+
+// The inset's spin so far (app::SpinHistory): for the default body over 3 s in a 320-wide
+// image (96 columns of 31.25 ms, sampled every 4.46 ms), every sample lies within its column's
+// kept extremes, the kept points are the run's own spin at their times, in time order, at
+// most two a column; and the history built frame by frame (render) equals the one built in
+// one go (still) at the same time.
+TEST(SpinHistory, KeepsEachColumnsExtremesAndIsTheSameFrameByFrame) {
+  const sim::Model model = build(parse(kRolling));
+  const double drawn = 2.5;
+  sim::Rollout whole(model);
+  app::SpinHistory at_once(model.duration, 320);
+  ASSERT_TRUE(at_once.advanceTo(whole, drawn));
+  ASSERT_TRUE(whole.advanceTo(drawn));
+  const sim::Telemetry now = whole.sampleAt(drawn);
+  const auto span = at_once.with(now);
+  const std::vector<std::array<float, 2>> kept(span.begin(), span.end());
+
+  sim::Rollout framed(model);
+  app::SpinHistory by_frame(model.duration, 320);
+  for (int k = 0; k / 30.0 < drawn; ++k) {  // 30 fps
+    ASSERT_TRUE(by_frame.advanceTo(framed, k / 30.0));
+    ASSERT_TRUE(framed.advanceTo(k / 30.0));
+    by_frame.with(framed.sampleAt(k / 30.0));
+  }
+  ASSERT_TRUE(by_frame.advanceTo(framed, drawn));
+  ASSERT_TRUE(framed.advanceTo(drawn));
+  const auto again = by_frame.with(framed.sampleAt(drawn));
+  EXPECT_TRUE(std::equal(kept.begin(), kept.end(), again.begin(), again.end()));
+
+  ASSERT_GE(kept.size(), 2u);
+  EXPECT_EQ(kept.back()[0], static_cast<float>(drawn));
+  EXPECT_LE(kept.size(), 2u * 96 * drawn / 3 + 3);
+  for (std::size_t i = 1; i < kept.size(); ++i) EXPECT_LT(kept[i - 1][0], kept[i][0]) << i;
+
+  // Every 5 ms sample of the spin from a run of its own, against its column's kept points.
+  const double column = 3.0 / 96, step = column / 7;  // ceil(31.25 / 5) = 7 samples a column
+  sim::Rollout reference(model);
+  for (int j = 0; j * step < drawn; ++j) {
+    const double t = j * step;
+    ASSERT_TRUE(reference.advanceTo(t));
+    const float spin = static_cast<float>(reference.sampleAt(t).spin);
+    const int c = j / 7;
+    float low = INFINITY, high = -INFINITY;
+    for (const auto& p : kept)
+      if (p[0] >= c * column - 1e-6 && p[0] < (c + 1) * column - 1e-6) {
+        low = std::min(low, p[1]);
+        high = std::max(high, p[1]);
+      }
+    EXPECT_GE(spin, low) << "t " << t;
+    EXPECT_LE(spin, high) << "t " << t;
+  }
+  // The kept points are the run's spin at their times (the drawn time's too), within what
+  // their float storage allows: 5 rad/s to 7 digits, and a time rounded to float (60 ns) at a
+  // spin changing by at most about 20 rad/s².
+  sim::Rollout check(model);
+  for (const auto& p : kept) {
+    ASSERT_TRUE(check.advanceTo(p[0]));
+    EXPECT_NEAR(check.sampleAt(p[0]).spin, p[1], 1e-5) << "t " << p[0];
+  }
 }
