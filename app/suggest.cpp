@@ -76,6 +76,21 @@ std::string explainOptionError(const CLI::App& cli, int argc, char** argv,
       line += "; did you mean " + nearest + "?";
     return line + " (see rattleback " + path + " --help)";
   }
+  // CLI11 says "Could not convert: --dt = abc": said as what the option takes.
+  const std::string prefix = "Could not convert: ", equals = " = ";
+  if (what.rfind(prefix, 0) == 0 && what.find(equals) != std::string::npos) {
+    const std::size_t at = what.find(equals);
+    const std::string name = what.substr(prefix.size(), at - prefix.size());
+    const std::string value = what.substr(at + equals.size());
+    const CLI::Option* option = command->get_option_no_throw(name);
+    const std::string type = option ? option->get_type_name() : "";
+    const std::string wanted = type == "INT"     ? "a whole number"
+                               : type == "FLOAT" ? "a number"
+                                                 : "a value of type " + type;
+    if (!type.empty())
+      return path + ": " + name + " takes " + wanted + ", not '" + value + "' (see rattleback " +
+             path + " --help)";
+  }
   return what + " (see rattleback " + path + " --help)";
 }
 

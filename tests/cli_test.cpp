@@ -495,7 +495,10 @@ TEST(Cli, OptionErrorsNameTheOptionAndTheWayOut) {
                         Case{"--size 641x363", "not 641x363: try 642x364"},
                         Case{"--fps 29.97", "--fps: must be a whole number of frames per second"},
                         Case{"--fps 0", "--fps: must be within 1 … 240, not 0"},
-                        Case{"--fps 1e9", "--fps: must be within 1 … 240, not 1e+09"}}) {
+                        Case{"--fps 1e9", "--fps: must be within 1 … 240, not 1e+09"},
+                        // What the option takes, not CLI11's "Could not convert: --dt = abc".
+                        Case{"--dt abc", "render: --dt takes a number, not 'abc'"},
+                        Case{"--crf 2.5", "render: --crf takes a whole number, not '2.5'"}}) {
     const Result r = rattleback(render + " " + c.options);
     EXPECT_EQ(r.status, 2) << c.options;
     EXPECT_EQ(lines(r.err), 1) << r.err;
