@@ -19,12 +19,12 @@
 
 #include "app/commands.hpp"
 #include "app/frames.hpp"
-#include "app/spin_history.hpp"
 #include "app/interrupt.hpp"
 #include "app/output.hpp"
 #include "app/progress.hpp"
 #include "app/queue.hpp"
 #include "app/scene_args.hpp"
+#include "app/spin_history.hpp"
 #include "app/video_plan.hpp"
 #include "render/encoder.hpp"
 #include "render/image_io.hpp"
