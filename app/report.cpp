@@ -86,7 +86,7 @@ const nlohmann::json& field(const nlohmann::json& j, const char* key) {
 }
 
 // j as text when it is a string, else `otherwise`.
-std::string text(const nlohmann::json& j, const std::string& otherwise) {
+std::string stringOr(const nlohmann::json& j, const std::string& otherwise) {
   return j.is_string() ? j.get<std::string>() : otherwise;
 }
 
@@ -101,6 +101,13 @@ std::string spinWords(double spin) {
   return spin > 0 ? "counter-clockwise" : spin < 0 ? "clockwise" : "no spin";
 }
 
+// Whether a run (simulate's sidecar's result) reversed, and when.
+std::string reversalOf(const nlohmann::json& result) {
+  if (field(result, "first_reversal_s").is_number())
+    return "<b>reversed at " + number(field(result, "first_reversal_s"), "%.3f") + " s</b>";
+  return "no reversal in " + number(field(result, "simulated_s"), "%g") + " s";
+}
+
 // What simulate measured (its sidecar's result), when its run was spun counter-clockwise
 // (`ccw`) or clockwise as a video was; empty otherwise.
 std::string measuredAs(const std::optional<nlohmann::json>& run, bool ccw) {
@@ -108,11 +115,8 @@ std::string measuredAs(const std::optional<nlohmann::json>& run, bool ccw) {
   const nlohmann::json& r = field(*run, "result");
   const nlohmann::json& spin = field(r, "initial_spin");
   if (!spin.is_number() || spin == 0 || (spin > 0) != ccw) return "";
-  const std::string said =
-      "<br>measured (<code>simulate</code>, " + number(spin, "%+.3g") + " rad/s): ";
-  if (field(r, "first_reversal_s").is_number())
-    return said + "<b>reversed at " + number(field(r, "first_reversal_s"), "%.3f") + " s</b>";
-  return said + "no reversal in " + number(field(r, "simulated_s"), "%g") + " s";
+  return "<br>measured (<code>simulate</code>, " + number(spin, "%+.3g") +
+         " rad/s): " + reversalOf(r);
 }
 
 // The videos, each captioned with what the theory predicts for its direction and, where
@@ -190,12 +194,8 @@ void writeAnalysis(std::ostream& out, const SceneFiles& f,
     const nlohmann::json& r = field(*run, "result");
     const nlohmann::json& spin = field(r, "initial_spin");
     out << "spun " << number(spin, "%+.3g") << " rad/s ("
-        << spinWords(spin.is_number() ? spin.get<double>() : 0.0) << ")<br>";
-    if (field(r, "first_reversal_s").is_number())
-      out << "first reversal at <b>" << number(field(r, "first_reversal_s"), "%.3f") << " s</b>";
-    else
-      out << "no reversal in " << number(field(r, "simulated_s"), "%g") << " s";
-    out << "<br>final spin " << number(field(r, "final_spin"), "%+.3f") << " rad/s<br>energy "
+        << spinWords(spin.is_number() ? spin.get<double>() : 0.0) << ")<br>" << reversalOf(r)
+        << "<br>final spin " << number(field(r, "final_spin"), "%+.3f") << " rad/s<br>energy "
         << number(field(field(r, "energy_j"), "initial"), "%.4g") << " J → "
         << number(field(field(r, "energy_j"), "final"), "%.4g") << " J";
     if (f.has(".csv")) out << "<br><a href=\"" << escape(f.at(".csv")) << "\">telemetry (CSV)</a>";
@@ -332,12 +332,12 @@ int reportCommand(const ReportArgs& args) {
   for (const SweepFiles& sweep : sweeps) {
     out << "<section id=\"sweep-" << escape(sweep.name) << "\"><h2>Sweep: " << escape(sweep.name)
         << "</h2>\n<p>" << number(field(sweep.meta, "rows"), "%g") << " runs of "
-        << escape(text(field(sweep.meta, "base"), "?")) << " over ";
+        << escape(stringOr(field(sweep.meta, "base"), "?")) << " over ";
     const nlohmann::json& axes = field(sweep.meta, "axes");
     for (std::size_t i = 0; axes.is_array() && i < axes.size(); ++i) {
       const nlohmann::json& values = field(axes[i], "values");
-      out << (i ? " × " : "") << "<code>" << escape(text(field(axes[i], "key"), "?")) << "</code> ("
-          << (values.is_array() ? values.size() : 0) << " values)";
+      out << (i ? " × " : "") << "<code>" << escape(stringOr(field(axes[i], "key"), "?"))
+          << "</code> (" << (values.is_array() ? values.size() : 0) << " values)";
     }
     out << ": <a href=\"" << escape(sweep.csv)
         << "\">the table (CSV)</a></p><div class=\"grid\">\n";

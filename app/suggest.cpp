@@ -78,8 +78,8 @@ std::string explainOptionError(const CLI::App& cli, int argc, char** argv,
   }
   // CLI11 says "Could not convert: --dt = abc": said as what the option takes.
   const std::string prefix = "Could not convert: ", equals = " = ";
-  if (what.rfind(prefix, 0) == 0 && what.find(equals) != std::string::npos) {
-    const std::size_t at = what.find(equals);
+  if (const std::size_t at = what.find(equals);
+      what.rfind(prefix, 0) == 0 && at != std::string::npos) {
     const std::string name = what.substr(prefix.size(), at - prefix.size());
     const std::string value = what.substr(at + equals.size());
     const CLI::Option* option = command->get_option_no_throw(name);

@@ -335,6 +335,8 @@ TEST(SpinHistory, KeepsEachColumnsExtremesAndIsTheSameFrameByFrame) {
     const float spin = static_cast<float>(reference.sampleAt(t).spin);
     const int c = j / 7;
     float low = INFINITY, high = -INFINITY;
+    // Column c holds the kept points of [c, c + 1) columns; their times are floats, 0.25 µs
+    // apart near 3 s, so a 1 µs margin puts a point on a boundary in the column it opened.
     for (const auto& p : kept)
       if (p[0] >= c * column - 1e-6 && p[0] < (c + 1) * column - 1e-6) {
         low = std::min(low, p[1]);
