@@ -14,7 +14,7 @@
 
 #include "app/commands.hpp"
 #include "app/interrupt.hpp"
-#include "app/output.hpp"
+#include "tasks/output.hpp"
 #include "app/plot.hpp"
 #include "scene/loader.hpp"
 #include "sim/compile.hpp"
@@ -87,12 +87,13 @@ Trace runOnce(const sim::SceneSpec& spec, const std::shared_ptr<const sim::Body>
     trace.failure = trace.brief = text;
   } else if (summary.divergence) {
     trace.failure = "stopped: " + *summary.divergence;
-    const std::string& why = *summary.divergence;
+    const char* brief = "NaN or infinity";
+    if (summary.stop && summary.stop->reason == sim::StopReason::EnergyGain)
+      brief = "energy grew beyond the bound";
+    if (summary.stop && summary.stop->reason == sim::StopReason::OnRim)
+      brief = "tipped onto the rim of its top";
     char text[96];
-    std::snprintf(text, sizeof text, "stopped at %.3g s: %s", rollout.current().t,
-                  why.find("energy") != std::string::npos ? "energy grew beyond the bound"
-                  : why.find("edge") != std::string::npos ? "tipped onto the rim of its top"
-                                                          : "NaN or infinity");
+    std::snprintf(text, sizeof text, "stopped at %.3g s: %s", rollout.current().t, brief);
     trace.brief = text;
   }
   trace.reversal = summary.first_reversal_s;
@@ -248,12 +249,12 @@ int benchCommand(const BenchArgs& args) {
     std::cerr << made.error().text() << "\n";
     return kBadInput;
   }
-  auto opened = AtomicOutput::open(csv_path);
+  auto opened = tasks::AtomicOutput::open(csv_path);
   if (!opened) {
     std::cerr << opened.error().text() << "\n";
     return kBadInput;
   }
-  AtomicOutput& csv = opened.value();
+  tasks::AtomicOutput& csv = opened.value();
   // The header is the first line (plain CSV readers take it as such); what the columns mean is
   // in the README ("bench").
   csv.stream() << "scene,model,integrator,dt,tolerance,steps,rejected,status,cost_median,cost_min,"

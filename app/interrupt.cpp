@@ -5,7 +5,7 @@
 #include <atomic>
 #include <csignal>
 
-#include "app/output.hpp"
+#include "tasks/output.hpp"
 
 namespace app {
 namespace {
@@ -14,7 +14,7 @@ std::atomic<int> received{0};
 
 extern "C" void onSignal(int signal) {
   if (received.exchange(signal) != 0) {  // the second: no more waiting
-    removeTemporaryFilesNow();
+    tasks::removeTemporaryFilesNow();
     ::_exit(128 + signal);
   }
 }

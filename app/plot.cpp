@@ -1,5 +1,5 @@
 #include "app/plot.hpp"
-#include "app/output.hpp"
+#include "tasks/output.hpp"
 
 #include <spawn.h>
 #include <sys/wait.h>
@@ -99,7 +99,7 @@ rb::Status checkPlotFile(const std::string& png) {
   if (fs::is_directory(png, ec)) return rb::Status::fail(png + ": --plot is a folder, not a file");
   const rb::OutputPlace place = rb::outputPlace(png);
   if (auto refused = refuseDevice(png, place); !refused) return refused;
-  if (auto made = makeParentFolder(place.target); !made) return made;
+  if (auto made = tasks::makeParentFolder(place.target); !made) return made;
   const fs::path dir = fs::absolute(place.target).parent_path();
   if (std::string why = probeWrite(dir); !why.empty())
     return rb::Status::fail(png + ": --plot cannot write into " + dir.string() + ": " + why +

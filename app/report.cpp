@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
-#include "app/output.hpp"
+#include "tasks/output.hpp"
 
 namespace app {
 namespace {
@@ -298,7 +298,7 @@ int reportCommand(const ReportArgs& args) {
   }
   std::sort(others.begin(), others.end());
   const std::string path = (dir / "index.html").string();
-  auto opened = AtomicOutput::open(path);
+  auto opened = tasks::AtomicOutput::open(path);
   if (!opened) {
     std::cerr << opened.error().text() << "\n";
     return kBadInput;

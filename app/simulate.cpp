@@ -9,57 +9,15 @@
 
 #include "app/commands.hpp"
 #include "app/interrupt.hpp"
-#include "app/json.hpp"
-#include "app/output.hpp"
+#include "tasks/output.hpp"
 #include "app/plot.hpp"
 #include "app/progress.hpp"
 #include "app/scene_args.hpp"
 #include "sim/rollout.hpp"
+#include "tasks/simulate.hpp"
 
 namespace app {
 namespace {
-
-constexpr double kDefaultRate = 500;  // Hz: samples per simulated second when not given
-
-// The CSV's columns and their units: the header is the first line of the file (so that every
-// CSV reader takes it as the header); the units go to the sidecar X.csv.json.
-const std::pair<const char*, const char*> kColumns[] = {
-    {"t", "s"},
-    {"spin", "rad/s: n = w.z, + counter-clockwise seen from above"},
-    {"energy", "J: kinetic + potential + elastic"},
-    {"kinetic", "J: M v^2/2 + w.L/2"},
-    {"potential", "J: M g z of the centre of mass"},
-    {"elastic", "J: sum of k depth^2/2 over the contact springs"},
-    {"tilt_deg", "degrees between the body's z axis and the vertical"},
-    {"x", "m: centre of mass"},
-    {"y", "m: centre of mass"},
-    {"z", "m: centre of mass"},
-    {"wx", "rad/s: angular velocity, world axes"},
-    {"wy", "rad/s: angular velocity, world axes"},
-    {"wz", "rad/s: angular velocity, world axes"},
-    {"Lz", "kg m^2/s: vertical angular momentum about the centre of mass"},
-    {"contacts", "count of contact points below the floor"},
-    {"normal_force", "N: total normal force of the floor"},
-    {"mode", "the contact model integrated: points, smooth or rolling (contact.model auto "
-             "switches between rolling and smooth)"},
-};
-
-std::string header() {
-  std::string line;
-  for (const auto& [name, unit] : kColumns) line += std::string(line.empty() ? "" : ",") + name;
-  return line + "\n";
-}
-
-void writeRow(std::ostream& out, const sim::Telemetry& s) {
-  char line[512];
-  std::snprintf(line, sizeof line,
-                "%.10g,%.9g,%.9g,%.9g,%.9g,%.9g,%.6f,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.9g,%s\n",
-                s.t, s.spin, s.energy, s.kinetic, s.potential, s.elastic, s.tilt_deg,
-                s.x_world.x(), s.x_world.y(), s.x_world.z(), s.w_world.x(), s.w_world.y(),
-                s.w_world.z(), s.L_world.z(), s.contacts, s.normal_force,
-                std::string(rb::nameOf(s.mode)).c_str());
-  out << line;
-}
 
 // Whether `path` leads to the file, pipe or terminal this process's standard output is.
 bool isStandardOutput(const std::string& path) {
@@ -174,24 +132,6 @@ rb::Status writePlots(const std::string& dir, const std::string& scene,
   return {};
 }
 
-// The sidecar X.csv.json: what the CSV is (scene, program, columns and units, the model) and
-// what the run found.
-nlohmann::json sidecar(const SimulateArgs& args, const sim::Model& model, double rate,
-                       const sim::RunSummary& run, std::int64_t rows) {
-  nlohmann::json columns = nlohmann::json::array();
-  for (const auto& [name, unit] : kColumns) columns.push_back({{"name", name}, {"unit", unit}});
-  nlohmann::json j;
-  j["program"] = "rattleback " RATTLEBACK_VERSION;
-  j["command"] = "simulate";
-  j["scene"] = args.scene;
-  j["columns"] = columns;
-  j["rows"] = rows;
-  j["rate_hz"] = rate;
-  j["model"] = modelJson(model);
-  j["result"] = runJson(run);
-  return j;
-}
-
 }  // namespace
 
 int simulateCommand(const SimulateArgs& args) {
@@ -208,14 +148,9 @@ int simulateCommand(const SimulateArgs& args) {
     return kBadInput;
   }
   const sim::Model& model = loaded->model;
-  const double rate = args.rate.value_or(kDefaultRate);
-  if (!(rate > 0) || !std::isfinite(rate) || rate > 1e7) {
-    std::cerr << "--rate: samples per simulated second must be > 0 and at most 1e7, not " << rate << "\n";
-    return kBadInput;
-  }
-  if (model.duration * rate > 1e8) {
-    std::cerr << "--rate: " << rate << " Hz over " << model.duration
-              << " s makes more than 1e8 rows; choose a lower rate\n";
+  const double rate = args.rate.value_or(tasks::kDefaultRate);
+  if (auto ok = tasks::checkRate(rate, model.duration); !ok) {
+    std::cerr << "--" << ok.error().text() << "\n";
     return kBadInput;
   }
   // "-o -" is standard output, as for most tools that write a table. When the table goes to
@@ -230,18 +165,18 @@ int simulateCommand(const SimulateArgs& args) {
       return kBadInput;
     }
   }
-  auto opened = AtomicOutput::open(csv);
+  auto opened = tasks::AtomicOutput::open(csv);
   if (!opened) {
     std::cerr << opened.error().text() << "\n";
     return kBadInput;
   }
-  AtomicOutput& file = opened.value();
+  tasks::AtomicOutput& file = opened.value();
   // The sidecar goes beside a file, not beside a device or descriptor written in place (such
   // as /dev/stdout, even when the shell sends it to a file: /dev/stdout.json would be made).
   const bool regular = !rb::outputPlace(csv).temporary.empty();
-  std::optional<AtomicOutput> meta;
+  std::optional<tasks::AtomicOutput> meta;
   if (regular) {
-    auto opened_meta = AtomicOutput::open(csv + ".json");
+    auto opened_meta = tasks::AtomicOutput::open(csv + ".json");
     if (!opened_meta) {
       std::cerr << opened_meta.error().text() << "\n";
       return kBadInput;
@@ -249,23 +184,23 @@ int simulateCommand(const SimulateArgs& args) {
     meta.emplace(std::move(opened_meta).value());
   }
   if (args.verbose) describeModel(model, args.scene);
-  file.stream() << header();
+  file.stream() << tasks::telemetryHeader();
 
-  std::int64_t rows = 0;
-  const std::vector<double> times = sim::sampleTimes(model.duration, rate);
-  Progress progress("simulate", static_cast<std::int64_t>(times.size()), !args.quiet);
+  const std::int64_t total = static_cast<std::int64_t>(model.duration * rate) + 1;
+  Progress progress("simulate", total, !args.quiet);
   std::vector<sim::Telemetry> kept;  // for the plots
-  sim::Rollout rollout(model);
-  for (double t : times) {
-    if (interruptSignal()) break;
-    if (!rollout.advanceTo(t)) break;
-    const sim::Telemetry sample = rollout.sampleAt(t);
-    writeRow(file.stream(), sample);
+  tasks::SimulateOptions options;
+  options.rate = rate;
+  options.cancelled = [] { return interruptSignal() != 0; };
+  std::int64_t rows = 0;
+  options.each = [&](const sim::Telemetry& sample) {
+    tasks::writeTelemetryRow(file.stream(), sample);
     if (!args.plot_dir.empty()) kept.push_back(sample);
     progress.update(++rows);
-  }
+  };
+  const tasks::SimulateResult run = tasks::simulate(model, options);
   progress.finish();
-  const sim::RunSummary& summary = rollout.summary();
+  const sim::RunSummary& summary = run.summary;
 
   if (interruptSignal()) {
     std::cerr << args.scene << ": interrupted at t = " << summary.last.t
@@ -277,8 +212,10 @@ int simulateCommand(const SimulateArgs& args) {
               << ". No telemetry written\n";
     return kDiverged;  // `file` is removed unfinished
   }
-  if (meta) meta->stream() << sidecar(args, model, rate, summary, rows).dump(2) << "\n";
-  for (AtomicOutput* out : {&file, meta ? &*meta : nullptr}) {
+  if (meta)
+    meta->stream() << tasks::telemetrySidecar(args.scene, model, rate, summary, rows).dump(2)
+                   << "\n";
+  for (tasks::AtomicOutput* out : {&file, meta ? &*meta : nullptr}) {
     if (!out) continue;
     if (auto e = out->commit(); !e) {
       std::cerr << e.error().text() << "\n";

@@ -22,7 +22,7 @@
 
 #include "app/commands.hpp"
 #include "app/interrupt.hpp"
-#include "app/output.hpp"
+#include "tasks/output.hpp"
 #include "app/plot.hpp"
 #include "app/progress.hpp"
 #include "scene/sweep.hpp"
@@ -372,10 +372,10 @@ rb::Status checkTableIsAFile(const std::string& output) {
 
 rb::Status writeTable(const std::string& output, const std::vector<std::string>& keys,
                       const std::vector<std::string>& lines, nlohmann::json sidecar) {
-  if (auto made = makeParentFolder(output); !made) return made;
-  auto csv = AtomicOutput::open(output);
+  if (auto made = tasks::makeParentFolder(output); !made) return made;
+  auto csv = tasks::AtomicOutput::open(output);
   if (!csv) return csv.error();
-  auto meta = AtomicOutput::open(output + ".json");
+  auto meta = tasks::AtomicOutput::open(output + ".json");
   if (!meta) return meta.error();
   csv->stream() << header(keys) << "\n";
   for (const std::string& line : lines) csv->stream() << line << "\n";
@@ -442,7 +442,7 @@ int sweepCommand(const SweepArgs& args) {
       return kBadInput;
     }
   }
-  if (auto made = makeParentFolder(output); !made) {
+  if (auto made = tasks::makeParentFolder(output); !made) {
     std::cerr << made.error().text() << "\n";
     return kBadInput;
   }

@@ -20,7 +20,7 @@
 #include "app/commands.hpp"
 #include "app/frames.hpp"
 #include "app/interrupt.hpp"
-#include "app/output.hpp"
+#include "tasks/output.hpp"
 #include "app/progress.hpp"
 #include "app/queue.hpp"
 #include "app/scene_args.hpp"
@@ -94,7 +94,7 @@ struct Output {
   // which removes it on a second Ctrl-C (it exits at once); forgotten here.
   ~Output() {
     abort();
-    if (encoder) unregisterTemporary(encoder->temporaryPath());
+    if (encoder) tasks::unregisterTemporary(encoder->temporaryPath());
   }
   // Frames in yuv420p, converted by the drawing thread: a 720p frame is 1.4 MB where its RGBA
   // is 3.7 MB, and the conversion is off the encoding thread, the pipeline's narrowest.
@@ -122,7 +122,7 @@ struct Output {
           return;
         }
         encoder = std::move(opened).value();
-        registerTemporary(encoder->temporaryPath());
+        tasks::registerTemporary(encoder->temporaryPath());
         while (!stop.stop_requested()) {
           auto image = images.pop();
           if (!image) break;
@@ -294,7 +294,7 @@ int renderCommand(const RenderArgs& args) {
                 : std::vector<std::string>{args.output.empty() ? base + ".mp4" : args.output};
   std::vector<std::unique_ptr<Output>> outputs;
   for (std::size_t i = 0; i < provisional.size(); ++i) {
-    if (auto made = makeParentFolder(provisional[i]); !made) {
+    if (auto made = tasks::makeParentFolder(provisional[i]); !made) {
       std::cerr << made.error().text() << "\n";
       return kBadInput;
     }
@@ -475,7 +475,7 @@ int stillCommand(const StillArgs& args) {
       args.output.empty()
           ? "out/" + stem(args.scene) + "-" + std::string(rb::nameOf(plan.view)) + ".png"
           : args.output;
-  if (auto made = makeParentFolder(path); !made) {
+  if (auto made = tasks::makeParentFolder(path); !made) {
     std::cerr << made.error().text() << "\n";
     return kBadInput;
   }

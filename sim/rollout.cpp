@@ -159,6 +159,7 @@ void Rollout::watch() {
     std::ostringstream msg;
     msg << quantity << " became NaN or infinite at t = " << current_.t << " s (step "
         << current_.step << "); " << stepAdvice(model_);
+    summary_.stop = Stop{StopReason::NonFinite, current_.t, current_.step};
     summary_.divergence = msg.str();
     return;
   }
@@ -190,6 +191,7 @@ void Rollout::watch() {
         << 100 * (energy - e0) / std::abs(e0) << std::noshowpos << " %, beyond the "
         << 100 * kEnergyGrowthBound << " % that nothing in the model can supply) at t = "
         << current_.t << " s (step " << current_.step << "); " << stepAdvice(model_);
+    summary_.stop = Stop{StopReason::EnergyGain, current_.t, current_.step};
     summary_.divergence = msg.str();
     return;
   }
@@ -204,6 +206,7 @@ void Rollout::watch() {
         << current_.t << " s (step " << current_.step
         << "), where rolling on its smooth bottom no longer describes it; use "
            "contact.model smooth or points";
+    summary_.stop = Stop{StopReason::OnRim, current_.t, current_.step};
     summary_.divergence = msg.str();
   }
 }

@@ -19,6 +19,20 @@ namespace sim {
 
 class AdaptiveStepper;
 
+/// Why a run stopped by itself (RunSummary::stop).
+enum class StopReason {
+  NonFinite,   ///< a quantity became NaN or infinite
+  EnergyGain,  ///< the energy rose beyond what the model can supply
+  OnRim,       ///< a rolling body tipped onto the edge of its flat top
+};
+
+/// A run that stopped by itself: why, when, and the message that says it.
+struct Stop {
+  StopReason reason;
+  double t = 0;            ///< s
+  std::int64_t step = 0;   ///< the step it stopped at
+};
+
 /// What a run did so far.
 struct RunSummary {
   Telemetry first, last;  ///< at the start, and at the last time sampled or reached
@@ -41,6 +55,7 @@ struct RunSummary {
   /// beyond what the model can supply, or a rolling body tipped onto its rim. Names the
   /// quantity, the time and the step.
   std::optional<std::string> divergence;
+  std::optional<Stop> stop;  ///< set with `divergence`: the same event, typed
   bool stop_requested = false;  ///< stopped because the caller asked
   /// contact.model auto: how many times the model changed, and when to which.
   int switches = 0;
@@ -140,3 +155,14 @@ const RunSummary& sampleRun(Rollout& rollout, double rate, Each&& each) {
 }
 
 }  // namespace sim
+
+namespace rb {
+template <>
+struct NameTable<sim::StopReason> {
+  static constexpr std::array<std::pair<sim::StopReason, std::string_view>, 3> entries{{
+      {sim::StopReason::NonFinite, "non_finite"},
+      {sim::StopReason::EnergyGain, "energy_gain"},
+      {sim::StopReason::OnRim, "on_rim"},
+  }};
+};
+}  // namespace rb

@@ -9,7 +9,7 @@
 #include "util/output_place.hpp"
 #include "util/result.hpp"
 
-namespace app {
+namespace tasks {
 
 /// Creates the folder `path` will be written into, when missing. The same rule for a default
 /// output (out/…) and one given with -o; an error line naming the folder and the system's
@@ -43,4 +43,4 @@ class AtomicOutput {
   bool done_ = false;
 };
 
-}  // namespace app
+}  // namespace tasks

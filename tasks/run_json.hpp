@@ -8,7 +8,7 @@
 #include "sim/model.hpp"
 #include "sim/rollout.hpp"
 
-namespace app {
+namespace tasks {
 
 /// The run's settings: contact, integrator and step or tolerance, duration, initial state.
 nlohmann::json modelJson(const sim::Model& model);
@@ -16,4 +16,4 @@ nlohmann::json modelJson(const sim::Model& model);
 /// stopped when it did.
 nlohmann::json runJson(const sim::RunSummary& run);
 
-}  // namespace app
+}  // namespace tasks

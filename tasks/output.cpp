@@ -1,4 +1,4 @@
-#include "app/output.hpp"
+#include "tasks/output.hpp"
 
 #include <unistd.h>
 
@@ -8,7 +8,7 @@
 #include <cstring>
 #include <filesystem>
 
-namespace app {
+namespace tasks {
 namespace fs = std::filesystem;
 
 namespace {
@@ -120,4 +120,4 @@ AtomicOutput::~AtomicOutput() {
   unregisterTemporary(temp_);
 }
 
-}  // namespace app
+}  // namespace tasks

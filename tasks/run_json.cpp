@@ -1,8 +1,10 @@
-#include "app/json.hpp"
+#include "tasks/run_json.hpp"
 
 #include <string>
 
-namespace app {
+#include "tasks/outcome.hpp"
+
+namespace tasks {
 
 nlohmann::json modelJson(const sim::Model& model) {
   nlohmann::json j;
@@ -31,8 +33,14 @@ nlohmann::json modelJson(const sim::Model& model) {
 
 nlohmann::json runJson(const sim::RunSummary& run) {
   nlohmann::json j;
-  j["status"] = run.divergence ? "stopped" : run.stop_requested ? "interrupted" : "ok";
-  if (run.divergence) j["stopped_because"] = *run.divergence;
+  const Outcome outcome = outcomeOf(run);
+  j["status"] = std::string(rb::nameOf(outcome.ending));
+  if (outcome.stop) {
+    j["stopped_because"] = outcome.message;
+    j["stop"] = {{"reason", std::string(rb::nameOf(outcome.stop->reason))},
+                 {"t", outcome.stop->t},
+                 {"step", outcome.stop->step}};
+  }
   j["first_reversal_s"] = run.first_reversal_s ? nlohmann::json(*run.first_reversal_s) : nullptr;
   j["reversals_s"] = run.reversals;
   j["initial_spin"] = run.first.spin;
@@ -54,4 +62,4 @@ nlohmann::json runJson(const sim::RunSummary& run) {
   return j;
 }
 
-}  // namespace app
+}  // namespace tasks

@@ -1,0 +1,124 @@
+#include "tasks/simulate.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+
+#include "tasks/output.hpp"
+#include "tasks/run_json.hpp"
+#include "util/format.hpp"
+
+namespace tasks {
+namespace {
+
+// The CSV's columns and their units: the header is the first line of the file (so that every
+// CSV reader takes it as the header); the units go to the sidecar X.csv.json.
+constexpr Column kColumns[] = {
+    {"t", "s"},
+    {"spin", "rad/s: n = w.z, + counter-clockwise seen from above"},
+    {"energy", "J: kinetic + potential + elastic"},
+    {"kinetic", "J: M v^2/2 + w.L/2"},
+    {"potential", "J: M g z of the centre of mass"},
+    {"elastic", "J: sum of k depth^2/2 over the contact springs"},
+    {"tilt_deg", "degrees between the body's z axis and the vertical"},
+    {"x", "m: centre of mass"},
+    {"y", "m: centre of mass"},
+    {"z", "m: centre of mass"},
+    {"wx", "rad/s: angular velocity, world axes"},
+    {"wy", "rad/s: angular velocity, world axes"},
+    {"wz", "rad/s: angular velocity, world axes"},
+    {"Lz", "kg m^2/s: vertical angular momentum about the centre of mass"},
+    {"contacts", "count of contact points below the floor"},
+    {"normal_force", "N: total normal force of the floor"},
+    {"mode", "the contact model integrated: points, smooth or rolling (contact.model auto "
+             "switches between rolling and smooth)"},
+};
+
+}  // namespace
+
+std::span<const Column> telemetryColumns() { return kColumns; }
+
+std::string telemetryHeader() {
+  std::string line;
+  for (const Column& c : kColumns) line.append(line.empty() ? "" : ",").append(c.name);
+  return line + "\n";
+}
+
+void writeTelemetryRow(std::ostream& out, const sim::Telemetry& s) {
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "%.10g,%.9g,%.9g,%.9g,%.9g,%.9g,%.6f,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.9g,%s\n",
+                s.t, s.spin, s.energy, s.kinetic, s.potential, s.elastic, s.tilt_deg,
+                s.x_world.x(), s.x_world.y(), s.x_world.z(), s.w_world.x(), s.w_world.y(),
+                s.w_world.z(), s.L_world.z(), s.contacts, s.normal_force,
+                std::string(rb::nameOf(s.mode)).c_str());
+  out << line;
+}
+
+rb::Status checkRate(double rate, double duration) {
+  if (!(rate > 0) || !std::isfinite(rate) || rate > 1e7)
+    return rb::Status::fail("rate: samples per simulated second must be > 0 and at most 1e7, not " +
+                            rb::show(rate));
+  if (duration * rate > 1e8)
+    return rb::Status::fail("rate: " + rb::show(rate) + " Hz over " + rb::show(duration) +
+                            " s makes more than 1e8 rows; choose a lower rate");
+  return {};
+}
+
+SimulateResult simulate(const sim::Model& model, const SimulateOptions& options) {
+  SimulateResult result;
+  sim::Rollout rollout(model);
+  for (double t : sim::sampleTimes(model.duration, options.rate)) {
+    if (options.cancelled && options.cancelled()) rollout.requestStop();
+    if (!rollout.advanceTo(t)) break;
+    const sim::Telemetry sample = rollout.sampleAt(t);
+    if (options.each) options.each(sample);
+    ++result.rows;
+  }
+  result.summary = rollout.summary();
+  result.outcome = outcomeOf(result.summary);
+  return result;
+}
+
+nlohmann::json telemetrySidecar(const std::string& scene, const sim::Model& model, double rate,
+                                const sim::RunSummary& run, std::int64_t rows) {
+  nlohmann::json columns = nlohmann::json::array();
+  for (const Column& c : kColumns) columns.push_back({{"name", c.name}, {"unit", c.unit}});
+  nlohmann::json j;
+  j["program"] = "rattleback " RATTLEBACK_VERSION;
+  j["command"] = "simulate";
+  j["scene"] = scene;
+  j["columns"] = columns;
+  j["rows"] = rows;
+  j["rate_hz"] = rate;
+  j["model"] = modelJson(model);
+  j["result"] = runJson(run);
+  return j;
+}
+
+rb::Status writeTelemetry(const std::string& path, const std::string& scene,
+                          const sim::Model& model, double rate, const sim::RunSummary& run,
+                          const std::vector<sim::Telemetry>& samples) {
+  if (auto made = makeParentFolder(path); !made) return made;
+  auto csv = AtomicOutput::open(path);
+  if (!csv) return csv.error();
+  const bool regular = !rb::outputPlace(path).temporary.empty();
+  std::optional<AtomicOutput> meta;
+  if (regular) {
+    auto opened = AtomicOutput::open(path + ".json");
+    if (!opened) return opened.error();
+    meta.emplace(std::move(opened).value());
+  }
+  csv->stream() << telemetryHeader();
+  for (const sim::Telemetry& s : samples) writeTelemetryRow(csv->stream(), s);
+  if (meta)
+    meta->stream() << telemetrySidecar(scene, model, rate, run,
+                                       static_cast<std::int64_t>(samples.size()))
+                          .dump(2)
+                   << "\n";
+  if (auto e = csv->commit(); !e) return e;
+  if (meta) return meta->commit();
+  return {};
+}
+
+}  // namespace tasks

@@ -1,0 +1,68 @@
+// Simulating a scene into telemetry: the run sampled at exact times, its rows in one table
+// (columns with units), written as CSV with its JSON sidecar. What `rattleback simulate` and the
+// Python package's simulate() both call, so that both write the same text.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <iosfwd>
+#include <nlohmann/json.hpp>
+#include <span>
+#include <stop_token>
+#include <string>
+#include <vector>
+
+#include "sim/model.hpp"
+#include "sim/rollout.hpp"
+#include "tasks/outcome.hpp"
+#include "util/result.hpp"
+
+namespace tasks {
+
+constexpr double kDefaultRate = 500;  ///< Hz: samples per simulated second when not given
+
+/// A column of the telemetry table: its name (the CSV header's) and its unit and meaning.
+struct Column {
+  const char* name;
+  const char* unit;
+};
+/// Every column of the telemetry, in the CSV's order.
+std::span<const Column> telemetryColumns();
+
+/// The CSV's header line (with its newline) and one row per sample (README "simulate").
+std::string telemetryHeader();
+void writeTelemetryRow(std::ostream& out, const sim::Telemetry& s);
+
+/// Checks a sampling rate for a run of `duration` s: > 0, at most 1e7 Hz and 1e8 rows.
+rb::Status checkRate(double rate, double duration);
+
+struct SimulateOptions {
+  double rate = kDefaultRate;  ///< samples per simulated second
+  /// Asked before each sample: true ends the run there (Ctrl-C). May be empty.
+  std::function<bool()> cancelled;
+  /// Called with each sample, in time order (may be empty).
+  std::function<void(const sim::Telemetry&)> each;
+};
+
+/// What a run did: its summary and why it ended.
+struct SimulateResult {
+  sim::RunSummary summary;
+  Outcome outcome;
+  std::int64_t rows = 0;  ///< samples handed to `each`
+};
+
+/// Runs `model` to its end (or a stop), sampling at t_k = k / rate and at the end.
+SimulateResult simulate(const sim::Model& model, const SimulateOptions& options);
+
+/// The sidecar X.csv.json: what the CSV is (program, scene, columns and units, the model) and
+/// what the run found.
+nlohmann::json telemetrySidecar(const std::string& scene, const sim::Model& model, double rate,
+                                const sim::RunSummary& run, std::int64_t rows);
+
+/// Writes the samples as CSV at `path` and the sidecar at `path`.json, each whole or not at all
+/// (no sidecar for a device such as /dev/stdout).
+rb::Status writeTelemetry(const std::string& path, const std::string& scene,
+                          const sim::Model& model, double rate, const sim::RunSummary& run,
+                          const std::vector<sim::Telemetry>& samples);
+
+}  // namespace tasks
