@@ -8,18 +8,13 @@
 
 #include "app/commands.hpp"
 #include "app/scene_args.hpp"
+#include "tasks/analysis.hpp"
 #include "sim/analysis.hpp"
 #include "sim/stability.hpp"
 #include "sim/switching.hpp"
 
 namespace app {
 namespace {
-
-nlohmann::json vectorJson(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
-
-nlohmann::json matrixJson(const Eigen::Matrix3d& m) {
-  return {vectorJson(m.row(0)), vectorJson(m.row(1)), vectorJson(m.row(2))};
-}
 
 // A value that is zero but for rounding (a symmetric body's CM at −8.5e−18 m) prints as 0.
 double clean(double v, double scale) { return std::abs(v) < 1e-12 * scale ? 0.0 : v; }
@@ -28,58 +23,6 @@ Eigen::Vector3d clean(const Eigen::Vector3d& v, double scale) {
   return {clean(v.x(), scale), clean(v.y(), scale), clean(v.z(), scale)};
 }
 
-// Where the mass properties came from (body.mass_properties), as analyze reports it.
-std::string massSourceText(const sim::Body& body) {
-  if (body.surface.kind != sim::Surface::Kind::Paraboloid) return "scene";
-  if (body.mass_source == sim::MassSource::Grid) return "grid";
-  return body.mass_by_cubature ? "continuum (cubature)" : "continuum (closed form)";
-}
-
-double spinFor(const sim::Model& model, const std::optional<double>& spin) {
-  if (spin) return *spin;
-  return model.initial.spin != 0 ? model.initial.spin : 5.0;
-}
-
-void printJson(const sim::Model& model, double spin) {
-  const sim::Body& body = *model.body;
-  const sim::MassProperties& m = body.mass_properties;
-  const sim::Rest rest = sim::restOf(model);
-  const sim::Linearisation at_rest = sim::linearise(model, 0);
-  const sim::Linearisation spinning = sim::linearise(model, spin);
-  const sim::FirstOrder first = sim::firstOrderGrowth(model);
-  const sim::ContactStability stability = sim::contactStability(model);
-  const double size = body.surface.footprintHalf().maxCoeff();
-  const std::size_t top = body.top.size(), bottom = body.bottom.size();
-  nlohmann::json j;
-  const bool grid = body.surface.kind == sim::Surface::Kind::Paraboloid;
-  j["points"] = {{"total", grid ? nlohmann::json(m.points) : nlohmann::json(nullptr)},
-                 {"top", top},
-                 {"bottom", bottom},
-                 {"surface", top + bottom}};
-  j["mass_properties"] = massSourceText(body);
-  j["length_unit_m"] = model.length_unit;
-  j["mass"] = m.mass;
-  j["com"] = vectorJson(clean(m.com, size));
-  j["inertia"] = matrixJson(m.inertia);
-  j["principal_moments"] = vectorJson(m.principal);
-  j["principal_axes"] = matrixJson(m.axes.transpose());
-  j["misalignment_deg"] = m.misalignment_deg;
-  j["contact"] = {{"omega_rad_s", stability.omega},
-                  {"damping_ratio", stability.zeta},
-                  {"largest_stable_dt_s", stability.largest_step}};  // inf → null
-  j["h"] = rest.h;
-  j["radii_of_curvature"] = {rest.radii(0), rest.radii(1)};
-  j["rest_stable"] = rest.stable;
-  j["frequencies_hz"] = {{"roll", at_rest.roll_hz}, {"pitch", at_rest.pitch_hz}};
-  j["spin"] = spin;
-  j["growth_rates"] = {{"roll", spinning.roll_growth}, {"pitch", spinning.pitch_growth}};
-  j["first_order_growth_per_spin"] = {{"roll", first.roll}, {"pitch", first.pitch}};
-  nlohmann::json eigenvalues = nlohmann::json::array();
-  for (const auto& lambda : spinning.eigenvalues) eigenvalues.push_back({lambda.real(), lambda.imag()});
-  j["eigenvalues"] = eigenvalues;
-  j["preferred"] = sim::preferredDirection(model, spin);
-  std::printf("%s\n", j.dump(2).c_str());
-}
 
 void printTheory(const sim::Model& model, double spin) {
   const double unit = model.length_unit;
@@ -118,11 +61,11 @@ void printTheory(const sim::Model& model, double spin) {
   for (const auto& lambda : l.eigenvalues)
     std::printf(" %.4g%+.4gi", clean(lambda.real(), largest), clean(lambda.imag(), largest));
   std::printf("\n");
-  const char* preferred = sim::preferredDirection(model, spin);
+  const sim::Direction preferred = sim::preferredDirection(model, spin);
   std::printf("preferred        %s (%s seen from above); spun the other way it is predicted to "
               "reverse\n",
-              preferred, preferred[0] == 'c' && preferred[1] == 'c' ? "counter-clockwise"
-                                                                      : "clockwise");
+              std::string(rb::nameOf(preferred)).c_str(),
+              preferred == sim::Direction::Ccw ? "counter-clockwise" : "clockwise");
 }
 
 void printText(const std::string& scene, const sim::Model& model) {
@@ -140,7 +83,7 @@ void printText(const std::string& scene, const sim::Model& model) {
     std::printf("points           %zu drawn on the surface (%zu top, %zu bottom); the mass "
                 "properties are the scene's\n",
                 top + bottom, top, bottom);
-  std::printf("mass properties  %s\n", massSourceText(*model.body).c_str());
+  std::printf("mass properties  %s\n", tasks::massSourceText(*model.body).c_str());
   std::printf("mass             %g kg\n", m.mass);
   const Eigen::Vector3d com = clean(m.com, model.body->surface.footprintHalf().maxCoeff()) / unit;
   std::printf("centre of mass   (%.6g, %.6g, %.6g) in the shape's frame\n", com.x(), com.y(),
@@ -192,9 +135,9 @@ int analyzeCommand(const AnalyzeArgs& args) {
     return kBadInput;
   }
   const sim::Model& model = loaded->model;
-  const double spin = spinFor(model, args.spin);
+  const double spin = tasks::analysisSpin(model, args.spin);
   if (args.json) {
-    printJson(model, spin);
+    std::printf("%s\n", tasks::analysisJson(model, spin).dump(2).c_str());
   } else {
     printText(args.scene, model);
     printTheory(model, spin);

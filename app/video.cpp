@@ -175,12 +175,11 @@ void sideBySide(const render::Image& a, const render::Image& b, render::Image& o
 // the other "reversed". A note says when the runs disagree with the prediction.
 std::array<std::string, 2> bothNames(const std::vector<sim::Rollout>& runs) {
   const sim::Model& model = runs[0].model();
-  const bool ccw_preferred =
-      std::string(sim::preferredDirection(model, model.initial.spin)) == "ccw";
+  const sim::Direction preferred_direction = sim::preferredDirection(model, model.initial.spin);
   std::array<std::string, 2> names;
   for (int i = 0; i < 2; ++i) {
     const double spin = runs[i].model().initial.spin;
-    const bool preferred = (spin > 0) == ccw_preferred;
+    const bool preferred = sim::turns(preferred_direction, spin);
     names[i] = preferred ? "preferred" : "reversed";
     if (preferred == runs[i].summary().first_reversal_s.has_value())
       std::cerr << "note: spun " << spin << " rad/s the body "

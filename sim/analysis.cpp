@@ -140,12 +140,12 @@ FirstOrder firstOrderGrowth(const Model& model) {
           (up.pitch_growth - down.pitch_growth) / (2 * n)};
 }
 
-const char* preferredDirection(const Model& model, double spin_magnitude) {
+Direction preferredDirection(const Model& model, double spin_magnitude) {
   const double n = std::max(std::abs(spin_magnitude), 1e-3);
   const Linearisation ccw = linearise(model, n), cw = linearise(model, -n);
   const double ccw_fastest = std::max(ccw.roll_growth, ccw.pitch_growth);
   const double cw_fastest = std::max(cw.roll_growth, cw.pitch_growth);
-  return ccw_fastest < cw_fastest ? "ccw" : "cw";
+  return ccw_fastest < cw_fastest ? Direction::Ccw : Direction::Cw;
 }
 
 }  // namespace sim

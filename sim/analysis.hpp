@@ -36,7 +36,29 @@ struct FirstOrder {
 };
 FirstOrder firstOrderGrowth(const Model& model);
 
-/// "ccw" or "cw": the direction of spin (at |spin|) whose fastest mode grows more slowly.
-const char* preferredDirection(const Model& model, double spin_magnitude);
+/// A direction of spin seen from above.
+enum class Direction {
+  Ccw,  ///< counter-clockwise: n > 0
+  Cw,   ///< clockwise: n < 0
+};
+
+/// The direction of spin (at |spin|) whose fastest mode grows more slowly: the one that keeps
+/// turning; spun the other way the body is predicted to reverse.
+Direction preferredDirection(const Model& model, double spin_magnitude);
+
+/// Whether a spin n (rad/s) turns in `direction`.
+inline bool turns(Direction direction, double spin) {
+  return direction == Direction::Ccw ? spin > 0 : spin < 0;
+}
 
 }  // namespace sim
+
+namespace rb {
+template <>
+struct NameTable<sim::Direction> {
+  static constexpr std::array<std::pair<sim::Direction, std::string_view>, 2> entries{{
+      {sim::Direction::Ccw, "ccw"},
+      {sim::Direction::Cw, "cw"},
+  }};
+};
+}  // namespace rb

@@ -206,9 +206,9 @@ TEST(Theory, RestStability) {
 TEST(Theory, DentsSetThePreferredDirection) {
   sim::SceneSpec spec = parse(kRollingScene);
   spec.body.grid = {0.05, 0.05, 0.05};
-  EXPECT_STREQ(sim::preferredDirection(build(spec), 5), "ccw");
+  EXPECT_EQ(sim::preferredDirection(build(spec), 5), sim::Direction::Ccw);
   spec.body.dents->at[0] *= -1;
-  EXPECT_STREQ(sim::preferredDirection(build(spec), 5), "cw");
+  EXPECT_EQ(sim::preferredDirection(build(spec), 5), sim::Direction::Cw);
   spec.initial.spin = 5;  // the mirrored body reverses when spun counter-clockwise
   spec.simulation.duration = 4;
   EXPECT_TRUE(runScene(spec, 100).summary.first_reversal_s.has_value());
@@ -256,7 +256,7 @@ TEST(Ellipsoid, ProductOfInertiaSetsThePreferredDirection) {
   const sim::Model model = build(spec);
   EXPECT_NEAR(model.body->mass_properties.misalignment_deg,
               0.5 * std::atan2(2 * -2e-5, 1.6e-3 - 2e-4) * 180 / M_PI, 1e-9);
-  EXPECT_STREQ(sim::preferredDirection(model, 5), "cw");
+  EXPECT_EQ(sim::preferredDirection(model, 5), sim::Direction::Cw);
   const SceneRun ccw = runScene(spec, 100);
   ASSERT_TRUE(ccw.summary.first_reversal_s.has_value());
   double worst = 0;
@@ -265,7 +265,7 @@ TEST(Ellipsoid, ProductOfInertiaSetsThePreferredDirection) {
   spec.initial.spin = -5;
   EXPECT_FALSE(runScene(spec, 100).summary.first_reversal_s.has_value());
   spec.body.inertia[0][1] = spec.body.inertia[1][0] = 2e-5;
-  EXPECT_STREQ(sim::preferredDirection(build(spec), 5), "ccw");
+  EXPECT_EQ(sim::preferredDirection(build(spec), 5), sim::Direction::Ccw);
   EXPECT_TRUE(runScene(spec, 100).summary.first_reversal_s.has_value());
 }
 

@@ -1,0 +1,79 @@
+#include "tasks/analysis.hpp"
+
+#include <cmath>
+
+#include "sim/analysis.hpp"
+#include "sim/stability.hpp"
+
+namespace tasks {
+namespace {
+
+nlohmann::json vectorJson(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+nlohmann::json matrixJson(const Eigen::Matrix3d& m) {
+  return {vectorJson(m.row(0)), vectorJson(m.row(1)), vectorJson(m.row(2))};
+}
+
+// A value that is zero but for rounding (a symmetric body's CM at −8.5e−18 m) is 0.
+double clean(double v, double scale) { return std::abs(v) < 1e-12 * scale ? 0.0 : v; }
+
+Eigen::Vector3d clean(const Eigen::Vector3d& v, double scale) {
+  return {clean(v.x(), scale), clean(v.y(), scale), clean(v.z(), scale)};
+}
+
+}  // namespace
+
+// Where the mass properties came from (body.mass_properties), as analyze reports it.
+std::string massSourceText(const sim::Body& body) {
+  if (body.surface.kind != sim::Surface::Kind::Paraboloid) return "scene";
+  if (body.mass_source == sim::MassSource::Grid) return "grid";
+  return body.mass_by_cubature ? "continuum (cubature)" : "continuum (closed form)";
+}
+
+double analysisSpin(const sim::Model& model, const std::optional<double>& spin) {
+  if (spin) return *spin;
+  return model.initial.spin != 0 ? model.initial.spin : 5.0;
+}
+
+nlohmann::json analysisJson(const sim::Model& model, double spin) {
+  const sim::Body& body = *model.body;
+  const sim::MassProperties& m = body.mass_properties;
+  const sim::Rest rest = sim::restOf(model);
+  const sim::Linearisation at_rest = sim::linearise(model, 0);
+  const sim::Linearisation spinning = sim::linearise(model, spin);
+  const sim::FirstOrder first = sim::firstOrderGrowth(model);
+  const sim::ContactStability stability = sim::contactStability(model);
+  const double size = body.surface.footprintHalf().maxCoeff();
+  const std::size_t top = body.top.size(), bottom = body.bottom.size();
+  nlohmann::json j;
+  const bool grid = body.surface.kind == sim::Surface::Kind::Paraboloid;
+  j["points"] = {{"total", grid ? nlohmann::json(m.points) : nlohmann::json(nullptr)},
+                 {"top", top},
+                 {"bottom", bottom},
+                 {"surface", top + bottom}};
+  j["mass_properties"] = massSourceText(body);
+  j["length_unit_m"] = model.length_unit;
+  j["mass"] = m.mass;
+  j["com"] = vectorJson(clean(m.com, size));
+  j["inertia"] = matrixJson(m.inertia);
+  j["principal_moments"] = vectorJson(m.principal);
+  j["principal_axes"] = matrixJson(m.axes.transpose());
+  j["misalignment_deg"] = m.misalignment_deg;
+  j["contact"] = {{"omega_rad_s", stability.omega},
+                  {"damping_ratio", stability.zeta},
+                  {"largest_stable_dt_s", stability.largest_step}};  // inf → null
+  j["h"] = rest.h;
+  j["radii_of_curvature"] = {rest.radii(0), rest.radii(1)};
+  j["rest_stable"] = rest.stable;
+  j["frequencies_hz"] = {{"roll", at_rest.roll_hz}, {"pitch", at_rest.pitch_hz}};
+  j["spin"] = spin;
+  j["growth_rates"] = {{"roll", spinning.roll_growth}, {"pitch", spinning.pitch_growth}};
+  j["first_order_growth_per_spin"] = {{"roll", first.roll}, {"pitch", first.pitch}};
+  nlohmann::json eigenvalues = nlohmann::json::array();
+  for (const auto& lambda : spinning.eigenvalues) eigenvalues.push_back({lambda.real(), lambda.imag()});
+  j["eigenvalues"] = eigenvalues;
+  j["preferred"] = std::string(rb::nameOf(sim::preferredDirection(model, spin)));
+  return j;
+}
+
+}  // namespace tasks

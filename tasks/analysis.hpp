@@ -1,0 +1,24 @@
+// What `analyze` finds about a scene, as one JSON value: mass properties, rest, contact limits,
+// the linearised theory and the preferred direction (README "analyze --json"). The command
+// prints it; Python's analyze() returns it as a dict.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "sim/body.hpp"
+#include "sim/model.hpp"
+
+namespace tasks {
+
+/// The spin the theory is evaluated at: `spin` when given, else the scene's, else 5 rad/s.
+double analysisSpin(const sim::Model& model, const std::optional<double>& spin);
+
+/// Where the mass properties came from (body.mass_properties): scene, grid or continuum.
+std::string massSourceText(const sim::Body& body);
+
+/// The analysis at `spin` rad/s.
+nlohmann::json analysisJson(const sim::Model& model, double spin);
+
+}  // namespace tasks
