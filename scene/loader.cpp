@@ -1,4 +1,5 @@
 #include "scene/loader.hpp"
+#include "scene/key_path.hpp"
 #include "scene/tree.hpp"
 #include "sim/model.hpp"
 
@@ -290,6 +291,21 @@ std::string format(const std::string& file, int line, const std::string& key,
   return printable(s.str());
 }
 
+// An error in a scene: one line naming file, line and key, and the same three apart.
+rb::Error located(const std::string& file, int line, const std::string& key,
+                  const std::string& message) {
+  rb::Error e{"", format(file, line, key, message)};
+  e.where = rb::Error::Where{file, line, key};
+  return e;
+}
+
+rb::Error malformed(const std::string& name, const YAML::Exception& e) {
+  const int line = e.mark.is_null() ? 1 : e.mark.line + 1;
+  rb::Error error{"", printable(name + ":" + std::to_string(line) + ": malformed YAML: " + e.msg)};
+  error.where = rb::Error::Where{name, line, ""};
+  return error;
+}
+
 }  // namespace
 
 rb::Result<Loaded> loadTree(const YAML::Node& root_node, const std::string& name,
@@ -310,12 +326,14 @@ rb::Result<Loaded> loadTree(const YAML::Node& root_node, const std::string& name
   } catch (const Failure& f) {
     // A key set from elsewhere (a sweep's axis) is named where it was set.
     for (const auto& [key, place] : places)
-      if (f.key == key || f.key.rfind(key + ".", 0) == 0)
-        return rb::Error{"", printable(place + ": " + f.key + " " + f.message)};
-    return rb::Error{"", format(name, f.line, f.key, f.message)};
+      if (f.key == key || f.key.rfind(key + ".", 0) == 0) {
+        rb::Error e{"", printable(place + ": " + f.key + " " + f.message)};
+        e.where = rb::Error::Where{place, 0, f.key};
+        return e;
+      }
+    return located(name, f.line, f.key, f.message);
   } catch (const YAML::Exception& e) {
-    const int line = e.mark.is_null() ? 1 : e.mark.line + 1;
-    return rb::Error{"", printable(name + ":" + std::to_string(line) + ": malformed YAML: " + e.msg)};
+    return malformed(name, e);
   }
   return out;
 }
@@ -325,11 +343,48 @@ rb::Result<Loaded> loadString(const std::string& yaml, const std::string& name) 
   try {
     root = YAML::Load(yaml);
   } catch (const YAML::Exception& e) {
-    // Syntax errors: yaml-cpp knows the line but no key.
-    const int line = e.mark.is_null() ? 1 : e.mark.line + 1;
-    return rb::Error{"", printable(name + ":" + std::to_string(line) + ": malformed YAML: " + e.msg)};
+    return malformed(name, e);  // syntax errors: yaml-cpp knows the line but no key
   }
   return loadTree(root, name, {});
+}
+
+rb::Result<Loaded> loadWithValues(const std::string& yaml, const std::string& name,
+                                  const std::vector<KeyValue>& values, const std::string& place) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml);
+  } catch (const YAML::Exception& e) {
+    return malformed(name, e);
+  }
+  if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+  std::map<std::string, std::string> places;
+  for (const KeyValue& kv : values) {
+    auto fail = [&](const std::string& message) {
+      rb::Error e{"", printable(place + ": " + kv.key + " " + message)};
+      e.where = rb::Error::Where{place, 0, kv.key};
+      return e;
+    };
+    const auto path = splitKey(kv.key);
+    if (!path)
+      return fail("is not a scene key: give dotted keys such as initial.spin or "
+                  "body.dents.at[0]");
+    if (!root.IsMap()) return fail("cannot be set: the scene is not a map of keys");
+    YAML::Node value;
+    try {
+      value = YAML::Load(kv.yaml);
+    } catch (const YAML::Exception& e) {
+      return fail("has a malformed value: " + e.msg);
+    }
+    if (path->index) {
+      const YAML::Node list = find(root, *path);
+      if (!list.IsSequence() || list.size() <= *path->index)
+        return fail("names element " + std::to_string(*path->index) + " of " +
+                    withoutIndex(kv.key) + ", which the scene does not have");
+    }
+    put(root, *path, 0, value);
+    places[withoutIndex(kv.key)] = place;
+  }
+  return loadTree(root, name, places);
 }
 
 rb::Result<Loaded> loadFile(const std::string& path) {
@@ -347,26 +402,32 @@ rb::Result<Loaded> loadFile(const std::string& path) {
   return loadString(text.str(), path);
 }
 
-std::string describe(const Loaded& loaded, const rb::Error& error) {
+rb::Error locate(const Loaded& loaded, const rb::Error& error) {
   if (auto it = loaded.overrides.find(error.key); it != loaded.overrides.end()) {
     // An option (--fps) is named alone, not with the key it sets; a sweep's line with it.
     const bool option = it->second.rfind("--", 0) == 0;
-    return printable(it->second + ": " + (option ? "" : error.key + " ") + error.message);
+    rb::Error e{"", printable(it->second + ": " + (option ? "" : error.key + " ") + error.message)};
+    e.where = rb::Error::Where{it->second, 0, error.key};
+    return e;
   }
   // The key's own line, else the nearest enclosing key that the file has.
   std::string key = error.key;
   while (!key.empty()) {
     if (auto it = loaded.lines.find(key); it != loaded.lines.end())
-      return format(loaded.file, it->second, error.key, error.message);
+      return located(loaded.file, it->second, error.key, error.message);
     const auto dot = key.rfind('.');
     key = dot == std::string::npos ? "" : key.substr(0, dot);
   }
-  return format(loaded.file, 1, error.key, error.message);
+  return located(loaded.file, 1, error.key, error.message);
+}
+
+std::string describe(const Loaded& loaded, const rb::Error& error) {
+  return locate(loaded, error).message;
 }
 
 rb::Result<sim::Model> loadModel(const Loaded& loaded) {
   auto compiled = sim::compile(loaded.spec);
-  if (!compiled) return rb::Error{"", describe(loaded, compiled.error())};
+  if (!compiled) return locate(loaded, compiled.error());
   return std::move(compiled).value();
 }
 

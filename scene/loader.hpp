@@ -6,6 +6,7 @@
 #include <set>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "sim/compile.hpp"
 #include "sim/spec.hpp"
@@ -42,6 +43,20 @@ rb::Result<Loaded> loadString(const std::string& yaml, const std::string& name);
 /// "file:line: key message" for an error found in a loaded scene (by compile() or a video
 /// check); a key set from the command line is named by its option instead.
 std::string describe(const Loaded& loaded, const rb::Error& error);
+/// The same line as an error whose `where` holds the file (or option), line and key.
+rb::Error locate(const Loaded& loaded, const rb::Error& error);
+
+/// A value for a dotted scene key ("initial.spin", "body.dents.at[1]"), as YAML flow text
+/// ("-5", "[0.5, 0.5]", "rk4").
+struct KeyValue {
+  std::string key;
+  std::string yaml;
+};
+
+/// As loadString, with each value put at its key first; an error in one of them names `place`
+/// ("with_values") and the key.
+rb::Result<Loaded> loadWithValues(const std::string& yaml, const std::string& name,
+                                  const std::vector<KeyValue>& values, const std::string& place);
 
 /// compile() of a loaded scene, with any error as one line.
 rb::Result<sim::Model> loadModel(const Loaded& loaded);

@@ -9,6 +9,7 @@
 #include <mutex>
 #include <set>
 
+#include "scene/key_path.hpp"
 #include "scene/tree.hpp"
 
 namespace scene {
@@ -21,70 +22,6 @@ struct Failure {
 };
 
 int lineOf(const YAML::Node& node) { return node.Mark().is_null() ? 1 : node.Mark().line + 1; }
-
-// A key split into its dotted parts and an optional list index: "body.dents.at[1]" →
-// {body, dents, at}, 1.
-struct KeyPath {
-  std::vector<std::string> parts;
-  std::optional<std::size_t> index;
-};
-
-std::optional<KeyPath> splitKey(const std::string& key) {
-  KeyPath path;
-  std::string name = key;
-  if (!name.empty() && name.back() == ']') {
-    const auto open = name.rfind('[');
-    if (open == std::string::npos) return std::nullopt;
-    const std::string digits = name.substr(open + 1, name.size() - open - 2);
-    if (digits.empty() || digits.size() > 3 ||
-        digits.find_first_not_of("0123456789") != std::string::npos)
-      return std::nullopt;
-    path.index = std::stoul(digits);
-    name = name.substr(0, open);
-  }
-  std::size_t start = 0;
-  while (true) {
-    const auto dot = name.find('.', start);
-    const std::string part = name.substr(start, dot == std::string::npos ? dot : dot - start);
-    if (part.empty()) return std::nullopt;
-    path.parts.push_back(part);
-    if (dot == std::string::npos) break;
-    start = dot + 1;
-  }
-  return path;
-}
-
-std::string withoutIndex(const std::string& key) {
-  const auto open = key.rfind('[');
-  return key.back() == ']' && open != std::string::npos ? key.substr(0, open) : key;
-}
-
-// Puts `value` at `path` in `node`, making the maps on the way when they are missing. The
-// caller has checked that an indexed list exists and is long enough.
-void put(YAML::Node node, const KeyPath& path, std::size_t depth, const YAML::Node& value) {
-  const std::string& part = path.parts[depth];
-  if (depth + 1 == path.parts.size()) {
-    if (path.index)
-      node[part][*path.index] = value;
-    else
-      node[part] = value;
-    return;
-  }
-  if (!node[part].IsMap()) node[part] = YAML::Node(YAML::NodeType::Map);
-  put(node[part], path, depth + 1, value);
-}
-
-// The node at `path` without its index, or an undefined node.
-YAML::Node find(const YAML::Node& root, const KeyPath& path) {
-  YAML::Node node = YAML::Clone(root);
-  for (const std::string& part : path.parts) {
-    if (!node.IsMap()) return YAML::Node(YAML::NodeType::Undefined);
-    YAML::Node child = node[part];
-    if (!child.IsDefined()) return child;
-    node.reset(child);
-  }
-  return node;
-}
 
 std::string flowText(const YAML::Node& node) {
   if (node.IsScalar()) return node.Scalar();

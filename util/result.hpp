@@ -15,6 +15,14 @@ namespace rb {
 struct Error {
   std::string key;
   std::string message;
+  /// For an error in a scene: the file (or the option, or "with_values"), its 1-based line (0
+  /// when not in a file) and the dotted key, when known. `message` already names them.
+  struct Where {
+    std::string file;
+    int line = 0;
+    std::string key;
+  };
+  std::optional<Where> where = std::nullopt;
   /// "key message", or the message alone.
   std::string text() const { return key.empty() ? message : key + " " + message; }
 };
