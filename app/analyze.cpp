@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "app/commands.hpp"
-#include "app/scene_args.hpp"
+#include "tasks/scene_args.hpp"
 #include "tasks/analysis.hpp"
 #include "sim/analysis.hpp"
 #include "sim/stability.hpp"

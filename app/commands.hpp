@@ -5,9 +5,14 @@
 #include <string>
 #include <vector>
 
-#include "app/scene_args.hpp"
+#include "tasks/scene_args.hpp"
 
 namespace app {
+
+using tasks::Overrides;
+using tasks::loadScene;
+using tasks::describeModel;
+using tasks::parseSize;
 
 /// Exit statuses (README "Exit codes").
 enum Exit : int {
@@ -16,6 +21,15 @@ enum Exit : int {
   kDiverged = 3,  ///< the run stopped itself (NaN, energy, rim); its partial output was removed
   // 130 / 143: interrupted by SIGINT / SIGTERM (app/interrupt.hpp)
 };
+
+/// Prints the error's one line on standard error; returns kBadInput. The one place a command's
+/// bad input is reported.
+int fail(const rb::Error& error);
+inline int fail(const rb::Status& status) { return fail(status.error()); }
+template <typename T>
+int fail(const rb::Result<T>& result) {
+  return fail(result.error());
+}
 
 struct SimulateArgs {
   std::string scene;

@@ -5,6 +5,9 @@
 #include <atomic>
 #include <csignal>
 
+#include <iostream>
+
+#include "app/commands.hpp"
 #include "tasks/output.hpp"
 
 namespace app {
@@ -32,5 +35,14 @@ void installInterruptHandlers() {
 int interruptSignal() { return received.load(); }
 
 int interruptedStatus() { return 128 + received.load(); }
+
+}  // namespace app
+
+namespace app {
+
+int fail(const rb::Error& error) {
+  std::cerr << error.text() << "\n";
+  return kBadInput;
+}
 
 }  // namespace app

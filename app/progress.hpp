@@ -11,6 +11,7 @@ class Progress {
  public:
   Progress(std::string label, std::int64_t total, bool enabled);
   void update(std::int64_t done);
+  void setTotal(std::int64_t total) { total_ = total; }
   void finish();
 
  private:

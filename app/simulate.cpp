@@ -12,7 +12,7 @@
 #include "tasks/output.hpp"
 #include "app/plot.hpp"
 #include "app/progress.hpp"
-#include "app/scene_args.hpp"
+#include "tasks/scene_args.hpp"
 #include "sim/rollout.hpp"
 #include "tasks/simulate.hpp"
 

@@ -17,9 +17,9 @@
 #include <thread>
 
 #include "app/commands.hpp"
-#include "app/frames.hpp"
-#include "app/scene_args.hpp"
-#include "app/video_plan.hpp"
+#include "media/frames.hpp"
+#include "tasks/scene_args.hpp"
+#include "media/video_plan.hpp"
 #include "render/encoder.hpp"
 #include "render/renderer.hpp"
 #include "sim/rollout.hpp"
@@ -57,31 +57,31 @@ int main(int argc, char** argv) {
               "e2e cpu", "bound");
   for (render::Backend backend : {render::Backend::Egl, render::Backend::OsMesa})
   for (auto [w, h] : {std::pair{1280, 720}, std::pair{1920, 1080}}) {
-    app::Overrides o;
+    tasks::Overrides o;
     o.size = std::array<int, 2>{w, h};
-    auto loaded = app::loadScene(scene, o);
+    auto loaded = tasks::loadScene(scene, o);
     if (!loaded) {
       std::fprintf(stderr, "%s\n", loaded.error().text().c_str());
       return 2;
     }
     const sim::Model& model = loaded->model;
-    auto planned = app::planVideo(loaded->scene, model.duration);
+    auto planned = media::planVideo(loaded->scene, model.duration);
     if (!planned) {
       std::fprintf(stderr, "%s\n", planned.error().text().c_str());
       return 2;
     }
-    const app::VideoPlan& plan = planned.value();
+    const media::VideoPlan& plan = planned.value();
 
     // The poses of the first `frames` video frames.
     std::vector<render::FrameInput> poses;
     std::vector<std::array<float, 2>> history;
     history.reserve(frames);
     sim::Rollout run(model);
-    const render::Framing framing = app::framingOf(run.summary().first, app::bodyPointsOf(model));
+    const render::Framing framing = media::framingOf(run.summary().first, media::bodyPointsOf(model));
     for (int k = 0; k < frames && run.advanceTo(plan.frameTime(k)); ++k) {
       const sim::Telemetry sample = run.sampleAt(plan.frameTime(k));
       history.push_back({static_cast<float>(sample.t), static_cast<float>(sample.spin)});
-      poses.push_back(app::frameOf(sample));
+      poses.push_back(media::frameOf(sample));
       poses.back().framing = framing;
       poses.back().history = std::span(history.data(), history.size());
     }
@@ -92,7 +92,7 @@ int main(int argc, char** argv) {
     settings.duration = model.duration;
     settings.spin_range = 5.5;
     settings.backend = backend;
-    auto created = render::Renderer::create(settings, app::bodyPointsOf(model));
+    auto created = render::Renderer::create(settings, media::bodyPointsOf(model));
     if (!created) {
       std::fprintf(stderr, "%s\n", created.error().text().c_str());
       return 2;

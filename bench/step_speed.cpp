@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <fstream>
 
-#include "app/scene_args.hpp"
+#include "tasks/scene_args.hpp"
 #include "scene/sweep.hpp"
 #include "sim/initial.hpp"
 #include "sim/rollout.hpp"
@@ -16,9 +16,9 @@ namespace {
 
 void stepScene(benchmark::State& state, const char* scene, const char* model,
                const char* integrator) {
-  app::Overrides o;
+  tasks::Overrides o;
   o.integrator = integrator;
-  auto loaded = app::loadScene(std::string(RATTLEBACK_SOURCE_DIR "/scenes/") + scene, o);
+  auto loaded = tasks::loadScene(std::string(RATTLEBACK_SOURCE_DIR "/scenes/") + scene, o);
   if (!loaded) {
     state.SkipWithError(loaded.error().text().c_str());
     return;
@@ -45,7 +45,7 @@ BENCHMARK_CAPTURE(stepScene, ellipsoid_rolling_rk4, "kane-levinson.yaml", "rolli
 // Preparing another run of a compiled body (issue: ≤ 0.05 ms): a copy of the per-run value
 // (the body is shared, not copied) and its initial state.
 void prepareRun(benchmark::State& state, const char* scene) {
-  auto loaded = app::loadScene(std::string(RATTLEBACK_SOURCE_DIR "/scenes/") + scene, {});
+  auto loaded = tasks::loadScene(std::string(RATTLEBACK_SOURCE_DIR "/scenes/") + scene, {});
   if (!loaded) {
     state.SkipWithError(loaded.error().text().c_str());
     return;

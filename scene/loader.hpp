@@ -14,6 +14,9 @@
 
 namespace scene {
 
+/// The largest frame rate accepted, frames per second of video.
+inline constexpr int kMaxFps = 240;
+
 /// The scene file's `video` section, as written: read only by the commands that draw
 /// (render, still), which check it (app/video_plan). Simulating never looks at it.
 struct VideoSpec {

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "app/video_plan.hpp"
+#include "media/video_plan.hpp"
 #include "support.hpp"
 
 using namespace testing_support;
@@ -153,7 +153,7 @@ std::string errorFor(const std::string& yaml) {
   if (!loaded) return loaded.error().text();
   auto model = scene::loadModel(loaded.value());
   if (!model) return model.error().text();
-  auto plan = app::planVideo(loaded.value(), model->duration);
+  auto plan = media::planVideo(loaded.value(), model->duration);
   if (!plan) return plan.error().text();
   return "";
 }

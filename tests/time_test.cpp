@@ -7,7 +7,7 @@
 #include <cmath>
 #include <vector>
 
-#include "app/spin_history.hpp"
+#include "media/spin_history.hpp"
 #include "sim/crossing.hpp"
 #include "support.hpp"
 
@@ -293,7 +293,7 @@ TEST(Reversal, TheCrossingIsExactForKnownSignals) {
   EXPECT_EQ(sim::zeroCrossing(sine, 0.0, 1.0, 0.0, sine(1.0)), 0.0);
 }
 
-// The inset's spin so far (app::SpinHistory): for the default body over 3 s in a 320-wide
+// The inset's spin so far (media::SpinHistory): for the default body over 3 s in a 320-wide
 // image (96 columns of 31.25 ms, sampled every 4.46 ms), every sample lies within its column's
 // kept extremes, the kept points are the run's own spin at their times, in time order, at
 // most two a column; and the history built frame by frame (render) equals the one built in
@@ -302,7 +302,7 @@ TEST(SpinHistory, KeepsEachColumnsExtremesAndIsTheSameFrameByFrame) {
   const sim::Model model = build(parse(kRolling));
   const double drawn = 2.5;
   sim::Rollout whole(model);
-  app::SpinHistory at_once(model.duration, 320);
+  media::SpinHistory at_once(model.duration, 320);
   ASSERT_TRUE(at_once.advanceTo(whole, drawn));
   ASSERT_TRUE(whole.advanceTo(drawn));
   const sim::Telemetry now = whole.sampleAt(drawn);
@@ -310,7 +310,7 @@ TEST(SpinHistory, KeepsEachColumnsExtremesAndIsTheSameFrameByFrame) {
   const std::vector<std::array<float, 2>> kept(span.begin(), span.end());
 
   sim::Rollout framed(model);
-  app::SpinHistory by_frame(model.duration, 320);
+  media::SpinHistory by_frame(model.duration, 320);
   for (int k = 0; k / 30.0 < drawn; ++k) {  // 30 fps
     ASSERT_TRUE(by_frame.advanceTo(framed, k / 30.0));
     ASSERT_TRUE(framed.advanceTo(k / 30.0));

@@ -3,13 +3,14 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
 #include "sim/rollout.hpp"
 #include "sim/telemetry.hpp"
 
-namespace app {
+namespace media {
 
 /// The spin so far that the inset draws, as the least and the greatest spin in each of the
 /// inset's pixel columns (three tenths of the image's width over the run's duration; in the
@@ -22,8 +23,8 @@ class SpinHistory {
  public:
   SpinHistory(double duration, int image_width);
   /// Advances `run` through the sample times before t, keeping each column's extremes; false
-  /// when the run stops first or a signal asks the command to stop (interruptSignal).
-  bool advanceTo(sim::Rollout& run, double t);
+  /// when the run stops first or `cancelled` (when given) says to stop.
+  bool advanceTo(sim::Rollout& run, double t, const std::function<bool()>& cancelled = {});
   /// The history drawn at `now.t`: the extremes of the columns so far, then `now`.
   std::span<const std::array<float, 2>> with(const sim::Telemetry& now);
 
@@ -39,4 +40,4 @@ class SpinHistory {
   std::vector<Point> samples_;
 };
 
-}  // namespace app
+}  // namespace media

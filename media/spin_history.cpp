@@ -1,11 +1,10 @@
-#include "app/spin_history.hpp"
+#include "media/spin_history.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "app/interrupt.hpp"
 
-namespace app {
+namespace media {
 
 SpinHistory::SpinHistory(double duration, int image_width) {
   constexpr double kLongestStep = 0.005;  // s: 200 samples a second, 10 of a 20 Hz wobble
@@ -24,11 +23,11 @@ void SpinHistory::appendOpenColumn() {
   }
 }
 
-bool SpinHistory::advanceTo(sim::Rollout& run, double t) {
+bool SpinHistory::advanceTo(sim::Rollout& run, double t, const std::function<bool()>& cancelled) {
   samples_.resize(closed_);
   for (double at = static_cast<double>(next_) * step_; at < t;
        at = static_cast<double>(next_) * step_) {
-    if (interruptSignal() || !run.advanceTo(at)) return false;
+    if ((cancelled && cancelled()) || !run.advanceTo(at)) return false;
     const sim::Telemetry sample = run.sampleAt(at);
     const Point point{static_cast<float>(sample.t), static_cast<float>(sample.spin)};
     if (next_ % per_column_ == 0) {
@@ -53,4 +52,4 @@ std::span<const std::array<float, 2>> SpinHistory::with(const sim::Telemetry& no
   return samples_;
 }
 
-}  // namespace app
+}  // namespace media

@@ -5,7 +5,7 @@
 #include "sim/model.hpp"
 #include "sim/telemetry.hpp"
 
-namespace app {
+namespace media {
 
 /// The surface points to draw, thinned to about 2500 on fine grids (see frames.cpp).
 render::BodyPoints bodyPointsOf(const sim::Model& model);
@@ -16,4 +16,4 @@ render::FrameInput frameOf(const sim::Telemetry& t);
 /// wander as it rocks and rolls.
 render::Framing framingOf(const sim::Telemetry& start, const render::BodyPoints& points);
 
-}  // namespace app
+}  // namespace media

@@ -7,7 +7,7 @@
 #include <mutex>
 #include <optional>
 
-namespace app {
+namespace media {
 
 template <typename T>
 class BoundedQueue {
@@ -69,4 +69,4 @@ class BoundedQueue {
   bool closed_ = false;
 };
 
-}  // namespace app
+}  // namespace media

@@ -1,15 +1,18 @@
-#include "app/scene_args.hpp"
-#include "app/video_plan.hpp"
+#include "tasks/scene_args.hpp"
+
 
 #include <cmath>
 #include <cstdio>
 
-namespace app {
+namespace tasks {
 
 rb::Result<LoadedScene> loadScene(const std::string& path, const Overrides& o) {
   auto loaded = scene::loadFile(path);
   if (!loaded) return loaded.error();
-  scene::Loaded& scene = loaded.value();
+  return applyOverrides(std::move(loaded).value(), o);
+}
+
+rb::Result<LoadedScene> applyOverrides(scene::Loaded scene, const Overrides& o) {
   sim::SceneSpec& spec = scene.spec;
   auto set = [&](auto& field, const auto& value, const char* key, const char* option) {
     if (!value) return;
@@ -43,8 +46,8 @@ rb::Result<LoadedScene> loadScene(const std::string& path, const Overrides& o) {
     if (*o.fps != std::floor(*o.fps))  // (NaN too)
       return rb::Error{"", std::string("--fps: must be a whole number of frames per second "
                                        "(24, 25, 30, 60 …), not ") + text};
-    if (*o.fps < 1 || *o.fps > kMaxFps)
-      return rb::Error{"", "--fps: must be within 1 … " + std::to_string(kMaxFps) + ", not " + text};
+    if (*o.fps < 1 || *o.fps > scene::kMaxFps)
+      return rb::Error{"", "--fps: must be within 1 … " + std::to_string(scene::kMaxFps) + ", not " + text};
     scene.video.fps = static_cast<int>(*o.fps);
     scene.overrides["video.fps"] = "--fps";
   }
@@ -78,4 +81,4 @@ bool parseSize(const std::string& text, std::array<int, 2>& size) {
   return true;
 }
 
-}  // namespace app
+}  // namespace tasks

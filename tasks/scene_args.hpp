@@ -10,7 +10,7 @@
 #include "sim/model.hpp"
 #include "util/result.hpp"
 
-namespace app {
+namespace tasks {
 
 struct Overrides {
   std::optional<double> duration, dt, tolerance, playback, spin;
@@ -27,6 +27,8 @@ struct LoadedScene {
 
 /// The compiled scene, or the one line to print.
 rb::Result<LoadedScene> loadScene(const std::string& path, const Overrides& o);
+/// The same for a scene already loaded (from a string, or with values put in).
+rb::Result<LoadedScene> applyOverrides(scene::Loaded scene, const Overrides& o);
 
 /// For --verbose: one line on stderr with the body, contact, integrator and step.
 void describeModel(const sim::Model& model, const std::string& scene);
@@ -34,4 +36,4 @@ void describeModel(const sim::Model& model, const std::string& scene);
 /// Parses "1280x720"; false when malformed.
 bool parseSize(const std::string& text, std::array<int, 2>& size);
 
-}  // namespace app
+}  // namespace tasks

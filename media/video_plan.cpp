@@ -1,12 +1,14 @@
-#include "app/video_plan.hpp"
+#include "media/video_plan.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <utility>
 
 #include "util/format.hpp"
 
-namespace app {
+namespace media {
 namespace {
 
 using rb::show;
@@ -65,4 +67,31 @@ rb::Result<VideoPlan> planVideo(const scene::Loaded& scene, double duration) {
   return plan;
 }
 
-}  // namespace app
+namespace {
+
+std::string describeSpin(double spin) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%+g rad/s, %s", spin,
+                spin > 0 ? "counter-clockwise" : spin < 0 ? "clockwise" : "no spin");
+  return text;
+}
+
+}  // namespace
+
+// The title of a run's frames, the same in its video and its stills: the scene and the spin.
+render::RenderSettings settingsOf(const VideoPlan& plan, double duration, double spin,
+                                  const std::string& scene, render::Backend backend) {
+  const std::string title = std::filesystem::path(scene).stem().string() + ": spun " + describeSpin(spin);
+  render::RenderSettings s;
+  s.backend = backend;
+  s.width = plan.width;
+  s.height = plan.height;
+  s.view = plan.view;
+  s.title = title;
+  s.duration = duration;
+  s.spin_range = std::max(1.0, 1.1 * std::abs(spin));
+  return s;
+}
+
+
+}  // namespace media

@@ -4,15 +4,15 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 #include "render/frame.hpp"
 #include "scene/loader.hpp"
 #include "util/result.hpp"
 
-namespace app {
+namespace media {
 
-/// The largest frame rate accepted, frames per second of video.
-inline constexpr int kMaxFps = 240;
+using scene::kMaxFps;
 
 struct VideoPlan {
   int fps = 30;                  ///< frames per second of video
@@ -30,4 +30,9 @@ struct VideoPlan {
 /// (or the option that set it).
 rb::Result<VideoPlan> planVideo(const scene::Loaded& scene, double duration);
 
-}  // namespace app
+/// The renderer's settings for one run's frames: the plan's size and view, titled with the
+/// scene's name and the spin (the same in its video and its stills).
+render::RenderSettings settingsOf(const VideoPlan& plan, double duration, double spin,
+                                  const std::string& scene, render::Backend backend);
+
+}  // namespace media

@@ -1,9 +1,9 @@
-#include "app/frames.hpp"
+#include "media/frames.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace app {
+namespace media {
 
 // The surface points to draw. A fine grid (the default body has 7664 surface points, 3 px
 // apart on screen) reads as moiré, so columns are thinned to about kDrawnPoints by keeping
@@ -49,4 +49,4 @@ render::Framing framingOf(const sim::Telemetry& start, const render::BodyPoints&
   return framing;
 }
 
-}  // namespace app
+}  // namespace media

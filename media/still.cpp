@@ -1,0 +1,53 @@
+#include "media/still.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "media/frames.hpp"
+#include "media/spin_history.hpp"
+#include "media/video_plan.hpp"
+#include "render/renderer.hpp"
+#include "sim/rollout.hpp"
+
+namespace media {
+
+rb::Result<StillResult> renderStill(const tasks::LoadedScene& loaded, const StillRequest& request) {
+  if (!(request.t >= 0) || !std::isfinite(request.t))
+    return rb::Error{"", "--t must be a time ≥ 0 s"};
+  sim::Model model = loaded.model;
+  // A still may show a time past the scene's duration: the run then goes on to it.
+  model.duration = std::max(model.duration, request.t);
+  auto planned = planVideo(loaded.scene, model.duration);
+  if (!planned) return planned.error();
+  const VideoPlan& plan = planned.value();
+  StillResult result;
+  result.view = plan.view;
+  render::RenderSettings settings =
+      settingsOf(plan, model.duration, model.initial.spin, request.scene_name, request.backend);
+  settings.readouts = request.readouts && !request.transparent;
+  settings.transparent = request.transparent;
+  if (request.transparent) settings.title.clear();
+  const render::BodyPoints points = bodyPointsOf(model);
+  auto created = render::Renderer::create(settings, points);
+  if (!created) return rb::Error{"", "still: " + created.error().text()};
+  result.opengl = created.value()->description();
+  render::Renderer& renderer = *created.value();
+  // Run to the still's time, keeping the spin for the inset as the video would have.
+  sim::Rollout run(model);
+  SpinHistory history(model.duration, plan.width);
+  if (!history.advanceTo(run, request.t, request.cancelled) || !run.advanceTo(request.t)) {
+    result.outcome = tasks::outcomeOf(run.summary());
+    if (result.outcome.ending == tasks::Ending::Completed)
+      result.outcome.ending = tasks::Ending::Interrupted;
+    return result;
+  }
+  const sim::Telemetry sample = run.sampleAt(request.t);
+  render::FrameInput frame = frameOf(sample);
+  frame.framing = framingOf(run.summary().first, points);
+  frame.history = history.with(sample);
+  renderer.draw(frame, result.image);
+  result.outcome.t = request.t;
+  return result;
+}
+
+}  // namespace media

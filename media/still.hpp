@@ -1,0 +1,35 @@
+// One frame of a scene's run at a time t, as an image: what `still` writes as PNG and Python's
+// still() returns as an array.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "render/frame.hpp"
+#include "render/image_io.hpp"
+#include "tasks/outcome.hpp"
+#include "tasks/scene_args.hpp"
+#include "util/result.hpp"
+
+namespace media {
+
+struct StillRequest {
+  std::string scene_name;  ///< the scene's path or name: its stem titles the frame
+  double t = 0;            ///< s; past the scene's duration the run goes on to it
+  bool readouts = true;    ///< title, read-outs and the spin inset
+  bool transparent = false;  ///< alpha: no floor, no background, no read-outs
+  render::Backend backend = render::Backend::Auto;
+  std::function<bool()> cancelled;  ///< asked as the run goes: true stops (may be empty)
+};
+
+struct StillResult {
+  render::Image image;    ///< RGBA; empty unless outcome.ending is Completed
+  tasks::Outcome outcome;
+  std::string opengl;     ///< the OpenGL in use
+  render::View view = render::View::Oblique;
+};
+
+/// Draws the scene's run at request.t with the scene's (or overridden) video settings.
+rb::Result<StillResult> renderStill(const tasks::LoadedScene& loaded, const StillRequest& request);
+
+}  // namespace media

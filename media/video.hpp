@@ -1,0 +1,69 @@
+// Videos of a scene's runs: frames at exact times drawn on a thread of their own and encoded to
+// MP4, one encoding thread per output behind a bounded queue (about 48 MB), so that no run
+// holds its frames in memory. The threads are started and joined within renderVideo().
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "render/frame.hpp"
+#include "tasks/outcome.hpp"
+#include "tasks/scene_args.hpp"
+#include "util/result.hpp"
+
+namespace media {
+
+/// What to make of a loaded scene.
+struct VideoRequest {
+  std::string scene_name;  ///< the scene's path or name: its stem titles the frames
+  /// The .mp4 path; with `both`, the base of BASE-preferred.mp4, BASE-reversed.mp4 and
+  /// BASE-both.mp4 (any .mp4 dropped).
+  std::string output;
+  bool both = false;  ///< also the opposite spin, and the two side by side
+  int crf = 20;       ///< x264 quality 1 … 51
+  std::string preset = "veryfast";
+  render::Backend backend = render::Backend::Auto;
+  std::function<bool()> cancelled;  ///< asked before each frame: true stops (may be empty)
+  /// Called after each frame with the frames done and the total (may be empty).
+  std::function<void(std::int64_t, std::int64_t)> progress;
+};
+
+/// One video written.
+struct VideoFile {
+  std::string path;
+  std::int64_t frames = 0;
+  std::optional<double> spin;              ///< rad/s: the run it shows (none: side by side)
+  std::optional<double> first_reversal_s;  ///< of that run
+};
+
+struct VideoResult {
+  std::vector<VideoFile> files;  ///< empty unless outcome.ending is Completed
+  tasks::Outcome outcome;        ///< a stopped or interrupted run writes no video
+  std::int64_t frames = 0;       ///< frames drawn per run
+  double wall_s = 0;             ///< drawing and encoding, s
+  std::string opengl;            ///< the OpenGL in use
+  /// Where a run disagrees with the predicted preferred direction (with `both`).
+  std::vector<std::string> notes;
+};
+
+/// x264's presets (x264 --fullhelp), for checks and --help.
+const std::vector<std::string>& presets();
+/// crf within 1 … 51 and a known preset; one line naming the option otherwise.
+rb::Status checkEncoderOptions(int crf, const std::string& preset);
+/// An output name whose extension says another format than the one written is refused.
+rb::Status checkExtension(const std::string& output, const std::string& wanted,
+                          const std::string& format, bool base_allowed);
+/// Loads the OpenGL driver behind `backend` on a thread of its own (about 40 ms with
+/// llvmpipe), while the caller loads its scene.
+std::jthread preloadDriver(render::Backend backend);
+
+/// The scene's video(s) as the request says. An error (a bad video section, an encoder or
+/// renderer that fails) is one line; a run that stops or is cancelled is an outcome, with no
+/// video written and no temporary file left.
+rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const VideoRequest& request);
+
+}  // namespace media
