@@ -301,18 +301,27 @@ void GlContext::releaseIfCurrent() {
 
 std::string assetsDir() {
   if (const char* env = std::getenv("RATTLEBACK_ASSETS"); env && *env) return env;
+  // The file this code was linked into: the program, or the Python package's module.
   std::error_code error;
-  const std::filesystem::path exe_dir =
-      std::filesystem::read_symlink("/proc/self/exe", error).parent_path();
+  Dl_info info{};
+  std::filesystem::path self;
+  if (::dladdr(reinterpret_cast<void*>(&assetsDir), &info) != 0 && info.dli_fname &&
+      std::strchr(info.dli_fname, '/'))
+    self = std::filesystem::canonical(info.dli_fname, error);
+  if (self.empty() || error) self = std::filesystem::read_symlink("/proc/self/exe", error);
   if (error) return RATTLEBACK_ASSETS_RELATIVE;
-  // The installed layout (bin/ → share/rattleback, relative so the prefix can move), then the
-  // build tree's copy in <build>/share/rattleback beside <build>/app, <build>/tests, ….
-  const std::filesystem::path candidates[] = {exe_dir / RATTLEBACK_ASSETS_RELATIVE,
-                                              exe_dir / "../share/rattleback"};
-  for (const auto& dir : candidates)
-    if (std::filesystem::is_directory(dir / "shaders", error))
-      return dir.lexically_normal().string();
-  return (exe_dir / RATTLEBACK_ASSETS_RELATIVE).lexically_normal().string();
+  const std::filesystem::path dir = self.parent_path();
+  // The installed layout (bin/ → share/rattleback, relative so the prefix can move), the build
+  // tree's copy in <build>/share/rattleback beside <build>/app, <build>/tests, …, and for the
+  // Python package <build>/python/rattleback or <prefix>/lib/python3/dist-packages/rattleback.
+  const std::filesystem::path candidates[] = {dir / RATTLEBACK_ASSETS_RELATIVE,
+                                              dir / "../share/rattleback",
+                                              dir / "../../share/rattleback",
+                                              dir / "../../../../share/rattleback"};
+  for (const auto& candidate : candidates)
+    if (std::filesystem::is_directory(candidate / "shaders", error))
+      return candidate.lexically_normal().string();
+  return (dir / RATTLEBACK_ASSETS_RELATIVE).lexically_normal().string();
 }
 
 namespace {

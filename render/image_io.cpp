@@ -25,28 +25,25 @@ struct File {
 
 }  // namespace
 
-rb::Status writePng(const std::string& path, const Image& image) {
-  const rb::OutputPlace place = rb::outputPlace(path);
-  const bool special = place.temporary.empty();  // written in place
-  const std::string temp = special ? place.target : place.temporary;
-  auto fail = [&](const std::string& why) -> rb::Status {
-    if (!special) std::remove(temp.c_str());
-    return rb::Status::fail(path + ": " + why);
-  };
-  File file;
-  file.f = std::fopen(temp.c_str(), "wb");
-  if (!file.f) return rb::Status::fail(path + ": cannot write: " + std::strerror(errno));
+rb::Result<std::vector<unsigned char>> encodePng(const Image& image) {
+  std::vector<unsigned char> bytes;
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   if (!info) {
     png_destroy_write_struct(&png, nullptr);
-    return fail("cannot start libpng");
+    return rb::Error{"", "cannot start libpng"};
   }
   if (setjmp(png_jmpbuf(png))) {
     png_destroy_write_struct(&png, &info);
-    return fail("writing failed");
+    return rb::Error{"", "encoding PNG failed"};
   }
-  png_init_io(png, file.f);
+  png_set_write_fn(
+      png, &bytes,
+      [](png_structp p, png_bytep data, png_size_t size) {
+        auto* out = static_cast<std::vector<unsigned char>*>(png_get_io_ptr(p));
+        out->insert(out->end(), data, data + size);
+      },
+      [](png_structp) {});
   // RGB when every pixel is opaque (a quarter smaller, and what viewers expect of a frame);
   // RGBA only when some alpha says something (still --transparent).
   bool opaque = true;
@@ -60,7 +57,24 @@ rb::Status writePng(const std::string& path, const Image& image) {
     png_write_row(png, &image.rgba[static_cast<std::size_t>(y) * image.width * 4]);
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
-  const bool flushed = std::fflush(file.f) == 0 && !std::ferror(file.f);
+  return bytes;
+}
+
+rb::Status writePng(const std::string& path, const Image& image) {
+  const rb::OutputPlace place = rb::outputPlace(path);
+  const bool special = place.temporary.empty();  // written in place
+  const std::string temp = special ? place.target : place.temporary;
+  auto fail = [&](const std::string& why) -> rb::Status {
+    if (!special) std::remove(temp.c_str());
+    return rb::Status::fail(path + ": " + why);
+  };
+  auto bytes = encodePng(image);
+  if (!bytes) return rb::Status::fail(path + ": " + bytes.error().text());
+  File file;
+  file.f = std::fopen(temp.c_str(), "wb");
+  if (!file.f) return rb::Status::fail(path + ": cannot write: " + std::strerror(errno));
+  const bool written = std::fwrite(bytes->data(), 1, bytes->size(), file.f) == bytes->size();
+  const bool flushed = written && std::fflush(file.f) == 0 && !std::ferror(file.f);
   const int close_status = std::fclose(file.f);
   file.f = nullptr;
   if (!flushed || close_status != 0) return fail(std::string("writing failed: ") + std::strerror(errno));

@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "render/frame.hpp"
 #include "util/result.hpp"
@@ -13,6 +14,8 @@ namespace render {
 /// place to a device: util/output_place.hpp); an error line naming the file when anything
 /// fails (nothing is left behind then).
 rb::Status writePng(const std::string& path, const Image& image);
+/// The image as PNG bytes (RGB when every pixel is opaque, else RGBA).
+rb::Result<std::vector<unsigned char>> encodePng(const Image& image);
 /// Reads a PNG as RGBA; an error line naming the file when it cannot.
 rb::Status readPng(const std::string& path, Image& image);
 

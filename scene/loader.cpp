@@ -387,25 +387,34 @@ rb::Result<Loaded> loadWithValues(const std::string& yaml, const std::string& na
   return loadTree(root, name, places);
 }
 
-rb::Result<Loaded> loadFile(const std::string& path) {
+rb::Result<std::string> readSceneFile(const std::string& path) {
   std::error_code ec;
+  auto fail = [&](const std::string& message) {
+    rb::Error e{"", printable(path) + ": " + message};
+    e.where = rb::Error::Where{path, 0, ""};
+    return e;
+  };
   if (std::filesystem::is_directory(path, ec))
-    return rb::Error{"", printable(path) + ": is a folder, not a scene file (give a .yaml file, "
-                                           "e.g. scenes/rattleback.yaml)"};
+    return fail("is a folder, not a scene file (give a .yaml file, e.g. scenes/rattleback.yaml)");
   std::ifstream in(path, std::ios::binary);
-  if (!in)
-    return rb::Error{"", printable(path) + ": cannot open the scene file: " + std::strerror(errno)};
+  if (!in) return fail(std::string("cannot open the scene file: ") + std::strerror(errno));
   std::ostringstream text;
   text << in.rdbuf();
-  if (in.bad())
-    return rb::Error{"", printable(path) + ": cannot read the scene file: " + std::strerror(errno)};
-  return loadString(text.str(), path);
+  if (in.bad()) return fail(std::string("cannot read the scene file: ") + std::strerror(errno));
+  return text.str();
+}
+
+rb::Result<Loaded> loadFile(const std::string& path) {
+  auto text = readSceneFile(path);
+  if (!text) return text.error();
+  return loadString(text.value(), path);
 }
 
 rb::Error locate(const Loaded& loaded, const rb::Error& error) {
   if (auto it = loaded.overrides.find(error.key); it != loaded.overrides.end()) {
     // An option (--fps) is named alone, not with the key it sets; a sweep's line with it.
-    const bool option = it->second.rfind("--", 0) == 0;
+    const bool option =
+        it->second.rfind("--", 0) == 0 || it->second.rfind("argument ", 0) == 0;
     rb::Error e{"", printable(it->second + ": " + (option ? "" : error.key + " ") + error.message)};
     e.where = rb::Error::Where{it->second, 0, error.key};
     return e;

@@ -40,6 +40,8 @@ struct Loaded {
 /// Errors come back as rb::Error with an empty key and one line, ready to print:
 /// "file:line: key message".
 rb::Result<Loaded> loadFile(const std::string& path);
+/// The text of a scene file, or why it cannot be read (a folder, missing, unreadable).
+rb::Result<std::string> readSceneFile(const std::string& path);
 /// `name` stands for the file in messages.
 rb::Result<Loaded> loadString(const std::string& yaml, const std::string& name);
 

@@ -14,15 +14,18 @@ rb::Result<LoadedScene> loadScene(const std::string& path, const Overrides& o) {
 
 rb::Result<LoadedScene> applyOverrides(scene::Loaded scene, const Overrides& o) {
   sim::SceneSpec& spec = scene.spec;
+  // Each override is named as the front end spells it: "--dt" on the command line,
+  // "argument dt" in Python.
+  auto name = [&](const char* option) { return o.option_prefix + option; };
   auto set = [&](auto& field, const auto& value, const char* key, const char* option) {
     if (!value) return;
     field = *value;
-    scene.overrides[key] = option;
+    scene.overrides[key] = name(option);
   };
-  set(spec.simulation.duration, o.duration, "simulation.duration", "--duration");
+  set(spec.simulation.duration, o.duration, "simulation.duration", "duration");
   if (o.dt && o.tolerance)
-    return rb::Error{"", "--dt and --tolerance: give one, a fixed step or adaptive steps to a "
-                         "tolerance"};
+    return rb::Error{"", name("dt") + " and " + name("tolerance") +
+                             ": give one, a fixed step or adaptive steps to a tolerance"};
   // A step or a tolerance from the command line replaces whichever of the two the file gives.
   if (o.dt) spec.simulation.tolerance = sim::kUnset;
   if (o.tolerance) spec.simulation.dt = sim::kUnset;
@@ -33,23 +36,23 @@ rb::Result<LoadedScene> applyOverrides(scene::Loaded scene, const Overrides& o) 
     if (named && ((o.dt && sim::isAdaptive(*named)) || (o.tolerance && !sim::isAdaptive(*named))))
       spec.simulation.integrator.clear();
   }
-  set(spec.simulation.dt, o.dt, "simulation.dt", "--dt");
-  set(spec.simulation.tolerance, o.tolerance, "simulation.tolerance", "--tolerance");
-  set(spec.simulation.integrator, o.integrator, "simulation.integrator", "--integrator");
-  set(spec.initial.spin, o.spin, "initial.spin", "--spin");
-  set(scene.video.playback, o.playback, "video.playback", "--playback");
-  set(scene.video.view, o.view, "video.view", "--view");
-  set(scene.video.size, o.size, "video.size", "--size");
+  set(spec.simulation.dt, o.dt, "simulation.dt", "dt");
+  set(spec.simulation.tolerance, o.tolerance, "simulation.tolerance", "tolerance");
+  set(spec.simulation.integrator, o.integrator, "simulation.integrator", "integrator");
+  set(spec.initial.spin, o.spin, "initial.spin", "spin");
+  set(scene.video.playback, o.playback, "video.playback", "playback");
+  set(scene.video.view, o.view, "video.view", "view");
+  set(scene.video.size, o.size, "video.size", "size");
   if (o.fps) {
     char text[64];
     std::snprintf(text, sizeof text, "%g", *o.fps);
     if (*o.fps != std::floor(*o.fps))  // (NaN too)
-      return rb::Error{"", std::string("--fps: must be a whole number of frames per second "
-                                       "(24, 25, 30, 60 …), not ") + text};
+      return rb::Error{"", name("fps") + ": must be a whole number of frames per second "
+                                         "(24, 25, 30, 60 …), not " + text};
     if (*o.fps < 1 || *o.fps > scene::kMaxFps)
-      return rb::Error{"", "--fps: must be within 1 … " + std::to_string(scene::kMaxFps) + ", not " + text};
+      return rb::Error{"", name("fps") + ": must be within 1 … " + std::to_string(scene::kMaxFps) + ", not " + text};
     scene.video.fps = static_cast<int>(*o.fps);
-    scene.overrides["video.fps"] = "--fps";
+    scene.overrides["video.fps"] = name("fps");
   }
   auto compiled = scene::loadModel(scene);
   if (!compiled) return compiled.error();

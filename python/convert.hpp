@@ -1,0 +1,110 @@
+// Between the library's values and Python's: JSON values as dicts and lists, errors as the
+// package's exceptions, and long calls that release the GIL and stop on Ctrl-C.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include <atomic>
+#include <chrono>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "util/result.hpp"
+
+namespace pyrb {
+
+namespace py = pybind11;
+
+/// A JSON value as the Python object json.loads would give (null → None).
+inline py::object toPython(const nlohmann::json& j) {
+  switch (j.type()) {
+    case nlohmann::json::value_t::null: return py::none();
+    case nlohmann::json::value_t::boolean: return py::bool_(j.get<bool>());
+    case nlohmann::json::value_t::number_integer: return py::int_(j.get<std::int64_t>());
+    case nlohmann::json::value_t::number_unsigned: return py::int_(j.get<std::uint64_t>());
+    case nlohmann::json::value_t::number_float: return py::float_(j.get<double>());
+    case nlohmann::json::value_t::string: return py::str(j.get<std::string>());
+    case nlohmann::json::value_t::array: {
+      py::list list;
+      for (const auto& e : j) list.append(toPython(e));
+      return list;
+    }
+    case nlohmann::json::value_t::object: {
+      py::dict dict;
+      for (const auto& [k, v] : j.items()) dict[py::str(k)] = toPython(v);
+      return dict;
+    }
+    default: return py::none();
+  }
+}
+
+/// Raises rattleback.SceneError (a ValueError) for an error in a scene, with its file, line
+/// and key; ValueError for any other bad input.
+[[noreturn]] inline void raise(const rb::Error& error) {
+  const std::string message = error.text();
+  if (error.where) {
+    py::object cls = py::module_::import("rattleback._errors").attr("SceneError");
+    py::object line = error.where->line > 0 ? py::object(py::int_(error.where->line)) : py::none();
+    py::object e = cls(message, error.where->file, line,
+                       error.where->key.empty() ? py::object(py::none())
+                                                : py::object(py::str(error.where->key)));
+    PyErr_SetObject(cls.ptr(), e.ptr());
+    throw py::error_already_set();
+  }
+  throw py::value_error(message);
+}
+
+template <typename T>
+T take(rb::Result<T> result) {
+  if (!result) raise(result.error());
+  return std::move(result).value();
+}
+
+/// Runs `work(cancelled)` on a thread of its own with the GIL released, while this thread
+/// checks for signals every 20 ms (PyErr_CheckSignals needs the GIL and the main thread).
+/// On Ctrl-C `cancelled()` turns true; the work stops at its next sample or frame, and once it
+/// has returned (its temporary files removed) KeyboardInterrupt is raised here. The thread is
+/// joined before returning: none outlives the call.
+template <typename Work>
+auto interruptible(Work&& work) {
+  std::atomic<bool> stop{false};
+  std::atomic<bool> done{false};
+  const std::function<bool()> cancelled = [&stop] { return stop.load(std::memory_order_relaxed); };
+  using R = decltype(work(cancelled));
+  std::optional<R> result;
+  std::exception_ptr failure;
+  {
+    py::gil_scoped_release release;
+    std::thread worker([&] {
+      try {
+        result.emplace(work(cancelled));
+      } catch (...) {
+        failure = std::current_exception();
+      }
+      done = true;
+    });
+    while (!done) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      if (done || stop) continue;
+      py::gil_scoped_acquire acquire;
+      if (PyErr_CheckSignals() != 0) {
+        // The exception is set; keep it while the work winds down.
+        stop = true;
+        PyObject *type, *value, *trace;
+        PyErr_Fetch(&type, &value, &trace);
+        {
+          py::gil_scoped_release again;
+          worker.join();
+        }
+        PyErr_Restore(type, value, trace);
+        throw py::error_already_set();
+      }
+    }
+    worker.join();
+  }
+  if (failure) std::rethrow_exception(failure);
+  return std::move(*result);
+}
+
+}  // namespace pyrb

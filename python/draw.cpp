@@ -1,0 +1,134 @@
+// rattleback._draw: stills and videos for Python (media/). A module apart from _core so that
+// `import rattleback` loads no OpenGL or libav until something is drawn.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "media/still.hpp"
+#include "media/video.hpp"
+#include "render/image_io.hpp"
+#include "tasks/output.hpp"
+#include "python/convert.hpp"
+#include "python/scene_value.hpp"
+
+namespace py = pybind11;
+
+namespace pyrb {
+namespace {
+
+render::Backend backendOf(const std::string& name) {
+  const auto backend = rb::parseName<render::Backend>(name);
+  if (!backend)
+    throw py::value_error("argument backend: " + rb::choices<render::Backend>() + ", not '" +
+                          name + "'");
+  return *backend;
+}
+
+// A run that stopped by itself is rattleback.RunStopped; Ctrl-C has raised already.
+[[noreturn]] void raiseStopped(const tasks::Outcome& outcome, const std::string& scene) {
+  py::object cls = py::module_::import("rattleback._errors").attr("RunStopped");
+  py::object e = cls(scene + ": the run stopped: " + outcome.message,
+                     std::string(rb::nameOf(outcome.stop->reason)), outcome.stop->t,
+                     outcome.stop->step);
+  PyErr_SetObject(cls.ptr(), e.ptr());
+  throw py::error_already_set();
+}
+
+// The image as an H×W×4 (or ×3 without `alpha`) uint8 array, rows from the top.
+py::array_t<std::uint8_t> arrayOf(const render::Image& image, bool alpha) {
+  const py::ssize_t channels = alpha ? 4 : 3;
+  py::array_t<std::uint8_t> out({static_cast<py::ssize_t>(image.height),
+                                 static_cast<py::ssize_t>(image.width), channels});
+  std::uint8_t* p = out.mutable_data();
+  const std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
+  for (std::size_t i = 0; i < pixels; ++i)
+    for (py::ssize_t c = 0; c < channels; ++c) *p++ = image.rgba[4 * i + c];
+  return out;
+}
+
+// An H×W×3 or ×4 uint8 array (C order) as the renderer's RGBA image.
+render::Image imageOf(const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>& a) {
+  if (a.ndim() != 3 || (a.shape(2) != 3 && a.shape(2) != 4))
+    throw py::value_error("an image is an H×W×3 or H×W×4 uint8 array");
+  render::Image image;
+  image.height = static_cast<int>(a.shape(0));
+  image.width = static_cast<int>(a.shape(1));
+  const py::ssize_t channels = a.shape(2);
+  image.rgba.resize(static_cast<std::size_t>(image.width) * image.height * 4, 255);
+  const std::uint8_t* p = a.data();
+  for (std::size_t i = 0; i < static_cast<std::size_t>(image.width) * image.height; ++i)
+    for (py::ssize_t c = 0; c < channels; ++c) image.rgba[4 * i + c] = *p++;
+  return image;
+}
+
+py::array_t<std::uint8_t> still(const LoadedScene& loaded, double t, bool readouts,
+                                bool transparent, const std::string& backend) {
+  media::StillRequest request;
+  request.scene_name = loaded.value.scene.file;
+  request.t = t;
+  request.readouts = readouts;
+  request.transparent = transparent;
+  request.backend = backendOf(backend);
+  auto drawn = interruptible([&](const std::function<bool()>& cancelled) {
+    request.cancelled = cancelled;
+    return media::renderStill(loaded.value, request);
+  });
+  if (!drawn) raise(drawn.error());
+  const media::StillResult& still = drawn.value();
+  if (still.outcome.ending == tasks::Ending::Stopped) raiseStopped(still.outcome, request.scene_name);
+  return arrayOf(still.image, transparent);
+}
+
+py::list renderVideos(const LoadedScene& loaded, const std::string& output, bool both, int crf,
+                const std::string& preset, const std::string& backend) {
+  media::VideoRequest request;
+  request.scene_name = loaded.value.scene.file;
+  request.output = output;
+  request.both = both;
+  request.crf = crf;
+  request.preset = preset;
+  request.backend = backendOf(backend);
+  auto made = interruptible([&](const std::function<bool()>& cancelled) {
+    request.cancelled = cancelled;
+    return media::renderVideo(loaded.value, request);
+  });
+  if (!made) raise(made.error());
+  const media::VideoResult& result = made.value();
+  if (result.outcome.ending == tasks::Ending::Stopped) raiseStopped(result.outcome, request.scene_name);
+  py::list files;
+  for (const media::VideoFile& f : result.files) {
+    py::dict d;
+    d["path"] = f.path;
+    d["frames"] = f.frames;
+    d["spin"] = f.spin ? py::object(py::float_(*f.spin)) : py::object(py::none());
+    d["first_reversal_s"] =
+        f.first_reversal_s ? py::object(py::float_(*f.first_reversal_s)) : py::object(py::none());
+    files.append(d);
+  }
+  return files;
+}
+
+}  // namespace
+}  // namespace pyrb
+
+PYBIND11_MODULE(_draw, m) {
+  using namespace pyrb;
+  m.doc() = "rattleback's drawing side: stills and videos (see rattleback.still, rattleback.render).";
+  py::module_::import("rattleback._core");  // registers LoadedScene
+  m.def("still", &still, py::arg("scene"), py::arg("t"), py::arg("readouts"),
+        py::arg("transparent"), py::arg("backend"));
+  m.def("render", &renderVideos, py::arg("scene"), py::arg("output"), py::arg("both"), py::arg("crf"),
+        py::arg("preset"), py::arg("backend"));
+  m.def("encode_png", [](const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>& a) {
+    auto bytes = render::encodePng(imageOf(a));
+    if (!bytes) raise(bytes.error());
+    return py::bytes(reinterpret_cast<const char*>(bytes->data()), bytes->size());
+  }, py::arg("array"));
+  m.def("write_png", [](const std::string& path, const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>& a) {
+    if (auto e = tasks::makeParentFolder(path); !e) raise(e.error());
+    if (auto e = render::writePng(path, imageOf(a)); !e) raise(e.error());
+  }, py::arg("path"), py::arg("array"));
+  py::list presets;
+  for (const std::string& p : media::presets()) presets.append(p);
+  m.attr("presets") = presets;
+}

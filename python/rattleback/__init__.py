@@ -1,0 +1,321 @@
+"""rattleback: the rattleback (celt) simulated, analysed and drawn, from Python.
+
+The same library as the ``rattleback`` command: the same scene checks and messages, the same
+numbers, the same CSV. ::
+
+    import rattleback as rb
+    run = rb.simulate("scenes/rattleback.yaml")
+    print(run.first_reversal, run.spin[:5])
+
+Scenes come from a file, a YAML string or a dict (:class:`Scene`); every call also takes a
+path. Long calls release the GIL (runs in several threads go in parallel) and stop on Ctrl-C
+with ``KeyboardInterrupt``, leaving no temporary file.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from typing import Any, Mapping, Optional, Sequence, Union
+
+import numpy as np
+
+from . import _core
+from ._errors import RunStopped, SceneError
+
+__all__ = [
+    "Scene", "Run", "Image", "SceneError", "RunStopped", "simulate", "analyze", "still",
+    "render", "sweep", "SweepTable", "__version__",
+]
+
+__version__ = _core.version
+
+SceneLike = Union["Scene", str, os.PathLike, Mapping[str, Any]]
+
+
+def _yaml_value(value: Any) -> str:
+    """A Python value as YAML flow text (JSON is YAML): numbers, strings, lists, dicts."""
+    if isinstance(value, np.generic):
+        value = value.item()
+    if isinstance(value, np.ndarray):
+        value = value.tolist()
+    return json.dumps(value)
+
+
+class Scene:
+    """A scene, checked and compiled: from a file, a YAML string or a dict.
+
+    A scene is immutable; :meth:`with_values` gives a new one with keys changed. Every error
+    is a :class:`SceneError` (a ``ValueError``) naming file, line and key, as the command
+    line's message does.
+    """
+
+    def __init__(self, yaml: str, name: str, values: Sequence[tuple[str, str]] = ()):
+        self._yaml = yaml
+        self._name = name
+        self._values = tuple(values)
+        self._loaded = _core.load(yaml, name, list(self._values), {})
+
+    @classmethod
+    def from_file(cls, path: Union[str, os.PathLike]) -> "Scene":
+        """The scene in a YAML file (``scenes/rattleback.yaml``)."""
+        path = os.fspath(path)
+        return cls(_core.read_scene_file(path), path)
+
+    @classmethod
+    def from_yaml(cls, text: str, name: str = "<yaml>") -> "Scene":
+        """A scene written as YAML text; ``name`` stands for the file in messages."""
+        return cls(text, name)
+
+    @classmethod
+    def from_dict(cls, scene: Mapping[str, Any], name: str = "<dict>") -> "Scene":
+        """A scene as nested dicts, keyed as the file is (``{"body": {...}, ...}``)."""
+        return cls(json.dumps(scene, default=_yaml_value_default), name)
+
+    def with_values(self, values: Mapping[str, Any]) -> "Scene":
+        """A copy with values put at dotted keys: ``{"initial.spin": -5,
+        "contact.air_drag": 1e-5, "body.dents.at[0]": 0.3}``. A wrong key or value raises
+        :class:`SceneError` naming ``with_values`` and the key."""
+        added = [(str(k), _yaml_value(v)) for k, v in values.items()]
+        return Scene(self._yaml, self._name, self._values + tuple(added))
+
+    @property
+    def name(self) -> str:
+        """The file (or name) the scene came from."""
+        return self._name
+
+    @property
+    def values(self) -> dict[str, Any]:
+        """The values put in with :meth:`with_values`, by key."""
+        return {k: json.loads(v) for k, v in self._values}
+
+    @property
+    def yaml(self) -> str:
+        """The scene's YAML text, as read (before :meth:`with_values`)."""
+        return self._yaml
+
+    @property
+    def duration(self) -> float:
+        """simulation.duration, s."""
+        return self._loaded.duration
+
+    @property
+    def spin(self) -> float:
+        """initial.spin, rad/s (+ counter-clockwise seen from above)."""
+        return self._loaded.spin
+
+    def _load(self, **overrides: Any):
+        overrides = {k: v for k, v in overrides.items() if v is not None}
+        if not overrides:
+            return self._loaded
+        return _core.load(self._yaml, self._name, list(self._values), overrides)
+
+    def __repr__(self) -> str:
+        extra = f", values={self.values!r}" if self._values else ""
+        return f"Scene({self._name!r}{extra})"
+
+
+def _yaml_value_default(value: Any) -> Any:
+    if isinstance(value, np.generic):
+        return value.item()
+    if isinstance(value, np.ndarray):
+        return value.tolist()
+    raise TypeError(f"{type(value).__name__} is not a scene value")
+
+
+def _scene(scene: SceneLike) -> Scene:
+    if isinstance(scene, Scene):
+        return scene
+    if isinstance(scene, Mapping):
+        return Scene.from_dict(scene)
+    if isinstance(scene, (str, os.PathLike)):
+        return Scene.from_file(scene)
+    raise TypeError(f"scene: a Scene, a path or a dict, not {type(scene).__name__}")
+
+
+class Run:
+    """A finished run: every telemetry column as a NumPy array, and what the run found.
+
+    Columns (the CSV's, same names): ``t, spin, energy, kinetic, potential, elastic,
+    tilt_deg, x, y, z, wx, wy, wz, Lz, contacts, normal_force, mode``; ``units`` gives each
+    one's unit. ``result`` is the sidecar's ``result`` (status, reversals, energy, steps, …),
+    ``model`` its ``model``.
+    """
+
+    def __init__(self, core_run):
+        self._run = core_run
+        self._columns = core_run.columns()
+        self.result: dict = core_run.result()
+        self.model: dict = core_run.model()
+
+    def __getattr__(self, name: str) -> np.ndarray:
+        columns = self.__dict__.get("_columns", {})
+        if name in columns:
+            return columns[name]
+        raise AttributeError(f"Run has no column or attribute {name!r}; columns: "
+                             + ", ".join(columns))
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        return self._columns[name]
+
+    def __len__(self) -> int:
+        return len(self._columns["t"])
+
+    def __dir__(self):
+        return sorted(set(super().__dir__()) | set(self._columns))
+
+    @property
+    def columns(self) -> dict[str, np.ndarray]:
+        """Every column by name."""
+        return dict(self._columns)
+
+    @property
+    def units(self) -> dict[str, str]:
+        """Each column's unit and meaning, as in the sidecar."""
+        return dict(_core.telemetry_columns)
+
+    @property
+    def reversals(self) -> list[float]:
+        """Times of the spin reversals, s (README "simulate": the reversal rule)."""
+        return list(self.result["reversals_s"])
+
+    @property
+    def first_reversal(self) -> Optional[float]:
+        """Time of the first reversal, s, or None."""
+        return self.result["first_reversal_s"]
+
+    @property
+    def summary(self) -> dict:
+        """What the run found: the sidecar's ``result``."""
+        return self.result
+
+    @property
+    def scene(self) -> str:
+        return self._run.scene
+
+    @property
+    def rate(self) -> float:
+        """Samples per simulated second."""
+        return self._run.rate
+
+    def sidecar(self) -> dict:
+        """The sidecar the command line writes beside its CSV, as a dict."""
+        return self._run.sidecar()
+
+    def to_pandas(self):
+        """The columns as a ``pandas.DataFrame`` (needs pandas)."""
+        import pandas as pd
+        return pd.DataFrame(self._columns)
+
+    def to_csv(self, path: Union[str, os.PathLike]) -> None:
+        """Writes the command line's exact CSV at ``path`` and its sidecar at
+        ``path + ".json"``, each whole or not at all."""
+        self._run.to_csv(os.fspath(path))
+
+    def __repr__(self) -> str:
+        first = self.first_reversal
+        rev = f"first reversal {first:.4f} s" if first is not None else "no reversal"
+        return f"<Run {self.scene}: {len(self)} samples, {rev}>"
+
+
+def simulate(scene: SceneLike, *, rate: float = _core.default_rate,
+             duration: Optional[float] = None, spin: Optional[float] = None,
+             dt: Optional[float] = None, tolerance: Optional[float] = None,
+             integrator: Optional[str] = None) -> Run:
+    """Runs the scene, sampled at ``rate`` samples per simulated second (t_k = k / rate, and
+    the end), as ``rattleback simulate`` does.
+
+    Args:
+        scene: a :class:`Scene`, a path to a scene file, or a dict.
+        rate: samples per simulated second (default 500).
+        duration: simulated time, s (overrides simulation.duration).
+        spin: initial spin, rad/s (overrides initial.spin).
+        dt: a fixed step, s (replaces the scene's dt or tolerance).
+        tolerance: adaptive steps (dopri5) to this error per step.
+        integrator: ``euler``, ``symplectic``, ``rk4`` or ``dopri5``.
+
+    Raises:
+        SceneError: the scene or an argument cannot be used.
+        RunStopped: the run stopped by itself (NaN, energy from nowhere, on its rim).
+        KeyboardInterrupt: Ctrl-C.
+    """
+    loaded = _scene(scene)._load(duration=duration, spin=spin, dt=dt, tolerance=tolerance,
+                                 integrator=integrator)
+    return Run(_core.simulate(loaded, float(rate)))
+
+
+def analyze(scene: SceneLike, *, spin: Optional[float] = None) -> dict:
+    """Mass properties, rest, contact limits, the linearised theory and the preferred
+    direction: the dict ``rattleback analyze --json`` prints. ``spin`` (rad/s) is where the
+    growth rates are evaluated (default: the scene's spin, else 5)."""
+    return _core.analyze(_scene(scene)._loaded, spin)
+
+
+class Image:
+    """A drawn frame: ``array`` is H×W×3 (or H×W×4 with transparency) ``uint8``, rows from
+    the top. Shows itself in Jupyter; ``save(path)`` writes PNG."""
+
+    def __init__(self, array: np.ndarray):
+        self.array = array
+
+    @property
+    def width(self) -> int:
+        return self.array.shape[1]
+
+    @property
+    def height(self) -> int:
+        return self.array.shape[0]
+
+    def png(self) -> bytes:
+        """The image as PNG bytes (libpng, as the command line writes them)."""
+        from . import _draw
+        return _draw.encode_png(self.array)
+
+    def _repr_png_(self) -> bytes:
+        return self.png()
+
+    def save(self, path: Union[str, os.PathLike]) -> None:
+        """Writes the image as PNG, whole or not at all (the command line's writer)."""
+        from . import _draw
+        _draw.write_png(os.fspath(path), self.array)
+
+    def __repr__(self) -> str:
+        return f"<Image {self.width}x{self.height}>"
+
+
+def still(scene: SceneLike, t: float = 0.0, *, view: Optional[str] = None,
+          size: Optional[tuple[int, int]] = None, spin: Optional[float] = None,
+          readouts: bool = True, transparent: bool = False, backend: str = "auto") -> Image:
+    """The scene's run drawn at time ``t`` (s), as ``rattleback still`` draws it.
+
+    Args:
+        view: ``oblique``, ``above``, ``front``, ``side`` or ``follow`` (default the scene's).
+        size: (width, height) in pixels, even (default the scene's, else 1280×720).
+        spin: initial spin, rad/s.
+        readouts: the title, read-outs and spin inset.
+        transparent: an RGBA image with no floor or background.
+        backend: ``auto``, ``egl`` or ``osmesa``.
+    """
+    from . import _draw
+    loaded = _scene(scene)._load(view=view, size=size, spin=spin)
+    return Image(_draw.still(loaded, float(t), readouts, transparent, backend))
+
+
+def render(scene: SceneLike, output: Union[str, os.PathLike, None] = None, *,
+           both: bool = False, fps: Optional[int] = None, size: Optional[tuple[int, int]] = None,
+           view: Optional[str] = None, playback: Optional[float] = None,
+           duration: Optional[float] = None, spin: Optional[float] = None,
+           crf: int = 20, preset: str = "veryfast", backend: str = "auto") -> list[dict]:
+    """The scene's run as an MP4 video (H.264), as ``rattleback render`` writes it.
+
+    ``output`` is the .mp4 (default ``out/<scene>.mp4``); with ``both=True`` it is the base of
+    ``BASE-preferred.mp4``, ``BASE-reversed.mp4`` and ``BASE-both.mp4``. Returns one dict per
+    video: ``path``, ``frames``, ``spin`` and ``first_reversal_s`` of the run it shows.
+    """
+    from . import _draw
+    loaded = _scene(scene)._load(fps=fps, size=size, view=view, playback=playback,
+                                 duration=duration, spin=spin)
+    return _draw.render(loaded, "" if output is None else os.fspath(output), both, int(crf),
+                        preset, backend)
+
+

@@ -1,0 +1,74 @@
+// The compiled scene shared by rattleback._core and rattleback._draw: pybind11 registers it
+// once (in _core) and both modules pass it by this one C++ type.
+#pragma once
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "python/convert.hpp"
+#include "scene/loader.hpp"
+#include "tasks/scene_args.hpp"
+
+namespace pyrb {
+
+/// A scene loaded, checked and compiled, with its overrides applied.
+struct LoadedScene {
+  tasks::LoadedScene value;
+};
+
+/// The overrides a Python call may give, named in messages as "argument dt".
+inline tasks::Overrides overridesOf(const py::dict& kw) {
+  tasks::Overrides o;
+  o.option_prefix = "argument ";
+  auto number = [&](const char* name, std::optional<double>& field) {
+    if (kw.contains(name) && !kw[name].is_none()) field = kw[name].cast<double>();
+  };
+  number("duration", o.duration);
+  number("dt", o.dt);
+  number("tolerance", o.tolerance);
+  number("playback", o.playback);
+  number("spin", o.spin);
+  number("fps", o.fps);
+  if (kw.contains("integrator") && !kw["integrator"].is_none())
+    o.integrator = kw["integrator"].cast<std::string>();
+  if (kw.contains("view") && !kw["view"].is_none()) o.view = kw["view"].cast<std::string>();
+  if (kw.contains("size") && !kw["size"].is_none()) {
+    const auto size = kw["size"].cast<std::vector<int>>();
+    if (size.size() != 2) throw py::value_error("argument size: give (width, height) in pixels");
+    o.size = std::array<int, 2>{size[0], size[1]};
+  }
+  return o;
+}
+
+inline void bindScene(py::module_& m) {
+  py::class_<LoadedScene>(m, "LoadedScene")
+      .def_property_readonly("file", [](const LoadedScene& s) { return s.value.scene.file; })
+      .def_property_readonly("duration", [](const LoadedScene& s) { return s.value.model.duration; })
+      .def_property_readonly("spin", [](const LoadedScene& s) { return s.value.model.initial.spin; });
+  m.def("read_scene_file", [](const std::string& path) { return take(scene::readSceneFile(path)); },
+        py::arg("path"));
+  m.def(
+      "load",
+      [](const std::string& yaml, const std::string& name,
+         const std::vector<std::pair<std::string, std::string>>& values, const py::dict& overrides) {
+        std::vector<scene::KeyValue> kv;
+        for (const auto& [key, text] : values) kv.push_back({key, text});
+        const tasks::Overrides o = overridesOf(overrides);
+        py::gil_scoped_release release;  // compiling a body takes tens of ms
+        auto loaded = scene::loadWithValues(yaml, name, kv, "with_values");
+        if (!loaded) {
+          py::gil_scoped_acquire acquire;
+          raise(loaded.error());
+        }
+        auto applied = tasks::applyOverrides(std::move(loaded).value(), o);
+        py::gil_scoped_acquire acquire;
+        return LoadedScene{take(std::move(applied))};
+      },
+      py::arg("yaml"), py::arg("name"), py::arg("values"), py::arg("overrides"));
+}
+
+}  // namespace pyrb
