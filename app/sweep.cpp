@@ -28,46 +28,12 @@
 #include "scene/sweep.hpp"
 #include "sim/compile.hpp"
 #include "sim/rollout.hpp"
+#include "tasks/sweep.hpp"
 
 namespace app {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The columns after the varied keys, with their units (for the sidecar and the plot).
-const std::pair<const char*, const char*> kResults[] = {
-    {"status", "ok | stopped: reason | refused: reason"},
-    {"first_reversal_s", "s: first spin reversal (as simulate), empty when none"},
-    {"reversals", "count of spin reversals (as simulate)"},
-    {"final_spin", "rad/s: n = w.z at the end of the run"},
-    {"max_tilt_deg", "degrees: largest tilt of the body axis over the steps (to the stop, if it stopped)"},
-    {"energy_lost", "fraction of the initial energy lost by the end"},
-    {"wall_s", "s: wall-clock time of the run (the only column that varies between runs)"},
-};
-
-bool isMetric(const std::string& name) {
-  for (const auto& [column, unit] : kResults)
-    if (name == column && name != std::string("status")) return true;
-  return false;
-}
-
-std::string metricNames() {
-  std::string names;
-  for (const auto& [column, unit] : kResults)
-    if (column != std::string("status")) names += std::string(names.empty() ? "" : ", ") + column;
-  return names;
-}
-
-// A CSV field: quoted when it holds a comma, a quote or a line break (RFC 4180).
-std::string field(const std::string& text) {
-  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"') out += '"';
-    out += c == '\n' || c == '\r' ? ' ' : c;
-  }
-  return out + "\"";
-}
 
 // Splits one CSV line (RFC 4180 quoting); nullopt when its quotes do not close.
 std::optional<std::vector<std::string>> splitCsv(const std::string& line) {
@@ -91,110 +57,10 @@ std::optional<std::vector<std::string>> splitCsv(const std::string& line) {
   return fields;
 }
 
-std::string number(double v, const char* format = "%.10g") {
-  if (!std::isfinite(v)) return "";
-  char text[48];
-  std::snprintf(text, sizeof text, format, v + 0.0);
-  return text;
-}
-
-std::string header(const std::vector<std::string>& keys) {
-  std::string line = "row";
-  // (Appended piece by piece: `"," + string` trips a false -Wrestrict of GCC 12.)
-  for (const std::string& key : keys) line.append(",").append(field(key));
-  for (const auto& [column, unit] : kResults) line += std::string(",") + column;
-  return line;
-}
-
 std::vector<std::string> axisKeys(const scene::Sweep& sweep) {
   std::vector<std::string> keys;
   for (const auto& axis : sweep.axes) keys.push_back(axis.key);
   return keys;
-}
-
-// "row,value,value," — the part of a row fixed by the sweep, before its results.
-std::string rowPrefix(const scene::Sweep& sweep, std::int64_t row) {
-  std::string line = std::to_string(row);
-  const std::vector<int> at = sweep.coordinates(row);
-  for (std::size_t i = 0; i < sweep.axes.size(); ++i)
-    line.append(",").append(field(sweep.axes[i].values[at[i]]));
-  return line + ",";
-}
-
-// The compiled bodies of a sweep, one per body group, compiled by the first run that needs it
-// and released when the last run of this process that uses it is done.
-class Bodies {
- public:
-  using Compiled = rb::Result<std::shared_ptr<const sim::Body>>;
-
-  Bodies(const scene::Sweep& sweep, const std::vector<std::int64_t>& rows)
-      : sweep_(sweep), slots_(static_cast<std::size_t>(sweep.bodyGroups())) {
-    for (std::int64_t row : rows) ++slots_[static_cast<std::size_t>(sweep.bodyGroup(row))].uses;
-  }
-
-  Compiled get(std::int64_t row, const sim::SceneSpec& spec) {
-    Slot& slot = slots_[static_cast<std::size_t>(sweep_.bodyGroup(row))];
-    std::call_once(slot.once, [&] { slot.body.emplace(sim::compileBody(spec)); });
-    return *slot.body;
-  }
-
-  void release(std::int64_t row) {
-    Slot& slot = slots_[static_cast<std::size_t>(sweep_.bodyGroup(row))];
-    if (--slot.uses == 0) slot.body.reset();
-  }
-
- private:
-  struct Slot {
-    std::once_flag once;
-    std::optional<Compiled> body;
-    std::atomic<std::int64_t> uses{0};
-  };
-  const scene::Sweep& sweep_;
-  std::vector<Slot> slots_;
-};
-
-// One run of the sweep: its results after rowPrefix, or nothing when it was stopped on request.
-std::optional<std::string> runRow(const scene::SweepScenes& scenes,
-                                  Bodies& bodies, std::int64_t row, std::stop_token stop) {
-  const auto start = std::chrono::steady_clock::now();
-  auto refused = [&](const std::string& why) {
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return field("refused: " + why) + ",,,,,," + number(wall, "%.6f");
-  };
-  auto loaded = scenes.scene(row);
-  if (!loaded) return refused(loaded.error().text());
-  auto body = bodies.get(row, loaded->spec);
-  struct Release {
-    Bodies& bodies;
-    std::int64_t row;
-    ~Release() { bodies.release(row); }
-  } release{bodies, row};
-  if (!body) return refused(scene::describe(loaded.value(), body.error()));
-  auto model = sim::compileRun(loaded->spec, body.value());
-  if (!model) return refused(scene::describe(loaded.value(), model.error()));
-
-  sim::Rollout rollout(std::move(model).value());
-  rollout.stopWith(stop);
-  const double end = rollout.endTime();
-  const bool reached = rollout.advanceTo(end);
-  const sim::RunSummary& run = rollout.summary();
-  if (run.stop_requested) return std::nullopt;
-  std::string status = "ok";
-  std::string final_spin, energy_lost;
-  // A stopped run's largest tilt too: how far it went over is often why it stopped.
-  const std::string max_tilt = number(run.max_tilt_deg);
-  if (reached) {
-    const sim::Telemetry last = rollout.sampleAt(end);
-    final_spin = number(last.spin);
-    energy_lost = number((run.first.energy - last.energy) / std::abs(run.first.energy));
-  } else {
-    status = "stopped: " + run.divergence.value_or("the run did not reach its end");
-  }
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return field(status) + "," +
-         (run.first_reversal_s ? number(*run.first_reversal_s) : std::string()) + "," +
-         std::to_string(run.reversals.size()) + "," + final_spin + "," + max_tilt + "," +
-         energy_lost + "," + number(wall, "%.6f");
 }
 
 struct Shard {
@@ -288,45 +154,43 @@ int emitScript(const SweepArgs& args, const scene::Sweep& sweep, const std::stri
   return kOk;
 }
 
-// The axes as the sidecar records them (the merge and the plot read them back).
-nlohmann::json axesJson(const scene::Sweep& sweep) {
-  nlohmann::json axes = nlohmann::json::array();
-  for (const auto& axis : sweep.axes) axes.push_back({{"key", axis.key}, {"values", axis.values}});
-  return axes;
-}
-
-nlohmann::json columnsJson(const std::vector<std::string>& keys) {
-  nlohmann::json columns = nlohmann::json::array();
-  columns.push_back({{"name", "row"}, {"unit", "index of the run in the sweep's order (first axis slowest)"}});
-  for (const std::string& key : keys) columns.push_back({{"name", key}, {"unit", "the value put into the scene"}});
-  for (const auto& [name, unit] : kResults) columns.push_back({{"name", name}, {"unit", unit}});
-  return columns;
-}
-
 struct Table {
   std::vector<std::string> keys;
   std::vector<std::vector<std::string>> axis_values;  // [axis][value]
-  std::vector<std::string> lines;                     // in row order
+  std::vector<double> values;  // the metric of each row in row order; NaN where none
 };
+
+// The metric of a row: only a run that reached its end has a value to show.
+double metricOf(const tasks::SweepRow& row, const std::string& metric) {
+  if (row.status != tasks::RowStatus::Ok) return std::nan("");
+  auto or_nan = [](const std::optional<double>& v) { return v.value_or(std::nan("")); };
+  if (metric == "first_reversal_s") return or_nan(row.first_reversal_s);
+  if (metric == "reversals") return row.reversals ? static_cast<double>(*row.reversals) : std::nan("");
+  if (metric == "final_spin") return or_nan(row.final_spin);
+  if (metric == "max_tilt_deg") return or_nan(row.max_tilt_deg);
+  if (metric == "energy_lost") return or_nan(row.energy_lost);
+  return row.wall_s;  // wall_s
+}
+
+// The metric from a line of a shard's table (the merge reads the files the shards wrote).
+double metricOf(const std::string& line, std::size_t axes, const std::string& metric) {
+  std::size_t column = 1 + axes;
+  for (const tasks::Column& c : tasks::sweepResultColumns()) {
+    if (c.name == metric) break;
+    ++column;
+  }
+  const auto fields = splitCsv(line);
+  if (!fields || fields->size() <= column || (*fields)[column].empty() ||
+      (*fields)[1 + axes] != "ok")
+    return std::nan("");
+  return std::strtod((*fields)[column].c_str(), nullptr);
+}
 
 // Draws `metric` over the first two axes (further axes at their first value; one axis: a line
 // plot).
 rb::Status plotTable(const std::string& png, const std::string& metric, const std::string& title,
                      const Table& table) {
   const std::size_t axes = table.keys.size();
-  std::size_t column = 1 + axes;
-  for (const auto& [name, unit] : kResults) {
-    if (name == metric) break;
-    ++column;
-  }
-  auto value = [&](const std::string& line) {
-    const auto fields = splitCsv(line);
-    // Only a run that reached its end has a value to show.
-    if (!fields || fields->size() <= column || (*fields)[column].empty() ||
-        (*fields)[1 + axes] != "ok")
-      return std::nan("");
-    return std::strtod((*fields)[column].c_str(), nullptr);
-  };
   // Row index of coordinates (i0, i1, 0, 0, …).
   std::vector<std::int64_t> stride(axes, 1);
   for (std::size_t i = axes; i-- > 1;)
@@ -341,8 +205,8 @@ rb::Status plotTable(const std::string& png, const std::string& metric, const st
     panel.y_label = metric;
     Series series;
     series.title = metric;
-    for (std::size_t i = 0; i < table.lines.size(); ++i)
-      series.points.emplace_back(std::strtod(table.axis_values[0][i].c_str(), nullptr), value(table.lines[i]));
+    for (std::size_t i = 0; i < table.values.size(); ++i)
+      series.points.emplace_back(std::strtod(table.axis_values[0][i].c_str(), nullptr), table.values[i]);
     panel.series.push_back(series);
     return plotPng(png, title + ": " + metric, {panel}, 900, 500);
   }
@@ -355,7 +219,7 @@ rb::Status plotTable(const std::string& png, const std::string& metric, const st
   map.y_values = table.axis_values[1];
   for (std::size_t i0 = 0; i0 < map.x_values.size(); ++i0)
     for (std::size_t i1 = 0; i1 < map.y_values.size(); ++i1)
-      map.values.push_back(value(table.lines[static_cast<std::size_t>(i0 * stride[0] + i1 * stride[1])]));
+      map.values.push_back(table.values[static_cast<std::size_t>(i0 * stride[0] + i1 * stride[1])]);
   map.note = "grey: no value (" + std::string(metric == "first_reversal_s" ? "no reversal, or " : "") +
              "run stopped or refused)";
   return heatmapPng(png, map, 900, 600);
@@ -368,21 +232,6 @@ rb::Status checkTableIsAFile(const std::string& output) {
     return rb::Status::fail(output + ": a sweep's table is a file (its sidecar " + output +
                             ".json and its journal go beside it), not a device or pipe");
   return {};
-}
-
-rb::Status writeTable(const std::string& output, const std::vector<std::string>& keys,
-                      const std::vector<std::string>& lines, nlohmann::json sidecar) {
-  if (auto made = tasks::makeParentFolder(output); !made) return made;
-  auto csv = tasks::AtomicOutput::open(output);
-  if (!csv) return csv.error();
-  auto meta = tasks::AtomicOutput::open(output + ".json");
-  if (!meta) return meta.error();
-  csv->stream() << header(keys) << "\n";
-  for (const std::string& line : lines) csv->stream() << line << "\n";
-  sidecar["columns"] = columnsJson(keys);
-  meta->stream() << sidecar.dump(2) << "\n";
-  if (auto e = csv->commit(); !e) return e;
-  return meta->commit();
 }
 
 }  // namespace
@@ -400,9 +249,9 @@ int sweepCommand(const SweepArgs& args) {
     return kBadInput;
   }
   const scene::Sweep& sweep = loaded.value();
-  if (!isMetric(args.metric)) {
+  if (!tasks::isSweepMetric(args.metric)) {
     std::cerr << "--metric: '" << args.metric << "' is not a column to plot (one of "
-              << metricNames() << ")\n";
+              << tasks::sweepMetricNames() << ")\n";
     return kBadInput;
   }
   if (args.jobs < 0 || args.jobs > 1024) {
@@ -454,7 +303,7 @@ int sweepCommand(const SweepArgs& args) {
 
   // The rows of this process, and those an interrupted run already finished (its journal).
   const std::vector<std::string> keys = axisKeys(sweep);
-  const std::string head = header(keys);
+  const std::string head = tasks::sweepHeader(keys);
   const std::string journal_path = output + ".partial";
   std::map<std::int64_t, std::string> done;
   std::vector<std::int64_t> rows;
@@ -479,7 +328,7 @@ int sweepCommand(const SweepArgs& args) {
       const auto comma = line.find(',');
       const std::int64_t r = std::strtoll(line.substr(0, comma).c_str(), nullptr, 10);
       if (comma == std::string::npos || !mine.count(r) ||
-          line.rfind(rowPrefix(sweep, r), 0) != 0) {
+          line.rfind(tasks::sweepRowPrefix(sweep, r), 0) != 0) {
         std::cerr << journal_path << ": row '" << line.substr(0, 40)
                   << "…' is not one of this sweep's (was the sweep file changed?); remove it, "
                   << "or run without --resume\n";
@@ -505,61 +354,34 @@ int sweepCommand(const SweepArgs& args) {
   for (const auto& [r, line] : done) journal << line << "\n";
   journal.flush();
 
-  const int jobs = args.jobs > 0 ? args.jobs
-                                 : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  Bodies bodies(sweep, todo);
-  std::vector<std::optional<std::string>> results(todo.size());
-  std::atomic<std::size_t> next{0}, finished{0};
-  std::atomic<int> running{0};
-  std::stop_source stop;
-  std::mutex journal_mutex;
-  const auto start = std::chrono::steady_clock::now();
-  {
-    std::vector<std::jthread> pool;
-    const int threads = static_cast<int>(std::min<std::size_t>(jobs, std::max<std::size_t>(1, todo.size())));
-    running = threads;
-    for (int j = 0; j < threads; ++j) {
-      pool.emplace_back([&] {
-        while (!stop.stop_requested()) {
-          const std::size_t i = next++;
-          if (i >= todo.size()) break;
-          std::optional<std::string> result;
-          try {
-            result = runRow(scenes.value(), bodies, todo[i], stop.get_token());
-          } catch (const std::exception& e) {
-            result = field(std::string("stopped: ") + e.what()) + ",,,,,,";
-          }
-          if (!result) break;
-          std::string line = rowPrefix(sweep, todo[i]) + *result;
-          {
-            std::lock_guard lock(journal_mutex);
-            journal << line << "\n";
-            journal.flush();
-          }
-          results[i] = std::move(line);
-          ++finished;
-        }
-        --running;
-      });
-    }
-    Progress progress("sweep", static_cast<std::int64_t>(rows.size()), !args.quiet);
-    while (running > 0) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(50));
-      if (interruptSignal()) stop.request_stop();
-      progress.update(static_cast<std::int64_t>(done.size() + finished));
-    }
-    progress.finish();
-  }
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  tasks::SweepOptions options;
+  options.jobs = args.jobs;
+  options.cancelled = [] { return interruptSignal() != 0; };
+  options.finished = [&](const tasks::SweepRow& row) {
+    journal << tasks::sweepLine(row) << "\n";
+    journal.flush();
+  };
+  Progress progress("sweep", static_cast<std::int64_t>(rows.size()), !args.quiet);
+  options.progress = [&](std::int64_t finished) {
+    progress.update(static_cast<std::int64_t>(from_journal) + finished);
+  };
+  const tasks::SweepRun run = tasks::runSweep(sweep, scenes.value(), todo, options);
+  progress.finish();
   journal.close();
 
-  if (interruptSignal()) {
-    std::cerr << args.file << ": interrupted; " << done.size() + finished << " of " << rows.size()
-              << " runs kept in " << journal_path
+  if (run.interrupted) {
+    std::cerr << args.file << ": interrupted; " << from_journal + run.rows.size() << " of "
+              << rows.size() << " runs kept in " << journal_path
               << "; the same command with --resume runs the rest\n";
     return interruptedStatus();
   }
-  for (std::size_t i = 0; i < todo.size(); ++i) done[todo[i]] = *results[i];
+  std::map<std::string, int> counts;
+  std::map<std::int64_t, double> metric;
+  for (const tasks::SweepRow& row : run.rows) {
+    done[row.row] = tasks::sweepLine(row);
+    metric[row.row] = metricOf(row, args.metric);
+    ++counts[std::string(rb::nameOf(row.status))];
+  }
   std::vector<std::string> lines;
   for (const auto& [r, line] : done) lines.push_back(line);
   nlohmann::json sidecar;
@@ -570,28 +392,31 @@ int sweepCommand(const SweepArgs& args) {
   sidecar["rows"] = sweep.rows();
   sidecar["shard"] = shard ? nlohmann::json{{"index", shard->index}, {"count", shard->count}}
                            : nlohmann::json(nullptr);
-  sidecar["axes"] = axesJson(sweep);
-  if (auto e = writeTable(output, keys, lines, sidecar); !e) {
+  sidecar["axes"] = tasks::sweepAxesJson(sweep);
+  if (auto e = tasks::writeSweepTable(output, keys, lines, sidecar); !e) {
     std::cerr << e.error().text() << "\n";
     return kBadInput;
   }
   std::error_code ec;
   fs::remove(journal_path, ec);
   if (!args.plot.empty()) {
-    Table table{keys, {}, lines};
+    Table table{keys, {}, {}};
     for (const auto& axis : sweep.axes) table.axis_values.push_back(axis.values);
+    for (const auto& [r, line] : done)
+      table.values.push_back(metric.count(r) ? metric[r] : metricOf(line, keys.size(), args.metric));
     if (auto e = plotTable(args.plot, args.metric, stem, table); !e) {
       std::cerr << e.error().text() << "\n";
       return kBadInput;
     }
   }
   if (!args.quiet) {
-    std::map<std::string, int> counts;
-    for (const std::string& line : lines) {
-      const auto fields = splitCsv(line);
-      const std::string status = fields && fields->size() > 1 + keys.size() ? (*fields)[1 + keys.size()] : "";
-      ++counts[status.substr(0, status.find(':'))];
-    }
+    for (const auto& [r, line] : done)  // rows from the journal of an interrupted run
+      if (!metric.count(r)) {
+        const auto fields = splitCsv(line);
+        const std::string status =
+            fields && fields->size() > 1 + keys.size() ? (*fields)[1 + keys.size()] : "";
+        ++counts[status.substr(0, status.find(':'))];
+      }
     std::printf("sweep           %s: %zu runs", args.file.c_str(), lines.size());
     if (shard) std::printf(" (shard %lld of %lld)", static_cast<long long>(shard->index),
                            static_cast<long long>(shard->count));
@@ -601,8 +426,9 @@ int sweepCommand(const SweepArgs& args) {
     if (from_journal)
       std::printf(" (%zu from the journal of the interrupted run, %zu run now)", from_journal,
                   todo.size());
-    std::printf("\nwall time       %.3f s on %d threads (%.1f runs/s, of the %zu run now)\n", wall,
-                jobs, todo.empty() ? 0.0 : static_cast<double>(todo.size()) / wall, todo.size());
+    std::printf("\nwall time       %.3f s on %d threads (%.1f runs/s, of the %zu run now)\n",
+                run.wall_s, run.threads,
+                todo.empty() ? 0.0 : static_cast<double>(todo.size()) / run.wall_s, todo.size());
     std::printf("table           %s\n", output.c_str());
     if (!args.plot.empty()) std::printf("plot            %s\n", args.plot.c_str());
   }
@@ -610,9 +436,9 @@ int sweepCommand(const SweepArgs& args) {
 }
 
 int sweepMergeCommand(const SweepMergeArgs& args) {
-  if (!isMetric(args.metric)) {
+  if (!tasks::isSweepMetric(args.metric)) {
     std::cerr << "--metric: '" << args.metric << "' is not a column to plot (one of "
-              << metricNames() << ")\n";
+              << tasks::sweepMetricNames() << ")\n";
     return kBadInput;
   }
   if (args.shards.empty()) {
@@ -697,13 +523,13 @@ int sweepMergeCommand(const SweepMergeArgs& args) {
   nlohmann::json sidecar = *first;
   sidecar["shard"] = nullptr;
   sidecar["merged_from"] = args.shards;
-  if (auto e = writeTable(args.output, keys, lines, sidecar); !e) {
+  if (auto e = tasks::writeSweepTable(args.output, keys, lines, sidecar); !e) {
     std::cerr << e.error().text() << "\n";
     return kBadInput;
   }
   if (!args.plot.empty()) {
     table.keys = keys;
-    table.lines = lines;
+    for (const std::string& line : lines) table.values.push_back(metricOf(line, keys.size(), args.metric));
     const std::string title = fs::path((*first).value("sweep", "sweep")).stem().string();
     if (auto e = plotTable(args.plot, args.metric, title, table); !e) {
       std::cerr << e.error().text() << "\n";

@@ -1,0 +1,269 @@
+#include "tasks/sweep.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <mutex>
+#include <thread>
+
+#include "sim/compile.hpp"
+#include "sim/rollout.hpp"
+#include "tasks/output.hpp"
+
+namespace tasks {
+namespace {
+
+// The columns after the varied keys, with their units (for the sidecar and the plot).
+constexpr Column kResults[] = {
+    {"status", "ok | stopped: reason | refused: reason"},
+    {"first_reversal_s", "s: first spin reversal (as simulate), empty when none"},
+    {"reversals", "count of spin reversals (as simulate)"},
+    {"final_spin", "rad/s: n = w.z at the end of the run"},
+    {"max_tilt_deg",
+     "degrees: largest tilt of the body axis over the steps (to the stop, if it stopped)"},
+    {"energy_lost", "fraction of the initial energy lost by the end"},
+    {"wall_s", "s: wall-clock time of the run (the only column that varies between runs)"},
+};
+
+std::string number(const std::optional<double>& v, const char* format = "%.10g") {
+  if (!v || !std::isfinite(*v)) return "";
+  char text[48];
+  std::snprintf(text, sizeof text, format, *v + 0.0);
+  return text;
+}
+
+double since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The compiled bodies of a sweep, one per body group, compiled by the first run that needs it
+// and released when the last run of this call that uses it is done.
+class Bodies {
+ public:
+  using Compiled = rb::Result<std::shared_ptr<const sim::Body>>;
+
+  Bodies(const scene::Sweep& sweep, const std::vector<std::int64_t>& rows)
+      : sweep_(sweep), slots_(static_cast<std::size_t>(sweep.bodyGroups())) {
+    for (std::int64_t row : rows) ++slots_[static_cast<std::size_t>(sweep.bodyGroup(row))].uses;
+  }
+
+  Compiled get(std::int64_t row, const sim::SceneSpec& spec) {
+    Slot& slot = slots_[static_cast<std::size_t>(sweep_.bodyGroup(row))];
+    std::call_once(slot.once, [&] { slot.body.emplace(sim::compileBody(spec)); });
+    return *slot.body;
+  }
+
+  void release(std::int64_t row) {
+    Slot& slot = slots_[static_cast<std::size_t>(sweep_.bodyGroup(row))];
+    if (--slot.uses == 0) slot.body.reset();
+  }
+
+ private:
+  struct Slot {
+    std::once_flag once;
+    std::optional<Compiled> body;
+    std::atomic<std::int64_t> uses{0};
+  };
+  const scene::Sweep& sweep_;
+  std::vector<Slot> slots_;
+};
+
+// One run of the sweep, or nothing when it was stopped on request.
+std::optional<SweepRow> runRow(const scene::Sweep& sweep, const scene::SweepScenes& scenes,
+                               Bodies& bodies, std::int64_t index, std::stop_token stop) {
+  const auto start = std::chrono::steady_clock::now();
+  SweepRow row;
+  row.row = index;
+  const std::vector<int> at = sweep.coordinates(index);
+  for (std::size_t i = 0; i < sweep.axes.size(); ++i) row.values.push_back(sweep.axes[i].values[at[i]]);
+  auto refused = [&](const std::string& why) {
+    row.status = RowStatus::Refused;
+    row.reason = why;
+    row.wall_s = since(start);
+    return row;
+  };
+  auto loaded = scenes.scene(index);
+  if (!loaded) return refused(loaded.error().text());
+  auto body = bodies.get(index, loaded->spec);
+  struct Release {
+    Bodies& bodies;
+    std::int64_t row;
+    ~Release() { bodies.release(row); }
+  } release{bodies, index};
+  if (!body) return refused(scene::describe(loaded.value(), body.error()));
+  auto model = sim::compileRun(loaded->spec, body.value());
+  if (!model) return refused(scene::describe(loaded.value(), model.error()));
+
+  sim::Rollout rollout(std::move(model).value());
+  rollout.stopWith(stop);
+  const double end = rollout.endTime();
+  const bool reached = rollout.advanceTo(end);
+  const sim::RunSummary& run = rollout.summary();
+  if (run.stop_requested) return std::nullopt;
+  row.first_reversal_s = run.first_reversal_s;
+  row.reversals = static_cast<std::int64_t>(run.reversals.size());
+  // A stopped run's largest tilt too: how far it went over is often why it stopped.
+  row.max_tilt_deg = run.max_tilt_deg;
+  if (reached) {
+    const sim::Telemetry last = rollout.sampleAt(end);
+    row.final_spin = last.spin;
+    row.energy_lost = (run.first.energy - last.energy) / std::abs(run.first.energy);
+  } else {
+    row.status = RowStatus::Stopped;
+    row.reason = run.divergence.value_or("the run did not reach its end");
+    if (run.stop) row.stop = run.stop->reason;
+  }
+  row.wall_s = since(start);
+  return row;
+}
+
+}  // namespace
+
+std::span<const Column> sweepResultColumns() { return kResults; }
+
+bool isSweepMetric(const std::string& name) {
+  for (const Column& c : kResults)
+    if (name == c.name && name != "status") return true;
+  return false;
+}
+
+std::string sweepMetricNames() {
+  std::string names;
+  for (const Column& c : kResults)
+    if (std::string(c.name) != "status") names.append(names.empty() ? "" : ", ").append(c.name);
+  return names;
+}
+
+std::string csvField(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"') out += '"';
+    out += c == '\n' || c == '\r' ? ' ' : c;
+  }
+  return out + "\"";
+}
+
+std::string sweepHeader(const std::vector<std::string>& keys) {
+  std::string line = "row";
+  // (Appended piece by piece: `"," + string` trips a false -Wrestrict of GCC 12.)
+  for (const std::string& key : keys) line.append(",").append(csvField(key));
+  for (const Column& c : kResults) line.append(",").append(c.name);
+  return line;
+}
+
+std::string sweepRowPrefix(const scene::Sweep& sweep, std::int64_t row) {
+  std::string line = std::to_string(row);
+  const std::vector<int> at = sweep.coordinates(row);
+  for (std::size_t i = 0; i < sweep.axes.size(); ++i)
+    line.append(",").append(csvField(sweep.axes[i].values[at[i]]));
+  return line + ",";
+}
+
+std::string sweepLine(const SweepRow& row) {
+  std::string line = std::to_string(row.row);
+  for (const std::string& v : row.values) line.append(",").append(csvField(v));
+  std::string status(rb::nameOf(row.status));
+  if (row.status != RowStatus::Ok) status += ": " + row.reason;
+  line.append(",").append(csvField(status));
+  line.append(",").append(number(row.first_reversal_s));
+  line.append(",").append(row.reversals ? std::to_string(*row.reversals) : "");
+  line.append(",").append(number(row.final_spin));
+  line.append(",").append(number(row.max_tilt_deg));
+  line.append(",").append(number(row.energy_lost));
+  line.append(",").append(number(row.wall_s, "%.6f"));
+  return line;
+}
+
+nlohmann::json sweepColumnsJson(const std::vector<std::string>& keys) {
+  nlohmann::json columns = nlohmann::json::array();
+  columns.push_back(
+      {{"name", "row"}, {"unit", "index of the run in the sweep's order (first axis slowest)"}});
+  for (const std::string& key : keys)
+    columns.push_back({{"name", key}, {"unit", "the value put into the scene"}});
+  for (const Column& c : kResults) columns.push_back({{"name", c.name}, {"unit", c.unit}});
+  return columns;
+}
+
+nlohmann::json sweepAxesJson(const scene::Sweep& sweep) {
+  nlohmann::json axes = nlohmann::json::array();
+  for (const auto& axis : sweep.axes) axes.push_back({{"key", axis.key}, {"values", axis.values}});
+  return axes;
+}
+
+SweepRun runSweep(const scene::Sweep& sweep, const scene::SweepScenes& scenes,
+                  const std::vector<std::int64_t>& rows, const SweepOptions& options) {
+  SweepRun out;
+  const int jobs = options.jobs > 0
+                       ? options.jobs
+                       : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  Bodies bodies(sweep, rows);
+  std::vector<std::optional<SweepRow>> results(rows.size());
+  std::atomic<std::size_t> next{0}, finished{0};
+  std::atomic<int> running{0};
+  std::stop_source stop;
+  std::mutex finished_mutex;
+  const auto start = std::chrono::steady_clock::now();
+  {
+    std::vector<std::jthread> pool;
+    out.threads = static_cast<int>(std::min<std::size_t>(jobs, std::max<std::size_t>(1, rows.size())));
+    running = out.threads;
+    for (int j = 0; j < out.threads; ++j) {
+      pool.emplace_back([&] {
+        while (!stop.stop_requested()) {
+          const std::size_t i = next++;
+          if (i >= rows.size()) break;
+          std::optional<SweepRow> row;
+          try {
+            row = runRow(sweep, scenes, bodies, rows[i], stop.get_token());
+          } catch (const std::exception& e) {
+            row = SweepRow{};
+            row->row = rows[i];
+            row->values = {};
+            const std::vector<int> at = sweep.coordinates(rows[i]);
+            for (std::size_t a = 0; a < sweep.axes.size(); ++a)
+              row->values.push_back(sweep.axes[a].values[at[a]]);
+            row->status = RowStatus::Stopped;
+            row->reason = e.what();
+          }
+          if (!row) break;
+          if (options.finished) {
+            std::lock_guard lock(finished_mutex);
+            options.finished(*row);
+          }
+          results[i] = std::move(row);
+          ++finished;
+        }
+        --running;
+      });
+    }
+    while (running > 0) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      if (options.cancelled && options.cancelled()) stop.request_stop();
+      if (options.progress) options.progress(static_cast<std::int64_t>(finished));
+    }
+  }
+  out.wall_s = since(start);
+  out.interrupted = stop.stop_requested();
+  for (auto& r : results)
+    if (r) out.rows.push_back(std::move(*r));
+  return out;
+}
+
+rb::Status writeSweepTable(const std::string& output, const std::vector<std::string>& keys,
+                           const std::vector<std::string>& lines, nlohmann::json sidecar) {
+  if (auto made = makeParentFolder(output); !made) return made;
+  auto csv = AtomicOutput::open(output);
+  if (!csv) return csv.error();
+  auto meta = AtomicOutput::open(output + ".json");
+  if (!meta) return meta.error();
+  csv->stream() << sweepHeader(keys) << "\n";
+  for (const std::string& line : lines) csv->stream() << line << "\n";
+  sidecar["columns"] = sweepColumnsJson(keys);
+  meta->stream() << sidecar.dump(2) << "\n";
+  if (auto e = csv->commit(); !e) return e;
+  return meta->commit();
+}
+
+}  // namespace tasks

@@ -1,0 +1,94 @@
+// Running a sweep (scene/sweep.hpp): each row's scene on a pool of threads made and joined
+// within runSweep(), each row's outcome typed (SweepRow), and the table's one CSV dialect
+// (RFC 4180) and sidecar. `rattleback sweep` and Python's sweep() both call it.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "scene/sweep.hpp"
+#include "tasks/simulate.hpp"
+
+namespace tasks {
+
+enum class RowStatus {
+  Ok,       ///< ran to its end
+  Stopped,  ///< stopped by itself (reason says why)
+  Refused,  ///< its scene was refused (reason: the loader's line)
+};
+
+/// One run of a sweep and what it found.
+struct SweepRow {
+  std::int64_t row = 0;             ///< index in the sweep's order (first axis slowest)
+  std::vector<std::string> values;  ///< each axis's value, as put into the scene
+  RowStatus status = RowStatus::Ok;
+  std::string reason;                      ///< for Stopped and Refused
+  std::optional<sim::StopReason> stop;     ///< for Stopped, when the run said why
+  std::optional<double> first_reversal_s;  ///< s
+  std::optional<std::int64_t> reversals;  ///< none when refused
+  std::optional<double> final_spin;        ///< rad/s, when it reached its end
+  std::optional<double> max_tilt_deg;      ///< degrees over the steps (also a stopped run's)
+  std::optional<double> energy_lost;       ///< fraction of the initial energy, at the end
+  double wall_s = 0;                       ///< wall-clock time of the run, s
+};
+
+/// The result columns after the axes' (name and unit), in the table's order.
+std::span<const Column> sweepResultColumns();
+/// Whether `name` is a result column with a number (what a heatmap can show).
+bool isSweepMetric(const std::string& name);
+/// "a, b or c": the metrics, for messages and --help.
+std::string sweepMetricNames();
+
+/// The table's header line (no newline) for these axis keys.
+std::string sweepHeader(const std::vector<std::string>& keys);
+/// "row,value,…," — the part of a line fixed by the sweep, before the results.
+std::string sweepRowPrefix(const scene::Sweep& sweep, std::int64_t row);
+/// One row as a CSV line (no newline).
+std::string sweepLine(const SweepRow& row);
+/// The sidecar's columns and axes.
+nlohmann::json sweepColumnsJson(const std::vector<std::string>& keys);
+nlohmann::json sweepAxesJson(const scene::Sweep& sweep);
+/// A CSV field, quoted when it holds a comma, a quote or a line break (RFC 4180).
+std::string csvField(const std::string& text);
+
+struct SweepOptions {
+  int jobs = 0;  ///< threads; 0: all cores
+  std::function<bool()> cancelled;  ///< polled every 50 ms: true stops the pool (may be empty)
+  /// Called once per finished row, one at a time, from the pool's threads (a journal).
+  std::function<void(const SweepRow&)> finished;
+  /// Called from the calling thread every 50 ms with the rows finished so far.
+  std::function<void(std::int64_t)> progress;
+};
+
+struct SweepRun {
+  std::vector<SweepRow> rows;  ///< the rows asked for, in their order; all of them unless
+  bool interrupted = false;    ///< … a cancel stopped the pool first (then the finished ones)
+  int threads = 0;
+  double wall_s = 0;
+};
+
+/// Runs `rows` of the sweep (all when empty is not wanted: pass them) on a pool of threads.
+SweepRun runSweep(const scene::Sweep& sweep, const scene::SweepScenes& scenes,
+                  const std::vector<std::int64_t>& rows, const SweepOptions& options);
+
+/// Writes the table (header, then `lines`) and its sidecar (with `columns` added), each whole.
+rb::Status writeSweepTable(const std::string& output, const std::vector<std::string>& keys,
+                           const std::vector<std::string>& lines, nlohmann::json sidecar);
+
+}  // namespace tasks
+
+namespace rb {
+template <>
+struct NameTable<tasks::RowStatus> {
+  static constexpr std::array<std::pair<tasks::RowStatus, std::string_view>, 3> entries{{
+      {tasks::RowStatus::Ok, "ok"},
+      {tasks::RowStatus::Stopped, "stopped"},
+      {tasks::RowStatus::Refused, "refused"},
+  }};
+};
+}  // namespace rb
