@@ -13,6 +13,7 @@
 #include "tasks/analysis.hpp"
 #include "tasks/run_json.hpp"
 #include "tasks/simulate.hpp"
+#include "tasks/sweep.hpp"
 
 namespace py = pybind11;
 
@@ -93,6 +94,89 @@ std::shared_ptr<Run> simulate(const LoadedScene& loaded, double rate) {
   return run;
 }
 
+/// A sweep's table: the rows in the sweep's order, typed.
+struct SweepTable {
+  scene::Sweep sweep;
+  std::vector<tasks::SweepRow> rows;
+};
+
+std::shared_ptr<SweepTable> sweep(const std::string& path, int jobs) {
+  if (jobs < 0 || jobs > 1024)
+    throw py::value_error("argument jobs: threads must be 1 … 1024 (0: all cores), not " +
+                          std::to_string(jobs));
+  auto table = std::make_shared<SweepTable>();
+  table->sweep = take(scene::loadSweep(path));
+  auto scenes = take(scene::SweepScenes::open(table->sweep));
+  std::vector<std::int64_t> rows;
+  for (std::int64_t r = 0; r < table->sweep.rows(); ++r) rows.push_back(r);
+  tasks::SweepRun run = interruptible([&](const std::function<bool()>& cancelled) {
+    tasks::SweepOptions options;
+    options.jobs = jobs;
+    options.cancelled = cancelled;
+    return tasks::runSweep(table->sweep, scenes, rows, options);
+  });
+  table->rows = std::move(run.rows);
+  return table;
+}
+
+// An optional number as a float, NaN when absent.
+double orNan(const std::optional<double>& v) { return v.value_or(std::nan("")); }
+
+py::dict sweepColumns(const SweepTable& t) {
+  py::dict d;
+  const auto n = static_cast<py::ssize_t>(t.rows.size());
+  py::array_t<std::int64_t> row(n);
+  for (py::ssize_t i = 0; i < n; ++i) row.mutable_data()[i] = t.rows[i].row;
+  d["row"] = row;
+  for (std::size_t a = 0; a < t.sweep.axes.size(); ++a) {
+    py::list values;
+    for (const tasks::SweepRow& r : t.rows) values.append(r.values[a]);
+    d[py::str(t.sweep.axes[a].key)] = values;  // text as written; the package makes numbers
+  }
+  py::list status, reason;
+  for (const tasks::SweepRow& r : t.rows) {
+    status.append(std::string(rb::nameOf(r.status)));
+    reason.append(r.reason);
+  }
+  d["status"] = status;
+  d["reason"] = reason;
+  auto numbers = [&](auto value) {
+    py::array_t<double> out(n);
+    for (py::ssize_t i = 0; i < n; ++i) out.mutable_data()[i] = value(t.rows[i]);
+    return out;
+  };
+  using R = tasks::SweepRow;
+  d["first_reversal_s"] = numbers([](const R& r) { return orNan(r.first_reversal_s); });
+  d["reversals"] = numbers([](const R& r) {
+    return r.reversals ? static_cast<double>(*r.reversals) : std::nan("");
+  });
+  d["final_spin"] = numbers([](const R& r) { return orNan(r.final_spin); });
+  d["max_tilt_deg"] = numbers([](const R& r) { return orNan(r.max_tilt_deg); });
+  d["energy_lost"] = numbers([](const R& r) { return orNan(r.energy_lost); });
+  d["wall_s"] = numbers([](const R& r) { return r.wall_s; });
+  return d;
+}
+
+void sweepToCsv(const SweepTable& t, const std::string& path) {
+  std::vector<std::string> keys, lines;
+  for (const auto& axis : t.sweep.axes) keys.push_back(axis.key);
+  for (const tasks::SweepRow& r : t.rows) lines.push_back(tasks::sweepLine(r));
+  nlohmann::json sidecar;
+  sidecar["program"] = "rattleback " RATTLEBACK_VERSION;
+  sidecar["command"] = "sweep";
+  sidecar["sweep"] = t.sweep.file;
+  sidecar["base"] = t.sweep.base;
+  sidecar["rows"] = t.sweep.rows();
+  sidecar["shard"] = nullptr;
+  sidecar["axes"] = tasks::sweepAxesJson(t.sweep);
+  rb::Status written;
+  {
+    py::gil_scoped_release release;
+    written = tasks::writeSweepTable(path, keys, lines, sidecar);
+  }
+  if (!written) raise(written.error());
+}
+
 }  // namespace
 }  // namespace pyrb
 
@@ -128,6 +212,17 @@ PYBIND11_MODULE(_core, m) {
         if (!written) raise(written.error());
       });
 
+  py::class_<SweepTable, std::shared_ptr<SweepTable>>(m, "SweepTable")
+      .def("columns", &sweepColumns)
+      .def("to_csv", &sweepToCsv, py::arg("path"))
+      .def_property_readonly("file", [](const SweepTable& t) { return t.sweep.file; })
+      .def_property_readonly("base", [](const SweepTable& t) { return t.sweep.base; })
+      .def_property_readonly("keys", [](const SweepTable& t) {
+        std::vector<std::string> keys;
+        for (const auto& axis : t.sweep.axes) keys.push_back(axis.key);
+        return keys;
+      });
+  m.def("sweep", &sweep, py::arg("path"), py::arg("jobs"));
   m.def("simulate", &simulate, py::arg("scene"), py::arg("rate"));
   m.def("analyze", [](const LoadedScene& loaded, std::optional<double> spin) {
     const sim::Model& model = loaded.value.model;

@@ -319,3 +319,4 @@ def render(scene: SceneLike, output: Union[str, os.PathLike, None] = None, *,
                         preset, backend)
 
 
+from ._sweep import SweepTable, sweep  # noqa: E402

@@ -1,0 +1,75 @@
+"""Sweeps from Python: every scene of a sweep file, run on all cores."""
+
+from __future__ import annotations
+
+import os
+from typing import Union
+
+import numpy as np
+
+from . import _core
+
+
+def _numbers_or_text(values: list) -> np.ndarray:
+    """An axis's values as floats where every one is a number, else as text."""
+    try:
+        return np.array([float(v) for v in values])
+    except ValueError:
+        return np.array(values, dtype=object)
+
+
+class SweepTable:
+    """A sweep's table, one row per run in the sweep's order (first axis slowest): the same
+    rows as ``rattleback sweep`` writes.
+
+    Columns: ``row``, one per varied key (floats, or text for values that are not numbers),
+    ``status`` (``ok``, ``stopped`` or ``refused``), ``reason`` (why, for the others),
+    ``first_reversal_s``, ``reversals``, ``final_spin``, ``max_tilt_deg``, ``energy_lost``,
+    ``wall_s``. A value a run does not have is NaN.
+    """
+
+    def __init__(self, core_table):
+        self._table = core_table
+        columns = core_table.columns()
+        for key in core_table.keys:
+            columns[key] = _numbers_or_text(columns[key])
+        columns["status"] = np.array(columns["status"])
+        columns["reason"] = np.array(columns["reason"], dtype=object)
+        self._columns = columns
+
+    @property
+    def columns(self) -> dict[str, np.ndarray]:
+        return dict(self._columns)
+
+    @property
+    def keys(self) -> list[str]:
+        """The varied keys, in the sweep file's order."""
+        return list(self._table.keys)
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        return self._columns[name]
+
+    def __len__(self) -> int:
+        return len(self._columns["row"])
+
+    def to_pandas(self):
+        """The table as a ``pandas.DataFrame`` (needs pandas)."""
+        import pandas as pd
+        return pd.DataFrame(self._columns)
+
+    def to_csv(self, path: Union[str, os.PathLike]) -> None:
+        """Writes the command line's table and sidecar (``path + ".json"``), each whole."""
+        self._table.to_csv(os.fspath(path))
+
+    def __repr__(self) -> str:
+        ok = int(np.sum(self._columns["status"] == "ok"))
+        return f"<SweepTable {self._table.file}: {len(self)} runs, {ok} ok>"
+
+
+def sweep(path: Union[str, os.PathLike], *, jobs: int = 0) -> SweepTable:
+    """Runs every scene of the sweep file at ``path`` (README "Sweeps": a base scene and axes
+    of values) on ``jobs`` threads (0: all cores), as ``rattleback sweep`` does.
+
+    Raises ValueError for a sweep file that cannot be used; KeyboardInterrupt on Ctrl-C.
+    """
+    return SweepTable(_core.sweep(os.fspath(path), int(jobs)))
