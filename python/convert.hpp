@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <thread>
@@ -16,14 +17,18 @@ namespace pyrb {
 
 namespace py = pybind11;
 
-/// A JSON value as the Python object json.loads would give (null → None).
+/// A JSON value as the Python object json.loads would give of its text (null → None, and so
+/// a non-finite number, which the files write as null, is None too).
 inline py::object toPython(const nlohmann::json& j) {
   switch (j.type()) {
     case nlohmann::json::value_t::null: return py::none();
     case nlohmann::json::value_t::boolean: return py::bool_(j.get<bool>());
     case nlohmann::json::value_t::number_integer: return py::int_(j.get<std::int64_t>());
     case nlohmann::json::value_t::number_unsigned: return py::int_(j.get<std::uint64_t>());
-    case nlohmann::json::value_t::number_float: return py::float_(j.get<double>());
+    case nlohmann::json::value_t::number_float: {
+      const double v = j.get<double>();
+      return std::isfinite(v) ? py::object(py::float_(v)) : py::object(py::none());
+    }
     case nlohmann::json::value_t::string: return py::str(j.get<std::string>());
     case nlohmann::json::value_t::array: {
       py::list list;

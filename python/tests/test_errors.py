@@ -1,0 +1,99 @@
+"""Bad input raises the command line's message, with the file, line and key apart."""
+
+import subprocess
+
+import pytest
+
+import rattleback as rb
+from conftest import BIN, cli, scene_path
+
+BAD_FRICTION = """body:
+  shape: ellipsoid
+  ellipsoid: {semi_axes: [0.03, 0.20, 0.02]}
+  mass: 1.0
+  inertia: [[1.6e-3, 0, 0], [0, 2e-4, 0], [0, 0, 1.7e-3]]
+contact:
+  model: smooth
+  stiffness: 1.0e+5
+  friction: -1
+simulation: {dt: 1e-4, duration: 1}
+"""
+
+
+# The shipped Kane & Levinson body as a dict (scenes/kane-levinson.yaml).
+DICT_SCENE = {
+    "body": {"shape": "ellipsoid",
+             "ellipsoid": {"semi_axes": [0.03, 0.20, 0.02], "center": [0.0, 0.0, 0.01]},
+             "inertia": [[1.6e-3, -2.0e-5, 0.0], [-2.0e-5, 2.0e-4, 0.0], [0.0, 0.0, 1.7e-3]],
+             "mass": 1.0},
+    "contact": {"model": "rolling"},
+    "initial": {"spin": 5.0, "tilt": [0.5, 0.5]},
+    "simulation": {"integrator": "rk4", "dt": 1e-4, "duration": 8.0},
+}
+
+
+def test_a_file_error_names_file_line_and_key_as_the_command_line_does(tmp_path):
+    path = tmp_path / "bad.yaml"
+    path.write_text(BAD_FRICTION)
+    with pytest.raises(rb.SceneError) as caught:
+        rb.Scene.from_file(path)
+    e = caught.value
+    assert isinstance(e, ValueError)
+    assert (e.file, e.line, e.key) == (str(path), 9, "contact.friction")
+    line = cli("simulate", str(path), check=False)
+    assert line.returncode == 2
+    assert str(e) == line.stderr.strip()
+
+
+def test_a_yaml_string_and_a_dict_are_named_in_their_errors():
+    with pytest.raises(rb.SceneError) as caught:
+        rb.Scene.from_yaml(BAD_FRICTION, name="mine")
+    assert (caught.value.file, caught.value.line, caught.value.key) == ("mine", 9, "contact.friction")
+    with pytest.raises(rb.SceneError) as caught:
+        rb.Scene.from_dict(DICT_SCENE | {"gravity": -9.81})
+    assert caught.value.file == "<dict>" and caught.value.key == "gravity"
+    assert str(caught.value).startswith("<dict>:1: gravity must be")
+    run = rb.simulate(rb.Scene.from_dict(DICT_SCENE), duration=0.5)
+    assert len(run) == 251 and run.result["status"] == "ok"
+
+
+def test_with_values_checks_each_key_and_value():
+    scene = rb.Scene.from_file(scene_path("rattleback.yaml"))
+    assert rb.simulate(scene.with_values({"initial.spin": 5}), duration=0.1).spin[0] > 0
+    with pytest.raises(rb.SceneError) as caught:
+        scene.with_values({"initial.spn": 1})
+    assert (caught.value.file, caught.value.key) == ("with_values", "initial.spn")
+    assert "not a known key" in str(caught.value)
+    with pytest.raises(rb.SceneError) as caught:
+        scene.with_values({"contact.air_drag": -1})
+    assert str(caught.value).startswith("with_values: contact.air_drag must be")
+    with pytest.raises(rb.SceneError) as caught:
+        scene.with_values({"body.dents.at[7]": 0.5})
+    assert "does not have" in str(caught.value)
+    # The scene it came from is unchanged.
+    assert scene.spin == -5 and scene.values == {}
+
+
+def test_a_bad_argument_is_named_as_the_argument():
+    with pytest.raises(rb.SceneError) as caught:
+        rb.simulate(scene_path("rattleback.yaml"), dt=-1)
+    assert str(caught.value) == "argument dt: must be > 0, not -1"
+    assert caught.value.key == "simulation.dt"
+    with pytest.raises(ValueError, match="argument dt and argument tolerance"):
+        rb.simulate(scene_path("rattleback.yaml"), dt=1e-3, tolerance=1e-6)
+    with pytest.raises(ValueError, match="rate"):
+        rb.simulate(scene_path("rattleback.yaml"), rate=0)
+
+
+def test_a_missing_file_is_a_scene_error():
+    with pytest.raises(rb.SceneError, match="cannot open the scene file"):
+        rb.simulate("no/such/scene.yaml")
+
+
+def test_a_run_that_stops_itself_raises_run_stopped():
+    # Forward Euler at 5 ms on the rolling body gains energy until the watchdog stops it
+    # (README: euler trips the 10 % energy bound at steps ≥ 0.5 ms).
+    with pytest.raises(rb.RunStopped) as caught:
+        rb.simulate(scene_path("rattleback.yaml"), integrator="euler", dt=5e-3)
+    assert caught.value.reason == "energy_gain"
+    assert 0 < caught.value.t < 8

@@ -1,0 +1,24 @@
+"""The tour notebook runs from start to end (nbclient), so the example never rots."""
+
+import os
+import shutil
+
+import nbformat
+from nbclient import NotebookClient
+
+from conftest import SOURCE
+
+
+def test_the_tour_runs_and_shows_its_plot_and_still(tmp_path):
+    (tmp_path / "scenes").symlink_to(SOURCE / "scenes")
+    shutil.copy(SOURCE / "examples" / "tour.ipynb", tmp_path / "tour.ipynb")
+    nb = nbformat.read(tmp_path / "tour.ipynb", as_version=4)
+    NotebookClient(nb, timeout=300, kernel_name="python3",
+                   resources={"metadata": {"path": str(tmp_path)}}).execute()
+    outputs = [o for cell in nb.cells if cell.cell_type == "code" for o in cell.outputs]
+    assert not [o for o in outputs if o.output_type == "error"]
+    pngs = [o for o in outputs if "image/png" in o.get("data", {})]
+    assert len(pngs) >= 2  # the n(t) plot and the still
+    text = "".join(o.get("text", "") for o in outputs if o.output_type == "stream")
+    assert "first reversal at 2.36" in text
+    assert (tmp_path / "out" / "tour.mp4").stat().st_size > 10_000

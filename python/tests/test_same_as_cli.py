@@ -1,0 +1,115 @@
+"""Python and the command line are one library: the same scene gives the same numbers, written
+as the same text."""
+
+import csv
+import json
+
+import numpy as np
+import pytest
+
+import rattleback as rb
+from conftest import cli, scene_path
+
+# Every shipped scene, shortened (the seed's points model costs 0.7 µs a step at 10 µs steps),
+# and sampled at rates that fall between steps (333 Hz) and on them.
+CASES = [
+    ("rattleback.yaml", 2.0, 500),
+    ("rattleback.yaml", 1.5, 333),
+    ("kane-levinson.yaml", 2.0, 200),
+    ("seed-reversed.yaml", 0.2, 1000),
+    ("seed-preferred.yaml", 0.2, 250),
+]
+
+
+@pytest.mark.parametrize("name,duration,rate", CASES)
+def test_the_csv_is_the_command_lines_text(tmp_path, name, duration, rate):
+    ours = tmp_path / "py.csv"
+    theirs = tmp_path / "cli.csv"
+    run = rb.simulate(scene_path(name), duration=duration, rate=rate)
+    run.to_csv(ours)
+    cli("simulate", scene_path(name), "--duration", str(duration), "--rate", str(rate), "-q",
+        "-o", str(theirs))
+    assert ours.read_text() == theirs.read_text()
+    # The sidecars agree but for the wall time of the run.
+    a = json.loads((tmp_path / "py.csv.json").read_text())
+    b = json.loads((tmp_path / "cli.csv.json").read_text())
+    for side in (a, b):
+        side["result"].pop("wall_s")
+    assert a == b
+
+
+def test_the_arrays_are_the_csv_columns(tmp_path, default_scene):
+    run = rb.simulate(default_scene, duration=1.0)
+    run.to_csv(tmp_path / "r.csv")
+    with open(tmp_path / "r.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == len(run) == 501
+    assert list(rows[0]) == list(run.columns)
+    for name, column in run.columns.items():
+        if name == "mode":
+            assert [r[name] for r in rows] == list(column)
+        else:
+            # The CSV prints 9–10 significant digits (tilt_deg 6 decimals): what it holds is
+            # the array's value rounded there.
+            text = np.array([float(r[name]) for r in rows])
+            np.testing.assert_allclose(column, text, rtol=1e-8, atol=1e-6 if name == "tilt_deg" else 1e-300)
+
+
+def test_the_summary_is_the_sidecars_result(default_scene):
+    run = rb.simulate(default_scene)
+    assert run.result["status"] == "ok"
+    assert run.first_reversal == pytest.approx(2.3665, abs=5e-5)  # README: first reversal 2.3665 s
+    assert run.reversals == run.result["reversals_s"]
+    assert run.sidecar()["result"]["first_reversal_s"] == run.first_reversal
+    assert run.units["spin"].startswith("rad/s")
+
+
+def test_analyze_is_the_command_lines_json(default_scene):
+    ours = rb.analyze(default_scene)
+    theirs = json.loads(cli("analyze", default_scene, "--json").stdout)
+    assert ours == theirs
+    assert ours["preferred"] == "ccw"
+    assert rb.analyze(default_scene, spin=3)["spin"] == 3
+
+
+def test_a_still_is_the_command_lines_png(tmp_path, default_scene):
+    image = rb.still(default_scene, 1.0, size=(320, 180))
+    assert image.array.shape == (180, 320, 3) and image.array.dtype == np.uint8
+    image.save(tmp_path / "py.png")
+    cli("still", default_scene, "--t", "1", "--size", "320x180", "-q", "-o",
+        str(tmp_path / "cli.png"))
+    assert (tmp_path / "py.png").read_bytes() == (tmp_path / "cli.png").read_bytes()
+    assert image._repr_png_() == (tmp_path / "cli.png").read_bytes()
+    clear = rb.still(default_scene, 0.0, size=(64, 64), transparent=True)
+    assert clear.array.shape == (64, 64, 4)
+    assert clear.array[0, 0, 3] == 0  # no background where there is no body
+
+
+def test_render_writes_the_videos_the_command_line_names(tmp_path, default_scene):
+    files = rb.render(default_scene, tmp_path / "v", both=True, duration=1.0, size=(160, 96),
+                      fps=10)
+    names = sorted(f["path"].rsplit("/", 1)[1] for f in files)
+    assert names == ["v-both.mp4", "v-preferred.mp4", "v-reversed.mp4"]
+    for f in files:
+        assert f["frames"] == 10
+        data = open(f["path"], "rb").read(12)
+        assert data[4:8] == b"ftyp"  # an MP4
+    spun = {f["spin"] for f in files if f["spin"] is not None}
+    assert spun == {-5.0, 5.0}
+
+
+def test_a_sweep_has_the_command_lines_rows(tmp_path):
+    sweep = tmp_path / "s.yaml"
+    sweep.write_text(f"base: {scene_path('rattleback.yaml')}\nvary:\n"
+                     "  initial.spin: [-5, 5]\n  contact.air_drag: [0.0, 5.9e-5]\nduration: 3\n")
+    table = rb.sweep(sweep, jobs=2)
+    table.to_csv(tmp_path / "py.csv")
+    cli("sweep", str(sweep), "-q", "-o", str(tmp_path / "cli.csv"))
+
+    def rows(path):
+        with open(path, newline="") as f:
+            return [{k: v for k, v in r.items() if k != "wall_s"} for r in csv.DictReader(f)]
+
+    assert rows(tmp_path / "py.csv") == rows(tmp_path / "cli.csv")
+    assert list(table["initial.spin"]) == [-5.0, -5.0, 5.0, 5.0]
+    assert len(table.to_pandas()) == 4

@@ -1,0 +1,97 @@
+"""Long calls release the GIL, so runs in threads go side by side and give what each gives
+alone; Ctrl-C raises KeyboardInterrupt promptly and leaves no file behind."""
+
+import os
+import signal
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+
+import numpy as np
+
+import rattleback as rb
+from conftest import scene_path
+
+
+def test_two_runs_in_two_threads_give_the_results_of_each_alone():
+    scene = rb.Scene.from_file(scene_path("rattleback.yaml"))
+    spins = [-5.0, 4.0]
+    alone = [rb.simulate(scene, spin=s, duration=3) for s in spins]
+    together = [None, None]
+
+    def run(i):
+        together[i] = rb.simulate(scene, spin=spins[i], duration=3)
+
+    threads = [threading.Thread(target=run, args=(i,)) for i in range(2)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    for a, b in zip(alone, together):
+        for name in a.columns:
+            np.testing.assert_array_equal(a[name], b[name])
+        assert a.reversals == b.reversals
+
+
+def test_a_long_call_lets_other_python_threads_run():
+    # While one thread simulates, the main thread keeps counting: the GIL is released.
+    ticks = []
+    done = threading.Event()
+
+    def run():
+        rb.simulate(scene_path("kane-levinson.yaml"), duration=200, rate=1)
+        done.set()
+
+    worker = threading.Thread(target=run)
+    worker.start()
+    while not done.is_set():
+        ticks.append(time.monotonic())
+        time.sleep(0.005)
+    worker.join()
+    assert len(ticks) > 10  # ~0.1 s of simulation; held GIL would give 1 or 2
+
+
+CHILD = r"""
+import sys, time
+import rattleback as rb
+out = sys.argv[1]
+what = sys.argv[2]
+print("started", flush=True)
+try:
+    if what == "simulate":
+        rb.simulate(sys.argv[3], duration=1e5, rate=1)
+    else:
+        rb.render(sys.argv[3], out + "/video.mp4", duration=1e3, size=(320, 180))
+except KeyboardInterrupt:
+    print(time.monotonic(), flush=True)
+    sys.exit(42)
+sys.exit(0)
+"""
+
+
+def interrupt(tmp_path: Path, what: str) -> float:
+    child = subprocess.Popen([sys.executable, "-c", CHILD, str(tmp_path), what,
+                              scene_path("kane-levinson.yaml")],
+                             stdout=subprocess.PIPE, text=True, env=os.environ.copy())
+    assert child.stdout.readline().strip() == "started"
+    time.sleep(1.0)  # well into the run
+    sent = time.monotonic()
+    child.send_signal(signal.SIGINT)
+    try:
+        out, _ = child.communicate(timeout=20)
+    finally:
+        child.kill()
+        child.wait()
+    assert child.returncode == 42, "no KeyboardInterrupt"
+    return float(out.strip()) - sent
+
+
+def test_ctrl_c_stops_a_run_within_a_fifth_of_a_second(tmp_path):
+    assert interrupt(tmp_path, "simulate") < 0.2
+
+
+def test_ctrl_c_stops_a_video_and_leaves_no_file(tmp_path):
+    assert interrupt(tmp_path, "render") < 0.2
+    assert list(tmp_path.iterdir()) == []  # neither the video nor its temporary file
