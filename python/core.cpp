@@ -65,6 +65,10 @@ py::dict columns(const Run& run) {
   py::list modes;
   for (const T& x : s) modes.append(py::str(std::string(rb::nameOf(x.mode))));
   d["mode"] = py::module_::import("numpy").attr("array")(modes);
+  d["qw"] = column(s, [](const T& x) { return tasks::attitude(x).w(); });
+  d["qx"] = column(s, [](const T& x) { return tasks::attitude(x).x(); });
+  d["qy"] = column(s, [](const T& x) { return tasks::attitude(x).y(); });
+  d["qz"] = column(s, [](const T& x) { return tasks::attitude(x).z(); });
   return d;
 }
 

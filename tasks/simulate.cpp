@@ -32,6 +32,11 @@ constexpr Column kColumns[] = {
     {"normal_force", "N: total normal force of the floor"},
     {"mode", "the contact model integrated: points, smooth or rolling (contact.model auto "
              "switches between rolling and smooth)"},
+    {"qw", "attitude: unit quaternion (qw, qx, qy, qz), scalar first, rotating body axes into "
+           "world axes (world z up); continuous in time (q and -q are the same rotation)"},
+    {"qx", "attitude quaternion, x part (see qw)"},
+    {"qy", "attitude quaternion, y part (see qw)"},
+    {"qz", "attitude quaternion, z part (see qw)"},
 };
 
 }  // namespace
@@ -44,14 +49,23 @@ std::string telemetryHeader() {
   return line + "\n";
 }
 
+Eigen::Quaterniond attitude(const sim::Telemetry& s) {
+  // q and −q are the same rotation; the integrated quaternion is kept as it is (never flipped
+  // to qw ≥ 0), so that the columns are continuous in time as the body turns round and round.
+  return s.orientation.normalized();
+}
+
 void writeTelemetryRow(std::ostream& out, const sim::Telemetry& s) {
-  char line[512];
+  const Eigen::Quaterniond q = attitude(s);
+  char line[640];
   std::snprintf(line, sizeof line,
-                "%.10g,%.9g,%.9g,%.9g,%.9g,%.9g,%.6f,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.9g,%s\n",
+                "%.10g,%.9g,%.9g,%.9g,%.9g,%.9g,%.6f,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.9g,%s,"
+                "%.10g,%.10g,%.10g,%.10g\n",
                 s.t, s.spin, s.energy, s.kinetic, s.potential, s.elastic, s.tilt_deg,
                 s.x_world.x(), s.x_world.y(), s.x_world.z(), s.w_world.x(), s.w_world.y(),
                 s.w_world.z(), s.L_world.z(), s.contacts, s.normal_force,
-                std::string(rb::nameOf(s.mode)).c_str());
+                std::string(rb::nameOf(s.mode)).c_str(), q.w() + 0.0, q.x() + 0.0, q.y() + 0.0,
+                q.z() + 0.0);
   out << line;
 }
 

@@ -32,6 +32,9 @@ std::span<const Column> telemetryColumns();
 /// The CSV's header line (with its newline) and one row per sample (README "simulate").
 std::string telemetryHeader();
 void writeTelemetryRow(std::ostream& out, const sim::Telemetry& s);
+/// The body's attitude at a sample as the qw … qz columns give it: unit, scalar first, body to
+/// world, continuous in time (the integrated quaternion, never flipped).
+Eigen::Quaterniond attitude(const sim::Telemetry& s);
 
 /// Checks a sampling rate for a run of `duration` s: > 0, at most 1e7 Hz and 1e8 rows.
 rb::Status checkRate(double rate, double duration);

@@ -113,3 +113,23 @@ def test_a_sweep_has_the_command_lines_rows(tmp_path):
     assert rows(tmp_path / "py.csv") == rows(tmp_path / "cli.csv")
     assert list(table["initial.spin"]) == [-5.0, -5.0, 5.0, 5.0]
     assert len(table.to_pandas()) == 4
+
+
+def test_the_attitude_quaternion_is_unit_and_gives_the_tilt(default_scene):
+    # Body to world, scalar first: the body's z axis in world axes is R e_z, whose vertical
+    # part is R[2][2] = 1 − 2(qx² + qy²) = cos(tilt).
+    run = rb.simulate(default_scene, duration=3)
+    norm = run.qw**2 + run.qx**2 + run.qy**2 + run.qz**2
+    np.testing.assert_allclose(norm, 1.0, atol=1e-12)
+    tilt = np.degrees(np.arccos(np.clip(1 - 2 * (run.qx**2 + run.qy**2), -1, 1)))
+    np.testing.assert_allclose(tilt, run.tilt_deg, atol=1e-9)
+    # The yaw rate of the quaternion is the spin: d/dt of the heading of the body's x axis
+    # (R e_x projected on the floor) follows n, here within 1 % over the first second.
+    heading = np.unwrap(np.arctan2(2 * (run.qx * run.qy + run.qw * run.qz),
+                                   1 - 2 * (run.qy**2 + run.qz**2)))
+    rate = np.gradient(heading, run.t)
+    first = run.t < 1
+    np.testing.assert_allclose(rate[first][5:-5].mean(), run.spin[first][5:-5].mean(), rtol=0.01)
+    # Continuous in time: no sample jumps to −q.
+    q = np.stack([run.qw, run.qx, run.qy, run.qz], axis=1)
+    assert (np.sum(q[1:] * q[:-1], axis=1) > 0.9).all()
