@@ -3,33 +3,18 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tasks/drawn_points.hpp"
+
 namespace media {
 
-// The surface points to draw. A fine grid (the default body has 7664 surface points, 3 px
-// apart on screen) reads as moiré, so columns are thinned to about kDrawnPoints by keeping
-// every k-th column counted outwards from the axes, which keeps the set symmetric; the
-// spheres grow with k.
-constexpr double kDrawnPoints = 2500;
-
 render::BodyPoints bodyPointsOf(const sim::Model& model) {
-  const sim::Body& body = *model.body;
-  const double total = body.top.size() + body.bottom.size();
-  const int k = std::max(1, static_cast<int>(std::ceil(std::sqrt(total / kDrawnPoints))));
-  const sim::Grid& grid = body.grid;
-  auto kept = [&](const Eigen::Vector3d& r) {
-    const Eigen::Vector3d p = r + body.com_geometric;  // column (i + ½) dx, (j + ½) dy
-    const long i = std::lround(std::abs(p.x()) / grid.dx - 0.5);
-    const long j = std::lround(std::abs(p.y()) / grid.dy - 0.5);
-    return i % k == 0 && j % k == 0;
-  };
+  const tasks::DrawnPoints drawn = tasks::drawnPointsOf(model);
   render::BodyPoints points;
-  for (std::size_t i = 0; i < body.top.size(); ++i)
-    if (kept(body.top[i])) points.top.push_back(body.top[i].cast<float>());
-  for (std::size_t i = 0; i < body.bottom.size(); ++i)
-    if (kept(body.bottom[i])) points.bottom.push_back(body.bottom[i].cast<float>());
-  points.spacing = static_cast<float>(k * std::min(grid.dx, grid.dy));
-  points.radius = 0.35f * points.spacing;
-  points.footprint_half = body.surface.footprintHalf().cast<float>();
+  points.top = drawn.top;
+  points.bottom = drawn.bottom;
+  points.spacing = drawn.spacing;
+  points.radius = drawn.radius;
+  points.footprint_half = drawn.footprint_half;
   return points;
 }
 

@@ -12,6 +12,7 @@
 #include "python/scene_value.hpp"
 #include "tasks/analysis.hpp"
 #include "tasks/run_json.hpp"
+#include "tasks/player_data.hpp"
 #include "tasks/simulate.hpp"
 #include "tasks/sweep.hpp"
 
@@ -227,6 +228,20 @@ PYBIND11_MODULE(_core, m) {
         return keys;
       });
   m.def("sweep", &sweep, py::arg("path"), py::arg("jobs"));
+  m.def("player_script", [](const LoadedScene& loaded, const Run& run, const std::string& id) {
+    tasks::PlayerRun player;
+    player.id = id;
+    player.title = id;
+    player.points = tasks::drawnPointsOf(loaded.value.model);
+    for (const sim::Telemetry& s : run.samples) {
+      const Eigen::Quaterniond q = tasks::attitude(s);
+      player.poses.push_back({s.t, s.x_world.x(), s.x_world.y(), s.x_world.z(), q.w(), q.x(),
+                              q.y(), q.z(), s.spin});
+    }
+    player.poses = tasks::thinPoses(player.poses);
+    player.reversals = run.summary.reversals;
+    return tasks::playerScript(player);
+  }, py::arg("scene"), py::arg("run"), py::arg("id"));
   m.def("simulate", &simulate, py::arg("scene"), py::arg("rate"));
   m.def("analyze", [](const LoadedScene& loaded, std::optional<double> spin) {
     const sim::Model& model = loaded.value.model;
