@@ -1,7 +1,8 @@
-// The command line of `rattleback`, defined once and read by both programs behind it: the
-// light `rattleback` (simulate, analyze, bench, report, sweep) and `rattleback-render` (render,
-// still, compare), which the first runs in its own place (exec) for the commands that draw —
-// so the commands that only simulate never load OSMesa/EGL (and LLVM behind them) or libav.
+// The command line of `rattleback`, defined once (a table of commands, app/cli.cpp) and read by
+// both programs behind it: the light `rattleback` (simulate, analyze, bench, report, sweep) and
+// `rattleback-render` (render, still, compare), which the first runs in its own place (exec) for
+// the commands that draw — so the commands that only simulate never load OSMesa/EGL (and LLVM
+// behind them) or libav.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -11,6 +12,22 @@
 #include "app/commands.hpp"
 
 namespace app {
+
+struct Cli;
+
+/// One command: its name and summary, its options, and what runs it. A command is added here
+/// only (commands()); `run` is null in the program that does not link it (the drawing commands
+/// in `rattleback`, which hands them to rattleback-render).
+struct CommandSpec {
+  const char* name;
+  const char* summary;
+  bool draws;  ///< needs OpenGL or libav: run by rattleback-render
+  void (*define)(CLI::App& command, Cli& cli);
+  int (*run)(Cli& cli);
+};
+
+/// Every command, in --help's order.
+const std::vector<CommandSpec>& commands();
 
 struct Cli {
   Cli();
@@ -28,24 +45,21 @@ struct Cli {
   SweepArgs sweep_args;
   SweepMergeArgs merge_args;
   std::string render_size, still_size;
-
-  CLI::App* simulate = nullptr;
-  CLI::App* analyze = nullptr;
-  CLI::App* render = nullptr;
-  CLI::App* still = nullptr;
-  CLI::App* compare = nullptr;
-  CLI::App* bench = nullptr;
-  CLI::App* report = nullptr;
-  CLI::App* sweep = nullptr;
-  CLI::App* merge = nullptr;
+  CLI::App* merge = nullptr;  ///< `sweep merge`
 
   /// Reads argv. Returns the exit status when that ends the program (--help, --version, a
   /// command-line error, already printed); nothing when a command is to run.
   std::optional<int> parse(int argc, char** argv);
-  /// True when the chosen command draws (render, still, compare): rattleback-render runs it.
-  bool draws() const;
-  /// Runs the chosen command that does not draw.
-  int runLight();
+  /// The command chosen (after parse).
+  const CommandSpec& chosen() const;
+  /// Runs the chosen command; kBadInput when this program does not link it.
+  int run();
 };
+
+// The drawing commands' runners: defined in rattleback-render (app/video.cpp), absent (null,
+// weak) in rattleback.
+[[gnu::weak]] int runRender(Cli& cli);
+[[gnu::weak]] int runStill(Cli& cli);
+[[gnu::weak]] int runCompare(Cli& cli);
 
 }  // namespace app

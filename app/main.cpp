@@ -28,10 +28,10 @@ std::filesystem::path renderProgram() {
 int main(int argc, char** argv) {
   app::Cli cli;
   if (auto status = cli.parse(argc, argv)) return *status;
-  if (!cli.draws()) return cli.runLight();
+  if (!cli.chosen().draws) return cli.run();
   const std::filesystem::path program = renderProgram();
   if (program.empty()) {
-    std::cerr << "rattleback: " << cli.app.get_subcommands().front()->get_name()
+    std::cerr << "rattleback: " << cli.chosen().name
               << " needs rattleback-render, which is neither beside this program nor in "
               << RATTLEBACK_LIBEXEC_RELATIVE << "; reinstall rattleback\n";
     return app::kBadInput;

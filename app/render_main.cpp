@@ -6,8 +6,5 @@
 int main(int argc, char** argv) {
   app::Cli cli;
   if (auto status = cli.parse(argc, argv)) return *status;
-  if (*cli.render) return app::renderCommand(cli.render_args);
-  if (*cli.still) return app::stillCommand(cli.still_args);
-  if (*cli.compare) return app::compareCommand(cli.compare_args);
-  return cli.runLight();
+  return cli.run();
 }

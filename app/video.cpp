@@ -4,6 +4,7 @@
 #include <iostream>
 #include <thread>
 
+#include "app/cli.hpp"
 #include "app/commands.hpp"
 #include "app/interrupt.hpp"
 #include "app/progress.hpp"
@@ -120,6 +121,10 @@ int stillCommand(const StillArgs& args) {
   if (!args.quiet) std::printf("%s\n", path.c_str());
   return kOk;
 }
+
+int runRender(Cli& cli) { return renderCommand(cli.render_args); }
+int runStill(Cli& cli) { return stillCommand(cli.still_args); }
+int runCompare(Cli& cli) { return compareCommand(cli.compare_args); }
 
 int compareCommand(const CompareArgs& args) {
   if (args.channel_tolerance < 0 || args.channel_tolerance > 255) {

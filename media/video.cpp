@@ -13,6 +13,7 @@
 #include <filesystem>
 
 #include "media/frames.hpp"
+#include "media/presets.hpp"
 #include "media/queue.hpp"
 #include "media/spin_history.hpp"
 #include "media/video_plan.hpp"
@@ -171,22 +172,15 @@ std::string stem(const std::string& path) { return fs::path(path).stem().string(
 
 }  // namespace
 
-const std::vector<std::string>& presets() {
-  static const std::vector<std::string> names = {"ultrafast", "superfast", "veryfast", "faster",
-                                                 "fast",      "medium",    "slow",     "slower",
-                                                 "veryslow",  "placebo"};
-  return names;
-}
-
 rb::Status checkEncoderOptions(int crf, const std::string& preset) {
   if (crf < 1 || crf > 51)
     return rb::Status::fail("--crf must be within 1 … 51 (lower is better; 0 would be lossless "
                             "High 4:4:4, which browsers do not play), not " +
                             std::to_string(crf));
-  for (const std::string& p : presets())
+  for (std::string_view p : kPresets)
     if (preset == p) return {};
   std::string names;
-  for (const std::string& p : presets()) names += (names.empty() ? "" : ", ") + p;
+  for (std::string_view p : kPresets) names.append(names.empty() ? "" : ", ").append(p);
   return rb::Status::fail("--preset must be one of x264's: " + names + "; not '" + preset + "'");
 }
 

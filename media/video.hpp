@@ -50,8 +50,6 @@ struct VideoResult {
   std::vector<std::string> notes;
 };
 
-/// x264's presets (x264 --fullhelp), for checks and --help.
-const std::vector<std::string>& presets();
 /// crf within 1 … 51 and a known preset; one line naming the option otherwise.
 rb::Status checkEncoderOptions(int crf, const std::string& preset);
 /// An output name whose extension says another format than the one written is refused.

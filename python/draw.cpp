@@ -4,6 +4,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "media/presets.hpp"
 #include "media/still.hpp"
 #include "media/video.hpp"
 #include "render/image_io.hpp"
@@ -129,6 +130,6 @@ PYBIND11_MODULE(_draw, m) {
     if (auto e = render::writePng(path, imageOf(a)); !e) raise(e.error());
   }, py::arg("path"), py::arg("array"));
   py::list presets;
-  for (const std::string& p : media::presets()) presets.append(p);
+  for (std::string_view p : media::kPresets) presets.append(std::string(p));
   m.attr("presets") = presets;
 }

@@ -16,6 +16,12 @@
 
 namespace tasks {
 
+/// The job scripts `sweep --emit` prints.
+enum class JobScript {
+  Slurm,     ///< an sbatch job array and its merge
+  Parallel,  ///< one command line per shard, for GNU parallel
+};
+
 enum class RowStatus {
   Ok,       ///< ran to its end
   Stopped,  ///< stopped by itself (reason says why)
@@ -83,6 +89,13 @@ rb::Status writeSweepTable(const std::string& output, const std::vector<std::str
 }  // namespace tasks
 
 namespace rb {
+template <>
+struct NameTable<tasks::JobScript> {
+  static constexpr std::array<std::pair<tasks::JobScript, std::string_view>, 2> entries{{
+      {tasks::JobScript::Slurm, "slurm"},
+      {tasks::JobScript::Parallel, "parallel"},
+  }};
+};
 template <>
 struct NameTable<tasks::RowStatus> {
   static constexpr std::array<std::pair<tasks::RowStatus, std::string_view>, 3> entries{{
