@@ -15,6 +15,7 @@
 #include "tasks/player_data.hpp"
 #include "tasks/simulate.hpp"
 #include "tasks/sweep.hpp"
+#include "tasks/sweep_jobs.hpp"
 
 namespace py = pybind11;
 
@@ -166,14 +167,7 @@ void sweepToCsv(const SweepTable& t, const std::string& path) {
   std::vector<std::string> keys, lines;
   for (const auto& axis : t.sweep.axes) keys.push_back(axis.key);
   for (const tasks::SweepRow& r : t.rows) lines.push_back(tasks::sweepLine(r));
-  nlohmann::json sidecar;
-  sidecar["program"] = "rattleback " RATTLEBACK_VERSION;
-  sidecar["command"] = "sweep";
-  sidecar["sweep"] = t.sweep.file;
-  sidecar["base"] = t.sweep.base;
-  sidecar["rows"] = t.sweep.rows();
-  sidecar["shard"] = nullptr;
-  sidecar["axes"] = tasks::sweepAxesJson(t.sweep);
+  const nlohmann::json sidecar = tasks::sweepSidecar(t.sweep, std::nullopt);
   rb::Status written;
   {
     py::gil_scoped_release release;

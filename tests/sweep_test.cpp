@@ -351,6 +351,24 @@ TEST(Sweep, EmitSlurmWritesAJobArrayAndItsMerge) {
   EXPECT_NE(none.err.find("--shards"), std::string::npos);
 }
 
+// --plot goes to the merge job (it was dropped: the merge made no heatmap); GNU parallel runs
+// only the shards, so there it is refused with the command that plots.
+TEST(Sweep, EmitKeepsThePlotForTheMerge) {
+  const fs::path dir = scratch();
+  const fs::path sweep = writeSweep(dir, smallSweep());
+  const Outcome r = rattleback(dir, "sweep " + sweep.string() + " --emit slurm --shards 2 -o " +
+                                    (dir / "t.csv").string() + " --plot " +
+                                    (dir / "t.png").string() + " --metric final_spin");
+  ASSERT_EQ(r.status, 0) << r.err;
+  // (Quoted twice: a word of the merge's --wrap, itself one shell word.)
+  EXPECT_NE(r.out.find("--plot '\\''" + (dir / "t.png").string() + "'\\'' --metric '\\''final_spin"),
+            std::string::npos) << r.out;
+  const Outcome p = rattleback(dir, "sweep " + sweep.string() + " --emit parallel --shards 2 --plot " +
+                                    (dir / "t.png").string());
+  EXPECT_EQ(p.status, 2);
+  EXPECT_NE(p.err.find("sweep merge OUT.csv SHARD… --plot PNG"), std::string::npos) << p.err;
+}
+
 // The commands that only simulate start without the rendering libraries (OSMesa and LLVM behind
 // it, EGL, libav): `rattleback` is not linked to them; rattleback-render is, beside it.
 TEST(Sweep, TheProgramThatSimulatesLoadsNoRenderingLibrary) {

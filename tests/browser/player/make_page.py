@@ -1,0 +1,85 @@
+#!/usr/bin/python3
+"""Writes a dev page for the report's 3D player into DIR, for check_player.py:
+
+  DIR/index.html     two players (the default scene and Kane & Levinson's) and one whose run
+                     is missing, with the report's markup
+  DIR/single.html    the default scene's player alone (keys work without focusing it)
+  DIR/missing.html   one player whose run is missing, and no run data at all
+  DIR/ID.player.js   each run's data (the C++ side's player_script, through the Python package)
+  DIR/ID.csv         each run's telemetry, full rate (to check the player against)
+  DIR/rattleback-player.js   the bundle (player/build.sh, or --bundle FILE copied)
+
+Usage: make_page.py DIR [--bundle FILE] [--python BUILD_PYTHON_DIR]
+The package is imported from --python, else $RATTLEBACK_PYTHON, else <repo>/build/python."""
+import argparse
+import html
+import pathlib
+import shutil
+import subprocess
+import sys
+
+REPO = pathlib.Path(__file__).resolve().parents[3]
+RUNS = [("rattleback", "scenes/rattleback.yaml"), ("kl", "scenes/kane-levinson.yaml")]
+MISSING = "no-such-run"
+
+
+def page(title, players, scripts):
+    body = "\n".join(players)
+    tags = "\n".join(f'<script src="{html.escape(s)}"></script>' for s in scripts)
+    return f"""<!DOCTYPE html>
+<html lang="en">
+<head><meta charset="utf-8"><title>{html.escape(title)}</title></head>
+<body>
+<h1>{html.escape(title)}</h1>
+{body}
+{tags}
+<script src="rattleback-player.js"></script>
+</body>
+</html>
+"""
+
+
+def player_div(run_id, heading):
+    return f'<h2>{html.escape(heading)}</h2>\n<div class="rb-player" data-run="{html.escape(run_id)}"></div>'
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("dir")
+    parser.add_argument("--bundle", help="a built rattleback-player.js to copy (default: build it)")
+    parser.add_argument("--python", help="the build's python folder (holds the rattleback package)")
+    args = parser.parse_args()
+    import os
+    python_dir = args.python or os.environ.get("RATTLEBACK_PYTHON") or str(REPO / "build" / "python")
+    sys.path.insert(0, python_dir)
+    import rattleback as rb
+
+    out = pathlib.Path(args.dir).resolve()
+    out.mkdir(parents=True, exist_ok=True)
+    for run_id, scene_file in RUNS:
+        scene = rb.Scene.from_file(str(REPO / scene_file))
+        run = rb.simulate(scene)
+        (out / f"{run_id}.player.js").write_text(rb._core.player_script(scene._loaded, run._run, run_id))
+        run.to_csv(str(out / f"{run_id}.csv"))
+    bundle = out / "rattleback-player.js"
+    if args.bundle:
+        shutil.copyfile(args.bundle, bundle)
+    else:
+        subprocess.run([str(REPO / "player" / "build.sh"), str(bundle)], check=True)
+    (out / "index.html").write_text(page(
+        "Rattleback player: dev page",
+        [player_div("rattleback", "Default scene"), player_div("kl", "Kane & Levinson"),
+         player_div(MISSING, "A run whose data is missing")],
+        # (no script for the missing run: a script that fails to load is the browser's own
+        # console error, not the player's)
+        [f"{run_id}.player.js" for run_id, _ in RUNS]))
+    (out / "single.html").write_text(page(
+        "Rattleback player: one run", [player_div("rattleback", "Default scene")], ["rattleback.player.js"]))
+    (out / "missing.html").write_text(page(
+        "Rattleback player: no run data", [player_div(MISSING, "A run whose data is missing")], []))
+    print(f"wrote {out / 'index.html'}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
