@@ -134,104 +134,66 @@ rb::Status writePlots(const std::string& dir, const std::string& scene,
 
 }  // namespace
 
+// The run's overrides as simulate's options give them.
+Overrides overridesOf(const SimulateArgs& args) {
+  Overrides o;
+  o.duration = args.duration;
+  o.spin = args.spin;
+  o.dt = args.dt;
+  o.tolerance = args.tolerance;
+  o.integrator = args.integrator;
+  return o;
+}
+
+// Why a run wrote nothing, and its exit status.
+int notWritten(const SimulateArgs& args, const tasks::Outcome& outcome) {
+  if (outcome.ending == tasks::Ending::Interrupted) {
+    std::cerr << args.scene << ": interrupted at t = " << outcome.t << " s; no telemetry written\n";
+    return interruptedStatus();  // the temporary files are removed unfinished
+  }
+  std::cerr << args.scene << ": the run stopped: " << outcome.message << ". No telemetry written\n";
+  return kDiverged;
+}
+
 int simulateCommand(const SimulateArgs& args) {
   installInterruptHandlers();
-  Overrides overrides;
-  overrides.duration = args.duration;
-  overrides.spin = args.spin;
-  overrides.dt = args.dt;
-  overrides.tolerance = args.tolerance;
-  overrides.integrator = args.integrator;
-  auto loaded = loadScene(args.scene, overrides);
-  if (!loaded) {
-    std::cerr << loaded.error().text() << "\n";
-    return kBadInput;
-  }
+  auto loaded = loadScene(args.scene, overridesOf(args));
+  if (!loaded) return fail(loaded);
   const sim::Model& model = loaded->model;
   const double rate = args.rate.value_or(tasks::kDefaultRate);
-  if (auto ok = tasks::checkRate(rate, model.duration); !ok) {
-    std::cerr << "--" << ok.error().text() << "\n";
-    return kBadInput;
-  }
+  if (auto ok = tasks::checkRate(rate, model.duration); !ok)
+    return fail(rb::Status::fail("--" + ok.error().text()));
   // "-o -" is standard output, as for most tools that write a table. When the table goes to
   // standard output (so also through /dev/stdout or a link to it), the summary goes to standard
   // error, so that the table can be piped on whole.
   std::string csv = args.output.empty() ? defaultOutput(args.scene) : args.output;
   if (csv == "-") csv = "/dev/stdout";
   const bool to_stdout = isStandardOutput(csv);
-  if (!args.plot_dir.empty()) {
-    if (auto plots = checkPlotFolder(args.plot_dir); !plots) {
-      std::cerr << plots.error().text() << "\n";
-      return kBadInput;
-    }
-  }
-  auto opened = tasks::AtomicOutput::open(csv);
-  if (!opened) {
-    std::cerr << opened.error().text() << "\n";
-    return kBadInput;
-  }
-  tasks::AtomicOutput& file = opened.value();
-  // The sidecar goes beside a file, not beside a device or descriptor written in place (such
-  // as /dev/stdout, even when the shell sends it to a file: /dev/stdout.json would be made).
-  const bool regular = !rb::outputPlace(csv).temporary.empty();
-  std::optional<tasks::AtomicOutput> meta;
-  if (regular) {
-    auto opened_meta = tasks::AtomicOutput::open(csv + ".json");
-    if (!opened_meta) {
-      std::cerr << opened_meta.error().text() << "\n";
-      return kBadInput;
-    }
-    meta.emplace(std::move(opened_meta).value());
-  }
+  if (!args.plot_dir.empty())
+    if (auto plots = checkPlotFolder(args.plot_dir); !plots) return fail(plots);
+  auto writer = tasks::TelemetryWriter::open(csv);
+  if (!writer) return fail(writer);
   if (args.verbose) describeModel(model, args.scene);
-  file.stream() << tasks::telemetryHeader();
-
-  const std::int64_t total = static_cast<std::int64_t>(model.duration * rate) + 1;
-  Progress progress("simulate", total, !args.quiet);
+  Progress progress("simulate", static_cast<std::int64_t>(model.duration * rate) + 1, !args.quiet);
   std::vector<sim::Telemetry> kept;  // for the plots
   tasks::SimulateOptions options;
   options.rate = rate;
   options.cancelled = [] { return interruptSignal() != 0; };
-  std::int64_t rows = 0;
   options.each = [&](const sim::Telemetry& sample) {
-    tasks::writeTelemetryRow(file.stream(), sample);
+    writer->row(sample);
     if (!args.plot_dir.empty()) kept.push_back(sample);
-    progress.update(++rows);
+    progress.update(writer->rows());
   };
   const tasks::SimulateResult run = tasks::simulate(model, options);
   progress.finish();
-  const sim::RunSummary& summary = run.summary;
-
-  if (interruptSignal()) {
-    std::cerr << args.scene << ": interrupted at t = " << summary.last.t
-              << " s; no telemetry written\n";
-    return interruptedStatus();  // the temporary files are removed unfinished
-  }
-  if (summary.divergence) {
-    std::cerr << args.scene << ": the run stopped: " << *summary.divergence
-              << ". No telemetry written\n";
-    return kDiverged;  // `file` is removed unfinished
-  }
-  if (meta)
-    meta->stream() << tasks::telemetrySidecar(args.scene, model, rate, summary, rows).dump(2)
-                   << "\n";
-  for (tasks::AtomicOutput* out : {&file, meta ? &*meta : nullptr}) {
-    if (!out) continue;
-    if (auto e = out->commit(); !e) {
-      std::cerr << e.error().text() << "\n";
-      return kBadInput;
-    }
-  }
-  if (!args.plot_dir.empty()) {
-    if (auto e = writePlots(args.plot_dir, args.scene, kept); !e) {
-      std::cerr << e.error().text() << "\n";
-      return kBadInput;
-    }
-  }
+  if (run.outcome.ending != tasks::Ending::Completed) return notWritten(args, run.outcome);
+  if (auto e = writer->commit(args.scene, model, rate, run.summary); !e) return fail(e);
+  if (!args.plot_dir.empty())
+    if (auto e = writePlots(args.plot_dir, args.scene, kept); !e) return fail(e);
+  if (args.quiet) return kOk;
   std::FILE* report = to_stdout ? stderr : stdout;
-  if (!args.quiet)
-    printSummary(report, args, model, summary, to_stdout ? "standard output" : csv, rows);
-  if (!args.quiet && !args.plot_dir.empty())
+  printSummary(report, args, model, run.summary, to_stdout ? "standard output" : csv, run.rows);
+  if (!args.plot_dir.empty())
     std::fprintf(report, "plots           %s/%s-{energy,spin,tilt,normal}.png\n",
                  args.plot_dir.c_str(), std::filesystem::path(args.scene).stem().string().c_str());
   return kOk;

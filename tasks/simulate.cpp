@@ -110,29 +110,39 @@ nlohmann::json telemetrySidecar(const std::string& scene, const sim::Model& mode
   return j;
 }
 
-rb::Status writeTelemetry(const std::string& path, const std::string& scene,
-                          const sim::Model& model, double rate, const sim::RunSummary& run,
-                          const std::vector<sim::Telemetry>& samples) {
-  if (auto made = makeParentFolder(path); !made) return made;
+rb::Result<TelemetryWriter> TelemetryWriter::open(const std::string& path) {
+  if (auto made = makeParentFolder(path); !made) return made.error();
   auto csv = AtomicOutput::open(path);
   if (!csv) return csv.error();
-  const bool regular = !rb::outputPlace(path).temporary.empty();
   std::optional<AtomicOutput> meta;
-  if (regular) {
+  if (!rb::outputPlace(path).temporary.empty()) {
     auto opened = AtomicOutput::open(path + ".json");
     if (!opened) return opened.error();
     meta.emplace(std::move(opened).value());
   }
   csv->stream() << telemetryHeader();
-  for (const sim::Telemetry& s : samples) writeTelemetryRow(csv->stream(), s);
-  if (meta)
-    meta->stream() << telemetrySidecar(scene, model, rate, run,
-                                       static_cast<std::int64_t>(samples.size()))
-                          .dump(2)
-                   << "\n";
-  if (auto e = csv->commit(); !e) return e;
-  if (meta) return meta->commit();
-  return {};
+  return TelemetryWriter(std::move(csv).value(), std::move(meta));
+}
+
+void TelemetryWriter::row(const sim::Telemetry& sample) {
+  writeTelemetryRow(csv_.stream(), sample);
+  ++rows_;
+}
+
+rb::Status TelemetryWriter::commit(const std::string& scene, const sim::Model& model,
+                                   double rate, const sim::RunSummary& run) {
+  if (meta_) meta_->stream() << telemetrySidecar(scene, model, rate, run, rows_).dump(2) << "\n";
+  if (auto e = csv_.commit(); !e) return e;
+  return meta_ ? meta_->commit() : rb::Status();
+}
+
+rb::Status writeTelemetry(const std::string& path, const std::string& scene,
+                          const sim::Model& model, double rate, const sim::RunSummary& run,
+                          const std::vector<sim::Telemetry>& samples) {
+  auto writer = TelemetryWriter::open(path);
+  if (!writer) return writer.error();
+  for (const sim::Telemetry& s : samples) writer->row(s);
+  return writer->commit(scene, model, rate, run);
 }
 
 }  // namespace tasks

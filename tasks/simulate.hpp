@@ -7,6 +7,7 @@
 #include <functional>
 #include <iosfwd>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <span>
 #include <stop_token>
 #include <string>
@@ -15,6 +16,7 @@
 #include "sim/model.hpp"
 #include "sim/rollout.hpp"
 #include "tasks/outcome.hpp"
+#include "tasks/output.hpp"
 #include "util/result.hpp"
 
 namespace tasks {
@@ -61,6 +63,26 @@ SimulateResult simulate(const sim::Model& model, const SimulateOptions& options)
 /// what the run found.
 nlohmann::json telemetrySidecar(const std::string& scene, const sim::Model& model, double rate,
                                 const sim::RunSummary& run, std::int64_t rows);
+
+/// The CSV and its sidecar as a run goes: each appears whole at commit() or not at all (no
+/// sidecar beside a device such as /dev/stdout, even when the shell sends it to a file).
+class TelemetryWriter {
+ public:
+  static rb::Result<TelemetryWriter> open(const std::string& path);
+  TelemetryWriter(TelemetryWriter&&) noexcept = default;
+  void row(const sim::Telemetry& sample);
+  std::int64_t rows() const { return rows_; }
+  /// Writes the sidecar and puts both files in place.
+  rb::Status commit(const std::string& scene, const sim::Model& model, double rate,
+                    const sim::RunSummary& run);
+
+ private:
+  TelemetryWriter(AtomicOutput csv, std::optional<AtomicOutput> meta)
+      : csv_(std::move(csv)), meta_(std::move(meta)) {}
+  AtomicOutput csv_;
+  std::optional<AtomicOutput> meta_;
+  std::int64_t rows_ = 0;
+};
 
 /// Writes the samples as CSV at `path` and the sidecar at `path`.json, each whole or not at all
 /// (no sidecar for a device such as /dev/stdout).
