@@ -1,0 +1,321 @@
+#include "tasks/bench.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iterator>
+
+#include "scene/loader.hpp"
+#include "sim/compile.hpp"
+#include "sim/rollout.hpp"
+
+namespace tasks {
+namespace {
+
+// Spin samples every 4 ms (at exact times, whatever the step), so runs compare sample by sample.
+constexpr double kSampleRate = 250;  // Hz
+// Wall time one run may take, s: a rung past it (an adaptive ladder on a tumbling body with
+// Coulomb friction takes millions of steps at tight tolerances) stops there, is listed with the
+// reason, and the ladder's tighter rungs are skipped.
+constexpr double kRunBudget = 10;
+// The adaptive ladder (dopri5) when --tolerances is not given: 1e-4 … 1e-10.
+constexpr double kTolerances[] = {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10};
+// The points model visits every bottom point each step; past this many it is left out unless
+// asked for (the default body's 0.025 cm grid has 121076).
+constexpr std::size_t kMaxBenchPoints = 10000;
+// A penalty model benched on a scene that has no floor constants gets SPEC's stiffness and a
+// damping ratio ζ = c / (2 sqrt(kM)) of 0.06 (the default body's c = 4 N s/m).
+constexpr double kDefaultStiffness = 2.0e4;
+constexpr double kDefaultZeta = 0.06;
+
+const char* kIntegrators[] = {"euler", "symplectic", "rk4", "dopri5"};
+
+// The coarsest step of each model's ladder: rolling has no contact spring (rk4 is converged
+// to 4 digits at 1 ms); the penalty models need steps near 1/ω of their floor and, with
+// friction, of its slip regularisation.
+double topStep(const std::string& model) {
+  if (model == "rolling" || model == "auto") return 2e-3;  // auto slides in steps of its own
+  if (model == "smooth") return 1.6e-4;
+  return 4e-5;
+}
+
+struct Trace {
+  std::optional<std::string> failure;  ///< refused by compile or stopped by run
+  bool over_budget = false;            ///< stopped at the budget of one run (kRunBudget)
+  std::string brief;                   ///< the failure in a few words, for the table
+  std::vector<sim::Telemetry> samples;
+  std::optional<double> reversal;
+  double wall_per_simulated = 0, us_per_step = 0;
+  std::int64_t steps = 0, rejected = 0;
+  int switches = 0;  ///< auto: changes between rolling and smooth
+};
+
+// One run of the shared body: compileRun only (the body was built once for the scene).
+Trace runOnce(const sim::SceneSpec& spec, const std::shared_ptr<const sim::Body>& body) {
+  Trace trace;
+  auto compiled = sim::compileRun(spec, body);
+  if (!compiled) {
+    trace.failure = "refused: " + compiled.error().text();
+    trace.brief = "refused: " + compiled.error().key + " too large for the contact";
+    return trace;
+  }
+  const sim::Model& model = compiled.value();
+  sim::Rollout rollout(model);
+  for (double t : sim::sampleTimes(model.duration, kSampleRate)) {
+    if (!rollout.advanceTo(t)) break;
+    trace.samples.push_back(rollout.sampleAt(t));
+    if (rollout.summary().wall_s > kRunBudget) break;
+  }
+  const sim::RunSummary& summary = rollout.summary();
+  trace.steps = summary.steps;
+  trace.rejected = summary.rejected;
+  trace.switches = summary.switches;
+  if (!summary.divergence && summary.wall_s > kRunBudget && rollout.current().t < model.duration) {
+    char text[128];
+    std::snprintf(text, sizeof text, "stopped at %.3g s: over the %g s budget of one run",
+                  rollout.current().t, kRunBudget);
+    trace.failure = trace.brief = text;
+    trace.over_budget = true;
+  } else if (summary.divergence) {
+    trace.failure = "stopped: " + *summary.divergence;
+    const char* brief = "NaN or infinity";
+    if (summary.stop && summary.stop->reason == sim::StopReason::EnergyGain)
+      brief = "energy grew beyond the bound";
+    if (summary.stop && summary.stop->reason == sim::StopReason::OnRim)
+      brief = "tipped onto the rim of its top";
+    char text[96];
+    std::snprintf(text, sizeof text, "stopped at %.3g s: %s", rollout.current().t, brief);
+    trace.brief = text;
+  }
+  trace.reversal = summary.first_reversal_s;
+  trace.wall_per_simulated = summary.wall_s / rollout.current().t;
+  trace.us_per_step = 1e6 * summary.wall_s / std::max<std::int64_t>(1, summary.steps);
+  return trace;
+}
+
+/// max |n − n_ref| over the samples both runs share, rad/s.
+std::optional<double> maxSpinError(const Trace& a, const Trace& ref) {
+  if (a.failure || ref.failure || a.samples.empty()) return std::nullopt;
+  double worst = 0;
+  const std::size_t n = std::min(a.samples.size(), ref.samples.size());
+  for (std::size_t i = 0; i < n; ++i) worst = std::max(worst, std::abs(a.samples[i].spin - ref.samples[i].spin));
+  return worst;
+}
+
+std::optional<double> reversalError(const Trace& a, const Trace& ref) {
+  if (a.failure || ref.failure || !a.reversal || !ref.reversal) return std::nullopt;
+  return std::abs(*a.reversal - *ref.reversal);
+}
+
+std::string show(std::optional<double> v, const char* format = "%.3g") {
+  if (!v) return "";
+  char text[32];
+  std::snprintf(text, sizeof text, format, *v);
+  return text;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+// The same scene without anything that removes energy.
+sim::SceneSpec conservative(sim::SceneSpec spec) {
+  spec.contact.friction = 0;
+  spec.contact.damping = 0;
+  spec.contact.air_drag = 0;
+  return spec;
+}
+
+double energyDrift(const Trace& t) {
+  double worst = 0;
+  const double e0 = t.samples.front().energy;
+  for (const sim::Telemetry& s : t.samples) worst = std::max(worst, std::abs(s.energy - e0) / std::abs(e0));
+  return worst;
+}
+
+sim::SceneSpec variant(const sim::SceneSpec& base, const std::string& model) {
+  sim::SceneSpec spec = base;
+  spec.contact.model = model;
+  if (model != "rolling" && std::isnan(spec.contact.stiffness)) {
+    spec.contact.stiffness = kDefaultStiffness;
+    spec.contact.damping = 2 * kDefaultZeta * std::sqrt(kDefaultStiffness * spec.body.mass);
+  }
+  if (model == "rolling") spec.initial.height = 0;
+  return spec;
+}
+
+Trace reference(const BenchScene& scene, const sim::SceneSpec& base, const std::string& model,
+                int rungs) {
+  sim::SceneSpec spec = variant(base, model);
+  spec.simulation.integrator = "rk4";
+  spec.simulation.dt = topStep(model) / std::pow(2.0, rungs - 1) / 16;
+  spec.simulation.tolerance = sim::kUnset;
+  return runOnce(spec, scene.body);
+}
+
+// The models a scene is benched with: those asked for, else all that apply.
+std::vector<std::string> modelsOf(const BenchScene& scene, const BenchOptions& options) {
+  if (!options.models.empty()) return options.models;
+  std::vector<std::string> models;
+  const std::size_t bottom = scene.body->bottom.size();
+  if (scene.spec.contact.model == "points" || bottom <= kMaxBenchPoints) models.push_back("points");
+  for (const char* m : {"smooth", "rolling", "auto"}) models.push_back(m);
+  if (bottom > kMaxBenchPoints && scene.spec.contact.model != "points" && options.note)
+    options.note("(" + scene.name + ": points model left out: " + std::to_string(bottom) +
+                 " bottom points; --models points adds it)");
+  return models;
+}
+
+// The references a rung's errors are measured against.
+struct References {
+  const Trace& own;
+  const Trace& rolling;
+};
+
+// One rung: `repeats` runs of `spec`, the errors of the first against the references, and the
+// energy drift of its conservative variant.
+BenchRow measureRung(BenchRow row, const sim::SceneSpec& spec, const BenchScene& scene,
+                     const BenchOptions& options, const References& ref, bool& over_budget) {
+  std::vector<double> costs;
+  Trace first;
+  for (int r = 0; r < options.repeats; ++r) {
+    Trace t = runOnce(spec, scene.body);
+    if (t.over_budget) over_budget = true;
+    if (t.failure && t.samples.empty()) {  // refused: nothing ran
+      row.status = *t.failure;
+      row.brief = t.brief;
+      return row;
+    }
+    costs.push_back(t.wall_per_simulated);
+    if (r == 0) first = std::move(t);
+    if (first.failure) break;  // a run that stops stops every time
+  }
+  row.cost_median = median(costs);
+  row.cost_min = *std::min_element(costs.begin(), costs.end());
+  row.cost_max = *std::max_element(costs.begin(), costs.end());
+  row.us_per_step = first.us_per_step;
+  row.steps = first.steps;
+  row.rejected = first.rejected;
+  if (row.model == "auto") row.switches = first.switches;
+  if (first.failure) {
+    row.status = *first.failure;
+    row.brief = first.brief;
+  }
+  row.reversal = first.failure ? std::nullopt : first.reversal;
+  row.reversal_error = reversalError(first, ref.own);
+  row.reversal_error_rolling = reversalError(first, ref.rolling);
+  row.spin_error = maxSpinError(first, ref.own);
+  row.spin_error_rolling = maxSpinError(first, ref.rolling);
+  const Trace lossless = runOnce(conservative(spec), scene.body);
+  if (!lossless.failure) row.energy_drift = energyDrift(lossless);
+  return row;
+}
+
+// The ladder of one model × integrator; false when cancelled.
+bool ladder(const BenchScene& scene, const sim::SceneSpec& base, const std::string& model,
+            const std::string& integrator, const BenchOptions& options, const References& ref,
+            std::vector<BenchRow>& rows) {
+  const bool adaptive = sim::isAdaptive(*rb::parseName<sim::Integrator>(integrator));
+  const std::vector<double> tolerances =
+      options.tolerances.empty() ? std::vector<double>(std::begin(kTolerances), std::end(kTolerances))
+                                 : options.tolerances;
+  const int rungs = adaptive ? static_cast<int>(tolerances.size()) : options.rungs;
+  bool over_budget = false;
+  for (int rung = 0; rung < rungs; ++rung) {
+    if (options.cancelled && options.cancelled()) return false;
+    BenchRow row;
+    row.scene = scene.name;
+    row.model = model;
+    row.integrator = integrator;
+    sim::SceneSpec spec = variant(base, model);
+    spec.simulation.integrator = integrator;
+    row.dt = adaptive ? NAN : topStep(model) / std::pow(2.0, rung);
+    row.tolerance = adaptive ? tolerances[rung] : NAN;
+    spec.simulation.dt = adaptive ? sim::kUnset : row.dt;
+    spec.simulation.tolerance = adaptive ? row.tolerance : sim::kUnset;
+    if (over_budget)
+      row.status = row.brief = "skipped: the rung before ran over the budget of one run";
+    else
+      row = measureRung(row, spec, scene, options, ref, over_budget);
+    if (options.row) options.row(row);
+    rows.push_back(row);
+  }
+  return true;
+}
+
+}  // namespace
+
+rb::Result<BenchScene> loadBenchScene(const std::string& path) {
+  auto loaded = scene::loadFile(path);
+  if (!loaded) return loaded.error();
+  auto model = scene::loadModel(loaded.value());
+  if (!model) return model.error();
+  return BenchScene{std::filesystem::path(path).filename().string(), loaded->spec, model->body};
+}
+
+rb::Status checkBenchOptions(const BenchOptions& o) {
+  for (const std::string& m : o.models)
+    if (!rb::parseName<sim::ContactModel>(m))
+      return rb::Status::fail("--models: expected " + rb::choices<sim::ContactModel>() + ", not '" + m + "'");
+  for (const std::string& i : o.integrators)
+    if (!rb::parseName<sim::Integrator>(i))
+      return rb::Status::fail("--integrators: expected " + rb::choices<sim::Integrator>() + ", not '" + i + "'");
+  for (double tol : o.tolerances)
+    if (!(tol >= 1e-14 && tol <= 0.1))
+      return rb::Status::fail("--tolerances: each must lie within 1e-14 … 0.1, not " + show(tol, "%g"));
+  if (!(o.duration > 0) || !std::isfinite(o.duration) || o.repeats < 1 || o.rungs < 1 || o.rungs > 12)
+    return rb::Status::fail("bench: --duration must be > 0, --repeats ≥ 1 and --rungs within 1 … 12");
+  return {};
+}
+
+bool benchScene(const BenchScene& scene, const BenchOptions& options, std::vector<BenchRow>& rows) {
+  sim::SceneSpec base = scene.spec;
+  base.simulation.duration = options.duration;
+  const std::vector<std::string> integrators =
+      options.integrators.empty() ? std::vector<std::string>(std::begin(kIntegrators), std::end(kIntegrators))
+                                  : options.integrators;
+  const Trace rolling_reference = reference(scene, base, "rolling", options.rungs);
+  for (const std::string& model : modelsOf(scene, options)) {
+    const Trace own = model == "rolling" ? rolling_reference : reference(scene, base, model, options.rungs);
+    if (own.failure && options.note) options.note(model + " reference (rk4) " + own.brief);
+    for (const std::string& integrator : integrators) {
+      // The points model's thousands of stiff springs leave adaptive steps nothing to gain;
+      // its dopri5 rows only when asked for by name.
+      const bool adaptive = sim::isAdaptive(*rb::parseName<sim::Integrator>(integrator));
+      if (adaptive && model == "points" && options.integrators.empty()) continue;
+      if (!ladder(scene, base, model, integrator, options, {own, rolling_reference}, rows))
+        return false;
+    }
+  }
+  return true;
+}
+
+std::string benchCsvHeader() {
+  // The header is the first line (plain CSV readers take it as such); what the columns mean is
+  // in the README ("bench").
+  return "scene,model,integrator,dt,tolerance,steps,rejected,status,cost_median,cost_min,"
+         "cost_max,us_per_step,reversal_s,reversal_error_s,reversal_error_vs_rolling_s,"
+         "max_spin_error,max_spin_error_vs_rolling,energy_drift,switches\n";
+}
+
+std::string benchCsvLine(const BenchRow& r) {
+  std::string status = r.status;
+  std::replace(status.begin(), status.end(), ',', ';');
+  char line[1024];
+  std::snprintf(line, sizeof line,
+                "%s,%s,%s,%s,%s,%lld,%lld,\"%s\",%.6g,%.6g,%.6g,%.6g,%s,%s,%s,%s,%s,%s,%s\n",
+                r.scene.c_str(), r.model.c_str(), r.integrator.c_str(),
+                std::isnan(r.dt) ? "" : show(r.dt, "%.6g").c_str(),
+                std::isnan(r.tolerance) ? "" : show(r.tolerance, "%.3g").c_str(),
+                static_cast<long long>(r.steps), static_cast<long long>(r.rejected), status.c_str(),
+                r.cost_median, r.cost_min, r.cost_max, r.us_per_step,
+                show(r.reversal, "%.9g").c_str(), show(r.reversal_error, "%.6g").c_str(),
+                show(r.reversal_error_rolling, "%.6g").c_str(), show(r.spin_error, "%.6g").c_str(),
+                show(r.spin_error_rolling, "%.6g").c_str(), show(r.energy_drift, "%.6g").c_str(),
+                show(r.switches, "%.0f").c_str());
+  return line;
+}
+
+}  // namespace tasks

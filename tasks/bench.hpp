@@ -1,0 +1,66 @@
+// `bench`'s measurements (README "bench"): for each contact model × integrator × step of a ladder
+// of halvings (or tolerances for dopri5), a scene runs `repeats` times; the cost is the median
+// wall time per simulated second, and the errors are measured against a reference: the same
+// model with rk4 at a step 16× below the ladder's finest, and the rolling model's reference
+// where the body has a smooth surface. A conservative variant (no friction, no dampers, no drag)
+// gives the energy drift.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sim/model.hpp"
+#include "sim/spec.hpp"
+#include "util/result.hpp"
+
+namespace tasks {
+
+/// One rung of a ladder and what it measured.
+struct BenchRow {
+  std::string scene, model, integrator;
+  double dt = 0;           ///< fixed step, s (NaN for adaptive rows)
+  double tolerance = NAN;  ///< adaptive rows
+  std::int64_t steps = 0, rejected = 0;
+  std::optional<double> switches;  ///< auto rows: changes of contact model
+  std::string status = "ok";  ///< or the failure in full (CSV)
+  std::string brief;          ///< the failure in a few words (table)
+  double cost_median = NAN, cost_min = NAN, cost_max = NAN, us_per_step = NAN;
+  std::optional<double> reversal, reversal_error, reversal_error_rolling;
+  std::optional<double> spin_error, spin_error_rolling, energy_drift;
+};
+
+/// A scene to bench: its spec and the body compiled once for every run.
+struct BenchScene {
+  std::string name;  ///< the file's name
+  sim::SceneSpec spec;
+  std::shared_ptr<const sim::Body> body;
+};
+rb::Result<BenchScene> loadBenchScene(const std::string& path);
+
+struct BenchOptions {
+  double duration = 3;  ///< simulated seconds per run
+  int repeats = 3;
+  int rungs = 5;
+  std::vector<std::string> models;       ///< empty: all that apply
+  std::vector<std::string> integrators;  ///< empty: all
+  std::vector<double> tolerances;        ///< empty: 1e-4 … 1e-10
+  std::function<bool()> cancelled;       ///< asked before each rung (may be empty)
+  std::function<void(const BenchRow&)> row;         ///< each row as it is measured
+  std::function<void(const std::string&)> note;     ///< a line worth saying (may be empty)
+};
+
+/// Checks the options: known models and integrators, tolerances within 1e-14 … 0.1, duration
+/// > 0, repeats ≥ 1, rungs 1 … 12.
+rb::Status checkBenchOptions(const BenchOptions& options);
+
+/// Measures every rung for one scene, appending to `rows`; false when cancelled.
+bool benchScene(const BenchScene& scene, const BenchOptions& options, std::vector<BenchRow>& rows);
+
+/// The CSV's header line and one row (with their newlines).
+std::string benchCsvHeader();
+std::string benchCsvLine(const BenchRow& r);
+
+}  // namespace tasks
