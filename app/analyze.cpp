@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <optional>
 #include <vector>
 #include <iostream>
@@ -9,6 +10,7 @@
 #include "app/commands.hpp"
 #include "tasks/scene_args.hpp"
 #include "tasks/analysis.hpp"
+#include "tasks/output.hpp"
 #include "sim/analysis.hpp"
 #include "sim/stability.hpp"
 #include "sim/switching.hpp"
@@ -24,124 +26,141 @@ Eigen::Vector3d clean(const Eigen::Vector3d& v, double scale) {
 }
 
 
-void printTheory(const sim::Model& model, double spin) {
+void printTheory(std::FILE* out, const sim::Model& model, double spin) {
   const double unit = model.length_unit;
   const sim::Rest rest = sim::restOf(model);
-  std::printf("rest contact     CM %.4g above it; radii of curvature %.4g and %.4g "
+  std::fprintf(out, "rest contact     CM %.4g above it; radii of curvature %.4g and %.4g "
               "(file units)\n",
               rest.h / unit, rest.radii(0) / unit, rest.radii(1) / unit);
   if (rest.stable) {
-    std::printf("rest             stable upright (h below both radii)\n");
+    std::fprintf(out, "rest             stable upright (h below both radii)\n");
   } else {
-    std::printf("WARNING: the body cannot stand upright: its CM is %.4g above the contact, "
+    std::fprintf(out, "WARNING: the body cannot stand upright: its CM is %.4g above the contact, "
                 "above the radius of curvature %.4g (needs h below both radii)\n",
                 rest.h / unit, rest.radii(0) / unit);
   }
   const sim::Linearisation at_rest = sim::linearise(model, 0);
-  std::printf("at rest          roll %.4g Hz, pitch %.4g Hz (linearised rolling model)\n",
+  std::fprintf(out, "at rest          roll %.4g Hz, pitch %.4g Hz (linearised rolling model)\n",
               at_rest.roll_hz, at_rest.pitch_hz);
   const sim::FirstOrder first = sim::firstOrderGrowth(model);
-  std::printf("first order      growth rate = n × (roll %+.4g, pitch %+.4g) 1/rad "
+  std::fprintf(out, "first order      growth rate = n × (roll %+.4g, pitch %+.4g) 1/rad "
               "(Walker, Bondi; seed eqs. 18–20)\n",
               first.roll, first.pitch);
-  std::printf("growth rates     exact linearised rolling model, 1/s:\n");
-  std::printf("                 %8s %10s %10s\n", "n rad/s", "roll", "pitch");
+  std::fprintf(out, "growth rates     exact linearised rolling model, 1/s:\n");
+  std::fprintf(out, "                 %8s %10s %10s\n", "n rad/s", "roll", "pitch");
   std::vector<double> spins = {-10, -5, -2, -1, 1, 2, 5, 10};
   if (std::find(spins.begin(), spins.end(), spin) == spins.end()) spins.push_back(spin);
   std::sort(spins.begin(), spins.end());
   for (double n : spins) {
     const sim::Linearisation l = sim::linearise(model, n);
-    std::printf("                 %8.3g %+10.4f %+10.4f%s\n", n, l.roll_growth, l.pitch_growth,
+    std::fprintf(out, "                 %8.3g %+10.4f %+10.4f%s\n", n, l.roll_growth, l.pitch_growth,
                 n == spin ? "   <- --spin" : "");
   }
   const sim::Linearisation l = sim::linearise(model, spin);
-  std::printf("eigenvalues      at n = %g rad/s:", spin);
+  std::fprintf(out, "eigenvalues      at n = %g rad/s:", spin);
   double largest = 0;
   for (const auto& lambda : l.eigenvalues) largest = std::max(largest, std::abs(lambda));
   for (const auto& lambda : l.eigenvalues)
-    std::printf(" %.4g%+.4gi", clean(lambda.real(), largest), clean(lambda.imag(), largest));
-  std::printf("\n");
+    std::fprintf(out, " %.4g%+.4gi", clean(lambda.real(), largest), clean(lambda.imag(), largest));
+  std::fprintf(out, "\n");
   const sim::Direction preferred = sim::preferredDirection(model, spin);
-  std::printf("preferred        %s (%s seen from above); spun the other way it is predicted to "
+  std::fprintf(out, "preferred        %s (%s seen from above); spun the other way it is predicted to "
               "reverse\n",
               std::string(rb::nameOf(preferred)).c_str(),
               preferred == sim::Direction::Ccw ? "counter-clockwise" : "clockwise");
 }
 
-void printText(const std::string& scene, const sim::Model& model) {
+void printText(std::FILE* out, const std::string& scene, const sim::Model& model) {
   const sim::MassProperties& m = model.body->mass_properties;
   const double unit = model.length_unit;
   const sim::ContactStability stability = sim::contactStability(model);
   const std::size_t top = model.body->top.size();
   const std::size_t bottom = model.body->bottom.size();
-  std::printf("scene            %s (lengths below in the file's unit, %g m)\n", scene.c_str(),
+  std::fprintf(out, "scene            %s (lengths below in the file's unit, %g m)\n", scene.c_str(),
               unit);
   if (model.body->surface.kind == sim::Surface::Kind::Paraboloid)
-    std::printf("points           %lld in all, %zu on the surface (%zu top, %zu bottom)\n",
+    std::fprintf(out, "points           %lld in all, %zu on the surface (%zu top, %zu bottom)\n",
                 static_cast<long long>(m.points), top + bottom, top, bottom);
   else
-    std::printf("points           %zu drawn on the surface (%zu top, %zu bottom); the mass "
+    std::fprintf(out, "points           %zu drawn on the surface (%zu top, %zu bottom); the mass "
                 "properties are the scene's\n",
                 top + bottom, top, bottom);
-  std::printf("mass properties  %s\n", tasks::massSourceText(*model.body).c_str());
-  std::printf("mass             %g kg\n", m.mass);
+  std::fprintf(out, "mass properties  %s\n", tasks::massSourceText(*model.body).c_str());
+  std::fprintf(out, "mass             %g kg\n", m.mass);
   const Eigen::Vector3d com = clean(m.com, model.body->surface.footprintHalf().maxCoeff()) / unit;
-  std::printf("centre of mass   (%.6g, %.6g, %.6g) in the shape's frame\n", com.x(), com.y(),
+  std::fprintf(out, "centre of mass   (%.6g, %.6g, %.6g) in the shape's frame\n", com.x(), com.y(),
               com.z());
-  std::printf("inertia about the CM, geometric axes [kg m^2]\n");
+  std::fprintf(out, "inertia about the CM, geometric axes [kg m^2]\n");
   // Products of inertia a symmetric body does not have come out of cubature as 1e-19 of the
   // moments, not 0: shown as the 0 they are.
   const double moment = m.inertia.cwiseAbs().maxCoeff();
   for (int i = 0; i < 3; ++i)
-    std::printf("                 [% .6e  % .6e  % .6e]\n", clean(m.inertia(i, 0), moment),
+    std::fprintf(out, "                 [% .6e  % .6e  % .6e]\n", clean(m.inertia(i, 0), moment),
                 clean(m.inertia(i, 1), moment), clean(m.inertia(i, 2), moment));
-  std::printf("principal        %.6e  %.6e  %.6e kg m^2, along (columns)\n", m.principal(0),
+  std::fprintf(out, "principal        %.6e  %.6e  %.6e kg m^2, along (columns)\n", m.principal(0),
               m.principal(1), m.principal(2));
   for (int i = 0; i < 3; ++i)
-    std::printf("                 [% .6f  % .6f  % .6f]\n", m.axes(i, 0), m.axes(i, 1),
+    std::fprintf(out, "                 [% .6f  % .6f  % .6f]\n", m.axes(i, 0), m.axes(i, 1),
                 m.axes(i, 2));
-  std::printf("misalignment     %+.4f deg (least-inertia axis from the long axis, "
+  std::fprintf(out, "misalignment     %+.4f deg (least-inertia axis from the long axis, "
               "counter-clockwise seen from above)\n",
               m.misalignment_deg);
   if (model.contact.model == sim::ContactModel::Rolling)
-    std::printf("contact          rolling: no contact spring, so no step limit from the floor\n");
+    std::fprintf(out, "contact          rolling: no contact spring, so no step limit from the floor\n");
   else if (model.contact.model == sim::ContactModel::Auto && sim::isAdaptive(model.integrator))
-    std::printf("contact          auto: rolls while the floor can give the force rolling needs, "
+    std::fprintf(out, "contact          auto: rolls while the floor can give the force rolling needs, "
                 "else slides (smooth: stiffest mode %.4g rad/s, damping ratio %.3g); the "
                 "adaptive integrator chooses its steps\n",
                 stability.omega, stability.zeta);
   else if (model.contact.model == sim::ContactModel::Auto)
-    std::printf("contact          auto: rolls while the floor can give the force rolling needs, "
+    std::fprintf(out, "contact          auto: rolls while the floor can give the force rolling needs, "
                 "else slides (smooth: stiffest mode %.4g rad/s, damping ratio %.3g) in steps of "
                 "%.3g s within each step\n",
                 stability.omega, stability.zeta, std::min(sim::smoothStep(model), model.dt));
   else if (sim::isAdaptive(model.integrator))
-    std::printf("contact          stiffest mode at rest %.4g rad/s (damping ratio %.3g); the "
+    std::fprintf(out, "contact          stiffest mode at rest %.4g rad/s (damping ratio %.3g); the "
                 "adaptive integrator chooses its steps\n",
                 stability.omega, stability.zeta);
   else
-    std::printf("contact          stiffest mode at rest %.4g rad/s (damping ratio %.3g); "
+    std::fprintf(out, "contact          stiffest mode at rest %.4g rad/s (damping ratio %.3g); "
                 "largest stable dt %.3g s with %s (the scene's integrator)\n",
                 stability.omega, stability.zeta, stability.largest_step,
                 std::string(rb::nameOf(model.integrator)).c_str());
+}
+
+// The analysis as text or JSON, into `out`.
+void writeAnalysis(std::FILE* out, const AnalyzeArgs& args, const sim::Model& model) {
+  const double spin = tasks::analysisSpin(model, args.spin);
+  if (args.json) {
+    std::fprintf(out, "%s\n", tasks::analysisJson(model, spin).dump(2).c_str());
+  } else {
+    printText(out, args.scene, model);
+    printTheory(out, model, spin);
+  }
 }
 
 }  // namespace
 
 int analyzeCommand(const AnalyzeArgs& args) {
   auto loaded = loadScene(args.scene, {});
-  if (!loaded) {
-    std::cerr << loaded.error().text() << "\n";
-    return kBadInput;
+  if (!loaded) return fail(loaded);
+  if (args.output.empty() || args.output == "-") {
+    writeAnalysis(stdout, args, loaded->model);
+    return kOk;
   }
-  const sim::Model& model = loaded->model;
-  const double spin = tasks::analysisSpin(model, args.spin);
-  if (args.json) {
-    std::printf("%s\n", tasks::analysisJson(model, spin).dump(2).c_str());
-  } else {
-    printText(args.scene, model);
-    printTheory(model, spin);
-  }
+  // -o: whole or not at all, and listed in the folder's manifest.
+  if (auto made = tasks::makeParentFolder(args.output); !made) return fail(made);
+  auto file = tasks::AtomicOutput::open(args.output);
+  if (!file) return fail(file);
+  char* text = nullptr;
+  std::size_t size = 0;
+  std::FILE* memory = ::open_memstream(&text, &size);
+  writeAnalysis(memory, args, loaded->model);
+  std::fclose(memory);
+  file->stream().write(text, static_cast<std::streamsize>(size));
+  std::free(text);
+  if (auto e = file->commit(); !e) return fail(e);
+  record({{args.output, tasks::OutputKind::Analysis, sceneName(args.scene), args.json ? "json" : "text", {}, {}}});
   return kOk;
 }
 

@@ -167,6 +167,8 @@ int benchCommand(const BenchArgs& args) {
   for (const tasks::BenchRow& r : rows) csv->stream() << tasks::benchCsvLine(r);
   if (auto e = csv->commit(); !e) return fail(e);
   if (auto e = plotBench(png_path, rows, names); !e) return fail(e);
+  record({{csv_path, tasks::OutputKind::Bench, "bench", "", {}, {}},
+          {png_path, tasks::OutputKind::BenchPlot, "bench", "", {}, {}}});
   if (!args.quiet) std::printf("\nwrote %s and %s\n", csv_path.c_str(), png_path.c_str());
   return kOk;
 }

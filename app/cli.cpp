@@ -54,6 +54,8 @@ void defineSimulate(CLI::App& c, Cli& cli) {
 void defineAnalyze(CLI::App& c, Cli& cli) {
   sceneOption(c, cli.analyze_args.scene);
   c.add_flag("--json", cli.analyze_args.json, "Print JSON");
+  c.add_option("-o,--output", cli.analyze_args.output,
+               "Write to this file (whole or not at all) instead of standard output");
   c.add_option("--spin", cli.analyze_args.spin,
                "Spin for the growth rates and eigenvalues, rad/s (default: the scene's)");
 }

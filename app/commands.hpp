@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "tasks/manifest.hpp"
 #include "tasks/scene_args.hpp"
 
 namespace app {
@@ -31,6 +32,11 @@ int fail(const rb::Result<T>& result) {
   return fail(result.error());
 }
 
+/// Lists what a command wrote in its folder's manifest (a note on stderr when it cannot).
+void record(const std::vector<tasks::OutputEntry>& entries);
+/// A scene's (or sweep's) name in the manifest: its file's stem.
+std::string sceneName(const std::string& path);
+
 struct SimulateArgs {
   std::string scene;
   std::string output;  ///< CSV path; empty: out/<scene name>.csv
@@ -45,6 +51,7 @@ int simulateCommand(const SimulateArgs& args);
 struct AnalyzeArgs {
   std::string scene;
   bool json = false;
+  std::string output;  ///< a file to write instead of standard output
   std::optional<double> spin;  ///< rad/s for the growth rates; default the scene's (or 5)
 };
 int analyzeCommand(const AnalyzeArgs& args);

@@ -145,6 +145,17 @@ Overrides overridesOf(const SimulateArgs& args) {
   return o;
 }
 
+// The telemetry and the plots, for the manifest.
+std::vector<tasks::OutputEntry> outputsOf(const SimulateArgs& args, const std::string& csv) {
+  const std::string scene = sceneName(args.scene);
+  std::vector<tasks::OutputEntry> entries = {{csv, tasks::OutputKind::Telemetry, scene, "", {}, {}}};
+  if (!args.plot_dir.empty())
+    for (const char* what : {"energy", "spin", "tilt", "normal"})
+      entries.push_back({(std::filesystem::path(args.plot_dir) / (scene + "-" + what + ".png")).string(),
+                         tasks::OutputKind::Plot, scene, what, {}, {}});
+  return entries;
+}
+
 // Why a run wrote nothing, and its exit status.
 int notWritten(const SimulateArgs& args, const tasks::Outcome& outcome) {
   if (outcome.ending == tasks::Ending::Interrupted) {
@@ -190,6 +201,7 @@ int simulateCommand(const SimulateArgs& args) {
   if (auto e = writer->commit(args.scene, model, rate, run.summary); !e) return fail(e);
   if (!args.plot_dir.empty())
     if (auto e = writePlots(args.plot_dir, args.scene, kept); !e) return fail(e);
+  record(outputsOf(args, csv));
   if (args.quiet) return kOk;
   std::FILE* report = to_stdout ? stderr : stdout;
   printSummary(report, args, model, run.summary, to_stdout ? "standard output" : csv, run.rows);

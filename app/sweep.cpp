@@ -306,6 +306,11 @@ int sweepCommand(const SweepArgs& args) {
   }
   if (auto e = writeOutputs(args, sweep, shard, plan.value(), metric, output.value()); !e)
     return fail(e);
+  std::vector<tasks::OutputEntry> entries = {
+      {output.value(), tasks::OutputKind::Sweep, sceneName(args.file), "", {}, {}}};
+  if (!args.plot.empty())
+    entries.push_back({args.plot, tasks::OutputKind::SweepPlot, sceneName(args.file), args.metric, {}, {}});
+  record(entries);
   if (!args.quiet) printSummary(args, shard, plan.value(), run, output.value());
   return kOk;
 }

@@ -86,6 +86,10 @@ int renderCommand(const RenderArgs& args) {
   if (args.verbose) std::cerr << "render: OpenGL " << result.opengl << "\n";
   if (result.outcome.ending != tasks::Ending::Completed)
     return notWritten(result.outcome, args.scene, "video");
+  std::vector<tasks::OutputEntry> entries;
+  for (const media::VideoFile& f : result.files)
+    entries.push_back({f.path, tasks::OutputKind::Video, sceneName(args.scene), f.role, f.spin, {}});
+  record(entries);
   if (!args.quiet) printVideos(result);
   return kOk;
 }
@@ -118,6 +122,8 @@ int stillCommand(const StillArgs& args) {
                           : args.output;
   if (auto made = tasks::makeParentFolder(path); !made) return fail(made);
   if (auto e = render::writePng(path, still.image); !e) return fail(e);
+  record({{path, tasks::OutputKind::Still, sceneName(args.scene), std::string(rb::nameOf(still.view)),
+           loaded->model.initial.spin, args.t}});
   if (!args.quiet) std::printf("%s\n", path.c_str());
   return kOk;
 }

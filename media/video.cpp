@@ -336,15 +336,18 @@ rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const Vide
   for (const auto& o : outputs)
     if (o->error) return rb::Error{"", *o->error};
   std::vector<std::string> finals = provisional;
+  std::vector<std::string> roles = {"single"};
   if (request.both) {
     const auto names = bothNames(runs, result.notes);
     finals[0] = base + "-" + names[0] + ".mp4";
     finals[1] = base + "-" + names[1] + ".mp4";
+    roles = {names[0], names[1], "both"};
   }
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     if (auto e = outputs[i]->encoder->finish(finals[i]); !e) return e.error();
     VideoFile file;
     file.path = finals[i];
+    file.role = roles[i];
     file.frames = outputs[i]->encoder->frames();
     if (i < runs.size()) {
       file.spin = runs[i].model().initial.spin;

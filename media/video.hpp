@@ -35,6 +35,7 @@ struct VideoRequest {
 /// One video written.
 struct VideoFile {
   std::string path;
+  std::string role;  ///< single, or with `both`: preferred, reversed, both
   std::int64_t frames = 0;
   std::optional<double> spin;              ///< rad/s: the run it shows (none: side by side)
   std::optional<double> first_reversal_s;  ///< of that run

@@ -100,6 +100,7 @@ py::list renderVideos(const LoadedScene& loaded, const std::string& output, bool
   for (const media::VideoFile& f : result.files) {
     py::dict d;
     d["path"] = f.path;
+    d["role"] = f.role;
     d["frames"] = f.frames;
     d["spin"] = f.spin ? py::object(py::float_(*f.spin)) : py::object(py::none());
     d["first_reversal_s"] =

@@ -25,8 +25,8 @@ done
 
 echo "== telemetry and analysis"
 for scene in rattleback seed-preferred seed-reversed kane-levinson kane-levinson-long; do
-  $rb analyze "scenes/$scene.yaml" > "out/$scene-analysis.txt"
-  $rb analyze "scenes/$scene.yaml" --json > "out/$scene-analysis.json"
+  $rb analyze "scenes/$scene.yaml" -o "out/$scene-analysis.txt"
+  $rb analyze "scenes/$scene.yaml" --json -o "out/$scene-analysis.json"
   $rb simulate "scenes/$scene.yaml" -o "out/$scene.csv" --plot out -q
 done
 

@@ -797,3 +797,35 @@ TEST(Cli, AnalyzeShowsProductsASymmetricBodyLacksAsZero) {
   EXPECT_EQ(inertia[2][1], 0.0);
   EXPECT_NE(inertia[0][1], 0.0);  // the skew that makes it a rattleback
 }
+
+// The report places what the commands wrote by the folder's manifest, not by names: outputs
+// named freely (a video "clip", a poster "first.png", telemetry "run.csv", an analysis
+// "theory.json") all land in the section of the scene they came from, the poster under the
+// video spun as it was. By names alone they made four sections of their own.
+TEST(Cli, TheReportPlacesOutputsByTheManifest) {
+  const fs::path dir = scratchDir() / "manifest";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string s = scene("rattleback");
+  auto in = [&](const char* name) { return (dir / name).string(); };
+  ASSERT_EQ(rattleback("render " + s + " --both --duration 0.2 --size 64x48 -q -o " + in("clip")).status, 0);
+  ASSERT_EQ(rattleback("still " + s + " --spin -5 --size 64x48 -q -o " + in("first.png")).status, 0);
+  ASSERT_EQ(rattleback("simulate " + s + " --duration 0.5 -q -o " + in("run.csv")).status, 0);
+  ASSERT_EQ(rattleback("analyze " + s + " --json -o " + in("theory.json")).status, 0);
+  const nlohmann::json manifest = nlohmann::json::parse(std::ifstream(dir / "rattleback-manifest.json"));
+  ASSERT_EQ(manifest["outputs"].size(), 6u) << manifest.dump(1);
+  EXPECT_EQ(manifest["outputs"][0]["role"], "reversed");  // spun −5: the reversing way
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  std::ifstream page_in(dir / "index.html");
+  std::stringstream page;
+  page << page_in.rdbuf();
+  const std::string html = page.str();
+  EXPECT_NE(html.find("<section id=\"rattleback\">"), std::string::npos);
+  for (const char* stray : {"id=\"clip", "id=\"first\"", "id=\"run\"", "id=\"theory\""})
+    EXPECT_EQ(html.find(stray), std::string::npos) << stray;
+  EXPECT_NE(html.find("src=\"clip-reversed.mp4\" muted loop playsinline controls preload=\"auto\" "
+                      "poster=\"first.png\""),
+            std::string::npos);
+  EXPECT_NE(html.find("preferred direction: <b>counter-clockwise"), std::string::npos);  // theory.json
+  EXPECT_NE(html.find("href=\"run.csv\""), std::string::npos);
+}

@@ -1,0 +1,57 @@
+// What the commands wrote into a folder, typed: each output file with what it is, the scene it
+// came from and its role, kept in FOLDER/rattleback-manifest.json. The report reads it to place
+// each file on the page (files it does not list, written by hand or by an older version, are
+// placed by their names' suffixes).
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "util/names.hpp"
+#include "util/result.hpp"
+
+namespace tasks {
+
+enum class OutputKind { Telemetry, Plot, Video, Still, Analysis, Sweep, SweepPlot, Bench, BenchPlot };
+
+struct OutputEntry {
+  std::string file;   ///< path as written; the manifest keeps its name within its folder
+  OutputKind kind = OutputKind::Telemetry;
+  std::string scene;  ///< the scene's (or sweep's) name: its file's stem
+  /// Video: preferred, reversed, both or single; still: the view; plot: what it shows (spin,
+  /// energy, tilt, normal); analysis: json or text.
+  std::string role;
+  std::optional<double> spin;  ///< rad/s, of the run shown (videos, stills)
+  std::optional<double> t;     ///< s, of a still
+};
+
+inline constexpr const char* kManifestName = "rattleback-manifest.json";
+
+/// Adds the entries to the manifest of each one's folder (replacing any entry for the same
+/// file), under a lock so that commands running side by side keep each other's entries.
+rb::Status recordOutputs(const std::vector<OutputEntry>& entries);
+
+/// The manifest of `dir`: its entries, their `file` a name within `dir`; none when absent or
+/// unreadable.
+std::vector<OutputEntry> readManifest(const std::string& dir);
+
+}  // namespace tasks
+
+namespace rb {
+template <>
+struct NameTable<tasks::OutputKind> {
+  static constexpr std::array<std::pair<tasks::OutputKind, std::string_view>, 9> entries{{
+      {tasks::OutputKind::Telemetry, "telemetry"},
+      {tasks::OutputKind::Plot, "plot"},
+      {tasks::OutputKind::Video, "video"},
+      {tasks::OutputKind::Still, "still"},
+      {tasks::OutputKind::Analysis, "analysis"},
+      {tasks::OutputKind::Sweep, "sweep"},
+      {tasks::OutputKind::SweepPlot, "sweep_plot"},
+      {tasks::OutputKind::Bench, "bench"},
+      {tasks::OutputKind::BenchPlot, "bench_plot"},
+  }};
+};
+}  // namespace rb

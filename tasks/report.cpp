@@ -1,0 +1,423 @@
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tasks/manifest.hpp"
+#include "tasks/output.hpp"
+#include "tasks/report.hpp"
+
+namespace tasks {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kVideoSuffixes[] = {"-preferred.mp4", "-reversed.mp4", "-both.mp4", ".mp4"};
+// First frames of the reversed and preferred videos, used as their posters.
+const char* kPosterSuffixes[] = {"-reversed.png", "-preferred.png"};
+const char* kStillSuffixes[] = {"-oblique.png", "-above.png", "-front.png", "-side.png",
+                                "-follow.png"};
+const char* kPlotSuffixes[] = {"-spin.png", "-energy.png", "-tilt.png", "-normal.png"};
+const char* kDataSuffixes[] = {".csv.json", "-analysis.json", "-analysis.txt", ".csv"};
+
+std::string escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+  return s.size() > suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// The files of one scene (by the name before a known suffix), found in DIR.
+struct SceneFiles {
+  std::map<std::string, std::string> by_suffix;  // suffix → file name
+  bool has(const std::string& suffix) const { return by_suffix.count(suffix) > 0; }
+  const std::string& at(const std::string& suffix) const { return by_suffix.at(suffix); }
+};
+
+std::optional<nlohmann::json> readJson(const fs::path& path) {
+  std::ifstream in(path);
+  if (!in) return std::nullopt;
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception&) {
+    return std::nullopt;
+  }
+}
+
+// j[key] when j is an object that holds it, else null: a hand-edited or foreign file then
+// shows "–" in the page instead of stopping the report.
+const nlohmann::json& field(const nlohmann::json& j, const char* key) {
+  static const nlohmann::json none;
+  if (!j.is_object()) return none;
+  const auto it = j.find(key);
+  return it == j.end() ? none : *it;
+}
+
+// j as text when it is a string, else `otherwise`.
+std::string stringOr(const nlohmann::json& j, const std::string& otherwise) {
+  return j.is_string() ? j.get<std::string>() : otherwise;
+}
+
+std::string number(const nlohmann::json& j, const char* format) {
+  if (!j.is_number()) return "–";
+  char text[64];
+  std::snprintf(text, sizeof text, format, j.get<double>());
+  return text;
+}
+
+std::string spinWords(double spin) {
+  return spin > 0 ? "counter-clockwise" : spin < 0 ? "clockwise" : "no spin";
+}
+
+// Whether a run (simulate's sidecar's result) reversed, and when.
+std::string reversalOf(const nlohmann::json& result) {
+  if (field(result, "first_reversal_s").is_number())
+    return "<b>reversed at " + number(field(result, "first_reversal_s"), "%.3f") + " s</b>";
+  return "no reversal in " + number(field(result, "simulated_s"), "%g") + " s";
+}
+
+// What simulate measured (its sidecar's result), when its run was spun counter-clockwise
+// (`ccw`) or clockwise as a video was; empty otherwise.
+std::string measuredAs(const std::optional<nlohmann::json>& run, bool ccw) {
+  if (!run) return "";
+  const nlohmann::json& r = field(*run, "result");
+  const nlohmann::json& spin = field(r, "initial_spin");
+  if (!spin.is_number() || spin == 0 || (spin > 0) != ccw) return "";
+  return "<br>measured (<code>simulate</code>, " + number(spin, "%+.3g") +
+         " rad/s): " + reversalOf(r);
+}
+
+// The videos, each captioned with what the theory predicts for its direction and, where
+// simulate's run was spun the same way, what that run did: the theory is linear and holds
+// near upright, and a body that loses no energy can reverse both ways, so the page never says
+// what the videos show without a run that measured it.
+void writeVideos(std::ostream& out, const SceneFiles& f,
+                 const std::optional<nlohmann::json>& theory,
+                 const std::optional<nlohmann::json>& run) {
+  // A video's poster is its own first frame (NAME-reversed.png for NAME-reversed.mp4, as the
+  // main job renders with `still --spin`), when the run left one; otherwise the browser shows
+  // the video's first frame once loaded.
+  auto video = [&](const std::string& file, const std::string& poster_suffix,
+                   const std::string& caption) {
+    const std::string poster = f.has(poster_suffix) ? f.at(poster_suffix) : "";
+    out << "<figure><video src=\"" << escape(file) << "\" muted loop playsinline controls "
+        << "preload=\"auto\"" << (poster.empty() ? "" : " poster=\"" + escape(poster) + "\"")
+        << "></video><figcaption>" << caption << "</figcaption></figure>\n";
+  };
+  // The preferred direction as analyze found it (render --both names its videos the same way).
+  std::optional<bool> ccw_preferred;
+  if (theory) {
+    const nlohmann::json& preferred = field(*theory, "preferred");
+    if (preferred == "ccw" || preferred == "cw") ccw_preferred = preferred == "ccw";
+  }
+  auto measured = [&](bool preferred) {
+    return ccw_preferred ? measuredAs(run, preferred == *ccw_preferred) : std::string();
+  };
+  if (f.has("-reversed.mp4") || f.has("-preferred.mp4")) {
+    out << "<div class=\"pair\">\n";
+    if (f.has("-reversed.mp4"))
+      video(f.at("-reversed.mp4"), "-reversed.png",
+            "Spun the <b>reversing</b> way: the theory predicts it rocks, stops and spins back" +
+                measured(false));
+    if (f.has("-preferred.mp4"))
+      video(f.at("-preferred.mp4"), "-preferred.png",
+            "Spun the <b>preferred</b> way: the theory predicts it keeps turning" + measured(true));
+    out << "</div>\n";
+  }
+  if (f.has(".mp4")) video(f.at(".mp4"), "-oblique.png", "The scene as rendered");
+  if (f.has("-both.mp4"))
+    out << "<p><a href=\"" << escape(f.at("-both.mp4"))
+        << "\">Both side by side in one video</a></p>\n";
+}
+
+// Theory (analyze --json) beside what the run measured (simulate's sidecar).
+void writeAnalysis(std::ostream& out, const SceneFiles& f,
+                   const std::optional<nlohmann::json>& theory,
+                   const std::optional<nlohmann::json>& run) {
+  if (!theory && !run) return;
+  out << "<table><tr><th>predicted (linearised rolling model)</th><th>measured (simulate)</th></tr>"
+         "<tr><td>";
+  if (theory) {
+    const nlohmann::json& t = *theory;
+    const nlohmann::json& preferred = field(t, "preferred");
+    out << "preferred direction: <b>"
+        << (preferred == "ccw"  ? "counter-clockwise"
+            : preferred == "cw" ? "clockwise"
+                                : "–")
+        << "</b><br>growth rates at n = " << number(field(t, "spin"), "%+g") << " rad/s: roll "
+        << number(field(field(t, "growth_rates"), "roll"), "%+.3f") << " /s, pitch "
+        << number(field(field(t, "growth_rates"), "pitch"), "%+.3f")
+        << " /s<br>rocking at rest: roll "
+        << number(field(field(t, "frequencies_hz"), "roll"), "%.2f") << " Hz, pitch "
+        << number(field(field(t, "frequencies_hz"), "pitch"), "%.2f") << " Hz<br>misalignment "
+        << number(field(t, "misalignment_deg"), "%+.2f") << "°; "
+        << (field(t, "rest_stable") == true    ? "stands upright"
+            : field(t, "rest_stable") == false ? "<b>cannot stand upright</b>"
+                                               : "upright: –");
+    if (f.has("-analysis.txt"))
+      out << "<br><a href=\"" << escape(f.at("-analysis.txt")) << "\">full analysis</a>";
+  }
+  out << "</td><td>";
+  if (run) {
+    const nlohmann::json& r = field(*run, "result");
+    const nlohmann::json& spin = field(r, "initial_spin");
+    out << "spun " << number(spin, "%+.3g") << " rad/s ("
+        << spinWords(spin.is_number() ? spin.get<double>() : 0.0) << ")<br>" << reversalOf(r)
+        << "<br>final spin " << number(field(r, "final_spin"), "%+.3f") << " rad/s<br>energy "
+        << number(field(field(r, "energy_j"), "initial"), "%.4g") << " J → "
+        << number(field(field(r, "energy_j"), "final"), "%.4g") << " J";
+    if (f.has(".csv")) out << "<br><a href=\"" << escape(f.at(".csv")) << "\">telemetry (CSV)</a>";
+  }
+  out << "</td></tr></table>\n";
+}
+
+void writeImages(std::ostream& out, const SceneFiles& f, const char* const* suffixes,
+                 std::size_t count, const char* heading) {
+  std::vector<std::string> files;
+  for (std::size_t i = 0; i < count; ++i)
+    if (f.has(suffixes[i])) files.push_back(f.at(suffixes[i]));
+  if (files.empty()) return;
+  out << "<h3>" << heading << "</h3><div class=\"grid\">\n";
+  for (const std::string& file : files)
+    out << "<a href=\"" << escape(file) << "\"><img src=\"" << escape(file) << "\" alt=\""
+        << escape(file) << "\" loading=\"eager\"></a>\n";
+  out << "</div>\n";
+}
+
+const char* kStyle = R"(
+body{font-family:"DejaVu Sans",sans-serif;max-width:1300px;margin:1em auto;padding:0 1em;color:#222}
+h1{margin-bottom:0}section{border-top:1px solid #ccc;margin-top:1.5em}
+.pair{display:flex;gap:1em;flex-wrap:wrap}.pair figure{flex:1 1 500px;margin:0}
+video,img{max-width:100%;height:auto;background:#eee}figure{margin:0 0 1em}
+.grid{display:grid;grid-template-columns:repeat(auto-fill,minmax(300px,1fr));gap:.7em}
+table{border-collapse:collapse;margin:1em 0}
+td,th{border:1px solid #ccc;padding:.4em .8em;vertical-align:top;text-align:left}
+)";
+
+// The files of a folder, placed: by scene, the sweeps, and the rest.
+struct SweepFiles {
+  std::string name, csv;
+  nlohmann::json meta;
+  std::vector<std::string> images;
+};
+struct Folder {
+  std::map<std::string, SceneFiles> scenes;
+  std::vector<SweepFiles> sweeps;
+  std::vector<std::string> others;
+};
+
+// The slot of the page a manifest entry fills: the suffix a file of that role has when named
+// as scripts/run.sh names it. Videos' spins say which stills are their posters.
+std::optional<std::string> slotOf(const OutputEntry& e, const std::map<double, std::string>& video_spins) {
+  switch (e.kind) {
+    case OutputKind::Video:
+      if (e.role == "preferred" || e.role == "reversed" || e.role == "both") return "-" + e.role + ".mp4";
+      return ".mp4";
+    case OutputKind::Still:
+      if (e.t && *e.t == 0 && e.spin && video_spins.count(*e.spin))
+        return "-" + video_spins.at(*e.spin) + ".png";
+      return "-" + e.role + ".png";
+    case OutputKind::Plot: return "-" + e.role + ".png";
+    case OutputKind::Telemetry: return ".csv";
+    case OutputKind::Analysis: return e.role == "json" ? "-analysis.json" : "-analysis.txt";
+    default: return std::nullopt;
+  }
+}
+
+// Places the files the manifest lists; returns the names it placed.
+std::set<std::string> placeListed(const fs::path& dir, Folder& folder) {
+  const std::vector<OutputEntry> entries = readManifest(dir.string());
+  std::map<std::string, std::map<double, std::string>> video_spins;  // scene → spin → role
+  for (const OutputEntry& e : entries)
+    if (e.kind == OutputKind::Video && e.spin && (e.role == "preferred" || e.role == "reversed"))
+      video_spins[e.scene][*e.spin] = e.role;
+  std::set<std::string> placed;
+  std::error_code ec;
+  for (const OutputEntry& e : entries) {
+    if (!fs::is_regular_file(dir / e.file, ec)) continue;  // since removed
+    if (e.kind == OutputKind::Bench || e.kind == OutputKind::BenchPlot) {
+      folder.others.push_back(e.file);
+    } else if (e.kind == OutputKind::Sweep || e.kind == OutputKind::SweepPlot) {
+      continue;  // sweeps are found by their sidecars, their plots by name (below)
+    } else if (auto slot = slotOf(e, video_spins[e.scene])) {
+      folder.scenes[e.scene].by_suffix[*slot] = e.file;
+      if (e.kind == OutputKind::Telemetry && fs::is_regular_file(dir / (e.file + ".json"), ec)) {
+        folder.scenes[e.scene].by_suffix[".csv.json"] = e.file + ".json";
+        placed.insert(e.file + ".json");
+      }
+    }
+    placed.insert(e.file);
+  }
+  return placed;
+}
+
+// The files the manifest does not list, placed by their names: the scene is the name before a
+// known suffix.
+void placeByName(const fs::path& dir, const std::set<std::string>& placed, Folder& folder) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(dir, ec))
+    if (entry.is_regular_file()) names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  // Longer suffixes first (-preferred.mp4 before .mp4, .csv.json before .csv).
+  std::vector<std::string> suffixes;
+  for (const char* s : kVideoSuffixes) suffixes.push_back(s);
+  for (const char* s : kDataSuffixes) suffixes.push_back(s);
+  for (const char* s : kPosterSuffixes) suffixes.push_back(s);
+  for (const char* s : kStillSuffixes) suffixes.push_back(s);
+  for (const char* s : kPlotSuffixes) suffixes.push_back(s);
+  for (const std::string& name : names) {
+    if (name.empty() || name[0] == '.' || name == "index.html" || name == kManifestName ||
+        placed.count(name))
+      continue;
+    bool claimed = false;
+    for (const std::string& suffix : suffixes)
+      if (!claimed && endsWith(name, suffix)) {
+        folder.scenes[name.substr(0, name.size() - suffix.size())].by_suffix[suffix] = name;
+        claimed = true;
+      }
+    if (!claimed && (endsWith(name, ".png") || endsWith(name, ".csv"))) folder.others.push_back(name);
+  }
+}
+
+// A sweep's table (its sidecar says so), with its heatmaps NAME.png and NAME-*.png; a CSV of its
+// own (bench.csv) is no scene: it goes with the other files.
+void separateSweeps(const fs::path& dir, Folder& folder) {
+  auto& scenes = folder.scenes;
+  auto& others = folder.others;
+  for (auto it = scenes.begin(); it != scenes.end();) {
+    std::optional<nlohmann::json> meta;
+    if (it->second.has(".csv.json")) meta = readJson(dir / it->second.at(".csv.json"));
+    if (!(it->second.has(".csv") && meta && field(*meta, "command") == "sweep")) {
+      ++it;
+      continue;
+    }
+    SweepFiles sweep{it->first, it->second.at(".csv"), *meta, {}};
+    for (auto o = others.begin(); o != others.end();) {
+      const bool mine = endsWith(*o, ".png") &&
+                        (*o == it->first + ".png" || o->rfind(it->first + "-", 0) == 0);
+      if (mine) sweep.images.push_back(*o);
+      o = mine ? others.erase(o) : o + 1;
+    }
+    folder.sweeps.push_back(std::move(sweep));
+    it = scenes.erase(it);
+  }
+  for (auto it = scenes.begin(); it != scenes.end();) {
+    const bool lone_csv = it->second.by_suffix.size() == 1 && it->second.has(".csv");
+    if (lone_csv) others.push_back(it->second.at(".csv"));
+    it = lone_csv ? scenes.erase(it) : std::next(it);
+  }
+  std::sort(others.begin(), others.end());
+  others.erase(std::unique(others.begin(), others.end()), others.end());
+}
+
+void writeScene(std::ostream& out, const fs::path& dir, const std::string& name, const SceneFiles& f) {
+  out << "<section id=\"" << escape(name) << "\"><h2>" << escape(name) << "</h2>\n";
+  std::optional<nlohmann::json> theory, run;
+  if (f.has("-analysis.json")) theory = readJson(dir / f.at("-analysis.json"));
+  if (f.has(".csv.json")) run = readJson(dir / f.at(".csv.json"));
+  writeVideos(out, f, theory, run);
+  writeAnalysis(out, f, theory, run);
+  writeImages(out, f, kStillSuffixes, std::size(kStillSuffixes), "Stills");
+  writeImages(out, f, kPlotSuffixes, std::size(kPlotSuffixes), "Against time");
+  out << "</section>\n";
+}
+
+void writeSweep(std::ostream& out, const SweepFiles& sweep) {
+  out << "<section id=\"sweep-" << escape(sweep.name) << "\"><h2>Sweep: " << escape(sweep.name)
+      << "</h2>\n<p>" << number(field(sweep.meta, "rows"), "%g") << " runs of "
+      << escape(stringOr(field(sweep.meta, "base"), "?")) << " over ";
+  const nlohmann::json& axes = field(sweep.meta, "axes");
+  for (std::size_t i = 0; axes.is_array() && i < axes.size(); ++i) {
+    const nlohmann::json& values = field(axes[i], "values");
+    out << (i ? " × " : "") << "<code>" << escape(stringOr(field(axes[i], "key"), "?"))
+        << "</code> (" << (values.is_array() ? values.size() : 0) << " values)";
+  }
+  out << ": <a href=\"" << escape(sweep.csv) << "\">the table (CSV)</a></p><div class=\"grid\">\n";
+  for (const std::string& image : sweep.images)
+    out << "<a href=\"" << escape(image) << "\"><img src=\"" << escape(image) << "\" alt=\""
+        << escape(image) << "\"></a>\n";
+  out << "</div></section>\n";
+}
+
+void writeOthers(std::ostream& out, const std::vector<std::string>& others) {
+  if (others.empty()) return;
+  out << "<section id=\"other\"><h2>Benchmarks and other figures</h2><div class=\"grid\">\n";
+  for (const std::string& name : others) {
+    if (endsWith(name, ".png"))
+      out << "<a href=\"" << escape(name) << "\"><img src=\"" << escape(name) << "\" alt=\""
+          << escape(name) << "\"></a>\n";
+    else
+      out << "<p><a href=\"" << escape(name) << "\">" << escape(name) << "</a></p>\n";
+  }
+  out << "</div></section>\n";
+}
+
+void writePage(std::ostream& out, const fs::path& dir, const Folder& folder) {
+  out << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+         "<meta name=\"viewport\" content=\"width=device-width\">"
+         "<title>rattleback: results</title><style>"
+      << kStyle << "</style></head><body>\n<h1>rattleback: results</h1>\n"
+      << "<p>What the runs left in this folder, by scene. Made by rattleback " RATTLEBACK_VERSION
+         " (<code>rattleback report</code>).</p>\n";
+  // Scenes with videos first, then the rest, each in name order.
+  std::vector<std::string> order;
+  for (const auto& [name, files] : folder.scenes)
+    if (files.has("-reversed.mp4") || files.has("-preferred.mp4") || files.has(".mp4"))
+      order.push_back(name);
+  for (const auto& [name, files] : folder.scenes)
+    if (std::find(order.begin(), order.end(), name) == order.end()) order.push_back(name);
+  for (const std::string& name : order) writeScene(out, dir, name, folder.scenes.at(name));
+  for (const SweepFiles& sweep : folder.sweeps) writeSweep(out, sweep);
+  writeOthers(out, folder.others);
+  out << "</body></html>\n";
+}
+
+}  // namespace
+
+rb::Result<std::string> writeReport(const std::string& folder_path) {
+  const fs::path dir = folder_path;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))
+    return rb::Error{"", folder_path + ": not a folder (give the folder the runs wrote into, e.g. out)"};
+  Folder folder;
+  placeByName(dir, placeListed(dir, folder), folder);
+  separateSweeps(dir, folder);
+  const std::string path = (dir / "index.html").string();
+  auto opened = AtomicOutput::open(path);
+  if (!opened) return opened.error();
+  writePage(opened->stream(), dir, folder);
+  if (auto e = opened->commit(); !e) return e.error();
+  return path;
+}
+
+}  // namespace tasks

@@ -1,0 +1,502 @@
+#!/usr/bin/python3
+"""Checks the report's 3D player (player/) in headless Chromium with software WebGL.
+
+Usage: check_player.py DIR [--screenshots OUT_DIR] [--size WxH]
+
+DIR is a page made by make_page.py (or a report folder): DIR/index.html is opened from file://
+and, for every .rb-player on it:
+  - the page loads with no console errors (SEVERE), then none while it is used;
+  - a player with run data is built (element.rbPlayer), one without shows a note instead;
+  - the canvas shows red and blue pixels where the body is (the body's centre projects into
+    their bounding box), and from above mostly red (the top is red);
+  - the read-outs show the time and the spin with its sense, at the slider's times;
+  - the slider (its value set and an 'input' event dispatched) to times between samples gives
+    the run's pose: the drawn quaternion equals the slerp of the data's two neighbouring samples
+    (within 1e-6, up to sign) and the position their linear interpolation; the data embedded
+    equals the run's CSV (DIR/ID.csv, when there) at those samples; the canvas changes;
+  - play advances time, pause stops it, and the run stops at its end;
+  - each view button moves the camera, to where the renderer puts it (render/camera.cpp): the
+    oblique, above, front and side directions from the framing centre, above with +y to the
+    right and +x down the screen, follow moving with the body across its long axis; a drag
+    makes the view free;
+  - the keys, with the player focused: space plays and pauses, the arrows step one sample.
+DIR/single.html (one player; the keys work unfocused) and DIR/missing.html (a player with no
+run data at all: a note, no error) are checked too when there.
+Then the frame time at a 1280 × 720 canvas is measured and printed (frameMs() while playing,
+and benchmark(): frames drawn and read back one after another), and with --screenshots the
+first run's player is saved at its first reversal from the oblique and side views
+(OUT_DIR/player-oblique.png, OUT_DIR/player-side.png).
+
+Exit status 0 when every check passes, 1 when one fails (each failure printed), 77 when Selenium
+or Chromium is not installed (CTest's "skipped")."""
+import argparse
+import csv
+import math
+import pathlib
+import shutil
+import sys
+import tempfile
+import time
+
+try:
+    from selenium import webdriver
+    from selenium.webdriver.chrome.service import Service
+    from selenium.webdriver.common.action_chains import ActionChains
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.common.keys import Keys
+except ImportError:
+    print("selenium is not installed (Debian: python3-selenium); skipped")
+    sys.exit(77)
+
+CHROMIUM = "/usr/bin/chromium"
+DRIVER = "/usr/bin/chromedriver"
+VIEWS = ["oblique", "above", "front", "side", "follow"]
+ELEVATION = math.radians(10)
+
+# Pixel statistics of a player's canvas, read back through a 2D canvas: red (the top) and blue
+# (the bottom) pixels, their bounding box, and a snapshot to count changed pixels against.
+PIXELS_JS = """
+window.__rbPixels = function (element, snapshotName) {
+  const source = element.querySelector('.rbp-stage canvas');
+  const c = document.createElement('canvas');
+  c.width = source.width; c.height = source.height;
+  const g = c.getContext('2d');
+  g.drawImage(source, 0, 0);
+  const d = g.getImageData(0, 0, c.width, c.height).data;
+  let red = 0, blue = 0, x0 = 1e9, y0 = 1e9, x1 = -1, y1 = -1, changed = 0, nonBackground = 0;
+  window.__rbSnaps = window.__rbSnaps || {};
+  const before = snapshotName ? window.__rbSnaps[snapshotName] : null;
+  for (let i = 0, p = 0; i < d.length; i += 4, p++) {
+    const r = d[i], gr = d[i + 1], b = d[i + 2];
+    const isRed = r > 60 && r > 2 * gr && r > 2 * b;
+    const isBlue = b > 60 && b > 1.6 * gr && b > 2 * r;
+    if (isRed) red++;
+    if (isBlue) blue++;
+    if (isRed || isBlue) {
+      const x = p % c.width, y = (p / c.width) | 0;
+      if (x < x0) x0 = x; if (x > x1) x1 = x; if (y < y0) y0 = y; if (y > y1) y1 = y;
+    }
+    if (before && (Math.abs(before[i] - r) > 8 || Math.abs(before[i + 1] - gr) > 8 || Math.abs(before[i + 2] - b) > 8)) changed++;
+    if (Math.abs(r - 237) + Math.abs(gr - 240) + Math.abs(b - 245) > 12) nonBackground++;
+  }
+  if (snapshotName) window.__rbSnaps[snapshotName] = d;
+  const scale = c.width / source.clientWidth;
+  return {red, blue, box: [x0 / scale, y0 / scale, x1 / scale, y1 / scale], changed: before ? changed : -1,
+          total: c.width * c.height, nonBackground, width: c.width, height: c.height};
+};
+"""
+
+# Waits for two animation frames: whatever the last change asked to be drawn is drawn.
+FRAMES_JS = "const done = arguments[arguments.length - 1]; requestAnimationFrame(() => requestAnimationFrame(() => done(true)));"
+
+
+def slerp(a, b, u):
+    """Shortest-path slerp of unit quaternions [w, x, y, z]."""
+    d = sum(p * q for p, q in zip(a, b))
+    if d < 0:
+        b = [-q for q in b]
+        d = -d
+    if d > 1 - 1e-12:
+        r = [p + u * (q - p) for p, q in zip(a, b)]
+    else:
+        theta = math.acos(min(1.0, d))
+        s = math.sin(theta)
+        wa, wb = math.sin((1 - u) * theta) / s, math.sin(u * theta) / s
+        r = [wa * p + wb * q for p, q in zip(a, b)]
+    n = math.sqrt(sum(v * v for v in r))
+    return [v / n for v in r]
+
+
+def quaternion_error(q, e):
+    return min(max(abs(p - r) for p, r in zip(q, e)), max(abs(p + r) for p, r in zip(q, e)))
+
+
+def rotate(q, v):
+    """Rotates vector v by unit quaternion q = [w, x, y, z]."""
+    w, x, y, z = q
+    m = [[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+         [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+         [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]]
+    return [sum(m[i][k] * v[k] for k in range(3)) for i in range(3)]
+
+
+def unit(v):
+    n = math.sqrt(sum(c * c for c in v))
+    return [c / n for c in v]
+
+
+def between(t, k, u):
+    return t[k] + u * (t[k + 1] - t[k])
+
+
+class Checker:
+    def __init__(self, driver, folder):
+        self.driver = driver
+        self.folder = folder
+        self.failures = []
+        self.checks = 0
+
+    def check(self, ok, what):
+        self.checks += 1
+        if not ok:
+            self.failures.append(what)
+            print("FAIL:", what)
+        return ok
+
+    def js(self, script, *args):
+        return self.driver.execute_script(script, *args)
+
+    def frames(self):
+        self.driver.execute_async_script(FRAMES_JS)
+
+    def console(self, where):
+        for entry in self.driver.get_log("browser"):
+            if entry["level"] == "SEVERE":
+                self.check(False, f"{where}: console error: {entry['message']}")
+
+    def open(self, name):
+        self.driver.get((self.folder / name).as_uri())
+        deadline = time.time() + 30
+        while time.time() < deadline:
+            state = self.js("""return Array.from(document.querySelectorAll('.rb-player')).map(
+                e => [e.getAttribute('data-run'), !!e.rbPlayer, e.rbPlayerError || null]);""")
+            if state and all(built or error for _, built, error in state):
+                break
+            time.sleep(0.2)
+        self.js(PIXELS_JS)
+        self.frames()
+        return state
+
+    def element(self, index):
+        return self.driver.find_elements(By.CSS_SELECTOR, ".rb-player")[index]
+
+    def hook(self, element, call, *args):
+        return self.js(f"return arguments[0].rbPlayer.{call};", element, *args)
+
+    def pixels(self, element, snapshot=None):
+        return self.js("return window.__rbPixels(arguments[0], arguments[1]);", element, snapshot)
+
+    def slider_to(self, element, t):
+        self.js("""const s = arguments[0].querySelector('.rbp-slider');
+                   s.value = String(arguments[1]);
+                   s.dispatchEvent(new Event('input', {bubbles: true}));""", element, t)
+        self.frames()
+
+    # ------------------------------------------------------------------------------------------
+    def player(self, element, run_id):
+        where = f"run {run_id}"
+        self.js("arguments[0].scrollIntoView({block: 'start'});", element)
+        self.frames()
+        run = self.js("""const r = window.RATTLEBACK_RUNS[arguments[0]];
+            return {t: r.t, x: r.x, y: r.y, z: r.z, qw: r.qw, qx: r.qx, qy: r.qy, qz: r.qz,
+                    spin: r.spin, reversals: r.reversals, reach: r.reach};""", run_id)
+        t = run["t"]
+        n = len(t)
+        quat = lambda k: [run["qw"][k], run["qx"][k], run["qy"][k], run["qz"][k]]
+        pos = lambda k: [run["x"][k], run["y"][k], run["z"][k]]
+        center = pos(0)
+        self.hook(element, "pause()")
+
+        # The embedded samples are the run's own (its CSV, full rate) at the same times.
+        csv_path = self.folder / f"{run_id}.csv"
+        if csv_path.exists():
+            rows = {}
+            with open(csv_path) as f:
+                for row in csv.DictReader(f):
+                    rows[round(float(row["t"]), 6)] = row
+            worst = 0.0
+            missing = 0
+            for k in range(0, n, max(1, n // 50)):
+                row = rows.get(round(t[k], 6))
+                if row is None:
+                    missing += 1
+                    continue
+                for key in ["x", "y", "z", "qw", "qx", "qy", "qz", "spin"]:
+                    worst = max(worst, abs(float(row[key]) - run[key][k]))
+            self.check(missing == 0, f"{where}: {missing} player samples have no row in {csv_path.name}")
+            self.check(worst < 1e-6, f"{where}: player data differs from {csv_path.name} by {worst}")
+
+        # Colours where the body is, from the side at the start: red top and blue bottom.
+        self.hook(element, "setTime(arguments[1])", t[0])
+        self.click_view(element, "side")
+        self.frames()
+        px = self.pixels(element)
+        self.check(px["red"] > 100, f"{where}: side view shows {px['red']} red pixels")
+        self.check(px["blue"] > 100, f"{where}: side view shows {px['blue']} blue pixels")
+        cm = self.hook(element, "project(arguments[1])", self.hook(element, "position()"))
+        box = px["box"]
+        self.check(box[0] - 2 <= cm[0] <= box[2] + 2 and box[1] - 2 <= cm[1] <= box[3] + 2,
+                   f"{where}: the coloured pixels {box} do not surround the body's centre {cm}")
+        self.check(px["nonBackground"] > 0.2 * px["total"],
+                   f"{where}: the floor is not visible ({px['nonBackground']} of {px['total']} pixels)")
+        self.click_view(element, "above")
+        self.frames()
+        px = self.pixels(element)
+        self.check(px["red"] > 100 and px["red"] > 3 * px["blue"],
+                   f"{where}: from above the top should be red: {px['red']} red, {px['blue']} blue")
+
+        # The slider: poses between samples, as slerp / lerp of the neighbouring samples.
+        self.click_view(element, "oblique")
+        picks = [(max(1, n // 7), 0.37), (n // 2, 0.5), (n - 3, 0.81)]
+        reversals = run["reversals"] or []
+        times = [between(t, k, u) for k, u in picks] + [r for r in reversals if t[0] < r < t[-1]][:1]
+        self.slider_to(element, t[0])
+        self.pixels(element, f"{run_id}-slider")
+        for target in times:
+            self.slider_to(element, target)
+            got_t = self.hook(element, "time()")
+            self.check(abs(got_t - target) < 1e-9, f"{where}: slider to t = {target} gave time {got_t}")
+            k = max(i for i in range(n - 1) if t[i] <= got_t)
+            u = (got_t - t[k]) / (t[k + 1] - t[k])
+            expected = slerp(quat(k), quat(k + 1), u)
+            got = self.hook(element, "quaternion()")
+            err = quaternion_error(got, expected)
+            self.check(err < 1e-6, f"{where}: at t = {got_t} the drawn quaternion {got} is not the slerp "
+                                   f"{expected} of samples {k} and {k + 1} (error {err:.3g})")
+            expected_p = [a + u * (b - a) for a, b in zip(pos(k), pos(k + 1))]
+            got_p = self.hook(element, "position()")
+            err_p = max(abs(a - b) for a, b in zip(got_p, expected_p))
+            self.check(err_p < 1e-9, f"{where}: at t = {got_t} the drawn position {got_p} is not "
+                                     f"{expected_p} (error {err_p:.3g})")
+            spin = run["spin"][k] + u * (run["spin"][k + 1] - run["spin"][k])
+            shown_t = self.js("return arguments[0].querySelector('.rbp-time').textContent;", element)
+            shown_n = self.js("return arguments[0].querySelector('.rbp-spin').textContent + ' ' + "
+                              "arguments[0].querySelector('.rbp-sense').textContent;", element)
+            self.check(f"{got_t:.2f} s" in shown_t, f"{where}: at t = {got_t} the read-out says {shown_t!r}")
+            sense = "(counter-clockwise)" if spin > 0.05 else "(clockwise)" if spin < -0.05 else ""
+            value = f"{'+' if spin >= 0 or abs(spin) < 0.005 else '-'}{abs(spin):.2f} rad/s"
+            self.check(value in shown_n and sense in shown_n,
+                       f"{where}: at t = {got_t} (n = {spin:+.4f}) the read-out says {shown_n!r}")
+            px = self.pixels(element, f"{run_id}-slider")
+            self.check(px["changed"] > 50, f"{where}: moving the slider to t = {target:.4f} changed "
+                                           f"{px['changed']} pixels")
+
+        # Play, pause, and the end of the run.
+        play = element.find_element(By.CSS_SELECTOR, ".rbp-play")
+        self.hook(element, "setSpeed(1)")
+        self.hook(element, "setTime(arguments[1])", t[0] + 0.1 * (t[-1] - t[0]))
+        start = self.hook(element, "time()")
+        self.pixels(element, f"{run_id}-play")
+        play.click()
+        time.sleep(1.0)
+        now = self.hook(element, "time()")
+        self.check(self.hook(element, "playing()"), f"{where}: the play button does not play")
+        self.check(now > start + 0.3, f"{where}: playing for 1 s moved time from {start} to {now}")
+        self.check(self.pixels(element, f"{run_id}-play")["changed"] > 50, f"{where}: playing changed no pixels")
+        play.click()
+        paused = self.hook(element, "time()")
+        time.sleep(0.3)
+        self.check(not self.hook(element, "playing()") and self.hook(element, "time()") == paused,
+                   f"{where}: the pause button does not stop time")
+        self.hook(element, "setTime(arguments[1])", t[-1] - 0.1)
+        self.hook(element, "play()")
+        time.sleep(0.6)
+        self.check(not self.hook(element, "playing()") and self.hook(element, "time()") == t[-1],
+                   f"{where}: playback does not stop at the end of the run "
+                   f"(playing {self.hook(element, 'playing()')}, t = {self.hook(element, 'time()')})")
+        self.hook(element, "pause()")
+
+        # The views: each button moves the camera to the renderer's place for it.
+        self.hook(element, "setTime(arguments[1])", times[0])
+        previous = None
+        expected_dirs = {"oblique": unit([0.75, -0.55, 0.55]), "above": [0, 0, 1],
+                         "front": [0, -math.cos(ELEVATION), math.sin(ELEVATION)],
+                         "side": [math.cos(ELEVATION), 0, math.sin(ELEVATION)]}
+        for view in VIEWS:
+            self.click_view(element, view)
+            self.check(self.hook(element, "view()") == view, f"{where}: the {view} button gave view "
+                                                             f"{self.hook(element, 'view()')}")
+            cam = self.hook(element, "cameraPosition()")
+            if previous is not None:
+                self.check(max(abs(a - b) for a, b in zip(cam, previous)) > 1e-4,
+                           f"{where}: the {view} button did not move the camera ({cam})")
+            previous = cam
+            if view in expected_dirs:
+                d = unit([a - b for a, b in zip(cam, center)])
+                err = max(abs(a - b) for a, b in zip(d, expected_dirs[view]))
+                self.check(err < 1e-3, f"{where}: the {view} camera looks from {d}, "
+                                       f"expected {expected_dirs[view]}")
+            if view == "above":
+                c0 = self.hook(element, "project(arguments[1])", center)
+                cy = self.hook(element, "project(arguments[1])", [center[0], center[1] + 0.01, center[2]])
+                cx = self.hook(element, "project(arguments[1])", [center[0] + 0.01, center[1], center[2]])
+                self.check(cy[0] > c0[0] + 5 and abs(cy[1] - c0[1]) < 1,
+                           f"{where}: from above +y does not point right ({c0} -> {cy})")
+                self.check(cx[1] > c0[1] + 5 and abs(cx[0] - c0[0]) < 1,
+                           f"{where}: from above +x does not point down the screen ({c0} -> {cx})")
+            if view == "follow":
+                follow = []
+                for target in times[:2]:
+                    self.hook(element, "setTime(arguments[1])", target)
+                    cam = self.hook(element, "cameraPosition()")
+                    body = self.hook(element, "position()")
+                    q = self.hook(element, "quaternion()")
+                    away = [a - b for a, b in zip(cam, body)]
+                    axis = rotate(q, [0, 1, 0])
+                    flat = unit([away[0], away[1], 0])
+                    along = abs(flat[0] * axis[0] + flat[1] * axis[1]) / max(1e-12, math.hypot(axis[0], axis[1]))
+                    self.check(along < 1e-3, f"{where}: the follow camera is not across the long axis "
+                                             f"at t = {target} ({along})")
+                    follow.append((cam, math.sqrt(sum(a * a for a in away))))
+                self.check(max(abs(a - b) for a, b in zip(follow[0][0], follow[1][0])) > 1e-3,
+                           f"{where}: the follow camera does not move with the body")
+                self.check(abs(follow[0][1] - follow[1][1]) < 0.01 * follow[0][1],
+                           f"{where}: the follow camera's distance changes ({follow})")
+        # A drag makes the view free and moves the camera.
+        self.click_view(element, "oblique")
+        before = self.hook(element, "cameraPosition()")
+        canvas = element.find_element(By.CSS_SELECTOR, ".rbp-stage canvas")
+        ActionChains(self.driver).move_to_element(canvas).click_and_hold().move_by_offset(80, 30) \
+            .move_by_offset(40, 10).release().perform()
+        after = self.hook(element, "cameraPosition()")
+        self.check(self.hook(element, "view()") == "free", f"{where}: a drag left the view "
+                                                           f"{self.hook(element, 'view()')}, not free")
+        self.check(max(abs(a - b) for a, b in zip(before, after)) > 1e-4, f"{where}: a drag did not move the camera")
+        self.click_view(element, "oblique")
+
+        # Keys, with the player focused (a click on its read-outs).
+        self.hook(element, "pause()")
+        element.find_element(By.CSS_SELECTOR, ".rbp-title").click()
+        self.check(self.js("return arguments[0].contains(document.activeElement);", element),
+                   f"{where}: a click on the player does not focus it")
+        self.keys(element, where, run)
+
+    def keys(self, element, where, run):
+        t = run["t"]
+        n = len(t)
+        k = n // 3
+        self.hook(element, "setTime(arguments[1])", between(t, k, 0.4))
+        ActionChains(self.driver).send_keys(Keys.SPACE).perform()
+        time.sleep(0.3)
+        self.check(self.hook(element, "playing()"), f"{where}: space does not play")
+        ActionChains(self.driver).send_keys(Keys.SPACE).perform()
+        self.check(not self.hook(element, "playing()"), f"{where}: space again does not pause")
+        self.hook(element, "setTime(arguments[1])", between(t, k, 0.4))
+        ActionChains(self.driver).send_keys(Keys.ARROW_RIGHT).perform()
+        got = self.hook(element, "time()")
+        self.check(got == t[k + 1], f"{where}: → from between samples {k} and {k + 1} went to {got}, not {t[k + 1]}")
+        ActionChains(self.driver).send_keys(Keys.ARROW_RIGHT).perform()
+        got = self.hook(element, "time()")
+        self.check(got == t[k + 2], f"{where}: → again went to {got}, not {t[k + 2]}")
+        ActionChains(self.driver).send_keys(Keys.ARROW_LEFT).send_keys(Keys.ARROW_LEFT).perform()
+        got = self.hook(element, "time()")
+        self.check(got == t[k], f"{where}: ← twice went to {got}, not {t[k]}")
+
+    def click_view(self, element, view):
+        button = element.find_element(By.CSS_SELECTOR, f".rbp-view-{view}")
+        button.click()
+        self.frames()
+
+    # ------------------------------------------------------------------------------------------
+    def page(self, name, expect_missing):
+        state = self.open(name)
+        self.console(f"{name} on load")
+        self.check(bool(state), f"{name}: no .rb-player on the page")
+        for index, (run_id, built, error) in enumerate(state or []):
+            has_data = self.js("return !!(window.RATTLEBACK_RUNS && window.RATTLEBACK_RUNS[arguments[0]]);", run_id)
+            element = self.element(index)
+            if not has_data:
+                text = element.text.strip()
+                self.check(not built and error and text,
+                           f"{name}: the player of missing run {run_id} shows {text!r} (built {built}, error {error})")
+                expect_missing -= 1
+                continue
+            if not self.check(built, f"{name}: no player for run {run_id} ({error})"):
+                continue
+            self.player(element, run_id)
+            self.console(f"{name}, run {run_id}")
+        self.check(expect_missing <= 0, f"{name}: expected a player with a missing run")
+        return state
+
+    def single(self):
+        # One player on the page: its keys work with nothing focused.
+        state = self.open("single.html")
+        self.console("single.html on load")
+        element = self.element(0)
+        run_id = state[0][0]
+        run = self.js("return {t: window.RATTLEBACK_RUNS[arguments[0]].t};", run_id)
+        self.js("document.activeElement && document.activeElement.blur();")
+        self.check(self.js("return document.activeElement === document.body;"), "single.html: something has focus")
+        self.keys(element, "single.html (unfocused)", run)
+        self.console("single.html")
+
+    def measure(self, screenshots, size):
+        self.open("single.html" if (self.folder / "single.html").exists() else "index.html")
+        element = self.element(0)
+        self.js("arguments[0].scrollIntoView({block: 'start'});", element)
+        self.hook(element, "setSize(arguments[1], arguments[2])", *size)
+        self.hook(element, "setView('oblique')")
+        self.hook(element, "setSpeed(1)")
+        self.hook(element, "setTime(0)")
+        self.hook(element, "play()")
+        time.sleep(4)
+        frame = self.hook(element, "frameMs()")
+        render = self.hook(element, "renderMs()")
+        self.hook(element, "pause()")
+        bench = self.hook(element, "benchmark(30)")
+        print(f"frame time at {size[0]}x{size[1]}: {frame:.1f} ms between drawn frames while playing "
+              f"({1000 / frame:.0f} fps); {bench:.1f} ms per frame drawn and read back; "
+              f"{render:.1f} ms CPU per render call")
+        self.check(math.isfinite(frame) and frame > 0, f"frameMs() is {frame}")
+        if screenshots:
+            run = self.js("return window.RATTLEBACK_RUNS[arguments[0]].reversals;", self.js(
+                "return arguments[0].getAttribute('data-run');", element))
+            t_rev = run[0] if run else 0
+            out = pathlib.Path(screenshots)
+            out.mkdir(parents=True, exist_ok=True)
+            for view in ["oblique", "side"]:
+                self.hook(element, "setView(arguments[1])", view)
+                self.hook(element, "setTime(arguments[1])", t_rev)
+                self.frames()
+                root = element.find_element(By.CSS_SELECTOR, ".rbp")
+                self.js("arguments[0].scrollIntoView({block: 'start'});", root)
+                root.screenshot(str(out / f"player-{view}.png"))
+                print(f"saved {out / f'player-{view}.png'} (t = {t_rev:.4f} s, {view})")
+        self.console("measuring")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("dir")
+    parser.add_argument("--screenshots", help="save player-oblique.png and player-side.png here")
+    parser.add_argument("--size", default="1280x720", help="the canvas size to measure the frame time at")
+    args = parser.parse_args()
+    folder = pathlib.Path(args.dir).resolve()
+    size = [int(v) for v in args.size.split("x")]
+    if not (pathlib.Path(CHROMIUM).exists() and pathlib.Path(DRIVER).exists()):
+        print("chromium or chromedriver is not installed; skipped")
+        return 77
+    options = webdriver.ChromeOptions()
+    options.binary_location = CHROMIUM
+    profile = tempfile.mkdtemp(prefix="rattleback-chromium-")
+    for flag in ["--headless=new", "--no-sandbox", "--disable-quic", "--no-first-run",
+                 "--disable-background-networking", "--disable-component-update", "--disable-sync",
+                 # WebGL on the CPU (SwiftShader through ANGLE): no GPU needed
+                 "--use-gl=angle", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+                 "--force-device-scale-factor=1", "--window-size=1700,1100",
+                 f"--user-data-dir={profile}"]:
+        options.add_argument(flag)
+    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+    driver = webdriver.Chrome(service=Service(DRIVER), options=options)
+    checker = Checker(driver, folder)
+    try:
+        driver.set_script_timeout(60)
+        checker.page("index.html", expect_missing=1 if "no-such-run" in (folder / "index.html").read_text() else 0)
+        if (folder / "missing.html").exists():
+            state = checker.page("missing.html", expect_missing=1)
+            checker.check(state and not state[0][1], "missing.html: a player was built with no data")
+        if (folder / "single.html").exists():
+            checker.single()
+        checker.measure(args.screenshots, size)
+    except Exception as e:  # a check that could not run is a failure, not a crash
+        checker.check(False, f"the check stopped: {type(e).__name__}: {e}")
+    finally:
+        driver.quit()
+        shutil.rmtree(profile, ignore_errors=True)
+    failed = len(checker.failures)
+    print(f"{checker.checks - failed} passed, {failed} failed")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
