@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <optional>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -154,6 +155,58 @@ rb::Status drawWithGnuplot(const std::string& png, Write write) {
 
 }  // namespace
 
+// One series' data file and its plot clause; nothing when it has no point the axes can show.
+std::optional<std::string> seriesClause(const Panel& panel, const Series& series, const fs::path& data) {
+  std::ofstream out(data);
+  out.precision(10);
+  int kept = 0;
+  for (const auto& [x, y] : series.points) {
+    // Log axes cannot show zero or negative values; gnuplot would refuse the series.
+    if (!std::isfinite(x) || !std::isfinite(y)) continue;
+    if ((panel.log_x && x <= 0) || (panel.log_y && y <= 0)) continue;
+    out << x << ' ' << y << '\n';
+    ++kept;
+  }
+  if (kept == 0) return std::nullopt;
+  std::string style = panel.lines_only ? " with lines lw 1.5"
+                                       : " with linespoints lw 1.5 ps 0.9 pt " +
+                                             std::to_string(series.point_type);
+  style += " dt " + std::to_string(series.dash);
+  if (!series.color.empty()) style += " lc rgb " + quoted(series.color);
+  return quoted(data.string()) + " using 1:2" + (series.right_axis ? " axes x1y2" : "") + style +
+         " title " + quoted(series.title);
+}
+
+// One panel of a multiplot: its axes, then its series (or "no data").
+void writePanel(std::ofstream& script, const Panel& panel, bool titled, const fs::path& work,
+                int& file_index) {
+  // A twentieth of the height above and below the data, so that a line at its top or bottom
+  // (a conserved energy) is not drawn on the frame; none below an axis from 0.
+  script << "unset logscale\nunset y2label\nunset y2tics\nset ytics mirror\n"
+         << "set offsets 0, 0, graph 0.05, " << (panel.y_from_zero ? "0" : "graph 0.05") << "\n"
+         << "set title " << quoted(titled ? panel.title : std::string()) << "\n"
+         << "set xlabel " << quoted(panel.x_label) << "\nset ylabel " << quoted(panel.y_label)
+         << "\n";
+  script << (panel.log_x ? "set logscale x\nset format x '%g'\n" : "set format x '% g'\n");
+  script << (panel.log_y ? "set logscale y\nset format y '%.0e'\n" : "set format y '% g'\n");
+  script << (panel.y_from_zero ? "set yrange [0:*]\n" : "set autoscale y\n");
+  if (!panel.y2_label.empty())
+    script << "set y2label " << quoted(panel.y2_label) << "\nset y2tics\nset ytics nomirror\n";
+  std::vector<std::string> clauses;
+  for (const Series& series : panel.series) {
+    const fs::path data = work / ("series" + std::to_string(file_index++) + ".dat");
+    if (auto clause = seriesClause(panel, series, data)) clauses.push_back(*clause);
+  }
+  if (clauses.empty()) {
+    script << "unset logscale\nset label 1 'no data' at graph 0.5, graph 0.5 center\n"
+           << "plot [0:1][0:1] NaN notitle\nunset label 1\n";
+    return;
+  }
+  script << "plot ";
+  for (std::size_t i = 0; i < clauses.size(); ++i) script << (i ? ", \\\n     " : "") << clauses[i];
+  script << "\n";
+}
+
 rb::Status plotPng(const std::string& png, const std::string& title,
                                    const std::vector<Panel>& panels, int width, int height) {
   return drawWithGnuplot(png, [&](std::ofstream& script, const fs::path& work,
@@ -165,54 +218,7 @@ rb::Status plotPng(const std::string& png, const std::string& title,
            << "set multiplot layout " << panels.size() << ",1 title " << quoted(title)
            << " font \",12\"\n";
     int file_index = 0;
-    for (const Panel& panel : panels) {
-      // A twentieth of the height above and below the data, so that a line at its top or
-      // bottom (a conserved energy) is not drawn on the frame; none below an axis from 0.
-      script << "unset logscale\nunset y2label\nunset y2tics\nset ytics mirror\n"
-             << "set offsets 0, 0, graph 0.05, " << (panel.y_from_zero ? "0" : "graph 0.05")
-             << "\n"
-             << "set title " << quoted(panels.size() > 1 ? panel.title : std::string()) << "\n"
-             << "set xlabel " << quoted(panel.x_label) << "\nset ylabel " << quoted(panel.y_label)
-             << "\n";
-      if (panel.log_x) script << "set logscale x\nset format x '%g'\n";
-      else script << "set format x '% g'\n";
-      if (panel.log_y) script << "set logscale y\nset format y '%.0e'\n";
-      else script << "set format y '% g'\n";
-      script << (panel.y_from_zero ? "set yrange [0:*]\n" : "set autoscale y\n");
-      if (!panel.y2_label.empty())
-        script << "set y2label " << quoted(panel.y2_label) << "\nset y2tics\nset ytics nomirror\n";
-      std::vector<std::string> clauses;
-      for (const Series& series : panel.series) {
-        const fs::path data = work / ("series" + std::to_string(file_index++) + ".dat");
-        std::ofstream out(data);
-        out.precision(10);
-        int kept = 0;
-        for (const auto& [x, y] : series.points) {
-          // Log axes cannot show zero or negative values; gnuplot would refuse the series.
-          if (!std::isfinite(x) || !std::isfinite(y)) continue;
-          if ((panel.log_x && x <= 0) || (panel.log_y && y <= 0)) continue;
-          out << x << ' ' << y << '\n';
-          ++kept;
-        }
-        if (kept == 0) continue;
-        std::string style = panel.lines_only ? " with lines lw 1.5"
-                                             : " with linespoints lw 1.5 ps 0.9 pt " +
-                                                   std::to_string(series.point_type);
-        style += " dt " + std::to_string(series.dash);
-        if (!series.color.empty()) style += " lc rgb " + quoted(series.color);
-        clauses.push_back(quoted(data.string()) + " using 1:2" +
-                          (series.right_axis ? " axes x1y2" : "") + style + " title " +
-                          quoted(series.title));
-      }
-      if (clauses.empty()) {
-        script << "unset logscale\nset label 1 'no data' at graph 0.5, graph 0.5 center\n"
-               << "plot [0:1][0:1] NaN notitle\nunset label 1\n";
-        continue;
-      }
-      script << "plot ";
-      for (std::size_t i = 0; i < clauses.size(); ++i) script << (i ? ", \\\n     " : "") << clauses[i];
-      script << "\n";
-    }
+    for (const Panel& panel : panels) writePanel(script, panel, panels.size() > 1, work, file_index);
     script << "unset multiplot\nset output\n";
   });
 }
