@@ -28,8 +28,9 @@ set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 # vendor library (libglvnd's libEGL finds it, and llvmpipe behind it, through its JSON file).
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "fonts-dejavu-core, libegl-mesa0")
-# `simulate --plot` and sweeps' heatmaps run gnuplot; OSMesa (dlopen) is the second backend.
-set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "gnuplot-nox, libosmesa6")
+# `simulate --plot` and sweeps' heatmaps run gnuplot; OSMesa (dlopen) is the second backend;
+# the Python package (lib/python3/dist-packages/rattleback) imports NumPy.
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "gnuplot-nox, libosmesa6, python3-numpy")
 # Without dpkg-shlibdeps CPack would quietly write a package without its library Depends.
 set(CPACK_PROJECT_CONFIG_FILE "${CMAKE_CURRENT_LIST_DIR}/cpack_checks.cmake")
 

@@ -19,8 +19,12 @@ for needed in libegl1 libegl-mesa0 libavcodec fonts-dejavu-core; do
 done
 # OSMesa is opened at run time (the second backend): recommended, not required.
 grep -q libosmesa6 <<<"$(dpkg-deb -f "$deb" Recommends)" || { echo "FAIL: Recommends lacks libosmesa6"; exit 1; }
+# The Python package needs NumPy (and Debian's python3 it is built for).
+grep -q python3-numpy <<<"$(dpkg-deb -f "$deb" Recommends)" || { echo "FAIL: Recommends lacks python3-numpy"; exit 1; }
+grep -q "_core.cpython" <<<"$(dpkg-deb -c "$deb")" || { echo "FAIL: the package lacks the Python module"; exit 1; }
 contents=$(dpkg-deb -c "$deb")
-for f in ./usr/bin/rattleback ./usr/libexec/rattleback-render ./usr/share/rattleback/fonts.txt ./usr/share/rattleback/shaders/points.frag; do
+for f in ./usr/bin/rattleback ./usr/libexec/rattleback-render ./usr/share/rattleback/fonts.txt ./usr/share/rattleback/shaders/points.frag \
+         ./usr/lib/python3/dist-packages/rattleback/__init__.py; do
   grep -q " $f\$" <<<"$contents" || { echo "FAIL: the package lacks $f"; exit 1; }
 done
 echo "ok: $(basename "$deb"), $(stat -c %s "$deb") bytes"

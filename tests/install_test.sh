@@ -26,9 +26,28 @@ render_still() {  # PREFIX: renders from a fresh folder and checks the PNG
   echo "ok: $1/bin/rattleback wrote a $size-byte PNG"
 }
 
-for f in bin/rattleback share/rattleback/fonts.txt share/rattleback/shaders/points.vert; do
+# The Python package too: imported from the prefix, it finds the same assets from its own folder
+# (<prefix>/lib/python3/dist-packages/rattleback → <prefix>/share/rattleback).
+python_still() {  # PREFIX
+  [ -x /usr/bin/python3 ] && /usr/bin/python3 -c 'import numpy' 2>/dev/null || return 0
+  local run
+  run=$(mktemp -d "$work/py.XXXX")
+  (cd "$run" && PYTHONPATH="$1/lib/python3/dist-packages" /usr/bin/python3 -c "
+import rattleback as rb
+image = rb.still('$scene', 1.0, size=(320, 180))
+assert image.array.shape == (180, 320, 3), image.array.shape
+assert rb.__file__.startswith('$1'), rb.__file__
+image.save('x.png')")
+  [ "$(stat -c %s "$run/x.png")" -gt 1024 ] || { echo "FAIL: Python's still from $1 is blank"; exit 1; }
+  echo "ok: the Python package in $1 drew a still"
+}
+
+for f in bin/rattleback share/rattleback/fonts.txt share/rattleback/shaders/points.vert \
+         lib/python3/dist-packages/rattleback/__init__.py; do
   [ -e "$work/prefix/$f" ] || { echo "FAIL: the install lacks $f"; exit 1; }
 done
 render_still "$work/prefix"
+python_still "$work/prefix"
 mv "$work/prefix" "$work/moved"
 render_still "$work/moved"
+python_still "$work/moved"
