@@ -6,6 +6,8 @@
 
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
+#include <mutex>
 #include <cmath>
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -66,6 +68,46 @@ T take(rb::Result<T> result) {
   return std::move(result).value();
 }
 
+/// Runs `work(cancelled)` on this thread with the GIL released, for work that asks
+/// `cancelled()` on the calling thread (a run's samples, a sweep's pool's wait): there, at most
+/// every 20 ms, it takes the GIL and checks for signals (PyErr_CheckSignals acts on the main
+/// thread only). On Ctrl-C `cancelled()` turns true; once the work has returned (its temporary
+/// files removed) KeyboardInterrupt is raised here. No thread is made: a short call costs
+/// nothing more than the GIL's release.
+template <typename Work>
+auto interruptibleHere(Work&& work) {
+  std::atomic<bool> stop{false};
+  bool signalled = false;
+  PyObject *type = nullptr, *value = nullptr, *trace = nullptr;
+  const std::thread::id caller = std::this_thread::get_id();
+  auto last = std::chrono::steady_clock::now();
+  const std::function<bool()> cancelled = [&] {
+    if (stop.load(std::memory_order_relaxed)) return true;
+    if (std::this_thread::get_id() != caller) return false;
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last < std::chrono::milliseconds(20)) return false;
+    last = now;
+    py::gil_scoped_acquire acquire;
+    if (PyErr_CheckSignals() != 0) {
+      PyErr_Fetch(&type, &value, &trace);  // kept while the work winds down
+      signalled = true;
+      stop = true;
+    }
+    return stop.load();
+  };
+  using R = decltype(work(cancelled));
+  std::optional<R> result;
+  {
+    py::gil_scoped_release release;
+    result.emplace(work(cancelled));
+  }
+  if (signalled) {
+    PyErr_Restore(type, value, trace);
+    throw py::error_already_set();
+  }
+  return std::move(*result);
+}
+
 /// Runs `work(cancelled)` on a thread of its own with the GIL released, while this thread
 /// checks for signals every 20 ms (PyErr_CheckSignals needs the GIL and the main thread).
 /// On Ctrl-C `cancelled()` turns true; the work stops at its next sample or frame, and once it
@@ -74,11 +116,13 @@ T take(rb::Result<T> result) {
 template <typename Work>
 auto interruptible(Work&& work) {
   std::atomic<bool> stop{false};
-  std::atomic<bool> done{false};
   const std::function<bool()> cancelled = [&stop] { return stop.load(std::memory_order_relaxed); };
   using R = decltype(work(cancelled));
   std::optional<R> result;
   std::exception_ptr failure;
+  std::mutex mutex;
+  std::condition_variable finished;
+  bool done = false;
   {
     py::gil_scoped_release release;
     std::thread worker([&] {
@@ -87,25 +131,33 @@ auto interruptible(Work&& work) {
       } catch (...) {
         failure = std::current_exception();
       }
+      std::lock_guard lock(mutex);
       done = true;
+      finished.notify_one();
     });
-    while (!done) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-      if (done || stop) continue;
-      py::gil_scoped_acquire acquire;
-      if (PyErr_CheckSignals() != 0) {
-        // The exception is set; keep it while the work winds down.
-        stop = true;
-        PyObject *type, *value, *trace;
-        PyErr_Fetch(&type, &value, &trace);
-        {
-          py::gil_scoped_release again;
-          worker.join();
+    // Wakes when the work ends, or every 20 ms to look for a signal.
+    std::unique_lock lock(mutex);
+    while (!finished.wait_for(lock, std::chrono::milliseconds(20), [&] { return done; })) {
+      lock.unlock();
+      bool signalled = false;
+      PyObject *type = nullptr, *value = nullptr, *trace = nullptr;
+      {
+        py::gil_scoped_acquire acquire;
+        if (PyErr_CheckSignals() != 0) {
+          signalled = true;
+          PyErr_Fetch(&type, &value, &trace);  // kept while the work winds down
         }
+      }
+      if (signalled) {
+        stop = true;
+        worker.join();  // the work stops at its next sample or frame
+        py::gil_scoped_acquire acquire;
         PyErr_Restore(type, value, trace);
         throw py::error_already_set();
       }
+      lock.lock();
     }
+    lock.unlock();
     worker.join();
   }
   if (failure) std::rethrow_exception(failure);

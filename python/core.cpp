@@ -4,6 +4,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <chrono>
 #include <memory>
 #include <string>
 #include <vector>
@@ -81,7 +83,7 @@ std::shared_ptr<Run> simulate(const LoadedScene& loaded, double rate) {
   run->scene = loaded.value.scene.file;
   run->model = model;
   run->rate = rate;
-  const tasks::SimulateResult result = interruptible([&](const std::function<bool()>& cancelled) {
+  const tasks::SimulateResult result = interruptibleHere([&](const std::function<bool()>& cancelled) {
     tasks::SimulateOptions options;
     options.rate = rate;
     options.cancelled = cancelled;
@@ -115,7 +117,7 @@ std::shared_ptr<SweepTable> sweep(const std::string& path, int jobs) {
   auto scenes = take(scene::SweepScenes::open(table->sweep));
   std::vector<std::int64_t> rows;
   for (std::int64_t r = 0; r < table->sweep.rows(); ++r) rows.push_back(r);
-  tasks::SweepRun run = interruptible([&](const std::function<bool()>& cancelled) {
+  tasks::SweepRun run = interruptibleHere([&](const std::function<bool()>& cancelled) {
     tasks::SweepOptions options;
     options.jobs = jobs;
     options.cancelled = cancelled;
@@ -236,6 +238,23 @@ PYBIND11_MODULE(_core, m) {
     player.reversals = run.summary.reversals;
     return tasks::playerScript(player);
   }, py::arg("scene"), py::arg("run"), py::arg("id"));
+  // For bench/python_speed.py: the C++ run alone (samples kept as simulate keeps them), the
+  // median of `repeats` calls, s.
+  m.def("_native_seconds", [](const LoadedScene& loaded, double rate, int repeats) {
+    py::gil_scoped_release release;
+    std::vector<double> times;
+    for (int i = 0; i < repeats; ++i) {
+      std::vector<sim::Telemetry> samples;
+      tasks::SimulateOptions options;
+      options.rate = rate;
+      options.each = [&](const sim::Telemetry& x) { samples.push_back(x); };
+      const auto start = std::chrono::steady_clock::now();
+      tasks::simulate(loaded.value.model, options);
+      times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    std::sort(times.begin(), times.end());
+    return times[times.size() / 2];
+  }, py::arg("scene"), py::arg("rate"), py::arg("repeats"));
   m.def("simulate", &simulate, py::arg("scene"), py::arg("rate"));
   m.def("analyze", [](const LoadedScene& loaded, std::optional<double> spin) {
     const sim::Model& model = loaded.value.model;

@@ -70,7 +70,7 @@ py::array_t<std::uint8_t> still(const LoadedScene& loaded, double t, bool readou
   request.readouts = readouts;
   request.transparent = transparent;
   request.backend = backendOf(backend);
-  auto drawn = interruptible([&](const std::function<bool()>& cancelled) {
+  auto drawn = interruptibleHere([&](const std::function<bool()>& cancelled) {
     request.cancelled = cancelled;
     return media::renderStill(loaded.value, request);
   });

@@ -145,8 +145,22 @@ class Run:
     def __init__(self, core_run):
         self._run = core_run
         self._columns = core_run.columns()
-        self.result: dict = core_run.result()
-        self.model: dict = core_run.model()
+        self._result = None
+        self._model = None
+
+    @property
+    def result(self) -> dict:
+        """What the run found: the sidecar's ``result`` (status, reversals, energy, steps, …)."""
+        if self._result is None:
+            self._result = self._run.result()
+        return self._result
+
+    @property
+    def model(self) -> dict:
+        """The run's settings: the sidecar's ``model`` (contact, integrator, step, initial state)."""
+        if self._model is None:
+            self._model = self._run.model()
+        return self._model
 
     def __getattr__(self, name: str) -> np.ndarray:
         columns = self.__dict__.get("_columns", {})
