@@ -1,0 +1,16 @@
+"""Type stubs of rattleback._draw, the drawing side (see rattleback.still, rattleback.render)."""
+
+from typing import Any
+
+import numpy as np
+
+from ._core import LoadedScene
+
+presets: list[str]
+
+def still(scene: LoadedScene, t: float, readouts: bool, transparent: bool,
+          backend: str) -> np.ndarray: ...
+def render(scene: LoadedScene, output: str, both: bool, crf: int, preset: str,
+           backend: str) -> list[dict[str, Any]]: ...
+def encode_png(array: np.ndarray) -> bytes: ...
+def write_png(path: str, array: np.ndarray) -> None: ...
