@@ -16,7 +16,7 @@ corpus=$(mktemp -d)
 trap 'rm -rf "$corpus"' EXIT
 cp tests/fuzz-corpus/* "$corpus"/
 # -timeout: one input taking longer than 10 s is a hang and fails the run, as a crash does.
-./build-fuzz/fuzz/loader_fuzz "$corpus" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 \
+./build-fuzz/fuzz/loader_fuzz "$corpus" -dict=fuzz/scene.dict -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 \
   -print_final_stats=1 -artifact_prefix="$corpus/" 2>&1 | tail -n 25
 status=${PIPESTATUS[0]}
 if [ "$status" -ne 0 ]; then

@@ -74,9 +74,12 @@ double Dents::surface(const Paraboloid& shape, double x, double y) const {
 }
 
 std::int64_t estimateGridPoints(const Paraboloid& shape, const Grid& grid) {
+  // In floating point throughout: a spacing typed wrong (1e-9) makes counts past any integer,
+  // and halfColumns' and zLevels' int would overflow (and pass the check below as negative).
   const Eigen::Vector2d half = shape.rimHalfWidths();
-  const double columns = 4.0 * halfColumns(half.x(), grid.dx) * halfColumns(half.y(), grid.dy);
-  const double levels = zLevels(shape, grid.dz) + 1.0;
+  const double columns = 4.0 * std::floor(half.x() / grid.dx + 0.5) * std::floor(half.y() / grid.dy + 0.5);
+  const double levels = std::floor((shape.top + shape.a) / grid.dz + 1e-9) + 1.0;
+  if (!std::isfinite(columns * levels)) return std::numeric_limits<std::int64_t>::max();
   const double bound = columns * levels;  // the bounding box: an upper bound
   return bound > 9e18 ? std::numeric_limits<std::int64_t>::max()
                       : static_cast<std::int64_t>(bound);

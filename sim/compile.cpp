@@ -225,8 +225,11 @@ rb::Result<Body> buildBody(const BodySpec& b, double unit, MassSource source) {
   const Grid grid{b.grid.dx * unit, b.grid.dy * unit, b.grid.dz * unit};
   const double estimate = static_cast<double>(estimateGridPoints(shape, grid));
   if (estimate > kMaxGridPoints)
-    return rb::Error{"body.grid", "makes about " + show(estimate) + " points; at most " +
-                                      show(kMaxGridPoints) + " are allowed"};
+    return rb::Error{"body.grid",
+                     (estimate >= 9e18 ? std::string("makes more than 9e18 points")
+                                       : "makes about " + show(estimate) + " points") +
+                         "; at most " + show(kMaxGridPoints) +
+                         " are allowed (the spacings are in units.length: a typo such as 1e-9?)"};
   std::optional<Dents> dents;
   if (b.dents)
     dents = Dents{b.dents->scale, b.dents->at[0] * unit, b.dents->at[1] * unit,

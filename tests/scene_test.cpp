@@ -80,6 +80,11 @@ const BadCase kBadCases[] = {
     {"top: 2}", "top: -5}", "4: body.paraboloid.top must be above the apex"},
     {"dz: 0.2}", "dz: -0.2}", "6: body.grid.dz must be > 0"},
     {"dx: 0.52,", "dx: 1e-6,", "6: body.grid makes about"},
+    // Spacings so small that the counts pass any integer (issue 26: 1e-9 aborted the program
+    // with std::length_error; the int column count overflowed past the check).
+    {"dx: 0.52,", "dx: 1e-9,", "6: body.grid makes about"},
+    {"dz: 0.2}", "dz: 1e-12}", "6: body.grid makes about"},
+    {"dx: 0.52, dy: 1.42, dz: 0.2", "dx: 1e-300, dy: 1e-300, dz: 1e-300", "6: body.grid makes"},
     {"{scale: 0.375, ", "{", "5: body.dents.scale is required"},
     {"length: 0.01", "length: 0", "1: units.length must be > 0"},
     {"tilt: [0.0, 0.0]", "tilt: 5", "9: initial.tilt must be a list of two numbers"},
