@@ -74,7 +74,7 @@ struct MassProperties {
   Eigen::Matrix3d inertia;       ///< about the CM, geometric axes, kg m²
   Eigen::Vector3d principal;     ///< principal moments, ascending, kg m²
   Eigen::Matrix3d axes;          ///< columns: principal axes (geometric frame), right-handed
-  double misalignment_deg = 0;   ///< from the long (y) axis to the least-inertia axis's
+  double misalignment_deg = 0;   ///< from the long axis (y, or x when the least-inertia axis lies nearer x) to the least-inertia axis's
                                  ///< horizontal projection, + counter-clockwise about z
 };
 

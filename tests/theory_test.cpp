@@ -330,3 +330,36 @@ TEST(Rolling, AgreesWithTheIndependentReferenceSolver) {
   ASSERT_EQ(reversals.size(), 4u);
   for (std::size_t i = 0; i < 4; ++i) EXPECT_NEAR(reversals[i], reference[i], i < 2 ? 1e-6 : 1e-5) << i;
 }
+
+// The misalignment is measured from the long axis, whichever of x and y it is: the least-inertia
+// axis of the horizontal block [[Ixx, Ixy], [Ixy, Iyy]] of the tensor lies at θ from x with
+// θ = ½ atan2(−2 Ixy, Iyy − Ixx) (the eigenvector of its smaller eigenvalue). A body long in x
+// is misaligned by that θ (−10.9° here), not by 90° − |θ| read from y (issue 26: 89.2° for a
+// body misaligned by 0.8°); the same body turned a quarter (long in y) by the same angle from
+// y. Closed form: 1e-9° is rounding.
+TEST(Ellipsoid, TheMisalignmentIsMeasuredFromTheLongAxis) {
+  auto misalignment = [](const std::string& semi_axes, double Ixx, double Iyy, double Ixy) {
+    char yaml[600];
+    std::snprintf(yaml, sizeof yaml, R"(
+body:
+  shape: ellipsoid
+  ellipsoid: {semi_axes: %s}
+  inertia: [[%g, %g, 0.0], [%g, %g, 0.0], [0.0, 0.0, %g]]
+  mass: 0.1
+contact: {model: rolling}
+initial: {spin: 5.0, tilt: [0.5, 0.5]}
+simulation: {dt: 1.0e-4, duration: 1.0}
+)", semi_axes.c_str(), Ixx, Ixy, Ixy, Iyy, 0.98 * (Ixx + Iyy));
+    auto loaded = scene::loadString(yaml, "m.yaml");
+    EXPECT_TRUE(loaded) << loaded.error().text();
+    auto model = scene::loadModel(loaded.value());
+    EXPECT_TRUE(model) << model.error().text();
+    return model->body->mass_properties.misalignment_deg;
+  };
+  const double Ixx = 2.0e-5, Iyy = 1.7e-4, Ixy = 3.0e-5;  // long in x: least inertia about x
+  const double expected = 0.5 * std::atan2(-2 * Ixy, Iyy - Ixx) * 180 / M_PI;  // from x
+  EXPECT_NEAR(expected, -10.9, 0.1);  // (the closed form's own value, for the reader)
+  EXPECT_NEAR(misalignment("[0.15, 0.025, 0.02]", Ixx, Iyy, Ixy), expected, 1e-9);
+  // Turned a quarter: x → y, y → −x, so Ixy changes sign and the angle is the same from y.
+  EXPECT_NEAR(misalignment("[0.025, 0.15, 0.02]", Iyy, Ixx, -Ixy), expected, 1e-9);
+}
