@@ -199,11 +199,16 @@ class Checker:
 
         # The embedded samples are the run's own (its CSV, full rate) at the same times.
         csv_path = self.folder / f"{run_id}.csv"
+        rows = {}
         if csv_path.exists():
-            rows = {}
             with open(csv_path) as f:
                 for row in csv.DictReader(f):
                     rows[round(float(row["t"]), 6)] = row
+            if not rows or max(rows) < round(t[-1], 6) or min(rows) > round(t[0], 6):
+                print(f"note: {csv_path.name} does not cover the player's run "
+                      f"[{t[0]}, {t[-1]}]: not compared")
+                rows = {}
+        if rows:
             worst = 0.0
             missing = 0
             for k in range(0, n, max(1, n // 50)):
@@ -216,6 +221,9 @@ class Checker:
             self.check(missing == 0, f"{where}: {missing} player samples have no row in {csv_path.name}")
             self.check(worst < 1e-6, f"{where}: player data differs from {csv_path.name} by {worst}")
 
+        # As loaded (the oblique view at the start): the body is drawn, its top red.
+        px = self.pixels(element)
+        self.check(px["red"] > 100, f"{where}: as loaded the canvas shows {px['red']} red pixels")
         # Colours where the body is, from the side at the start: red top and blue bottom.
         self.hook(element, "setTime(arguments[1])", t[0])
         self.click_view(element, "side")

@@ -1,0 +1,1075 @@
+// The report page's interactive player of a simulated rattleback run (three.js).
+//
+// The page holds, for each run, <div class="rb-player" data-run="ID"></div> and a classic
+// script ID.player.js that stores the run in window.RATTLEBACK_RUNS[ID] (see README.md beside
+// this folder's package.json for the fields); this script, loaded last, builds a player in each
+// such element. It is bundled into one classic script (build.sh): no module imports, no fetch,
+// nothing from the network, so the page works from file://.
+//
+// Frames: world z is up and the floor is the plane z = 0, as in the data; the body's points are
+// in its own frame about the centre of mass, posed each frame by the run's position (linear
+// between samples) and attitude (slerp between samples). A "frame" of the step buttons and
+// arrow keys is one sample interval of the data. Playback stops at the end of the run (play
+// again starts it over).
+import {
+  BufferAttribute,
+  BufferGeometry,
+  Color,
+  Mesh,
+  OrthographicCamera,
+  PerspectiveCamera,
+  PlaneGeometry,
+  Points,
+  Quaternion,
+  SRGBColorSpace,
+  Scene,
+  ShaderMaterial,
+  Vector2,
+  Vector3,
+  WebGLRenderer,
+} from 'three';
+import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+
+const DEG = Math.PI / 180;
+const ELEVATION = 10 * DEG; // front and side look this far down (render/camera.cpp)
+const BACKGROUND = [0.93, 0.94, 0.96]; // the renderer's kBackground (sRGB)
+const VIEWS = ['oblique', 'above', 'front', 'side', 'follow'];
+const SPEEDS = [0.1, 0.25, 0.5, 1, 2, 4];
+const UP = new Vector3(0, 0, 1);
+
+// ---------------------------------------------------------------------------------------------
+// Shaders (GLSL ES 3.0 through three's ShaderMaterial; colours are written as sRGB as they are).
+
+// The body's points as sphere impostors: one GL point per sphere, sized to its projected radius
+// (perspective and orthographic alike), shaded from the sprite's coordinates; a ported subset
+// of the renderer's points.vert / points.frag.
+const POINTS_VERTEX = /* glsl */ `
+attribute float kind;          // 0 top (red), 1 bottom (blue)
+uniform float radius;          // sphere radius, m
+uniform float spacing;         // distance between neighbouring points, m
+uniform float viewportHeight;  // drawing buffer pixels
+varying vec3 vColor;
+varying float vRadiusPx;
+varying float vEdgePx;
+varying float vSpriteRadii;
+void main() {
+  vec4 view = modelViewMatrix * vec4(position, 1.0);
+  gl_Position = projectionMatrix * view;
+  float w = projectionMatrix[2][3] == 0.0 ? 1.0 : -view.z;
+  float pxPerM = abs(projectionMatrix[1][1]) * viewportHeight * 0.5 / w;
+  // Spheres of a pixel or two grow towards their neighbours so the surface reads as one.
+  float radiusPx = max(radius * pxPerM, min(0.6 * spacing * pxPerM, 2.0));
+  float radiusM = radiusPx / pxPerM;
+  vRadiusPx = max(radiusPx, 0.75);
+  vEdgePx = clamp(vRadiusPx - 1.5, 0.05, 1.0);
+  float halfPx = vRadiusPx + 0.5 * vEdgePx;
+  gl_PointSize = 2.0 * halfPx;
+  vSpriteRadii = halfPx / vRadiusPx;
+  // The sprite's depth is the sphere's nearest point.
+  vec4 front = projectionMatrix * vec4(view.xy, view.z + radiusM, 1.0);
+  gl_Position.z = front.z / front.w * gl_Position.w;
+  vColor = kind < 0.5 ? vec3(0.86, 0.13, 0.10) : vec3(0.13, 0.32, 0.88);
+}`;
+
+const POINTS_FRAGMENT = /* glsl */ `
+uniform vec3 lightView;  // unit vector towards the light, view frame
+uniform vec3 halfView;   // halfway between the light and the eye, view frame
+varying vec3 vColor;
+varying float vRadiusPx;
+varying float vEdgePx;
+varying float vSpriteRadii;
+void main() {
+  vec2 p = (gl_PointCoord * 2.0 - 1.0) * vSpriteRadii;
+  p.y = -p.y;  // gl_PointCoord runs down the screen
+  float rr = dot(p, p);
+  float coverage = clamp((1.0 - sqrt(rr)) * vRadiusPx / vEdgePx + 0.5, 0.0, 1.0);
+  if (coverage <= 0.0) discard;
+  vec3 n = vec3(p, sqrt(max(0.0, 1.0 - rr)));
+  float diffuse = max(dot(n, lightView), 0.0);
+  float s = max(dot(n, halfView), 0.0);
+  s *= s; s *= s; s *= s; s *= s; s *= s;  // s^32
+  float highlight = s * smoothstep(1.5, 2.5, vRadiusPx);
+  gl_FragColor = vec4(vColor * (0.35 + 0.65 * diffuse) + vec3(0.3) * highlight, coverage);
+}`;
+
+// The floor: a box-filtered checker fading into the background, with a soft contact shadow
+// under the body (the renderer's floor.frag and floor_common.frag).
+const FLOOR_VERTEX = /* glsl */ `
+varying vec2 vXY;
+void main() {
+  vec4 world = modelMatrix * vec4(position, 1.0);
+  vXY = world.xy;
+  gl_Position = projectionMatrix * viewMatrix * world;
+}`;
+
+const FLOOR_FRAGMENT = /* glsl */ `
+uniform float tile;            // checker square, m
+uniform vec3 background;
+uniform vec2 center;           // where the floor fades from, m
+uniform float fadeNear;
+uniform float fadeFar;
+uniform vec2 depthDirection;   // orthographic views along the floor: away from the camera
+uniform float fogNear;
+uniform float fogFar;          // 0: fade with distance from the centre instead
+uniform vec2 shadowCenter;
+uniform vec2 shadowAxis;       // the body's long axis on the floor
+uniform vec2 shadowHalf;       // half extents across and along it, m
+uniform float shadowStrength;
+varying vec2 vXY;
+void main() {
+  vec2 p = vXY / tile;
+  vec2 w = fwidth(p) + 1e-4;
+  vec2 i = 2.0 * (abs(fract((p - 0.5 * w) * 0.5) - 0.5) - abs(fract((p + 0.5 * w) * 0.5) - 0.5)) / w;
+  float checker = 0.5 - 0.5 * i.x * i.y;
+  float depth = dot(vXY - center, depthDirection);
+  float fog = step(1e-9, fogFar);
+  checker = mix(checker, 0.5, smoothstep(fogNear, mix(fogNear, fogFar, 0.5), depth) * fog);
+  vec3 color = mix(vec3(0.80, 0.80, 0.78), vec3(0.66, 0.67, 0.66), checker);
+  vec2 d = vXY - shadowCenter;
+  vec2 local = vec2(dot(d, vec2(shadowAxis.y, -shadowAxis.x)), dot(d, shadowAxis));
+  float shadow = shadowStrength * (1.0 - smoothstep(0.55, 1.15, length(local / shadowHalf)));
+  float fade = fog > 0.5 ? smoothstep(fogNear, fogFar, depth)
+                         : smoothstep(fadeNear, fadeFar, length(vXY - center));
+  gl_FragColor = vec4(mix(color * (1.0 - shadow), background, fade), 1.0);
+}`;
+
+// ---------------------------------------------------------------------------------------------
+// Style: injected once, so that the page needs no CSS of its own.
+
+const STYLE = `
+.rbp{display:flex;flex-wrap:wrap;gap:10px;align-items:flex-start;font:14px/1.35 system-ui,-apple-system,"Segoe UI",sans-serif;color:#1e1e1e;outline:none;margin:8px 0}
+.rbp:focus-visible{box-shadow:0 0 0 2px #6b8fd6;border-radius:4px}
+.rbp-main{flex:1 1 480px;min-width:280px;max-width:100%}
+.rbp-stage{position:relative;width:100%;aspect-ratio:16/9;background:#eef0f5;border:1px solid #c9ccd4;border-radius:4px;overflow:hidden}
+.rbp-stage canvas{display:block;width:100%;height:100%;touch-action:none;cursor:grab}
+.rbp-stage.rbp-fixed{aspect-ratio:auto;width:auto}
+.rbp-bar,.rbp-views{display:flex;flex-wrap:wrap;gap:4px;align-items:center;margin-top:6px}
+.rbp button,.rbp select{font:inherit;font-size:13px;padding:2px 8px;border:1px solid #b7bcc7;border-radius:3px;background:#f7f8fa;color:#1e1e1e;cursor:pointer}
+.rbp button:hover{background:#e9ecf2}
+.rbp button.rbp-on{background:#3b5fa8;border-color:#3b5fa8;color:#fff}
+.rbp-play{min-width:4.5em}
+.rbp-slider{flex:1 1 160px;min-width:120px;margin:0 6px}
+.rbp-label{font-size:12px;color:#555;margin-right:2px}
+.rbp-side{flex:0 0 270px;max-width:100%}
+.rbp-title{font-weight:600;margin-bottom:4px;word-break:break-word}
+.rbp-read{font:13px/1.5 ui-monospace,"DejaVu Sans Mono",Menlo,Consolas,monospace;white-space:pre}
+.rbp-plot{display:block;width:270px;height:130px;margin-top:6px;border:1px solid #c9ccd4;border-radius:3px;background:#fff;cursor:crosshair}
+.rbp-help{font-size:12px;color:#666;margin-top:6px}
+.rbp-missing{padding:10px 12px;border:1px dashed #c9a0a0;border-radius:4px;color:#7a2e2e;background:#fbf4f4;font:14px system-ui,sans-serif;margin:8px 0}
+`;
+
+function injectStyle() {
+  if (document.getElementById('rb-player-style')) return;
+  const style = document.createElement('style');
+  style.id = 'rb-player-style';
+  style.textContent = STYLE;
+  (document.head || document.documentElement).appendChild(style);
+}
+
+function el(tag, className, text) {
+  const e = document.createElement(tag);
+  if (className) e.className = className;
+  if (text !== undefined) e.textContent = text;
+  return e;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The run's data.
+
+const SERIES = ['t', 'x', 'y', 'z', 'qw', 'qx', 'qy', 'qz', 'spin'];
+
+// Why `run` cannot be played, or '' when it can.
+function problemWith(run) {
+  if (!run || typeof run !== 'object') return 'no data';
+  const n = run.t && run.t.length;
+  if (!n) return 'no samples';
+  for (const k of SERIES) if (!run[k] || run[k].length !== n) return `series ${k} missing or of another length`;
+  for (const k of ['top', 'bottom']) if (!run[k] || run[k].length % 3) return `points ${k} missing`;
+  if (run.top.length + run.bottom.length === 0) return 'no points';
+  for (let i = 1; i < n; i++) if (!(run.t[i] > run.t[i - 1])) return 'times not increasing';
+  return '';
+}
+
+// The body's geometry from the points: extents, spacing, footprint.
+function bodyGeometry(run) {
+  const count = (run.top.length + run.bottom.length) / 3;
+  const positions = new Float32Array(3 * count);
+  const kinds = new Float32Array(count);
+  positions.set(run.top, 0);
+  positions.set(run.bottom, run.top.length);
+  kinds.fill(1, run.top.length / 3);
+  const low = [Infinity, Infinity, Infinity];
+  const high = [-Infinity, -Infinity, -Infinity];
+  let reach = 0;
+  const r = +run.radius || 0.001;
+  for (let i = 0; i < count; i++) {
+    let n2 = 0;
+    for (let k = 0; k < 3; k++) {
+      const v = positions[3 * i + k];
+      low[k] = Math.min(low[k], v);
+      high[k] = Math.max(high[k], v);
+      n2 += v * v;
+    }
+    reach = Math.max(reach, Math.sqrt(n2) + r);
+  }
+  // Spacing: the median distance to the nearest neighbour over a sample of points.
+  const nearest = [];
+  const stride = Math.max(1, Math.floor(count / 40));
+  for (let i = 0; i < count; i += stride) {
+    let best = Infinity;
+    for (let j = 0; j < count; j++) {
+      if (j === i) continue;
+      const dx = positions[3 * i] - positions[3 * j];
+      const dy = positions[3 * i + 1] - positions[3 * j + 1];
+      const dz = positions[3 * i + 2] - positions[3 * j + 2];
+      const d = dx * dx + dy * dy + dz * dz;
+      if (d > 0 && d < best) best = d;
+    }
+    if (best < Infinity) nearest.push(Math.sqrt(best));
+  }
+  nearest.sort((a, b) => a - b);
+  const spacing = nearest.length ? nearest[nearest.length >> 1] : 2 * r;
+  const geometry = new BufferGeometry();
+  geometry.setAttribute('position', new BufferAttribute(positions, 3));
+  geometry.setAttribute('kind', new BufferAttribute(kinds, 1));
+  const halfExtent = [0, 1, 2].map((k) => 0.5 * (high[k] - low[k]) + r);
+  return {
+    geometry,
+    radius: r,
+    spacing,
+    reach: run.reach > 0 ? +run.reach : reach,
+    halfExtent,
+    middleHeight: 0.5 * (high[2] + low[2]),
+    footprintHalf: [halfExtent[0], halfExtent[1]],
+  };
+}
+
+// ---------------------------------------------------------------------------------------------
+// One player.
+
+const players = [];
+
+class Player {
+  constructor(container, run) {
+    this.container = container;
+    this.run = run;
+    this.n = run.t.length;
+    this.t0 = run.t[0];
+    this.tEnd = run.t[this.n - 1];
+    this.time = this.t0;
+    this.playing = false;
+    this.speed = 1;
+    this.viewName = 'oblique';
+    this.lastView = 'oblique';
+    this.dirty = true;
+    this.visible = true;
+    this.fixedSize = null;
+    this.frameTimes = []; // intervals between consecutive drawn animation frames, ms
+    this.renderTimes = []; // CPU time of renderer.render, ms
+    this.lastFrameAt = null;
+    this.spinNow = run.spin[0];
+    this.qa = new Quaternion();
+    this.qb = new Quaternion();
+    this.buildDom();
+    this.buildScene();
+    this.bindEvents();
+    this.setView('oblique');
+    this.applyTime(this.t0);
+    this.render();
+    this.loop = this.loop.bind(this);
+    requestAnimationFrame(this.loop);
+  }
+
+  // --- DOM ---------------------------------------------------------------------------------
+  buildDom() {
+    const c = this.container;
+    c.textContent = '';
+    const root = el('div', 'rbp');
+    root.tabIndex = 0;
+    root.setAttribute('role', 'group');
+    root.setAttribute('aria-label', `3D player: ${this.run.title || this.run.id}`);
+    const main = el('div', 'rbp-main');
+    this.stage = el('div', 'rbp-stage');
+    this.canvas = el('canvas');
+    this.stage.appendChild(this.canvas);
+    main.appendChild(this.stage);
+
+    const bar = el('div', 'rbp-bar');
+    const button = (text, title, handler, extra) => {
+      const b = el('button', extra || '', text);
+      b.type = 'button';
+      b.title = title;
+      b.addEventListener('click', handler);
+      return b;
+    };
+    this.backButton = button('◀|', 'Step back one sample (←)', () => this.step(-1), 'rbp-back');
+    this.playButton = button('▶ Play', 'Play / pause (space)', () => this.toggle(), 'rbp-play');
+    this.forwardButton = button('|▶', 'Step forward one sample (→)', () => this.step(1), 'rbp-forward');
+    this.slider = el('input', 'rbp-slider');
+    this.slider.type = 'range';
+    this.slider.min = String(this.t0);
+    this.slider.max = String(this.tEnd);
+    this.slider.step = 'any';
+    this.slider.value = String(this.t0);
+    this.slider.setAttribute('aria-label', 'time (s)');
+    this.slider.addEventListener('input', () => this.setTime(parseFloat(this.slider.value), false));
+    this.speedSelect = el('select', 'rbp-speed');
+    this.speedSelect.title = 'Playback speed';
+    for (const s of SPEEDS) {
+      const o = el('option', '', `${s}×`);
+      o.value = String(s);
+      if (s === 1) o.selected = true;
+      this.speedSelect.appendChild(o);
+    }
+    this.speedSelect.addEventListener('change', () => this.setSpeed(parseFloat(this.speedSelect.value)));
+    bar.append(this.backButton, this.playButton, this.forwardButton, this.slider,
+               el('span', 'rbp-label', 'speed'), this.speedSelect);
+    main.appendChild(bar);
+
+    const views = el('div', 'rbp-views');
+    views.appendChild(el('span', 'rbp-label', 'view'));
+    this.viewButtons = {};
+    for (const v of VIEWS) {
+      const b = button(v[0].toUpperCase() + v.slice(1), `View: ${v}`, () => this.setView(v), `rbp-view rbp-view-${v}`);
+      b.dataset.view = v;
+      this.viewButtons[v] = b;
+      views.appendChild(b);
+    }
+    this.freeButton = button('Free', 'Drag to orbit, right-drag to pan, wheel to zoom', () => this.setView('free'), 'rbp-view rbp-view-free');
+    this.freeButton.dataset.view = 'free';
+    this.viewButtons.free = this.freeButton;
+    views.appendChild(this.freeButton);
+    main.appendChild(views);
+
+    const side = el('div', 'rbp-side');
+    side.appendChild(el('div', 'rbp-title', this.run.title || this.run.id || 'run'));
+    this.readTime = el('div', 'rbp-read rbp-time');
+    this.readSpin = el('div', 'rbp-read rbp-spin');
+    this.readSense = el('div', 'rbp-read rbp-sense');
+    side.append(this.readTime, this.readSpin, this.readSense);
+    this.plot = el('canvas', 'rbp-plot');
+    this.plot.title = 'spin n(t); click to seek';
+    side.appendChild(this.plot);
+    const nrev = (this.run.reversals || []).length;
+    side.appendChild(el('div', 'rbp-help',
+      `${nrev} reversal${nrev === 1 ? '' : 's'} (orange). Drag: orbit, right-drag: pan, wheel: zoom. ` +
+      'Keys: space play/pause, ← → step one sample (' + formatStep(this.run.t) + ').'));
+    root.append(main, side);
+    c.appendChild(root);
+    this.root = root;
+  }
+
+  // --- three.js scene ----------------------------------------------------------------------
+  buildScene() {
+    const run = this.run;
+    this.renderer = new WebGLRenderer({
+      canvas: this.canvas,
+      antialias: false, // the spheres and the checker smooth their own edges: cheaper
+      preserveDrawingBuffer: true,
+      powerPreference: 'low-power',
+    });
+    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
+    this.scene = new Scene();
+    this.scene.background = new Color().setRGB(...BACKGROUND, SRGBColorSpace);
+    const body = bodyGeometry(run);
+    this.body = body;
+    this.framing = {
+      center: new Vector3(run.x[0], run.y[0], run.z[0]),
+      radius: 1.25 * body.reach,
+    };
+    this.pointsMaterial = new ShaderMaterial({
+      vertexShader: POINTS_VERTEX,
+      fragmentShader: POINTS_FRAGMENT,
+      uniforms: {
+        radius: { value: body.radius },
+        spacing: { value: body.spacing },
+        viewportHeight: { value: 720 },
+        lightView: { value: new Vector3(0.3, 0.5, 0.81).normalize() },
+        halfView: { value: new Vector3(0.3, 0.5, 1.81).normalize() },
+      },
+      transparent: true,
+      depthWrite: true,
+    });
+    this.points = new Points(body.geometry, this.pointsMaterial);
+    this.points.frustumCulled = false;
+    this.scene.add(this.points);
+
+    // The floor: over the body's whole wander, and far enough beyond it to fade out.
+    let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+    for (let i = 0; i < this.n; i++) {
+      x0 = Math.min(x0, run.x[i]); x1 = Math.max(x1, run.x[i]);
+      y0 = Math.min(y0, run.y[i]); y1 = Math.max(y1, run.y[i]);
+    }
+    const size = Math.max(...body.halfExtent);
+    const margin = 14 * size + 20 * this.framing.radius;
+    const floorGeometry = new PlaneGeometry(x1 - x0 + 2 * margin, y1 - y0 + 2 * margin);
+    const raw = size / 5;
+    const decade = Math.pow(10, Math.floor(Math.log10(raw)));
+    this.tile = raw / decade < 2 ? decade : raw / decade < 5 ? 2 * decade : 5 * decade;
+    this.size = size;
+    this.floorMaterial = new ShaderMaterial({
+      vertexShader: FLOOR_VERTEX,
+      fragmentShader: FLOOR_FRAGMENT,
+      uniforms: {
+        tile: { value: this.tile },
+        background: { value: new Vector3(...BACKGROUND) },
+        center: { value: new Vector2() },
+        fadeNear: { value: 3 * size },
+        fadeFar: { value: 12 * size },
+        depthDirection: { value: new Vector2() },
+        fogNear: { value: 0 },
+        fogFar: { value: 0 },
+        shadowCenter: { value: new Vector2() },
+        shadowAxis: { value: new Vector2(0, 1) },
+        shadowHalf: { value: new Vector2(...body.footprintHalf) },
+        shadowStrength: { value: 0.45 },
+      },
+    });
+    this.floor = new Mesh(floorGeometry, this.floorMaterial);
+    this.floor.position.set(0.5 * (x0 + x1), 0.5 * (y0 + y1), 0);
+    this.floor.renderOrder = -1;
+    this.scene.add(this.floor);
+
+    // Cameras, z up: a perspective one (oblique, follow) and an orthographic one (above, front,
+    // side), each with its own orbit controls; any drag or zoom makes the view "free".
+    this.perspective = new PerspectiveCamera(30, 16 / 9, 0.01, 100);
+    this.orthographic = new OrthographicCamera(-1, 1, 1, -1, 0.01, 100);
+    this.controls = {};
+    for (const camera of [this.perspective, this.orthographic]) {
+      camera.up.copy(UP);
+      const controls = new OrbitControls(camera, this.canvas);
+      controls.enabled = false;
+      controls.enableDamping = false;
+      controls.zoomToCursor = false;
+      let interacting = false;
+      controls.addEventListener('start', () => { interacting = true; });
+      controls.addEventListener('end', () => { interacting = false; });
+      controls.addEventListener('change', () => {
+        if (interacting && this.viewName !== 'free') this.makeFree();
+        this.dirty = true;
+      });
+      this.controls[camera.type] = controls;
+    }
+    this.camera = this.perspective;
+    this.resize();
+  }
+
+  activeControls() {
+    return this.controls[this.camera.type];
+  }
+
+  useCamera(camera) {
+    this.camera = camera;
+    for (const c of Object.values(this.controls)) c.enabled = false;
+    this.activeControls().enabled = true;
+  }
+
+  // The stage's size: 16:9 across the column, or as fixed by the test hook.
+  resize() {
+    let w, h;
+    if (this.fixedSize) {
+      [w, h] = this.fixedSize;
+    } else {
+      w = Math.max(16, Math.round(this.stage.clientWidth || 640));
+      h = Math.max(9, Math.round(this.stage.clientHeight || (w * 9) / 16));
+    }
+    if (w === this.width && h === this.height) return;
+    this.width = w;
+    this.height = h;
+    this.renderer.setSize(w, h, false);
+    this.pointsMaterial.uniforms.viewportHeight.value = this.renderer.getDrawingBufferSize(new Vector2()).y;
+    if (this.viewName === 'free') {
+      // Keep the free camera, fit its projection to the new aspect.
+      const aspect = w / h;
+      this.perspective.aspect = aspect;
+      this.perspective.updateProjectionMatrix();
+      const o = this.orthographic;
+      const halfH = o.top;
+      o.left = -halfH * aspect;
+      o.right = halfH * aspect;
+      o.updateProjectionMatrix();
+    } else {
+      this.placeCamera();
+    }
+    this.dirty = true;
+  }
+
+  // --- views: as the renderer places them (render/camera.cpp) -------------------------------
+  setView(name) {
+    if (!VIEWS.includes(name) && name !== 'free') throw new Error(`unknown view ${name}`);
+    if (name === 'free') {
+      this.makeFree();
+    } else {
+      this.viewName = name;
+      this.lastView = name;
+      this.placeCamera();
+    }
+    this.updateViewButtons();
+    this.dirty = true;
+  }
+
+  makeFree() {
+    this.viewName = 'free';
+    this.updateViewButtons();
+  }
+
+  updateViewButtons() {
+    for (const [v, b] of Object.entries(this.viewButtons)) b.classList.toggle('rbp-on', v === this.viewName);
+  }
+
+  placeCamera() {
+    const aspect = this.width / this.height;
+    const target = this.framing.center;
+    const r = this.framing.radius;
+    const fov = 30 * DEG;
+    const narrow = aspect >= 1 ? fov : 2 * Math.atan(Math.tan(fov / 2) * aspect);
+    const ortho = (direction, across, upwards) => {
+      const o = this.orthographic;
+      const halfW = 1.1 * Math.max(across, upwards * aspect);
+      o.left = -halfW;
+      o.right = halfW;
+      o.top = halfW / aspect;
+      o.bottom = -halfW / aspect;
+      o.near = 0.1 * r;
+      o.far = 40 * r;
+      o.zoom = 1;
+      o.updateProjectionMatrix();
+      o.position.copy(target).addScaledVector(direction, 20 * r);
+      o.lookAt(target);
+      this.useCamera(o);
+      this.activeControls().target.copy(target);
+    };
+    const halfHeight = this.body.halfExtent[2];
+    const sinE = Math.sin(ELEVATION), cosE = Math.cos(ELEVATION);
+    switch (this.viewName) {
+      case 'above': {
+        // Straight down with +y to the right and +x down the screen: the eye a hair towards
+        // +x, so that looking at the target with z up turns the picture that way (and orbiting
+        // from there is smooth).
+        const tilt = 1e-4;
+        ortho(new Vector3(Math.sin(tilt), 0, Math.cos(tilt)), r, r);
+        break;
+      }
+      case 'front':
+        ortho(new Vector3(0, -cosE, sinE), r, halfHeight + r * sinE);
+        break;
+      case 'side':
+        ortho(new Vector3(cosE, 0, sinE), r, halfHeight + r * sinE);
+        break;
+      case 'oblique': {
+        const distance = (1.1 * r) / Math.sin(narrow / 2);
+        const p = this.perspective;
+        p.fov = 30;
+        p.aspect = aspect;
+        p.zoom = 1;
+        p.near = 0.02 * distance;
+        p.far = 40 * distance;
+        p.updateProjectionMatrix();
+        p.position.copy(target).addScaledVector(new Vector3(0.75, -0.55, 0.55).normalize(), distance);
+        p.lookAt(target);
+        this.useCamera(p);
+        this.activeControls().target.copy(target);
+        break;
+      }
+      case 'follow':
+        this.placeChase();
+        break;
+      default:
+        break;
+    }
+  }
+
+  // Follow: beside the body across its long axis, 25° above, moving and turning with it.
+  placeChase() {
+    const aspect = this.width / this.height;
+    const fov = 30 * DEG;
+    const narrow = aspect >= 1 ? fov : 2 * Math.atan(Math.tan(fov / 2) * aspect);
+    const elevation = 25 * DEG;
+    const q = this.points.quaternion;
+    const axis = new Vector3(0, 1, 0).applyQuaternion(q); // the long axis, world
+    let hx = axis.x, hy = axis.y;
+    const norm = Math.hypot(hx, hy);
+    if (norm > 1e-6) { hx /= norm; hy /= norm; } else { hx = 0; hy = 1; }
+    const middle = this.points.position.clone();
+    middle.z += this.body.middleHeight;
+    const distance = (1.1 * this.body.reach) / Math.sin(narrow / 2);
+    const direction = new Vector3(-hy * Math.cos(elevation), hx * Math.cos(elevation), Math.sin(elevation));
+    const p = this.perspective;
+    p.fov = 30;
+    p.aspect = aspect;
+    p.zoom = 1;
+    p.near = 0.02 * distance;
+    p.far = 40 * distance;
+    p.updateProjectionMatrix();
+    p.position.copy(middle).addScaledVector(direction, distance);
+    p.lookAt(middle);
+    if (this.camera !== p) this.useCamera(p);
+    this.activeControls().target.copy(middle);
+  }
+
+  // --- time ----------------------------------------------------------------------------------
+  // The sample interval [i, i + 1] holding t, and how far along it t is.
+  locate(t) {
+    const ts = this.run.t;
+    const n = this.n;
+    if (n === 1 || t <= ts[0]) return [0, 0];
+    if (t >= ts[n - 1]) return [n - 2, 1];
+    let lo = 0, hi = n - 1; // ts[lo] <= t < ts[hi]
+    while (hi - lo > 1) {
+      const mid = (lo + hi) >> 1;
+      if (ts[mid] <= t) lo = mid; else hi = mid;
+    }
+    return [lo, (t - ts[lo]) / (ts[hi] - ts[lo])];
+  }
+
+  applyTime(t) {
+    const run = this.run;
+    t = Math.min(this.tEnd, Math.max(this.t0, t));
+    this.time = t;
+    const [i, a] = this.locate(t);
+    const j = Math.min(i + 1, this.n - 1);
+    const lerp = (s) => s[i] + (s[j] - s[i]) * a;
+    this.points.position.set(lerp(run.x), lerp(run.y), lerp(run.z));
+    // three's Quaternion is (x, y, z, w); the data is scalar first.
+    this.qa.set(run.qx[i], run.qy[i], run.qz[i], run.qw[i]);
+    this.qb.set(run.qx[j], run.qy[j], run.qz[j], run.qw[j]);
+    this.points.quaternion.slerpQuaternions(this.qa, this.qb, a);
+    this.points.updateMatrixWorld(true);
+    this.spinNow = lerp(run.spin);
+    // The floor's contact shadow follows the body.
+    const u = this.floorMaterial.uniforms;
+    u.shadowCenter.value.set(this.points.position.x, this.points.position.y);
+    const axis = new Vector3(0, 1, 0).applyQuaternion(this.points.quaternion);
+    const norm = Math.hypot(axis.x, axis.y);
+    if (norm > 1e-6) u.shadowAxis.value.set(axis.x / norm, axis.y / norm); else u.shadowAxis.value.set(0, 1);
+    if (this.viewName === 'follow') this.placeChase();
+    this.updateReadouts();
+    this.dirty = true;
+  }
+
+  setTime(t, renderNow) {
+    if (!Number.isFinite(t)) return;
+    this.applyTime(t);
+    if (renderNow) this.render();
+  }
+
+  // One sample interval back or forward, from the sample at or next to the current time.
+  step(direction) {
+    this.pause();
+    const ts = this.run.t;
+    const eps = 1e-9 * Math.max(1, Math.abs(this.tEnd));
+    let [i, a] = this.locate(this.time);
+    if (this.time >= this.tEnd) { i = this.n - 1; a = 0; }
+    let k;
+    if (direction > 0) {
+      k = i + 1;
+      while (k < this.n - 1 && ts[k] <= this.time + eps) k++;
+    } else {
+      k = a > 0 && ts[i] < this.time - eps ? i : i - 1;
+    }
+    k = Math.max(0, Math.min(this.n - 1, k));
+    this.setTime(ts[k], false);
+  }
+
+  play() {
+    if (this.playing) return;
+    if (this.time >= this.tEnd) this.applyTime(this.t0); // at the end: from the start again
+    this.playing = true;
+    this.playStartedAt = null;
+    this.updatePlayButton();
+  }
+
+  pause() {
+    if (!this.playing) return;
+    this.playing = false;
+    this.updatePlayButton();
+  }
+
+  toggle() {
+    if (this.playing) this.pause(); else this.play();
+  }
+
+  setSpeed(s) {
+    if (!(s > 0)) return;
+    this.speed = s;
+    this.speedSelect.value = String(s);
+    if (this.speedSelect.value !== String(s)) {
+      // not one of the list's speeds: add it
+      const o = el('option', '', `${s}×`);
+      o.value = String(s);
+      this.speedSelect.appendChild(o);
+      this.speedSelect.value = String(s);
+    }
+  }
+
+  updatePlayButton() {
+    this.playButton.textContent = this.playing ? '❚❚ Pause' : '▶ Play';
+    this.playButton.classList.toggle('rbp-on', this.playing);
+  }
+
+  // --- read-outs and the n(t) plot ------------------------------------------------------------
+  updateReadouts() {
+    const t = this.time;
+    const spin = Math.abs(this.spinNow) < 0.005 ? 0 : this.spinNow;
+    this.readTime.textContent = `t = ${t.toFixed(2).padStart(6)} s`;
+    const signed = (spin >= 0 ? '+' : '-') + Math.abs(spin).toFixed(2);
+    this.readSpin.textContent = `spin n = ${signed.padStart(6)} rad/s`;
+    this.readSense.textContent = spin > 0.05 ? '(counter-clockwise)' : spin < -0.05 ? '(clockwise)' : '\u00a0';
+    if (document.activeElement !== this.slider || !this.sliderDragging) this.slider.value = String(t);
+    this.drawPlot();
+  }
+
+  plotLayout() {
+    const dpr = Math.min(window.devicePixelRatio || 1, 2);
+    const w = 270, h = 130;
+    if (this.plot.width !== Math.round(w * dpr)) {
+      this.plot.width = Math.round(w * dpr);
+      this.plot.height = Math.round(h * dpr);
+      this.plotCurve = null;
+    }
+    let m = 0;
+    for (const v of this.run.spin) m = Math.max(m, Math.abs(v));
+    m = m > 0 ? 1.1 * m : 1;
+    const box = { left: 34, right: w - 8, top: 8, bottom: h - 20 };
+    const span = this.tEnd - this.t0 || 1;
+    return {
+      dpr, w, h, m, box,
+      x: (t) => box.left + ((t - this.t0) / span) * (box.right - box.left),
+      y: (n) => box.top + ((m - n) / (2 * m)) * (box.bottom - box.top),
+      tAt: (px) => this.t0 + ((px - box.left) / (box.right - box.left)) * span,
+    };
+  }
+
+  drawPlot() {
+    const L = this.plotLayout();
+    const g = this.plot.getContext('2d');
+    if (!this.plotCurve) {
+      // The static part, drawn once and kept.
+      g.setTransform(L.dpr, 0, 0, L.dpr, 0, 0);
+      g.clearRect(0, 0, L.w, L.h);
+      g.fillStyle = '#fff';
+      g.fillRect(0, 0, L.w, L.h);
+      const { box } = L;
+      g.strokeStyle = '#bbb';
+      g.lineWidth = 1;
+      g.strokeRect(box.left, box.top, box.right - box.left, box.bottom - box.top);
+      g.beginPath();
+      g.moveTo(box.left, L.y(0));
+      g.lineTo(box.right, L.y(0));
+      g.stroke();
+      // Reversals: dashed orange lines.
+      g.strokeStyle = '#e08a00';
+      g.setLineDash([3, 3]);
+      for (const tr of this.run.reversals || []) {
+        g.beginPath();
+        g.moveTo(L.x(tr), box.top);
+        g.lineTo(L.x(tr), box.bottom);
+        g.stroke();
+      }
+      g.setLineDash([]);
+      g.strokeStyle = '#2a2a2a';
+      g.lineWidth = 1.3;
+      g.beginPath();
+      const { t, spin } = this.run;
+      const every = Math.max(1, Math.floor(this.n / 600));
+      for (let i = 0; i < this.n; i += every) {
+        if (i === 0) g.moveTo(L.x(t[i]), L.y(spin[i])); else g.lineTo(L.x(t[i]), L.y(spin[i]));
+      }
+      g.lineTo(L.x(t[this.n - 1]), L.y(spin[this.n - 1]));
+      g.stroke();
+      g.fillStyle = '#e08a00';
+      for (const tr of this.run.reversals || []) {
+        g.beginPath();
+        g.arc(L.x(tr), L.y(0), 3, 0, 2 * Math.PI);
+        g.fill();
+      }
+      g.fillStyle = '#444';
+      g.font = '10px system-ui,sans-serif';
+      g.textAlign = 'right';
+      g.textBaseline = 'middle';
+      const label = (v) => (Math.abs(v) >= 10 ? v.toFixed(0) : v.toFixed(1));
+      g.fillText(`+${label(L.m / 1.1)}`, box.left - 3, L.y(L.m / 1.1));
+      g.fillText('0', box.left - 3, L.y(0));
+      g.fillText(`−${label(L.m / 1.1)}`, box.left - 3, L.y(-L.m / 1.1));
+      g.textBaseline = 'top';
+      g.textAlign = 'left';
+      g.fillText(`${this.t0.toFixed(0)} s`, box.left, box.bottom + 4);
+      g.textAlign = 'center';
+      g.fillText('n (rad/s) over t', (box.left + box.right) / 2, box.bottom + 4);
+      g.textAlign = 'right';
+      g.fillText(`${this.tEnd.toFixed(this.tEnd % 1 ? 1 : 0)} s`, box.right, box.bottom + 4);
+      this.plotCurve = g.getImageData(0, 0, this.plot.width, this.plot.height);
+    } else {
+      g.putImageData(this.plotCurve, 0, 0);
+    }
+    g.setTransform(L.dpr, 0, 0, L.dpr, 0, 0);
+    const x = L.x(this.time);
+    g.strokeStyle = '#d0211a';
+    g.lineWidth = 1.5;
+    g.beginPath();
+    g.moveTo(x, L.box.top);
+    g.lineTo(x, L.box.bottom);
+    g.stroke();
+    g.fillStyle = '#d0211a';
+    g.beginPath();
+    g.arc(x, L.y(this.spinNow), 3, 0, 2 * Math.PI);
+    g.fill();
+  }
+
+  // --- events ----------------------------------------------------------------------------------
+  bindEvents() {
+    this.root.addEventListener('keydown', (e) => this.onKey(e));
+    this.canvas.addEventListener('pointerdown', () => this.root.focus({ preventScroll: true }));
+    this.slider.addEventListener('pointerdown', () => { this.sliderDragging = true; });
+    window.addEventListener('pointerup', () => { this.sliderDragging = false; });
+    const seek = (e) => {
+      const rect = this.plot.getBoundingClientRect();
+      this.setTime(this.plotLayout().tAt(e.clientX - rect.left), false);
+    };
+    this.plot.addEventListener('pointerdown', (e) => {
+      this.plotDragging = true;
+      this.plot.setPointerCapture(e.pointerId);
+      seek(e);
+    });
+    this.plot.addEventListener('pointermove', (e) => { if (this.plotDragging) seek(e); });
+    this.plot.addEventListener('pointerup', () => { this.plotDragging = false; });
+    if (typeof ResizeObserver !== 'undefined') {
+      new ResizeObserver(() => this.resize()).observe(this.stage);
+    }
+    if (typeof IntersectionObserver !== 'undefined') {
+      new IntersectionObserver((entries) => {
+        for (const e of entries) this.visible = e.isIntersecting;
+        if (this.visible) this.dirty = true;
+      }).observe(this.stage);
+    }
+  }
+
+  // Space plays or pauses, the arrows step one sample; true when the key was used.
+  onKey(e) {
+    if (e.defaultPrevented || e.altKey || e.ctrlKey || e.metaKey) return false;
+    const target = e.target;
+    if (target && target.tagName === 'SELECT') return false;
+    if (e.key === ' ' || e.code === 'Space') {
+      this.toggle();
+    } else if (e.key === 'ArrowLeft') {
+      this.step(-1);
+    } else if (e.key === 'ArrowRight') {
+      this.step(1);
+    } else {
+      return false;
+    }
+    e.preventDefault();
+    e.stopPropagation();
+    return true;
+  }
+
+  // --- drawing ---------------------------------------------------------------------------------
+  // The floor's fade, for the camera as it is: along the floor away from an orthographic camera
+  // that looks nearly level (front, side: the floor goes into the background below the top of
+  // the frame, as the renderer's horizon), with distance from the target otherwise.
+  updateFloorFade() {
+    const u = this.floorMaterial.uniforms;
+    const target = this.activeControls().target;
+    u.center.value.set(target.x, target.y);
+    const forward = new Vector3();
+    this.camera.getWorldDirection(forward);
+    const elevation = Math.asin(Math.max(-1, Math.min(1, -forward.z)));
+    const level = this.camera.isOrthographicCamera && elevation > 1 * DEG && elevation < 30 * DEG;
+    if (level) {
+      const halfH = this.camera.top / this.camera.zoom;
+      const far = (0.8 * halfH + target.z * Math.cos(elevation)) / Math.sin(elevation);
+      u.depthDirection.value.set(forward.x, forward.y).normalize();
+      u.fogFar.value = far;
+      u.fogNear.value = Math.min(this.framing.radius, 0.5 * far);
+      u.tile.value = 4 * this.tile; // squares 4× deeper show as bands, not stripes
+    } else {
+      u.fogFar.value = 0;
+      u.fogNear.value = 0;
+      u.tile.value = this.tile;
+      const reachOut = this.camera.isOrthographicCamera ? this.camera.top / this.camera.zoom : 0;
+      u.fadeNear.value = Math.max(3 * this.size, 1.5 * reachOut);
+      u.fadeFar.value = Math.max(12 * this.size, 6 * reachOut);
+    }
+  }
+
+  render() {
+    const started = performance.now();
+    this.updateFloorFade();
+    this.renderer.render(this.scene, this.camera);
+    this.renderTimes.push(performance.now() - started);
+    if (this.renderTimes.length > 60) this.renderTimes.shift();
+    this.dirty = false;
+  }
+
+  loop(now) {
+    requestAnimationFrame(this.loop);
+    if (!this.fixedSize && this.stage.clientWidth && Math.round(this.stage.clientWidth) !== this.width) this.resize();
+    if (this.playing) {
+      if (this.lastTick != null) {
+        const next = this.time + ((now - this.lastTick) / 1000) * this.speed;
+        if (next >= this.tEnd) {
+          this.applyTime(this.tEnd);
+          this.pause();
+        } else {
+          this.applyTime(next);
+        }
+      }
+      this.lastTick = now;
+    } else {
+      this.lastTick = null;
+    }
+    if (this.dirty && this.visible) {
+      this.render();
+      if (this.lastFrameAt != null) {
+        this.frameTimes.push(now - this.lastFrameAt);
+        if (this.frameTimes.length > 60) this.frameTimes.shift();
+      }
+      this.lastFrameAt = now;
+    } else {
+      this.lastFrameAt = null; // an idle frame breaks the run of drawn frames
+    }
+  }
+
+  // --- the test hook -----------------------------------------------------------------------------
+  hook() {
+    const self = this;
+    const mean = (a) => (a.length ? a.reduce((s, v) => s + v, 0) / a.length : NaN);
+    return {
+      id: this.run.id,
+      setTime(t) { self.setTime(+t, true); return self.time; },
+      time: () => self.time,
+      range: () => [self.t0, self.tEnd],
+      playing: () => self.playing,
+      play() { self.play(); },
+      pause() { self.pause(); },
+      toggle() { self.toggle(); },
+      step(direction) { self.step(direction); self.render(); return self.time; },
+      setSpeed(s) { self.setSpeed(+s); },
+      speed: () => self.speed,
+      setView(name) { self.setView(name); self.render(); },
+      view: () => self.viewName,
+      // [w, x, y, z] of the body as drawn now (the mesh's own quaternion).
+      quaternion: () => {
+        const q = self.points.quaternion;
+        return [q.w, q.x, q.y, q.z];
+      },
+      position: () => self.points.position.toArray(),
+      spin: () => self.spinNow,
+      cameraPosition: () => self.camera.position.toArray(),
+      // Where world point p (m) shows on the canvas: CSS pixels from its top left corner.
+      project(p) {
+        const v = new Vector3(p[0], p[1], p[2]).project(self.camera);
+        return [((v.x + 1) / 2) * self.width, ((1 - v.y) / 2) * self.height];
+      },
+      // Mean interval between consecutive drawn animation frames (ms), over the last 60 of
+      // them (while playing: every frame is drawn).
+      frameMs: () => mean(self.frameTimes),
+      // Mean CPU time of a render call (ms): what the script spends, the GPU not waited for.
+      renderMs: () => mean(self.renderTimes),
+      // Draws n frames one after another, each read back (so finished), and returns the mean
+      // ms per frame: what one frame costs on this machine's WebGL.
+      benchmark(n) {
+        const gl = self.renderer.getContext();
+        const pixel = new Uint8Array(4);
+        const count = Math.max(1, n | 0);
+        const start = performance.now();
+        for (let i = 0; i < count; i++) {
+          self.applyTime(self.t0 + ((self.tEnd - self.t0) * i) / count);
+          self.render();
+          gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+        }
+        return (performance.now() - start) / count;
+      },
+      // Fixes the canvas's size in CSS pixels (null: back to the column's width).
+      setSize(w, h) {
+        if (w && h) {
+          self.fixedSize = [Math.round(w), Math.round(h)];
+          self.stage.classList.add('rbp-fixed');
+          self.stage.style.width = `${self.fixedSize[0]}px`;
+          self.stage.style.height = `${self.fixedSize[1]}px`;
+        } else {
+          self.fixedSize = null;
+          self.stage.classList.remove('rbp-fixed');
+          self.stage.style.width = '';
+          self.stage.style.height = '';
+        }
+        self.width = null;
+        self.resize();
+        self.render();
+      },
+      canvas: () => self.canvas,
+      render() { self.render(); },
+    };
+  }
+}
+
+function formatStep(t) {
+  if (t.length < 2) return 'one sample';
+  const dt = (t[t.length - 1] - t[0]) / (t.length - 1);
+  return `${+dt.toPrecision(3)} s`;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Building the page's players.
+
+function showProblem(element, text) {
+  element.textContent = '';
+  const note = el('div', 'rbp-missing', text);
+  element.appendChild(note);
+  element.rbPlayerError = text;
+}
+
+function initPlayers(root) {
+  injectStyle();
+  const runs = window.RATTLEBACK_RUNS || {};
+  const elements = (root || document).querySelectorAll('.rb-player');
+  for (const element of elements) {
+    if (element.dataset.rbBuilt) continue;
+    element.dataset.rbBuilt = '1';
+    const id = element.getAttribute('data-run') || '';
+    const run = Object.prototype.hasOwnProperty.call(runs, id) ? runs[id] : undefined;
+    if (!run) {
+      showProblem(element, `3D player: no data for run “${id}” (its ${id}.player.js did not load).`);
+      continue;
+    }
+    const problem = problemWith(run);
+    if (problem) {
+      showProblem(element, `3D player: the data of run “${id}” cannot be played (${problem}).`);
+      continue;
+    }
+    try {
+      const player = new Player(element, run);
+      element.rbPlayer = player.hook();
+      players.push(player);
+    } catch (e) {
+      showProblem(element, `3D player: cannot show run “${id}” here (${(e && e.message) || e}).` +
+        ' WebGL may be unavailable in this browser.');
+      if (window.console) console.warn('rattleback player:', e);
+    }
+  }
+}
+
+// With one player on the page, its keys work without focusing it first.
+function onDocumentKey(e) {
+  if (players.length !== 1) return;
+  const target = e.target;
+  if (target && target !== document.body && target !== document.documentElement) {
+    if (target.closest && target.closest('.rbp')) return; // the player's own handler ran
+    const tag = target.tagName;
+    if (tag === 'INPUT' || tag === 'TEXTAREA' || tag === 'SELECT' || tag === 'BUTTON' ||
+        target.isContentEditable) return;
+  }
+  players[0].onKey(e);
+}
+
+function start() {
+  initPlayers(document);
+  if (!start.keysBound) {
+    document.addEventListener('keydown', onDocumentKey);
+    start.keysBound = true;
+  }
+}
+
+window.RattlebackPlayer = { init: initPlayers, players };
+if (document.readyState === 'loading') document.addEventListener('DOMContentLoaded', start);
+else start();
