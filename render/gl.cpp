@@ -1,4 +1,5 @@
 #include "render/gl.hpp"
+#include "util/assets.hpp"
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
@@ -299,30 +300,7 @@ void GlContext::releaseIfCurrent() {
   current_context = nullptr;
 }
 
-std::string assetsDir() {
-  if (const char* env = std::getenv("RATTLEBACK_ASSETS"); env && *env) return env;
-  // The file this code was linked into: the program, or the Python package's module.
-  std::error_code error;
-  Dl_info info{};
-  std::filesystem::path self;
-  if (::dladdr(reinterpret_cast<void*>(&assetsDir), &info) != 0 && info.dli_fname &&
-      std::strchr(info.dli_fname, '/'))
-    self = std::filesystem::canonical(info.dli_fname, error);
-  if (self.empty() || error) self = std::filesystem::read_symlink("/proc/self/exe", error);
-  if (error) return RATTLEBACK_ASSETS_RELATIVE;
-  const std::filesystem::path dir = self.parent_path();
-  // The installed layout (bin/ → share/rattleback, relative so the prefix can move), the build
-  // tree's copy in <build>/share/rattleback beside <build>/app, <build>/tests, …, and for the
-  // Python package <build>/python/rattleback or <prefix>/lib/python3/dist-packages/rattleback.
-  const std::filesystem::path candidates[] = {dir / RATTLEBACK_ASSETS_RELATIVE,
-                                              dir / "../share/rattleback",
-                                              dir / "../../share/rattleback",
-                                              dir / "../../../../share/rattleback"};
-  for (const auto& candidate : candidates)
-    if (std::filesystem::is_directory(candidate / "shaders", error))
-      return candidate.lexically_normal().string();
-  return (dir / RATTLEBACK_ASSETS_RELATIVE).lexically_normal().string();
-}
+std::string assetsDir() { return rb::assetsDir(); }
 
 namespace {
 

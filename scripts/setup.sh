@@ -18,6 +18,12 @@ packages=(
   pybind11-dev python3-dev python3-numpy python3-pytest python3-pandas python3-matplotlib
   python3-nbclient python3-ipykernel python3-nbformat
 )
+# The report's 3D player is bundled with node and npm (player/build.sh). Debian's nodejs and npm,
+# unless node and npm are already there (a machine with NodeSource's nodejs, which carries its
+# own npm and conflicts with Debian's).
+if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+  packages+=(nodejs npm)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -1,4 +1,6 @@
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -11,7 +13,11 @@
 #include <string>
 #include <vector>
 
+#include "scene/loader.hpp"
+#include "tasks/drawn_points.hpp"
 #include "tasks/manifest.hpp"
+#include "tasks/player_data.hpp"
+#include "util/assets.hpp"
 #include "tasks/output.hpp"
 #include "tasks/report.hpp"
 
@@ -340,12 +346,102 @@ void separateSweeps(const fs::path& dir, Folder& folder) {
   others.erase(std::unique(others.begin(), others.end()), others.end());
 }
 
-void writeScene(std::ostream& out, const fs::path& dir, const std::string& name, const SceneFiles& f) {
+// The player's bundle, in the assets (player/CMakeLists.txt), copied beside the page.
+constexpr const char* kPlayerBundle = "rattleback-player.js";
+
+// The scene file a telemetry sidecar names: its absolute path, else as given (from here, then
+// from the folder).
+std::optional<std::string> sceneOf(const nlohmann::json& sidecar, const fs::path& dir) {
+  std::error_code ec;
+  for (const char* key : {"scene_path", "scene"}) {
+    const std::string path = stringOr(field(sidecar, key), "");
+    if (path.empty()) continue;
+    if (fs::is_regular_file(path, ec)) return path;
+    if (fs::is_regular_file(dir / path, ec)) return (dir / path).string();
+  }
+  return std::nullopt;
+}
+
+// The poses of a telemetry CSV (the columns t, x, y, z, qw … qz, spin, found by the header);
+// none for a CSV without them (written before the attitude was).
+std::vector<Pose> posesOf(const fs::path& csv) {
+  std::ifstream in(csv);
+  std::string line;
+  if (!std::getline(in, line)) return {};
+  const char* wanted[] = {"t", "x", "y", "z", "qw", "qx", "qy", "qz", "spin"};
+  std::vector<int> index(std::size(wanted), -1);
+  std::stringstream head(line);
+  std::string name;
+  for (int i = 0; std::getline(head, name, ','); ++i)
+    for (std::size_t w = 0; w < std::size(wanted); ++w)
+      if (name == wanted[w]) index[w] = i;
+  if (std::count(index.begin(), index.end(), -1) > 0) return {};
+  std::vector<Pose> poses;
+  std::vector<double> fields;
+  while (std::getline(in, line)) {
+    fields.clear();
+    for (const char* p = line.c_str(); *p;) {
+      char* end = nullptr;
+      fields.push_back(std::strtod(p, &end));
+      p = std::strchr(end, ',');
+      if (!p) break;
+      ++p;
+    }
+    auto at = [&](std::size_t w) { return static_cast<std::size_t>(index[w]) < fields.size() ? fields[index[w]] : NAN; };
+    poses.push_back({at(0), at(1), at(2), at(3), at(4), at(5), at(6), at(7), at(8)});
+  }
+  return poses;
+}
+
+// DIR/<id>.player.js for a scene with telemetry: its poses, reversals and drawn points; false
+// (the page then has no player for it) when the CSV, its sidecar or its scene cannot be read.
+bool writePlayerData(const fs::path& dir, const std::string& id, const SceneFiles& f) {
+  if (!f.has(".csv") || !f.has(".csv.json")) return false;
+  const std::optional<nlohmann::json> sidecar = readJson(dir / f.at(".csv.json"));
+  if (!sidecar || field(*sidecar, "command") != "simulate") return false;
+  const auto scene_path = sceneOf(*sidecar, dir);
+  if (!scene_path) return false;
+  auto loaded = scene::loadFile(*scene_path);
+  if (!loaded) return false;
+  auto model = scene::loadModel(loaded.value());
+  if (!model) return false;
+  PlayerRun run;
+  run.id = id;
+  run.title = id;
+  run.points = drawnPointsOf(model.value());
+  run.poses = thinPoses(posesOf(dir / f.at(".csv")));
+  if (run.poses.size() < 2) return false;
+  const nlohmann::json& reversals = field(field(*sidecar, "result"), "reversals_s");
+  if (reversals.is_array())
+    for (const auto& r : reversals)
+      if (r.is_number()) run.reversals.push_back(r.get<double>());
+  auto out = AtomicOutput::open((dir / (id + ".player.js")).string());
+  if (!out) return false;
+  out->stream() << playerScript(run);
+  return out->commit().ok();
+}
+
+// The bundle copied beside the page; false when the build made none (no node and npm).
+bool copyPlayerBundle(const fs::path& dir) {
+  std::ifstream in(fs::path(rb::assetsDir()) / "player" / kPlayerBundle, std::ios::binary);
+  if (!in) return false;
+  auto out = AtomicOutput::open((dir / kPlayerBundle).string());
+  if (!out) return false;
+  out->stream() << in.rdbuf();
+  return out->commit().ok();
+}
+
+void writeScene(std::ostream& out, const fs::path& dir, const std::string& name, const SceneFiles& f,
+                bool player) {
   out << "<section id=\"" << escape(name) << "\"><h2>" << escape(name) << "</h2>\n";
   std::optional<nlohmann::json> theory, run;
   if (f.has("-analysis.json")) theory = readJson(dir / f.at("-analysis.json"));
   if (f.has(".csv.json")) run = readJson(dir / f.at(".csv.json"));
   writeVideos(out, f, theory, run);
+  if (player)
+    out << "<h3>Turn it around</h3><p>The run replayed in 3D: drag to orbit, scroll to zoom, "
+           "space plays and pauses, arrows step.</p><div class=\"rb-player\" data-run=\""
+        << escape(name) << "\"></div>\n";
   writeAnalysis(out, f, theory, run);
   writeImages(out, f, kStillSuffixes, std::size(kStillSuffixes), "Stills");
   writeImages(out, f, kPlotSuffixes, std::size(kPlotSuffixes), "Against time");
@@ -382,7 +478,8 @@ void writeOthers(std::ostream& out, const std::vector<std::string>& others) {
   out << "</div></section>\n";
 }
 
-void writePage(std::ostream& out, const fs::path& dir, const Folder& folder) {
+void writePage(std::ostream& out, const fs::path& dir, const Folder& folder,
+               const std::vector<std::string>& players) {
   out << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
          "<meta name=\"viewport\" content=\"width=device-width\">"
          "<title>rattleback: results</title><style>"
@@ -396,9 +493,16 @@ void writePage(std::ostream& out, const fs::path& dir, const Folder& folder) {
       order.push_back(name);
   for (const auto& [name, files] : folder.scenes)
     if (std::find(order.begin(), order.end(), name) == order.end()) order.push_back(name);
-  for (const std::string& name : order) writeScene(out, dir, name, folder.scenes.at(name));
+  for (const std::string& name : order)
+    writeScene(out, dir, name, folder.scenes.at(name),
+               std::find(players.begin(), players.end(), name) != players.end());
   for (const SweepFiles& sweep : folder.sweeps) writeSweep(out, sweep);
   writeOthers(out, folder.others);
+  // Classic scripts (a page opened from disk may not import modules or fetch): each run's
+  // data, then the player, which finds every .rb-player.
+  for (const std::string& id : players)
+    out << "<script src=\"" << escape(id) << ".player.js\"></script>\n";
+  if (!players.empty()) out << "<script src=\"" << kPlayerBundle << "\"></script>\n";
   out << "</body></html>\n";
 }
 
@@ -412,10 +516,16 @@ rb::Result<std::string> writeReport(const std::string& folder_path) {
   Folder folder;
   placeByName(dir, placeListed(dir, folder), folder);
   separateSweeps(dir, folder);
+  std::vector<std::string> players;
+  if (copyPlayerBundle(dir)) {
+    for (const auto& [name, files] : folder.scenes)
+      if (writePlayerData(dir, name, files)) players.push_back(name);
+    if (players.empty()) fs::remove(dir / kPlayerBundle, ec);  // nothing to play
+  }
   const std::string path = (dir / "index.html").string();
   auto opened = AtomicOutput::open(path);
   if (!opened) return opened.error();
-  writePage(opened->stream(), dir, folder);
+  writePage(opened->stream(), dir, folder, players);
   if (auto e = opened->commit(); !e) return e.error();
   return path;
 }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <ostream>
 
 #include "tasks/output.hpp"
@@ -102,6 +103,10 @@ nlohmann::json telemetrySidecar(const std::string& scene, const sim::Model& mode
   j["program"] = "rattleback " RATTLEBACK_VERSION;
   j["command"] = "simulate";
   j["scene"] = scene;
+  // Absolute too, so that `report` run from another folder finds the body for its 3D player.
+  std::error_code ec;
+  const std::filesystem::path absolute = std::filesystem::absolute(scene, ec);
+  j["scene_path"] = ec ? scene : absolute.lexically_normal().string();
   j["columns"] = columns;
   j["rows"] = rows;
   j["rate_hz"] = rate;
