@@ -15,7 +15,7 @@ using tasks::loadScene;
 using tasks::describeModel;
 using tasks::parseSize;
 
-/// Exit statuses (README "Exit codes").
+/// Exit statuses (docs/commands.md "Exit codes").
 enum Exit : int {
   kOk = 0,
   kBadInput = 2,  ///< the scene, an option or an output path is unusable; nothing written

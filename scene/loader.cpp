@@ -107,14 +107,14 @@ class MapReader {
     return MapReader(*node, join(path_, key), key_lines_.at(key), out_, allowed);
   }
 
-  /// `example`, when given, is a line that would do (from the README's scene block), so that
+  /// `example`, when given, is a line that would do (from docs/scenes.md's complete scene), so that
   /// the message shows the way out.
   void require(const std::string& key, const std::string& example = "") const {
     if (!has(key))
       throw Failure{line_, join(path_, key),
                     example.empty() ? "is required"
                                     : "is required, e.g. " + example +
-                                          " (the README's scene block has every key)"};
+                                          " (docs/scenes.md has a complete scene)"};
   }
 
   [[noreturn]] void fail(const std::string& key, const std::string& message) const {

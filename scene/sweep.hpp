@@ -1,5 +1,5 @@
 // Sweep files (YAML): a base scene and axes of values for any of its keys; the sweep is the
-// product of the axes, first axis slowest (README "Sweeps"). Errors name file, line and key,
+// product of the axes, first axis slowest (docs/scenes.md "Sweep files"). Errors name file, line and key,
 // as for scenes.
 //
 //   base: ../scenes/rattleback.yaml        # relative to the sweep file

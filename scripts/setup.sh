@@ -17,6 +17,7 @@ packages=(
   parallel slurm-wlm munge time
   pybind11-dev python3-dev python3-numpy python3-pytest python3-pandas python3-matplotlib
   python3-nbclient python3-ipykernel python3-nbformat
+  mkdocs mkdocs-material
 )
 # The report's 3D player is bundled with node and npm (player/build.sh). Debian's nodejs and npm,
 # unless node and npm are already there (a machine with NodeSource's nodejs, which carries its

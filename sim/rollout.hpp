@@ -36,7 +36,7 @@ struct Stop {
 /// What a run did so far.
 struct RunSummary {
   Telemetry first, last;  ///< at the start, and at the last time sampled or reached
-  /// Spin reversals (SPEC; README "first reversal"), s: each is a zero crossing of n = ω·ẑ,
+  /// Spin reversals (docs/physics.md P7), s: each is a zero crossing of n = ω·ẑ,
   /// located on the interpolant between steps, after which n goes on to reach 1% of the
   /// initial |n| with the new sign and keeps that sign for 0.2 s (a body rocking through tens
   /// of degrees swings n through zero and back), at least 0.5 s after the body last left the

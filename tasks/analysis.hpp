@@ -1,5 +1,5 @@
 // What `analyze` finds about a scene, as one JSON value: mass properties, rest, contact limits,
-// the linearised theory and the preferred direction (README "analyze --json"). The command
+// the linearised theory and the preferred direction (docs/commands.md "rattleback analyze"). The command
 // prints it; Python's analyze() returns it as a dict.
 #pragma once
 

@@ -294,7 +294,7 @@ bool benchScene(const BenchScene& scene, const BenchOptions& options, std::vecto
 
 std::string benchCsvHeader() {
   // The header is the first line (plain CSV readers take it as such); what the columns mean is
-  // in the README ("bench").
+  // in docs/commands.md ("rattleback bench").
   return "scene,model,integrator,dt,tolerance,steps,rejected,status,cost_median,cost_min,"
          "cost_max,us_per_step,reversal_s,reversal_error_s,reversal_error_vs_rolling_s,"
          "max_spin_error,max_spin_error_vs_rolling,energy_drift,switches\n";

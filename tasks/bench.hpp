@@ -1,4 +1,4 @@
-// `bench`'s measurements (README "bench"): for each contact model × integrator × step of a ladder
+// `bench`'s measurements (docs/commands.md "rattleback bench"): for each contact model × integrator × step of a ladder
 // of halvings (or tolerances for dopri5), a scene runs `repeats` times; the cost is the median
 // wall time per simulated second, and the errors are measured against a reference: the same
 // model with rk4 at a step 16× below the ladder's finest, and the rolling model's reference

@@ -1,6 +1,6 @@
 // JSON for the commands' machine-readable outputs, built with nlohmann::json (never by hand).
 // Non-finite numbers (an infinite largest stable step, a NaN) are written as null: that is what
-// nlohmann::json's dump() does with them, and the README documents it.
+// nlohmann::json's dump() does with them, and docs/commands.md says so.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -1,4 +1,4 @@
-// A sweep beyond one process (README "Sweeps"): shards of its rows, the journal an interrupted
+// A sweep beyond one process (docs/commands.md "rattleback sweep"): shards of its rows, the journal an interrupted
 // run keeps for --resume, the merge of shard tables, and job scripts for Slurm and GNU
 // parallel. The files are the command line's: tasks/sweep.hpp writes them.
 #pragma once

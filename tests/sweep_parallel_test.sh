@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The GNU parallel path of README "Sweeps": `sweep --emit parallel --shards 3 | parallel`, then
+# The GNU parallel path of docs/commands.md "rattleback sweep": `sweep --emit parallel --shards 3 | parallel`, then
 # `sweep merge`; the merged table must equal the in-process one in every column but wall_s.
 # Usage: tests/sweep_parallel_test.sh RATTLEBACK. Exit 77 (skipped) without GNU parallel.
 set -euo pipefail

@@ -137,7 +137,8 @@ class Run:
     """A finished run: every telemetry column as a NumPy array, and what the run found.
 
     Columns (the CSV's, same names): ``t, spin, energy, kinetic, potential, elastic,
-    tilt_deg, x, y, z, wx, wy, wz, Lz, contacts, normal_force, mode``; ``units`` gives each
+    tilt_deg, x, y, z, wx, wy, wz, Lz, contacts, normal_force, mode, qw, qx, qy, qz`` (the
+    last four the attitude quaternion: unit, scalar first, body to world); ``units`` gives each
     one's unit. ``result`` is the sidecar's ``result`` (status, reversals, energy, steps, …),
     ``model`` its ``model``.
     """
@@ -190,7 +191,7 @@ class Run:
 
     @property
     def reversals(self) -> list[float]:
-        """Times of the spin reversals, s (README "simulate": the reversal rule)."""
+        """Times of the spin reversals, s (docs/physics.md P7: the reversal rule)."""
         return list(self.result["reversals_s"])
 
     @property

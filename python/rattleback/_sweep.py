@@ -67,7 +67,7 @@ class SweepTable:
 
 
 def sweep(path: Union[str, os.PathLike], *, jobs: int = 0) -> SweepTable:
-    """Runs every scene of the sweep file at ``path`` (README "Sweeps": a base scene and axes
+    """Runs every scene of the sweep file at ``path`` (docs/scenes.md "Sweep files": a base scene and axes
     of values) on ``jobs`` threads (0: all cores), as ``rattleback sweep`` does.
 
     Raises ValueError for a sweep file that cannot be used; KeyboardInterrupt on Ctrl-C.
