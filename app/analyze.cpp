@@ -64,10 +64,14 @@ void printTheory(std::FILE* out, const sim::Model& model, double spin) {
     std::fprintf(out, " %.4g%+.4gi", clean(lambda.real(), largest), clean(lambda.imag(), largest));
   std::fprintf(out, "\n");
   const sim::Direction preferred = sim::preferredDirection(model, spin);
-  std::fprintf(out, "preferred        %s (%s seen from above); spun the other way it is predicted to "
-              "reverse\n",
-              std::string(rb::nameOf(preferred)).c_str(),
-              preferred == sim::Direction::Ccw ? "counter-clockwise" : "clockwise");
+  if (preferred == sim::Direction::None)
+    std::fprintf(out, "preferred        none (the rocking grows alike both ways, or neither way: "
+                      "no direction is predicted to reverse rather than the other)\n");
+  else
+    std::fprintf(out, "preferred        %s (%s seen from above); spun the other way it is "
+                      "predicted to reverse\n",
+                 std::string(rb::nameOf(preferred)).c_str(),
+                 preferred == sim::Direction::Ccw ? "counter-clockwise" : "clockwise");
 }
 
 void printText(std::FILE* out, const std::string& scene, const sim::Model& model) {

@@ -137,7 +137,8 @@ void sideBySide(const render::Image& a, const render::Image& b, render::Image& o
 }
 
 // Names for --both: the spin in the direction the linearised theory prefers is "preferred",
-// the other "reversed"; a note for each run that disagrees with the prediction.
+// the other "reversed"; a note for each run that disagrees with the prediction. A body with no
+// preferred direction names them by their spins, "ccw" and "cw".
 std::array<std::string, 2> bothNames(const std::vector<sim::Rollout>& runs,
                                      std::vector<std::string>& notes) {
   const sim::Model& model = runs[0].model();
@@ -145,6 +146,10 @@ std::array<std::string, 2> bothNames(const std::vector<sim::Rollout>& runs,
   std::array<std::string, 2> names;
   for (int i = 0; i < 2; ++i) {
     const double spin = runs[i].model().initial.spin;
+    if (preferred_direction == sim::Direction::None) {
+      names[i] = spin > 0 ? "ccw" : "cw";
+      continue;
+    }
     const bool preferred = sim::turns(preferred_direction, spin);
     names[i] = preferred ? "preferred" : "reversed";
     if (preferred == runs[i].summary().first_reversal_s.has_value())

@@ -145,6 +145,10 @@ Direction preferredDirection(const Model& model, double spin_magnitude) {
   const Linearisation ccw = linearise(model, n), cw = linearise(model, -n);
   const double ccw_fastest = std::max(ccw.roll_growth, ccw.pitch_growth);
   const double cw_fastest = std::max(cw.roll_growth, cw.pitch_growth);
+  // Alike: within 1e-9 of the rates' size (rounding; a dentless body's differ by 1e-16 /s).
+  const double size = std::max({std::abs(ccw_fastest), std::abs(cw_fastest), 1e-12});
+  if ((ccw_fastest <= 0 && cw_fastest <= 0) || std::abs(ccw_fastest - cw_fastest) <= 1e-9 * size)
+    return Direction::None;
   return ccw_fastest < cw_fastest ? Direction::Ccw : Direction::Cw;
 }
 

@@ -38,16 +38,20 @@ FirstOrder firstOrderGrowth(const Model& model);
 
 /// A direction of spin seen from above.
 enum class Direction {
-  Ccw,  ///< counter-clockwise: n > 0
-  Cw,   ///< clockwise: n < 0
+  Ccw,   ///< counter-clockwise: n > 0
+  Cw,    ///< clockwise: n < 0
+  None,  ///< no preferred direction (preferredDirection: neither way grows, or both alike)
 };
 
 /// The direction of spin (at |spin|) whose fastest mode grows more slowly: the one that keeps
-/// turning; spun the other way the body is predicted to reverse.
+/// turning; spun the other way the body is predicted to reverse. None where neither direction's
+/// rocking grows (spun either way it is predicted to keep turning) or where both grow alike
+/// (a body with no misalignment): a dentless body got "cw" from rounding (issue 26).
 Direction preferredDirection(const Model& model, double spin_magnitude);
 
-/// Whether a spin n (rad/s) turns in `direction`.
+/// Whether a spin n (rad/s) turns in `direction` (never in None).
 inline bool turns(Direction direction, double spin) {
+  if (direction == Direction::None) return false;
   return direction == Direction::Ccw ? spin > 0 : spin < 0;
 }
 
@@ -56,9 +60,10 @@ inline bool turns(Direction direction, double spin) {
 namespace rb {
 template <>
 struct NameTable<sim::Direction> {
-  static constexpr std::array<std::pair<sim::Direction, std::string_view>, 2> entries{{
+  static constexpr std::array<std::pair<sim::Direction, std::string_view>, 3> entries{{
       {sim::Direction::Ccw, "ccw"},
       {sim::Direction::Cw, "cw"},
+      {sim::Direction::None, "none"},
   }};
 };
 }  // namespace rb

@@ -26,9 +26,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char* kVideoSuffixes[] = {"-preferred.mp4", "-reversed.mp4", "-both.mp4", ".mp4"};
+const char* kVideoSuffixes[] = {"-preferred.mp4", "-reversed.mp4", "-ccw.mp4", "-cw.mp4",
+                                "-both.mp4", ".mp4"};
 // First frames of the reversed and preferred videos, used as their posters.
-const char* kPosterSuffixes[] = {"-reversed.png", "-preferred.png"};
+const char* kPosterSuffixes[] = {"-reversed.png", "-preferred.png", "-ccw.png", "-cw.png"};
 const char* kStillSuffixes[] = {"-oblique.png", "-above.png", "-front.png", "-side.png",
                                 "-follow.png"};
 const char* kPlotSuffixes[] = {"-spin.png", "-energy.png", "-tilt.png", "-normal.png"};
@@ -159,6 +160,16 @@ void writeVideos(std::ostream& out, const SceneFiles& f,
             "Spun the <b>preferred</b> way: the theory predicts it keeps turning" + measured(true));
     out << "</div>\n";
   }
+  // A body with no preferred direction: its videos are named by their spins.
+  if (f.has("-ccw.mp4") || f.has("-cw.mp4")) {
+    out << "<div class=\"pair\">\n";
+    for (const auto& [suffix, ccw] : {std::pair{"-cw", false}, std::pair{"-ccw", true}})
+      if (f.has(std::string(suffix) + ".mp4"))
+        video(f.at(std::string(suffix) + ".mp4"), std::string(suffix) + ".png",
+              std::string("Spun <b>") + (ccw ? "counter-clockwise" : "clockwise") +
+                  "</b>: the theory prefers neither direction" + measuredAs(run, ccw));
+    out << "</div>\n";
+  }
   if (f.has(".mp4")) video(f.at(".mp4"), "-oblique.png", "The scene as rendered");
   if (f.has("-both.mp4"))
     out << "<p><a href=\"" << escape(f.at("-both.mp4"))
@@ -176,9 +187,10 @@ void writeAnalysis(std::ostream& out, const SceneFiles& f,
     const nlohmann::json& t = *theory;
     const nlohmann::json& preferred = field(t, "preferred");
     out << "preferred direction: <b>"
-        << (preferred == "ccw"  ? "counter-clockwise"
-            : preferred == "cw" ? "clockwise"
-                                : "–")
+        << (preferred == "ccw"    ? "counter-clockwise"
+            : preferred == "cw"   ? "clockwise"
+            : preferred == "none" ? "none"
+                                  : "–")
         << "</b><br>growth rates at n = " << number(field(t, "spin"), "%+g") << " rad/s: roll "
         << number(field(field(t, "growth_rates"), "roll"), "%+.3f") << " /s, pitch "
         << number(field(field(t, "growth_rates"), "pitch"), "%+.3f")
@@ -246,7 +258,9 @@ struct Folder {
 std::optional<std::string> slotOf(const OutputEntry& e, const std::map<double, std::string>& video_spins) {
   switch (e.kind) {
     case OutputKind::Video:
-      if (e.role == "preferred" || e.role == "reversed" || e.role == "both") return "-" + e.role + ".mp4";
+      if (e.role == "preferred" || e.role == "reversed" || e.role == "ccw" || e.role == "cw" ||
+          e.role == "both")
+        return "-" + e.role + ".mp4";
       return ".mp4";
     case OutputKind::Still:
       if (e.t && *e.t == 0 && e.spin && video_spins.count(*e.spin))
@@ -264,7 +278,7 @@ std::set<std::string> placeListed(const fs::path& dir, Folder& folder) {
   const std::vector<OutputEntry> entries = readManifest(dir.string());
   std::map<std::string, std::map<double, std::string>> video_spins;  // scene → spin → role
   for (const OutputEntry& e : entries)
-    if (e.kind == OutputKind::Video && e.spin && (e.role == "preferred" || e.role == "reversed"))
+    if (e.kind == OutputKind::Video && e.spin && e.role != "both" && e.role != "single")
       video_spins[e.scene][*e.spin] = e.role;
   std::set<std::string> placed;
   std::error_code ec;
@@ -489,7 +503,8 @@ void writePage(std::ostream& out, const fs::path& dir, const Folder& folder,
   // Scenes with videos first, then the rest, each in name order.
   std::vector<std::string> order;
   for (const auto& [name, files] : folder.scenes)
-    if (files.has("-reversed.mp4") || files.has("-preferred.mp4") || files.has(".mp4"))
+    if (files.has("-reversed.mp4") || files.has("-preferred.mp4") || files.has("-ccw.mp4") ||
+        files.has("-cw.mp4") || files.has(".mp4"))
       order.push_back(name);
   for (const auto& [name, files] : folder.scenes)
     if (std::find(order.begin(), order.end(), name) == order.end()) order.push_back(name);

@@ -829,3 +829,36 @@ TEST(Cli, TheReportPlacesOutputsByTheManifest) {
   EXPECT_NE(html.find("preferred direction: <b>counter-clockwise"), std::string::npos);  // theory.json
   EXPECT_NE(html.find("href=\"run.csv\""), std::string::npos);
 }
+
+// A body with no preferred direction (the default body without its dents: misalignment 0,
+// growth rates alike both ways, all negative: roll −0.228, pitch −0.035 /s at ±5 rad/s) gets
+// none (issue 26: it got "cw" from rounding, and render --both named its +5 run "reversed").
+// Its videos are named by their spins, and the page says the theory prefers neither.
+TEST(Cli, ABodyWithNoPreferredDirectionGetsNone) {
+  const fs::path dir = scratchDir() / "none";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ifstream in(scene("rattleback"));
+  std::ofstream scene_out(dir / "flat.yaml");
+  for (std::string line; std::getline(in, line);)
+    if (line.find("dents:") == std::string::npos) scene_out << line << "\n";
+  scene_out.close();
+  const std::string s = (dir / "flat.yaml").string();
+  const Result json = rattleback("analyze " + s + " --json");
+  ASSERT_EQ(json.status, 0) << json.err;
+  EXPECT_EQ(nlohmann::json::parse(json.out)["preferred"], "none");
+  EXPECT_NE(rattleback("analyze " + s).out.find("preferred        none"), std::string::npos);
+  ASSERT_EQ(rattleback("render " + s + " --both --duration 0.2 --size 64x48 -q -o " +
+                       (dir / "v").string()).status, 0);
+  EXPECT_TRUE(fs::exists(dir / "v-ccw.mp4"));
+  EXPECT_TRUE(fs::exists(dir / "v-cw.mp4"));
+  EXPECT_FALSE(fs::exists(dir / "v-reversed.mp4"));
+  ASSERT_EQ(rattleback("analyze " + s + " --json -o " + (dir / "t.json").string()).status, 0);
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  const auto said = captions(dir / "index.html");
+  ASSERT_EQ(said.size(), 2u);
+  for (const std::string& caption : said) {
+    EXPECT_NE(caption.find("the theory prefers neither direction"), std::string::npos) << caption;
+    EXPECT_EQ(caption.find("predicts it rocks"), std::string::npos) << caption;
+  }
+}
