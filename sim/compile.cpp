@@ -1,5 +1,7 @@
 #include "sim/compile.hpp"
 
+#include "sim/analysis.hpp"
+
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <complex>
@@ -163,6 +165,32 @@ std::optional<rb::Error> checkRest(const SceneSpec& spec) {
   return std::nullopt;
 }
 
+// A fixed step must resolve the body's own rocking where it rolls, as it must the floor's
+// stiffness for the penalty models: at least kStepsPerRocking steps a period of its fastest
+// mode, at rest or at the scene's spin (the linearised rolling model, docs/physics.md P8).
+// Issue 26: --dt 0.05 on a body rocking at 7 Hz (a third of a period a step) ran and reported
+// no reversal, where at 1e-4 s it reversed at 1.584 s.
+constexpr double kStepsPerRocking = 8;
+
+std::optional<rb::Error> checkRockingStep(const Model& model) {
+  const bool rolls = model.contact.model == ContactModel::Rolling ||
+                     model.contact.model == ContactModel::Auto;
+  if (!rolls || isAdaptive(model.integrator)) return std::nullopt;
+  double omega = 0;  // rad/s: the fastest rocking
+  for (double spin : {0.0, model.initial.spin})
+    for (const auto& lambda : linearise(model, spin).eigenvalues)
+      omega = std::max(omega, std::abs(lambda.imag()));
+  if (!(omega > 0)) return std::nullopt;
+  const double largest = 2 * M_PI / omega / kStepsPerRocking;
+  if (model.dt <= largest) return std::nullopt;
+  std::ostringstream msg;
+  msg << "= " << model.dt << " s is too large for the body's rocking: its fastest mode ("
+      << omega / (2 * M_PI) << " Hz, a period of " << 2 * M_PI / omega << " s) needs at least "
+      << kStepsPerRocking << " steps a period, so at most " << largest
+      << " s (or give simulation.tolerance for adaptive steps)";
+  return rb::Error{"simulation.dt", msg.str()};
+}
+
 // The integrator the scene names, or the default for what it gives: with a tolerance dopri5;
 // with a step symplectic for the penalty models, rk4 where the body rolls (below).
 Integrator integratorOf(const SimulationSpec& sim, ContactModel contact) {
@@ -317,6 +345,7 @@ rb::Result<Model> compileRun(const SceneSpec& spec, std::shared_ptr<const Body> 
                           spec.initial.tilt[1] * M_PI / 180.0,
                           spec.initial.height * spec.units.length};
 
+  if (auto e = checkRockingStep(model)) return *e;
   // Auto runs its smooth phases in steps of their own (sim/switching.hpp: smoothStep).
   const ContactStability stability = contactStability(model);
   if (model.contact.model != ContactModel::Auto && model.dt > stability.largest_step) {
