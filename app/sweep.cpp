@@ -15,6 +15,7 @@
 #include "app/progress.hpp"
 #include "scene/sweep.hpp"
 #include "tasks/output.hpp"
+#include "tasks/scene_args.hpp"
 #include "tasks/sweep.hpp"
 #include "tasks/sweep_jobs.hpp"
 
@@ -281,7 +282,7 @@ int sweepCommand(const SweepArgs& args) {
   if (args.file.empty())
     return fail(rb::Status::fail("sweep: give a sweep file (e.g. rattleback sweep "
                                  "sweeps/spin-drag.yaml), or 'sweep merge OUT.csv SHARD…'"));
-  auto loaded = scene::loadSweep(args.file);
+  auto loaded = scene::loadSweep(tasks::findShipped(args.file));
   if (!loaded) return fail(loaded);
   const scene::Sweep& sweep = loaded.value();
   std::optional<tasks::Shard> shard;

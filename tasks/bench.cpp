@@ -7,6 +7,7 @@
 #include <iterator>
 
 #include "scene/loader.hpp"
+#include "tasks/scene_args.hpp"
 #include "sim/compile.hpp"
 #include "sim/rollout.hpp"
 
@@ -250,7 +251,7 @@ bool ladder(const BenchScene& scene, const sim::SceneSpec& base, const std::stri
 }  // namespace
 
 rb::Result<BenchScene> loadBenchScene(const std::string& path) {
-  auto loaded = scene::loadFile(path);
+  auto loaded = scene::loadFile(findShipped(path));
   if (!loaded) return loaded.error();
   auto model = scene::loadModel(loaded.value());
   if (!model) return model.error();

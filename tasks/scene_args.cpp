@@ -2,12 +2,23 @@
 
 
 #include <cmath>
+#include <filesystem>
+
+#include "util/assets.hpp"
 #include <cstdio>
 
 namespace tasks {
 
+std::string findShipped(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (path.empty() || fs::exists(path, ec) || fs::path(path).is_absolute()) return path;
+  const fs::path shipped = fs::path(rb::assetsDir()) / path;
+  return fs::is_regular_file(shipped, ec) ? shipped.lexically_normal().string() : path;
+}
+
 rb::Result<LoadedScene> loadScene(const std::string& path, const Overrides& o) {
-  auto loaded = scene::loadFile(path);
+  auto loaded = scene::loadFile(findShipped(path));
   if (!loaded) return loaded.error();
   return applyOverrides(std::move(loaded).value(), o);
 }

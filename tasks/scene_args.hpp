@@ -28,6 +28,11 @@ struct LoadedScene {
   sim::Model model;
 };
 
+/// Where a scene or sweep file is: `path` itself, or, for a relative path that is not here, the
+/// installed copy under the assets folder (share/rattleback/scenes, …/sweeps), so that
+/// `rattleback still scenes/rattleback.yaml` and bench's defaults work from any folder.
+std::string findShipped(const std::string& path);
+
 /// The compiled scene, or the one line to print.
 rb::Result<LoadedScene> loadScene(const std::string& path, const Overrides& o);
 /// The same for a scene already loaded (from a string, or with values put in).

@@ -24,7 +24,8 @@ grep -q python3-numpy <<<"$(dpkg-deb -f "$deb" Recommends)" || { echo "FAIL: Rec
 grep -q "_core.cpython" <<<"$(dpkg-deb -c "$deb")" || { echo "FAIL: the package lacks the Python module"; exit 1; }
 contents=$(dpkg-deb -c "$deb")
 for f in ./usr/bin/rattleback ./usr/libexec/rattleback-render ./usr/share/rattleback/fonts.txt ./usr/share/rattleback/shaders/points.frag \
-         ./usr/lib/python3/dist-packages/rattleback/__init__.py; do
+         ./usr/lib/python3/dist-packages/rattleback/__init__.py ./usr/share/rattleback/scenes/rattleback.yaml \
+         ./usr/share/rattleback/sweeps/spin-drag.yaml; do
   grep -q " $f\$" <<<"$contents" || { echo "FAIL: the package lacks $f"; exit 1; }
 done
 echo "ok: $(basename "$deb"), $(stat -c %s "$deb") bytes"

@@ -48,6 +48,14 @@ for f in bin/rattleback share/rattleback/fonts.txt share/rattleback/shaders/poin
 done
 render_still "$work/prefix"
 python_still "$work/prefix"
+# The shipped scenes and sweeps are installed, and found by their relative names from any folder
+# (issue 26: plain `bench` and `still scenes/rattleback.yaml` failed outside the source tree).
+(cd "$(mktemp -d "$work/elsewhere.XXXX")" &&
+  "$work/prefix/bin/rattleback" simulate scenes/rattleback.yaml --duration 0.1 -q -o r.csv &&
+  "$work/prefix/bin/rattleback" bench --duration 0.05 --rungs 1 --repeats 1 --models rolling \
+    --integrators rk4 -q -o b.csv --plot b.png &&
+  test -s r.csv && test -s b.csv) || { echo "FAIL: the installed scenes are not found"; exit 1; }
+echo "ok: the installed scenes are found from another folder"
 mv "$work/prefix" "$work/moved"
 render_still "$work/moved"
 python_still "$work/moved"
