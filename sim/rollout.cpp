@@ -175,7 +175,10 @@ void Rollout::watch() {
              (depth > 0 ? 0.5 * active_.contact.stiffness * depth * depth : 0.0);
   } else {
     const Telemetry now = telemetryOf(active_, current_);
-    if (now.contacts == 0 || now.normal_force <= 0) {
+    // In the air: no point below the floor. Not "no force": a strongly damped floor's clipped
+    // force max(0, k d − c v) is zero for tens of ms while a point rises out of it, and that
+    // was taken for a bounce, hiding a reversal (issue 26: k 1e8, c 2e4 N s/m).
+    if (now.contacts == 0) {
       if (!(airborne_since_ <= current_.t)) airborne_since_ = current_.t;
       if (current_.t - airborne_since_ >= kFlightTime || airborne_since_ == summary_.first.t)
         last_airborne_ = current_.t;
