@@ -1,6 +1,6 @@
 // Frames per second of the video pipeline's stages, measured side by side in one run:
 // render only (draw + read back + read-outs), encode only (RGBA → yuv420p → x264), and end
-// to end (`rattleback render`: simulate, render and encode in overlapping threads), and
+// to end (media::renderVideo, as `rattleback render`: simulate, render and encode in overlapping threads), and
 // `render --both` (two renderers on one thread, three encoders), for each OpenGL backend; and
 // the CPU time (all threads) encoding alone and end to end take. The last column is the
 // least end / encode those cores allow: end to end cannot take less wall time than its CPU
@@ -12,12 +12,14 @@
 #include <array>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <string>
 #include <sys/resource.h>
 #include <thread>
 
-#include "app/commands.hpp"
 #include "media/frames.hpp"
+#include "media/video.hpp"
 #include "tasks/scene_args.hpp"
 #include "media/video_plan.hpp"
 #include "render/encoder.hpp"
@@ -50,6 +52,10 @@ int main(int argc, char** argv) {
   const int frames = argc > 2 ? std::stoi(argv[2]) : 200;
   const bool draw_only = argc > 3 && std::string(argv[3]) == "draw";
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  // A folder of this run's own for the videos: two benches at once do not overwrite each other.
+  char scratch_name[] = "/tmp/rattleback-render-bench-XXXXXX";
+  if (!::mkdtemp(scratch_name)) return 2;
+  const std::filesystem::path scratch = scratch_name;
   std::printf("scene %s, %d frames per measurement, median of %d, %u cores\n", scene.c_str(),
               frames, kRepeats, cores);
   std::printf("%-8s %-10s %11s %11s %11s %11s %11s %11s %11s %11s\n", "backend", "size",
@@ -106,6 +112,7 @@ int main(int argc, char** argv) {
       std::printf("%-8s %-10s %11.1f\n", std::string(rb::nameOf(backend)).c_str(),
                   (std::to_string(w) + "x" + std::to_string(h)).c_str(),
                   10 * poses.size() / seconds(start));
+      std::filesystem::remove_all(scratch);
       return 0;
     }
     // Each stage three times, interleaved; the median of each (one pass's figures move by
@@ -121,7 +128,7 @@ int main(int argc, char** argv) {
       encoding.width = w;
       encoding.height = h;
       encoding.fps = plan.fps;
-      auto opened = render::VideoEncoder::open("/tmp/rattleback_bench.mp4", encoding);
+      auto opened = render::VideoEncoder::open((scratch / "encode.mp4").string(), encoding);
       if (!opened) {
         std::fprintf(stderr, "%s\n", opened.error().text().c_str());
         return 2;
@@ -135,22 +142,23 @@ int main(int argc, char** argv) {
       fps[1].push_back(frames / seconds(start));
       cpu[0].push_back(cpuSeconds() - cpu_start);
 
-      app::RenderArgs args;
-      args.scene = scene;
-      args.output = "/tmp/rattleback_bench_e2e.mp4";
-      args.overrides = o;
-      args.overrides.duration = frames * plan.playback / plan.fps;
-      args.quiet = true;
-      args.backend = std::string(rb::nameOf(backend));
+      // End to end: the library's video, as `rattleback render` makes it.
+      tasks::Overrides run = o;
+      run.duration = frames * plan.playback / plan.fps;
+      auto video_scene = tasks::loadScene(scene, run);
+      media::VideoRequest request;
+      request.scene_name = scene;
+      request.output = (scratch / "e2e.mp4").string();
+      request.backend = backend;
       start = std::chrono::steady_clock::now();
       cpu_start = cpuSeconds();
-      app::renderCommand(args);
+      if (!video_scene || !media::renderVideo(video_scene.value(), request)) return 2;
       fps[2].push_back(frames / seconds(start));
       cpu[1].push_back(cpuSeconds() - cpu_start);
-      args.both = true;
-      args.output = "/tmp/rattleback_bench_both.mp4";
+      request.both = true;
+      request.output = (scratch / "both").string();
       start = std::chrono::steady_clock::now();
-      app::renderCommand(args);
+      if (!media::renderVideo(video_scene.value(), request)) return 2;
       fps[3].push_back(frames / seconds(start));
     }
     const double render_fps = median(fps[0]), encode_fps = median(fps[1]),
@@ -163,10 +171,7 @@ int main(int argc, char** argv) {
                 e2e_fps, both_fps, encode_fps / e2e_fps, median(cpu[0]), median(cpu[1]),
                 bound);
   }
-  for (const char* f : {"/tmp/rattleback_bench.mp4", "/tmp/rattleback_bench_e2e.mp4",
-                        "/tmp/rattleback_bench_both-preferred.mp4",
-                        "/tmp/rattleback_bench_both-reversed.mp4",
-                        "/tmp/rattleback_bench_both-both.mp4"})
-    std::remove(f);
+  std::error_code ec;
+  std::filesystem::remove_all(scratch, ec);
   return 0;
 }

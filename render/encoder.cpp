@@ -19,9 +19,11 @@ namespace render {
 namespace {
 
 // libavcodec's and x264's own log lines never reach the terminal: the last error-level line
-// is kept and becomes part of our one-line message when something fails.
-std::mutex log_mutex;
-std::string last_log;
+// is kept and becomes part of our one-line message when something fails. Kept per thread: each
+// encoder runs on a thread of its own (--both has three), and libav calls the callback on the
+// thread whose call logs, so one encoder's message never carries another's line (it was one
+// process-wide string).
+thread_local std::string last_log;
 
 void keepLog(void* object, int level, const char* format, va_list args) {
   if (level > AV_LOG_ERROR) return;
@@ -30,14 +32,10 @@ void keepLog(void* object, int level, const char* format, va_list args) {
   av_log_format_line(object, level, format, args, line, sizeof line, &prefix);
   std::string text(line);
   while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
-  const std::lock_guard lock(log_mutex);
   last_log = text;
 }
 
-std::string lastLog() {
-  const std::lock_guard lock(log_mutex);
-  return last_log;
-}
+std::string lastLog() { return last_log; }
 
 }  // namespace
 
