@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/rollout.hpp"
+
 #include "tasks/drawn_points.hpp"
 
 namespace media {
@@ -31,6 +33,27 @@ render::Framing framingOf(const sim::Telemetry& start, const render::BodyPoints&
   render::Framing framing;
   framing.center = start.x_world.cast<float>();
   framing.radius = 1.25f * render::reachOf(points);
+  return framing;
+}
+
+render::Framing framingOfRun(const sim::Model& model, const render::BodyPoints& points) {
+  sim::Rollout run(model);
+  const sim::Telemetry start = run.sampleAt(0);
+  const render::Framing near = framingOf(start, points);
+  Eigen::Vector2d low = start.x_world.head<2>(), high = low;
+  double wander = 0;  // m: the CM's largest distance from where it started, across the floor
+  sim::sampleRun(run, 100, [&](const sim::Telemetry& s) {
+    low = low.cwiseMin(s.x_world.head<2>());
+    high = high.cwiseMax(s.x_world.head<2>());
+    wander = std::max(wander, (s.x_world - start.x_world).head<2>().norm());
+  });
+  const float reach = render::reachOf(points);
+  if (wander <= 0.25 * reach) return near;  // the quarter's margin holds it: as before
+  render::Framing framing;
+  framing.center = Eigen::Vector3f(0.5f * static_cast<float>(low.x() + high.x()),
+                                   0.5f * static_cast<float>(low.y() + high.y()),
+                                   static_cast<float>(start.x_world.z()));
+  framing.radius = 1.1f * reach + 0.5f * static_cast<float>((high - low).norm());
   return framing;
 }
 

@@ -16,4 +16,10 @@ render::FrameInput frameOf(const sim::Telemetry& t);
 /// wander as it rocks and rolls.
 render::Framing framingOf(const sim::Telemetry& start, const render::BodyPoints& points);
 
+/// The same for a whole run, known before a frame is drawn: where the centre of mass wanders
+/// further than that quarter (a body sliding on a slippery floor), the sphere holds the path of
+/// the body over the run instead (issue 26: a body spun −50 rad/s on friction 0.02 slid 10 cm,
+/// off the frame of the fixed views). Runs `model` to its end, sampling every 10 ms.
+render::Framing framingOfRun(const sim::Model& model, const render::BodyPoints& points);
+
 }  // namespace media

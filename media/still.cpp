@@ -43,7 +43,8 @@ rb::Result<StillResult> renderStill(const tasks::LoadedScene& loaded, const Stil
   }
   const sim::Telemetry sample = run.sampleAt(request.t);
   render::FrameInput frame = frameOf(sample);
-  frame.framing = framingOf(run.summary().first, points);
+  // The video's framing: of the run to the scene's end (or to t, when past it).
+  frame.framing = framingOfRun(model, points);
   frame.history = history.with(sample);
   renderer.draw(frame, result.image);
   result.outcome.t = request.t;
