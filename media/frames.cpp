@@ -36,13 +36,15 @@ render::Framing framingOf(const sim::Telemetry& start, const render::BodyPoints&
   return framing;
 }
 
-render::Framing framingOfRun(const sim::Model& model, const render::BodyPoints& points) {
+render::Framing framingOfRun(const sim::Model& model, const render::BodyPoints& points,
+                             const std::function<bool()>& cancelled) {
   sim::Rollout run(model);
   const sim::Telemetry start = run.sampleAt(0);
   const render::Framing near = framingOf(start, points);
   Eigen::Vector2d low = start.x_world.head<2>(), high = low;
   double wander = 0;  // m: the CM's largest distance from where it started, across the floor
   sim::sampleRun(run, 100, [&](const sim::Telemetry& s) {
+    if (cancelled && cancelled()) run.requestStop();
     low = low.cwiseMin(s.x_world.head<2>());
     high = high.cwiseMax(s.x_world.head<2>());
     wander = std::max(wander, (s.x_world - start.x_world).head<2>().norm());

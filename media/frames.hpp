@@ -1,6 +1,8 @@
 // From the simulation's model and samples to the renderer's inputs.
 #pragma once
 
+#include <functional>
+
 #include "render/frame.hpp"
 #include "sim/model.hpp"
 #include "sim/telemetry.hpp"
@@ -19,7 +21,9 @@ render::Framing framingOf(const sim::Telemetry& start, const render::BodyPoints&
 /// The same for a whole run, known before a frame is drawn: where the centre of mass wanders
 /// further than that quarter (a body sliding on a slippery floor), the sphere holds the path of
 /// the body over the run instead (issue 26: a body spun −50 rad/s on friction 0.02 slid 10 cm,
-/// off the frame of the fixed views). Runs `model` to its end, sampling every 10 ms.
-render::Framing framingOfRun(const sim::Model& model, const render::BodyPoints& points);
+/// off the frame of the fixed views). Runs `model` to its end, sampling every 10 ms, or until
+/// `cancelled` (when given) says to stop.
+render::Framing framingOfRun(const sim::Model& model, const render::BodyPoints& points,
+                             const std::function<bool()>& cancelled = {});
 
 }  // namespace media

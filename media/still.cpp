@@ -44,7 +44,7 @@ rb::Result<StillResult> renderStill(const tasks::LoadedScene& loaded, const Stil
   const sim::Telemetry sample = run.sampleAt(request.t);
   render::FrameInput frame = frameOf(sample);
   // The video's framing: of the run to the scene's end (or to t, when past it).
-  frame.framing = framingOfRun(model, points);
+  frame.framing = framingOfRun(model, points, request.cancelled);
   frame.history = history.with(sample);
   renderer.draw(frame, result.image);
   result.outcome.t = request.t;

@@ -259,7 +259,7 @@ rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const Vide
     std::vector<render::Framing> framings;
     std::vector<SpinHistory> histories;
     for (const sim::Rollout& run : runs) {
-      framings.push_back(framingOfRun(run.model(), points));
+      framings.push_back(framingOfRun(run.model(), points, request.cancelled));
       histories.emplace_back(model.duration, plan.width);
     }
     for (const sim::Rollout& run : runs) {

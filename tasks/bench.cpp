@@ -8,6 +8,7 @@
 
 #include "scene/loader.hpp"
 #include "tasks/scene_args.hpp"
+#include "tasks/table.hpp"
 #include "sim/compile.hpp"
 #include "sim/rollout.hpp"
 
@@ -299,30 +300,46 @@ bool benchScene(const BenchScene& scene, const BenchOptions& options, std::vecto
   return true;
 }
 
-std::string benchCsvHeader() {
-  // The header is the first line (plain CSV readers take it as such); what the columns mean is
-  // in docs/commands.md ("rattleback bench").
-  return "scene,model,integrator,dt,tolerance,steps,rejected,status,cost_median,cost_min,"
-         "cost_max,us_per_step,reversal_s,reversal_error_s,reversal_error_vs_rolling_s,"
-         "max_spin_error,max_spin_error_vs_rolling,energy_drift,switches\n";
-}
+namespace {
+
+// The bench table's columns (docs/commands.md "rattleback bench" says what each measures).
+constexpr Column kBenchColumns[] = {
+    {"scene", "the scene file's name"},
+    {"model", "contact model"},
+    {"integrator", "integrator"},
+    {"dt", "s: fixed step (empty for adaptive rows)"},
+    {"tolerance", "error per step (adaptive rows)"},
+    {"steps", "accepted steps of the first run"},
+    {"rejected", "steps tried and rejected (adaptive)"},
+    {"status", "ok, or why the rung stopped, was refused or skipped"},
+    {"cost_median", "wall seconds per simulated second, median of the repeats"},
+    {"cost_min", "wall seconds per simulated second, least"},
+    {"cost_max", "wall seconds per simulated second, most"},
+    {"us_per_step", "microseconds of wall time per step"},
+    {"reversal_s", "s: first reversal"},
+    {"reversal_error_s", "s: against the model's own rk4 reference"},
+    {"reversal_error_vs_rolling_s", "s: against the rolling model's reference"},
+    {"max_spin_error", "rad/s: largest |n - n_ref| over the samples"},
+    {"max_spin_error_vs_rolling", "rad/s: the same against rolling's reference"},
+    {"energy_drift", "largest |E - E0| / E0 of the run without dissipation"},
+    {"switches", "auto: changes between rolling and smooth"},
+};
+
+}  // namespace
+
+std::string benchCsvHeader() { return csvHeader(kBenchColumns) + "\n"; }
 
 std::string benchCsvLine(const BenchRow& r) {
-  std::string status = r.status;
-  std::replace(status.begin(), status.end(), ',', ';');
-  char line[1024];
-  std::snprintf(line, sizeof line,
-                "%s,%s,%s,%s,%s,%lld,%lld,\"%s\",%.6g,%.6g,%.6g,%.6g,%s,%s,%s,%s,%s,%s,%s\n",
-                r.scene.c_str(), r.model.c_str(), r.integrator.c_str(),
-                std::isnan(r.dt) ? "" : show(r.dt, "%.6g").c_str(),
-                std::isnan(r.tolerance) ? "" : show(r.tolerance, "%.3g").c_str(),
-                static_cast<long long>(r.steps), static_cast<long long>(r.rejected), status.c_str(),
-                r.cost_median, r.cost_min, r.cost_max, r.us_per_step,
-                show(r.reversal, "%.9g").c_str(), show(r.reversal_error, "%.6g").c_str(),
-                show(r.reversal_error_rolling, "%.6g").c_str(), show(r.spin_error, "%.6g").c_str(),
-                show(r.spin_error_rolling, "%.6g").c_str(), show(r.energy_drift, "%.6g").c_str(),
-                show(r.switches, "%.0f").c_str());
-  return line;
+  const std::string fields[] = {
+      csvField(r.scene), csvField(r.model), csvField(r.integrator), number(r.dt, 6),
+      number(r.tolerance, 3), std::to_string(r.steps), std::to_string(r.rejected),
+      csvField(r.status), number(r.cost_median, 6), number(r.cost_min, 6), number(r.cost_max, 6),
+      number(r.us_per_step, 6), number(r.reversal, 9), number(r.reversal_error, 6),
+      number(r.reversal_error_rolling, 6), number(r.spin_error, 6),
+      number(r.spin_error_rolling, 6), number(r.energy_drift, 6), number(r.switches, 6)};
+  std::string line;
+  for (const std::string& f : fields) line.append(line.empty() ? "" : ",").append(f);
+  return line + "\n";
 }
 
 }  // namespace tasks

@@ -44,11 +44,7 @@ constexpr Column kColumns[] = {
 
 std::span<const Column> telemetryColumns() { return kColumns; }
 
-std::string telemetryHeader() {
-  std::string line;
-  for (const Column& c : kColumns) line.append(line.empty() ? "" : ",").append(c.name);
-  return line + "\n";
-}
+std::string telemetryHeader() { return csvHeader(kColumns) + "\n"; }
 
 Eigen::Quaterniond attitude(const sim::Telemetry& s) {
   // q and −q are the same rotation; the integrated quaternion is kept as it is (never flipped
@@ -97,8 +93,6 @@ SimulateResult simulate(const sim::Model& model, const SimulateOptions& options)
 
 nlohmann::json telemetrySidecar(const std::string& scene, const sim::Model& model, double rate,
                                 const sim::RunSummary& run, std::int64_t rows) {
-  nlohmann::json columns = nlohmann::json::array();
-  for (const Column& c : kColumns) columns.push_back({{"name", c.name}, {"unit", c.unit}});
   nlohmann::json j;
   j["program"] = "rattleback " RATTLEBACK_VERSION;
   j["command"] = "simulate";
@@ -107,7 +101,7 @@ nlohmann::json telemetrySidecar(const std::string& scene, const sim::Model& mode
   std::error_code ec;
   const std::filesystem::path absolute = std::filesystem::absolute(scene, ec);
   j["scene_path"] = ec ? scene : absolute.lexically_normal().string();
-  j["columns"] = columns;
+  j["columns"] = columnsJson(kColumns);
   j["rows"] = rows;
   j["rate_hz"] = rate;
   j["model"] = modelJson(model);

@@ -17,17 +17,13 @@
 #include "sim/rollout.hpp"
 #include "tasks/outcome.hpp"
 #include "tasks/output.hpp"
+#include "tasks/table.hpp"
 #include "util/result.hpp"
 
 namespace tasks {
 
 constexpr double kDefaultRate = 500;  ///< Hz: samples per simulated second when not given
 
-/// A column of the telemetry table: its name (the CSV header's) and its unit and meaning.
-struct Column {
-  const char* name;
-  const char* unit;
-};
 /// Every column of the telemetry, in the CSV's order.
 std::span<const Column> telemetryColumns();
 

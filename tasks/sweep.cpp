@@ -26,13 +26,6 @@ constexpr Column kResults[] = {
     {"wall_s", "s: wall-clock time of the run (the only column that varies between runs)"},
 };
 
-std::string number(const std::optional<double>& v, const char* format = "%.10g") {
-  if (!v || !std::isfinite(*v)) return "";
-  char text[48];
-  std::snprintf(text, sizeof text, format, *v + 0.0);
-  return text;
-}
-
 double since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -135,22 +128,11 @@ std::string sweepMetricNames() {
   return names;
 }
 
-std::string csvField(const std::string& text) {
-  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"') out += '"';
-    out += c == '\n' || c == '\r' ? ' ' : c;
-  }
-  return out + "\"";
-}
-
 std::string sweepHeader(const std::vector<std::string>& keys) {
   std::string line = "row";
   // (Appended piece by piece: `"," + string` trips a false -Wrestrict of GCC 12.)
   for (const std::string& key : keys) line.append(",").append(csvField(key));
-  for (const Column& c : kResults) line.append(",").append(c.name);
-  return line;
+  return line + "," + csvHeader(kResults);
 }
 
 std::string sweepRowPrefix(const scene::Sweep& sweep, std::int64_t row) {
@@ -172,7 +154,7 @@ std::string sweepLine(const SweepRow& row) {
   line.append(",").append(number(row.final_spin));
   line.append(",").append(number(row.max_tilt_deg));
   line.append(",").append(number(row.energy_lost));
-  line.append(",").append(number(row.wall_s, "%.6f"));
+  line.append(",").append(fixed(row.wall_s, 6));
   return line;
 }
 
@@ -182,7 +164,7 @@ nlohmann::json sweepColumnsJson(const std::vector<std::string>& keys) {
       {{"name", "row"}, {"unit", "index of the run in the sweep's order (first axis slowest)"}});
   for (const std::string& key : keys)
     columns.push_back({{"name", key}, {"unit", "the value put into the scene"}});
-  for (const Column& c : kResults) columns.push_back({{"name", c.name}, {"unit", c.unit}});
+  for (const auto& c : columnsJson(kResults)) columns.push_back(c);
   return columns;
 }
 

@@ -13,6 +13,7 @@
 
 #include "scene/sweep.hpp"
 #include "tasks/simulate.hpp"
+#include "tasks/table.hpp"
 
 namespace tasks {
 
@@ -59,8 +60,6 @@ std::string sweepLine(const SweepRow& row);
 /// The sidecar's columns and axes.
 nlohmann::json sweepColumnsJson(const std::vector<std::string>& keys);
 nlohmann::json sweepAxesJson(const scene::Sweep& sweep);
-/// A CSV field, quoted when it holds a comma, a quote or a line break (RFC 4180).
-std::string csvField(const std::string& text);
 
 struct SweepOptions {
   int jobs = 0;  ///< threads; 0: all cores
