@@ -15,22 +15,11 @@
 namespace sim {
 namespace {
 
-constexpr double kReversalFraction = 0.01;
-// A sign change of n counts as a reversal only after the body has touched the floor without a
-// break for this long: in the air, or bouncing after a drop, n = ω·ẑ swings with the tumbling
-// axis and says nothing of the rattleback's spin (a body dropped from 5 cm at 30° bounces for
-// about 0.6 s and wobbles through n = 0 several times before it settles).
-constexpr double kSettleTime = 0.5;  // s
 // "In the air" means a flight: the floor carrying nothing for at least this long. Contact lost
 // for a few milliseconds (a hop of a few µm when auto starts to slide with its spring pushing
 // M g where rolling needed less, or chatter of a skidding body) is no flight; the bounces
 // after a drop from 5 cm last tens of milliseconds.
 constexpr double kFlightTime = 0.01;  // s
-// …and n must then keep its new sign for this long. A body rocking through tens of degrees
-// (after a drop, or tipped far) swings n = ω·ẑ through zero and back within a rocking period
-// (the default body: 0.14–0.29 s at 7.0/3.5 Hz, the dips last 20–60 ms); a reversal goes on.
-constexpr double kHoldTime = 0.2;  // s
-
 // Nothing in the model adds energy (no drive; friction, dampers and drag only remove it), so a
 // rise of the total energy by more than this fraction of its initial value is no integration
 // error of a usable step (the bench ladders show ≤ 1e-3 where a step is stable) but the start of
@@ -84,8 +73,8 @@ Rollout::Rollout(Model model, const State& start)
   spin_ = summary_.first.spin;
   summary_.max_tilt_deg = summary_.first.tilt_deg;
   min_cos_tilt_ = std::cos(summary_.first.tilt_deg * M_PI / 180.0);
-  // The sign of the spin n = ω·ẑ at the start (opposite to initial.spin when upside down).
-  reference_sign_ = summary_.first.spin == 0 ? 0 : std::copysign(1.0, summary_.first.spin);
+  // Reversals of the spin n = ω·ẑ at the start (opposite to initial.spin when upside down).
+  reversals_ = ReversalDetector(summary_.first.spin);
   if (summary_.first.contacts == 0 || summary_.first.normal_force <= 0)
     last_airborne_ = airborne_since_ = start.t;
   const double e0 = summary_.first.energy;
@@ -214,34 +203,18 @@ void Rollout::watch() {
   }
 }
 
-// A reversal: n crosses zero against the reference sign and goes on to reach kReversalFraction
-// of the initial |n| the other way (a spin that only decays to rest and dithers about zero is
-// no reversal). Its time is the crossing, found on the interpolant of the step by regula falsi
-// (Illinois), so it is as accurate as the states between steps.
+// Reversals (sim/reversals.hpp, the rule): each crossing's time is found on the interpolant of
+// the step by regula falsi (Illinois), so it is as accurate as the states between steps.
 void Rollout::locateReversal(double previous_spin, double spin) {
-  if (reference_sign_ == 0 || !std::isfinite(spin)) return;
-  const double threshold = kReversalFraction * std::abs(summary_.first.spin);
-  // Before n has reached the threshold the other way, the latest crossing is the candidate;
-  // after it, the crossing stays, and only n back beyond the threshold the old way undoes it
-  // (a wiggle about zero in the middle of a reversal keeps its first crossing).
-  if (spin * reference_sign_ < 0 && previous_spin * reference_sign_ >= 0 && !crossing_reached_) {
-    crossing_ = zeroCrossing([&](double t) { return angularVelocity(model_, interpolate(t)).z(); },
-                             previous_.t, current_.t, previous_spin, spin);
-  }
-  // A crossing while the body was in the air or still bouncing is none, nor one that n takes
-  // back before it has held the new side for kHoldTime.
-  if (crossing_ && *crossing_ - last_airborne_ < kSettleTime) crossing_.reset();
-  if (crossing_ && crossing_reached_ && spin * reference_sign_ > threshold) crossing_.reset();
-  if (crossing_ && spin * reference_sign_ < -threshold) crossing_reached_ = true;
-  // At the run's end a crossing that has reached the threshold counts: nothing undid it.
   const bool at_end = current_.t >= model_.duration * (1 - kSameTime);
-  if (crossing_ && crossing_reached_ && (current_.t - *crossing_ >= kHoldTime || at_end)) {
-    summary_.reversals.push_back(*crossing_);
-    if (!summary_.first_reversal_s) summary_.first_reversal_s = *crossing_;
-    crossing_.reset();
-    reference_sign_ = -reference_sign_;
+  reversals_.step(previous_.t, previous_spin, current_.t, spin, last_airborne_, at_end, [&] {
+    return zeroCrossing([&](double t) { return angularVelocity(model_, interpolate(t)).z(); },
+                        previous_.t, current_.t, previous_spin, spin);
+  });
+  if (reversals_.reversals().size() > summary_.reversals.size()) {
+    summary_.reversals = reversals_.reversals();
+    if (!summary_.first_reversal_s) summary_.first_reversal_s = summary_.reversals.front();
   }
-  if (!crossing_) crossing_reached_ = false;
 }
 
 // Between the ends of the last step: the adaptive stepper's dense output, or a cubic Hermite

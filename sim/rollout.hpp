@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "sim/model.hpp"
+#include "sim/reversals.hpp"
 #include "sim/telemetry.hpp"
 
 namespace sim {
@@ -120,10 +121,7 @@ class Rollout {
   // Rates at the ends of the last step for the Hermite interpolant, computed when first needed.
   mutable bool have_rates_ = false;
   mutable Eigen::Matrix<double, 13, 1> rates_previous_, rates_current_;
-  // Reversal bookkeeping: the sign being reversed from, and the last crossing to the other.
-  double reference_sign_ = 0;
-  std::optional<double> crossing_;
-  bool crossing_reached_ = false;  ///< n has reached kReversalFraction since crossing_
+  ReversalDetector reversals_{0};  ///< the reversal rule, fed each step's ends
   double spin_ = 0;  ///< n = ω·ẑ of current_, rad/s
   double min_cos_tilt_ = 1;  ///< smallest cosine of the tilt so far
   double last_airborne_ = -1e300;  ///< last time of a flight (the floor carrying nothing), s

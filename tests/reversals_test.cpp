@@ -1,0 +1,97 @@
+// The reversal rule (sim/reversals.hpp, docs/physics.md P7) on scripted n(t), without a body:
+// each case is a spin history a run can produce, fed at 1 ms steps with the crossing located
+// by linear interpolation (exact for the piecewise-linear scripts, so times compare to 1e-9 s).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+#include "sim/reversals.hpp"
+
+namespace {
+
+struct Script {
+  std::function<double(double)> n;  ///< rad/s at t
+  double duration = 3;              ///< s
+  double last_flight = -1e300;      ///< s
+};
+
+std::vector<double> reversalsOf(const Script& s, double initial) {
+  sim::ReversalDetector detector(initial);
+  const double h = 1e-3;
+  const int steps = static_cast<int>(std::lround(s.duration / h));
+  for (int k = 0; k < steps; ++k) {
+    const double t0 = k * h, t1 = (k + 1) * h;
+    const double n0 = s.n(t0), n1 = s.n(t1);
+    detector.step(t0, n0, t1, n1, s.last_flight, k + 1 == steps,
+                  [&] { return t0 + h * n0 / (n0 - n1); });
+  }
+  return detector.reversals();
+}
+
+// Piecewise linear through (t, n) knots.
+std::function<double(double)> through(std::vector<std::pair<double, double>> knots) {
+  return [knots](double t) {
+    if (t <= knots.front().first) return knots.front().second;
+    for (std::size_t i = 1; i < knots.size(); ++i)
+      if (t <= knots[i].first) {
+        const auto [t0, n0] = knots[i - 1];
+        const auto [t1, n1] = knots[i];
+        return n0 + (n1 - n0) * (t - t0) / (t1 - t0);
+      }
+    return knots.back().second;
+  };
+}
+
+}  // namespace
+
+TEST(Reversals, ACrossingThatGoesOnIsAReversalAtTheCrossing) {
+  // n linear from −5 to +4.99 over 2 s: across at 2·5/9.99 s, inside a step (not on its end).
+  const auto r = reversalsOf({through({{0, -5}, {2, 4.99}})}, -5);
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_NEAR(r[0], 10 / 9.99, 1e-9);
+}
+
+TEST(Reversals, ADipThroughZeroAndBackIsNone) {
+  // n swings to +0.5 (past 1 % of 5) for 60 ms while the body rocks, and back: no reversal.
+  const auto r = reversalsOf({through({{0, -5}, {1.0, -0.5}, {1.02, 0.5}, {1.06, 0.5}, {1.1, -3}, {3, -3}})}, -5);
+  EXPECT_TRUE(r.empty());
+}
+
+TEST(Reversals, ASpinThatDiesOutAndDithersIsNone) {
+  // Down to rest, then ±0.02 rad/s about zero (within 1 % of 5): never a reversal.
+  const auto r = reversalsOf({[](double t) { return t < 1 ? -5 * (1 - t) : 0.02 * std::sin(40 * t); }}, -5);
+  EXPECT_TRUE(r.empty());
+}
+
+TEST(Reversals, WigglesAfterTheThresholdKeepTheCrossing) {
+  // Across at 1.0 s, up to +0.1 (reached), back to +0.01 and up again: one reversal at 1.0 s.
+  const auto r = reversalsOf({through({{0, -5}, {1.0, 0}, {1.02, 0.1}, {1.04, 0.01}, {1.06, 0.2}, {2, 4}, {3, 4}})}, -5);
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_NEAR(r[0], 1.0, 1e-9);
+}
+
+TEST(Reversals, WithinHalfASecondOfAFlightIsNone) {
+  // A dropped body: n crosses 0.3 s after its last flight, and stays: not counted.
+  Script bounce{through({{0, -5}, {1.0, 0}, {2, 4}, {3, 4}})};
+  bounce.last_flight = 0.7;
+  EXPECT_TRUE(reversalsOf(bounce, -5).empty());
+  bounce.last_flight = 0.4;  // 0.6 s before: settled
+  EXPECT_EQ(reversalsOf(bounce, -5).size(), 1u);
+}
+
+TEST(Reversals, AtTheEndACrossingThatReachedTheThresholdCounts) {
+  // Across at 2.9 s and past 1 % by 2.95 s; the run ends at 3 s, before the 0.2 s hold.
+  const auto r = reversalsOf({through({{0, -5}, {2.9, 0}, {2.95, 0.1}, {3, 0.2}})}, -5);
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_NEAR(r[0], 2.9, 1e-9);
+}
+
+TEST(Reversals, TheNextIsCountedFromTheNewSign) {
+  // −5 → +3 (at 1 s) → −2 (at 2 s): two reversals; n = 0 from the start: none.
+  const auto r = reversalsOf({through({{0, -5}, {1, 0}, {1.5, 3}, {2, 0}, {2.5, -2}, {3, -2}})}, -5);
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_NEAR(r[0], 1.0, 1e-9);
+  EXPECT_NEAR(r[1], 2.0, 1e-9);
+  EXPECT_TRUE(reversalsOf({through({{0, 0}, {3, 1}})}, 0).empty());
+}
