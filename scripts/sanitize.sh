@@ -9,7 +9,8 @@ command -v ninja >/dev/null 2>&1 && generator=(-G Ninja)
 flags="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
 if [ ! -f build-asan/CMakeCache.txt ]; then
   cmake -S . -B build-asan "${generator[@]}" -DCMAKE_BUILD_TYPE=None \
-    -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
+    -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
+    -DRATTLEBACK_PYTHON=OFF >/dev/null
 fi
 cmake --build build-asan --parallel "$(nproc)" --target rattleback rattleback_tests
 # Mesa keeps a few allocations until exit on purpose; those are not ours.
@@ -24,5 +25,8 @@ export ASAN_OPTIONS="abort_on_error=0:halt_on_error=1:detect_stack_use_after_ret
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 # HardCases.OneSimulatedHour is left out here: its 7.2 million steps take ~3 minutes under the
 # sanitizers, and the shorter rolling runs go through the same code.
-ctest --test-dir build-asan --output-on-failure -j "$(nproc)" -E "OneSimulatedHour|NOT_BUILT"
+# Only the programs and unit tests are built here: the tests of the install, the package, the
+# browser pages, the Python package and the docs run in the main build (scripts/test.sh).
+ctest --test-dir build-asan --output-on-failure -j "$(nproc)" \
+  -E "OneSimulatedHour|NOT_BUILT|^Install\.|^Report\.|^Python\.|^Docs\."
 echo "sanitize: unit tests clean under ASan + UBSan"

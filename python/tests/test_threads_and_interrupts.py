@@ -2,6 +2,7 @@
 alone; Ctrl-C raises KeyboardInterrupt promptly and leaves no file behind."""
 
 import os
+import select
 import signal
 import subprocess
 import sys
@@ -75,7 +76,12 @@ def interrupt(tmp_path: Path, what: str) -> float:
     child = subprocess.Popen([sys.executable, "-c", CHILD, str(tmp_path), what,
                               scene_path("kane-levinson.yaml")],
                              stdout=subprocess.PIPE, text=True, env=os.environ.copy())
-    assert child.stdout.readline().strip() == "started"
+    # The child says it has started (or dies: then there is nothing to wait for).
+    ready, _, _ = select.select([child.stdout], [], [], 30)
+    if not ready:
+        child.kill()
+        raise AssertionError("the child never started")
+    assert child.stdout.readline().strip() == "started", "the child could not start"
     time.sleep(1.0)  # well into the run
     sent = time.monotonic()
     child.send_signal(signal.SIGINT)
