@@ -250,8 +250,7 @@ rb::Status writeOutputs(const SweepArgs& args, const scene::Sweep& sweep,
   for (const auto& [r, line] : plan.done) lines.push_back(line);
   if (auto e = tasks::writeSweepTable(output, keys, lines, tasks::sweepSidecar(sweep, shard)); !e)
     return e;
-  std::error_code ec;
-  fs::remove(tasks::Journal::pathOf(output), ec);
+  tasks::Journal::remove(tasks::Journal::pathOf(output));
   if (args.plot.empty()) return {};
   Table table{keys, {}, {}};
   for (const auto& axis : sweep.axes) table.axis_values.push_back(axis.values);
@@ -295,7 +294,8 @@ int sweepCommand(const SweepArgs& args) {
   auto plan = planRows(args, sweep, shard, output.value());
   if (!plan) return fail(plan);
   const std::string journal_path = tasks::Journal::pathOf(output.value());
-  auto journal = tasks::Journal::open(journal_path, tasks::sweepHeader(axisKeys(sweep)), plan->done);
+  auto journal = tasks::Journal::open(journal_path, tasks::sweepHeader(axisKeys(sweep)), plan->done,
+                                      tasks::sweepFingerprint(sweep));
   if (!journal) return fail(journal);
   std::map<std::int64_t, double> metric;
   tasks::SweepRun run;

@@ -101,7 +101,26 @@ rb::Status readShardRows(const std::string& path, std::string& head,
   return {};
 }
 
+// The text of a file, or "" when it cannot be read.
+std::string textOf(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 }  // namespace
+
+std::string sweepFingerprint(const scene::Sweep& sweep) {
+  // FNV-1a (64 bits) of the sweep file and its base scene: any edit to either (a duration, a
+  // mass) changes it, where the rows' own values catch only a changed axis.
+  std::uint64_t hash = 14695981039346656037ull;
+  for (const std::string& text : {textOf(sweep.file), std::string("\n--\n"), textOf(sweep.base)})
+    for (unsigned char c : text) hash = (hash ^ c) * 1099511628211ull;
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+  return hex;
+}
 
 std::optional<Shard> parseShard(const std::string& text) {
   char slash = 0, extra = 0;
@@ -163,6 +182,14 @@ rb::Result<std::map<std::int64_t, std::string>> Journal::read(
   if (!in)
     return rb::Error{"", path + ": nothing to resume (no interrupted run wrote it); run without "
                                 "--resume"};
+  // The sweep file and its base scene as they were when the journal was begun.
+  std::ifstream print_in(path + ".json");
+  const nlohmann::json print = nlohmann::json::parse(print_in, nullptr, false);
+  if (print.is_discarded() || !print.is_object() ||
+      print.value("fingerprint", "") != sweepFingerprint(sweep))
+    return rb::Error{"", path + ": the sweep file or its base scene changed since the "
+                                "interrupted run (its rows would mix two sweeps); remove it, or "
+                                "run without --resume"};
   std::vector<std::string> keys;
   for (const auto& axis : sweep.axes) keys.push_back(axis.key);
   std::string line;
@@ -186,7 +213,9 @@ rb::Result<std::map<std::int64_t, std::string>> Journal::read(
 }
 
 rb::Result<Journal> Journal::open(const std::string& path, const std::string& header,
-                                  const std::map<std::int64_t, std::string>& kept) {
+                                  const std::map<std::int64_t, std::string>& kept,
+                                  const std::string& fingerprint) {
+  std::ofstream(path + ".json", std::ios::trunc) << nlohmann::json{{"fingerprint", fingerprint}}.dump() << "\n";
   std::ofstream out(path, std::ios::trunc);
   if (!out)
     return rb::Error{"", path + ": cannot write the sweep's journal: " + std::strerror(errno)};
@@ -194,6 +223,12 @@ rb::Result<Journal> Journal::open(const std::string& path, const std::string& he
   for (const auto& [r, line] : kept) out << line << "\n";
   out.flush();
   return Journal(std::move(out));
+}
+
+void Journal::remove(const std::string& path) {
+  std::error_code ec;
+  std::filesystem::remove(path, ec);
+  std::filesystem::remove(path + ".json", ec);
 }
 
 void Journal::append(const std::string& line) {

@@ -55,9 +55,13 @@ class Journal {
   /// this sweep's.
   static rb::Result<std::map<std::int64_t, std::string>> read(
       const std::string& path, const scene::Sweep& sweep, const std::vector<std::int64_t>& rows);
-  /// Starts the journal afresh with `kept` (from a resumed journal).
+  /// Starts the journal afresh with `kept` (from a resumed journal), and beside it
+  /// (PATH.json) the fingerprint of the sweep it belongs to.
   static rb::Result<Journal> open(const std::string& path, const std::string& header,
-                                  const std::map<std::int64_t, std::string>& kept);
+                                  const std::map<std::int64_t, std::string>& kept,
+                                  const std::string& fingerprint);
+  /// Removes the journal and its fingerprint (the table is in place).
+  static void remove(const std::string& path);
   void append(const std::string& line);
   void close() { out_.close(); }
 
@@ -76,6 +80,10 @@ struct Merged {
 };
 /// Reads each shard's table and sidecar; an error for a missing, repeated or foreign row.
 rb::Result<Merged> mergeShards(const std::vector<std::string>& shards);
+
+/// A fingerprint of the sweep file and its base scene: a journal begun for another text of
+/// either is refused by --resume.
+std::string sweepFingerprint(const scene::Sweep& sweep);
 
 /// The table's sidecar: program, sweep, base, rows, shard, axes.
 nlohmann::json sweepSidecar(const scene::Sweep& sweep, const std::optional<Shard>& shard);
