@@ -62,7 +62,7 @@ rb::Result<VideoPlan> planVideo(const scene::Loaded& scene, double duration) {
     if (error.key == "video.playback" && scene.overrides.count("simulation.duration") &&
         !scene.overrides.count("video.playback"))
       error.key = "simulation.duration";
-    return rb::Error{"", scene::describe(scene, error)};
+    return scene::locate(scene, error);  // one line, and where it is for Python's SceneError
   }
   return plan;
 }

@@ -66,6 +66,9 @@ bool endsWith(const std::string& s, const std::string& suffix) {
 // The files of one scene (by the name before a known suffix), found in DIR.
 struct SceneFiles {
   std::map<std::string, std::string> by_suffix;  // suffix → file name
+  // Videos and stills the manifest lists beyond one per slot (a scene rendered at several
+  // sizes, stills at other times): shown too, not dropped.
+  std::vector<std::string> more_videos, more_stills;
   bool has(const std::string& suffix) const { return by_suffix.count(suffix) > 0; }
   const std::string& at(const std::string& suffix) const { return by_suffix.at(suffix); }
 };
@@ -219,10 +222,12 @@ void writeAnalysis(std::ostream& out, const SceneFiles& f,
 }
 
 void writeImages(std::ostream& out, const SceneFiles& f, const char* const* suffixes,
-                 std::size_t count, const char* heading) {
+                 std::size_t count, const char* heading,
+                 const std::vector<std::string>& more = {}) {
   std::vector<std::string> files;
   for (std::size_t i = 0; i < count; ++i)
     if (f.has(suffixes[i])) files.push_back(f.at(suffixes[i]));
+  files.insert(files.end(), more.begin(), more.end());
   if (files.empty()) return;
   out << "<h3>" << heading << "</h3><div class=\"grid\">\n";
   for (const std::string& file : files)
@@ -289,7 +294,14 @@ std::set<std::string> placeListed(const fs::path& dir, Folder& folder) {
     } else if (e.kind == OutputKind::Sweep || e.kind == OutputKind::SweepPlot) {
       continue;  // sweeps are found by their sidecars, their plots by name (below)
     } else if (auto slot = slotOf(e, video_spins[e.scene])) {
-      folder.scenes[e.scene].by_suffix[*slot] = e.file;
+      SceneFiles& f = folder.scenes[e.scene];
+      const bool media = e.kind == OutputKind::Video || e.kind == OutputKind::Still;
+      if (media && f.has(*slot) && f.at(*slot) != e.file) {  // the slot's first keeps it
+        (e.kind == OutputKind::Video ? f.more_videos : f.more_stills).push_back(e.file);
+        placed.insert(e.file);
+        continue;
+      }
+      f.by_suffix[*slot] = e.file;
       if (e.kind == OutputKind::Telemetry && fs::is_regular_file(dir / (e.file + ".json"), ec)) {
         folder.scenes[e.scene].by_suffix[".csv.json"] = e.file + ".json";
         placed.insert(e.file + ".json");
@@ -457,7 +469,11 @@ void writeScene(std::ostream& out, const fs::path& dir, const std::string& name,
            "space plays and pauses, arrows step.</p><div class=\"rb-player\" data-run=\""
         << escape(name) << "\"></div>\n";
   writeAnalysis(out, f, theory, run);
-  writeImages(out, f, kStillSuffixes, std::size(kStillSuffixes), "Stills");
+  for (const std::string& file : f.more_videos)
+    out << "<figure><video src=\"" << escape(file) << "\" muted loop playsinline controls "
+        << "preload=\"metadata\"></video><figcaption>" << escape(file)
+        << "</figcaption></figure>\n";
+  writeImages(out, f, kStillSuffixes, std::size(kStillSuffixes), "Stills", f.more_stills);
   writeImages(out, f, kPlotSuffixes, std::size(kPlotSuffixes), "Against time");
   out << "</section>\n";
 }

@@ -827,8 +827,14 @@ TEST(Cli, TheReportPlacesOutputsByTheManifest) {
   ASSERT_EQ(rattleback("still " + s + " --spin -5 --size 64x48 -q -o " + in("first.png")).status, 0);
   ASSERT_EQ(rattleback("simulate " + s + " --duration 0.5 -q -o " + in("run.csv")).status, 0);
   ASSERT_EQ(rattleback("analyze " + s + " --json -o " + in("theory.json")).status, 0);
+  // A second video and a still at another time: shown too (a new user's were dropped, one
+  // per slot), the first of each kind keeping its slot.
+  ASSERT_EQ(rattleback("render " + s + " --duration 0.2 --size 64x48 -q -o " + in("small.mp4")).status, 0);
+  ASSERT_EQ(rattleback("render " + s + " --duration 0.2 --size 96x64 -q -o " + in("larger.mp4")).status, 0);
+  ASSERT_EQ(rattleback("still " + s + " --view side --size 64x48 -q -o " + in("side-a.png")).status, 0);
+  ASSERT_EQ(rattleback("still " + s + " --view side --t 0.5 --size 64x48 -q -o " + in("side-b.png")).status, 0);
   const nlohmann::json manifest = nlohmann::json::parse(std::ifstream(dir / "rattleback-manifest.json"));
-  ASSERT_EQ(manifest["outputs"].size(), 6u) << manifest.dump(1);
+  ASSERT_EQ(manifest["outputs"].size(), 10u) << manifest.dump(1);
   EXPECT_EQ(manifest["outputs"][0]["role"], "reversed");  // spun −5: the reversing way
   ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
   std::ifstream page_in(dir / "index.html");
@@ -843,6 +849,9 @@ TEST(Cli, TheReportPlacesOutputsByTheManifest) {
             std::string::npos);
   EXPECT_NE(html.find("preferred direction: <b>counter-clockwise"), std::string::npos);  // theory.json
   EXPECT_NE(html.find("href=\"run.csv\""), std::string::npos);
+  for (const char* shown : {"src=\"small.mp4\"", "src=\"larger.mp4\"", "src=\"side-a.png\"",
+                            "src=\"side-b.png\""})
+    EXPECT_NE(html.find(shown), std::string::npos) << shown;
 }
 
 // A body with no preferred direction (the default body without its dents: misalignment 0,

@@ -69,8 +69,14 @@ class Scene:
 
     @classmethod
     def from_dict(cls, scene: Mapping[str, Any], name: str = "<dict>") -> "Scene":
-        """A scene as nested dicts, keyed as the file is (``{"body": {...}, ...}``)."""
-        return cls(json.dumps(scene, default=_yaml_value_default), name)
+        """A scene as nested dicts, keyed as the file is (``{"body": {...}, ...}``). Its errors
+        name ``name`` and the key; ``line`` is None (a dict has no lines)."""
+        try:
+            return cls(json.dumps(scene, default=_yaml_value_default), name)
+        except SceneError as e:
+            if e.file == name:
+                e.line = None
+            raise
 
     def with_values(self, values: Mapping[str, Any]) -> "Scene":
         """A copy with values put at dotted keys: ``{"initial.spin": -5,

@@ -52,6 +52,7 @@ def test_a_yaml_string_and_a_dict_are_named_in_their_errors():
     with pytest.raises(rb.SceneError) as caught:
         rb.Scene.from_dict(DICT_SCENE | {"gravity": -9.81})
     assert caught.value.file == "<dict>" and caught.value.key == "gravity"
+    assert caught.value.line is None  # a dict has no lines
     assert str(caught.value).startswith("<dict>:1: gravity must be")
     run = rb.simulate(rb.Scene.from_dict(DICT_SCENE), duration=0.5)
     assert len(run) == 251 and run.result["status"] == "ok"
@@ -97,3 +98,20 @@ def test_a_run_that_stops_itself_raises_run_stopped():
         rb.simulate(scene_path("rattleback.yaml"), integrator="euler", dt=5e-3)
     assert caught.value.reason == "energy_gain"
     assert 0 < caught.value.t < 8
+
+
+def test_a_bad_video_argument_is_a_scene_error_naming_the_argument():
+    scene = rb.Scene.from_file(scene_path("rattleback.yaml"))
+    with pytest.raises(rb.SceneError) as caught:
+        rb.still(scene, size=(641, 361))
+    assert str(caught.value).startswith("argument size: sides must be even")
+    assert (caught.value.file, caught.value.line, caught.value.key) == ("argument size", None, "video.size")
+    with pytest.raises(rb.SceneError) as caught:
+        rb.still(scene, view="top")
+    assert caught.value.key == "video.view"
+
+
+def test_a_dict_has_no_line():
+    with pytest.raises(rb.SceneError) as caught:
+        rb.Scene.from_dict(DICT_SCENE | {"gravity": -9.81})
+    assert caught.value.line is None
