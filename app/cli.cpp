@@ -136,14 +136,16 @@ void defineBench(CLI::App& c, Cli& cli) {
   c.add_option("--plot", b.plot, "Error-against-cost plot, PNG (default out/bench.png)");
   c.add_option("--duration", b.duration, "Simulated seconds per run (default 3)");
   c.add_option("--repeats", b.repeats, "Timed runs per step (default 3)");
-  c.add_option("--rungs", b.rungs, "Steps in each ladder of halvings (default 5)");
+  c.add_option("--rungs", b.rungs,
+               "Rungs of each ladder: halvings of the step, and for dopri5 decades of the "
+               "tolerance from 1e-4 (default 5)");
   c.add_option("--models", b.models, names<sim::ContactModel>() + " (default: all that apply)")
       ->delimiter(',');
   c.add_option("--integrators", b.integrators,
                names<sim::Integrator>() + " (default all; dopri5 runs the tolerance ladder)")
       ->delimiter(',');
   c.add_option("--tolerances", b.tolerances,
-               "Tolerance ladder for dopri5 (default 1e-4,1e-5,…,1e-10)")
+               "Tolerance ladder for dopri5 (default: --rungs decades from 1e-4)")
       ->delimiter(',');
   c.add_flag("-q,--quiet", b.quiet, "No table on stdout");
 }

@@ -223,8 +223,13 @@ bool ladder(const BenchScene& scene, const sim::SceneSpec& base, const std::stri
             std::vector<BenchRow>& rows) {
   const bool adaptive = sim::isAdaptive(*rb::parseName<sim::Integrator>(integrator));
   const std::vector<double> tolerances =
-      options.tolerances.empty() ? std::vector<double>(std::begin(kTolerances), std::end(kTolerances))
-                                 : options.tolerances;
+      options.tolerances.empty()
+          // As many decades from 1e-4 as the step ladders have rungs (--rungs 1 is one run of
+          // each, dopri5's too: it ran all seven decades).
+          ? std::vector<double>(std::begin(kTolerances),
+                                std::begin(kTolerances) +
+                                    std::min<std::size_t>(std::size(kTolerances), options.rungs))
+          : options.tolerances;
   const int rungs = adaptive ? static_cast<int>(tolerances.size()) : options.rungs;
   bool over_budget = false;
   for (int rung = 0; rung < rungs; ++rung) {
