@@ -127,9 +127,10 @@ void printText(std::FILE* out, const std::string& scene, const sim::Model& model
                 stability.omega, stability.zeta);
   else
     std::fprintf(out, "contact          stiffest mode at rest %.4g rad/s (damping ratio %.3g); "
-                "largest stable dt %.3g s with %s (the scene's integrator)\n",
-                stability.omega, stability.zeta, stability.largest_step,
-                std::string(rb::nameOf(model.integrator)).c_str());
+                "largest stable dt for a run %.3g s with %s (the scene's integrator; %.3g s "
+                "at rest)\n",
+                stability.omega, stability.zeta, stability.run_step,
+                std::string(rb::nameOf(model.integrator)).c_str(), stability.largest_step);
 }
 
 // The analysis as text or JSON, into `out`.

@@ -74,7 +74,7 @@ double stepAmplification(Integrator integrator, double omega, double zeta, doubl
 ContactStability contactStability(const Model& model) {
   // Rolling has no contact spring: only the integrator's accuracy limits the step.
   if (model.contact.model == ContactModel::Rolling)
-    return {0, 0, std::numeric_limits<double>::infinity()};
+    return {0, 0, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   // The pose it starts nearest to: upright, or upside down on its top (a flat top carries
   // many more points than the bottom, hence much stiffer modes). A body that turns over
   // during a run onto a stiffer face is caught by run()'s energy bound instead.
@@ -89,12 +89,12 @@ ContactStability contactStability(const Model& model) {
   out.omega = stiffestMode(model, Eigen::Matrix3d(Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX())));
   out.zeta = model.contact.damping * out.omega / (2 * model.contact.stiffness);
   if (out.omega == 0) {  // nothing presses on the floor (no gravity): no contact mode
-    out.largest_step = std::numeric_limits<double>::infinity();
+    out.largest_step = out.run_step = std::numeric_limits<double>::infinity();
     return out;
   }
   // An adaptive integrator chooses its own steps: none to refuse.
   if (isAdaptive(model.integrator)) {
-    out.largest_step = std::numeric_limits<double>::infinity();
+    out.largest_step = out.run_step = std::numeric_limits<double>::infinity();
     return out;
   }
   const double T = model.duration;
@@ -110,6 +110,7 @@ ContactStability contactStability(const Model& model) {
     (acceptable(model.integrator, out.omega, out.zeta, mid, T) ? good : bad) = mid;
   }
   out.largest_step = good;
+  out.run_step = kRunMargin * good;
   return out;
 }
 

@@ -61,7 +61,8 @@ nlohmann::json analysisJson(const sim::Model& model, double spin) {
   j["misalignment_deg"] = m.misalignment_deg;
   j["contact"] = {{"omega_rad_s", stability.omega},
                   {"damping_ratio", stability.zeta},
-                  {"largest_stable_dt_s", stability.largest_step}};  // inf → null
+                  {"largest_stable_dt_s", stability.run_step},  // inf → null
+                  {"largest_stable_dt_at_rest_s", stability.largest_step}};
   j["h"] = rest.h;
   j["radii_of_curvature"] = {rest.radii(0), rest.radii(1)};
   j["rest_stable"] = rest.stable;

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <regex>
+#include <sstream>
 #include <vector>
 
 #include "sim/stability.hpp"
@@ -106,8 +107,8 @@ TEST(HardCases, StepTenTimesTooLargeIsRefusedAndWouldHaveDiverged) {
       << *r.summary.divergence;
   EXPECT_LT(r.summary.steps, steps);
 
-  // At the named step itself the same body runs its second without trouble.
-  spec.simulation.dt = limit;
+  // At the named step (for a run: half the linear limit) the same body runs its second.
+  spec.simulation.dt = sim::contactStability(fine).run_step;
   EXPECT_FALSE(record(build(spec)).summary.divergence);
 }
 
@@ -308,9 +309,44 @@ TEST(HardCases, AStronglyDampedFloorKeepsItsReversal) {
   spec.simulation.integrator = "rk4";
   spec.simulation.duration = 3.0;
   spec.simulation.dt = 1e-7;  // (any step that compiles, to ask the model its stable step)
-  spec.simulation.dt = 0.95 * sim::contactStability(build(spec)).largest_step;  // as the issue
+  spec.simulation.dt = 0.95 * sim::contactStability(build(spec)).run_step;  // as the issue
   const Recorded r = record(build(spec), 0.01);
   ASSERT_FALSE(r.summary.divergence) << *r.summary.divergence;
   ASSERT_TRUE(r.summary.first_reversal_s.has_value());
   EXPECT_NEAR(*r.summary.first_reversal_s, rollingReversal(), 0.01);
+}
+
+// The largest stable step the refusal names is one a run completes at: 0.95 of it runs to the
+// end, without the watchdog stopping it, for the cases where 0.95 of the linear limit at rest
+// did not (issue 26.3): an undamped k 1e6 N/m floor with rk4 and with symplectic, and a 3 cm
+// drop onto k 1e8 N/m. (The margin, half the limit, is measured in sim/stability.hpp.)
+TEST(HardCases, TheNamedStableStepRunsToTheEnd) {
+  struct Case {
+    const char* name;
+    double stiffness, damping, height;
+    const char* integrator;
+    double duration;
+  };
+  for (const Case& c : {Case{"k 1e6 undamped, rk4", 1e6, 0, 0, "rk4", 3.0},
+                        Case{"k 1e6 undamped, symplectic", 1e6, 0, 0, "symplectic", 3.0},
+                        Case{"a 3 cm drop onto k 1e8", 1e8, 4, 0.03, "rk4", 0.5}}) {
+    sim::SceneSpec spec = parse(kDefaultSmooth);
+    spec.contact.stiffness = c.stiffness;
+    spec.contact.damping = c.damping;
+    spec.initial.height = c.height;
+    spec.simulation.integrator = c.integrator;
+    spec.simulation.duration = c.duration;
+    spec.simulation.dt = 1e-8;  // (any step that compiles, to ask the model its stable step)
+    const sim::ContactStability stability = sim::contactStability(build(spec));
+    spec.simulation.dt = 0.95 * stability.run_step;
+    const Recorded r = record(build(spec), 0.01);
+    EXPECT_FALSE(r.summary.divergence) << c.name << ": " << r.summary.divergence.value_or("");
+    // A refusal (above the linear limit) names it.
+    spec.simulation.dt = 1.05 * stability.largest_step;
+    auto refused = sim::compile(spec);
+    ASSERT_FALSE(refused.ok()) << c.name;
+    std::ostringstream named;
+    named << "largest stable step for a run is " << stability.run_step << " s";
+    EXPECT_NE(refused.error().message.find(named.str()), std::string::npos) << refused.error().message;
+  }
 }
