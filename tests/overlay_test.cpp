@@ -36,7 +36,10 @@ bool twins(const std::string& args, Twins& out) {
   EXPECT_EQ(rattleback(args + " --no-readouts -o " + bare.string()), 0) << args;
   if (!render::readPng(with.string(), out.with).ok() || !render::readPng(bare.string(), out.bare).ok() ||
       out.with.rgba.size() != out.bare.rgba.size()) {
-    ADD_FAILURE() << "unreadable stills for " << args;
+    std::error_code ec;
+    ADD_FAILURE() << "unreadable stills for " << args << " (sizes " << fs::file_size(with, ec)
+                  << " and " << fs::file_size(bare, ec) << " bytes; " << out.with.width << "x"
+                  << out.with.height << " and " << out.bare.width << "x" << out.bare.height << ")";
     return false;
   }
   out.drawn.assign(out.with.rgba.size() / 4, false);
