@@ -13,6 +13,7 @@
 #include "app/plot.hpp"
 #include "app/progress.hpp"
 #include "tasks/scene_args.hpp"
+#include "sim/analysis.hpp"
 #include "sim/rollout.hpp"
 #include "tasks/simulate.hpp"
 
@@ -36,6 +37,11 @@ void printSummary(std::FILE* out, const SimulateArgs& args, const sim::Model& mo
   const double simulated = run.last.t;
   const std::string integrator(rb::nameOf(model.integrator));
   std::fprintf(out, "scene           %s\n", args.scene.c_str());
+  // As analyze warns: a body whose CM is above a radius of curvature at the rest contact
+  // topples rather than rocks, and what follows is no rattleback's reversal.
+  if (model.body->surface.kind == sim::Surface::Kind::Paraboloid && !sim::restOf(model).stable)
+    std::fprintf(out, "WARNING         the body cannot stand upright (its CM is above a radius of "
+                      "curvature at the rest contact; `rattleback analyze` says by how much)\n");
   if (sim::isAdaptive(model.integrator))
     std::fprintf(out,
                  "integrator      %s, tolerance %g, %lld steps (%lld rejected), %g s simulated\n",

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "python/convert.hpp"
 #include "python/scene_value.hpp"
 #include "tasks/analysis.hpp"
+#include "tasks/manifest.hpp"
 #include "tasks/run_json.hpp"
 #include "tasks/player_data.hpp"
 #include "tasks/simulate.hpp"
@@ -174,6 +176,9 @@ void sweepToCsv(const SweepTable& t, const std::string& path) {
   {
     py::gil_scoped_release release;
     written = tasks::writeSweepTable(path, keys, lines, sidecar);
+    if (written)
+      (void)tasks::recordOutputs({{path, tasks::OutputKind::Sweep,
+                                   std::filesystem::path(t.sweep.file).stem().string(), "", {}, {}}});
   }
   if (!written) raise(written.error());
 }
@@ -209,6 +214,11 @@ PYBIND11_MODULE(_core, m) {
         {
           py::gil_scoped_release release;
           written = tasks::writeTelemetry(path, r.scene, r.model, r.rate, r.summary, r.samples);
+          // Listed in the folder's manifest, as the command line lists it (a failure to list
+          // loses nothing: the report then places the file by its name).
+          if (written)
+            (void)tasks::recordOutputs({{path, tasks::OutputKind::Telemetry,
+                                         std::filesystem::path(r.scene).stem().string(), "", {}, {}}});
         }
         if (!written) raise(written.error());
       });

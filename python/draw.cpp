@@ -1,5 +1,7 @@
 // rattleback._draw: stills and videos for Python (media/). A module apart from _core so that
 // `import rattleback` loads no OpenGL or libav until something is drawn.
+#include <filesystem>
+
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -8,6 +10,7 @@
 #include "media/still.hpp"
 #include "media/video.hpp"
 #include "render/image_io.hpp"
+#include "tasks/manifest.hpp"
 #include "tasks/output.hpp"
 #include "python/convert.hpp"
 #include "python/scene_value.hpp"
@@ -96,6 +99,11 @@ py::list renderVideos(const LoadedScene& loaded, const std::string& output, bool
   if (!made) raise(made.error());
   const media::VideoResult& result = made.value();
   if (result.outcome.ending == tasks::Ending::Stopped) raiseStopped(result.outcome, request.scene_name);
+  std::vector<tasks::OutputEntry> entries;
+  for (const media::VideoFile& f : result.files)
+    entries.push_back({f.path, tasks::OutputKind::Video,
+                       std::filesystem::path(request.scene_name).stem().string(), f.role, f.spin, {}});
+  (void)tasks::recordOutputs(entries);  // as the command line lists them
   py::list files;
   for (const media::VideoFile& f : result.files) {
     py::dict d;
