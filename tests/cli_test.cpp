@@ -886,3 +886,15 @@ TEST(Cli, ABodyWithNoPreferredDirectionGetsNone) {
     EXPECT_EQ(caption.find("predicts it rocks"), std::string::npos) << caption;
   }
 }
+
+// simulate repeats analyze's warning for a body that cannot stand upright (the seed's body,
+// whose CM is above its radius of curvature across the long axis, topples): a new user's
+// toppling body ran quietly. The default body, which stands, gets no warning.
+TEST(Cli, SimulateWarnsOfABodyThatCannotStand) {
+  const std::string out = " --duration 0.05 -o " + tempFile("w.csv").string();
+  const Result seed = rattleback("simulate " + scene("seed-reversed") + out);
+  ASSERT_EQ(seed.status, 0) << seed.err;
+  EXPECT_NE(seed.out.find("WARNING         the body cannot stand upright"), std::string::npos) << seed.out;
+  const Result upright = rattleback("simulate " + scene("rattleback") + out);
+  EXPECT_EQ(upright.out.find("WARNING"), std::string::npos) << upright.out;
+}

@@ -133,3 +133,10 @@ def test_the_attitude_quaternion_is_unit_and_gives_the_tilt(default_scene):
     # Continuous in time: no sample jumps to −q.
     q = np.stack([run.qw, run.qx, run.qy, run.qz], axis=1)
     assert (np.sum(q[1:] * q[:-1], axis=1) > 0.9).all()
+
+
+def test_python_lists_its_csv_in_the_folders_manifest(tmp_path, default_scene):
+    rb.simulate(default_scene, duration=0.2).to_csv(tmp_path / "mine.csv")
+    outputs = json.loads((tmp_path / "rattleback-manifest.json").read_text())["outputs"]
+    assert outputs == [{"file": "mine.csv", "kind": "telemetry", "scene": "rattleback", "role": "",
+                        "spin": None, "t": None}]
