@@ -8,12 +8,13 @@
 #include <sstream>
 
 #include "app/commands.hpp"
-#include "tasks/scene_args.hpp"
-#include "tasks/analysis.hpp"
-#include "tasks/output.hpp"
 #include "sim/analysis.hpp"
+#include "sim/compile.hpp"
 #include "sim/stability.hpp"
 #include "sim/switching.hpp"
+#include "tasks/analysis.hpp"
+#include "tasks/output.hpp"
+#include "tasks/scene_args.hpp"
 
 namespace app {
 namespace {
@@ -78,13 +79,14 @@ void printText(std::FILE* out, const std::string& scene, const sim::Model& model
   const sim::MassProperties& m = model.body->mass_properties;
   const double unit = model.length_unit;
   const sim::ContactStability stability = sim::contactStability(model);
-  const std::size_t top = model.body->top.size();
-  const std::size_t bottom = model.body->bottom.size();
+  const sim::GridCensus census = sim::censusOf(*model.body);
+  const auto top = static_cast<std::size_t>(census.top);
+  const auto bottom = static_cast<std::size_t>(census.bottom);
   std::fprintf(out, "scene            %s (lengths below in the file's unit, %g m)\n", scene.c_str(),
               unit);
   if (model.body->surface.kind == sim::Surface::Kind::Paraboloid)
     std::fprintf(out, "points           %lld in all, %zu on the surface (%zu top, %zu bottom)\n",
-                static_cast<long long>(m.points), top + bottom, top, bottom);
+                static_cast<long long>(census.points), top + bottom, top, bottom);
   else
     std::fprintf(out, "points           %zu drawn on the surface (%zu top, %zu bottom); the mass "
                 "properties are the scene's\n",

@@ -6,11 +6,12 @@
 #include <cstdio>
 #include <fstream>
 
-#include "tasks/scene_args.hpp"
 #include "scene/sweep.hpp"
+#include "sim/compile.hpp"
 #include "sim/initial.hpp"
 #include "sim/rollout.hpp"
 #include "sim/step.hpp"
+#include "tasks/scene_args.hpp"
 
 namespace {
 
@@ -59,7 +60,7 @@ void prepareRun(benchmark::State& state, const char* scene) {
     benchmark::DoNotOptimize(s);
     spin = -spin;
   }
-  state.SetLabel(std::to_string(m.body->bottom.size() + m.body->top.size()) + " surface points shared");
+  state.SetLabel(std::to_string(sim::censusOf(*m.body).bottom + sim::censusOf(*m.body).top) + " surface points shared");
 }
 
 // What a sweep does for each run besides integrating (issue: ≤ 0.1 ms): build its scene from

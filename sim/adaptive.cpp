@@ -19,8 +19,7 @@ struct Scales {
 
   explicit Scales(const Model& model) {
     const Body& body = *model.body;
-    const Eigen::Vector3d extent = body.bottom.hi.cwiseAbs().cwiseMax(body.bottom.lo.cwiseAbs())
-                                       .cwiseMax(body.top.hi.cwiseAbs().cwiseMax(body.top.lo.cwiseAbs()));
+    const Eigen::Vector3d extent = body.extent;
     length = extent.norm() > 0 ? extent.norm() : 1.0;
     time = model.gravity > 0 ? std::sqrt(length / model.gravity) : 1.0;
     momentum = body.inertia.diagonal().maxCoeff() / time;

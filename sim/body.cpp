@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <functional>
 
 namespace sim {
 namespace {
@@ -85,19 +86,39 @@ std::int64_t estimateGridPoints(const Paraboloid& shape, const Grid& grid) {
                       : static_cast<std::int64_t>(bound);
 }
 
-BodyGrid buildBodyGrid(const Paraboloid& shape, const std::optional<Dents>& dents,
-                       const Grid& grid, double mass) {
+namespace {
+
+// The last level k ≤ nz whose z_k = top − k dz is ≥ z_bottom, or −1: a guess from the
+// division, then moved by the same comparison the levels are defined by (z_k falls with k in
+// floating point too, so the set of such k is an interval from 0).
+int lastLevelAbove(const Paraboloid& shape, double dz, int nz, double z_bottom) {
+  const auto z = [&](int k) { return shape.top - k * dz; };
+  const double guess = std::floor((shape.top - z_bottom) / dz);  // NaN: every level passes
+  int k = std::isnan(guess) ? nz : static_cast<int>(std::clamp(guess, -1.0, static_cast<double>(nz)));
+  while (k < nz && z(k + 1) >= z_bottom) ++k;
+  while (k >= 0 && z(k) < z_bottom) --k;
+  return k;
+}
+
+// The first level k ≥ 0 whose z_k is below z_dent (nz + 1 when none is).
+int firstLevelBelow(const Paraboloid& shape, double dz, int nz, double z_dent) {
+  const auto z = [&](int k) { return shape.top - k * dz; };
+  if (!(z(0) >= z_dent)) return 0;  // no dent here (z_dent = +inf, or NaN), or below the top
+  const double guess = std::floor((shape.top - z_dent) / dz) + 1;
+  int k = std::isnan(guess) ? 0 : static_cast<int>(std::clamp(guess, 0.0, static_cast<double>(nz) + 1));
+  while (k > 0 && !(z(k - 1) >= z_dent)) --k;
+  while (k <= nz && z(k) >= z_dent) ++k;
+  return k;
+}
+
+}  // namespace
+
+void forEachColumn(const Paraboloid& shape, const std::optional<Dents>& dents, const Grid& grid,
+                   const std::function<bool(const GridColumn&)>& visit) {
   const Eigen::Vector2d half = shape.rimHalfWidths();
   const int nx = halfColumns(half.x(), grid.dx);
   const int ny = halfColumns(half.y(), grid.dy);
   const int nz = zLevels(shape, grid.dz);
-
-  PointMoments moments;
-  BodyGrid out;
-  // At most one point of each kind per column (no regrowth: the default body has 120 000).
-  const std::size_t columns = static_cast<std::size_t>(4) * nx * ny;
-  out.surface.top.reserve(columns);
-  out.surface.bottom.reserve(columns);
   for (int j = -ny; j < ny; ++j) {
     const double y = (j + 0.5) * grid.dy;
     for (int i = -nx; i < nx; ++i) {
@@ -107,27 +128,72 @@ BodyGrid buildBodyGrid(const Paraboloid& shape, const std::optional<Dents>& dent
       const double z_dent = dents ? dents->surface(shape, x, y)
                                   : std::numeric_limits<double>::infinity();
       // The column's points: z_k = top − k dz with z_bottom ≤ z_k < z_dent (seed appendix).
-      int first = -1, last = -1;
-      double sum_z = 0, sum_zz = 0;
-      for (int k = 0; k <= nz; ++k) {
-        const double z = shape.top - k * grid.dz;
-        if (z < z_bottom) break;
-        if (z >= z_dent) continue;
-        if (first < 0) first = k;
-        last = k;
-        sum_z += z;
-        sum_zz += z * z;
-      }
-      if (first < 0) continue;
-      moments.addColumn(x, y, last - first + 1, sum_z, sum_zz);
-      // Surface: the column's topmost point is on the top (red), its lowest on the bottom
-      // (blue); a one-point column is top only (seed §3.1 figures: 308 + 294 = 602).
-      out.surface.top.emplace_back(x, y, shape.top - first * grid.dz);
-      if (last != first) out.surface.bottom.emplace_back(x, y, shape.top - last * grid.dz);
+      GridColumn column{x, y, firstLevelBelow(shape, grid.dz, nz, z_dent),
+                        lastLevelAbove(shape, grid.dz, nz, z_bottom), i < 0 ? -i - 1 : i,
+                        j < 0 ? -j - 1 : j};
+      if (column.first <= column.last && !visit(column)) return;
     }
   }
-  out.mass = moments.properties(mass);
+}
+
+GridCensus gridCensus(const Paraboloid& shape, const std::optional<Dents>& dents, const Grid& grid) {
+  GridCensus census;
+  bool any = false;
+  auto include = [&](const Eigen::Vector3d& p) {
+    census.lo = any ? Eigen::Vector3d(census.lo.cwiseMin(p)) : p;
+    census.hi = any ? Eigen::Vector3d(census.hi.cwiseMax(p)) : p;
+    any = true;
+  };
+  forEachColumn(shape, dents, grid, [&](const GridColumn& c) {
+    census.points += c.last - c.first + 1;
+    ++census.top;
+    include({c.x, c.y, shape.top - c.first * grid.dz});
+    if (c.last != c.first) {
+      ++census.bottom;
+      include({c.x, c.y, shape.top - c.last * grid.dz});
+    }
+    return true;
+  });
+  return census;
+}
+
+bool gridHasTwoLevels(const Paraboloid& shape, const std::optional<Dents>& dents, const Grid& grid) {
+  bool found = false;
+  forEachColumn(shape, dents, grid, [&](const GridColumn& c) {
+    found = c.last > c.first;
+    return !found;
+  });
+  return found;
+}
+
+SurfacePoints gridSurface(const Paraboloid& shape, const std::optional<Dents>& dents,
+                          const Grid& grid, int stride) {
+  // The column's topmost point is on the top (red), its lowest on the bottom (blue); a
+  // one-point column is top only (seed §3.1 figures: 308 + 294 = 602).
+  SurfacePoints out;
+  forEachColumn(shape, dents, grid, [&](const GridColumn& c) {
+    if (c.ring_x % stride != 0 || c.ring_y % stride != 0) return true;
+    out.top.emplace_back(c.x, c.y, shape.top - c.first * grid.dz);
+    if (c.last != c.first) out.bottom.emplace_back(c.x, c.y, shape.top - c.last * grid.dz);
+    return true;
+  });
   return out;
+}
+
+MassProperties gridMassProperties(const Paraboloid& shape, const std::optional<Dents>& dents,
+                                  const Grid& grid, double mass) {
+  PointMoments moments;
+  forEachColumn(shape, dents, grid, [&](const GridColumn& c) {
+    double sum_z = 0, sum_zz = 0;
+    for (int k = c.first; k <= c.last; ++k) {
+      const double z = shape.top - k * grid.dz;
+      sum_z += z;
+      sum_zz += z * z;
+    }
+    moments.addColumn(c.x, c.y, c.last - c.first + 1, sum_z, sum_zz);
+    return true;
+  });
+  return moments.properties(mass);
 }
 
 void PointMoments::addColumn(double x, double y, std::int64_t n, double sum_z, double sum_zz) {

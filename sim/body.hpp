@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -104,14 +105,42 @@ Eigen::Matrix3d inertiaAbout(const MassProperties& m, const Eigen::Vector3d& poi
 /// is on or above the bottom and below the dents. Returns the number of grid points.
 std::int64_t estimateGridPoints(const Paraboloid& shape, const Grid& grid);
 
-/// Walks the grid once: mass properties of `mass` kg spread evenly over the points, and the
-/// surface points (top and bottom of every column), in the geometric frame.
-struct BodyGrid {
-  MassProperties mass;
-  SurfacePoints surface;
+/// One column of the grid that holds points: its position and the levels k = first … last
+/// of its points, z_k = top − k dz (computed exactly so). `ring_x`, `ring_y` count columns
+/// outwards from the axes on the column's side (0 next to the axis).
+struct GridColumn {
+  double x, y;      ///< m, geometric frame
+  int first, last;  ///< levels of the topmost and lowest point
+  int ring_x, ring_y;
 };
-BodyGrid buildBodyGrid(const Paraboloid& shape, const std::optional<Dents>& dents,
-                       const Grid& grid, double mass);
+
+/// Calls `visit(column)` for each column that holds points, rows of y outermost, in the order
+/// the grid has always been walked, until `visit` returns false. A column's levels come in closed form (then checked
+/// against the exact comparisons at the ends), so the walk costs one step a column, not one a
+/// point: the default body's 3.2 million points in 120,000 columns.
+void forEachColumn(const Paraboloid& shape, const std::optional<Dents>& dents, const Grid& grid,
+                   const std::function<bool(const GridColumn&)>& visit);
+
+/// What the grid holds without building it: point counts and the surface points' bounding box.
+struct GridCensus {
+  std::int64_t points = 0;                 ///< all grid points inside the body
+  std::int64_t top = 0, bottom = 0;        ///< surface points, red and blue
+  Eigen::Vector3d lo = Eigen::Vector3d::Zero(), hi = Eigen::Vector3d::Zero();  ///< geometric frame, m
+};
+GridCensus gridCensus(const Paraboloid& shape, const std::optional<Dents>& dents, const Grid& grid);
+
+/// Whether some column holds two points or more (a body with a bottom): the walk stops there.
+bool gridHasTwoLevels(const Paraboloid& shape, const std::optional<Dents>& dents, const Grid& grid);
+
+/// The surface points (top and bottom of every column) in the geometric frame, of the columns
+/// whose ring indices along x and y are both multiples of `stride` (1: all of them).
+SurfacePoints gridSurface(const Paraboloid& shape, const std::optional<Dents>& dents,
+                          const Grid& grid, int stride = 1);
+
+/// Mass properties of `mass` kg spread evenly over the grid's points (a sum over every point,
+/// in the walk's order).
+MassProperties gridMassProperties(const Paraboloid& shape, const std::optional<Dents>& dents,
+                                  const Grid& grid, double mass);
 
 /// Principal moments, axes and misalignment angle of an inertia tensor (kg m²).
 void principalAxes(MassProperties& m);

@@ -248,7 +248,8 @@ Body buildEllipsoid(const BodySpec& b, double unit) {
 }
 
 // Mass properties from the shape or the grid; surface points moved to the CM, in SI units.
-rb::Result<Body> buildBody(const BodySpec& b, double unit, MassSource source) {
+rb::Result<Body> buildBody(const BodySpec& b, double unit, MassSource source,
+                           bool contact_points) {
   if (b.shape == "ellipsoid") return buildEllipsoid(b, unit);
   const ParaboloidSpec& p = b.paraboloid;
   const Paraboloid shape(p.a * unit, p.p, p.q * unit, p.s, p.top * unit);
@@ -264,19 +265,18 @@ rb::Result<Body> buildBody(const BodySpec& b, double unit, MassSource source) {
   if (b.dents)
     dents = Dents{b.dents->scale, b.dents->at[0] * unit, b.dents->at[1] * unit,
                   b.dents->inset * unit};
-  const BodyGrid built = buildBodyGrid(shape, dents, grid, b.mass);
-  if (built.mass.points < 2 || built.surface.bottom.empty())
+  if (!gridHasTwoLevels(shape, dents, grid))
     return rb::Error{"body.grid", "is too coarse: the body has fewer than two levels of points"};
 
   Body body;
   body.mass = b.mass;
   body.mass_source = source;
-  body.mass_properties = built.mass;
   if (source == MassSource::Continuum) {
     const Continuum continuum = continuumMassProperties(shape, dents, b.mass);
     body.mass_properties = continuum.mass;
-    body.mass_properties.points = built.mass.points;  // the grid's points, drawn
     body.mass_by_cubature = continuum.method == ContinuumMethod::Cubature;
+  } else {
+    body.mass_properties = gridMassProperties(shape, dents, grid, b.mass);
   }
   body.surface.kind = Surface::Kind::Paraboloid;
   body.surface.paraboloid = shape;
@@ -286,7 +286,8 @@ rb::Result<Body> buildBody(const BodySpec& b, double unit, MassSource source) {
   if (body.mass_properties.principal.minCoeff() <= 0)
     return rb::Error{"body.grid", "is too coarse: the inertia tensor is singular"};
   body.inertia_inv = body.inertia.inverse();
-  placePoints(body, built.surface);
+  body.dents = dents;
+  if (contact_points) placePoints(body, gridSurface(shape, dents, grid));
   return body;
 }
 
@@ -302,9 +303,25 @@ rb::Result<std::shared_ptr<const Body>> compileBody(const SceneSpec& scene) {
   const double length_unit = scene.units.length;
   if (auto e = checkBody(spec)) return *e;
   if (auto e = needPositive("units.length", length_unit)) return *e;
-  auto body = buildBody(spec, length_unit, massSourceOf(scene));
+  auto body = buildBody(spec, length_unit, massSourceOf(scene),
+                         scene.contact.model == "points");
   if (!body) return body.error();
+  const Eigen::Vector3d com = body->com_geometric;
+  body->extent = (body->surface.boxHigh() - com).cwiseAbs().cwiseMax(
+      (body->surface.boxLow() - com).cwiseAbs());
   return std::shared_ptr<const Body>(std::make_shared<Body>(std::move(body).value()));
+}
+
+GridCensus censusOf(const Body& body) {
+  if (body.surface.kind == Surface::Kind::Paraboloid)
+    return gridCensus(body.surface.paraboloid, body.dents, body.grid);
+  GridCensus census;  // the ellipsoid's points, always built (a few hundred)
+  census.top = static_cast<std::int64_t>(body.top.size());
+  census.bottom = static_cast<std::int64_t>(body.bottom.size());
+  census.points = census.top + census.bottom;
+  census.lo = body.top.lo.cwiseMin(body.bottom.lo) + body.com_geometric;
+  census.hi = body.top.hi.cwiseMax(body.bottom.hi) + body.com_geometric;
+  return census;
 }
 
 rb::Result<Model> compileRun(const SceneSpec& spec, std::shared_ptr<const Body> body) {

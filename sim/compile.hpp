@@ -25,6 +25,10 @@ MassSource massSourceOf(const SceneSpec& spec);
 /// relative to the CM, SI units.
 rb::Result<std::shared_ptr<const Body>> compileBody(const SceneSpec& spec);
 
+/// What the body's point grid holds: counts and box, walked now (the default body's 120,000
+/// columns in a few milliseconds), as only the points model keeps the points themselves.
+GridCensus censusOf(const Body& body);
+
 /// Checks the other keys and makes a run of `body`. Refuses a step that the contact stiffness
 /// makes unstable, naming the largest stable one.
 rb::Result<Model> compileRun(const SceneSpec& spec, std::shared_ptr<const Body> body);

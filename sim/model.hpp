@@ -14,6 +14,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -74,10 +75,18 @@ struct Body {
   MassSource mass_source = MassSource::Continuum;
   bool mass_by_cubature = false;       ///< continuum: by cubature, not the closed form
   Grid grid;                           ///< the point grid's spacing, m
-  ContactPoints bottom;                ///< bottom-surface points, body frame, m (blue)
+  std::optional<Dents> dents;          ///< the dents cut from the top (paraboloid), m
+  /// Contact points, only for contact.model points (the others touch the smooth surface, and
+  /// building the default body's 244,212 made most of a short run's cost, issue 27); the
+  /// drawing walks the grid itself, thinned (tasks/drawn_points), and censusOf counts it.
+  /// Bottom-surface points, body frame, m (blue).
+  ContactPoints bottom;
   /// Top-surface points, body frame, m (red). They touch the floor only when the body lies
   /// on its side or upside down (the `points` model checks them then).
   ContactPoints top;
+  /// Half-widths of the box about the CM that holds the body (Surface::boxLow/boxHigh), body
+  /// frame, m: the body's own length scale, the same on any grid.
+  Eigen::Vector3d extent = Eigen::Vector3d::Zero();
 };
 
 /// Floor contact (SPEC "Contact and friction"): normal force max(0, k·depth − c·v_n) and

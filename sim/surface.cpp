@@ -51,4 +51,15 @@ Eigen::Vector2d Surface::footprintHalf() const {
                                  : paraboloid.rimHalfWidths();
 }
 
+Eigen::Vector3d Surface::boxLow() const {
+  // The paraboloid's lowest point is its apex, z = −a, at the origin (H is positive definite).
+  return kind == Kind::Ellipsoid ? Eigen::Vector3d(-ellipsoid.semi_axes)
+                                 : Eigen::Vector3d(-footprintHalf().x(), -footprintHalf().y(), -paraboloid.a);
+}
+
+Eigen::Vector3d Surface::boxHigh() const {
+  return kind == Kind::Ellipsoid ? Eigen::Vector3d(ellipsoid.semi_axes)
+                                 : Eigen::Vector3d(footprintHalf().x(), footprintHalf().y(), paraboloid.top);
+}
+
 }  // namespace sim

@@ -38,6 +38,9 @@ struct Surface {
   Eigen::Vector2d radiiAtBottom() const;
   /// Half extents of the outline seen from above, across (x) and along (y), m.
   Eigen::Vector2d footprintHalf() const;
+  /// Corners of the box that holds the closed body, geometric frame, m.
+  Eigen::Vector3d boxLow() const;
+  Eigen::Vector3d boxHigh() const;
 };
 
 }  // namespace sim

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "sim/analysis.hpp"
+#include "sim/compile.hpp"
 #include "sim/stability.hpp"
 
 namespace tasks {
@@ -44,10 +45,12 @@ nlohmann::json analysisJson(const sim::Model& model, double spin) {
   const sim::FirstOrder first = sim::firstOrderGrowth(model);
   const sim::ContactStability stability = sim::contactStability(model);
   const double size = body.surface.footprintHalf().maxCoeff();
-  const std::size_t top = body.top.size(), bottom = body.bottom.size();
+  const sim::GridCensus census = sim::censusOf(body);
+  const auto top = static_cast<std::size_t>(census.top);
+  const auto bottom = static_cast<std::size_t>(census.bottom);
   nlohmann::json j;
   const bool grid = body.surface.kind == sim::Surface::Kind::Paraboloid;
-  j["points"] = {{"total", grid ? nlohmann::json(m.points) : nlohmann::json(nullptr)},
+  j["points"] = {{"total", grid ? nlohmann::json(census.points) : nlohmann::json(nullptr)},
                  {"top", top},
                  {"bottom", bottom},
                  {"surface", top + bottom}};

@@ -163,7 +163,7 @@ Trace reference(const BenchScene& scene, const sim::SceneSpec& base, const std::
 std::vector<std::string> modelsOf(const BenchScene& scene, const BenchOptions& options) {
   if (!options.models.empty()) return options.models;
   std::vector<std::string> models;
-  const std::size_t bottom = scene.body->bottom.size();
+  const auto bottom = static_cast<std::size_t>(sim::censusOf(*scene.body).bottom);
   if (scene.spec.contact.model == "points" || bottom <= kMaxBenchPoints) models.push_back("points");
   for (const char* m : {"smooth", "rolling", "auto"}) models.push_back(m);
   if (bottom > kMaxBenchPoints && scene.spec.contact.model != "points" && options.note)
@@ -339,7 +339,7 @@ std::string benchCsvLine(const BenchRow& r) {
       csvField(r.scene), csvField(r.model), csvField(r.integrator), number(r.dt, 6),
       number(r.tolerance, 3), std::to_string(r.steps), std::to_string(r.rejected),
       csvField(r.status), number(r.cost_median, 6), number(r.cost_min, 6), number(r.cost_max, 6),
-      number(r.us_per_step, 6), number(r.reversal, 9), number(r.reversal_error, 6),
+      number(r.us_per_step, 6), number(r.reversal), number(r.reversal_error, 6),
       number(r.reversal_error_rolling, 6), number(r.spin_error, 6),
       number(r.spin_error_rolling, 6), number(r.energy_drift, 6), number(r.switches, 6)};
   std::string line;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "sim/compile.hpp"
 #include "util/assets.hpp"
 #include <cstdio>
 
@@ -72,8 +73,10 @@ rb::Result<LoadedScene> applyOverrides(scene::Loaded scene, const Overrides& o) 
 
 void describeModel(const sim::Model& model, const std::string& scene) {
   const sim::Body& body = *model.body;
+  const sim::GridCensus census = sim::censusOf(body);
   std::fprintf(stderr, "%s: %zu bottom and %zu top points, mass %g kg, contact %s",
-               scene.c_str(), body.bottom.size(), body.top.size(), body.mass,
+               scene.c_str(), static_cast<std::size_t>(census.bottom),
+               static_cast<std::size_t>(census.top), body.mass,
                std::string(rb::nameOf(model.contact.model)).c_str());
   if (model.contact.model != sim::ContactModel::Rolling)
     std::fprintf(stderr, " (k %g N/m, c %g N s/m, mu %g)", model.contact.stiffness,

@@ -1,6 +1,7 @@
 // The body: the seed's grid, mass properties, principal axes.
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <random>
 
 #include "support.hpp"
@@ -116,4 +117,138 @@ TEST(MassProperties, MisalignmentOfTheDefaultBodyAndItsMirror) {
   spec.body.dents->at[0] *= -1;
   const double mirrored = build(spec).body->mass_properties.misalignment_deg;
   EXPECT_NEAR(mirrored, -angle, 1e-9);
+}
+
+namespace {
+
+// The grid by its definition, point by point (seed appendix): column (i + ½)dx, (j + ½)dy holds
+// z_k = top − k dz for k = 0 … levels while z_k ≥ the bottom, skipping z_k ≥ the dents.
+struct PointByPoint {
+  std::int64_t points = 0;
+  std::vector<Eigen::Vector3d> top, bottom;
+};
+PointByPoint walkPointByPoint(const sim::Paraboloid& shape, const std::optional<sim::Dents>& dents,
+                              const sim::Grid& grid) {
+  const Eigen::Vector2d half = shape.rimHalfWidths();
+  const int nx = static_cast<int>(std::floor(half.x() / grid.dx + 0.5));
+  const int ny = static_cast<int>(std::floor(half.y() / grid.dy + 0.5));
+  const int nz = static_cast<int>(std::floor((shape.top + shape.a) / grid.dz + 1e-9));
+  PointByPoint out;
+  for (int j = -ny; j < ny; ++j)
+    for (int i = -nx; i < nx; ++i) {
+      const double x = (i + 0.5) * grid.dx, y = (j + 0.5) * grid.dy;
+      std::vector<double> zs;
+      for (int k = 0; k <= nz; ++k) {
+        const double z = shape.top - k * grid.dz;
+        if (z < shape.bottom(x, y)) break;
+        if (dents && z >= dents->surface(shape, x, y)) continue;
+        zs.push_back(z);
+      }
+      out.points += static_cast<std::int64_t>(zs.size());
+      if (!zs.empty()) out.top.emplace_back(x, y, zs.front());
+      if (zs.size() > 1) out.bottom.emplace_back(x, y, zs.back());
+    }
+  return out;
+}
+
+}  // namespace
+
+// Issue 27: the grid's levels come in closed form, one step a column, so that only the points
+// model pays for its points. The walk must give exactly the points of the definition: same
+// count, same surface points bit for bit, same order, on grids whose levels fall on the
+// bottom and dent surfaces awkwardly (spacings that are not fractions of the height).
+TEST(GridWalk, ClosedFormLevelsAreThePointByPointGrid) {
+  const sim::Paraboloid shape(0.01, 0.5, 0.0, 0.03, 0.005);
+  const sim::Paraboloid tilted(0.01, 0.5, 0.002, 0.03, 0.006);
+  const sim::Dents dents{0.45, 0.0073, 0.045, 0.001};
+  // Round numbers whose levels land on the surfaces: the division's guess is one level off
+  // in both directions for some of their columns (found by search; 8 + 8 on the bottom, 24 and
+  // 8 on the dents), which the exact comparisons must put right.
+  const sim::Paraboloid round(1.0, 2.0, 0.0, 2.0, 0.5);
+  const sim::Dents round_dents{1.0, 0.0, 0.5, 0.5};
+  const sim::Grid round_grid{0.2, 0.2, 0.01};
+  struct Case {
+    sim::Paraboloid body;
+    std::vector<sim::Grid> grids;
+  };
+  const std::vector<sim::Grid> fine = {sim::Grid{1e-3, 2e-3, 5e-5}, sim::Grid{7e-4, 1.3e-3, 3.3e-4},
+                                       sim::Grid{2.5e-4, 2.5e-4, 2.5e-4}, sim::Grid{3e-3, 3e-3, 0.02}};
+  int cases = 0;
+  for (const Case& c : {Case{shape, fine}, Case{tilted, fine}, Case{round, {round_grid}}})
+    for (const std::optional<sim::Dents>& d : {std::optional<sim::Dents>(), std::optional(dents),
+                                               std::optional(round_dents)})
+      for (const sim::Grid& grid : c.grids) {
+        const sim::Paraboloid& body = c.body;
+        const PointByPoint expected = walkPointByPoint(body, d, grid);
+        const sim::GridCensus census = sim::gridCensus(body, d, grid);
+        const sim::SurfacePoints surface = sim::gridSurface(body, d, grid);
+        EXPECT_EQ(census.points, expected.points);
+        EXPECT_EQ(census.top, static_cast<std::int64_t>(expected.top.size()));
+        EXPECT_EQ(census.bottom, static_cast<std::int64_t>(expected.bottom.size()));
+        EXPECT_EQ(surface.top, expected.top);
+        EXPECT_EQ(surface.bottom, expected.bottom);
+        EXPECT_EQ(sim::gridHasTwoLevels(body, d, grid), !expected.bottom.empty());
+        ++cases;
+      }
+  EXPECT_EQ(cases, 3 * (2 * 4 + 1));
+}
+
+// A thinned walk keeps exactly the columns whose indices, counted out from the axes, are
+// multiples of the stride: the drawing's points, made without the full grid.
+TEST(GridWalk, AStrideKeepsEveryKthColumnFromTheAxes) {
+  const sim::Paraboloid shape(0.01, 0.5, 0.0, 0.03, 0.005);
+  const sim::Grid grid{2.5e-4, 2.5e-4, 2.5e-4};
+  const sim::SurfacePoints all = sim::gridSurface(shape, std::nullopt, grid);
+  const sim::SurfacePoints third = sim::gridSurface(shape, std::nullopt, grid, 3);
+  std::vector<Eigen::Vector3d> kept;
+  for (const Eigen::Vector3d& p : all.top) {
+    const long i = std::lround(std::abs(p.x()) / grid.dx - 0.5);
+    const long j = std::lround(std::abs(p.y()) / grid.dy - 0.5);
+    if (i % 3 == 0 && j % 3 == 0) kept.push_back(p);
+  }
+  EXPECT_EQ(third.top, kept);
+  EXPECT_GT(kept.size(), 100u);
+}
+
+// Issue 27: the grid is the drawing's (and the points model's), so a run of any other model
+// is the same, byte for byte, on a fine grid and a coarse one: nothing of the physics may
+// depend on it (the adaptive steps' length scale is the body's box, not its points').
+TEST(GridWalk, OnlyThePointsModelDependsOnTheGrid) {
+  const std::string body = R"(
+units: {length: 0.01}
+body:
+  shape: paraboloid
+  paraboloid: {a: 1.0, p: 0.5, q: 0.0, s: 0.03, top: 0.5}
+  dents: {scale: 0.45, at: [0.73, 4.50], inset: 0.1}
+  mass: 0.059
+)";
+  const std::string start = "initial: {spin: -5.0, tilt: [0.5, 0.5]}\n";
+  const std::string runs[] = {
+      "contact: {model: rolling}\nsimulation: {integrator: rk4, dt: 5.0e-4, duration: 0.5}\n",
+      "contact: {model: rolling}\nsimulation: {tolerance: 1.0e-8, duration: 0.5}\n",
+      "contact: {model: smooth, stiffness: 2.0e4, damping: 2, friction: 0.5}\n"
+      "simulation: {dt: 2.0e-5, duration: 0.1}\n",
+      "contact: {model: auto, stiffness: 2.0e4, damping: 2, friction: 0.5}\n"
+      "simulation: {tolerance: 1.0e-7, duration: 0.3}\n"};
+  for (const std::string& run : runs) {
+    SCOPED_TRACE(run);
+    const auto on = [&](const char* h) {
+      const std::string grid = std::string("  grid: {dx: ") + h + ", dy: " + h + ", dz: " + h + "}\n";
+      return record(build(parse(body + grid + start + run)), 1e-3);
+    };
+    const Recorded fine = on("0.025"), coarse = on("0.2");
+    ASSERT_EQ(fine.samples.size(), coarse.samples.size());
+    ASSERT_GT(fine.samples.size(), 90u);
+    for (std::size_t i = 0; i < fine.samples.size(); ++i) {
+      const sim::Telemetry& a = fine.samples[i];
+      const sim::Telemetry& b = coarse.samples[i];
+      ASSERT_EQ(a.t, b.t) << i;
+      ASSERT_EQ(a.energy, b.energy) << "at t = " << a.t;
+      ASSERT_EQ(a.spin, b.spin) << "at t = " << a.t;
+      ASSERT_EQ(a.x_world, b.x_world) << "at t = " << a.t;
+      ASSERT_EQ(a.L_world, b.L_world) << "at t = " << a.t;
+      ASSERT_EQ(a.orientation.coeffs(), b.orientation.coeffs()) << "at t = " << a.t;
+      ASSERT_EQ(a.normal_force, b.normal_force) << "at t = " << a.t;
+    }
+  }
 }

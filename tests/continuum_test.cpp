@@ -88,7 +88,7 @@ TEST(Continuum, DentsThroughTheBottomOrMeetingTakeTheCubature) {
     std::vector<double> errors;
     for (double h : {0.05, 0.025, 0.0125}) {
       const sim::Grid grid{h * kCm, h * kCm, h * kCm};
-      const sim::MassProperties g = sim::buildBodyGrid(defaultShape(), dents, grid, 0.059).mass;
+      const sim::MassProperties g = sim::gridMassProperties(defaultShape(), dents, grid, 0.059);
       errors.push_back(difference(g, c.mass, 10 * kCm));
     }
     // First order: each halving halves the error (1.6–2.5 allows for the rim's irregular
@@ -124,7 +124,7 @@ TEST(Continuum, GridSumsConvergeAtFirstOrderToTheDerivedCoefficient) {
   std::vector<double> inertia_errors;
   for (double h : {0.05, 0.025, 0.0125}) {
     const sim::Grid grid{h * kCm, h * kCm, h * kCm};
-    const sim::MassProperties g = sim::buildBodyGrid(shape, dents, grid, 0.059).mass;
+    const sim::MassProperties g = sim::gridMassProperties(shape, dents, grid, 0.059);
     inertia_errors.push_back((g.inertia - c.inertia).cwiseAbs().maxCoeff() / c.inertia.maxCoeff());
     if (h == 0.0125) {
       EXPECT_NEAR((g.com.z() - c.com.z()) / grid.dz / coefficient, 1, 0.01);
