@@ -58,7 +58,8 @@ SimulateResult simulate(const sim::Model& model, const SimulateOptions& options)
 /// The sidecar X.csv.json: what the CSV is (program, scene, columns and units, the model) and
 /// what the run found.
 nlohmann::json telemetrySidecar(const std::string& scene, const sim::Model& model, double rate,
-                                const sim::RunSummary& run, std::int64_t rows);
+                                const sim::RunSummary& run, std::int64_t rows,
+                                const nlohmann::json& check = nullptr);
 
 /// The CSV and its sidecar as a run goes: each appears whole at commit() or not at all (no
 /// sidecar beside a device such as /dev/stdout, even when the shell sends it to a file).
@@ -69,8 +70,9 @@ class TelemetryWriter {
   void row(const sim::Telemetry& sample);
   std::int64_t rows() const { return rows_; }
   /// Writes the sidecar and puts both files in place.
+  /// `check`: the sidecar's "check" (checkJson), or null.
   rb::Status commit(const std::string& scene, const sim::Model& model, double rate,
-                    const sim::RunSummary& run);
+                    const sim::RunSummary& run, const nlohmann::json& check = nullptr);
 
  private:
   TelemetryWriter(AtomicOutput csv, std::optional<AtomicOutput> meta)
@@ -84,6 +86,7 @@ class TelemetryWriter {
 /// (no sidecar for a device such as /dev/stdout).
 rb::Status writeTelemetry(const std::string& path, const std::string& scene,
                           const sim::Model& model, double rate, const sim::RunSummary& run,
-                          const std::vector<sim::Telemetry>& samples);
+                          const std::vector<sim::Telemetry>& samples,
+                          const nlohmann::json& check = nullptr);
 
 }  // namespace tasks

@@ -154,7 +154,7 @@ std::string sweepLine(const SweepRow& row) {
   line.append(",").append(number(row.final_spin));
   line.append(",").append(number(row.max_tilt_deg));
   line.append(",").append(number(row.energy_lost));
-  line.append(",").append(fixed(row.wall_s, 6));
+  line.append(",").append(fixed(row.wall_s, 6));  // a measurement: microseconds, no more
   return line;
 }
 

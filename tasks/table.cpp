@@ -27,6 +27,20 @@ nlohmann::json columnsJson(std::span<const Column> columns) {
   return out;
 }
 
+char* writeNumber(char* at, double value) {
+  if (!std::isfinite(value)) return at;
+  // General: fixed when the exponent is from −4 up to the digits' count, else scientific, as
+  // %g chooses (the plain format would write a large whole number with all of its digits, not
+  // the shortest). + 0.0: −0 becomes 0.
+  return std::to_chars(at, at + kNumberChars, value + 0.0, std::chars_format::general).ptr;
+}
+
+std::string number(std::optional<double> value) {
+  if (!value) return "";
+  char text[kNumberChars];
+  return std::string(text, writeNumber(text, *value));
+}
+
 std::string number(std::optional<double> value, int digits) {
   if (!value || !std::isfinite(*value)) return "";
   char text[40];

@@ -26,9 +26,21 @@ std::string csvHeader(std::span<const Column> columns);
 /// The columns as the sidecars list them: [{"name": …, "unit": …}, …].
 nlohmann::json columnsJson(std::span<const Column> columns);
 
-/// A number as the tables write it: `digits` significant digits, shortest form (%g-like, no
-/// "-0", no locale); empty for none or a non-finite value (what CSV readers take as missing).
-std::string number(std::optional<double> value, int digits = 10);
+/// Room writeNumber needs: the longest shortest form of a double is 24 characters
+/// ("-2.2250738585072014e-308").
+inline constexpr std::size_t kNumberChars = 32;
+
+/// Writes the shortest text that reads back as exactly `value` (std::to_chars: Ryu's algorithm
+/// in libstdc++, no locale, no allocation), never "-0", at `at`; returns its end. A
+/// non-finite value writes nothing (what CSV readers take as missing). JSON (nlohmann's dump)
+/// writes the same shortest round-trip digits, so a number reads the same in every output.
+char* writeNumber(char* at, double value);
+
+/// A number as the tables write it: writeNumber's text; empty for none or a non-finite value.
+std::string number(std::optional<double> value);
+/// Rounded to `digits` significant digits, shortest form (%g-like, no "-0", no locale): for
+/// measurements (timings) whose further digits are noise.
+std::string number(std::optional<double> value, int digits);
 /// A number with `decimals` digits after the point (%.*f-like); empty as for number().
 std::string fixed(std::optional<double> value, int decimals);
 

@@ -1,0 +1,106 @@
+// The tables' numbers (issue 27): every number the CSV writes reads back as exactly the double
+// that was computed, in the shortest text that does, and the same text as the JSON sidecars.
+#include <gtest/gtest.h>
+
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+
+#include "support.hpp"
+#include "tasks/simulate.hpp"
+#include "tasks/table.hpp"
+
+namespace {
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> fields;
+  std::stringstream in(line);
+  for (std::string field; std::getline(in, field, ',');) fields.push_back(field);
+  return fields;
+}
+
+}  // namespace
+
+// Doubles of every magnitude, and the awkward ones: subnormals, the extremes, −0, and values
+// one ulp apart (which a fixed count of digits below 17 cannot tell apart).
+TEST(Numbers, EveryDoubleReadsBackExactly) {
+  std::mt19937_64 bits(27);
+  std::vector<double> values = {0.0, -0.0, 1.0, 0.1, 1e-4, 2.3158, -4.999619237890977,
+                                std::numeric_limits<double>::min(),
+                                std::numeric_limits<double>::denorm_min(),
+                                std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
+                                std::nextafter(0.1, 1.0), std::nextafter(2.3158, 0.0)};
+  for (int i = 0; i < 50000; ++i) {
+    double v;
+    const std::uint64_t b = bits();
+    std::memcpy(&v, &b, sizeof v);
+    if (std::isfinite(v)) values.push_back(v);
+  }
+  for (double v : values) {
+    const std::string text = tasks::number(v);
+    ASSERT_EQ(std::strtod(text.c_str(), nullptr), v) << text;
+    ASSERT_NE(text, "-0");
+    // The shortest: it has no more significant digits than the fewest that %.*g needs to
+    // read back as v.
+    int needed = 1;
+    for (char fewer[40];; ++needed) {
+      std::snprintf(fewer, sizeof fewer, "%.*g", needed, v);
+      if (std::strtod(fewer, nullptr) == v) break;
+    }
+    std::string significant;
+    for (char c : text.substr(0, text.find('e')))
+      if (std::isdigit(static_cast<unsigned char>(c))) significant += c;
+    significant.erase(0, significant.find_first_not_of('0'));
+    significant.erase(significant.find_last_not_of('0') + 1);
+    ASSERT_LE(static_cast<int>(significant.size()), std::max(needed, 1)) << text;
+  }
+  EXPECT_EQ(tasks::number(std::nullopt), "");
+  EXPECT_EQ(tasks::number(std::numeric_limits<double>::quiet_NaN()), "");
+  EXPECT_EQ(tasks::number(-0.0), "0");
+  EXPECT_EQ(tasks::number(0.1), "0.1");
+  EXPECT_EQ(tasks::number(2.5e-5), "2.5e-05");
+}
+
+// A telemetry row is the sample, exactly: each column read back with strtod equals the value
+// the run computed, as the JSON sidecars' numbers do.
+TEST(Numbers, TelemetryRowsAreTheSamplesExactly) {
+  using namespace testing_support;
+  sim::SceneSpec spec = parse(kStableScene);
+  spec.simulation.duration = 0.05;
+  const Recorded run = record(build(spec), 1e-3);
+  ASSERT_GT(run.samples.size(), 40u);
+  const auto header = split(tasks::telemetryHeader().substr(0, tasks::telemetryHeader().size() - 1));
+  for (const sim::Telemetry& s : run.samples) {
+    std::ostringstream out;
+    tasks::writeTelemetryRow(out, s);
+    std::string line = out.str();
+    ASSERT_EQ(line.back(), '\n');
+    line.pop_back();
+    const auto fields = split(line);
+    ASSERT_EQ(fields.size(), header.size());
+    const Eigen::Quaterniond q = tasks::attitude(s);
+    const std::map<std::string, double> expected = {
+        {"t", s.t}, {"spin", s.spin}, {"energy", s.energy}, {"kinetic", s.kinetic},
+        {"potential", s.potential}, {"elastic", s.elastic}, {"tilt_deg", s.tilt_deg},
+        {"x", s.x_world.x()}, {"y", s.x_world.y()}, {"z", s.x_world.z()}, {"wx", s.w_world.x()},
+        {"wy", s.w_world.y()}, {"wz", s.w_world.z()}, {"Lz", s.L_world.z()},
+        {"contacts", s.contacts}, {"normal_force", s.normal_force}, {"qw", q.w()},
+        {"qx", q.x()}, {"qy", q.y()}, {"qz", q.z()}};
+    for (std::size_t i = 0; i < header.size(); ++i) {
+      if (header[i] == "mode") {
+        EXPECT_EQ(fields[i], std::string(rb::nameOf(s.mode)));
+        continue;
+      }
+      const double value = expected.at(header[i]);
+      ASSERT_EQ(std::strtod(fields[i].c_str(), nullptr), value) << header[i] << " = " << fields[i];
+      // The sidecars' JSON (nlohmann's dump) reads back as the same double.
+      ASSERT_EQ(nlohmann::json::parse(nlohmann::json(value).dump()).get<double>(), value);
+    }
+  }
+}
