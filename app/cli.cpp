@@ -47,6 +47,9 @@ void defineSimulate(CLI::App& c, Cli& cli) {
                "Telemetry samples per simulated second, at exact times (default 500)");
   c.add_option("--plot", s.plot_dir,
                "Folder for the figures: energy, spin, tilt and height, normal force (PNG)");
+  c.add_flag("--check", s.check,
+             "Also run at half the step (or a hundredth of the tolerance) and report the "
+             "estimated error of each reversal time and of n(t)");
   c.add_flag("-q,--quiet", s.quiet, "No summary and no progress bar");
   c.add_flag("-v,--verbose", s.verbose, "Also describe the model before running");
 }

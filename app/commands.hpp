@@ -43,6 +43,7 @@ struct SimulateArgs {
   std::optional<double> duration, dt, tolerance, rate, spin;
   std::optional<std::string> integrator;
   std::string plot_dir;  ///< non-empty: write the four figures (PNG) there
+  bool check = false;    ///< also estimate the run's error (tasks/check.hpp)
   bool quiet = false;
   bool verbose = false;
 };

@@ -15,6 +15,7 @@
 #include "tasks/scene_args.hpp"
 #include "sim/analysis.hpp"
 #include "sim/rollout.hpp"
+#include "tasks/check.hpp"
 #include "tasks/simulate.hpp"
 
 namespace app {
@@ -91,6 +92,26 @@ void printSummary(std::FILE* out, const SimulateArgs& args, const sim::Model& mo
                run.wall_s, run.wall_s / simulated,
                1e6 * run.wall_s / static_cast<double>(std::max<std::int64_t>(1, run.steps)));
   std::fprintf(out, "telemetry       %s (%lld rows)\n", csv.c_str(), static_cast<long long>(rows));
+}
+
+// The estimated errors of `run` (simulate --check).
+void printCheck(std::FILE* out, const tasks::RunCheck& check, const sim::RunSummary& run) {
+  std::fprintf(out, "check           against %s; %s%s\n", check.setting.c_str(),
+               check.method.c_str(), check.completed ? "" : " (the tighter run stopped early)");
+  for (std::size_t i = 0; i < check.reversal_errors.size(); ++i) {
+    if (check.reversal_errors[i])
+      std::fprintf(out, "                reversal %zu at %.6f s: error about %.2g s\n", i + 1,
+                   run.reversals[i], std::abs(*check.reversal_errors[i]));
+    else
+      std::fprintf(out, "                reversal %zu at %.6f s: the tighter run has no such "
+                        "reversal: the run is not converged\n", i + 1, run.reversals[i]);
+  }
+  if (check.tighter_reversals.size() > run.reversals.size())
+    std::fprintf(out, "                the tighter run reverses %zu times, this run %zu: the run is "
+                      "not converged\n", check.tighter_reversals.size(), run.reversals.size());
+  std::fprintf(out, "                n(t): error at most about %.2g rad/s (at t = %.4g s); the "
+                    "check cost %.2g× the run\n",
+               std::abs(check.spin_error), check.spin_error_at, check.cost_ratio);
 }
 
 // The seed's figures (6–8, 12–16) from the telemetry: energy, spin, tilt and CM height, and
@@ -193,24 +214,35 @@ int simulateCommand(const SimulateArgs& args) {
   if (args.verbose) describeModel(model, args.scene);
   Progress progress("simulate", static_cast<std::int64_t>(model.duration * rate) + 1, !args.quiet);
   std::vector<sim::Telemetry> kept;  // for the plots
+  std::vector<double> spins;          // for --check
   tasks::SimulateOptions options;
   options.rate = rate;
   options.cancelled = [] { return interruptSignal() != 0; };
   options.each = [&](const sim::Telemetry& sample) {
     writer->row(sample);
     if (!args.plot_dir.empty()) kept.push_back(sample);
+    if (args.check) spins.push_back(sample.spin);
     progress.update(writer->rows());
   };
   const tasks::SimulateResult run = tasks::simulate(model, options);
   progress.finish();
   if (run.outcome.ending != tasks::Ending::Completed) return notWritten(args, run.outcome);
-  if (auto e = writer->commit(args.scene, model, rate, run.summary); !e) return fail(e);
+  std::optional<tasks::RunCheck> check;
+  if (args.check) {
+    check = tasks::checkRun(model, rate, run.summary, spins, options.cancelled);
+    if (!check) return notWritten(args, {tasks::Ending::Interrupted, {}, "", model.duration});
+  }
+  if (auto e = writer->commit(args.scene, model, rate, run.summary,
+                              check ? tasks::checkJson(*check) : nlohmann::json());
+      !e)
+    return fail(e);
   if (!args.plot_dir.empty())
     if (auto e = writePlots(args.plot_dir, args.scene, kept); !e) return fail(e);
   record(outputsOf(args, csv));
   if (args.quiet) return kOk;
   std::FILE* report = to_stdout ? stderr : stdout;
   printSummary(report, args, model, run.summary, to_stdout ? "standard output" : csv, run.rows);
+  if (check) printCheck(report, *check, run.summary);
   if (!args.plot_dir.empty())
     std::fprintf(report, "plots           %s/%s-{energy,spin,tilt,normal}.png\n",
                  args.plot_dir.c_str(), std::filesystem::path(args.scene).stem().string().c_str());

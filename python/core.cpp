@@ -17,6 +17,7 @@
 #include "tasks/manifest.hpp"
 #include "tasks/run_json.hpp"
 #include "tasks/player_data.hpp"
+#include "tasks/check.hpp"
 #include "tasks/simulate.hpp"
 #include "tasks/sweep.hpp"
 #include "tasks/sweep_jobs.hpp"
@@ -34,6 +35,7 @@ struct Run {
   double rate = tasks::kDefaultRate;
   std::vector<sim::Telemetry> samples;
   sim::RunSummary summary;
+  nlohmann::json check;  ///< checkJson, or null without check=True
 };
 
 // One column of the samples as a NumPy array (a copy: the arrays outlive the run).
@@ -78,7 +80,7 @@ py::dict columns(const Run& run) {
   return d;
 }
 
-std::shared_ptr<Run> simulate(const LoadedScene& loaded, double rate) {
+std::shared_ptr<Run> simulate(const LoadedScene& loaded, double rate, bool check) {
   const sim::Model& model = loaded.value.model;
   if (auto ok = tasks::checkRate(rate, model.duration); !ok) raise(ok.error());
   auto run = std::make_shared<Run>();
@@ -100,6 +102,14 @@ std::shared_ptr<Run> simulate(const LoadedScene& loaded, double rate) {
                        result.outcome.stop->t, result.outcome.stop->step);
     PyErr_SetObject(cls.ptr(), e.ptr());
     throw py::error_already_set();
+  }
+  if (check) {
+    std::vector<double> spins;
+    for (const sim::Telemetry& s : run->samples) spins.push_back(s.spin);
+    const auto checked = interruptibleHere([&](const std::function<bool()>& cancelled) {
+      return tasks::checkRun(model, rate, run->summary, spins, cancelled);
+    });
+    if (checked) run->check = tasks::checkJson(*checked);
   }
   return run;
 }
@@ -201,11 +211,12 @@ PYBIND11_MODULE(_core, m) {
   py::class_<Run, std::shared_ptr<Run>>(m, "Run")
       .def("columns", &columns)
       .def("result", [](const Run& r) { return toPython(tasks::runJson(r.summary)); })
+      .def("check", [](const Run& r) { return toPython(r.check); })
       .def("model", [](const Run& r) { return toPython(tasks::modelJson(r.model)); })
       .def("sidecar",
            [](const Run& r) {
              return toPython(tasks::telemetrySidecar(r.scene, r.model, r.rate, r.summary,
-                                                     static_cast<std::int64_t>(r.samples.size())));
+                                                     static_cast<std::int64_t>(r.samples.size()), r.check));
            })
       .def_readonly("scene", &Run::scene)
       .def_readonly("rate", &Run::rate)
@@ -213,7 +224,7 @@ PYBIND11_MODULE(_core, m) {
         rb::Status written;
         {
           py::gil_scoped_release release;
-          written = tasks::writeTelemetry(path, r.scene, r.model, r.rate, r.summary, r.samples);
+          written = tasks::writeTelemetry(path, r.scene, r.model, r.rate, r.summary, r.samples, r.check);
           // Listed in the folder's manifest, as the command line lists it (a failure to list
           // loses nothing: the report then places the file by its name).
           if (written)
@@ -265,7 +276,7 @@ PYBIND11_MODULE(_core, m) {
     std::sort(times.begin(), times.end());
     return times[times.size() / 2];
   }, py::arg("scene"), py::arg("rate"), py::arg("repeats"));
-  m.def("simulate", &simulate, py::arg("scene"), py::arg("rate"));
+  m.def("simulate", &simulate, py::arg("scene"), py::arg("rate"), py::arg("check") = false);
   m.def("analyze", [](const LoadedScene& loaded, std::optional<double> spin) {
     const sim::Model& model = loaded.value.model;
     return toPython(tasks::analysisJson(model, tasks::analysisSpin(model, spin)));

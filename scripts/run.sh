@@ -27,7 +27,7 @@ echo "== telemetry and analysis"
 for scene in rattleback seed-preferred seed-reversed kane-levinson kane-levinson-long; do
   $rb analyze "scenes/$scene.yaml" -o "out/$scene-analysis.txt"
   $rb analyze "scenes/$scene.yaml" --json -o "out/$scene-analysis.json"
-  $rb simulate "scenes/$scene.yaml" -o "out/$scene.csv" --plot out -q
+  $rb simulate "scenes/$scene.yaml" -o "out/$scene.csv" --plot out --check -q
 done
 
 echo "== sweeps on every core: reversal time against spin and drag, and against the dents"

@@ -115,6 +115,22 @@ std::string reversalOf(const nlohmann::json& result) {
   return "no reversal in " + number(field(result, "simulated_s"), "%g") + " s";
 }
 
+// The run's estimated errors (simulate --check, its sidecar's "check"); empty without one.
+std::string checkOf(const nlohmann::json& check) {
+  if (!check.is_object()) return "";
+  std::string text = "<br>estimated error (<code>--check</code>, against " +
+                     escape(stringOr(field(check, "setting"), "a tighter run")) + "): ";
+  const nlohmann::json& errors = field(check, "reversal_errors_s");
+  if (errors.is_array() && !errors.empty()) {
+    text += errors[0].is_number()
+                ? "first reversal ±" + number(std::abs(errors[0].get<double>()), "%.2g") + " s, "
+                : "first reversal <b>not converged</b> (the tighter run has none), ";
+  }
+  const nlohmann::json& spin = field(check, "spin_error_rad_s");
+  return text + "n(t) ±" + (spin.is_number() ? number(std::abs(spin.get<double>()), "%.2g") : "–") +
+         " rad/s";
+}
+
 // What simulate measured (its sidecar's result), when its run was spun counter-clockwise
 // (`ccw`) or clockwise as a video was; empty otherwise.
 std::string measuredAs(const std::optional<nlohmann::json>& run, bool ccw) {
@@ -216,6 +232,7 @@ void writeAnalysis(std::ostream& out, const SceneFiles& f,
         << "<br>final spin " << number(field(r, "final_spin"), "%+.3f") << " rad/s<br>energy "
         << number(field(field(r, "energy_j"), "initial"), "%.4g") << " J → "
         << number(field(field(r, "energy_j"), "final"), "%.4g") << " J";
+    out << checkOf(field(*run, "check"));
     if (f.has(".csv")) out << "<br><a href=\"" << escape(f.at(".csv")) << "\">telemetry (CSV)</a>";
   }
   out << "</td></tr></table>\n";

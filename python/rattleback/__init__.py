@@ -219,6 +219,13 @@ class Run:
         """Samples per simulated second."""
         return self._run.rate
 
+    @property
+    def check(self) -> Optional[dict]:
+        """The estimated errors of the run (``simulate(check=True)``): the sidecar's ``check``
+        (``reversal_errors_s``, ``spin_error_rad_s``, the ``setting`` compared with, …); None
+        without a check."""
+        return self._run.check()
+
     def sidecar(self) -> dict:
         """The sidecar the command line writes beside its CSV, as a dict."""
         return self._run.sidecar()
@@ -242,7 +249,7 @@ class Run:
 def simulate(scene: SceneLike, *, rate: float = _core.default_rate,
              duration: Optional[float] = None, spin: Optional[float] = None,
              dt: Optional[float] = None, tolerance: Optional[float] = None,
-             integrator: Optional[str] = None) -> Run:
+             integrator: Optional[str] = None, check: bool = False) -> Run:
     """Runs the scene, sampled at ``rate`` samples per simulated second (t_k = k / rate, and
     the end), as ``rattleback simulate`` does.
 
@@ -254,6 +261,8 @@ def simulate(scene: SceneLike, *, rate: float = _core.default_rate,
         dt: a fixed step, s (replaces the scene's dt or tolerance).
         tolerance: adaptive steps (dopri5) to this error per step.
         integrator: ``euler``, ``symplectic``, ``rk4`` or ``dopri5``.
+        check: also run at half the step (or a hundredth of the tolerance) and estimate the
+            run's errors, as ``simulate --check`` does: :attr:`Run.check`.
 
     Raises:
         SceneError: the scene or an argument cannot be used.
@@ -262,7 +271,7 @@ def simulate(scene: SceneLike, *, rate: float = _core.default_rate,
     """
     loaded = _scene(scene)._load(duration=duration, spin=spin, dt=dt, tolerance=tolerance,
                                  integrator=integrator)
-    return Run(_core.simulate(loaded, float(rate)))
+    return Run(_core.simulate(loaded, float(rate), bool(check)))
 
 
 def analyze(scene: SceneLike, *, spin: Optional[float] = None) -> dict:
