@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace scene {
@@ -60,6 +61,19 @@ inline void put(YAML::Node node, const KeyPath& path, std::size_t depth, const Y
   }
   if (!node[part].IsMap()) node[part] = YAML::Node(YAML::NodeType::Map);
   put(node[part], path, depth + 1, value);
+}
+
+// A step set on top of a scene (`given`: the keys set, without indices) replaces the scene's
+// tolerance, and a tolerance its step, as --dt and --tolerance do on the command line: a scene
+// has exactly one of them, and one given with the other is left for the loader to refuse.
+template <typename Keys>
+void replaceStepSetting(YAML::Node root, const Keys& given) {
+  for (const auto& [set, other] : {std::pair{"simulation.dt", "tolerance"},
+                                   std::pair{"simulation.tolerance", "dt"}}) {
+    if (given.count(set) && !given.count(std::string("simulation.") + other) &&
+        root["simulation"].IsMap())
+      root["simulation"].remove(other);
+  }
 }
 
 // The node at `path` without its index, or an undefined node.

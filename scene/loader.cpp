@@ -384,6 +384,7 @@ rb::Result<Loaded> loadWithValues(const std::string& yaml, const std::string& na
     put(root, *path, 0, value);
     places[withoutIndex(kv.key)] = place;
   }
+  replaceStepSetting(root, places);
   return loadTree(root, name, places);
 }
 

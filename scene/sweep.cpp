@@ -160,6 +160,7 @@ rb::Result<SweepScenes> SweepScenes::open(const Sweep& sweep) {
       impl->paths.push_back(*splitKey(axis.key));
       impl->places[withoutIndex(axis.key)] = axis.place;
     }
+    replaceStepSetting(impl->base, impl->places);
   } catch (const YAML::Exception& e) {
     return rb::Error{"", sweep.base + ": " + e.msg};
   }
@@ -258,6 +259,7 @@ rb::Result<Sweep> loadSweep(const std::string& path) {
       // whether the loader rejects the key itself (a bad value only refuses rows).
       YAML::Node probe = YAML::Clone(base_tree);
       put(probe, *key_path, 0, YAML::Load(axis.values.front()));
+      replaceStepSetting(probe, std::set<std::string>{withoutIndex(axis.key)});
       auto loaded = loadTree(probe, sweep.base, {{withoutIndex(axis.key), axis.place}});
       if (!loaded && loaded.error().message.find("is not a known key") != std::string::npos &&
           loaded.error().message.rfind(axis.place + ":", 0) == 0)

@@ -298,13 +298,13 @@ MassSource massSourceOf(const SceneSpec& spec) {
   return spec.contact.model == "points" ? MassSource::Grid : MassSource::Continuum;
 }
 
-rb::Result<std::shared_ptr<const Body>> compileBody(const SceneSpec& scene) {
+rb::Result<std::shared_ptr<const Body>> compileBody(const SceneSpec& scene, BodyPoints points) {
   const BodySpec& spec = scene.body;
   const double length_unit = scene.units.length;
   if (auto e = checkBody(spec)) return *e;
   if (auto e = needPositive("units.length", length_unit)) return *e;
   auto body = buildBody(spec, length_unit, massSourceOf(scene),
-                         scene.contact.model == "points");
+                         points == BodyPoints::Always || scene.contact.model == "points");
   if (!body) return body.error();
   const Eigen::Vector3d com = body->com_geometric;
   body->extent = (body->surface.boxHigh() - com).cwiseAbs().cwiseMax(

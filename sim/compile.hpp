@@ -20,10 +20,15 @@ inline constexpr double kMaxGridPoints = 2.0e8;
 /// reproduce its report) and the continuum's integrals for the others.
 MassSource massSourceOf(const SceneSpec& spec);
 
+/// Which bodies keep their contact points: those of contact.model points (the default), or
+/// every one (for a bench that runs the points model on another model's body).
+enum class BodyPoints { ForContact, Always };
+
 /// Checks the body keys and builds the shared body of `spec` (its body, units and, for the
-/// mass properties' default, contact.model): mass properties (massSourceOf), surface points
-/// relative to the CM, SI units.
-rb::Result<std::shared_ptr<const Body>> compileBody(const SceneSpec& spec);
+/// mass properties' default, contact.model): mass properties (massSourceOf), contact points
+/// relative to the CM (see BodyPoints), SI units.
+rb::Result<std::shared_ptr<const Body>> compileBody(const SceneSpec& spec,
+                                                    BodyPoints points = BodyPoints::ForContact);
 
 /// What the body's point grid holds: counts and box, walked now (the default body's 120,000
 /// columns in a few milliseconds), as only the points model keeps the points themselves.

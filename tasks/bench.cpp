@@ -261,7 +261,16 @@ rb::Result<BenchScene> loadBenchScene(const std::string& path) {
   if (!loaded) return loaded.error();
   auto model = scene::loadModel(loaded.value());
   if (!model) return model.error();
-  return BenchScene{std::filesystem::path(path).filename().string(), loaded->spec, model->body};
+  // The points model is benched on this body too (modelsOf) when its grid is small enough:
+  // the same body, mass properties and all, with its contact points.
+  std::shared_ptr<const sim::Body> body = model->body;
+  if (body->bottom.size() == 0 &&
+      sim::censusOf(*body).bottom <= static_cast<std::int64_t>(kMaxBenchPoints)) {
+    auto with_points = sim::compileBody(loaded->spec, sim::BodyPoints::Always);
+    if (!with_points) return with_points.error();
+    body = with_points.value();
+  }
+  return BenchScene{std::filesystem::path(path).filename().string(), loaded->spec, body};
 }
 
 rb::Status checkBenchOptions(const BenchOptions& o) {

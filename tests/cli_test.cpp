@@ -15,6 +15,8 @@
 #include <nlohmann/json.hpp>
 
 #include "render/image_io.hpp"
+#include "sim/compile.hpp"
+#include "tasks/bench.hpp"
 
 namespace fs = std::filesystem;
 
@@ -546,7 +548,7 @@ TEST(Cli, OptionErrorsNameTheOptionAndTheWayOut) {
                                  tempFile("x.csv").string());
   EXPECT_EQ(rate.status, 2);
   EXPECT_NE(rate.err.find("must be > 0 and at most 1e7, not 0"), std::string::npos) << rate.err;
-  const Result adaptive = rattleback("simulate " + scene("rattleback") +
+  const Result adaptive = rattleback("simulate " + scene("kane-levinson") +
                                      " --integrator dopri5 -q -o " + tempFile("x.csv").string());
   EXPECT_EQ(adaptive.status, 2);
   EXPECT_NE(adaptive.err.find("give simulation.tolerance (or --tolerance) instead of dt"),
@@ -905,23 +907,54 @@ TEST(Cli, CheckEstimatesTheRunsErrorsAndTheReportShowsThem) {
   const fs::path dir = scratchDir() / "check";
   fs::remove_all(dir);
   fs::create_directories(dir);
-  const auto run = rattleback("simulate " + scene("rattleback") + " --duration 3 --check -o " +
+  const auto run = rattleback("simulate " + scene("kane-levinson") + " --duration 3 --check -o " +
                               (dir / "run.csv").string());
   ASSERT_EQ(run.status, 0) << run.err;
-  EXPECT_NE(run.out.find("check           against rk4 at dt 0.00025 s (half the step); Richardson, order 4"),
+  EXPECT_NE(run.out.find("check           against rk4 at dt 5e-05 s (half the step); Richardson, order 4"),
             std::string::npos) << run.out;
-  EXPECT_NE(run.out.find("reversal 1 at 2.36"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("reversal 1 at 2.807"), std::string::npos) << run.out;
   const nlohmann::json sidecar = nlohmann::json::parse(std::ifstream(dir / "run.csv.json"));
   ASSERT_EQ(sidecar["check"]["reversal_errors_s"].size(), 1u);
-  // rk4 at 0.5 ms: its error is some 1e-8 s (docs/commands.md); the estimate must be that small
-  // and not zero (a check that compared the run with itself would give 0).
+  // rk4 at 0.1 ms: its error is some 1e-9 s (measured 1.2e-9 against dopri5 at 1e-12); the
+  // estimate must be that small and not zero (a check that compared the run with itself would
+  // give 0).
   const double error = sidecar["check"]["reversal_errors_s"][0];
-  EXPECT_GT(std::abs(error), 1e-10);
-  EXPECT_LT(std::abs(error), 1e-6);
+  EXPECT_GT(std::abs(error), 1e-12);
+  EXPECT_LT(std::abs(error), 1e-7);
+  // And the default scene, adaptive since issue 27, is checked at a hundredth of its tolerance.
+  const auto adaptive = rattleback("simulate " + scene("rattleback") + " --duration 3 --check -o " +
+                                   (dir / "default.csv").string());
+  EXPECT_NE(adaptive.out.find("against dopri5 at tolerance 1e-10 (a hundredth); difference from the "
+                              "tighter run"), std::string::npos) << adaptive.out;
   ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
   std::ifstream page_in(dir / "index.html");
   std::stringstream page;
   page << page_in.rdbuf();
-  EXPECT_NE(page.str().find("estimated error (<code>--check</code>, against rk4 at dt 0.00025 s"),
+  EXPECT_NE(page.str().find("estimated error (<code>--check</code>, against rk4 at dt 5e-05 s"),
             std::string::npos);
+}
+
+// Issue 27 keeps contact points only on bodies of the points model; bench runs the points model
+// on a rolling scene's body too (when its grid is small), so its body must have them, and be
+// the scene's body otherwise (the same mass properties).
+TEST(Cli, BenchRunsThePointsModelOnABodyWithItsPoints) {
+  std::ifstream in(std::string(RATTLEBACK_SOURCE_DIR) + "/scenes/rattleback.yaml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string yaml = text.str();
+  const std::string fine = "grid: {dx: 0.025, dy: 0.025, dz: 0.025}";
+  ASSERT_NE(yaml.find(fine), std::string::npos);
+  yaml.replace(yaml.find(fine), fine.size(), "grid: {dx: 0.2, dy: 0.2, dz: 0.2}");
+  const fs::path path = scratchDir() / "coarse-rolling.yaml";
+  std::ofstream(path) << yaml;
+  auto bench = tasks::loadBenchScene(path.string());
+  ASSERT_TRUE(bench) << bench.error().text();
+  const sim::GridCensus census = sim::censusOf(*bench->body);
+  ASSERT_GT(census.bottom, 0);
+  EXPECT_EQ(static_cast<std::int64_t>(bench->body->bottom.size()), census.bottom);
+  EXPECT_EQ(static_cast<std::int64_t>(bench->body->top.size()), census.top);
+  auto own = sim::compile(bench->spec);
+  ASSERT_TRUE(own);
+  EXPECT_EQ(own->body->bottom.size(), 0u);  // rolling keeps none
+  EXPECT_EQ(bench->body->inertia, own->body->inertia);
 }

@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -300,4 +301,29 @@ TEST(BadScenes, ControlCharactersInTheFileStayOnOneLine) {
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
     EXPECT_EQ(message.find('\0'), std::string::npos) << message;
   }
+}
+
+// A step set on top of a scene replaces its tolerance and the other way round, as --dt and
+// --tolerance do (the default scene has a tolerance since issue 27; Python's with_values and a
+// sweep of simulation.dt over it must still work). Both at once stay refused.
+TEST(SceneValues, AStepReplacesTheScenesToleranceAndTheOtherWayRound) {
+  const std::string adaptive = std::string(testing_support::kStableScene);
+  const std::string with_tolerance =
+      adaptive.substr(0, adaptive.find("simulation:")) +
+      "simulation: {tolerance: 1.0e-8, duration: 1.0}\nvideo: {fps: 25}\n";
+  auto stepped = scene::loadWithValues(with_tolerance, "t.yaml", {{"simulation.dt", "2.0e-5"}}, "with_values");
+  ASSERT_TRUE(stepped) << stepped.error().text();
+  EXPECT_EQ(stepped->spec.simulation.dt, 2e-5);
+  EXPECT_TRUE(std::isnan(stepped->spec.simulation.tolerance));
+  auto tolerant = scene::loadWithValues(adaptive, "s.yaml", {{"simulation.tolerance", "1.0e-7"}}, "with_values");
+  ASSERT_TRUE(tolerant) << tolerant.error().text();
+  EXPECT_EQ(tolerant->spec.simulation.tolerance, 1e-7);
+  EXPECT_TRUE(std::isnan(tolerant->spec.simulation.dt));
+  auto both = scene::loadWithValues(with_tolerance, "t.yaml",
+                                    {{"simulation.dt", "2.0e-5"}, {"simulation.tolerance", "1.0e-7"}},
+                                    "with_values");
+  ASSERT_TRUE(both) << both.error().text();
+  const auto refused = scene::loadModel(both.value());
+  ASSERT_FALSE(refused);
+  EXPECT_NE(refused.error().text().find("both given"), std::string::npos) << refused.error().text();
 }
