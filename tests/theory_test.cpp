@@ -4,10 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 #include <fstream>
 #include <sstream>
 
 #include "sim/analysis.hpp"
+#include "sim/stability.hpp"
 #include "support.hpp"
 
 using namespace testing_support;
@@ -386,4 +388,24 @@ TEST(Ellipsoid, SymplecticIsRefusedWhereTheBodyRolls) {
   auto defaulted = compile(std::regex_replace(yaml, std::regex("integrator: rk4, "), ""));
   ASSERT_TRUE(defaulted) << defaulted.error().text();
   EXPECT_EQ(defaulted->integrator, sim::Integrator::Rk4);
+}
+
+// The amplification of one step on the undamped oscillator, by the methods' known stability
+// functions (Hairer, Nørsett & Wanner I, §IV.2): explicit Euler |1 + iωh| = √(1 + (ωh)²);
+// semi-implicit Euler 1 while ωh ≤ 2 and |t/2| + √(t²/4 − 1), t = 2 − (ωh)², beyond; rk4
+// |R(iωh)| with R(z) = 1 + z + z²/2 + z³/6 + z⁴/24. 1e-12: rounding in a 2×2 matrix.
+TEST(Stability, StepAmplificationIsTheMethodsStabilityFunction) {
+  using sim::Integrator;
+  for (double x : {0.1, 1.0, 1.9, 2.1, 2.8, 3.0}) {
+    const double omega = 50, h = x / omega;
+    EXPECT_NEAR(sim::stepAmplification(Integrator::Euler, omega, 0, h), std::sqrt(1 + x * x), 1e-12);
+    const double t = 2 - x * x;
+    const double symplectic = x <= 2 ? 1.0 : std::abs(t) / 2 + std::sqrt(t * t / 4 - 1);
+    EXPECT_NEAR(sim::stepAmplification(Integrator::Symplectic, omega, 0, h), symplectic, 1e-12) << x;
+    const std::complex<double> z(0, x);
+    const double rk4 = std::abs(1.0 + z + z * z / 2.0 + z * z * z / 6.0 + z * z * z * z / 24.0);
+    EXPECT_NEAR(sim::stepAmplification(Integrator::Rk4, omega, 0, h), rk4, 1e-12) << x;
+  }
+  // Damping: explicit Euler's eigenvalues 1 − ζωh ± iωh√(1 − ζ²) have modulus² 1 − 2ζωh + (ωh)².
+  EXPECT_NEAR(sim::stepAmplification(Integrator::Euler, 50, 0.3, 0.01), std::sqrt(1 - 2 * 0.3 * 0.5 + 0.25), 1e-12);
 }
