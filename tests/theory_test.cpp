@@ -408,4 +408,9 @@ TEST(Stability, StepAmplificationIsTheMethodsStabilityFunction) {
   }
   // Damping: explicit Euler's eigenvalues 1 − ζωh ± iωh√(1 − ζ²) have modulus² 1 − 2ζωh + (ωh)².
   EXPECT_NEAR(sim::stepAmplification(Integrator::Euler, 50, 0.3, 0.01), std::sqrt(1 - 2 * 0.3 * 0.5 + 0.25), 1e-12);
+  // Tiny steps: a damped oscillator's step never amplifies (the discriminant's rounding once
+  // made the pair real and |λ| = 1 + 1e-8 at ωh = 1e-9, refusing every step above 1e-12 s).
+  for (double x : {1e-4, 1e-7, 1e-9, 1e-12})
+    for (Integrator i : {Integrator::Symplectic, Integrator::Rk4})
+      EXPECT_LE(sim::stepAmplification(i, 50, 0.1, x / 50), 1.0) << x;
 }
