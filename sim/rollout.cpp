@@ -107,6 +107,10 @@ bool Rollout::advanceTo(double t) {
 }
 
 void Rollout::stepOnce() {
+  if (hand_back_) {
+    changeMode(hand_back_->start, current_.t, hand_back_->rolling);
+    hand_back_.reset();
+  }
   const double previous_spin = spin_;
   previous_ = current_;
   if (adaptive_) {
@@ -222,26 +226,40 @@ void Rollout::locateReversal(double previous_spin, double spin) {
 // L with τ): its error is O(h⁴) for a smooth motion, below the integrators' own, and it hits
 // both ends exactly. (Slerp would interpolate the rotation at only O(h²) and ignore ω.)
 State Rollout::interpolate(double t) const {
+  // Before a switch inside the last step: the old mode's own step, from its start to where it
+  // ended before the switch cut it (issue 26: interpolating across the switch, a rolling state
+  // to a sliding one, made the samples' energy dip and recover).
+  if (previous_.t < switched_at_ && t < switched_at_ && !sameTime(t, switched_at_))
+    return hermite(previous_, packRates(ratesOf(before_switch_, previous_)), before_end_,
+                   packRates(ratesOf(before_switch_, before_end_)), t);
   if (adaptive_ && !hermite_) return adaptive_->at(t);
   if (!have_rates_) {
     rates_previous_ = packRates(ratesOf(active_, previous_));
     rates_current_ = packRates(ratesOf(active_, current_));
     have_rates_ = true;
   }
-  const double h = current_.t - previous_.t;
-  const double u = (t - previous_.t) / h;
+  return hermite(previous_, rates_previous_, current_, rates_current_, t);
+}
+
+State Rollout::hermite(const State& a, const Vector13& rates_a, const State& b,
+                       const Vector13& rates_b, double t) const {
+  const double h = b.t - a.t;
+  const double u = (t - a.t) / h;
   const double h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u);
   const double h01 = u * u * (3 - 2 * u), h11 = u * u * (u - 1);
-  const Vector13 y = h00 * packState(previous_) + h10 * h * rates_previous_ +
-                     h01 * packState(current_) + h11 * h * rates_current_;
+  const Vector13 y = h00 * packState(a) + h10 * h * rates_a + h01 * packState(b) + h11 * h * rates_b;
   State s;
   s.x_world = y.segment<3>(0);
   s.v_world = y.segment<3>(3);
   s.q.coeffs() = y.segment<4>(6);
   s.L_world = y.segment<3>(10);
   s.t = t;
-  s.step = previous_.step;
+  s.step = a.step;
   return s;
+}
+
+const Model& Rollout::modeAt(double t) const {
+  return t < switched_at_ && !sameTime(t, switched_at_) ? before_switch_ : active_;
 }
 
 State Rollout::stateAt(double t) const {
@@ -254,12 +272,13 @@ State Rollout::stateAt(double t) const {
   }
   State s = interpolate(t);
   s.q.normalize();
-  if (active_.contact.model == ContactModel::Rolling) enforceRolling(active_, s);
+  const Model& mode = modeAt(t);
+  if (mode.contact.model == ContactModel::Rolling) enforceRolling(mode, s);
   return s;
 }
 
 Telemetry Rollout::sampleAt(double t) {
-  summary_.last = telemetryOf(active_, stateAt(t));
+  summary_.last = telemetryOf(modeAt(t), stateAt(t));
   return summary_.last;
 }
 
@@ -321,9 +340,8 @@ void Rollout::switchModes() {
     locate(&RollingMargins::normal);
     locate(&RollingMargins::rim);
     State s = stateAt(t_switch);
-    active_ = modeOf(model_, ContactModel::Smooth, 0);
     stuck_for_ = 0;
-    changeMode(s, t_switch);
+    changeMode(s, t_switch, modeOf(model_, ContactModel::Smooth, 0));
     return;
   }
   if (stuck_for_ < kStickTime) return;
@@ -340,13 +358,16 @@ void Rollout::switchModes() {
     stuck_for_ = 0;  // rolling would need nearly all the friction there is: slide on
     return;
   }
-  active_ = rolling;
-  changeMode(s, current_.t);
+  hand_back_ = HandBack{rolling, s};  // at the start of the next step (stepOnce)
 }
 
 // Carries out a switch found in the last step at t_switch, from state s (already in the new
 // mode's terms): fixed steps finish the step in the new mode; adaptive ones restart there.
-void Rollout::changeMode(State s, double t_switch) {
+void Rollout::changeMode(State s, double t_switch, Model next) {
+  before_switch_ = active_;
+  before_end_ = current_;
+  active_ = std::move(next);
+  switched_at_ = t_switch;
   ++summary_.switches;
   summary_.mode_changes.push_back({t_switch, active_.contact.model});
   if (adaptive_) {

@@ -104,12 +104,18 @@ class Rollout {
   void stepOnce();
   void watch();
   State interpolate(double t) const;
+  /// The cubic Hermite interpolant between a and b with their rates (packed as the state).
+  State hermite(const State& a, const Eigen::Matrix<double, 13, 1>& rates_a, const State& b,
+                const Eigen::Matrix<double, 13, 1>& rates_b, double t) const;
   void locateReversal(double previous_spin, double spin);
   void startAuto();
   void advanceSmooth(State& s, double t_end);
   void countStuck(const State& s, double h);
   void switchModes();
-  void changeMode(State s, double t_switch);
+  void changeMode(State s, double t_switch, Model next);
+  /// The mode a time of the last step was integrated in: under auto, the one before a switch
+  /// inside the step for times before it (issue 26), else the active one.
+  const Model& modeAt(double t) const;
 
   Model model_;   ///< the run as compiled
   Model active_;  ///< the model being integrated: model_, or under auto its rolling or smooth mode
@@ -133,6 +139,17 @@ class Rollout {
   double stuck_for_ = 0;
   bool hermite_ = false;  ///< adaptive: interpolate the last step by Hermite (a switch ended it)
   std::int64_t evaluations_before_ = 0, rejected_before_ = 0, stepper_start_ = 0;
+  /// Auto: rolling takes over at the end of the last step, from this state (in rolling's
+  /// terms), when the next step starts: until then the step just ended is the sliding one it
+  /// was, sampled as such (issue 26: its samples were labelled rolling and dipped in energy).
+  struct HandBack {
+    Model rolling;
+    State start;
+  };
+  std::optional<HandBack> hand_back_;
+  Model before_switch_;  ///< auto: the mode before the last switch
+  State before_end_;     ///< and where its step ended before the switch cut it
+  double switched_at_ = -std::numeric_limits<double>::infinity();  ///< the switch's time, s
 };
 
 /// Sample times of a run of `duration` s at `rate` samples per simulated second:
