@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -103,4 +105,28 @@ TEST(Numbers, TelemetryRowsAreTheSamplesExactly) {
       ASSERT_EQ(nlohmann::json::parse(nlohmann::json(value).dump()).get<double>(), value);
     }
   }
+}
+
+// The CSV is formatted in chunks of rows on threads of their own and written in order: the
+// file is the header and every row as writeTelemetryRow writes it, in time order, across chunk
+// boundaries (10,001 rows: three chunks of 4,096 and a rest).
+TEST(Numbers, AChunkedCsvIsTheRowsInOrder) {
+  using namespace testing_support;
+  sim::SceneSpec spec = parse(kStableScene);
+  spec.simulation.duration = 0.1;
+  const sim::Model model = build(spec);
+  const Recorded run = record(model, 1e-5);
+  ASSERT_EQ(run.samples.size(), 10001u);
+  const std::string path = (std::filesystem::temp_directory_path() / "rattleback-chunked.csv").string();
+  ASSERT_TRUE(tasks::writeTelemetry(path, "s.yaml", model, 1e5, run.summary, run.samples));
+  std::ostringstream expected;
+  expected << tasks::telemetryHeader();
+  for (const sim::Telemetry& s : run.samples) tasks::writeTelemetryRow(expected, s);
+  std::ifstream in(path);
+  std::stringstream written;
+  written << in.rdbuf();
+  EXPECT_TRUE(written.str() == expected.str());
+  EXPECT_EQ(written.str().size(), expected.str().size());
+  std::filesystem::remove(path);
+  std::filesystem::remove(path + ".json");
 }
