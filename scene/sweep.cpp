@@ -17,11 +17,9 @@ namespace {
 
 constexpr std::int64_t kMaxRows = 100'000'000;
 
-struct Failure {
+struct SweepFailure {
   std::string message;
 };
-
-int lineOf(const YAML::Node& node) { return node.Mark().is_null() ? 1 : node.Mark().line + 1; }
 
 std::string flowText(const YAML::Node& node) {
   if (node.IsScalar()) return node.Scalar();
@@ -43,7 +41,7 @@ double number(const YAML::Node& node, const std::string& where, const std::strin
   double v = 0;
   if (!node.IsDefined() || !node.IsScalar() || node.Tag() == "!" ||
       !YAML::convert<double>::decode(node, v) || !std::isfinite(v))
-    throw Failure{where + " " + what + " must be a number"};
+    throw SweepFailure{where + " " + what + " must be a number"};
   return v;
 }
 
@@ -52,26 +50,26 @@ std::vector<std::string> rangeValues(const YAML::Node& spec, const std::string& 
   for (const auto& entry : spec) {
     const std::string key = entry.first.as<std::string>();
     if (key != "from" && key != "to" && key != "count" && key != "scale")
-      throw Failure{where + " has '" + key + "', not a key of a range (from, to, count, scale)"};
+      throw SweepFailure{where + " has '" + key + "', not a key of a range (from, to, count, scale)"};
   }
   const double from = number(spec["from"], where, "from");
   const double to = number(spec["to"], where, "to");
   const double count_value = number(spec["count"], where, "count");
   if (count_value != std::floor(count_value) || count_value < 1 || count_value > 1e6)
-    throw Failure{where + " count must be a whole number from 1 to 1e6"};
+    throw SweepFailure{where + " count must be a whole number from 1 to 1e6"};
   const auto count = static_cast<int>(count_value);
   std::string scale = "linear";
   if (spec["scale"]) {
-    if (!spec["scale"].IsScalar()) throw Failure{where + " scale must be linear or log"};
+    if (!spec["scale"].IsScalar()) throw SweepFailure{where + " scale must be linear or log"};
     scale = spec["scale"].Scalar();
   }
   if (scale != "linear" && scale != "log")
-    throw Failure{where + " scale must be linear or log, not '" + scale + "'"};
+    throw SweepFailure{where + " scale must be linear or log, not '" + scale + "'"};
   if (scale == "log" && !(from > 0 && to > 0))
-    throw Failure{where + " a log range needs from and to above 0 (from " + rangeValue(from) +
+    throw SweepFailure{where + " a log range needs from and to above 0 (from " + rangeValue(from) +
                   ", to " + rangeValue(to) + ")"};
   if (count == 1 && from != to)
-    throw Failure{where + " count 1 needs from = to (or give a list of one value)"};
+    throw SweepFailure{where + " count 1 needs from = to (or give a list of one value)"};
   std::vector<std::string> values;
   for (int k = 0; k < count; ++k) {
     const double f = count == 1 ? 0.0 : static_cast<double>(k) / (count - 1);
@@ -188,7 +186,7 @@ rb::Result<Sweep> loadSweep(const std::string& path) {
   auto at = [&](const YAML::Node& node) { return path + ":" + std::to_string(lineOf(node)); };
   try {
     if (!root.IsMap())
-      throw Failure{path + ":1: a sweep is a map with the keys base, vary and duration"};
+      throw SweepFailure{path + ":1: a sweep is a map with the keys base, vary and duration"};
     // (A default-constructed YAML::Node is a defined null, so presence is kept apart.)
     YAML::Node base_key, vary_key, duration_key;
     YAML::Node base_node, vary, duration;
@@ -199,25 +197,25 @@ rb::Result<Sweep> loadSweep(const std::string& path) {
       else if (key == "vary") vary_key = entry.first, vary = entry.second, has_vary = true;
       else if (key == "duration") duration_key = entry.first, duration = entry.second, has_duration = true;
       else
-        throw Failure{at(entry.first) + ": " + key +
+        throw SweepFailure{at(entry.first) + ": " + key +
                       " is not a key of a sweep (known: base, vary, duration)"};
     }
-    if (!has_base) throw Failure{path + ":1: base is required: the scene file the runs start from"};
+    if (!has_base) throw SweepFailure{path + ":1: base is required: the scene file the runs start from"};
     if (!base_node.IsScalar() || base_node.Scalar().empty())
-      throw Failure{at(base_key) + ": base must be the path of a scene file"};
+      throw SweepFailure{at(base_key) + ": base must be the path of a scene file"};
     fs::path base = base_node.Scalar();
     if (base.is_relative()) base = fs::path(path).parent_path() / base;
     sweep.base = base.lexically_normal().string();
     auto loaded_base = loadFile(sweep.base);
     if (!loaded_base)
-      throw Failure{at(base_key) + ": base: " + loaded_base.error().text()};
+      throw SweepFailure{at(base_key) + ": base: " + loaded_base.error().text()};
     if (has_duration) {
       const double d = number(duration, at(duration_key) + ":", "duration");
-      if (!(d > 0)) throw Failure{at(duration_key) + ": duration must be above 0 s"};
+      if (!(d > 0)) throw SweepFailure{at(duration_key) + ": duration must be above 0 s"};
       sweep.duration = d;
     }
     if (!has_vary || !vary.IsMap() || vary.size() == 0)
-      throw Failure{(has_vary ? at(vary_key) : path + ":1") +
+      throw SweepFailure{(has_vary ? at(vary_key) : path + ":1") +
                     ": vary must map scene keys to their values, e.g. initial.spin: [-5, 5]"};
 
     YAML::Node base_tree = YAML::LoadFile(sweep.base);
@@ -230,29 +228,29 @@ rb::Result<Sweep> loadSweep(const std::string& path) {
       const std::string where = axis.place + ": " + axis.key;
       const auto key_path = splitKey(axis.key);
       if (!key_path)
-        throw Failure{where + " is not a scene key (dotted, e.g. contact.air_drag or "
+        throw SweepFailure{where + " is not a scene key (dotted, e.g. contact.air_drag or "
                               "body.dents.at[0])"};
-      if (!keys.insert(axis.key).second) throw Failure{where + " is varied twice"};
+      if (!keys.insert(axis.key).second) throw SweepFailure{where + " is varied twice"};
       if (key_path->parts.front() == "video")
-        throw Failure{where + ": a sweep only simulates; video keys do not change a run"};
+        throw SweepFailure{where + ": a sweep only simulates; video keys do not change a run"};
       // Axes that change the compiled body: its keys, the units, and the contact model (which
       // picks the mass properties' source when the body does not name one).
       axis.body = key_path->parts.front() == "body" || key_path->parts.front() == "units" ||
                   axis.key == "contact.model";
       const YAML::Node spec = entry.second;
       if (spec.IsSequence()) {
-        if (spec.size() == 0) throw Failure{where + " has no values"};
+        if (spec.size() == 0) throw SweepFailure{where + " has no values"};
         for (const auto& value : spec) axis.values.push_back(flowText(value));
       } else if (spec.IsMap()) {
         axis.values = rangeValues(spec, where);
       } else {
-        throw Failure{where + " must be a list of values or a range {from, to, count}"};
+        throw SweepFailure{where + " must be a list of values or a range {from, to, count}"};
       }
       // An element of a list needs the list in the base scene.
       if (key_path->index) {
         const YAML::Node list = find(base_tree, *key_path);
         if (!list.IsSequence() || list.size() <= *key_path->index)
-          throw Failure{where + ": the base scene has no list " + withoutIndex(axis.key) +
+          throw SweepFailure{where + ": the base scene has no list " + withoutIndex(axis.key) +
                         " with an element " + std::to_string(*key_path->index)};
       }
       // The key must be one the scene knows: put its first value into the base and see
@@ -263,14 +261,14 @@ rb::Result<Sweep> loadSweep(const std::string& path) {
       auto loaded = loadTree(probe, sweep.base, {{withoutIndex(axis.key), axis.place}});
       if (!loaded && loaded.error().message.find("is not a known key") != std::string::npos &&
           loaded.error().message.rfind(axis.place + ":", 0) == 0)
-        throw Failure{loaded.error().message};
+        throw SweepFailure{loaded.error().message};
       runs *= static_cast<double>(axis.values.size());
       if (runs > static_cast<double>(kMaxRows))
-        throw Failure{where + ": the axes so far make " + rangeValue(runs) +
+        throw SweepFailure{where + ": the axes so far make " + rangeValue(runs) +
                       " runs; at most 1e8 in one sweep (split it)"};
       sweep.axes.push_back(std::move(axis));
     }
-  } catch (const Failure& f) {
+  } catch (const SweepFailure& f) {
     return rb::Error{"", f.message};
   } catch (const YAML::Exception& e) {
     const int line = e.mark.is_null() ? 1 : e.mark.line + 1;

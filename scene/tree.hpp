@@ -11,6 +11,11 @@
 
 namespace scene {
 
+/// The 1-based line of a node in its file (1 for a node built in code).
+inline int lineOf(const YAML::Node& node) {
+  return node.Mark().is_null() ? 1 : node.Mark().line + 1;
+}
+
 /// As loadString, from a parsed tree. `places` maps dotted keys that were set from elsewhere
 /// to where ("sweeps/x.yaml:4"): an error in such a key (or inside it) names that place.
 rb::Result<Loaded> loadTree(const YAML::Node& root, const std::string& name,
