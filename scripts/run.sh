@@ -24,11 +24,18 @@ for view in oblique above front side; do
 done
 
 echo "== telemetry and analysis"
-for scene in rattleback seed-preferred seed-reversed kane-levinson kane-levinson-long; do
-  $rb analyze "scenes/$scene.yaml" -o "out/$scene-analysis.txt"
-  $rb analyze "scenes/$scene.yaml" --json -o "out/$scene-analysis.json"
-  $rb simulate "scenes/$scene.yaml" -o "out/$scene.csv" --plot out --check -q
+# The scenes side by side (the seed's two, with their checks, take most of it); any failure fails
+# the job.
+pids=()
+for scene in seed-preferred seed-reversed rattleback kane-levinson kane-levinson-long; do
+  (
+    $rb analyze "scenes/$scene.yaml" -o "out/$scene-analysis.txt"
+    $rb analyze "scenes/$scene.yaml" --json -o "out/$scene-analysis.json"
+    $rb simulate "scenes/$scene.yaml" -o "out/$scene.csv" --plot out --check -q
+  ) &
+  pids+=($!)
 done
+for pid in "${pids[@]}"; do wait "$pid"; done
 
 echo "== sweeps on every core: reversal time against spin and drag, and against the dents"
 $rb sweep sweeps/spin-drag.yaml -o out/spin-drag.csv --plot out/spin-drag.png -q
