@@ -1,11 +1,11 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <optional>
-#include <vector>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
+#include <vector>
 
 #include "app/commands.hpp"
 #include "sim/analysis.hpp"
@@ -20,33 +20,37 @@ namespace app {
 namespace {
 
 // A value that is zero but for rounding (a symmetric body's CM at −8.5e−18 m) prints as 0.
-double clean(double v, double scale) { return std::abs(v) < 1e-12 * scale ? 0.0 : v; }
+double clean(double v, double scale) {
+  return std::abs(v) < 1e-12 * scale ? 0.0 : v;
+}
 
 Eigen::Vector3d clean(const Eigen::Vector3d& v, double scale) {
   return {clean(v.x(), scale), clean(v.y(), scale), clean(v.z(), scale)};
 }
 
-
 void printTheory(std::FILE* out, const sim::Model& model, double spin) {
   const double unit = model.length_unit;
   const sim::Rest rest = sim::restOf(model);
-  std::fprintf(out, "rest contact     CM %.4g above it; radii of curvature %.4g and %.4g "
-              "(file units)\n",
-              rest.h / unit, rest.radii(0) / unit, rest.radii(1) / unit);
+  std::fprintf(out,
+               "rest contact     CM %.4g above it; radii of curvature %.4g and %.4g "
+               "(file units)\n",
+               rest.h / unit, rest.radii(0) / unit, rest.radii(1) / unit);
   if (rest.stable) {
     std::fprintf(out, "rest             stable upright (h below both radii)\n");
   } else {
-    std::fprintf(out, "WARNING: the body cannot stand upright: its CM is %.4g above the contact, "
-                "above the radius of curvature %.4g (needs h below both radii)\n",
-                rest.h / unit, rest.radii(0) / unit);
+    std::fprintf(out,
+                 "WARNING: the body cannot stand upright: its CM is %.4g above the contact, "
+                 "above the radius of curvature %.4g (needs h below both radii)\n",
+                 rest.h / unit, rest.radii(0) / unit);
   }
   const sim::Linearisation at_rest = sim::linearise(model, 0);
   std::fprintf(out, "at rest          roll %.4g Hz, pitch %.4g Hz (linearised rolling model)\n",
-              at_rest.roll_hz, at_rest.pitch_hz);
+               at_rest.roll_hz, at_rest.pitch_hz);
   const sim::FirstOrder first = sim::firstOrderGrowth(model);
-  std::fprintf(out, "first order      growth rate = n × (roll %+.4g, pitch %+.4g) 1/rad "
-              "(Walker, Bondi; seed eqs. 18–20)\n",
-              first.roll, first.pitch);
+  std::fprintf(out,
+               "first order      growth rate = n × (roll %+.4g, pitch %+.4g) 1/rad "
+               "(Walker, Bondi; seed eqs. 18–20)\n",
+               first.roll, first.pitch);
   std::fprintf(out, "growth rates     exact linearised rolling model, 1/s:\n");
   std::fprintf(out, "                 %8s %10s %10s\n", "n rad/s", "roll", "pitch");
   std::vector<double> spins = {-10, -5, -2, -1, 1, 2, 5, 10};
@@ -54,8 +58,8 @@ void printTheory(std::FILE* out, const sim::Model& model, double spin) {
   std::sort(spins.begin(), spins.end());
   for (double n : spins) {
     const sim::Linearisation l = sim::linearise(model, n);
-    std::fprintf(out, "                 %8.3g %+10.4f %+10.4f%s\n", n, l.roll_growth, l.pitch_growth,
-                n == spin ? "   <- --spin" : "");
+    std::fprintf(out, "                 %8.3g %+10.4f %+10.4f%s\n", n, l.roll_growth,
+                 l.pitch_growth, n == spin ? "   <- --spin" : "");
   }
   const sim::Linearisation l = sim::linearise(model, spin);
   std::fprintf(out, "eigenvalues      at n = %g rad/s:", spin);
@@ -66,11 +70,13 @@ void printTheory(std::FILE* out, const sim::Model& model, double spin) {
   std::fprintf(out, "\n");
   const sim::Direction preferred = sim::preferredDirection(model, spin);
   if (preferred == sim::Direction::None)
-    std::fprintf(out, "preferred        none (the rocking grows alike both ways, or neither way: "
-                      "no direction is predicted to reverse rather than the other)\n");
+    std::fprintf(out,
+                 "preferred        none (the rocking grows alike both ways, or neither way: "
+                 "no direction is predicted to reverse rather than the other)\n");
   else
-    std::fprintf(out, "preferred        %s (%s seen from above); spun the other way it is "
-                      "predicted to reverse\n",
+    std::fprintf(out,
+                 "preferred        %s (%s seen from above); spun the other way it is "
+                 "predicted to reverse\n",
                  std::string(rb::nameOf(preferred)).c_str(),
                  preferred == sim::Direction::Ccw ? "counter-clockwise" : "clockwise");
 }
@@ -83,56 +89,63 @@ void printText(std::FILE* out, const std::string& scene, const sim::Model& model
   const auto top = static_cast<std::size_t>(census.top);
   const auto bottom = static_cast<std::size_t>(census.bottom);
   std::fprintf(out, "scene            %s (lengths below in the file's unit, %g m)\n", scene.c_str(),
-              unit);
+               unit);
   if (model.body->surface.kind == sim::Surface::Kind::Paraboloid)
     std::fprintf(out, "points           %lld in all, %zu on the surface (%zu top, %zu bottom)\n",
-                static_cast<long long>(census.points), top + bottom, top, bottom);
+                 static_cast<long long>(census.points), top + bottom, top, bottom);
   else
-    std::fprintf(out, "points           %zu drawn on the surface (%zu top, %zu bottom); the mass "
-                "properties are the scene's\n",
-                top + bottom, top, bottom);
+    std::fprintf(out,
+                 "points           %zu drawn on the surface (%zu top, %zu bottom); the mass "
+                 "properties are the scene's\n",
+                 top + bottom, top, bottom);
   std::fprintf(out, "mass properties  %s\n", tasks::massSourceText(*model.body).c_str());
   std::fprintf(out, "mass             %g kg\n", m.mass);
   const Eigen::Vector3d com = clean(m.com, model.body->surface.footprintHalf().maxCoeff()) / unit;
   std::fprintf(out, "centre of mass   (%.6g, %.6g, %.6g) in the shape's frame\n", com.x(), com.y(),
-              com.z());
+               com.z());
   std::fprintf(out, "inertia about the CM, geometric axes [kg m^2]\n");
   // Products of inertia a symmetric body does not have come out of cubature as 1e-19 of the
   // moments, not 0: shown as the 0 they are.
   const double moment = m.inertia.cwiseAbs().maxCoeff();
   for (int i = 0; i < 3; ++i)
     std::fprintf(out, "                 [% .6e  % .6e  % .6e]\n", clean(m.inertia(i, 0), moment),
-                clean(m.inertia(i, 1), moment), clean(m.inertia(i, 2), moment));
+                 clean(m.inertia(i, 1), moment), clean(m.inertia(i, 2), moment));
   std::fprintf(out, "principal        %.6e  %.6e  %.6e kg m^2, along (columns)\n", m.principal(0),
-              m.principal(1), m.principal(2));
+               m.principal(1), m.principal(2));
   for (int i = 0; i < 3; ++i)
     std::fprintf(out, "                 [% .6f  % .6f  % .6f]\n", m.axes(i, 0), m.axes(i, 1),
-                m.axes(i, 2));
-  std::fprintf(out, "misalignment     %+.4f deg (least-inertia axis from the long axis, "
-              "counter-clockwise seen from above)\n",
-              m.misalignment_deg);
+                 m.axes(i, 2));
+  std::fprintf(out,
+               "misalignment     %+.4f deg (least-inertia axis from the long axis, "
+               "counter-clockwise seen from above)\n",
+               m.misalignment_deg);
   if (model.contact.model == sim::ContactModel::Rolling)
-    std::fprintf(out, "contact          rolling: no contact spring, so no step limit from the floor\n");
+    std::fprintf(out,
+                 "contact          rolling: no contact spring, so no step limit from the floor\n");
   else if (model.contact.model == sim::ContactModel::Auto && sim::isAdaptive(model.integrator))
-    std::fprintf(out, "contact          auto: rolls while the floor can give the force rolling needs, "
-                "else slides (smooth: stiffest mode %.4g rad/s, damping ratio %.3g); the "
-                "adaptive integrator chooses its steps\n",
-                stability.omega, stability.zeta);
+    std::fprintf(out,
+                 "contact          auto: rolls while the floor can give the force rolling needs, "
+                 "else slides (smooth: stiffest mode %.4g rad/s, damping ratio %.3g); the "
+                 "adaptive integrator chooses its steps\n",
+                 stability.omega, stability.zeta);
   else if (model.contact.model == sim::ContactModel::Auto)
-    std::fprintf(out, "contact          auto: rolls while the floor can give the force rolling needs, "
-                "else slides (smooth: stiffest mode %.4g rad/s, damping ratio %.3g) in steps of "
-                "%.3g s within each step\n",
-                stability.omega, stability.zeta, std::min(sim::smoothStep(model), model.dt));
+    std::fprintf(out,
+                 "contact          auto: rolls while the floor can give the force rolling needs, "
+                 "else slides (smooth: stiffest mode %.4g rad/s, damping ratio %.3g) in steps of "
+                 "%.3g s within each step\n",
+                 stability.omega, stability.zeta, std::min(sim::smoothStep(model), model.dt));
   else if (sim::isAdaptive(model.integrator))
-    std::fprintf(out, "contact          stiffest mode at rest %.4g rad/s (damping ratio %.3g); the "
-                "adaptive integrator chooses its steps\n",
-                stability.omega, stability.zeta);
+    std::fprintf(out,
+                 "contact          stiffest mode at rest %.4g rad/s (damping ratio %.3g); the "
+                 "adaptive integrator chooses its steps\n",
+                 stability.omega, stability.zeta);
   else
-    std::fprintf(out, "contact          stiffest mode at rest %.4g rad/s (damping ratio %.3g); "
-                "largest stable dt for a run %.3g s with %s (the scene's integrator; %.3g s "
-                "at rest)\n",
-                stability.omega, stability.zeta, stability.run_step,
-                std::string(rb::nameOf(model.integrator)).c_str(), stability.largest_step);
+    std::fprintf(out,
+                 "contact          stiffest mode at rest %.4g rad/s (damping ratio %.3g); "
+                 "largest stable dt for a run %.3g s with %s (the scene's integrator; %.3g s "
+                 "at rest)\n",
+                 stability.omega, stability.zeta, stability.run_step,
+                 std::string(rb::nameOf(model.integrator)).c_str(), stability.largest_step);
 }
 
 // The analysis as text or JSON, into `out`.
@@ -167,7 +180,12 @@ int analyzeCommand(const AnalyzeArgs& args) {
   file->stream().write(text, static_cast<std::streamsize>(size));
   std::free(text);
   if (auto e = file->commit(); !e) return fail(e);
-  record({{args.output, tasks::OutputKind::Analysis, sceneName(args.scene), args.json ? "json" : "text", {}, {}}});
+  record({{args.output,
+           tasks::OutputKind::Analysis,
+           sceneName(args.scene),
+           args.json ? "json" : "text",
+           {},
+           {}}});
   return kOk;
 }
 

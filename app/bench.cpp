@@ -1,5 +1,7 @@
 // `rattleback bench`: options in, tasks/bench (the measurements) called, a table printed, the
 // CSV written and the error-against-cost figure drawn.
+#include "tasks/bench.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -10,7 +12,6 @@
 #include "app/commands.hpp"
 #include "app/interrupt.hpp"
 #include "app/plot.hpp"
-#include "tasks/bench.hpp"
 #include "tasks/output.hpp"
 
 namespace app {
@@ -40,8 +41,8 @@ std::string stepText(const tasks::BenchRow& r) {
 
 void printRow(const tasks::BenchRow& r) {
   if (r.status != "ok" && std::isnan(r.cost_median)) {
-    std::printf("%-8s %-10s %13s  %s\n", r.model.c_str(), r.integrator.c_str(),
-                stepText(r).c_str(), r.brief.c_str());
+    std::printf("%-8s %-10s %13s  %s\n", r.model.c_str(), r.integrator.c_str(), stepText(r).c_str(),
+                r.brief.c_str());
     return;
   }
   const double spread = (r.cost_max - r.cost_min) / r.cost_median;
@@ -50,11 +51,10 @@ void printRow(const tasks::BenchRow& r) {
                 static_cast<long long>(r.rejected));
   std::printf("%-8s %-10s %13s %10.3g %6.0f%% %8.3g %11s %9s %9s %9s %9s %9s %9s %8s%s\n",
               r.model.c_str(), r.integrator.c_str(), stepText(r).c_str(), r.cost_median,
-              100 * spread, r.us_per_step, steps,
-              show(r.reversal, "%.4f").c_str(), show(r.reversal_error).c_str(),
-              show(r.reversal_error_rolling).c_str(), show(r.spin_error).c_str(),
-              show(r.spin_error_rolling).c_str(), show(r.energy_drift).c_str(),
-              show(r.switches, "%.0f").c_str(),
+              100 * spread, r.us_per_step, steps, show(r.reversal, "%.4f").c_str(),
+              show(r.reversal_error).c_str(), show(r.reversal_error_rolling).c_str(),
+              show(r.spin_error).c_str(), show(r.spin_error_rolling).c_str(),
+              show(r.energy_drift).c_str(), show(r.switches, "%.0f").c_str(),
               r.status == "ok" ? "" : ("  " + r.brief).c_str());
 }
 
@@ -90,7 +90,8 @@ rb::Status plotBench(const std::string& png, const std::vector<tasks::BenchRow>&
     const std::string key = (scenes.size() > 1 ? r.scene + " " : "") + r.model + " " + r.integrator;
     if (!lines.count(key)) order.push_back(key);
     auto& s = lines[key];
-    const int dash = 1 + static_cast<int>(std::find(scenes.begin(), scenes.end(), r.scene) - scenes.begin());
+    const int dash =
+        1 + static_cast<int>(std::find(scenes.begin(), scenes.end(), r.scene) - scenes.begin());
     for (Series& one : s) {
       one.title = key;
       styleOf(r, dash, one);
@@ -154,8 +155,10 @@ int benchCommand(const BenchArgs& args) {
   std::vector<tasks::BenchRow> rows;
   for (const tasks::BenchScene& scene : scenes) {
     if (!args.quiet) {
-      std::printf("\n%s: %g s simulated, %d repeats; reference rk4 at 1/16 of each model's "
-                  "finest step\n", scene.name.c_str(), args.duration, args.repeats);
+      std::printf(
+          "\n%s: %g s simulated, %d repeats; reference rk4 at 1/16 of each model's "
+          "finest step\n",
+          scene.name.c_str(), args.duration, args.repeats);
       printHeader();
     }
     if (!tasks::benchScene(scene, options, rows)) {

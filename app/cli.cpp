@@ -69,7 +69,9 @@ void backendOption(CLI::App& c, std::string& backend, std::string& from, const c
     backend = env;
     from = "RATTLEBACK_BACKEND (the environment)";
   }
-  c.add_option("--backend", backend, help)->each([&from](const std::string&) { from = "--backend"; });
+  c.add_option("--backend", backend, help)->each([&from](const std::string&) {
+    from = "--backend";
+  });
 }
 
 // The video's options, which a still takes too (they change a frame's inset).
@@ -114,7 +116,8 @@ void defineStill(CLI::App& c, Cli& cli) {
   c.add_flag("--transparent", st.transparent,
              "PNG with alpha for figures and slides: the body and its shadow over nothing (no "
              "floor, background or read-outs)");
-  backendOption(c, st.backend, st.backend_from, (names<render::Backend>() + ": as for render").c_str());
+  backendOption(c, st.backend, st.backend_from,
+                (names<render::Backend>() + ": as for render").c_str());
   c.add_flag("-q,--quiet", st.quiet, "Do not print the file name");
   c.add_flag("-v,--verbose", st.verbose, "Also name the OpenGL in use (backend, vendor, renderer)");
 }
@@ -128,7 +131,8 @@ void defineCompare(CLI::App& c, Cli& cli) {
   c.add_option("--pixels", a.pixel_fraction,
                "Fraction of pixels allowed beyond the tolerance (default 0.002)");
   c.add_option("--diff", a.diff, "Write a diff image here when they differ");
-  c.add_flag("-q,--quiet", a.quiet, "Print nothing: the exit status says same (0) or different (1)");
+  c.add_flag("-q,--quiet", a.quiet,
+             "Print nothing: the exit status says same (0) or different (1)");
 }
 
 void defineBench(CLI::App& c, Cli& cli) {
@@ -158,8 +162,8 @@ void defineMerge(CLI::App& c, Cli& cli) {
   c.add_option("output", m.output, "Merged CSV table")->required();
   c.add_option("shards", m.shards, "The shards' CSV tables")->required();
   c.add_option("--plot", m.plot, "Heatmap (PNG) of --metric over the first two axes");
-  c.add_option("--metric", m.metric, "Column to plot: " + tasks::sweepMetricNames() +
-                                         " (default first_reversal_s)");
+  c.add_option("--metric", m.metric,
+               "Column to plot: " + tasks::sweepMetricNames() + " (default first_reversal_s)");
   c.add_flag("-q,--quiet", m.quiet, "No summary");
 }
 
@@ -179,7 +183,8 @@ void defineSweep(CLI::App& c, Cli& cli) {
   c.add_option("--shards", w.shards, "With --emit: how many shards");
   c.add_flag("--resume", w.resume, "Continue an interrupted sweep from the rows it kept");
   c.add_flag("-q,--quiet", w.quiet, "No summary and no progress bar");
-  cli.merge = c.add_subcommand("merge", "Recombine the shard tables of one sweep, in the sweep's order");
+  cli.merge =
+      c.add_subcommand("merge", "Recombine the shard tables of one sweep, in the sweep's order");
   defineMerge(*cli.merge, cli);
 }
 
@@ -218,7 +223,8 @@ const std::vector<CommandSpec>& commands() {
 Cli::Cli() {
   app.set_version_flag("--version", "rattleback " RATTLEBACK_VERSION);
   app.require_subcommand(1);
-  for (const CommandSpec& spec : commands()) spec.define(*app.add_subcommand(spec.name, spec.summary), *this);
+  for (const CommandSpec& spec : commands())
+    spec.define(*app.add_subcommand(spec.name, spec.summary), *this);
 }
 
 std::optional<int> Cli::parse(int argc, char** argv) {

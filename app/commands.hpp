@@ -10,9 +10,9 @@
 
 namespace app {
 
-using tasks::Overrides;
-using tasks::loadScene;
 using tasks::describeModel;
+using tasks::loadScene;
+using tasks::Overrides;
 using tasks::parseSize;
 
 /// Exit statuses (docs/commands.md "Exit codes").
@@ -26,7 +26,9 @@ enum Exit : int {
 /// Prints the error's one line on standard error; returns kBadInput. The one place a command's
 /// bad input is reported.
 int fail(const rb::Error& error);
-inline int fail(const rb::Status& status) { return fail(status.error()); }
+inline int fail(const rb::Status& status) {
+  return fail(status.error());
+}
 template <typename T>
 int fail(const rb::Result<T>& result) {
   return fail(result.error());
@@ -52,7 +54,7 @@ int simulateCommand(const SimulateArgs& args);
 struct AnalyzeArgs {
   std::string scene;
   bool json = false;
-  std::string output;  ///< a file to write instead of standard output
+  std::string output;          ///< a file to write instead of standard output
   std::optional<double> spin;  ///< rad/s for the growth rates; default the scene's (or 5)
 };
 int analyzeCommand(const AnalyzeArgs& args);
@@ -61,10 +63,10 @@ struct RenderArgs {
   std::string scene;
   std::string output;  ///< .mp4 path; empty: out/<scene>.mp4
   Overrides overrides;
-  bool both = false;   ///< also the reversed spin and a side-by-side video
+  bool both = false;  ///< also the reversed spin and a side-by-side video
   int crf = 20;
   std::string preset = "veryfast";
-  std::string backend = "auto";  ///< auto | egl | osmesa
+  std::string backend = "auto";            ///< auto | egl | osmesa
   std::string backend_from = "--backend";  ///< where `backend` came from, for its error
   bool quiet = false;
   bool verbose = false;
@@ -75,9 +77,9 @@ struct StillArgs {
   std::string scene;
   std::string output;  ///< .png path; empty: out/<scene>-<view>.png
   Overrides overrides;
-  double t = 0;        ///< s
+  double t = 0;  ///< s
   bool no_readouts = false;
-  bool transparent = false;  ///< PNG with alpha: no floor, no background, no read-outs
+  bool transparent = false;      ///< PNG with alpha: no floor, no background, no read-outs
   std::string backend = "auto";  ///< auto | egl | osmesa
   std::string backend_from = "--backend";  ///< where `backend` came from, for its error
   bool quiet = false;
@@ -93,7 +95,7 @@ struct BenchArgs {
   int repeats = 3;                  ///< timed runs per rung
   int rungs = 5;                    ///< steps in each ladder of halvings
   std::vector<std::string> models, integrators;  ///< empty: all that apply
-  std::vector<double> tolerances;   ///< the adaptive ladder; empty: 1e-4, 1e-5, … 1e-10
+  std::vector<double> tolerances;  ///< the adaptive ladder; empty: 1e-4, 1e-5, … 1e-10
   bool quiet = false;
 };
 /// Speed against error: prints a table, writes CSV and a log–log plot.
@@ -108,24 +110,24 @@ int reportCommand(const ReportArgs& args);
 
 struct CompareArgs {
   std::string actual, expected;
-  int channel_tolerance = 2;        ///< 0–255 per channel
-  double pixel_fraction = 0.002;    ///< of the pixels may differ beyond it
-  std::string diff;                 ///< where to write a diff image when they differ
-  bool quiet = false;               ///< no verdict line: the exit status says it
+  int channel_tolerance = 2;      ///< 0–255 per channel
+  double pixel_fraction = 0.002;  ///< of the pixels may differ beyond it
+  std::string diff;               ///< where to write a diff image when they differ
+  bool quiet = false;             ///< no verdict line: the exit status says it
 };
 /// Exit 0 when the images match within the tolerance, 1 when they differ.
 int compareCommand(const CompareArgs& args);
 
 struct SweepArgs {
-  std::string file;            ///< the sweep file (YAML)
-  std::string output;          ///< CSV; empty: out/<sweep>.csv (with --shard: …-shard-I-of-N.csv)
-  int jobs = 0;                ///< threads; 0: all cores
-  std::string shard;           ///< "I/N": rows I, I+N, … only
-  std::string plot;            ///< heatmap PNG of --metric over the first two axes
+  std::string file;    ///< the sweep file (YAML)
+  std::string output;  ///< CSV; empty: out/<sweep>.csv (with --shard: …-shard-I-of-N.csv)
+  int jobs = 0;        ///< threads; 0: all cores
+  std::string shard;   ///< "I/N": rows I, I+N, … only
+  std::string plot;    ///< heatmap PNG of --metric over the first two axes
   std::string metric = "first_reversal_s";
-  std::string emit;            ///< "slurm" | "parallel": print a job script instead of running
-  int shards = 0;              ///< with --emit: how many shards
-  bool resume = false;         ///< continue from the rows an interrupted run kept
+  std::string emit;     ///< "slurm" | "parallel": print a job script instead of running
+  int shards = 0;       ///< with --emit: how many shards
+  bool resume = false;  ///< continue from the rows an interrupted run kept
   bool quiet = false;
 };
 /// Runs every scene of a sweep (the product of its axes) on a pool of threads; one CSV row each.

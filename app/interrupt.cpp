@@ -4,7 +4,6 @@
 
 #include <atomic>
 #include <csignal>
-
 #include <iostream>
 
 #include "app/commands.hpp"
@@ -32,9 +31,13 @@ void installInterruptHandlers() {
   sigaction(SIGTERM, &action, nullptr);
 }
 
-int interruptSignal() { return received.load(); }
+int interruptSignal() {
+  return received.load();
+}
 
-int interruptedStatus() { return 128 + received.load(); }
+int interruptedStatus() {
+  return 128 + received.load();
+}
 
 }  // namespace app
 

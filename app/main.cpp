@@ -17,8 +17,8 @@ std::filesystem::path renderProgram() {
   const std::filesystem::path exe_dir =
       std::filesystem::read_symlink("/proc/self/exe", error).parent_path();
   // The build tree keeps both programs in one folder; an install puts the second in libexec.
-  for (const auto& candidate : {exe_dir / "rattleback-render",
-                                exe_dir / RATTLEBACK_LIBEXEC_RELATIVE / "rattleback-render"})
+  for (const auto& candidate :
+       {exe_dir / "rattleback-render", exe_dir / RATTLEBACK_LIBEXEC_RELATIVE / "rattleback-render"})
     if (::access(candidate.c_str(), X_OK) == 0) return candidate.lexically_normal();
   return {};
 }
@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
     return app::kBadInput;
   }
   ::execv(program.c_str(), argv);
-  std::cerr << "rattleback: cannot run " << program.string() << ": " << std::strerror(errno) << "\n";
+  std::cerr << "rattleback: cannot run " << program.string() << ": " << std::strerror(errno)
+            << "\n";
   return app::kBadInput;
 }

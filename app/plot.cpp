@@ -1,21 +1,21 @@
 #include "app/plot.hpp"
-#include "tasks/output.hpp"
 
+#include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <fcntl.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
-#include <optional>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
+
+#include "tasks/output.hpp"
 
 extern char** environ;
 
@@ -120,9 +120,11 @@ rb::Status drawWithGnuplot(const std::string& png, Write write) {
   const rb::OutputPlace place = rb::outputPlace(png);
   if (auto refused = refuseDevice(png, place); !refused) return refused;
   const fs::path parent = fs::absolute(place.target).parent_path();
-  if (!fs::is_directory(parent, ec)) return rb::Status::fail(png + ": cannot write: the folder does not exist");
+  if (!fs::is_directory(parent, ec))
+    return rb::Status::fail(png + ": cannot write: the folder does not exist");
   char pattern[] = "/tmp/rattleback-plot-XXXXXX";
-  if (!mkdtemp(pattern)) return rb::Status::fail(png + ": cannot make a temporary folder: " + std::strerror(errno));
+  if (!mkdtemp(pattern))
+    return rb::Status::fail(png + ": cannot make a temporary folder: " + std::strerror(errno));
   const fs::path work = pattern;
   struct Cleanup {
     fs::path dir;
@@ -156,7 +158,8 @@ rb::Status drawWithGnuplot(const std::string& png, Write write) {
 }  // namespace
 
 // One series' data file and its plot clause; nothing when it has no point the axes can show.
-std::optional<std::string> seriesClause(const Panel& panel, const Series& series, const fs::path& data) {
+std::optional<std::string> seriesClause(const Panel& panel, const Series& series,
+                                        const fs::path& data) {
   std::ofstream out(data);
   out.precision(10);
   int kept = 0;
@@ -168,9 +171,9 @@ std::optional<std::string> seriesClause(const Panel& panel, const Series& series
     ++kept;
   }
   if (kept == 0) return std::nullopt;
-  std::string style = panel.lines_only ? " with lines lw 1.5"
-                                       : " with linespoints lw 1.5 ps 0.9 pt " +
-                                             std::to_string(series.point_type);
+  std::string style =
+      panel.lines_only ? " with lines lw 1.5"
+                       : " with linespoints lw 1.5 ps 0.9 pt " + std::to_string(series.point_type);
   style += " dt " + std::to_string(series.dash);
   if (!series.color.empty()) style += " lc rgb " + quoted(series.color);
   return quoted(data.string()) + " using 1:2" + (series.right_axis ? " axes x1y2" : "") + style +
@@ -208,7 +211,7 @@ void writePanel(std::ofstream& script, const Panel& panel, bool titled, const fs
 }
 
 rb::Status plotPng(const std::string& png, const std::string& title,
-                                   const std::vector<Panel>& panels, int width, int height) {
+                   const std::vector<Panel>& panels, int width, int height) {
   return drawWithGnuplot(png, [&](std::ofstream& script, const fs::path& work,
                                   const fs::path& temp_png) {
     script << "set terminal pngcairo size " << width << "," << height
@@ -218,7 +221,8 @@ rb::Status plotPng(const std::string& png, const std::string& title,
            << "set multiplot layout " << panels.size() << ",1 title " << quoted(title)
            << " font \",12\"\n";
     int file_index = 0;
-    for (const Panel& panel : panels) writePanel(script, panel, panels.size() > 1, work, file_index);
+    for (const Panel& panel : panels)
+      writePanel(script, panel, panels.size() > 1, work, file_index);
     script << "unset multiplot\nset output\n";
   });
 }
@@ -235,8 +239,10 @@ rb::Status heatmapPng(const std::string& png, const Heatmap& map, int width, int
       for (std::size_t ix = 0; ix < nx; ++ix) {
         const double v = map.values[ix * ny + iy];
         data << (ix ? " " : "");
-        if (std::isfinite(v)) data << v;
-        else data << "NaN";
+        if (std::isfinite(v))
+          data << v;
+        else
+          data << "NaN";
       }
       data << "\n";
     }
@@ -248,18 +254,20 @@ rb::Status heatmapPng(const std::string& png, const Heatmap& map, int width, int
         list += (list.empty() ? "" : ", ") + quoted(values[i]) + " " + std::to_string(i);
       return "(" + list + ")";
     };
-    script << "set terminal pngcairo size " << width << "," << height
-           << " font \"DejaVu Sans,10\" noenhanced\n"
-           << "set output " << quoted(temp_png.string()) << "\n"
-           << "set title " << quoted(map.title) << "\n"
-           << "set xlabel " << quoted(map.x_label) << "\nset ylabel " << quoted(map.y_label) << "\n"
-           << "set cblabel " << quoted(map.value_label) << "\n"
-           << "set xtics " << tics(map.x_values) << " rotate by -30\n"
-           << "set ytics " << tics(map.y_values) << "\n"
-           << "set xrange [-0.5:" << nx - 0.5 << "]\nset yrange [-0.5:" << ny - 0.5 << "]\n"
-           // Viridis (perceptually uniform, readable in grey and by colour-blind readers).
-           << "set palette defined (0 '#440154', 1 '#3b528b', 2 '#21918c', 3 '#5ec962', 4 '#fde725')\n"
-           << "set object 1 rectangle from graph 0,0 to graph 1,1 behind fc rgb '#c8c8c8' fs solid\n";
+    script
+        << "set terminal pngcairo size " << width << "," << height
+        << " font \"DejaVu Sans,10\" noenhanced\n"
+        << "set output " << quoted(temp_png.string()) << "\n"
+        << "set title " << quoted(map.title) << "\n"
+        << "set xlabel " << quoted(map.x_label) << "\nset ylabel " << quoted(map.y_label) << "\n"
+        << "set cblabel " << quoted(map.value_label) << "\n"
+        << "set xtics " << tics(map.x_values) << " rotate by -30\n"
+        << "set ytics " << tics(map.y_values) << "\n"
+        << "set xrange [-0.5:" << nx - 0.5 << "]\nset yrange [-0.5:" << ny - 0.5
+        << "]\n"
+        // Viridis (perceptually uniform, readable in grey and by colour-blind readers).
+        << "set palette defined (0 '#440154', 1 '#3b528b', 2 '#21918c', 3 '#5ec962', 4 '#fde725')\n"
+        << "set object 1 rectangle from graph 0,0 to graph 1,1 behind fc rgb '#c8c8c8' fs solid\n";
     if (!map.note.empty())
       script << "set label 1 " << quoted(map.note) << " at screen 0.99, screen 0.02 right\n";
     bool any = false;

@@ -24,7 +24,7 @@ struct Series {
 struct Panel {
   std::string title, x_label, y_label, y2_label;
   bool log_x = false, log_y = false;
-  bool lines_only = false;  ///< no point markers (time series)
+  bool lines_only = false;   ///< no point markers (time series)
   bool y_from_zero = false;  ///< a quantity never negative (a tilt): its axis starts at 0
   std::vector<Series> series;
 };
@@ -39,7 +39,7 @@ rb::Status checkPlotFile(const std::string& png);
 /// Draws the panels stacked top to bottom into one PNG of width × height pixels.
 /// Returns one error line naming `png` on failure; an existing `png` is then left as it was.
 rb::Status plotPng(const std::string& png, const std::string& title,
-                                   const std::vector<Panel>& panels, int width, int height);
+                   const std::vector<Panel>& panels, int width, int height);
 
 /// A map of values over two axes (a sweep's first two), drawn as coloured cells.
 struct Heatmap {

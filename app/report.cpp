@@ -1,8 +1,9 @@
 // `rattleback report DIR`: the page tasks/report writes, and its path.
+#include "tasks/report.hpp"
+
 #include <cstdio>
 
 #include "app/commands.hpp"
-#include "tasks/report.hpp"
 
 namespace app {
 

@@ -1,3 +1,5 @@
+#include "tasks/simulate.hpp"
+
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -9,14 +11,13 @@
 
 #include "app/commands.hpp"
 #include "app/interrupt.hpp"
-#include "tasks/output.hpp"
 #include "app/plot.hpp"
 #include "app/progress.hpp"
-#include "tasks/scene_args.hpp"
 #include "sim/analysis.hpp"
 #include "sim/rollout.hpp"
 #include "tasks/check.hpp"
-#include "tasks/simulate.hpp"
+#include "tasks/output.hpp"
+#include "tasks/scene_args.hpp"
 
 namespace app {
 namespace {
@@ -41,8 +42,9 @@ void printSummary(std::FILE* out, const SimulateArgs& args, const sim::Model& mo
   // As analyze warns: a body whose CM is above a radius of curvature at the rest contact
   // topples rather than rocks, and what follows is no rattleback's reversal.
   if (model.body->surface.kind == sim::Surface::Kind::Paraboloid && !sim::restOf(model).stable)
-    std::fprintf(out, "WARNING         the body cannot stand upright (its CM is above a radius of "
-                      "curvature at the rest contact; `rattleback analyze` says by how much)\n");
+    std::fprintf(out,
+                 "WARNING         the body cannot stand upright (its CM is above a radius of "
+                 "curvature at the rest contact; `rattleback analyze` says by how much)\n");
   if (sim::isAdaptive(model.integrator))
     std::fprintf(out,
                  "integrator      %s, tolerance %g, %lld steps (%lld rejected), %g s simulated\n",
@@ -103,21 +105,26 @@ void printCheck(std::FILE* out, const tasks::RunCheck& check, const sim::RunSumm
       std::fprintf(out, "                reversal %zu at %.6f s: error about %.2g s\n", i + 1,
                    run.reversals[i], std::abs(*check.reversal_errors[i]));
     else
-      std::fprintf(out, "                reversal %zu at %.6f s: the tighter run has no such "
-                        "reversal: the run is not converged\n", i + 1, run.reversals[i]);
+      std::fprintf(out,
+                   "                reversal %zu at %.6f s: the tighter run has no such "
+                   "reversal: the run is not converged\n",
+                   i + 1, run.reversals[i]);
   }
   if (check.tighter_reversals.size() > run.reversals.size())
-    std::fprintf(out, "                the tighter run reverses %zu times, this run %zu: the run is "
-                      "not converged\n", check.tighter_reversals.size(), run.reversals.size());
-  std::fprintf(out, "                n(t): error at most about %.2g rad/s (at t = %.4g s); the "
-                    "check cost %.2g× the run\n",
+    std::fprintf(out,
+                 "                the tighter run reverses %zu times, this run %zu: the run is "
+                 "not converged\n",
+                 check.tighter_reversals.size(), run.reversals.size());
+  std::fprintf(out,
+               "                n(t): error at most about %.2g rad/s (at t = %.4g s); the "
+               "check cost %.2g× the run\n",
                std::abs(check.spin_error), check.spin_error_at, check.cost_ratio);
 }
 
 // The seed's figures (6–8, 12–16) from the telemetry: energy, spin, tilt and CM height, and
 // the normal force, each against time, into DIR/<scene>-<what>.png.
 rb::Status writePlots(const std::string& dir, const std::string& scene,
-                                      const std::vector<sim::Telemetry>& samples) {
+                      const std::vector<sim::Telemetry>& samples) {
   const std::string stem = std::filesystem::path(scene).stem().string();
   auto series = [&](const char* title, auto value, bool right = false) {
     Series s;
@@ -136,18 +143,21 @@ rb::Status writePlots(const std::string& dir, const std::string& scene,
     return p;
   };
   Panel energy = panel("Energy", "energy [mJ]");
-  energy.series = {series("total", [](const sim::Telemetry& t) { return 1e3 * t.energy; }),
-                   series("kinetic", [](const sim::Telemetry& t) { return 1e3 * t.kinetic; }),
-                   series("potential M g z", [](const sim::Telemetry& t) { return 1e3 * t.potential; }),
-                   series("elastic (floor springs)", [](const sim::Telemetry& t) { return 1e3 * t.elastic; })};
-  Panel spin = panel("Spin about the vertical, n = w.z (+ counter-clockwise from above)",
-                     "spin n [rad/s]");
+  energy.series = {
+      series("total", [](const sim::Telemetry& t) { return 1e3 * t.energy; }),
+      series("kinetic", [](const sim::Telemetry& t) { return 1e3 * t.kinetic; }),
+      series("potential M g z", [](const sim::Telemetry& t) { return 1e3 * t.potential; }),
+      series("elastic (floor springs)", [](const sim::Telemetry& t) { return 1e3 * t.elastic; })};
+  Panel spin =
+      panel("Spin about the vertical, n = w.z (+ counter-clockwise from above)", "spin n [rad/s]");
   spin.series = {series("n", [](const sim::Telemetry& t) { return t.spin; })};
   Panel tilt = panel("Tilt of the body axis and height of the centre of mass", "tilt [degrees]");
   tilt.y2_label = "CM height z [mm]";
   tilt.y_from_zero = true;
-  tilt.series = {series("tilt", [](const sim::Telemetry& t) { return t.tilt_deg; }),
-                 series("CM height", [](const sim::Telemetry& t) { return 1e3 * t.x_world.z(); }, true)};
+  tilt.series = {
+      series("tilt", [](const sim::Telemetry& t) { return t.tilt_deg; }),
+      series(
+          "CM height", [](const sim::Telemetry& t) { return 1e3 * t.x_world.z(); }, true)};
   Panel normal = panel("Normal force of the floor", "normal force N [N]");
   normal.series = {series("N", [](const sim::Telemetry& t) { return t.normal_force; })};
   const std::pair<const char*, Panel*> figures[] = {
@@ -175,11 +185,17 @@ Overrides overridesOf(const SimulateArgs& args) {
 // The telemetry and the plots, for the manifest.
 std::vector<tasks::OutputEntry> outputsOf(const SimulateArgs& args, const std::string& csv) {
   const std::string scene = sceneName(args.scene);
-  std::vector<tasks::OutputEntry> entries = {{csv, tasks::OutputKind::Telemetry, scene, "", {}, {}}};
+  std::vector<tasks::OutputEntry> entries = {
+      {csv, tasks::OutputKind::Telemetry, scene, "", {}, {}}};
   if (!args.plot_dir.empty())
     for (const char* what : {"energy", "spin", "tilt", "normal"})
-      entries.push_back({(std::filesystem::path(args.plot_dir) / (scene + "-" + what + ".png")).string(),
-                         tasks::OutputKind::Plot, scene, what, {}, {}});
+      entries.push_back(
+          {(std::filesystem::path(args.plot_dir) / (scene + "-" + what + ".png")).string(),
+           tasks::OutputKind::Plot,
+           scene,
+           what,
+           {},
+           {}});
   return entries;
 }
 
@@ -214,7 +230,7 @@ int simulateCommand(const SimulateArgs& args) {
   if (args.verbose) describeModel(model, args.scene);
   Progress progress("simulate", static_cast<std::int64_t>(model.duration * rate) + 1, !args.quiet);
   std::vector<sim::Telemetry> kept;  // for the plots
-  std::vector<double> spins;          // for --check
+  std::vector<double> spins;         // for --check
   tasks::SimulateOptions options;
   options.rate = rate;
   options.cancelled = [] { return interruptSignal() != 0; };

@@ -1,5 +1,7 @@
 // `rattleback sweep` and `sweep merge`: options in, tasks/sweep (the runs, the table) and
 // tasks/sweep_jobs (shards, the journal, the merge, job scripts) called, a summary out.
+#include "scene/sweep.hpp"
+
 #include <unistd.h>
 
 #include <cmath>
@@ -13,7 +15,6 @@
 #include "app/interrupt.hpp"
 #include "app/plot.hpp"
 #include "app/progress.hpp"
-#include "scene/sweep.hpp"
 #include "tasks/output.hpp"
 #include "tasks/scene_args.hpp"
 #include "tasks/sweep.hpp"
@@ -31,9 +32,12 @@ std::optional<std::vector<std::string>> splitCsv(const std::string& line) {
   for (std::size_t i = 0; i < line.size(); ++i) {
     const char c = line[i];
     if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') fields.back() += '"', ++i;
-      else if (c == '"') quoted = false;
-      else fields.back() += c;
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"')
+        fields.back() += '"', ++i;
+      else if (c == '"')
+        quoted = false;
+      else
+        fields.back() += c;
     } else if (c == '"') {
       quoted = true;
     } else if (c == ',') {
@@ -63,7 +67,8 @@ double metricOf(const tasks::SweepRow& row, const std::string& metric) {
   if (row.status != tasks::RowStatus::Ok) return std::nan("");
   auto or_nan = [](const std::optional<double>& v) { return v.value_or(std::nan("")); };
   if (metric == "first_reversal_s") return or_nan(row.first_reversal_s);
-  if (metric == "reversals") return row.reversals ? static_cast<double>(*row.reversals) : std::nan("");
+  if (metric == "reversals")
+    return row.reversals ? static_cast<double>(*row.reversals) : std::nan("");
   if (metric == "final_spin") return or_nan(row.final_spin);
   if (metric == "max_tilt_deg") return or_nan(row.max_tilt_deg);
   if (metric == "energy_lost") return or_nan(row.energy_lost);
@@ -104,7 +109,8 @@ rb::Status plotTable(const std::string& png, const std::string& metric, const st
     Series series;
     series.title = metric;
     for (std::size_t i = 0; i < table.values.size(); ++i)
-      series.points.emplace_back(std::strtod(table.axis_values[0][i].c_str(), nullptr), table.values[i]);
+      series.points.emplace_back(std::strtod(table.axis_values[0][i].c_str(), nullptr),
+                                 table.values[i]);
     panel.series.push_back(series);
     return plotPng(png, title + ": " + metric, {panel}, 900, 500);
   }
@@ -118,7 +124,8 @@ rb::Status plotTable(const std::string& png, const std::string& metric, const st
   for (std::size_t i0 = 0; i0 < map.x_values.size(); ++i0)
     for (std::size_t i1 = 0; i1 < map.y_values.size(); ++i1)
       map.values.push_back(table.values[static_cast<std::size_t>(i0 * stride[0] + i1 * stride[1])]);
-  map.note = "grey: no value (" + std::string(metric == "first_reversal_s" ? "no reversal, or " : "") +
+  map.note = "grey: no value (" +
+             std::string(metric == "first_reversal_s" ? "no reversal, or " : "") +
              "run stopped or refused)";
   return heatmapPng(png, map, 900, 600);
 }
@@ -140,10 +147,12 @@ rb::Status checkOptions(const SweepArgs& args, std::optional<tasks::Shard>& shar
   if (args.shard.empty()) return {};
   shard = tasks::parseShard(args.shard);
   if (!shard)
-    return rb::Status::fail("--shard: expected I/N with 0 ≤ I < N (e.g. 0/4), not '" + args.shard + "'");
+    return rb::Status::fail("--shard: expected I/N with 0 ≤ I < N (e.g. 0/4), not '" + args.shard +
+                            "'");
   if (!args.plot.empty())
-    return rb::Status::fail("--plot: a shard holds only some rows; plot the merged table "
-                            "(rattleback sweep merge OUT.csv SHARD… --plot PNG)");
+    return rb::Status::fail(
+        "--plot: a shard holds only some rows; plot the merged table "
+        "(rattleback sweep merge OUT.csv SHARD… --plot PNG)");
   return {};
 }
 
@@ -220,8 +229,8 @@ bool runRows(const SweepArgs& args, const scene::Sweep& sweep, const scene::Swee
   return true;
 }
 
-void printSummary(const SweepArgs& args, const std::optional<tasks::Shard>& shard,
-                  const Plan& plan, const tasks::SweepRun& run, const std::string& output) {
+void printSummary(const SweepArgs& args, const std::optional<tasks::Shard>& shard, const Plan& plan,
+                  const tasks::SweepRun& run, const std::string& output) {
   std::map<std::string, int> counts = plan.counts;
   std::printf("sweep           %s: %zu runs", args.file.c_str(), plan.done.size());
   if (shard)
@@ -256,15 +265,16 @@ rb::Status writeOutputs(const SweepArgs& args, const scene::Sweep& sweep,
   for (const auto& axis : sweep.axes) table.axis_values.push_back(axis.values);
   for (const auto& [r, line] : plan.done) {
     const auto it = metric.find(r);
-    table.values.push_back(it != metric.end() ? it->second : metricOf(line, keys.size(), args.metric));
+    table.values.push_back(it != metric.end() ? it->second
+                                              : metricOf(line, keys.size(), args.metric));
   }
   return plotTable(args.plot, args.metric, fs::path(args.file).stem().string(), table);
 }
 
 // Where the table goes, checked, with its folder made.
 rb::Result<std::string> outputOf(const SweepArgs& args, const std::optional<tasks::Shard>& shard) {
-  std::string output = args.output.empty() ? "out/" + fs::path(args.file).stem().string() + ".csv"
-                                           : args.output;
+  std::string output =
+      args.output.empty() ? "out/" + fs::path(args.file).stem().string() + ".csv" : args.output;
   if (auto ok = tasks::checkTableIsAFile(output); !ok) return ok.error();
   if (!args.emit.empty()) return output;
   if (shard && args.output.empty()) output = tasks::shardPath(output, *shard);
@@ -279,8 +289,9 @@ rb::Result<std::string> outputOf(const SweepArgs& args, const std::optional<task
 int sweepCommand(const SweepArgs& args) {
   installInterruptHandlers();
   if (args.file.empty())
-    return fail(rb::Status::fail("sweep: give a sweep file (e.g. rattleback sweep "
-                                 "sweeps/spin-drag.yaml), or 'sweep merge OUT.csv SHARD…'"));
+    return fail(
+        rb::Status::fail("sweep: give a sweep file (e.g. rattleback sweep "
+                         "sweeps/spin-drag.yaml), or 'sweep merge OUT.csv SHARD…'"));
   auto loaded = scene::loadSweep(tasks::findShipped(args.file));
   if (!loaded) return fail(loaded);
   const scene::Sweep& sweep = loaded.value();
@@ -310,7 +321,8 @@ int sweepCommand(const SweepArgs& args) {
   std::vector<tasks::OutputEntry> entries = {
       {output.value(), tasks::OutputKind::Sweep, sceneName(args.file), "", {}, {}}};
   if (!args.plot.empty())
-    entries.push_back({args.plot, tasks::OutputKind::SweepPlot, sceneName(args.file), args.metric, {}, {}});
+    entries.push_back(
+        {args.plot, tasks::OutputKind::SweepPlot, sceneName(args.file), args.metric, {}, {}});
   record(entries);
   if (!args.quiet) printSummary(args, shard, plan.value(), run, output.value());
   return kOk;
@@ -318,10 +330,12 @@ int sweepCommand(const SweepArgs& args) {
 
 int sweepMergeCommand(const SweepMergeArgs& args) {
   if (!tasks::isSweepMetric(args.metric))
-    return fail(rb::Status::fail("--metric: '" + args.metric + "' is not a column to plot (one of " +
-                                 tasks::sweepMetricNames() + ")"));
+    return fail(rb::Status::fail("--metric: '" + args.metric +
+                                 "' is not a column to plot (one of " + tasks::sweepMetricNames() +
+                                 ")"));
   if (args.shards.empty())
-    return fail(rb::Status::fail("sweep merge: give the shard tables to merge (OUT.csv SHARD.csv…)"));
+    return fail(
+        rb::Status::fail("sweep merge: give the shard tables to merge (OUT.csv SHARD.csv…)"));
   if (auto ok = tasks::checkTableIsAFile(args.output); !ok) return fail(ok);
   if (!args.plot.empty())
     if (auto ok = checkPlotFile(args.plot); !ok) return fail(ok);

@@ -1,4 +1,6 @@
 // render, still and compare: option checks and messages around media/ (the drawing side).
+#include "media/video.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -9,7 +11,6 @@
 #include "app/interrupt.hpp"
 #include "app/progress.hpp"
 #include "media/still.hpp"
-#include "media/video.hpp"
 #include "render/image_io.hpp"
 #include "tasks/output.hpp"
 
@@ -25,7 +26,9 @@ std::optional<render::Backend> parseBackend(const std::string& name, const std::
   return backend;
 }
 
-bool interrupted() { return interruptSignal() != 0; }
+bool interrupted() {
+  return interruptSignal() != 0;
+}
 
 // The exit status and message of a run that stopped or was interrupted before its output.
 int notWritten(const tasks::Outcome& outcome, const std::string& scene, const std::string& what) {
@@ -88,7 +91,8 @@ int renderCommand(const RenderArgs& args) {
     return notWritten(result.outcome, args.scene, "video");
   std::vector<tasks::OutputEntry> entries;
   for (const media::VideoFile& f : result.files)
-    entries.push_back({f.path, tasks::OutputKind::Video, sceneName(args.scene), f.role, f.spin, {}});
+    entries.push_back(
+        {f.path, tasks::OutputKind::Video, sceneName(args.scene), f.role, f.spin, {}});
   record(entries);
   if (!args.quiet) printVideos(result);
   return kOk;
@@ -116,25 +120,32 @@ int stillCommand(const StillArgs& args) {
   if (args.verbose) std::cerr << "still: OpenGL " << still.opengl << "\n";
   if (still.outcome.ending != tasks::Ending::Completed)
     return notWritten(still.outcome, args.scene, "still");
-  const std::string path =
-      args.output.empty() ? "out/" + std::filesystem::path(args.scene).stem().string() + "-" +
-                                std::string(rb::nameOf(still.view)) + ".png"
-                          : args.output;
+  const std::string path = args.output.empty()
+                               ? "out/" + std::filesystem::path(args.scene).stem().string() + "-" +
+                                     std::string(rb::nameOf(still.view)) + ".png"
+                               : args.output;
   if (auto made = tasks::makeParentFolder(path); !made) return fail(made);
   if (auto e = render::writePng(path, still.image); !e) return fail(e);
-  record({{path, tasks::OutputKind::Still, sceneName(args.scene), std::string(rb::nameOf(still.view)),
-           loaded->model.initial.spin, args.t}});
+  record({{path, tasks::OutputKind::Still, sceneName(args.scene),
+           std::string(rb::nameOf(still.view)), loaded->model.initial.spin, args.t}});
   if (!args.quiet) std::printf("%s\n", path.c_str());
   return kOk;
 }
 
-int runRender(Cli& cli) { return renderCommand(cli.render_args); }
-int runStill(Cli& cli) { return stillCommand(cli.still_args); }
-int runCompare(Cli& cli) { return compareCommand(cli.compare_args); }
+int runRender(Cli& cli) {
+  return renderCommand(cli.render_args);
+}
+int runStill(Cli& cli) {
+  return stillCommand(cli.still_args);
+}
+int runCompare(Cli& cli) {
+  return compareCommand(cli.compare_args);
+}
 
 int compareCommand(const CompareArgs& args) {
   if (args.channel_tolerance < 0 || args.channel_tolerance > 255) {
-    std::cerr << "--tolerance: a channel difference within 0 … 255, not " << args.channel_tolerance << "\n";
+    std::cerr << "--tolerance: a channel difference within 0 … 255, not " << args.channel_tolerance
+              << "\n";
     return kBadInput;
   }
   if (!(args.pixel_fraction >= 0 && args.pixel_fraction <= 1)) {
@@ -152,18 +163,20 @@ int compareCommand(const CompareArgs& args) {
   const render::Comparison c = render::compareImages(a, b, args.channel_tolerance);
   if (!c.same_size) {
     if (!args.quiet)
-      std::printf("differ: the images have different sizes, %dx%d and %dx%d, so no pixel was "
-                  "compared%s\n",
-                  a.width, a.height, b.width, b.height,
-                  args.diff.empty() ? "" : " and no diff image was written");
+      std::printf(
+          "differ: the images have different sizes, %dx%d and %dx%d, so no pixel was "
+          "compared%s\n",
+          a.width, a.height, b.width, b.height,
+          args.diff.empty() ? "" : " and no diff image was written");
     return 1;
   }
   const bool same = c.fraction() <= args.pixel_fraction;
   if (!args.quiet) {
-    std::printf("%s: %lld of %lld pixels (%.4f%%) differ by more than %d in a channel "
-                "(allowed %.4f%%); largest channel difference %d",
-                same ? "same" : "differ", c.differing, c.pixels, 100 * c.fraction(),
-                args.channel_tolerance, 100 * args.pixel_fraction, c.max_channel_delta);
+    std::printf(
+        "%s: %lld of %lld pixels (%.4f%%) differ by more than %d in a channel "
+        "(allowed %.4f%%); largest channel difference %d",
+        same ? "same" : "differ", c.differing, c.pixels, 100 * c.fraction(), args.channel_tolerance,
+        100 * args.pixel_fraction, c.max_channel_delta);
     if (c.differing)
       std::printf("; differing pixels within x %d–%d, y %d–%d", c.box[0], c.box[2], c.box[1],
                   c.box[3]);

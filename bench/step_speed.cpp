@@ -40,7 +40,8 @@ BENCHMARK_CAPTURE(stepScene, seed_points_euler, "seed-reversed.yaml", "points", 
 BENCHMARK_CAPTURE(stepScene, seed_points_symplectic, "seed-reversed.yaml", "points", "symplectic");
 BENCHMARK_CAPTURE(stepScene, seed_points_rk4, "seed-reversed.yaml", "points", "rk4");
 BENCHMARK_CAPTURE(stepScene, default_rolling_rk4, "rattleback.yaml", "rolling", "rk4");
-BENCHMARK_CAPTURE(stepScene, default_rolling_symplectic, "rattleback.yaml", "rolling", "symplectic");
+BENCHMARK_CAPTURE(stepScene, default_rolling_symplectic, "rattleback.yaml", "rolling",
+                  "symplectic");
 BENCHMARK_CAPTURE(stepScene, ellipsoid_rolling_rk4, "kane-levinson.yaml", "rolling", "rk4");
 
 // Preparing another run of a compiled body (issue: ≤ 0.05 ms): a copy of the per-run value
@@ -60,7 +61,8 @@ void prepareRun(benchmark::State& state, const char* scene) {
     benchmark::DoNotOptimize(s);
     spin = -spin;
   }
-  state.SetLabel(std::to_string(sim::censusOf(*m.body).bottom + sim::censusOf(*m.body).top) + " surface points shared");
+  state.SetLabel(std::to_string(sim::censusOf(*m.body).bottom + sim::censusOf(*m.body).top) +
+                 " surface points shared");
 }
 
 // What a sweep does for each run besides integrating (issue: ≤ 0.1 ms): build its scene from

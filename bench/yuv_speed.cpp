@@ -54,8 +54,8 @@ int main() {
   std::sort(ours_ms.begin(), ours_ms.end());
   std::sort(sws_ms.begin(), sws_ms.end());
   const double a = ours_ms[kPasses / 2], b = sws_ms[kPasses / 2];
-  std::printf("RGBA -> yuv420p, BT.709, %dx%d, ms per frame (median of %d passes of %d)\n",
-              kWidth, kHeight, kPasses, kFrames);
+  std::printf("RGBA -> yuv420p, BT.709, %dx%d, ms per frame (median of %d passes of %d)\n", kWidth,
+              kHeight, kPasses, kFrames);
   std::printf("render/yuv.cpp  %.3f\nswscale         %.3f  (%.1fx ours)\n", a, b, b / a);
   return 0;
 }

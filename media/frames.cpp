@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "sim/rollout.hpp"
-
 #include "tasks/drawn_points.hpp"
 
 namespace media {

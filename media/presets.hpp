@@ -9,7 +9,7 @@
 namespace media {
 
 inline constexpr std::array<std::string_view, 10> kPresets = {
-    "ultrafast", "superfast", "veryfast", "faster", "fast",
+    "ultrafast", "superfast", "veryfast", "faster",   "fast",
     "medium",    "slow",      "slower",   "veryslow", "placebo"};
 
 /// "ultrafast | superfast | …": for --help.

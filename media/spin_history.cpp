@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-
 namespace media {
 
 SpinHistory::SpinHistory(double duration, int image_width) {

@@ -14,18 +14,18 @@
 namespace media {
 
 struct StillRequest {
-  std::string scene_name;  ///< the scene's path or name: its stem titles the frame
-  double t = 0;            ///< s; past the scene's duration the run goes on to it
-  bool readouts = true;    ///< title, read-outs and the spin inset
+  std::string scene_name;    ///< the scene's path or name: its stem titles the frame
+  double t = 0;              ///< s; past the scene's duration the run goes on to it
+  bool readouts = true;      ///< title, read-outs and the spin inset
   bool transparent = false;  ///< alpha: no floor, no background, no read-outs
   render::Backend backend = render::Backend::Auto;
   std::function<bool()> cancelled;  ///< asked as the run goes: true stops (may be empty)
 };
 
 struct StillResult {
-  render::Image image;    ///< RGBA; empty unless outcome.ending is Completed
+  render::Image image;  ///< RGBA; empty unless outcome.ending is Completed
   tasks::Outcome outcome;
-  std::string opengl;     ///< the OpenGL in use
+  std::string opengl;  ///< the OpenGL in use
   render::View view = render::View::Oblique;
 };
 

@@ -173,15 +173,18 @@ void yieldToEncoders() {
   if (errno == 0) ::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), nice + 5);
 }
 
-std::string stem(const std::string& path) { return fs::path(path).stem().string(); }
+std::string stem(const std::string& path) {
+  return fs::path(path).stem().string();
+}
 
 }  // namespace
 
 rb::Status checkEncoderOptions(int crf, const std::string& preset) {
   if (crf < 1 || crf > 51)
-    return rb::Status::fail("--crf must be within 1 … 51 (lower is better; 0 would be lossless "
-                            "High 4:4:4, which browsers do not play), not " +
-                            std::to_string(crf));
+    return rb::Status::fail(
+        "--crf must be within 1 … 51 (lower is better; 0 would be lossless "
+        "High 4:4:4, which browsers do not play), not " +
+        std::to_string(crf));
   for (std::string_view p : kPresets)
     if (preset == p) return {};
   std::string names;
@@ -193,9 +196,11 @@ rb::Status checkExtension(const std::string& output, const std::string& wanted,
                           const std::string& format, bool base_allowed) {
   if (output.empty()) return {};
   std::string ext = fs::path(output).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   if (ext == wanted || (base_allowed && ext.empty())) return {};
-  return rb::Status::fail("-o " + output + ": writes " + format + "; give a name ending in " + wanted);
+  return rb::Status::fail("-o " + output + ": writes " + format + "; give a name ending in " +
+                          wanted);
 }
 
 std::jthread preloadDriver(render::Backend backend) {
@@ -211,9 +216,10 @@ rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const Vide
   if (!planned) return planned.error();
   const VideoPlan& plan = planned.value();
   if (request.both && model.initial.spin == 0)
-    return rb::Error{"", request.scene_name + ": --both renders the spin and its reverse, which "
-                         "at spin 0 are the same run; give a spin (--spin, or initial.spin in "
-                         "the scene)"};
+    return rb::Error{"", request.scene_name +
+                             ": --both renders the spin and its reverse, which "
+                             "at spin 0 are the same run; give a spin (--spin, or initial.spin in "
+                             "the scene)"};
   auto cancelled = [&] { return request.cancelled && request.cancelled(); };
   // One run per direction, sharing the body.
   std::vector<sim::Rollout> runs;
@@ -230,10 +236,10 @@ rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const Vide
   std::string base = request.output.empty() ? "out/" + stem(request.scene_name) : request.output;
   if (base.size() > 4 && base.substr(base.size() - 4) == ".mp4") base.resize(base.size() - 4);
   const std::vector<std::string> provisional =
-      request.both ? std::vector<std::string>{base + "-preferred.mp4", base + "-reversed.mp4",
-                                              base + "-both.mp4"}
-                   : std::vector<std::string>{request.output.empty() ? base + ".mp4"
-                                                                     : request.output};
+      request.both
+          ? std::vector<std::string>{base + "-preferred.mp4", base + "-reversed.mp4",
+                                     base + "-both.mp4"}
+          : std::vector<std::string>{request.output.empty() ? base + ".mp4" : request.output};
   std::vector<std::unique_ptr<Output>> outputs;
   for (std::size_t i = 0; i < provisional.size(); ++i) {
     if (auto made = tasks::makeParentFolder(provisional[i]); !made) return made.error();

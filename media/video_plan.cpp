@@ -19,14 +19,15 @@ rb::Result<VideoPlan> check(const scene::VideoSpec& v, double duration) {
                                       std::to_string(v.fps)};
   for (int side : v.size) {
     if (side < 16 || side > 8192)
-      return rb::Error{"video.size", "sides must be within 16 … 8192 pixels, not " +
-                                         std::to_string(side)};
+      return rb::Error{"video.size",
+                       "sides must be within 16 … 8192 pixels, not " + std::to_string(side)};
   }
   const auto [w, h] = std::pair{v.size[0], v.size[1]};
   if (w % 2 || h % 2)  // both sides in one message, so one retry fixes both
     return rb::Error{"video.size",
                      "sides must be even (H.264 video in yuv420p, and stills by the same rule), "
-                     "not " + std::to_string(w) + "x" + std::to_string(h) + ": try " +
+                     "not " +
+                         std::to_string(w) + "x" + std::to_string(h) + ": try " +
                          std::to_string(w + w % 2) + "x" + std::to_string(h + h % 2)};
   const auto view = rb::parseName<render::View>(v.view);
   if (!view)
@@ -72,7 +73,9 @@ namespace {
 std::string describeSpin(double spin) {
   char text[64];
   std::snprintf(text, sizeof text, "%+g rad/s, %s", spin,
-                spin > 0 ? "counter-clockwise" : spin < 0 ? "clockwise" : "no spin");
+                spin > 0   ? "counter-clockwise"
+                : spin < 0 ? "clockwise"
+                           : "no spin");
   return text;
 }
 
@@ -81,7 +84,8 @@ std::string describeSpin(double spin) {
 // The title of a run's frames, the same in its video and its stills: the scene and the spin.
 render::RenderSettings settingsOf(const VideoPlan& plan, double duration, double spin,
                                   const std::string& scene, render::Backend backend) {
-  const std::string title = std::filesystem::path(scene).stem().string() + ": spun " + describeSpin(spin);
+  const std::string title =
+      std::filesystem::path(scene).stem().string() + ": spun " + describeSpin(spin);
   render::RenderSettings s;
   s.backend = backend;
   s.width = plan.width;
@@ -92,6 +96,5 @@ render::RenderSettings settingsOf(const VideoPlan& plan, double duration, double
   s.spin_range = std::max(1.0, 1.1 * std::abs(spin));
   return s;
 }
-
 
 }  // namespace media

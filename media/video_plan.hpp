@@ -15,11 +15,11 @@ namespace media {
 using scene::kMaxFps;
 
 struct VideoPlan {
-  int fps = 30;                  ///< frames per second of video
+  int fps = 30;                    ///< frames per second of video
   int width = 1280, height = 720;  ///< pixels, even (H.264 in yuv420p halves the chroma)
   render::View view = render::View::Oblique;
-  double playback = 1;           ///< simulated seconds per second of video
-  std::int64_t frames = 0;       ///< round(duration / playback · fps), at least 1
+  double playback = 1;      ///< simulated seconds per second of video
+  std::int64_t frames = 0;  ///< round(duration / playback · fps), at least 1
 
   /// Simulated time shown by frame k, s.
   double frameTime(std::int64_t k) const { return static_cast<double>(k) * playback / fps; }

@@ -6,10 +6,10 @@
 
 #include <atomic>
 #include <chrono>
-#include <condition_variable>
-#include <mutex>
 #include <cmath>
+#include <condition_variable>
 #include <functional>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <thread>
 
@@ -23,15 +23,20 @@ namespace py = pybind11;
 /// a non-finite number, which the files write as null, is None too).
 inline py::object toPython(const nlohmann::json& j) {
   switch (j.type()) {
-    case nlohmann::json::value_t::null: return py::none();
-    case nlohmann::json::value_t::boolean: return py::bool_(j.get<bool>());
-    case nlohmann::json::value_t::number_integer: return py::int_(j.get<std::int64_t>());
-    case nlohmann::json::value_t::number_unsigned: return py::int_(j.get<std::uint64_t>());
+    case nlohmann::json::value_t::null:
+      return py::none();
+    case nlohmann::json::value_t::boolean:
+      return py::bool_(j.get<bool>());
+    case nlohmann::json::value_t::number_integer:
+      return py::int_(j.get<std::int64_t>());
+    case nlohmann::json::value_t::number_unsigned:
+      return py::int_(j.get<std::uint64_t>());
     case nlohmann::json::value_t::number_float: {
       const double v = j.get<double>();
       return std::isfinite(v) ? py::object(py::float_(v)) : py::object(py::none());
     }
-    case nlohmann::json::value_t::string: return py::str(j.get<std::string>());
+    case nlohmann::json::value_t::string:
+      return py::str(j.get<std::string>());
     case nlohmann::json::value_t::array: {
       py::list list;
       for (const auto& e : j) list.append(toPython(e));
@@ -42,7 +47,8 @@ inline py::object toPython(const nlohmann::json& j) {
       for (const auto& [k, v] : j.items()) dict[py::str(k)] = toPython(v);
       return dict;
     }
-    default: return py::none();
+    default:
+      return py::none();
   }
 }
 
@@ -53,9 +59,9 @@ inline py::object toPython(const nlohmann::json& j) {
   if (error.where) {
     py::object cls = py::module_::import("rattleback._errors").attr("SceneError");
     py::object line = error.where->line > 0 ? py::object(py::int_(error.where->line)) : py::none();
-    py::object e = cls(message, error.where->file, line,
-                       error.where->key.empty() ? py::object(py::none())
-                                                : py::object(py::str(error.where->key)));
+    py::object e = cls(
+        message, error.where->file, line,
+        error.where->key.empty() ? py::object(py::none()) : py::object(py::str(error.where->key)));
     PyErr_SetObject(cls.ptr(), e.ptr());
     throw py::error_already_set();
   }

@@ -14,10 +14,10 @@
 #include "python/convert.hpp"
 #include "python/scene_value.hpp"
 #include "tasks/analysis.hpp"
-#include "tasks/manifest.hpp"
-#include "tasks/run_json.hpp"
-#include "tasks/player_data.hpp"
 #include "tasks/check.hpp"
+#include "tasks/manifest.hpp"
+#include "tasks/player_data.hpp"
+#include "tasks/run_json.hpp"
 #include "tasks/simulate.hpp"
 #include "tasks/sweep.hpp"
 #include "tasks/sweep_jobs.hpp"
@@ -87,19 +87,20 @@ std::shared_ptr<Run> simulate(const LoadedScene& loaded, double rate, bool check
   run->scene = loaded.value.scene.file;
   run->model = model;
   run->rate = rate;
-  const tasks::SimulateResult result = interruptibleHere([&](const std::function<bool()>& cancelled) {
-    tasks::SimulateOptions options;
-    options.rate = rate;
-    options.cancelled = cancelled;
-    options.each = [&](const sim::Telemetry& s) { run->samples.push_back(s); };
-    return tasks::simulate(model, options);
-  });
+  const tasks::SimulateResult result =
+      interruptibleHere([&](const std::function<bool()>& cancelled) {
+        tasks::SimulateOptions options;
+        options.rate = rate;
+        options.cancelled = cancelled;
+        options.each = [&](const sim::Telemetry& s) { run->samples.push_back(s); };
+        return tasks::simulate(model, options);
+      });
   run->summary = result.summary;
   if (result.outcome.ending == tasks::Ending::Stopped) {
     py::object cls = py::module_::import("rattleback._errors").attr("RunStopped");
     py::object e = cls(run->scene + ": the run stopped: " + result.outcome.message,
-                       std::string(rb::nameOf(result.outcome.stop->reason)),
-                       result.outcome.stop->t, result.outcome.stop->step);
+                       std::string(rb::nameOf(result.outcome.stop->reason)), result.outcome.stop->t,
+                       result.outcome.stop->step);
     PyErr_SetObject(cls.ptr(), e.ptr());
     throw py::error_already_set();
   }
@@ -140,7 +141,9 @@ std::shared_ptr<SweepTable> sweep(const std::string& path, int jobs) {
 }
 
 // An optional number as a float, NaN when absent.
-double orNan(const std::optional<double>& v) { return v.value_or(std::nan("")); }
+double orNan(const std::optional<double>& v) {
+  return v.value_or(std::nan(""));
+}
 
 py::dict sweepColumns(const SweepTable& t) {
   py::dict d;
@@ -167,9 +170,8 @@ py::dict sweepColumns(const SweepTable& t) {
   };
   using R = tasks::SweepRow;
   d["first_reversal_s"] = numbers([](const R& r) { return orNan(r.first_reversal_s); });
-  d["reversals"] = numbers([](const R& r) {
-    return r.reversals ? static_cast<double>(*r.reversals) : std::nan("");
-  });
+  d["reversals"] = numbers(
+      [](const R& r) { return r.reversals ? static_cast<double>(*r.reversals) : std::nan(""); });
   d["final_spin"] = numbers([](const R& r) { return orNan(r.final_spin); });
   d["max_tilt_deg"] = numbers([](const R& r) { return orNan(r.max_tilt_deg); });
   d["energy_lost"] = numbers([](const R& r) { return orNan(r.energy_lost); });
@@ -187,8 +189,12 @@ void sweepToCsv(const SweepTable& t, const std::string& path) {
     py::gil_scoped_release release;
     written = tasks::writeSweepTable(path, keys, lines, sidecar);
     if (written)
-      (void)tasks::recordOutputs({{path, tasks::OutputKind::Sweep,
-                                   std::filesystem::path(t.sweep.file).stem().string(), "", {}, {}}});
+      (void)tasks::recordOutputs({{path,
+                                   tasks::OutputKind::Sweep,
+                                   std::filesystem::path(t.sweep.file).stem().string(),
+                                   "",
+                                   {},
+                                   {}}});
   }
   if (!written) raise(written.error());
 }
@@ -216,7 +222,8 @@ PYBIND11_MODULE(_core, m) {
       .def("sidecar",
            [](const Run& r) {
              return toPython(tasks::telemetrySidecar(r.scene, r.model, r.rate, r.summary,
-                                                     static_cast<std::int64_t>(r.samples.size()), r.check));
+                                                     static_cast<std::int64_t>(r.samples.size()),
+                                                     r.check));
            })
       .def_readonly("scene", &Run::scene)
       .def_readonly("rate", &Run::rate)
@@ -224,12 +231,17 @@ PYBIND11_MODULE(_core, m) {
         rb::Status written;
         {
           py::gil_scoped_release release;
-          written = tasks::writeTelemetry(path, r.scene, r.model, r.rate, r.summary, r.samples, r.check);
+          written =
+              tasks::writeTelemetry(path, r.scene, r.model, r.rate, r.summary, r.samples, r.check);
           // Listed in the folder's manifest, as the command line lists it (a failure to list
           // loses nothing: the report then places the file by its name).
           if (written)
-            (void)tasks::recordOutputs({{path, tasks::OutputKind::Telemetry,
-                                         std::filesystem::path(r.scene).stem().string(), "", {}, {}}});
+            (void)tasks::recordOutputs({{path,
+                                         tasks::OutputKind::Telemetry,
+                                         std::filesystem::path(r.scene).stem().string(),
+                                         "",
+                                         {},
+                                         {}}});
         }
         if (!written) raise(written.error());
       });
@@ -245,40 +257,50 @@ PYBIND11_MODULE(_core, m) {
         return keys;
       });
   m.def("sweep", &sweep, py::arg("path"), py::arg("jobs"));
-  m.def("player_script", [](const LoadedScene& loaded, const Run& run, const std::string& id) {
-    tasks::PlayerRun player;
-    player.id = id;
-    player.title = id;
-    player.points = tasks::drawnPointsOf(loaded.value.model);
-    for (const sim::Telemetry& s : run.samples) {
-      const Eigen::Quaterniond q = tasks::attitude(s);
-      player.poses.push_back({s.t, s.x_world.x(), s.x_world.y(), s.x_world.z(), q.w(), q.x(),
-                              q.y(), q.z(), s.spin});
-    }
-    player.poses = tasks::thinPoses(player.poses);
-    player.reversals = run.summary.reversals;
-    return tasks::playerScript(player);
-  }, py::arg("scene"), py::arg("run"), py::arg("id"));
+  m.def(
+      "player_script",
+      [](const LoadedScene& loaded, const Run& run, const std::string& id) {
+        tasks::PlayerRun player;
+        player.id = id;
+        player.title = id;
+        player.points = tasks::drawnPointsOf(loaded.value.model);
+        for (const sim::Telemetry& s : run.samples) {
+          const Eigen::Quaterniond q = tasks::attitude(s);
+          player.poses.push_back({s.t, s.x_world.x(), s.x_world.y(), s.x_world.z(), q.w(), q.x(),
+                                  q.y(), q.z(), s.spin});
+        }
+        player.poses = tasks::thinPoses(player.poses);
+        player.reversals = run.summary.reversals;
+        return tasks::playerScript(player);
+      },
+      py::arg("scene"), py::arg("run"), py::arg("id"));
   // For bench/python_speed.py: the C++ run alone (samples kept as simulate keeps them), the
   // median of `repeats` calls, s.
-  m.def("_native_seconds", [](const LoadedScene& loaded, double rate, int repeats) {
-    py::gil_scoped_release release;
-    std::vector<double> times;
-    for (int i = 0; i < repeats; ++i) {
-      std::vector<sim::Telemetry> samples;
-      tasks::SimulateOptions options;
-      options.rate = rate;
-      options.each = [&](const sim::Telemetry& x) { samples.push_back(x); };
-      const auto start = std::chrono::steady_clock::now();
-      tasks::simulate(loaded.value.model, options);
-      times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    }
-    std::sort(times.begin(), times.end());
-    return times[times.size() / 2];
-  }, py::arg("scene"), py::arg("rate"), py::arg("repeats"));
+  m.def(
+      "_native_seconds",
+      [](const LoadedScene& loaded, double rate, int repeats) {
+        py::gil_scoped_release release;
+        std::vector<double> times;
+        for (int i = 0; i < repeats; ++i) {
+          std::vector<sim::Telemetry> samples;
+          tasks::SimulateOptions options;
+          options.rate = rate;
+          options.each = [&](const sim::Telemetry& x) { samples.push_back(x); };
+          const auto start = std::chrono::steady_clock::now();
+          tasks::simulate(loaded.value.model, options);
+          times.push_back(
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        }
+        std::sort(times.begin(), times.end());
+        return times[times.size() / 2];
+      },
+      py::arg("scene"), py::arg("rate"), py::arg("repeats"));
   m.def("simulate", &simulate, py::arg("scene"), py::arg("rate"), py::arg("check") = false);
-  m.def("analyze", [](const LoadedScene& loaded, std::optional<double> spin) {
-    const sim::Model& model = loaded.value.model;
-    return toPython(tasks::analysisJson(model, tasks::analysisSpin(model, spin)));
-  }, py::arg("scene"), py::arg("spin") = py::none());
+  m.def(
+      "analyze",
+      [](const LoadedScene& loaded, std::optional<double> spin) {
+        const sim::Model& model = loaded.value.model;
+        return toPython(tasks::analysisJson(model, tasks::analysisSpin(model, spin)));
+      },
+      py::arg("scene"), py::arg("spin") = py::none());
 }

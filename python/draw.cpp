@@ -1,19 +1,19 @@
 // rattleback._draw: stills and videos for Python (media/). A module apart from _core so that
 // `import rattleback` loads no OpenGL or libav until something is drawn.
-#include <filesystem>
-
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <filesystem>
+
 #include "media/presets.hpp"
 #include "media/still.hpp"
 #include "media/video.hpp"
+#include "python/convert.hpp"
+#include "python/scene_value.hpp"
 #include "render/image_io.hpp"
 #include "tasks/manifest.hpp"
 #include "tasks/output.hpp"
-#include "python/convert.hpp"
-#include "python/scene_value.hpp"
 
 namespace py = pybind11;
 
@@ -23,17 +23,17 @@ namespace {
 render::Backend backendOf(const std::string& name) {
   const auto backend = rb::parseName<render::Backend>(name);
   if (!backend)
-    throw py::value_error("argument backend: " + rb::choices<render::Backend>() + ", not '" +
-                          name + "'");
+    throw py::value_error("argument backend: " + rb::choices<render::Backend>() + ", not '" + name +
+                          "'");
   return *backend;
 }
 
 // A run that stopped by itself is rattleback.RunStopped; Ctrl-C has raised already.
 [[noreturn]] void raiseStopped(const tasks::Outcome& outcome, const std::string& scene) {
   py::object cls = py::module_::import("rattleback._errors").attr("RunStopped");
-  py::object e = cls(scene + ": the run stopped: " + outcome.message,
-                     std::string(rb::nameOf(outcome.stop->reason)), outcome.stop->t,
-                     outcome.stop->step);
+  py::object e =
+      cls(scene + ": the run stopped: " + outcome.message,
+          std::string(rb::nameOf(outcome.stop->reason)), outcome.stop->t, outcome.stop->step);
   PyErr_SetObject(cls.ptr(), e.ptr());
   throw py::error_already_set();
 }
@@ -41,8 +41,8 @@ render::Backend backendOf(const std::string& name) {
 // The image as an H×W×4 (or ×3 without `alpha`) uint8 array, rows from the top.
 py::array_t<std::uint8_t> arrayOf(const render::Image& image, bool alpha) {
   const py::ssize_t channels = alpha ? 4 : 3;
-  py::array_t<std::uint8_t> out({static_cast<py::ssize_t>(image.height),
-                                 static_cast<py::ssize_t>(image.width), channels});
+  py::array_t<std::uint8_t> out(
+      {static_cast<py::ssize_t>(image.height), static_cast<py::ssize_t>(image.width), channels});
   std::uint8_t* p = out.mutable_data();
   const std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
   for (std::size_t i = 0; i < pixels; ++i)
@@ -51,7 +51,8 @@ py::array_t<std::uint8_t> arrayOf(const render::Image& image, bool alpha) {
 }
 
 // An H×W×3 or ×4 uint8 array (C order) as the renderer's RGBA image.
-render::Image imageOf(const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>& a) {
+render::Image imageOf(
+    const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>& a) {
   if (a.ndim() != 3 || (a.shape(2) != 3 && a.shape(2) != 4))
     throw py::value_error("an image is an H×W×3 or H×W×4 uint8 array");
   render::Image image;
@@ -79,12 +80,13 @@ py::array_t<std::uint8_t> still(const LoadedScene& loaded, double t, bool readou
   });
   if (!drawn) raise(drawn.error());
   const media::StillResult& still = drawn.value();
-  if (still.outcome.ending == tasks::Ending::Stopped) raiseStopped(still.outcome, request.scene_name);
+  if (still.outcome.ending == tasks::Ending::Stopped)
+    raiseStopped(still.outcome, request.scene_name);
   return arrayOf(still.image, transparent);
 }
 
 py::list renderVideos(const LoadedScene& loaded, const std::string& output, bool both, int crf,
-                const std::string& preset, const std::string& backend) {
+                      const std::string& preset, const std::string& backend) {
   media::VideoRequest request;
   request.scene_name = loaded.value.scene.file;
   request.output = output;
@@ -98,11 +100,16 @@ py::list renderVideos(const LoadedScene& loaded, const std::string& output, bool
   });
   if (!made) raise(made.error());
   const media::VideoResult& result = made.value();
-  if (result.outcome.ending == tasks::Ending::Stopped) raiseStopped(result.outcome, request.scene_name);
+  if (result.outcome.ending == tasks::Ending::Stopped)
+    raiseStopped(result.outcome, request.scene_name);
   std::vector<tasks::OutputEntry> entries;
   for (const media::VideoFile& f : result.files)
-    entries.push_back({f.path, tasks::OutputKind::Video,
-                       std::filesystem::path(request.scene_name).stem().string(), f.role, f.spin, {}});
+    entries.push_back({f.path,
+                       tasks::OutputKind::Video,
+                       std::filesystem::path(request.scene_name).stem().string(),
+                       f.role,
+                       f.spin,
+                       {}});
   (void)tasks::recordOutputs(entries);  // as the command line lists them
   py::list files;
   for (const media::VideoFile& f : result.files) {
@@ -123,21 +130,29 @@ py::list renderVideos(const LoadedScene& loaded, const std::string& output, bool
 
 PYBIND11_MODULE(_draw, m) {
   using namespace pyrb;
-  m.doc() = "rattleback's drawing side: stills and videos (see rattleback.still, rattleback.render).";
+  m.doc() =
+      "rattleback's drawing side: stills and videos (see rattleback.still, rattleback.render).";
   py::module_::import("rattleback._core");  // registers LoadedScene
   m.def("still", &still, py::arg("scene"), py::arg("t"), py::arg("readouts"),
         py::arg("transparent"), py::arg("backend"));
-  m.def("render", &renderVideos, py::arg("scene"), py::arg("output"), py::arg("both"), py::arg("crf"),
-        py::arg("preset"), py::arg("backend"));
-  m.def("encode_png", [](const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>& a) {
-    auto bytes = render::encodePng(imageOf(a));
-    if (!bytes) raise(bytes.error());
-    return py::bytes(reinterpret_cast<const char*>(bytes->data()), bytes->size());
-  }, py::arg("array"));
-  m.def("write_png", [](const std::string& path, const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>& a) {
-    if (auto e = tasks::makeParentFolder(path); !e) raise(e.error());
-    if (auto e = render::writePng(path, imageOf(a)); !e) raise(e.error());
-  }, py::arg("path"), py::arg("array"));
+  m.def("render", &renderVideos, py::arg("scene"), py::arg("output"), py::arg("both"),
+        py::arg("crf"), py::arg("preset"), py::arg("backend"));
+  m.def(
+      "encode_png",
+      [](const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>& a) {
+        auto bytes = render::encodePng(imageOf(a));
+        if (!bytes) raise(bytes.error());
+        return py::bytes(reinterpret_cast<const char*>(bytes->data()), bytes->size());
+      },
+      py::arg("array"));
+  m.def(
+      "write_png",
+      [](const std::string& path,
+         const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>& a) {
+        if (auto e = tasks::makeParentFolder(path); !e) raise(e.error());
+        if (auto e = render::writePng(path, imageOf(a)); !e) raise(e.error());
+      },
+      py::arg("path"), py::arg("array"));
   py::list presets;
   for (std::string_view p : media::kPresets) presets.append(std::string(p));
   m.attr("presets") = presets;

@@ -47,14 +47,18 @@ inline tasks::Overrides overridesOf(const py::dict& kw) {
 inline void bindScene(py::module_& m) {
   py::class_<LoadedScene>(m, "LoadedScene")
       .def_property_readonly("file", [](const LoadedScene& s) { return s.value.scene.file; })
-      .def_property_readonly("duration", [](const LoadedScene& s) { return s.value.model.duration; })
-      .def_property_readonly("spin", [](const LoadedScene& s) { return s.value.model.initial.spin; });
-  m.def("read_scene_file", [](const std::string& path) { return take(scene::readSceneFile(path)); },
-        py::arg("path"));
+      .def_property_readonly("duration",
+                             [](const LoadedScene& s) { return s.value.model.duration; })
+      .def_property_readonly("spin",
+                             [](const LoadedScene& s) { return s.value.model.initial.spin; });
+  m.def(
+      "read_scene_file", [](const std::string& path) { return take(scene::readSceneFile(path)); },
+      py::arg("path"));
   m.def(
       "load",
       [](const std::string& yaml, const std::string& name,
-         const std::vector<std::pair<std::string, std::string>>& values, const py::dict& overrides) {
+         const std::vector<std::pair<std::string, std::string>>& values,
+         const py::dict& overrides) {
         std::vector<scene::KeyValue> kv;
         for (const auto& [key, text] : values) kv.push_back({key, text});
         const tasks::Overrides o = overridesOf(overrides);

@@ -108,8 +108,8 @@ Camera chaseCamera(const Eigen::Vector3f& middle, const Eigen::Vector2f& heading
   const float elevation = 25.0f * static_cast<float>(M_PI) / 180;
   // Beside the body: across its long axis, so the whole length shows.
   const Eigen::Vector2f across(-heading.y(), heading.x());
-  const Eigen::Vector3f direction(std::cos(elevation) * across.x(), std::cos(elevation) * across.y(),
-                                  std::sin(elevation));
+  const Eigen::Vector3f direction(std::cos(elevation) * across.x(),
+                                  std::cos(elevation) * across.y(), std::sin(elevation));
   const float distance = 1.1f * radius / std::sin(narrow / 2);
   Camera c;
   c.eye = middle + distance * direction;

@@ -1,7 +1,7 @@
 #include "render/encoder.hpp"
 
-#include <cstdio>
 #include <cstdarg>
+#include <cstdio>
 #include <filesystem>
 #include <mutex>
 
@@ -35,7 +35,9 @@ void keepLog(void* object, int level, const char* format, va_list args) {
   last_log = text;
 }
 
-std::string lastLog() { return last_log; }
+std::string lastLog() {
+  return last_log;
+}
 
 }  // namespace
 
@@ -97,17 +99,22 @@ struct VideoEncoder::State {
 VideoEncoder::VideoEncoder() : state_(std::make_unique<State>()) {}
 VideoEncoder::~VideoEncoder() = default;
 
-const std::string& VideoEncoder::temporaryPath() const { return state_->temp; }
+const std::string& VideoEncoder::temporaryPath() const {
+  return state_->temp;
+}
 
-long long VideoEncoder::frames() const { return state_->count; }
+long long VideoEncoder::frames() const {
+  return state_->count;
+}
 
-rb::Result<std::unique_ptr<VideoEncoder>> VideoEncoder::open(
-    const std::string& path, const EncoderSettings& settings) {
+rb::Result<std::unique_ptr<VideoEncoder>> VideoEncoder::open(const std::string& path,
+                                                             const EncoderSettings& settings) {
   std::unique_ptr<VideoEncoder> encoder(new VideoEncoder());
   State& s = *encoder->state_;
   s.path = path;
   s.settings = settings;
-  if (settings.width % 2 || settings.height % 2) return rb::Error{"", path + ": width and height must be even"};
+  if (settings.width % 2 || settings.height % 2)
+    return rb::Error{"", path + ": width and height must be even"};
   // Hidden and not ending in .mp4 (no *.mp4 glob takes a half-written file); the format is
   // named explicitly below, so the name need not say it. Through links (util/output_place.hpp).
   s.temp = rb::outputPlace(path).temporary;
@@ -140,7 +147,8 @@ rb::Result<std::unique_ptr<VideoEncoder>> VideoEncoder::open(
   if (s.format->oformat->flags & AVFMT_GLOBALHEADER) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
   av_opt_set(c->priv_data, "preset", settings.preset.c_str(), 0);
   av_opt_set(c->priv_data, "crf", std::to_string(settings.crf).c_str(), 0);
-  if (int r = avcodec_open2(c, h264, nullptr); r < 0) return rb::Error{"", s.error("cannot open libx264", r)};
+  if (int r = avcodec_open2(c, h264, nullptr); r < 0)
+    return rb::Error{"", s.error("cannot open libx264", r)};
 
   s.stream = avformat_new_stream(s.format, nullptr);
   s.stream->time_base = c->time_base;
@@ -194,13 +202,17 @@ rb::Status VideoEncoder::add(const Yuv420Image& picture) {
 rb::Status VideoEncoder::finish(const std::string& final_path) {
   State& s = *state_;
   if (!final_path.empty()) s.path = final_path;
-  if (int r = avcodec_send_frame(s.codec, nullptr); r < 0) return rb::Status::fail(s.error("encoding failed", r));
+  if (int r = avcodec_send_frame(s.codec, nullptr); r < 0)
+    return rb::Status::fail(s.error("encoding failed", r));
   if (auto e = s.drain()) return rb::Status::fail(*e);
-  if (int r = av_write_trailer(s.format); r < 0) return rb::Status::fail(s.error("writing failed", r));
-  if (int r = avio_closep(&s.format->pb); r < 0) return rb::Status::fail(s.error("writing failed", r));
+  if (int r = av_write_trailer(s.format); r < 0)
+    return rb::Status::fail(s.error("writing failed", r));
+  if (int r = avio_closep(&s.format->pb); r < 0)
+    return rb::Status::fail(s.error("writing failed", r));
   std::error_code ec;
   std::filesystem::rename(s.temp, rb::outputPlace(s.path).target, ec);
-  if (ec) return rb::Status::fail(s.error("cannot move the finished file into place: " + ec.message()));
+  if (ec)
+    return rb::Status::fail(s.error("cannot move the finished file into place: " + ec.message()));
   s.finished = true;
   return {};
 }

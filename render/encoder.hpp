@@ -18,16 +18,16 @@ namespace render {
 struct EncoderSettings {
   int width = 1280, height = 720;  ///< even numbers (yuv420p)
   int fps = 30;
-  int crf = 20;                    ///< x264 quality, 0–51 (lower is better)
+  int crf = 20;  ///< x264 quality, 0–51 (lower is better)
   std::string preset = "veryfast";
-  int threads = 2;                 ///< fixed, so the same frames give the same bytes
+  int threads = 2;  ///< fixed, so the same frames give the same bytes
 };
 
 class VideoEncoder {
  public:
   /// Opens the temporary output; an error line naming `path` when impossible.
-  static rb::Result<std::unique_ptr<VideoEncoder>> open(
-      const std::string& path, const EncoderSettings& settings);
+  static rb::Result<std::unique_ptr<VideoEncoder>> open(const std::string& path,
+                                                        const EncoderSettings& settings);
   ~VideoEncoder();  ///< without finish(): removes the temporary file
 
   /// Encodes one RGBA frame (rows top to bottom, the settings' size); an error line on failure.

@@ -18,10 +18,10 @@ enum class View { Oblique, Above, Front, Side, Follow };
 
 /// The body as the renderer sees it, body frame (origin at the CM), metres.
 struct BodyPoints {
-  std::vector<Eigen::Vector3f> top;     ///< drawn red
-  std::vector<Eigen::Vector3f> bottom;  ///< drawn blue
-  float radius = 0.001f;                ///< sphere radius, m
-  float spacing = 0.003f;               ///< distance between neighbouring points, m
+  std::vector<Eigen::Vector3f> top;              ///< drawn red
+  std::vector<Eigen::Vector3f> bottom;           ///< drawn blue
+  float radius = 0.001f;                         ///< sphere radius, m
+  float spacing = 0.003f;                        ///< distance between neighbouring points, m
   Eigen::Vector2f footprint_half{0.01f, 0.05f};  ///< outline half extents across and along y, m
 };
 
@@ -45,10 +45,10 @@ struct Framing {
 /// floor it drew, where the last frame drew over it) changes how much it draws, never what, so
 /// a frame depends on its own values only (drawn in any order, it is the same).
 struct FrameInput {
-  Eigen::Vector3d position_world = Eigen::Vector3d::Zero();  ///< CM, m
+  Eigen::Vector3d position_world = Eigen::Vector3d::Zero();         ///< CM, m
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  ///< body → world
-  double t = 0;     ///< s
-  double spin = 0;  ///< n, rad/s
+  double t = 0;                                                     ///< s
+  double spin = 0;                                                  ///< n, rad/s
   Framing framing;  ///< the fixed views' camera: the same for every frame of a run
   /// (t, n) of the run's frames so far, this one included: the inset's curve.
   std::span<const std::array<float, 2>> history;
@@ -62,11 +62,11 @@ struct RenderSettings {
   int width = 1280, height = 720;  ///< pixels
   Backend backend{};               ///< OpenGL through EGL or OSMesa (Backend::Auto: EGL first)
   View view = View::Oblique;
-  std::string title;               ///< printed in the corner ("" for none)
-  bool readouts = true;            ///< time, spin and the n(t) inset
-  bool transparent = false;        ///< no floor and no background: alpha 0 but the body and its shadow
-  double duration = 1;             ///< s, the inset's time axis
-  double spin_range = 1;           ///< rad/s, the inset's ± spin axis
+  std::string title;         ///< printed in the corner ("" for none)
+  bool readouts = true;      ///< time, spin and the n(t) inset
+  bool transparent = false;  ///< no floor and no background: alpha 0 but the body and its shadow
+  double duration = 1;       ///< s, the inset's time axis
+  double spin_range = 1;     ///< rad/s, the inset's ± spin axis
   /// Every sphere's fragments at their true depth, also where the spheres are small enough to
   /// be drawn as discs (under 4 px in radius; tests compare the two).
   bool exact_sphere_depth = false;

@@ -1,5 +1,4 @@
 #include "render/gl.hpp"
-#include "util/assets.hpp"
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
@@ -14,6 +13,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "util/assets.hpp"
+
 namespace render {
 namespace {
 
@@ -23,8 +24,8 @@ thread_local GlContext* current_context = nullptr;
 template <typename Lookup>
 std::string loadApi(GlApi& api, Lookup lookup) {
   std::string missing;
-#define RATTLEBACK_GL_LOAD(name)                                          \
-  api.name = reinterpret_cast<decltype(api.name)>(lookup(#name));         \
+#define RATTLEBACK_GL_LOAD(name)                                  \
+  api.name = reinterpret_cast<decltype(api.name)>(lookup(#name)); \
   if (!api.name) missing += std::string(missing.empty() ? "" : ", ") + #name;
   RATTLEBACK_GL_FUNCTIONS(RATTLEBACK_GL_LOAD)
 #undef RATTLEBACK_GL_LOAD
@@ -84,17 +85,25 @@ class OsMesaContext final : public GlContext {
     backend_ = Backend::OsMesa;
     const OsMesaLibrary& lib = osMesa();
     if (!lib.error.empty()) return lib.error;
-    const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24,
-                              OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 3,
-                              OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+    const int attributes[] = {OSMESA_FORMAT,
+                              OSMESA_RGBA,
+                              OSMESA_DEPTH_BITS,
+                              24,
+                              OSMESA_PROFILE,
+                              OSMESA_CORE_PROFILE,
+                              OSMESA_CONTEXT_MAJOR_VERSION,
+                              3,
+                              OSMESA_CONTEXT_MINOR_VERSION,
+                              3,
+                              0};
     context_ = lib.createContextAttribs(attributes, nullptr);
     if (!context_) return "cannot create an OpenGL 3.3 core context";
     buffer_.assign(static_cast<std::size_t>(width) * height * 4, '\0');
     width_ = width;
     height_ = height;
-    if (std::string e = loadApi(api_, [&](const char* name) {
-          return reinterpret_cast<void*>(lib.getProcAddress(name));
-        });
+    if (std::string e = loadApi(
+            api_,
+            [&](const char* name) { return reinterpret_cast<void*>(lib.getProcAddress(name)); });
         !e.empty())
       return e;
     CurrentContext current(*this);
@@ -183,16 +192,20 @@ class EglContext final : public GlContext {
     std::string platform;
     if (std::string e = openEglDisplay(display_, platform); !e.empty()) return e;
     if (!eglBindAPI(EGL_OPENGL_API)) return "EGL cannot bind the OpenGL API";
-    const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
+    const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                 3,
+                                 EGL_CONTEXT_MINOR_VERSION,
+                                 3,
                                  EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                 EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+                                 EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                 EGL_NONE};
     // Surfaceless: no config and no surface; everything is drawn into our FBO.
     context_ = eglCreateContext(display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
     if (context_ == EGL_NO_CONTEXT)
       return "EGL cannot create an OpenGL 3.3 core context (error 0x" + eglHex(eglGetError()) + ")";
-    if (std::string e = loadApi(api_, [](const char* name) {
-          return reinterpret_cast<void*>(eglGetProcAddress(name));
-        });
+    if (std::string e = loadApi(
+            api_,
+            [](const char* name) { return reinterpret_cast<void*>(eglGetProcAddress(name)); });
         !e.empty())
       return e;
     CurrentContext current(*this);
@@ -277,7 +290,9 @@ std::string GlContext::createFramebuffer(int width, int height) {
   return "";
 }
 
-void GlContext::destroyFramebuffer() { deleteFramebuffer(api_, frame_); }
+void GlContext::destroyFramebuffer() {
+  deleteFramebuffer(api_, frame_);
+}
 
 void GlContext::readPixels(unsigned char* rgba) const {
   const GlApi& gl = api_;
@@ -300,7 +315,9 @@ void GlContext::releaseIfCurrent() {
   current_context = nullptr;
 }
 
-std::string assetsDir() { return rb::assetsDir(); }
+std::string assetsDir() {
+  return rb::assetsDir();
+}
 
 namespace {
 

@@ -24,6 +24,8 @@ namespace render {
 
 // The GL functions the renderer calls, looked up per backend (types from GL/gl.h's and
 // GL/glext.h's declarations; nothing is linked).
+// A table, laid out by hand:
+// clang-format off
 #define RATTLEBACK_GL_FUNCTIONS(X)                                                          \
   X(glAttachShader) X(glBindBuffer) X(glBindFramebuffer) X(glBindRenderbuffer)              \
   X(glBindVertexArray) X(glBlendFunc) X(glBufferData) X(glCheckFramebufferStatus)           \
@@ -38,6 +40,7 @@ namespace render {
   X(glUniform4f)                                                                             \
   X(glUniformMatrix4fv) X(glUseProgram) X(glVertexAttribPointer) X(glViewport)              \
   X(glBlendFuncSeparate) X(glBlitFramebuffer) X(glBufferSubData) X(glPointParameteri)
+// clang-format on
 
 struct GlApi {
 #define RATTLEBACK_GL_MEMBER(name) decltype(&::name) name = nullptr;

@@ -77,7 +77,8 @@ rb::Status writePng(const std::string& path, const Image& image) {
   const bool flushed = written && std::fflush(file.f) == 0 && !std::ferror(file.f);
   const int close_status = std::fclose(file.f);
   file.f = nullptr;
-  if (!flushed || close_status != 0) return fail(std::string("writing failed: ") + std::strerror(errno));
+  if (!flushed || close_status != 0)
+    return fail(std::string("writing failed: ") + std::strerror(errno));
   if (special) return {};
   std::error_code ec;
   std::filesystem::rename(temp, place.target, ec);

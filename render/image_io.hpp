@@ -24,8 +24,8 @@ rb::Status readPng(const std::string& path, Image& image);
 struct Comparison {
   bool same_size = false;
   long long pixels = 0;
-  long long differing = 0;     ///< pixels beyond the channel tolerance
-  int max_channel_delta = 0;   ///< largest channel difference anywhere
+  long long differing = 0;    ///< pixels beyond the channel tolerance
+  int max_channel_delta = 0;  ///< largest channel difference anywhere
   double fraction() const { return pixels ? static_cast<double>(differing) / pixels : 1.0; }
   /// Bounding box of the differing pixels (x0, y0, x1, y1), when any.
   int box[4] = {0, 0, 0, 0};

@@ -144,8 +144,12 @@ void drawLine(Image& image, float x0, float y0, float x1, float y1, float width,
 
 namespace {
 // The inset is 2/9 of the frame's height, a 40th above its bottom edge.
-int insetHeight(int image_height) { return image_height * 2 / 9; }
-int insetMargin(int image_height) { return image_height / 40; }
+int insetHeight(int image_height) {
+  return image_height * 2 / 9;
+}
+int insetMargin(int image_height) {
+  return image_height / 40;
+}
 }  // namespace
 
 int insetTop(int image_height) {
@@ -175,7 +179,8 @@ void drawSpinInset(Image& image, Overlay& font, std::span<const std::array<float
   font.text(image, x0 + pad, y0 + pad + font.lineHeight() * 3 / 4, label, {40, 40, 40, 255});
   auto to_screen = [&](const std::array<float, 2>& p) {
     const float x = left + (right - left) * static_cast<float>(p[0] / duration);
-    const float y = mid - (bottom - top) / 2 * static_cast<float>(std::clamp(p[1] / range, -1.0, 1.0));
+    const float y =
+        mid - (bottom - top) / 2 * static_cast<float>(std::clamp(p[1] / range, -1.0, 1.0));
     return std::array<float, 2>{x, y};
   };
   for (std::size_t i = 1; i < history.size(); ++i) {

@@ -28,7 +28,6 @@ void straightenAlpha(Image& image) {
 
 }  // namespace
 
-
 Renderer::Renderer(const RenderSettings& settings, const BodyPoints& body)
     : settings_(settings), body_(body) {}
 
@@ -51,7 +50,7 @@ Renderer::~Renderer() {
 }
 
 rb::Result<std::unique_ptr<Renderer>> Renderer::create(const RenderSettings& settings,
-                                                      const BodyPoints& body) {
+                                                       const BodyPoints& body) {
   std::unique_ptr<Renderer> r(new Renderer(settings, body));
   if (std::string error = r->init(); !error.empty()) return rb::Error{"", error};
   return r;
@@ -71,8 +70,7 @@ std::string Renderer::init() {
   if (!current.ok()) return "cannot make the OpenGL context current";
   const GlApi& gl = context_->api();
   try {
-    points_program_ =
-        loadProgram(gl, "points.vert", {"points.frag", "points_depth_sphere.frag"});
+    points_program_ = loadProgram(gl, "points.vert", {"points.frag", "points_depth_sphere.frag"});
     flat_points_program_ =
         loadProgram(gl, "points.vert", {"points.frag", "points_depth_flat.frag"});
     floor_program_ = loadProgram(gl, "floor.vert", {"floor.frag", "floor_common.frag"});
@@ -106,7 +104,7 @@ std::string Renderer::init() {
   gl.glBufferData(GL_ARRAY_BUFFER, data.size() * sizeof(float), data.data(), GL_STATIC_DRAW);
   gl.glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 4 * sizeof(float), nullptr);
   gl.glVertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, 4 * sizeof(float),
-                        reinterpret_cast<void*>(3 * sizeof(float)));
+                           reinterpret_cast<void*>(3 * sizeof(float)));
   gl.glEnableVertexAttribArray(0);
   gl.glEnableVertexAttribArray(1);
 
@@ -375,14 +373,17 @@ void Renderer::drawReadouts(const FrameInput& frame, Image& out) {
   if (!readoutsShown()) return;
   const ReadoutLayout layout = readoutLayout();
   const int x = layout.x;
-  if (!settings_.title.empty()) font_.text(out, x, layout.title, settings_.title, {30, 30, 30, 255});
+  if (!settings_.title.empty())
+    font_.text(out, x, layout.title, settings_.title, {30, 30, 30, 255});
   if (!settings_.readouts) return;
   char time[32], spin_text[96];
   // A spin that rounds to zero is shown as +0.00, not -0.00.
   const double spin = std::abs(frame.spin) < 0.005 ? 0.0 : frame.spin;
   std::snprintf(time, sizeof time, "t = %6.2f s", frame.t);
   std::snprintf(spin_text, sizeof spin_text, "spin n = %+6.2f rad/s  %s", spin,
-                spin > 0.05 ? "(counter-clockwise)" : spin < -0.05 ? "(clockwise)" : "");
+                spin > 0.05    ? "(counter-clockwise)"
+                : spin < -0.05 ? "(clockwise)"
+                               : "");
   const std::string one_line = std::string(time) + "    " + spin_text;
   if (x + font_.width(one_line) <= settings_.width - x) {
     font_.text(out, x, layout.first, one_line, {30, 30, 30, 255});

@@ -24,7 +24,7 @@ class Renderer {
   /// A renderer owns an OpenGL context, made current (and put back) around each of its calls,
   /// so several renderers can take turns on one thread; one thread at a time.
   static rb::Result<std::unique_ptr<Renderer>> create(const RenderSettings& settings,
-                                                                     const BodyPoints& body);
+                                                      const BodyPoints& body);
   ~Renderer();
 
   /// The backend and the GL vendor, renderer and version (for --verbose).
@@ -59,7 +59,8 @@ class Renderer {
   /// shader runs at every pixel). Only what the last frame drew over it (dirty_) is copied
   /// back. Redrawn, and copied whole, whenever the camera or the centre changes, so a frame
   /// still depends only on its own values.
-  void copyCachedFloor(const Camera& camera, const FrameInput& frame, const Eigen::Vector2f& center);
+  void copyCachedFloor(const Camera& camera, const FrameInput& frame,
+                       const Eigen::Vector2f& center);
   /// Pixels, in window coordinates (rows from the bottom), from x0, y0 up to x1, y1 exclusive.
   struct PixelRect {
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
@@ -96,10 +97,10 @@ class Renderer {
   /// Where the frame buffer may differ from the cached floor: what the last frame drew over
   /// it (drawnRect), or nothing known (the whole frame). The next frame copies only this back.
   std::optional<PixelRect> dirty_;
-  Eigen::Vector3f low_, high_;    ///< the sphere centres' box, body frame, m
-  Eigen::Vector3f half_extent_;   ///< body half extents, m
-  float middle_height_ = 0;       ///< height of the body's middle above its CM, m
-  float radius_ = 0;              ///< the largest distance of a drawn point from the CM, m
+  Eigen::Vector3f low_, high_;   ///< the sphere centres' box, body frame, m
+  Eigen::Vector3f half_extent_;  ///< body half extents, m
+  float middle_height_ = 0;      ///< height of the body's middle above its CM, m
+  float radius_ = 0;             ///< the largest distance of a drawn point from the CM, m
 };
 
 }  // namespace render

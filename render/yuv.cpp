@@ -12,7 +12,9 @@ namespace {
 // 0 … 1. The weights below take R, G, B in 0 … 255, in fixed point with 14 fraction bits.
 constexpr double kKr = 0.2126, kKb = 0.0722, kKg = 1 - kKr - kKb;
 constexpr int kBits = 14;
-constexpr int fixed(double v) { return static_cast<int>(v * (1 << kBits) + (v < 0 ? -0.5 : 0.5)); }
+constexpr int fixed(double v) {
+  return static_cast<int>(v * (1 << kBits) + (v < 0 ? -0.5 : 0.5));
+}
 constexpr double kLuma = 219.0 / 255, kCb = 224.0 / 255 / (2 * (1 - kKb)),
                  kCr = 224.0 / 255 / (2 * (1 - kKr));
 constexpr int kYr = fixed(kLuma * kKr), kYg = fixed(kLuma * kKg), kYb = fixed(kLuma * kKb);
@@ -21,10 +23,10 @@ constexpr int kVr = fixed(kCr * (1 - kKr)), kVg = fixed(-kCr * kKg), kVb = fixed
 
 // Luma of two rows, and each column's R, G, B summed over both (for the chroma). The loops
 // are plain so that the compiler vectorises them; built for AVX2 as well, chosen at run time.
-__attribute__((target_clones("avx2", "default")))
-void lumaOfRowPair(const std::uint8_t* __restrict a, const std::uint8_t* __restrict b,
-                   std::uint8_t* __restrict y_a, std::uint8_t* __restrict y_b,
-                   std::int16_t* __restrict sums, int width) {
+__attribute__((target_clones("avx2", "default"))) void lumaOfRowPair(
+    const std::uint8_t* __restrict a, const std::uint8_t* __restrict b,
+    std::uint8_t* __restrict y_a, std::uint8_t* __restrict y_b, std::int16_t* __restrict sums,
+    int width) {
   constexpr int offset = (16 << kBits) + (1 << (kBits - 1));  // +16, rounded
   std::int16_t* __restrict r_sum = sums;
   std::int16_t* __restrict g_sum = sums + width;
@@ -43,10 +45,10 @@ void lumaOfRowPair(const std::uint8_t* __restrict a, const std::uint8_t* __restr
 // One chroma row from a row pair's column sums: the sample of columns 2i and 2i+1 is centred
 // on column 2i, so it weighs columns 2i−1, 2i, 2i+1 by ¼, ½, ¼ (column 0 stands in for −1).
 // With the two rows that is 8 × the mean colour.
-__attribute__((target_clones("avx2", "default")))
-void chromaOfRowPair(const std::int16_t* __restrict sums, std::uint8_t* __restrict u,
-                     std::uint8_t* __restrict v, int width) {
-  constexpr int shift = kBits + 3;                            // ÷ 8 for the weights
+__attribute__((target_clones("avx2", "default"))) void chromaOfRowPair(
+    const std::int16_t* __restrict sums, std::uint8_t* __restrict u, std::uint8_t* __restrict v,
+    int width) {
+  constexpr int shift = kBits + 3;                             // ÷ 8 for the weights
   constexpr int offset = (128 << shift) + (1 << (shift - 1));  // +128, rounded
   const std::int16_t* r = sums;
   const std::int16_t* g = sums + width;

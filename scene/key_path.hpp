@@ -68,8 +68,8 @@ inline void put(YAML::Node node, const KeyPath& path, std::size_t depth, const Y
 // has exactly one of them, and one given with the other is left for the loader to refuse.
 template <typename Keys>
 void replaceStepSetting(YAML::Node root, const Keys& given) {
-  for (const auto& [set, other] : {std::pair{"simulation.dt", "tolerance"},
-                                   std::pair{"simulation.tolerance", "dt"}}) {
+  for (const auto& [set, other] :
+       {std::pair{"simulation.dt", "tolerance"}, std::pair{"simulation.tolerance", "dt"}}) {
     if (given.count(set) && !given.count(std::string("simulation.") + other) &&
         root["simulation"].IsMap())
       root["simulation"].remove(other);

@@ -1,18 +1,19 @@
 #include "scene/loader.hpp"
-#include "scene/key_path.hpp"
-#include "scene/tree.hpp"
-#include "sim/model.hpp"
 
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <cstdio>
 #include <fstream>
 #include <sstream>
+
+#include "scene/key_path.hpp"
+#include "scene/tree.hpp"
+#include "sim/model.hpp"
 
 namespace scene {
 namespace {
@@ -37,16 +38,14 @@ class MapReader {
             std::initializer_list<const char*> allowed)
       : path_(std::move(path)), line_(line), out_(out) {
     if (!node.IsMap())
-      throw Failure{line_, path_.empty() ? "scene" : path_,
-                    "must be a map of keys (key: value)"};
+      throw Failure{line_, path_.empty() ? "scene" : path_, "must be a map of keys (key: value)"};
     std::set<std::string> seen;
     for (const auto& entry : node) {
       const std::string key = entry.first.as<std::string>();
       if (!seen.insert(key).second)
         throw Failure{lineOf(entry.first), join(path_, key), "is given twice"};
-      if (std::find_if(allowed.begin(), allowed.end(), [&](const char* name) {
-            return key == name;
-          }) == allowed.end()) {
+      if (std::find_if(allowed.begin(), allowed.end(),
+                       [&](const char* name) { return key == name; }) == allowed.end()) {
         std::string names;
         for (const char* name : allowed) names += std::string(names.empty() ? "" : ", ") + name;
         throw Failure{lineOf(entry.first), join(path_, key),
@@ -132,8 +131,8 @@ class MapReader {
     if (node.IsScalar() && node.Tag() == "!")
       fail(key, "must be a number, not the quoted string \"" + node.Scalar() + "\"");
     if (!node.IsScalar() || !YAML::convert<double>::decode(node, v))
-      fail(key, "must be a number, not '" + (node.IsScalar() ? node.Scalar() : "a list or map") +
-                    "'");
+      fail(key,
+           "must be a number, not '" + (node.IsScalar() ? node.Scalar() : "a list or map") + "'");
     return v;
   }
 
@@ -154,84 +153,87 @@ class MapReader {
 // Reads one section whose keys must be among `allowed`. A missing optional section keeps the
 // spec's defaults.
 template <typename Fill>
-void section(MapReader& parent, const std::string& key,
-             std::initializer_list<const char*> allowed, Fill fill) {
+void section(MapReader& parent, const std::string& key, std::initializer_list<const char*> allowed,
+             Fill fill) {
   if (auto reader = parent.child(key, allowed)) fill(*reader);
 }
 
 void readBody(MapReader& root, sim::BodySpec& b) {
   root.require("body");
-  section(root, "body",
-          {"shape", "paraboloid", "dents", "grid", "mass_properties", "mass", "ellipsoid", "inertia"},
-          [&](MapReader& r) {
-    r.read("shape", b.shape);
-    r.require("mass", "mass: 0.059 (kg)");
-    r.read("mass", b.mass);
-    // Each shape has its own keys; a key of the other shape is an error, not ignored.
-    const bool ellipsoid = b.shape == "ellipsoid";
-    for (const char* key : {"mass_properties", "paraboloid", "dents", "grid"})
-      if (ellipsoid && r.has(key)) r.fail(key, "belongs to shape: paraboloid");
-    r.read("mass_properties", b.mass_properties);
-    for (const char* key : {"ellipsoid", "inertia"})
-      if (!ellipsoid && r.has(key)) r.fail(key, "belongs to shape: ellipsoid");
-    if (ellipsoid) {
-      r.require("ellipsoid", "ellipsoid: {semi_axes: [0.03, 0.20, 0.02], center: [0, 0, 0.01]}");
-      r.require("inertia",
-                "inertia: [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] (kg m², about the CM)");
-      r.read("inertia", b.inertia);
-    } else {
-      r.require("paraboloid", "paraboloid: {a: 1.0, p: 0.5, q: 0.0, s: 0.03, top: 0.5}");
-      r.require("grid", "grid: {dx: 0.05, dy: 0.05, dz: 0.05}");
-    }
-    section(r, "ellipsoid", {"semi_axes", "center"}, [&](MapReader& e) {
-      e.require("semi_axes");
-      e.read("semi_axes", b.ellipsoid.semi_axes);
-      e.read("center", b.ellipsoid.center);
-    });
-    section(r, "paraboloid", {"a", "p", "q", "s", "top"}, [&](MapReader& p) {
-      for (const char* key : {"a", "p", "s", "top"}) p.require(key);
-      p.read("a", b.paraboloid.a);
-      p.read("p", b.paraboloid.p);
-      p.read("q", b.paraboloid.q);
-      p.read("s", b.paraboloid.s);
-      p.read("top", b.paraboloid.top);
-    });
-    section(r, "dents", {"scale", "at", "inset"}, [&](MapReader& d) {
-      d.require("scale");
-      d.require("at");
-      b.dents.emplace();
-      d.read("scale", b.dents->scale);
-      d.read("at", b.dents->at);
-      d.read("inset", b.dents->inset);
-    });
-    section(r, "grid", {"dx", "dy", "dz"}, [&](MapReader& g) {
-      for (const char* key : {"dx", "dy", "dz"}) g.require(key);
-      g.read("dx", b.grid.dx);
-      g.read("dy", b.grid.dy);
-      g.read("dz", b.grid.dz);
-    });
-  });
+  section(
+      root, "body",
+      {"shape", "paraboloid", "dents", "grid", "mass_properties", "mass", "ellipsoid", "inertia"},
+      [&](MapReader& r) {
+        r.read("shape", b.shape);
+        r.require("mass", "mass: 0.059 (kg)");
+        r.read("mass", b.mass);
+        // Each shape has its own keys; a key of the other shape is an error, not ignored.
+        const bool ellipsoid = b.shape == "ellipsoid";
+        for (const char* key : {"mass_properties", "paraboloid", "dents", "grid"})
+          if (ellipsoid && r.has(key)) r.fail(key, "belongs to shape: paraboloid");
+        r.read("mass_properties", b.mass_properties);
+        for (const char* key : {"ellipsoid", "inertia"})
+          if (!ellipsoid && r.has(key)) r.fail(key, "belongs to shape: ellipsoid");
+        if (ellipsoid) {
+          r.require("ellipsoid",
+                    "ellipsoid: {semi_axes: [0.03, 0.20, 0.02], center: [0, 0, 0.01]}");
+          r.require(
+              "inertia",
+              "inertia: [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] (kg m², about the CM)");
+          r.read("inertia", b.inertia);
+        } else {
+          r.require("paraboloid", "paraboloid: {a: 1.0, p: 0.5, q: 0.0, s: 0.03, top: 0.5}");
+          r.require("grid", "grid: {dx: 0.05, dy: 0.05, dz: 0.05}");
+        }
+        section(r, "ellipsoid", {"semi_axes", "center"}, [&](MapReader& e) {
+          e.require("semi_axes");
+          e.read("semi_axes", b.ellipsoid.semi_axes);
+          e.read("center", b.ellipsoid.center);
+        });
+        section(r, "paraboloid", {"a", "p", "q", "s", "top"}, [&](MapReader& p) {
+          for (const char* key : {"a", "p", "s", "top"}) p.require(key);
+          p.read("a", b.paraboloid.a);
+          p.read("p", b.paraboloid.p);
+          p.read("q", b.paraboloid.q);
+          p.read("s", b.paraboloid.s);
+          p.read("top", b.paraboloid.top);
+        });
+        section(r, "dents", {"scale", "at", "inset"}, [&](MapReader& d) {
+          d.require("scale");
+          d.require("at");
+          b.dents.emplace();
+          d.read("scale", b.dents->scale);
+          d.read("at", b.dents->at);
+          d.read("inset", b.dents->inset);
+        });
+        section(r, "grid", {"dx", "dy", "dz"}, [&](MapReader& g) {
+          for (const char* key : {"dx", "dy", "dz"}) g.require(key);
+          g.read("dx", b.grid.dx);
+          g.read("dy", b.grid.dy);
+          g.read("dz", b.grid.dz);
+        });
+      });
 }
 
 void readContact(MapReader& root, sim::ContactSpec& c) {
   root.require("contact");
-  section(root, "contact",
-          {"model", "stiffness", "damping", "friction", "friction_law", "slip_velocity",
-           "air_drag"},
-          [&](MapReader& r) {
-    r.read("model", c.model);
-    // A misspelt model is reported as such (by the check after loading), not as a missing
-    // stiffness.
-    const auto model = rb::parseName<sim::ContactModel>(c.model);
-    if (model && *model != sim::ContactModel::Rolling)
-      r.require("stiffness", "stiffness: 2.0e4 (N/m), or model: rolling, which needs none");
-    r.read("stiffness", c.stiffness);
-    r.read("damping", c.damping);
-    r.read("friction", c.friction);
-    r.read("friction_law", c.friction_law);
-    r.read("slip_velocity", c.slip_velocity);
-    r.read("air_drag", c.air_drag);
-  });
+  section(
+      root, "contact",
+      {"model", "stiffness", "damping", "friction", "friction_law", "slip_velocity", "air_drag"},
+      [&](MapReader& r) {
+        r.read("model", c.model);
+        // A misspelt model is reported as such (by the check after loading), not as a missing
+        // stiffness.
+        const auto model = rb::parseName<sim::ContactModel>(c.model);
+        if (model && *model != sim::ContactModel::Rolling)
+          r.require("stiffness", "stiffness: 2.0e4 (N/m), or model: rolling, which needs none");
+        r.read("stiffness", c.stiffness);
+        r.read("damping", c.damping);
+        r.read("friction", c.friction);
+        r.read("friction_law", c.friction_law);
+        r.read("slip_velocity", c.slip_velocity);
+        r.read("air_drag", c.air_drag);
+      });
 }
 
 void readRest(MapReader& root, sim::SceneSpec& s) {
@@ -268,9 +270,12 @@ void readVideo(MapReader& root, VideoSpec& v) {
 std::string printable(const std::string& text) {
   std::string out;
   for (unsigned char c : text) {
-    if (c == '\n') out += "\\n";
-    else if (c == '\t') out += "\\t";
-    else if (c == '\r') out += "\\r";
+    if (c == '\n')
+      out += "\\n";
+    else if (c == '\t')
+      out += "\\t";
+    else if (c == '\r')
+      out += "\\r";
     else if (c < 0x20 || c == 0x7f) {
       char hex[8];
       std::snprintf(hex, sizeof hex, "\\x%02x", c);
@@ -313,8 +318,9 @@ rb::Result<Loaded> loadTree(const YAML::Node& root_node, const std::string& name
   out.overrides = places;
   try {
     if (!root_node.IsDefined() || root_node.IsNull())
-      return rb::Error{"", printable(name) + ":1: the scene is empty; expected keys such as "
-                                             "body, contact, simulation"};
+      return rb::Error{"", printable(name) +
+                               ":1: the scene is empty; expected keys such as "
+                               "body, contact, simulation"};
     MapReader root(root_node, "", 1, out,
                    {"units", "body", "contact", "gravity", "initial", "simulation", "video"});
     readBody(root, out.spec.body);
@@ -364,8 +370,9 @@ rb::Result<Loaded> loadWithValues(const std::string& yaml, const std::string& na
     };
     const auto path = splitKey(kv.key);
     if (!path)
-      return fail("is not a scene key: give dotted keys such as initial.spin or "
-                  "body.dents.at[0]");
+      return fail(
+          "is not a scene key: give dotted keys such as initial.spin or "
+          "body.dents.at[0]");
     if (!root.IsMap()) return fail("cannot be set: the scene is not a map of keys");
     YAML::Node value;
     try {
@@ -412,8 +419,7 @@ rb::Result<Loaded> loadFile(const std::string& path) {
 rb::Error locate(const Loaded& loaded, const rb::Error& error) {
   if (auto it = loaded.overrides.find(error.key); it != loaded.overrides.end()) {
     // An option (--fps) is named alone, not with the key it sets; a sweep's line with it.
-    const bool option =
-        it->second.rfind("--", 0) == 0 || it->second.rfind("argument ", 0) == 0;
+    const bool option = it->second.rfind("--", 0) == 0 || it->second.rfind("argument ", 0) == 0;
     rb::Error e{"", printable(it->second + ": " + (option ? "" : error.key + " ") + error.message)};
     e.where = rb::Error::Where{it->second, 0, error.key};
     return e;

@@ -32,8 +32,8 @@ struct VideoSpec {
 struct Loaded {
   sim::SceneSpec spec;
   VideoSpec video;
-  std::string file;                  ///< as given, for messages
-  std::map<std::string, int> lines;  ///< dotted key → 1-based line
+  std::string file;                              ///< as given, for messages
+  std::map<std::string, int> lines;              ///< dotted key → 1-based line
   std::map<std::string, std::string> overrides;  ///< dotted key → the option that set it
 };
 

@@ -50,7 +50,8 @@ std::vector<std::string> rangeValues(const YAML::Node& spec, const std::string& 
   for (const auto& entry : spec) {
     const std::string key = entry.first.as<std::string>();
     if (key != "from" && key != "to" && key != "count" && key != "scale")
-      throw SweepFailure{where + " has '" + key + "', not a key of a range (from, to, count, scale)"};
+      throw SweepFailure{where + " has '" + key +
+                         "', not a key of a range (from, to, count, scale)"};
   }
   const double from = number(spec["from"], where, "from");
   const double to = number(spec["to"], where, "to");
@@ -67,13 +68,13 @@ std::vector<std::string> rangeValues(const YAML::Node& spec, const std::string& 
     throw SweepFailure{where + " scale must be linear or log, not '" + scale + "'"};
   if (scale == "log" && !(from > 0 && to > 0))
     throw SweepFailure{where + " a log range needs from and to above 0 (from " + rangeValue(from) +
-                  ", to " + rangeValue(to) + ")"};
+                       ", to " + rangeValue(to) + ")"};
   if (count == 1 && from != to)
     throw SweepFailure{where + " count 1 needs from = to (or give a list of one value)"};
   std::vector<std::string> values;
   for (int k = 0; k < count; ++k) {
     const double f = count == 1 ? 0.0 : static_cast<double>(k) / (count - 1);
-    const double v = k == count - 1 ? to
+    const double v = k == count - 1   ? to
                      : scale == "log" ? from * std::pow(to / from, f)
                                       : from + (to - from) * f;
     values.push_back(rangeValue(v));
@@ -119,7 +120,7 @@ struct SweepScenes::Impl {
   std::string base_name;
   YAML::Node base;
   std::vector<KeyPath> paths;
-  std::map<std::string, std::string> places;     // varied key (without index) → its place
+  std::map<std::string, std::string> places;  // varied key (without index) → its place
   // yaml-cpp's nodes share reference-counted memory that is not safe to touch from two threads
   // at once; building a scene takes tens of microseconds, so one lock costs nothing measurable.
   mutable std::mutex mutex;
@@ -171,8 +172,9 @@ rb::Result<Sweep> loadSweep(const std::string& path) {
   sweep.file = path;
   std::error_code ec;
   if (fs::is_directory(path, ec))
-    return rb::Error{"", path + ": is a folder, not a sweep file (give a .yaml file, e.g. "
-                                "sweeps/spin-drag.yaml)"};
+    return rb::Error{"", path +
+                             ": is a folder, not a sweep file (give a .yaml file, e.g. "
+                             "sweeps/spin-drag.yaml)"};
   if (!fs::exists(path, ec)) return rb::Error{"", path + ": no such sweep file"};
   YAML::Node root;
   try {
@@ -193,22 +195,25 @@ rb::Result<Sweep> loadSweep(const std::string& path) {
     bool has_base = false, has_vary = false, has_duration = false;
     for (const auto& entry : root) {
       const std::string key = entry.first.as<std::string>();
-      if (key == "base") base_key = entry.first, base_node = entry.second, has_base = true;
-      else if (key == "vary") vary_key = entry.first, vary = entry.second, has_vary = true;
-      else if (key == "duration") duration_key = entry.first, duration = entry.second, has_duration = true;
+      if (key == "base")
+        base_key = entry.first, base_node = entry.second, has_base = true;
+      else if (key == "vary")
+        vary_key = entry.first, vary = entry.second, has_vary = true;
+      else if (key == "duration")
+        duration_key = entry.first, duration = entry.second, has_duration = true;
       else
         throw SweepFailure{at(entry.first) + ": " + key +
-                      " is not a key of a sweep (known: base, vary, duration)"};
+                           " is not a key of a sweep (known: base, vary, duration)"};
     }
-    if (!has_base) throw SweepFailure{path + ":1: base is required: the scene file the runs start from"};
+    if (!has_base)
+      throw SweepFailure{path + ":1: base is required: the scene file the runs start from"};
     if (!base_node.IsScalar() || base_node.Scalar().empty())
       throw SweepFailure{at(base_key) + ": base must be the path of a scene file"};
     fs::path base = base_node.Scalar();
     if (base.is_relative()) base = fs::path(path).parent_path() / base;
     sweep.base = base.lexically_normal().string();
     auto loaded_base = loadFile(sweep.base);
-    if (!loaded_base)
-      throw SweepFailure{at(base_key) + ": base: " + loaded_base.error().text()};
+    if (!loaded_base) throw SweepFailure{at(base_key) + ": base: " + loaded_base.error().text()};
     if (has_duration) {
       const double d = number(duration, at(duration_key) + ":", "duration");
       if (!(d > 0)) throw SweepFailure{at(duration_key) + ": duration must be above 0 s"};
@@ -216,7 +221,7 @@ rb::Result<Sweep> loadSweep(const std::string& path) {
     }
     if (!has_vary || !vary.IsMap() || vary.size() == 0)
       throw SweepFailure{(has_vary ? at(vary_key) : path + ":1") +
-                    ": vary must map scene keys to their values, e.g. initial.spin: [-5, 5]"};
+                         ": vary must map scene keys to their values, e.g. initial.spin: [-5, 5]"};
 
     YAML::Node base_tree = YAML::LoadFile(sweep.base);
     std::set<std::string> keys;
@@ -228,8 +233,9 @@ rb::Result<Sweep> loadSweep(const std::string& path) {
       const std::string where = axis.place + ": " + axis.key;
       const auto key_path = splitKey(axis.key);
       if (!key_path)
-        throw SweepFailure{where + " is not a scene key (dotted, e.g. contact.air_drag or "
-                              "body.dents.at[0])"};
+        throw SweepFailure{where +
+                           " is not a scene key (dotted, e.g. contact.air_drag or "
+                           "body.dents.at[0])"};
       if (!keys.insert(axis.key).second) throw SweepFailure{where + " is varied twice"};
       if (key_path->parts.front() == "video")
         throw SweepFailure{where + ": a sweep only simulates; video keys do not change a run"};
@@ -251,7 +257,7 @@ rb::Result<Sweep> loadSweep(const std::string& path) {
         const YAML::Node list = find(base_tree, *key_path);
         if (!list.IsSequence() || list.size() <= *key_path->index)
           throw SweepFailure{where + ": the base scene has no list " + withoutIndex(axis.key) +
-                        " with an element " + std::to_string(*key_path->index)};
+                             " with an element " + std::to_string(*key_path->index)};
       }
       // The key must be one the scene knows: put its first value into the base and see
       // whether the loader rejects the key itself (a bad value only refuses rows).
@@ -265,7 +271,7 @@ rb::Result<Sweep> loadSweep(const std::string& path) {
       runs *= static_cast<double>(axis.values.size());
       if (runs > static_cast<double>(kMaxRows))
         throw SweepFailure{where + ": the axes so far make " + rangeValue(runs) +
-                      " runs; at most 1e8 in one sweep (split it)"};
+                           " runs; at most 1e8 in one sweep (split it)"};
       sweep.axes.push_back(std::move(axis));
     }
   } catch (const SweepFailure& f) {

@@ -1,6 +1,6 @@
 // Sweep files (YAML): a base scene and axes of values for any of its keys; the sweep is the
-// product of the axes, first axis slowest (docs/scenes.md "Sweep files"). Errors name file, line and key,
-// as for scenes.
+// product of the axes, first axis slowest (docs/scenes.md "Sweep files"). Errors name file, line
+// and key, as for scenes.
 //
 //   base: ../scenes/rattleback.yaml        # relative to the sweep file
 //   vary:
@@ -22,7 +22,7 @@
 namespace scene {
 
 struct SweepAxis {
-  std::string key;  ///< dotted scene key, optionally ending in [i] for an element of a list
+  std::string key;    ///< dotted scene key, optionally ending in [i] for an element of a list
   std::string place;  ///< "sweeps/x.yaml:4", where the axis is written
   /// Each value as YAML flow text: what goes into the scene, and into the table.
   std::vector<std::string> values;

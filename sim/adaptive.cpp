@@ -49,7 +49,8 @@ class PiStepAdjuster {
 };
 
 using Stepper = odeint::runge_kutta_dopri5<Vector>;
-using Checker = odeint::default_error_checker<double, Stepper::algebra_type, Stepper::operations_type>;
+using Checker =
+    odeint::default_error_checker<double, Stepper::algebra_type, Stepper::operations_type>;
 using Controlled = odeint::controlled_runge_kutta<Stepper, Checker, PiStepAdjuster>;
 using Dense = odeint::dense_output_runge_kutta<Controlled>;
 
@@ -132,8 +133,8 @@ State AdaptiveStepper::step(std::int64_t step_index) {
   Impl& m = *impl_;
   // Odeint copies the system it is given; a small forwarding lambda keeps one Impl counting.
   Impl* self = &m;
-  const auto interval = m.dense.do_step(
-      [self](const Vector& y, Vector& dydt, double t) { self->rates(y, dydt, t); });
+  const auto interval =
+      m.dense.do_step([self](const Vector& y, Vector& dydt, double t) { self->rates(y, dydt, t); });
   State s = unpack(m.dense.current_state(), m.scales, interval.second * m.scales.time);
   s.step = step_index;
   return s;
@@ -145,7 +146,9 @@ State AdaptiveStepper::at(double t) const {
   return unpack(y, impl_->scales, t);
 }
 
-std::int64_t AdaptiveStepper::evaluations() const { return impl_->evaluations; }
+std::int64_t AdaptiveStepper::evaluations() const {
+  return impl_->evaluations;
+}
 
 // Dormand–Prince with first-same-as-last: every try of a step evaluates the equations six
 // times (stages 2–7, the last at the new point), and the start once.

@@ -76,8 +76,8 @@ ModePairs modePairs(const Model& rolling, double spin) {
   for (int j = 0; j < 5; ++j) {
     Vector5d step = Vector5d::Zero();
     step(j) = eps;
-    J.col(j) = (rollingRates(rolling, steady + step) - rollingRates(rolling, steady - step)) /
-               (2 * eps);
+    J.col(j) =
+        (rollingRates(rolling, steady + step) - rollingRates(rolling, steady - step)) / (2 * eps);
   }
   const Eigen::EigenSolver<Matrix5d> solver(J);
   const Eigen::Matrix<std::complex<double>, 5, 5> vectors = solver.eigenvectors();

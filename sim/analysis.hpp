@@ -11,10 +11,10 @@ namespace sim {
 
 /// The upright rest: the CM above the contact point and the bottom's curvature there.
 struct Rest {
-  double h = 0;                        ///< CM height above the rest contact, m
-  Eigen::Vector2d radii;               ///< principal radii of curvature, ascending, m
-  bool stable = false;                 ///< h below both radii (Bondi 1986: p<1, s<1,
-                                       ///< (1−p)(1−s) > q² in his units)
+  double h = 0;           ///< CM height above the rest contact, m
+  Eigen::Vector2d radii;  ///< principal radii of curvature, ascending, m
+  bool stable = false;    ///< h below both radii (Bondi 1986: p<1, s<1,
+                          ///< (1−p)(1−s) > q² in his units)
 };
 Rest restOf(const Model& model);
 
@@ -22,7 +22,7 @@ Rest restOf(const Model& model);
 /// (u = Rᵀẑ, two components) and ω_body (three); one is zero (the spin itself), the other
 /// four are the roll (rocking about the long axis) and pitch (about the short axis) modes.
 struct Linearisation {
-  double spin = 0;                               ///< rad/s
+  double spin = 0;                                ///< rad/s
   std::vector<std::complex<double>> eigenvalues;  ///< 1/s
   double roll_growth = 0, pitch_growth = 0;       ///< largest real part in each mode, 1/s
   double roll_hz = 0, pitch_hz = 0;               ///< |imaginary part| / 2π, Hz

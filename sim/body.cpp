@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <functional>
+#include <limits>
 
 namespace sim {
 namespace {
@@ -78,12 +78,12 @@ std::int64_t estimateGridPoints(const Paraboloid& shape, const Grid& grid) {
   // In floating point throughout: a spacing typed wrong (1e-9) makes counts past any integer,
   // and halfColumns' and zLevels' int would overflow (and pass the check below as negative).
   const Eigen::Vector2d half = shape.rimHalfWidths();
-  const double columns = 4.0 * std::floor(half.x() / grid.dx + 0.5) * std::floor(half.y() / grid.dy + 0.5);
+  const double columns =
+      4.0 * std::floor(half.x() / grid.dx + 0.5) * std::floor(half.y() / grid.dy + 0.5);
   const double levels = std::floor((shape.top + shape.a) / grid.dz + 1e-9) + 1.0;
   if (!std::isfinite(columns * levels)) return std::numeric_limits<std::int64_t>::max();
   const double bound = columns * levels;  // the bounding box: an upper bound
-  return bound > 9e18 ? std::numeric_limits<std::int64_t>::max()
-                      : static_cast<std::int64_t>(bound);
+  return bound > 9e18 ? std::numeric_limits<std::int64_t>::max() : static_cast<std::int64_t>(bound);
 }
 
 namespace {
@@ -94,7 +94,8 @@ namespace {
 int lastLevelAbove(const Paraboloid& shape, double dz, int nz, double z_bottom) {
   const auto z = [&](int k) { return shape.top - k * dz; };
   const double guess = std::floor((shape.top - z_bottom) / dz);  // NaN: every level passes
-  int k = std::isnan(guess) ? nz : static_cast<int>(std::clamp(guess, -1.0, static_cast<double>(nz)));
+  int k =
+      std::isnan(guess) ? nz : static_cast<int>(std::clamp(guess, -1.0, static_cast<double>(nz)));
   while (k < nz && z(k + 1) >= z_bottom) ++k;
   while (k >= 0 && z(k) < z_bottom) --k;
   return k;
@@ -105,7 +106,8 @@ int firstLevelBelow(const Paraboloid& shape, double dz, int nz, double z_dent) {
   const auto z = [&](int k) { return shape.top - k * dz; };
   if (!(z(0) >= z_dent)) return 0;  // no dent here (z_dent = +inf, or NaN), or below the top
   const double guess = std::floor((shape.top - z_dent) / dz) + 1;
-  int k = std::isnan(guess) ? 0 : static_cast<int>(std::clamp(guess, 0.0, static_cast<double>(nz) + 1));
+  int k =
+      std::isnan(guess) ? 0 : static_cast<int>(std::clamp(guess, 0.0, static_cast<double>(nz) + 1));
   while (k > 0 && !(z(k - 1) >= z_dent)) --k;
   while (k <= nz && z(k) >= z_dent) ++k;
   return k;
@@ -125,18 +127,22 @@ void forEachColumn(const Paraboloid& shape, const std::optional<Dents>& dents, c
       const double x = (i + 0.5) * grid.dx;
       const double z_bottom = shape.bottom(x, y);
       if (z_bottom > shape.top) continue;
-      const double z_dent = dents ? dents->surface(shape, x, y)
-                                  : std::numeric_limits<double>::infinity();
+      const double z_dent =
+          dents ? dents->surface(shape, x, y) : std::numeric_limits<double>::infinity();
       // The column's points: z_k = top − k dz with z_bottom ≤ z_k < z_dent (seed appendix).
-      GridColumn column{x, y, firstLevelBelow(shape, grid.dz, nz, z_dent),
-                        lastLevelAbove(shape, grid.dz, nz, z_bottom), i < 0 ? -i - 1 : i,
+      GridColumn column{x,
+                        y,
+                        firstLevelBelow(shape, grid.dz, nz, z_dent),
+                        lastLevelAbove(shape, grid.dz, nz, z_bottom),
+                        i < 0 ? -i - 1 : i,
                         j < 0 ? -j - 1 : j};
       if (column.first <= column.last && !visit(column)) return;
     }
   }
 }
 
-GridCensus gridCensus(const Paraboloid& shape, const std::optional<Dents>& dents, const Grid& grid) {
+GridCensus gridCensus(const Paraboloid& shape, const std::optional<Dents>& dents,
+                      const Grid& grid) {
   GridCensus census;
   bool any = false;
   auto include = [&](const Eigen::Vector3d& p) {
@@ -157,7 +163,8 @@ GridCensus gridCensus(const Paraboloid& shape, const std::optional<Dents>& dents
   return census;
 }
 
-bool gridHasTwoLevels(const Paraboloid& shape, const std::optional<Dents>& dents, const Grid& grid) {
+bool gridHasTwoLevels(const Paraboloid& shape, const std::optional<Dents>& dents,
+                      const Grid& grid) {
   bool found = false;
   forEachColumn(shape, dents, grid, [&](const GridColumn& c) {
     found = c.last > c.first;
@@ -242,8 +249,9 @@ void principalAxes(MassProperties& m) {
   // Misalignment: angle from the long axis to the horizontal projection of the least-inertia
   // axis, positive counter-clockwise about +z (SPEC: ≈ +2.2° for the default body).
   const Eigen::Vector3d least = m.axes.col(0);
-  m.misalignment_deg = (long_in_x ? std::atan2(least.y(), least.x())
-                                  : std::atan2(-least.x(), least.y())) * 180.0 / M_PI;
+  m.misalignment_deg =
+      (long_in_x ? std::atan2(least.y(), least.x()) : std::atan2(-least.x(), least.y())) * 180.0 /
+      M_PI;
 }
 
 }  // namespace sim

@@ -69,14 +69,15 @@ struct SurfacePoints {
 
 /// Mass properties of a uniform-density point cloud.
 struct MassProperties {
-  std::int64_t points = 0;       ///< grid points inside the body
-  double mass = 0;               ///< kg
-  Eigen::Vector3d com;           ///< centre of mass in the geometric frame, m
-  Eigen::Matrix3d inertia;       ///< about the CM, geometric axes, kg m²
-  Eigen::Vector3d principal;     ///< principal moments, ascending, kg m²
-  Eigen::Matrix3d axes;          ///< columns: principal axes (geometric frame), right-handed
-  double misalignment_deg = 0;   ///< from the long axis (y, or x when the least-inertia axis lies nearer x) to the least-inertia axis's
-                                 ///< horizontal projection, + counter-clockwise about z
+  std::int64_t points = 0;    ///< grid points inside the body
+  double mass = 0;            ///< kg
+  Eigen::Vector3d com;        ///< centre of mass in the geometric frame, m
+  Eigen::Matrix3d inertia;    ///< about the CM, geometric axes, kg m²
+  Eigen::Vector3d principal;  ///< principal moments, ascending, kg m²
+  Eigen::Matrix3d axes;       ///< columns: principal axes (geometric frame), right-handed
+  double misalignment_deg =
+      0;  ///< from the long axis (y, or x when the least-inertia axis lies nearer x) to the
+          ///< least-inertia axis's horizontal projection, + counter-clockwise about z
 };
 
 /// Running moments of a cloud of equal point masses: Σ1, Σp, Σ p pᵀ (geometric frame, m).
@@ -115,17 +116,18 @@ struct GridColumn {
 };
 
 /// Calls `visit(column)` for each column that holds points, rows of y outermost, in the order
-/// the grid has always been walked, until `visit` returns false. A column's levels come in closed form (then checked
-/// against the exact comparisons at the ends), so the walk costs one step a column, not one a
-/// point: the default body's 3.2 million points in 120,000 columns.
+/// the grid has always been walked, until `visit` returns false. A column's levels come in closed
+/// form (then checked against the exact comparisons at the ends), so the walk costs one step a
+/// column, not one a point: the default body's 3.2 million points in 120,000 columns.
 void forEachColumn(const Paraboloid& shape, const std::optional<Dents>& dents, const Grid& grid,
                    const std::function<bool(const GridColumn&)>& visit);
 
 /// What the grid holds without building it: point counts and the surface points' bounding box.
 struct GridCensus {
-  std::int64_t points = 0;                 ///< all grid points inside the body
-  std::int64_t top = 0, bottom = 0;        ///< surface points, red and blue
-  Eigen::Vector3d lo = Eigen::Vector3d::Zero(), hi = Eigen::Vector3d::Zero();  ///< geometric frame, m
+  std::int64_t points = 0;           ///< all grid points inside the body
+  std::int64_t top = 0, bottom = 0;  ///< surface points, red and blue
+  Eigen::Vector3d lo = Eigen::Vector3d::Zero(),
+                  hi = Eigen::Vector3d::Zero();  ///< geometric frame, m
 };
 GridCensus gridCensus(const Paraboloid& shape, const std::optional<Dents>& dents, const Grid& grid);
 

@@ -1,12 +1,11 @@
 #include "sim/compile.hpp"
 
-#include "sim/analysis.hpp"
-
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <complex>
 #include <sstream>
 
+#include "sim/analysis.hpp"
 #include "sim/continuum.hpp"
 #include "sim/initial.hpp"
 #include "sim/stability.hpp"
@@ -57,8 +56,9 @@ std::optional<rb::Error> checkInertia(const Matrix3Spec& spec) {
   const Eigen::Vector3d m = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(I).eigenvalues();
   if (m(0) <= 0) return rb::Error{"body.inertia", "must be positive definite"};
   if (m(2) > m(0) + m(1) * (1 + 1e-12))
-    return rb::Error{"body.inertia", "is impossible: a principal moment exceeds the sum of the "
-                                     "other two"};
+    return rb::Error{"body.inertia",
+                     "is impossible: a principal moment exceeds the sum of the "
+                     "other two"};
   return std::nullopt;
 }
 
@@ -86,8 +86,8 @@ std::optional<rb::Error> checkBody(const BodySpec& b) {
   if (auto e = needPositive("body.grid.dy", b.grid.dy)) return e;
   if (auto e = needPositive("body.grid.dz", b.grid.dz)) return e;
   if (!b.mass_properties.empty() && !rb::parseName<MassSource>(b.mass_properties))
-    return rb::Error{"body.mass_properties", "must be " + rb::choices<MassSource>() + ", not '" +
-                                                 b.mass_properties + "'"};
+    return rb::Error{"body.mass_properties",
+                     "must be " + rb::choices<MassSource>() + ", not '" + b.mass_properties + "'"};
   if (auto e = needPositive("body.mass", b.mass)) return e;
   return std::nullopt;
 }
@@ -101,8 +101,8 @@ std::optional<rb::Error> checkContact(const ContactSpec& c) {
   if (auto e = needNonNegative("contact.damping", c.damping)) return e;
   if (auto e = needNonNegative("contact.friction", c.friction)) return e;
   if (!rb::parseName<FrictionLaw>(c.friction_law))
-    return rb::Error{"contact.friction_law", "must be " + rb::choices<FrictionLaw>() +
-                                                 ", not '" + c.friction_law + "'"};
+    return rb::Error{"contact.friction_law",
+                     "must be " + rb::choices<FrictionLaw>() + ", not '" + c.friction_law + "'"};
   if (auto e = needPositive("contact.slip_velocity", c.slip_velocity)) return e;
   if (auto e = needNonNegative("contact.air_drag", c.air_drag)) return e;
   return std::nullopt;
@@ -122,23 +122,26 @@ std::optional<rb::Error> checkSimulation(const SimulationSpec& sim) {
   } else {
     if (auto e = needPositive("simulation.tolerance", sim.tolerance)) return e;
     if (sim.tolerance < 1e-14 || sim.tolerance > 1e-1)
-      return rb::Error{"simulation.tolerance",
-                       "must lie within 1e-14 … 0.1 (rounding and sense), not " + show(sim.tolerance)};
+      return rb::Error{
+          "simulation.tolerance",
+          "must lie within 1e-14 … 0.1 (rounding and sense), not " + show(sim.tolerance)};
   }
   if (!sim.integrator.empty() && !rb::parseName<Integrator>(sim.integrator))
     return rb::Error{"simulation.integrator",
                      "must be " + rb::choices<Integrator>() + ", not '" + sim.integrator + "'"};
   const Integrator integrator = !sim.integrator.empty() ? *rb::parseName<Integrator>(sim.integrator)
-                                : has_dt                 ? Integrator::Symplectic
-                                                         : Integrator::Dopri5;
+                                : has_dt                ? Integrator::Symplectic
+                                                        : Integrator::Dopri5;
   if (isAdaptive(integrator) && has_dt)
-    return rb::Error{"simulation.integrator",
-                     std::string(rb::nameOf(integrator)) +
-                         " chooses its own steps: give simulation.tolerance (or --tolerance) instead of dt"};
+    return rb::Error{
+        "simulation.integrator",
+        std::string(rb::nameOf(integrator)) +
+            " chooses its own steps: give simulation.tolerance (or --tolerance) instead of dt"};
   if (!isAdaptive(integrator) && has_tolerance)
-    return rb::Error{"simulation.integrator",
-                     std::string(rb::nameOf(integrator)) +
-                         " takes a fixed step: give simulation.dt (or --dt), or use dopri5 with the tolerance"};
+    return rb::Error{
+        "simulation.integrator",
+        std::string(rb::nameOf(integrator)) +
+            " takes a fixed step: give simulation.dt (or --dt), or use dopri5 with the tolerance"};
   if (auto e = needPositive("simulation.duration", sim.duration)) return e;
   if (has_dt && sim.duration / sim.dt > 1e11)
     return rb::Error{"simulation.dt", show(sim.dt) + " s over simulation.duration " +
@@ -173,8 +176,8 @@ std::optional<rb::Error> checkRest(const SceneSpec& spec) {
 constexpr double kStepsPerRocking = 8;
 
 std::optional<rb::Error> checkRockingStep(const Model& model) {
-  const bool rolls = model.contact.model == ContactModel::Rolling ||
-                     model.contact.model == ContactModel::Auto;
+  const bool rolls =
+      model.contact.model == ContactModel::Rolling || model.contact.model == ContactModel::Auto;
   if (!rolls || isAdaptive(model.integrator)) return std::nullopt;
   double omega = 0;  // rad/s: the fastest rocking
   for (double spin : {0.0, model.initial.spin})
@@ -248,8 +251,7 @@ Body buildEllipsoid(const BodySpec& b, double unit) {
 }
 
 // Mass properties from the shape or the grid; surface points moved to the CM, in SI units.
-rb::Result<Body> buildBody(const BodySpec& b, double unit, MassSource source,
-                           bool contact_points) {
+rb::Result<Body> buildBody(const BodySpec& b, double unit, MassSource source, bool contact_points) {
   if (b.shape == "ellipsoid") return buildEllipsoid(b, unit);
   const ParaboloidSpec& p = b.paraboloid;
   const Paraboloid shape(p.a * unit, p.p, p.q * unit, p.s, p.top * unit);
@@ -263,8 +265,8 @@ rb::Result<Body> buildBody(const BodySpec& b, double unit, MassSource source,
                          " are allowed (the spacings are in units.length: a typo such as 1e-9?)"};
   std::optional<Dents> dents;
   if (b.dents)
-    dents = Dents{b.dents->scale, b.dents->at[0] * unit, b.dents->at[1] * unit,
-                  b.dents->inset * unit};
+    dents =
+        Dents{b.dents->scale, b.dents->at[0] * unit, b.dents->at[1] * unit, b.dents->inset * unit};
   if (!gridHasTwoLevels(shape, dents, grid))
     return rb::Error{"body.grid", "is too coarse: the body has fewer than two levels of points"};
 
@@ -304,11 +306,12 @@ rb::Result<std::shared_ptr<const Body>> compileBody(const SceneSpec& scene, Body
   if (auto e = checkBody(spec)) return *e;
   if (auto e = needPositive("units.length", length_unit)) return *e;
   auto body = buildBody(spec, length_unit, massSourceOf(scene),
-                         points == BodyPoints::Always || scene.contact.model == "points");
+                        points == BodyPoints::Always || scene.contact.model == "points");
   if (!body) return body.error();
   const Eigen::Vector3d com = body->com_geometric;
-  body->extent = (body->surface.boxHigh() - com).cwiseAbs().cwiseMax(
-      (body->surface.boxLow() - com).cwiseAbs());
+  body->extent = (body->surface.boxHigh() - com)
+                     .cwiseAbs()
+                     .cwiseMax((body->surface.boxLow() - com).cwiseAbs());
   return std::shared_ptr<const Body>(std::make_shared<Body>(std::move(body).value()));
 }
 
@@ -332,13 +335,9 @@ rb::Result<Model> compileRun(const SceneSpec& spec, std::shared_ptr<const Body> 
   model.body = std::move(body);
   model.length_unit = spec.units.length;
   const ContactSpec& c = spec.contact;
-  model.contact = Contact{*rb::parseName<ContactModel>(c.model),
-                          c.stiffness,
-                          c.damping,
-                          c.friction,
-                          *rb::parseName<FrictionLaw>(c.friction_law),
-                          c.slip_velocity,
-                          c.air_drag};
+  model.contact =
+      Contact{*rb::parseName<ContactModel>(c.model),       c.stiffness,     c.damping, c.friction,
+              *rb::parseName<FrictionLaw>(c.friction_law), c.slip_velocity, c.air_drag};
   model.gravity = spec.gravity;
   model.integrator = integratorOf(spec.simulation, model.contact.model);
   // Semi-implicit Euler keeps a penalty floor's energy, not the rolling model's: rolling
@@ -358,9 +357,9 @@ rb::Result<Model> compileRun(const SceneSpec& spec, std::shared_ptr<const Body> 
   else
     model.dt = spec.simulation.dt;
   model.duration = spec.simulation.duration;
-  model.initial = Initial{spec.initial.spin, spec.initial.tilt[0] * M_PI / 180.0,
-                          spec.initial.tilt[1] * M_PI / 180.0,
-                          spec.initial.height * spec.units.length};
+  model.initial =
+      Initial{spec.initial.spin, spec.initial.tilt[0] * M_PI / 180.0,
+              spec.initial.tilt[1] * M_PI / 180.0, spec.initial.height * spec.units.length};
 
   if (auto e = checkRockingStep(model)) return *e;
   // Auto runs its smooth phases in steps of their own (sim/switching.hpp: smoothStep).

@@ -22,13 +22,11 @@ Eigen::Vector2d frictionForce(const Contact& c, const Eigen::Vector2d& v_t, doub
   const double speed2 = v_t.squaredNorm();
   if (c.law == FrictionLaw::Coulomb) {
     // seed eq. 31: −μ N U_tan / |U_tan|
-    return speed2 > 0 ? Eigen::Vector2d(-limit * v_t / std::sqrt(speed2))
-                      : Eigen::Vector2d::Zero();
+    return speed2 > 0 ? Eigen::Vector2d(-limit * v_t / std::sqrt(speed2)) : Eigen::Vector2d::Zero();
   }
   const double eps = c.slip_velocity;
   return -limit * v_t / std::sqrt(speed2 + eps * eps);
 }
-
 
 // Adds the floor's force on one material point at r (world axes, from the CM) whose height
 // is z < 0.

@@ -21,9 +21,9 @@ Kinematics kinematicsOf(const Model& model, const State& s);
 struct ContactLoad {
   Eigen::Vector3d force_world = Eigen::Vector3d::Zero();   ///< N
   Eigen::Vector3d torque_world = Eigen::Vector3d::Zero();  ///< about the CM, N m
-  double elastic_energy = 0;  ///< Σ ½ k depth², J
-  double normal_force = 0;    ///< Σ N, N
-  int contacts = 0;           ///< points below the floor
+  double elastic_energy = 0;                               ///< Σ ½ k depth², J
+  double normal_force = 0;                                 ///< Σ N, N
+  int contacts = 0;                                        ///< points below the floor
 };
 
 /// The floor's load for model.contact.model `points` or `smooth` (penalty contact).

@@ -25,11 +25,17 @@ struct Quadric {
 };
 
 Quadric bottomOf(const Paraboloid& shape) {
-  return {shape.p / (2 * shape.a), shape.q / (shape.a * shape.a), shape.s / (2 * shape.a), 0, 0,
+  return {shape.p / (2 * shape.a),
+          shape.q / (shape.a * shape.a),
+          shape.s / (2 * shape.a),
+          0,
+          0,
           -shape.a};
 }
 
-Quadric plane(double z) { return {0, 0, 0, 0, 0, z}; }
+Quadric plane(double z) {
+  return {0, 0, 0, 0, 0, z};
+}
 
 // The dents' paraboloids (sim::Dents::surface, seed appendix): curvatures p/(2ak²) and
 // s/(2ak²), apex (a − inset) k below the origin, at ±(m_x, m_y).
@@ -47,8 +53,7 @@ std::array<DentShape, 2> dentShapes(const Paraboloid& shape, const Dents& d) {
 
 Quadric quadricOf(const DentShape& d) {
   const double x0 = d.center.x(), y0 = d.center.y();
-  return {d.cx, 0, d.cy, -2 * d.cx * x0, -2 * d.cy * y0,
-          d.cx * x0 * x0 + d.cy * y0 * y0 - d.depth};
+  return {d.cx, 0, d.cy, -2 * d.cx * x0, -2 * d.cy * y0, d.cx * x0 * x0 + d.cy * y0 * y0 - d.depth};
 }
 
 // Real roots of c2 y² + c1 y + c0 = 0 (a line when c2 is 0), appended to `out`.
@@ -121,7 +126,8 @@ ColumnSums lineIntegrals(const Surfaces& s, double x) {
     if (!((*ceiling)(x, mid) > s.bottom(x, mid))) continue;  // no body over this piece
     auto add = [&](double y, double w) {
       const double z0 = s.bottom(x, y), z1 = (*ceiling)(x, y);
-      const double L = z1 - z0, Z1 = (z1 * z1 - z0 * z0) / 2, Z2 = (z1 * z1 * z1 - z0 * z0 * z0) / 3;
+      const double L = z1 - z0, Z1 = (z1 * z1 - z0 * z0) / 2,
+                   Z2 = (z1 * z1 * z1 - z0 * z0 * z0) / 3;
       sums += w * half * (ColumnSums() << L, y * L, y * y * L, Z1, y * Z1, Z2).finished();
     };
     for (std::size_t n = 0; n < GL::abscissa().size(); ++n) {  // the nodes ≥ 0, mirrored
@@ -178,7 +184,8 @@ Moments10 adaptive(const F& f, double a, double b, const Moments10& tolerance, i
   if (((e.kronrod - e.gauss).cwiseAbs().array() <= tolerance.array()).all() || depth == 0)
     return e.kronrod;
   const double mid = 0.5 * (a + b);
-  return adaptive(f, a, mid, tolerance / 2, depth - 1) + adaptive(f, mid, b, tolerance / 2, depth - 1);
+  return adaptive(f, a, mid, tolerance / 2, depth - 1) +
+         adaptive(f, mid, b, tolerance / 2, depth - 1);
 }
 
 VolumeMoments momentsOf(const Moments10& m) {
@@ -259,8 +266,8 @@ std::optional<VolumeMoments> closedFormMoments(const Paraboloid& shape,
   Eigen::Matrix2d hessian;
   hessian << shape.p / shape.a, shape.q / (shape.a * shape.a), shape.q / (shape.a * shape.a),
       shape.s / shape.a;
-  VolumeMoments body = paraboloidCapMoments(hessian, Eigen::Vector2d::Zero(), -shape.a,
-                                            shape.top + shape.a);
+  VolumeMoments body =
+      paraboloidCapMoments(hessian, Eigen::Vector2d::Zero(), -shape.a, shape.top + shape.a);
   if (!dents) return body;
   const std::array<DentShape, 2> cuts = dentShapes(shape, *dents);
   const double h = shape.top + cuts[0].depth;  // each cut's height below the top
@@ -308,8 +315,7 @@ VolumeMoments cubatureMoments(const Paraboloid& shape, const std::optional<Dents
   Moments10 total = Moments10::Zero();
   for (std::size_t k = 0; k + 1 < xs.size(); ++k)
     if (xs[k + 1] > xs[k])
-      total += adaptive(f, xs[k], xs[k + 1],
-                        tolerance * l1 * (xs[k + 1] - xs[k]) / (2 * half), 50);
+      total += adaptive(f, xs[k], xs[k + 1], tolerance * l1 * (xs[k + 1] - xs[k]) / (2 * half), 50);
   return momentsOf(total);
 }
 

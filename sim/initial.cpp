@@ -36,10 +36,9 @@ double restingHeight(const Model& model, const Eigen::Matrix3d& R) {
   // Smooth contact: one spring at the lowest point carries the weight, depth M g / k.
   if (model.contact.model != ContactModel::Points) {
     const Eigen::Vector3d low = R * lowestSurfacePoint(*model.body, -R.row(2).transpose());
-    const bool spring = model.contact.model == ContactModel::Smooth ||
-                        model.contact.model == ContactModel::Auto;
-    const double depth =
-        spring ? model.body->mass * model.gravity / model.contact.stiffness : 0.0;
+    const bool spring =
+        model.contact.model == ContactModel::Smooth || model.contact.model == ContactModel::Auto;
+    const double depth = spring ? model.body->mass * model.gravity / model.contact.stiffness : 0.0;
     return -low.z() - depth;
   }
   // Points: the spring force falls monotonically as the CM rises; the answer lies between touching

@@ -33,7 +33,9 @@ enum class FrictionLaw { Coulomb, Regularized };
 /// output, from Boost.Odeint) takes simulation.tolerance.
 enum class Integrator { Euler, Symplectic, Rk4, Dopri5 };
 
-inline bool isAdaptive(Integrator i) { return i == Integrator::Dopri5; }
+inline bool isAdaptive(Integrator i) {
+  return i == Integrator::Dopri5;
+}
 
 /// Contact points as structure-of-arrays, body frame (m), for a tight per-step loop.
 struct ContactPoints {
@@ -65,17 +67,17 @@ struct ContactPoints {
 
 /// Rigid body: mass properties about the CM and the points that can touch the floor.
 struct Body {
-  double mass = 0;                     ///< kg
-  Eigen::Matrix3d inertia;             ///< about the CM, body axes, kg m²
-  Eigen::Matrix3d inertia_inv;         ///< its inverse, 1/(kg m²)
-  Surface surface;                     ///< the smooth surface, geometric frame, m
-  Eigen::Vector3d com_geometric;       ///< CM in the geometric frame, m
-  MassProperties mass_properties;      ///< geometric frame; from `mass_source`
+  double mass = 0;                 ///< kg
+  Eigen::Matrix3d inertia;         ///< about the CM, body axes, kg m²
+  Eigen::Matrix3d inertia_inv;     ///< its inverse, 1/(kg m²)
+  Surface surface;                 ///< the smooth surface, geometric frame, m
+  Eigen::Vector3d com_geometric;   ///< CM in the geometric frame, m
+  MassProperties mass_properties;  ///< geometric frame; from `mass_source`
   /// The paraboloid's: the grid's sums or the continuum's integrals (ellipsoid: the scene's).
   MassSource mass_source = MassSource::Continuum;
-  bool mass_by_cubature = false;       ///< continuum: by cubature, not the closed form
-  Grid grid;                           ///< the point grid's spacing, m
-  std::optional<Dents> dents;          ///< the dents cut from the top (paraboloid), m
+  bool mass_by_cubature = false;  ///< continuum: by cubature, not the closed form
+  Grid grid;                      ///< the point grid's spacing, m
+  std::optional<Dents> dents;     ///< the dents cut from the top (paraboloid), m
   /// Contact points, only for contact.model points (the others touch the smooth surface, and
   /// building the default body's 244,212 made most of a short run's cost, issue 27); the
   /// drawing walks the grid itself, thinned (tasks/drawn_points), and censusOf counts it.
@@ -93,9 +95,9 @@ struct Body {
 /// friction μN against the sliding velocity, per contact point.
 struct Contact {
   ContactModel model = ContactModel::Points;
-  double stiffness = 0;      ///< k, N/m per point
-  double damping = 0;        ///< c, N s/m per point
-  double friction = 0;       ///< μ
+  double stiffness = 0;  ///< k, N/m per point
+  double damping = 0;    ///< c, N s/m per point
+  double friction = 0;   ///< μ
   FrictionLaw law = FrictionLaw::Regularized;
   double slip_velocity = 0;  ///< ε, m/s: F_t = −μN v_t / sqrt(|v_t|² + ε²)
   double air_drag = 0;       ///< σ, N m s: torque −σω
@@ -108,21 +110,21 @@ struct Contact {
 
 /// Initial condition (SPEC "Initial state").
 struct Initial {
-  double spin = 0;         ///< rad/s about the body z axis, + counter-clockwise from above
-  double tilt_x = 0;       ///< rad, about body x
-  double tilt_y = 0;       ///< rad, then about the new body y
-  double height = 0;       ///< m, lowest point above the floor at release (0: resting on it)
+  double spin = 0;    ///< rad/s about the body z axis, + counter-clockwise from above
+  double tilt_x = 0;  ///< rad, about body x
+  double tilt_y = 0;  ///< rad, then about the new body y
+  double height = 0;  ///< m, lowest point above the floor at release (0: resting on it)
 };
 
 /// One run of a shared body: small, cheap to copy (SPEC "Data flow").
 struct Model {
   std::shared_ptr<const Body> body;  ///< immutable, shared by every run of this body
   Contact contact;
-  double gravity = 9.81;   ///< m/s², along −z
+  double gravity = 9.81;  ///< m/s², along −z
   Integrator integrator = Integrator::Symplectic;
-  double dt = 0;           ///< s, fixed-step integrators (0 for adaptive ones)
-  double tolerance = 0;    ///< adaptive: error per step relative to the body's scales (0: fixed)
-  double duration = 0;     ///< s, simulated time of the run
+  double dt = 0;         ///< s, fixed-step integrators (0 for adaptive ones)
+  double tolerance = 0;  ///< adaptive: error per step relative to the body's scales (0: fixed)
+  double duration = 0;   ///< s, simulated time of the run
   Initial initial;
   double length_unit = 1;  ///< m per length unit of the scene file (for reports)
   /// Rolling under auto: the contact point is held this far below the floor (the smooth
@@ -134,8 +136,8 @@ struct Model {
 /// The changing data. With a fixed step, t = step · dt (never accumulated); with an adaptive
 /// one, t is the end of the last accepted step.
 struct State {
-  Eigen::Vector3d x_world = Eigen::Vector3d::Zero();  ///< CM position, m
-  Eigen::Vector3d v_world = Eigen::Vector3d::Zero();  ///< CM velocity, m/s
+  Eigen::Vector3d x_world = Eigen::Vector3d::Zero();      ///< CM position, m
+  Eigen::Vector3d v_world = Eigen::Vector3d::Zero();      ///< CM velocity, m/s
   Eigen::Quaterniond q = Eigen::Quaterniond::Identity();  ///< body → world rotation
   Eigen::Vector3d L_world = Eigen::Vector3d::Zero();  ///< angular momentum about the CM, kg m²/s
   double t = 0;                                       ///< s

@@ -35,8 +35,8 @@ class ReversalDetector {
   const std::vector<double>& reversals() const { return reversals_; }
 
  private:
-  double threshold_;         ///< rad/s
-  double reference_sign_;    ///< the sign being reversed from (±1; 0: none)
+  double threshold_;                ///< rad/s
+  double reference_sign_;           ///< the sign being reversed from (±1; 0: none)
   std::optional<double> crossing_;  ///< the candidate: the last crossing to the other sign
   bool crossing_reached_ = false;   ///< n has reached the threshold since crossing_
   std::vector<double> reversals_;

@@ -31,7 +31,9 @@ constexpr double kEnergyCheckPeriod = 1e-3;  // s
 // step k·dt when the two differ only by rounding.
 constexpr double kSameTime = 1e-12;
 
-bool sameTime(double a, double b) { return std::abs(a - b) <= kSameTime * std::max(1.0, std::abs(b)); }
+bool sameTime(double a, double b) {
+  return std::abs(a - b) <= kSameTime * std::max(1.0, std::abs(b));
+}
 
 using Vector13 = Eigen::Matrix<double, 13, 1>;
 
@@ -68,7 +70,8 @@ Rollout::Rollout(Model model) : Rollout(model, initialState(model)) {}
 Rollout::Rollout(Model model, const State& start)
     : model_(std::move(model)), active_(model_), previous_(start), current_(start) {
   if (model_.contact.model == ContactModel::Auto) startAuto();
-  if (isAdaptive(model_.integrator)) adaptive_ = std::make_unique<AdaptiveStepper>(active_, current_);
+  if (isAdaptive(model_.integrator))
+    adaptive_ = std::make_unique<AdaptiveStepper>(active_, current_);
   summary_.first = summary_.last = telemetryOf(active_, current_);
   spin_ = summary_.first.spin;
   summary_.max_tilt_deg = summary_.first.tilt_deg;
@@ -79,7 +82,8 @@ Rollout::Rollout(Model model, const State& start)
     last_airborne_ = airborne_since_ = start.t;
   const double e0 = summary_.first.energy;
   energy_bound_ = e0 + kEnergyGrowthBound * std::abs(e0) + 1e-12;
-  check_every_ = adaptive_ ? 1 : std::max<std::int64_t>(1, std::llround(kEnergyCheckPeriod / model_.dt));
+  check_every_ =
+      adaptive_ ? 1 : std::max<std::int64_t>(1, std::llround(kEnergyCheckPeriod / model_.dt));
 }
 
 Rollout::Rollout(Rollout&&) noexcept = default;
@@ -95,10 +99,11 @@ bool Rollout::advanceTo(double t) {
     }
     stepOnce();
   }
-  summary_.wall_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  summary_.wall_s +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary_.steps = current_.step;
-  summary_.max_tilt_deg =
-      std::max(summary_.max_tilt_deg, std::acos(std::clamp(min_cos_tilt_, -1.0, 1.0)) * 180.0 / M_PI);
+  summary_.max_tilt_deg = std::max(summary_.max_tilt_deg,
+                                   std::acos(std::clamp(min_cos_tilt_, -1.0, 1.0)) * 180.0 / M_PI);
   if (adaptive_) {
     summary_.evaluations = evaluations_before_ + adaptive_->evaluations();
     summary_.rejected = rejected_before_ + adaptive_->rejected(current_.step - stepper_start_);
@@ -138,8 +143,9 @@ void Rollout::stepOnce() {
   if (model_.contact.model == ContactModel::Auto) switchModes();
   // The tilt's cosine is R(2,2) = (w² + z² − x² − y²)/|q|² of the orientation quaternion.
   const Eigen::Quaterniond& q = current_.q;
-  min_cos_tilt_ = std::min(min_cos_tilt_, (q.w() * q.w() + q.z() * q.z() - q.x() * q.x() -
-                                           q.y() * q.y()) / q.squaredNorm());
+  min_cos_tilt_ =
+      std::min(min_cos_tilt_,
+               (q.w() * q.w() + q.z() * q.z() - q.x() * q.x() - q.y() * q.y()) / q.squaredNorm());
   spin_ = angularVelocity(model_, current_).z();
   locateReversal(previous_spin, spin_);
   if (current_.step % check_every_ == 0) watch();
@@ -185,8 +191,9 @@ void Rollout::watch() {
     std::ostringstream msg;
     msg << "the energy rose from " << e0 << " J to " << energy << " J (" << std::showpos
         << 100 * (energy - e0) / std::abs(e0) << std::noshowpos << " %, beyond the "
-        << 100 * kEnergyGrowthBound << " % that nothing in the model can supply) at t = "
-        << current_.t << " s (step " << current_.step << "); " << stepAdvice(model_);
+        << 100 * kEnergyGrowthBound
+        << " % that nothing in the model can supply) at t = " << current_.t << " s (step "
+        << current_.step << "); " << stepAdvice(model_);
     summary_.stop = Stop{StopReason::EnergyGain, current_.t, current_.step};
     summary_.divergence = msg.str();
     return;
@@ -198,8 +205,8 @@ void Rollout::watch() {
     if (!model_.body->surface.lowestOnRim(-R.row(2).transpose())) return;
     const double tilt = std::acos(std::clamp(R(2, 2), -1.0, 1.0)) * 180.0 / M_PI;
     std::ostringstream msg;
-    msg << "the body tipped onto the edge of its top (tilt " << tilt << " degrees) at t = "
-        << current_.t << " s (step " << current_.step
+    msg << "the body tipped onto the edge of its top (tilt " << tilt
+        << " degrees) at t = " << current_.t << " s (step " << current_.step
         << "), where rolling on its smooth bottom no longer describes it; use "
            "contact.model smooth or points";
     summary_.stop = Stop{StopReason::OnRim, current_.t, current_.step};
@@ -247,7 +254,8 @@ State Rollout::hermite(const State& a, const Vector13& rates_a, const State& b,
   const double u = (t - a.t) / h;
   const double h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u);
   const double h01 = u * u * (3 - 2 * u), h11 = u * u * (u - 1);
-  const Vector13 y = h00 * packState(a) + h10 * h * rates_a + h01 * packState(b) + h11 * h * rates_b;
+  const Vector13 y =
+      h00 * packState(a) + h10 * h * rates_a + h01 * packState(b) + h11 * h * rates_b;
   State s;
   s.x_world = y.segment<3>(0);
   s.v_world = y.segment<3>(3);
@@ -331,9 +339,9 @@ void Rollout::switchModes() {
         t_switch = previous_.t;
         return;
       }
-      const double t = zeroCrossing(
-          [&](double time) { return rollingMargins(active_, stateAt(time)).*margin; },
-          previous_.t, current_.t, start.*margin, end.*margin);
+      const double t =
+          zeroCrossing([&](double time) { return rollingMargins(active_, stateAt(time)).*margin; },
+                       previous_.t, current_.t, start.*margin, end.*margin);
       t_switch = std::min(t_switch, t);
     };
     locate(&RollingMargins::friction);

@@ -30,8 +30,8 @@ enum class StopReason {
 /// A run that stopped by itself: why, when, and the message that says it.
 struct Stop {
   StopReason reason;
-  double t = 0;            ///< s
-  std::int64_t step = 0;   ///< the step it stopped at
+  double t = 0;           ///< s
+  std::int64_t step = 0;  ///< the step it stopped at
 };
 
 /// What a run did so far.
@@ -41,8 +41,9 @@ struct RunSummary {
   /// located on the interpolant between steps, after which n goes on to reach 1% of the
   /// initial |n| with the new sign and keeps that sign for 0.2 s (a body rocking through tens
   /// of degrees swings n through zero and back), at least 0.5 s after the body last left the
-  /// floor for 10 ms or more (no reversals in the air or while it bounces). The next is counted from the new
-  /// sign. At the end of the run a crossing that has reached 1% counts without the 0.2 s.
+  /// floor for 10 ms or more (no reversals in the air or while it bounces). The next is counted
+  /// from the new sign. At the end of the run a crossing that has reached 1% counts without the 0.2
+  /// s.
   std::vector<double> reversals;
   std::optional<double> first_reversal_s;  ///< reversals.front(), when there is one
   /// Largest tilt of the body's z axis from the vertical at the start or the end of any step
@@ -56,7 +57,7 @@ struct RunSummary {
   /// beyond what the model can supply, or a rolling body tipped onto its rim. Names the
   /// quantity, the time and the step.
   std::optional<std::string> divergence;
-  std::optional<Stop> stop;  ///< set with `divergence`: the same event, typed
+  std::optional<Stop> stop;     ///< set with `divergence`: the same event, typed
   bool stop_requested = false;  ///< stopped because the caller asked
   /// contact.model auto: how many times the model changed, and when to which.
   int switches = 0;
@@ -128,8 +129,8 @@ class Rollout {
   mutable bool have_rates_ = false;
   mutable Eigen::Matrix<double, 13, 1> rates_previous_, rates_current_;
   ReversalDetector reversals_{0};  ///< the reversal rule, fed each step's ends
-  double spin_ = 0;  ///< n = ω·ẑ of current_, rad/s
-  double min_cos_tilt_ = 1;  ///< smallest cosine of the tilt so far
+  double spin_ = 0;                ///< n = ω·ẑ of current_, rad/s
+  double min_cos_tilt_ = 1;        ///< smallest cosine of the tilt so far
   double last_airborne_ = -1e300;  ///< last time of a flight (the floor carrying nothing), s
   static constexpr double kNever = std::numeric_limits<double>::quiet_NaN();
   double airborne_since_ = kNever;  ///< since when the floor has carried nothing, s (NaN: it does)

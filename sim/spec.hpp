@@ -30,9 +30,9 @@ struct ParaboloidSpec {
 /// body.dents: two paraboloid dents cut from the top (seed §3.2 and appendix),
 /// at (+x, +y) and (−x, −y).
 struct DentsSpec {
-  double scale = kUnset;                  ///< k: dent curvature p/(2a k²), depth (a − inset) k
+  double scale = kUnset;  ///< k: dent curvature p/(2a k²), depth (a − inset) k
   std::array<double, 2> at{kUnset, kUnset};  ///< (m_x, m_y), file units
-  double inset = 0.1;                     ///< the seed's constant, file units
+  double inset = 0.1;                        ///< the seed's constant, file units
 };
 
 /// body.grid: uniform point grid (seed §3.1), file units.
@@ -52,8 +52,8 @@ struct BodySpec {
   std::string shape = "paraboloid";  ///< paraboloid | ellipsoid
   ParaboloidSpec paraboloid;
   EllipsoidSpec ellipsoid;
-  Matrix3Spec inertia{};             ///< ellipsoid: kg m², about the CM, body axes
-  std::optional<DentsSpec> dents;    ///< absent: no dents
+  Matrix3Spec inertia{};           ///< ellipsoid: kg m², about the CM, body axes
+  std::optional<DentsSpec> dents;  ///< absent: no dents
   GridSpec grid;
   /// paraboloid: where the mass properties come from: "continuum" (the shape's volume, exact)
   /// or "grid" (the point grid's sums, the seed's first-order rule); "" leaves it to the
@@ -63,17 +63,17 @@ struct BodySpec {
 };
 
 struct ContactSpec {
-  std::string model = "points";             ///< points | smooth | rolling
-  double stiffness = kUnset;                ///< N/m (points: per point)
-  double damping = 0.0;                     ///< N s/m (points: per point)
-  double friction = 0.5;                    ///< Coulomb coefficient μ
+  std::string model = "points";              ///< points | smooth | rolling
+  double stiffness = kUnset;                 ///< N/m (points: per point)
+  double damping = 0.0;                      ///< N s/m (points: per point)
+  double friction = 0.5;                     ///< Coulomb coefficient μ
   std::string friction_law = "regularized";  ///< coulomb | regularized
-  double slip_velocity = 1.0e-3;            ///< m/s, ε of the regularised law
-  double air_drag = 0.0;                    ///< σ, N m s: torque −σω
+  double slip_velocity = 1.0e-3;             ///< m/s, ε of the regularised law
+  double air_drag = 0.0;                     ///< σ, N m s: torque −σω
 };
 
 struct InitialSpec {
-  double spin = 0.0;                    ///< rad/s about the vertical, + = counter-clockwise from above
+  double spin = 0.0;  ///< rad/s about the vertical, + = counter-clockwise from above
   std::array<double, 2> tilt{0.0, 0.0};  ///< degrees, about body x then the new body y
   double height = 0.0;  ///< lowest point above the floor at release, length units; 0: resting
 };

@@ -95,7 +95,8 @@ ContactStability contactStability(const Model& model) {
           .transpose();
   const double roll = up_in_body.z() < 0 ? M_PI : 0.0;
   ContactStability out;
-  out.omega = stiffestMode(model, Eigen::Matrix3d(Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX())));
+  out.omega =
+      stiffestMode(model, Eigen::Matrix3d(Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX())));
   out.zeta = model.contact.damping * out.omega / (2 * model.contact.stiffness);
   if (out.omega == 0) {  // nothing presses on the floor (no gravity): no contact mode
     out.largest_step = out.run_step = std::numeric_limits<double>::infinity();

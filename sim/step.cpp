@@ -36,7 +36,9 @@ State advanced(const State& s, const Rates& r, double h) {
 namespace {
 
 // Forward Euler (seed §3.4): every variable moves with the rates at the start of the step.
-void eulerStep(const Model& model, State& s, double h) { s = advanced(s, ratesOf(model, s), h); }
+void eulerStep(const Model& model, State& s, double h) {
+  s = advanced(s, ratesOf(model, s), h);
+}
 
 // Semi-implicit Euler: kick the momenta with the loads at the start, then drift the pose with
 // the new velocities; the rotation by the exact exponential map q ← exp(½ ω dt) ⊗ q.
@@ -94,10 +96,17 @@ Load loadsOn(const Model& model, const Kinematics& k) {
 
 void advanceBy(const Model& model, State& s, double h) {
   switch (model.integrator) {
-    case Integrator::Euler: eulerStep(model, s, h); break;
-    case Integrator::Symplectic: symplecticStep(model, s, h); break;
-    case Integrator::Rk4: rk4Step(model, s, h); break;
-    case Integrator::Dopri5: break;  // driven by the Rollout's adaptive stepper
+    case Integrator::Euler:
+      eulerStep(model, s, h);
+      break;
+    case Integrator::Symplectic:
+      symplecticStep(model, s, h);
+      break;
+    case Integrator::Rk4:
+      rk4Step(model, s, h);
+      break;
+    case Integrator::Dopri5:
+      break;  // driven by the Rollout's adaptive stepper
   }
   if (model.contact.model == ContactModel::Rolling) enforceRolling(model, s);
 }

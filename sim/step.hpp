@@ -10,8 +10,8 @@ namespace sim {
 /// Everything acting on the body at one instant: floor contact, gravity, air drag.
 struct Load {
   ContactLoad contact;
-  Eigen::Vector3d force_world;   ///< total, N
-  Eigen::Vector3d torque_world;  ///< total about the CM, N m
+  Eigen::Vector3d force_world;                                ///< total, N
+  Eigen::Vector3d torque_world;                               ///< total about the CM, N m
   Eigen::Vector3d r_contact_world = Eigen::Vector3d::Zero();  ///< rolling: CM → contact, m
 };
 

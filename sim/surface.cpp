@@ -20,8 +20,7 @@ Eigen::Vector3d Ellipsoid::lowestPointRate(const Eigen::Vector3d& down,
 }
 
 Eigen::Vector3d Surface::lowestPoint(const Eigen::Vector3d& down) const {
-  return kind == Kind::Ellipsoid ? ellipsoid.lowestPoint(down)
-                                 : paraboloid.lowestPointOfBody(down);
+  return kind == Kind::Ellipsoid ? ellipsoid.lowestPoint(down) : paraboloid.lowestPointOfBody(down);
 }
 
 Eigen::Vector3d Surface::lowestPointRate(const Eigen::Vector3d& down,
@@ -53,13 +52,15 @@ Eigen::Vector2d Surface::footprintHalf() const {
 
 Eigen::Vector3d Surface::boxLow() const {
   // The paraboloid's lowest point is its apex, z = −a, at the origin (H is positive definite).
-  return kind == Kind::Ellipsoid ? Eigen::Vector3d(-ellipsoid.semi_axes)
-                                 : Eigen::Vector3d(-footprintHalf().x(), -footprintHalf().y(), -paraboloid.a);
+  return kind == Kind::Ellipsoid
+             ? Eigen::Vector3d(-ellipsoid.semi_axes)
+             : Eigen::Vector3d(-footprintHalf().x(), -footprintHalf().y(), -paraboloid.a);
 }
 
 Eigen::Vector3d Surface::boxHigh() const {
-  return kind == Kind::Ellipsoid ? Eigen::Vector3d(ellipsoid.semi_axes)
-                                 : Eigen::Vector3d(footprintHalf().x(), footprintHalf().y(), paraboloid.top);
+  return kind == Kind::Ellipsoid
+             ? Eigen::Vector3d(ellipsoid.semi_axes)
+             : Eigen::Vector3d(footprintHalf().x(), footprintHalf().y(), paraboloid.top);
 }
 
 }  // namespace sim

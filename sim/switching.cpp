@@ -48,9 +48,10 @@ SmoothContactState smoothContactState(const Model& smooth, const State& s) {
   SmoothContactState c;
   c.depth = -(k.x_world.z() + r.z());
   c.slip = u.head<2>().norm();
-  c.normal = c.depth > 0 ? std::max(0.0, smooth.contact.stiffness * c.depth -
-                                             smooth.contact.damping * u.z())
-                         : 0.0;
+  c.normal =
+      c.depth > 0
+          ? std::max(0.0, smooth.contact.stiffness * c.depth - smooth.contact.damping * u.z())
+          : 0.0;
   return c;
 }
 

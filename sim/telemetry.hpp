@@ -15,13 +15,13 @@ struct Telemetry {
   double elastic = 0;    ///< Σ ½ k depth², J
   double energy = 0;     ///< kinetic + potential + elastic, J
   double tilt_deg = 0;   ///< angle between the body z axis and the vertical, degrees
-  Eigen::Vector3d x_world = Eigen::Vector3d::Zero();  ///< CM, m
+  Eigen::Vector3d x_world = Eigen::Vector3d::Zero();                ///< CM, m
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  ///< body → world
-  Eigen::Vector3d w_world = Eigen::Vector3d::Zero();  ///< ω, rad/s
+  Eigen::Vector3d w_world = Eigen::Vector3d::Zero();                ///< ω, rad/s
   Eigen::Vector3d L_world = Eigen::Vector3d::Zero();  ///< angular momentum about the CM
-  int contacts = 0;        ///< points below the floor
+  int contacts = 0;                                   ///< points below the floor
   ContactModel mode = ContactModel::Points;  ///< the contact model integrated (auto: its mode)
-  double normal_force = 0;  ///< N
+  double normal_force = 0;                   ///< N
 };
 
 Telemetry telemetryOf(const Model& model, const State& s);

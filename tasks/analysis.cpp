@@ -9,14 +9,18 @@
 namespace tasks {
 namespace {
 
-nlohmann::json vectorJson(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+nlohmann::json vectorJson(const Eigen::Vector3d& v) {
+  return {v.x(), v.y(), v.z()};
+}
 
 nlohmann::json matrixJson(const Eigen::Matrix3d& m) {
   return {vectorJson(m.row(0)), vectorJson(m.row(1)), vectorJson(m.row(2))};
 }
 
 // A value that is zero but for rounding (a symmetric body's CM at −8.5e−18 m) is 0.
-double clean(double v, double scale) { return std::abs(v) < 1e-12 * scale ? 0.0 : v; }
+double clean(double v, double scale) {
+  return std::abs(v) < 1e-12 * scale ? 0.0 : v;
+}
 
 Eigen::Vector3d clean(const Eigen::Vector3d& v, double scale) {
   return {clean(v.x(), scale), clean(v.y(), scale), clean(v.z(), scale)};
@@ -74,7 +78,8 @@ nlohmann::json analysisJson(const sim::Model& model, double spin) {
   j["growth_rates"] = {{"roll", spinning.roll_growth}, {"pitch", spinning.pitch_growth}};
   j["first_order_growth_per_spin"] = {{"roll", first.roll}, {"pitch", first.pitch}};
   nlohmann::json eigenvalues = nlohmann::json::array();
-  for (const auto& lambda : spinning.eigenvalues) eigenvalues.push_back({lambda.real(), lambda.imag()});
+  for (const auto& lambda : spinning.eigenvalues)
+    eigenvalues.push_back({lambda.real(), lambda.imag()});
   j["eigenvalues"] = eigenvalues;
   j["preferred"] = std::string(rb::nameOf(sim::preferredDirection(model, spin)));
   return j;

@@ -1,6 +1,6 @@
 // What `analyze` finds about a scene, as one JSON value: mass properties, rest, contact limits,
-// the linearised theory and the preferred direction (docs/commands.md "rattleback analyze"). The command
-// prints it; Python's analyze() returns it as a dict.
+// the linearised theory and the preferred direction (docs/commands.md "rattleback analyze"). The
+// command prints it; Python's analyze() returns it as a dict.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -7,10 +7,10 @@
 #include <iterator>
 
 #include "scene/loader.hpp"
-#include "tasks/scene_args.hpp"
-#include "tasks/table.hpp"
 #include "sim/compile.hpp"
 #include "sim/rollout.hpp"
+#include "tasks/scene_args.hpp"
+#include "tasks/table.hpp"
 
 namespace tasks {
 namespace {
@@ -103,7 +103,8 @@ std::optional<double> maxSpinError(const Trace& a, const Trace& ref) {
   if (a.failure || ref.failure || a.samples.empty()) return std::nullopt;
   double worst = 0;
   const std::size_t n = std::min(a.samples.size(), ref.samples.size());
-  for (std::size_t i = 0; i < n; ++i) worst = std::max(worst, std::abs(a.samples[i].spin - ref.samples[i].spin));
+  for (std::size_t i = 0; i < n; ++i)
+    worst = std::max(worst, std::abs(a.samples[i].spin - ref.samples[i].spin));
   return worst;
 }
 
@@ -135,7 +136,8 @@ sim::SceneSpec conservative(sim::SceneSpec spec) {
 double energyDrift(const Trace& t) {
   double worst = 0;
   const double e0 = t.samples.front().energy;
-  for (const sim::Telemetry& s : t.samples) worst = std::max(worst, std::abs(s.energy - e0) / std::abs(e0));
+  for (const sim::Telemetry& s : t.samples)
+    worst = std::max(worst, std::abs(s.energy - e0) / std::abs(e0));
   return worst;
 }
 
@@ -276,15 +278,20 @@ rb::Result<BenchScene> loadBenchScene(const std::string& path) {
 rb::Status checkBenchOptions(const BenchOptions& o) {
   for (const std::string& m : o.models)
     if (!rb::parseName<sim::ContactModel>(m))
-      return rb::Status::fail("--models: expected " + rb::choices<sim::ContactModel>() + ", not '" + m + "'");
+      return rb::Status::fail("--models: expected " + rb::choices<sim::ContactModel>() + ", not '" +
+                              m + "'");
   for (const std::string& i : o.integrators)
     if (!rb::parseName<sim::Integrator>(i))
-      return rb::Status::fail("--integrators: expected " + rb::choices<sim::Integrator>() + ", not '" + i + "'");
+      return rb::Status::fail("--integrators: expected " + rb::choices<sim::Integrator>() +
+                              ", not '" + i + "'");
   for (double tol : o.tolerances)
     if (!(tol >= 1e-14 && tol <= 0.1))
-      return rb::Status::fail("--tolerances: each must lie within 1e-14 … 0.1, not " + show(tol, "%g"));
-  if (!(o.duration > 0) || !std::isfinite(o.duration) || o.repeats < 1 || o.rungs < 1 || o.rungs > 12)
-    return rb::Status::fail("bench: --duration must be > 0, --repeats ≥ 1 and --rungs within 1 … 12");
+      return rb::Status::fail("--tolerances: each must lie within 1e-14 … 0.1, not " +
+                              show(tol, "%g"));
+  if (!(o.duration > 0) || !std::isfinite(o.duration) || o.repeats < 1 || o.rungs < 1 ||
+      o.rungs > 12)
+    return rb::Status::fail(
+        "bench: --duration must be > 0, --repeats ≥ 1 and --rungs within 1 … 12");
   return {};
 }
 
@@ -292,11 +299,13 @@ bool benchScene(const BenchScene& scene, const BenchOptions& options, std::vecto
   sim::SceneSpec base = scene.spec;
   base.simulation.duration = options.duration;
   const std::vector<std::string> integrators =
-      options.integrators.empty() ? std::vector<std::string>(std::begin(kIntegrators), std::end(kIntegrators))
-                                  : options.integrators;
+      options.integrators.empty()
+          ? std::vector<std::string>(std::begin(kIntegrators), std::end(kIntegrators))
+          : options.integrators;
   const Trace rolling_reference = reference(scene, base, "rolling", options.rungs);
   for (const std::string& model : modelsOf(scene, options)) {
-    const Trace own = model == "rolling" ? rolling_reference : reference(scene, base, model, options.rungs);
+    const Trace own =
+        model == "rolling" ? rolling_reference : reference(scene, base, model, options.rungs);
     if (own.failure && options.note) options.note(model + " reference (rk4) " + own.brief);
     for (const std::string& integrator : integrators) {
       // The points model's thousands of stiff springs leave adaptive steps nothing to gain;
@@ -341,16 +350,30 @@ constexpr Column kBenchColumns[] = {
 
 }  // namespace
 
-std::string benchCsvHeader() { return csvHeader(kBenchColumns) + "\n"; }
+std::string benchCsvHeader() {
+  return csvHeader(kBenchColumns) + "\n";
+}
 
 std::string benchCsvLine(const BenchRow& r) {
-  const std::string fields[] = {
-      csvField(r.scene), csvField(r.model), csvField(r.integrator), number(r.dt, 6),
-      number(r.tolerance, 3), std::to_string(r.steps), std::to_string(r.rejected),
-      csvField(r.status), number(r.cost_median, 6), number(r.cost_min, 6), number(r.cost_max, 6),
-      number(r.us_per_step, 6), number(r.reversal), number(r.reversal_error, 6),
-      number(r.reversal_error_rolling, 6), number(r.spin_error, 6),
-      number(r.spin_error_rolling, 6), number(r.energy_drift, 6), number(r.switches, 6)};
+  const std::string fields[] = {csvField(r.scene),
+                                csvField(r.model),
+                                csvField(r.integrator),
+                                number(r.dt, 6),
+                                number(r.tolerance, 3),
+                                std::to_string(r.steps),
+                                std::to_string(r.rejected),
+                                csvField(r.status),
+                                number(r.cost_median, 6),
+                                number(r.cost_min, 6),
+                                number(r.cost_max, 6),
+                                number(r.us_per_step, 6),
+                                number(r.reversal),
+                                number(r.reversal_error, 6),
+                                number(r.reversal_error_rolling, 6),
+                                number(r.spin_error, 6),
+                                number(r.spin_error_rolling, 6),
+                                number(r.energy_drift, 6),
+                                number(r.switches, 6)};
   std::string line;
   for (const std::string& f : fields) line.append(line.empty() ? "" : ",").append(f);
   return line + "\n";

@@ -1,9 +1,9 @@
-// `bench`'s measurements (docs/commands.md "rattleback bench"): for each contact model × integrator × step of a ladder
-// of halvings (or tolerances for dopri5), a scene runs `repeats` times; the cost is the median
-// wall time per simulated second, and the errors are measured against a reference: the same
-// model with rk4 at a step 16× below the ladder's finest, and the rolling model's reference
-// where the body has a smooth surface. A conservative variant (no friction, no dampers, no drag)
-// gives the energy drift.
+// `bench`'s measurements (docs/commands.md "rattleback bench"): for each contact model × integrator
+// × step of a ladder of halvings (or tolerances for dopri5), a scene runs `repeats` times; the cost
+// is the median wall time per simulated second, and the errors are measured against a reference:
+// the same model with rk4 at a step 16× below the ladder's finest, and the rolling model's
+// reference where the body has a smooth surface. A conservative variant (no friction, no dampers,
+// no drag) gives the energy drift.
 #pragma once
 
 #include <functional>
@@ -25,8 +25,8 @@ struct BenchRow {
   double tolerance = NAN;  ///< adaptive rows
   std::int64_t steps = 0, rejected = 0;
   std::optional<double> switches;  ///< auto rows: changes of contact model
-  std::string status = "ok";  ///< or the failure in full (CSV)
-  std::string brief;          ///< the failure in a few words (table)
+  std::string status = "ok";       ///< or the failure in full (CSV)
+  std::string brief;               ///< the failure in a few words (table)
   double cost_median = NAN, cost_min = NAN, cost_max = NAN, us_per_step = NAN;
   std::optional<double> reversal, reversal_error, reversal_error_rolling;
   std::optional<double> spin_error, spin_error_rolling, energy_drift;
@@ -44,12 +44,12 @@ struct BenchOptions {
   double duration = 3;  ///< simulated seconds per run
   int repeats = 3;
   int rungs = 5;
-  std::vector<std::string> models;       ///< empty: all that apply
-  std::vector<std::string> integrators;  ///< empty: all
-  std::vector<double> tolerances;        ///< empty: 1e-4 … 1e-10
-  std::function<bool()> cancelled;       ///< asked before each rung (may be empty)
-  std::function<void(const BenchRow&)> row;         ///< each row as it is measured
-  std::function<void(const std::string&)> note;     ///< a line worth saying (may be empty)
+  std::vector<std::string> models;               ///< empty: all that apply
+  std::vector<std::string> integrators;          ///< empty: all
+  std::vector<double> tolerances;                ///< empty: 1e-4 … 1e-10
+  std::function<bool()> cancelled;               ///< asked before each rung (may be empty)
+  std::function<void(const BenchRow&)> row;      ///< each row as it is measured
+  std::function<void(const std::string&)> note;  ///< a line worth saying (may be empty)
 };
 
 /// Checks the options: known models and integrators, tolerances within 1e-14 … 0.1, duration

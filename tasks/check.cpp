@@ -11,10 +11,14 @@ namespace {
 // The order of each fixed-step method: the global error falls as h^p.
 int orderOf(sim::Integrator integrator) {
   switch (integrator) {
-    case sim::Integrator::Euler: return 1;
-    case sim::Integrator::Symplectic: return 1;  // semi-implicit Euler
-    case sim::Integrator::Rk4: return 4;
-    case sim::Integrator::Dopri5: break;
+    case sim::Integrator::Euler:
+      return 1;
+    case sim::Integrator::Symplectic:
+      return 1;  // semi-implicit Euler
+    case sim::Integrator::Rk4:
+      return 4;
+    case sim::Integrator::Dopri5:
+      break;
   }
   return 0;
 }
@@ -81,7 +85,8 @@ nlohmann::json checkJson(const RunCheck& check) {
   j["setting"] = check.setting;
   j["method"] = check.method;
   nlohmann::json errors = nlohmann::json::array();
-  for (const auto& e : check.reversal_errors) errors.push_back(e ? nlohmann::json(*e) : nlohmann::json());
+  for (const auto& e : check.reversal_errors)
+    errors.push_back(e ? nlohmann::json(*e) : nlohmann::json());
   j["reversal_errors_s"] = errors;
   j["tighter_reversals_s"] = check.tighter_reversals;
   j["spin_error_rad_s"] = check.spin_error;

@@ -18,23 +18,23 @@ namespace tasks {
 /// when the step is fixed (Richardson: the run's error ≈ (run − tighter) · 2^p / (2^p − 1)).
 struct TighterSetting {
   sim::Model model;
-  std::string description;  ///< e.g. "rk4 at dt 0.00025 s (half the step)"
+  std::string description;   ///< e.g. "rk4 at dt 0.00025 s (half the step)"
   std::optional<int> order;  ///< fixed steps only
 };
 TighterSetting tighterOf(const sim::Model& model);
 
 /// The estimated errors of a run.
 struct RunCheck {
-  std::string setting;        ///< TighterSetting::description
-  std::string method;         ///< "Richardson, order p" or "difference from the tighter run"
+  std::string setting;  ///< TighterSetting::description
+  std::string method;   ///< "Richardson, order p" or "difference from the tighter run"
   /// Per reversal of the run, in order: its estimated error (run − truth), s; none for a
   /// reversal the tighter run does not have.
   std::vector<std::optional<double>> reversal_errors;
   std::vector<double> tighter_reversals;  ///< s
-  double spin_error = 0;      ///< largest estimated |error| of n over the samples, rad/s
-  double spin_error_at = 0;   ///< where, s
-  double cost_ratio = 0;      ///< the tighter run's wall time over the run's
-  bool completed = true;      ///< false: the tighter run stopped (then only what it reached)
+  double spin_error = 0;     ///< largest estimated |error| of n over the samples, rad/s
+  double spin_error_at = 0;  ///< where, s
+  double cost_ratio = 0;     ///< the tighter run's wall time over the run's
+  bool completed = true;     ///< false: the tighter run stopped (then only what it reached)
 };
 
 /// Runs the tighter setting of `model`, sampling at `rate`, and compares it with the run's

@@ -1,8 +1,9 @@
-#include "sim/compile.hpp"
 #include "tasks/drawn_points.hpp"
 
 #include <algorithm>
 #include <cmath>
+
+#include "sim/compile.hpp"
 
 namespace tasks {
 
@@ -24,8 +25,7 @@ DrawnPoints drawnPointsOf(const sim::Model& model) {
   if (body.surface.kind == sim::Surface::Kind::Paraboloid) {
     // Only the kept columns, straight from the shape (the physics builds no points but for
     // contact.model points).
-    const sim::SurfacePoints kept =
-        sim::gridSurface(body.surface.paraboloid, body.dents, grid, k);
+    const sim::SurfacePoints kept = sim::gridSurface(body.surface.paraboloid, body.dents, grid, k);
     for (const Eigen::Vector3d& p : kept.top) keep(p, points.top);
     for (const Eigen::Vector3d& p : kept.bottom) keep(p, points.bottom);
   } else {

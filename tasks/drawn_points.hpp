@@ -11,10 +11,10 @@
 namespace tasks {
 
 struct DrawnPoints {
-  std::vector<Eigen::Vector3f> top;     ///< body frame about the CM, m (drawn red)
-  std::vector<Eigen::Vector3f> bottom;  ///< body frame about the CM, m (drawn blue)
-  float spacing = 0.003f;               ///< between neighbouring points, m
-  float radius = 0.001f;                ///< of each drawn sphere, m
+  std::vector<Eigen::Vector3f> top;              ///< body frame about the CM, m (drawn red)
+  std::vector<Eigen::Vector3f> bottom;           ///< body frame about the CM, m (drawn blue)
+  float spacing = 0.003f;                        ///< between neighbouring points, m
+  float radius = 0.001f;                         ///< of each drawn sphere, m
   Eigen::Vector2f footprint_half{0.01f, 0.05f};  ///< outline half extents along x and y, m
 };
 

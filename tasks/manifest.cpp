@@ -46,7 +46,8 @@ std::optional<OutputEntry> fromJson(const nlohmann::json& j) {
 class Lock {
  public:
   explicit Lock(const fs::path& dir)
-      : fd_(::open((dir / ".rattleback-manifest.lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644)) {
+      : fd_(::open((dir / ".rattleback-manifest.lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC,
+                   0644)) {
     if (fd_ >= 0) ::flock(fd_, LOCK_EX);
   }
   ~Lock() {
@@ -76,8 +77,9 @@ rb::Status recordInFolder(const fs::path& dir, const std::vector<OutputEntry>& e
   for (const std::string& name : order) outputs.push_back(by_file[name]);
   auto out = AtomicOutput::open((dir / kManifestName).string());
   if (!out) return out.error();
-  out->stream() << nlohmann::json{{"program", "rattleback " RATTLEBACK_VERSION}, {"outputs", outputs}}.dump(1)
-                << "\n";
+  out->stream()
+      << nlohmann::json{{"program", "rattleback " RATTLEBACK_VERSION}, {"outputs", outputs}}.dump(1)
+      << "\n";
   return out->commit();
 }
 

@@ -14,10 +14,20 @@
 
 namespace tasks {
 
-enum class OutputKind { Telemetry, Plot, Video, Still, Analysis, Sweep, SweepPlot, Bench, BenchPlot };
+enum class OutputKind {
+  Telemetry,
+  Plot,
+  Video,
+  Still,
+  Analysis,
+  Sweep,
+  SweepPlot,
+  Bench,
+  BenchPlot
+};
 
 struct OutputEntry {
-  std::string file;   ///< path as written; the manifest keeps its name within its folder
+  std::string file;  ///< path as written; the manifest keeps its name within its folder
   OutputKind kind = OutputKind::Telemetry;
   std::string scene;  ///< the scene's (or sweep's) name: its file's stem
   /// Video: preferred, reversed, both or single; still: the view; plot: what it shows (spin,

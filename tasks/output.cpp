@@ -83,7 +83,8 @@ rb::Result<AtomicOutput> AtomicOutput::open(const std::string& path) {
   file.done_ = in_place;
   errno = 0;
   file.out_.open(in_place ? file.target_ : file.temp_, std::ios::binary | std::ios::trunc);
-  if (!file.out_) return rb::Error{"", path + ": cannot write: " + std::strerror(errno ? errno : EACCES)};
+  if (!file.out_)
+    return rb::Error{"", path + ": cannot write: " + std::strerror(errno ? errno : EACCES)};
   if (!in_place) registerTemporary(file.temp_);
   return file;
 }

@@ -26,7 +26,8 @@ std::vector<Pose> thinPoses(const std::vector<Pose>& poses) {
   if (poses.size() < 3) return poses;
   const double span = poses.back().t - poses.front().t;
   const double rate = (poses.size() - 1) / std::max(span, 1e-12);
-  const std::size_t k = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(rate / kPlayerRate - 1e-9)));
+  const std::size_t k =
+      std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(rate / kPlayerRate - 1e-9)));
   std::vector<Pose> out;
   for (std::size_t i = 0; i < poses.size(); i += k) out.push_back(poses[i]);
   if (out.back().t != poses.back().t) out.push_back(poses.back());
@@ -56,10 +57,11 @@ std::string playerScript(const PlayerRun& run) {
   appendArray(data, "qy", q.size(), 10, [&](std::size_t i) { return q[i].qy; });
   appendArray(data, "qz", q.size(), 10, [&](std::size_t i) { return q[i].qz; });
   appendArray(data, "spin", q.size(), 7, [&](std::size_t i) { return q[i].spin; });
-  appendArray(data, "reversals", run.reversals.size(), 9, [&](std::size_t i) { return run.reversals[i]; });
+  appendArray(data, "reversals", run.reversals.size(), 9,
+              [&](std::size_t i) { return run.reversals[i]; });
   data.back() = '}';
-  return "(window.RATTLEBACK_RUNS = window.RATTLEBACK_RUNS || {})[" + nlohmann::json(run.id).dump() +
-         "] = " + data + ";\n";
+  return "(window.RATTLEBACK_RUNS = window.RATTLEBACK_RUNS || {})[" +
+         nlohmann::json(run.id).dump() + "] = " + data + ";\n";
 }
 
 }  // namespace tasks

@@ -21,17 +21,17 @@ namespace tasks {
 constexpr double kPlayerRate = 100;
 
 struct Pose {
-  double t = 0;              ///< s
-  double x = 0, y = 0, z = 0;  ///< CM, world, m
+  double t = 0;                           ///< s
+  double x = 0, y = 0, z = 0;             ///< CM, world, m
   double qw = 1, qx = 0, qy = 0, qz = 0;  ///< body to world
-  double spin = 0;           ///< n, rad/s
+  double spin = 0;                        ///< n, rad/s
 };
 
 struct PlayerRun {
   std::string id;     ///< the key in window.RATTLEBACK_RUNS (the scene's stem)
   std::string title;  ///< shown above the player
   DrawnPoints points;
-  std::vector<Pose> poses;  ///< in time order
+  std::vector<Pose> poses;        ///< in time order
   std::vector<double> reversals;  ///< s
 };
 

@@ -1,3 +1,5 @@
+#include "tasks/report.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -16,18 +18,17 @@
 #include "scene/loader.hpp"
 #include "tasks/drawn_points.hpp"
 #include "tasks/manifest.hpp"
+#include "tasks/output.hpp"
 #include "tasks/player_data.hpp"
 #include "util/assets.hpp"
-#include "tasks/output.hpp"
-#include "tasks/report.hpp"
 
 namespace tasks {
 namespace {
 
 namespace fs = std::filesystem;
 
-const char* kVideoSuffixes[] = {"-preferred.mp4", "-reversed.mp4", "-ccw.mp4", "-cw.mp4",
-                                "-both.mp4", ".mp4"};
+const char* kVideoSuffixes[] = {"-preferred.mp4", "-reversed.mp4", "-ccw.mp4",
+                                "-cw.mp4",        "-both.mp4",     ".mp4"};
 // First frames of the reversed and preferred videos, used as their posters.
 const char* kPosterSuffixes[] = {"-reversed.png", "-preferred.png", "-ccw.png", "-cw.png"};
 const char* kStillSuffixes[] = {"-oblique.png", "-above.png", "-front.png", "-side.png",
@@ -277,7 +278,8 @@ struct Folder {
 
 // The slot of the page a manifest entry fills: the suffix a file of that role has when named
 // as scripts/run.sh names it. Videos' spins say which stills are their posters.
-std::optional<std::string> slotOf(const OutputEntry& e, const std::map<double, std::string>& video_spins) {
+std::optional<std::string> slotOf(const OutputEntry& e,
+                                  const std::map<double, std::string>& video_spins) {
   switch (e.kind) {
     case OutputKind::Video:
       if (e.role == "preferred" || e.role == "reversed" || e.role == "ccw" || e.role == "cw" ||
@@ -288,10 +290,14 @@ std::optional<std::string> slotOf(const OutputEntry& e, const std::map<double, s
       if (e.t && *e.t == 0 && e.spin && video_spins.count(*e.spin))
         return "-" + video_spins.at(*e.spin) + ".png";
       return "-" + e.role + ".png";
-    case OutputKind::Plot: return "-" + e.role + ".png";
-    case OutputKind::Telemetry: return ".csv";
-    case OutputKind::Analysis: return e.role == "json" ? "-analysis.json" : "-analysis.txt";
-    default: return std::nullopt;
+    case OutputKind::Plot:
+      return "-" + e.role + ".png";
+    case OutputKind::Telemetry:
+      return ".csv";
+    case OutputKind::Analysis:
+      return e.role == "json" ? "-analysis.json" : "-analysis.txt";
+    default:
+      return std::nullopt;
   }
 }
 
@@ -354,7 +360,8 @@ void placeByName(const fs::path& dir, const std::set<std::string>& placed, Folde
         folder.scenes[name.substr(0, name.size() - suffix.size())].by_suffix[suffix] = name;
         claimed = true;
       }
-    if (!claimed && (endsWith(name, ".png") || endsWith(name, ".csv"))) folder.others.push_back(name);
+    if (!claimed && (endsWith(name, ".png") || endsWith(name, ".csv")))
+      folder.others.push_back(name);
   }
 }
 
@@ -372,8 +379,8 @@ void separateSweeps(const fs::path& dir, Folder& folder) {
     }
     SweepFiles sweep{it->first, it->second.at(".csv"), *meta, {}};
     for (auto o = others.begin(); o != others.end();) {
-      const bool mine = endsWith(*o, ".png") &&
-                        (*o == it->first + ".png" || o->rfind(it->first + "-", 0) == 0);
+      const bool mine =
+          endsWith(*o, ".png") && (*o == it->first + ".png" || o->rfind(it->first + "-", 0) == 0);
       if (mine) sweep.images.push_back(*o);
       o = mine ? others.erase(o) : o + 1;
     }
@@ -430,7 +437,9 @@ std::vector<Pose> posesOf(const fs::path& csv) {
       if (!p) break;
       ++p;
     }
-    auto at = [&](std::size_t w) { return static_cast<std::size_t>(index[w]) < fields.size() ? fields[index[w]] : NAN; };
+    auto at = [&](std::size_t w) {
+      return static_cast<std::size_t>(index[w]) < fields.size() ? fields[index[w]] : NAN;
+    };
     poses.push_back({at(0), at(1), at(2), at(3), at(4), at(5), at(6), at(7), at(8)});
   }
   return poses;
@@ -474,8 +483,8 @@ bool copyPlayerBundle(const fs::path& dir) {
   return out->commit().ok();
 }
 
-void writeScene(std::ostream& out, const fs::path& dir, const std::string& name, const SceneFiles& f,
-                bool player) {
+void writeScene(std::ostream& out, const fs::path& dir, const std::string& name,
+                const SceneFiles& f, bool player) {
   out << "<section id=\"" << escape(name) << "\"><h2>" << escape(name) << "</h2>\n";
   std::optional<nlohmann::json> theory, run;
   if (f.has("-analysis.json")) theory = readJson(dir / f.at("-analysis.json"));
@@ -560,7 +569,8 @@ rb::Result<std::string> writeReport(const std::string& folder_path) {
   const fs::path dir = folder_path;
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
-    return rb::Error{"", folder_path + ": not a folder (give the folder the runs wrote into, e.g. out)"};
+    return rb::Error{
+        "", folder_path + ": not a folder (give the folder the runs wrote into, e.g. out)"};
   Folder folder;
   placeByName(dir, placeListed(dir, folder), folder);
   separateSweeps(dir, folder);

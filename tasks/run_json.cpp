@@ -23,9 +23,10 @@ nlohmann::json modelJson(const sim::Model& model) {
     j["dt_s"] = model.dt;
   j["duration_s"] = model.duration;
   j["gravity"] = model.gravity;
-  j["initial"] = {{"spin", model.initial.spin},
-                  {"tilt_deg", {model.initial.tilt_x * 180 / M_PI, model.initial.tilt_y * 180 / M_PI}},
-                  {"height_m", model.initial.height}};
+  j["initial"] = {
+      {"spin", model.initial.spin},
+      {"tilt_deg", {model.initial.tilt_x * 180 / M_PI, model.initial.tilt_y * 180 / M_PI}},
+      {"height_m", model.initial.height}};
   j["mass_kg"] = model.body->mass;
   j["length_unit_m"] = model.length_unit;
   return j;

@@ -1,12 +1,11 @@
 #include "tasks/scene_args.hpp"
 
-
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include "sim/compile.hpp"
 #include "util/assets.hpp"
-#include <cstdio>
 
 namespace tasks {
 
@@ -59,10 +58,13 @@ rb::Result<LoadedScene> applyOverrides(scene::Loaded scene, const Overrides& o) 
     char text[64];
     std::snprintf(text, sizeof text, "%g", *o.fps);
     if (*o.fps != std::floor(*o.fps))  // (NaN too)
-      return rb::Error{"", name("fps") + ": must be a whole number of frames per second "
-                                         "(24, 25, 30, 60 …), not " + text};
+      return rb::Error{"", name("fps") +
+                               ": must be a whole number of frames per second "
+                               "(24, 25, 30, 60 …), not " +
+                               text};
     if (*o.fps < 1 || *o.fps > scene::kMaxFps)
-      return rb::Error{"", name("fps") + ": must be within 1 … " + std::to_string(scene::kMaxFps) + ", not " + text};
+      return rb::Error{"", name("fps") + ": must be within 1 … " + std::to_string(scene::kMaxFps) +
+                               ", not " + text};
     scene.video.fps = static_cast<int>(*o.fps);
     scene.overrides["video.fps"] = name("fps");
   }
@@ -74,10 +76,9 @@ rb::Result<LoadedScene> applyOverrides(scene::Loaded scene, const Overrides& o) 
 void describeModel(const sim::Model& model, const std::string& scene) {
   const sim::Body& body = *model.body;
   const sim::GridCensus census = sim::censusOf(body);
-  std::fprintf(stderr, "%s: %zu bottom and %zu top points, mass %g kg, contact %s",
-               scene.c_str(), static_cast<std::size_t>(census.bottom),
-               static_cast<std::size_t>(census.top), body.mass,
-               std::string(rb::nameOf(model.contact.model)).c_str());
+  std::fprintf(stderr, "%s: %zu bottom and %zu top points, mass %g kg, contact %s", scene.c_str(),
+               static_cast<std::size_t>(census.bottom), static_cast<std::size_t>(census.top),
+               body.mass, std::string(rb::nameOf(model.contact.model)).c_str());
   if (model.contact.model != sim::ContactModel::Rolling)
     std::fprintf(stderr, " (k %g N/m, c %g N s/m, mu %g)", model.contact.stiffness,
                  model.contact.damping, model.contact.friction);

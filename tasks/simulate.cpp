@@ -33,10 +33,12 @@ constexpr Column kColumns[] = {
     {"Lz", "kg m^2/s: vertical angular momentum about the centre of mass"},
     {"contacts", "count of contact points below the floor"},
     {"normal_force", "N: total normal force of the floor"},
-    {"mode", "the contact model integrated: points, smooth or rolling (contact.model auto "
-             "switches between rolling and smooth)"},
-    {"qw", "attitude: unit quaternion (qw, qx, qy, qz), scalar first, rotating body axes into "
-           "world axes (world z up); continuous in time (q and -q are the same rotation)"},
+    {"mode",
+     "the contact model integrated: points, smooth or rolling (contact.model auto "
+     "switches between rolling and smooth)"},
+    {"qw",
+     "attitude: unit quaternion (qw, qx, qy, qz), scalar first, rotating body axes into "
+     "world axes (world z up); continuous in time (q and -q are the same rotation)"},
     {"qx", "attitude quaternion, x part (see qw)"},
     {"qy", "attitude quaternion, y part (see qw)"},
     {"qz", "attitude quaternion, z part (see qw)"},
@@ -44,9 +46,13 @@ constexpr Column kColumns[] = {
 
 }  // namespace
 
-std::span<const Column> telemetryColumns() { return kColumns; }
+std::span<const Column> telemetryColumns() {
+  return kColumns;
+}
 
-std::string telemetryHeader() { return csvHeader(kColumns) + "\n"; }
+std::string telemetryHeader() {
+  return csvHeader(kColumns) + "\n";
+}
 
 Eigen::Quaterniond attitude(const sim::Telemetry& s) {
   // q and −q are the same rotation; the integrated quaternion is kept as it is (never flipped
@@ -68,9 +74,9 @@ char* formatRow(char* line, const sim::Telemetry& s) {
     at = writeNumber(at, value);
     *at++ = ',';
   };
-  for (double v : {s.t, s.spin, s.energy, s.kinetic, s.potential, s.elastic, s.tilt_deg,
-                   s.x_world.x(), s.x_world.y(), s.x_world.z(), s.w_world.x(), s.w_world.y(),
-                   s.w_world.z(), s.L_world.z()})
+  for (double v :
+       {s.t, s.spin, s.energy, s.kinetic, s.potential, s.elastic, s.tilt_deg, s.x_world.x(),
+        s.x_world.y(), s.x_world.z(), s.w_world.x(), s.w_world.y(), s.w_world.z(), s.L_world.z()})
     put(v);
   at = std::to_chars(at, at + kNumberChars, s.contacts).ptr;
   *at++ = ',';
@@ -179,9 +185,8 @@ void TelemetryWriter::writeFormatted(std::size_t keep) {
   }
 }
 
-rb::Status TelemetryWriter::commit(const std::string& scene, const sim::Model& model,
-                                   double rate, const sim::RunSummary& run,
-                                   const nlohmann::json& check) {
+rb::Status TelemetryWriter::commit(const std::string& scene, const sim::Model& model, double rate,
+                                   const sim::RunSummary& run, const nlohmann::json& check) {
   handOff();
   writeFormatted(0);
   if (meta_)
@@ -192,8 +197,7 @@ rb::Status TelemetryWriter::commit(const std::string& scene, const sim::Model& m
 
 rb::Status writeTelemetry(const std::string& path, const std::string& scene,
                           const sim::Model& model, double rate, const sim::RunSummary& run,
-                          const std::vector<sim::Telemetry>& samples,
-                          const nlohmann::json& check) {
+                          const std::vector<sim::Telemetry>& samples, const nlohmann::json& check) {
   auto writer = TelemetryWriter::open(path);
   if (!writer) return writer.error();
   for (const sim::Telemetry& s : samples) writer->row(s);

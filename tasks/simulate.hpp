@@ -29,7 +29,8 @@ constexpr double kDefaultRate = 500;  ///< Hz: samples per simulated second when
 /// Every column of the telemetry, in the CSV's order.
 std::span<const Column> telemetryColumns();
 
-/// The CSV's header line (with its newline) and one row per sample (docs/commands.md "The telemetry CSV").
+/// The CSV's header line (with its newline) and one row per sample (docs/commands.md "The telemetry
+/// CSV").
 std::string telemetryHeader();
 void writeTelemetryRow(std::ostream& out, const sim::Telemetry& s);
 /// The body's attitude at a sample as the qw … qz columns give it: unit, scalar first, body to

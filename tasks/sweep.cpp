@@ -69,7 +69,8 @@ std::optional<SweepRow> runRow(const scene::Sweep& sweep, const scene::SweepScen
   SweepRow row;
   row.row = index;
   const std::vector<int> at = sweep.coordinates(index);
-  for (std::size_t i = 0; i < sweep.axes.size(); ++i) row.values.push_back(sweep.axes[i].values[at[i]]);
+  for (std::size_t i = 0; i < sweep.axes.size(); ++i)
+    row.values.push_back(sweep.axes[i].values[at[i]]);
   auto refused = [&](const std::string& why) {
     row.status = RowStatus::Refused;
     row.reason = why;
@@ -113,7 +114,9 @@ std::optional<SweepRow> runRow(const scene::Sweep& sweep, const scene::SweepScen
 
 }  // namespace
 
-std::span<const Column> sweepResultColumns() { return kResults; }
+std::span<const Column> sweepResultColumns() {
+  return kResults;
+}
 
 bool isSweepMetric(const std::string& name) {
   for (const Column& c : kResults)
@@ -189,7 +192,8 @@ SweepRun runSweep(const scene::Sweep& sweep, const scene::SweepScenes& scenes,
   const auto start = std::chrono::steady_clock::now();
   {
     std::vector<std::jthread> pool;
-    out.threads = static_cast<int>(std::min<std::size_t>(jobs, std::max<std::size_t>(1, rows.size())));
+    out.threads =
+        static_cast<int>(std::min<std::size_t>(jobs, std::max<std::size_t>(1, rows.size())));
     running = out.threads;
     for (int j = 0; j < out.threads; ++j) {
       pool.emplace_back([&] {

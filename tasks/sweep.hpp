@@ -37,7 +37,7 @@ struct SweepRow {
   std::string reason;                      ///< for Stopped and Refused
   std::optional<sim::StopReason> stop;     ///< for Stopped, when the run said why
   std::optional<double> first_reversal_s;  ///< s
-  std::optional<std::int64_t> reversals;  ///< none when refused
+  std::optional<std::int64_t> reversals;   ///< none when refused
   std::optional<double> final_spin;        ///< rad/s, when it reached its end
   std::optional<double> max_tilt_deg;      ///< degrees over the steps (also a stopped run's)
   std::optional<double> energy_lost;       ///< fraction of the initial energy, at the end
@@ -62,7 +62,7 @@ nlohmann::json sweepColumnsJson(const std::vector<std::string>& keys);
 nlohmann::json sweepAxesJson(const scene::Sweep& sweep);
 
 struct SweepOptions {
-  int jobs = 0;  ///< threads; 0: all cores
+  int jobs = 0;                     ///< threads; 0: all cores
   std::function<bool()> cancelled;  ///< polled every 50 ms: true stops the pool (may be empty)
   /// Called once per finished row, one at a time, from the pool's threads (a journal).
   std::function<void(const SweepRow&)> finished;

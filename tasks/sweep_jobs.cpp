@@ -45,7 +45,10 @@ std::string slurmScript(const scene::Sweep& sweep, const JobRequest& r, const st
   std::string merge = shellWord(exe) + " sweep merge -q " + shellWord(out);
   for (const std::string& f : shard_files) merge.append(" ").append(shellWord(f));
   if (!r.plot.empty())
-    merge.append(" --plot ").append(shellWord(absolute(r.plot))).append(" --metric ").append(shellWord(r.metric));
+    merge.append(" --plot ")
+        .append(shellWord(absolute(r.plot)))
+        .append(" --metric ")
+        .append(shellWord(r.metric));
   std::ostringstream s;
   s << "#!/bin/bash\n"
     << "# " << stem << ": " << sweep.rows() << " runs of rattleback sweep " << sweep_file << "\n"
@@ -74,8 +77,9 @@ std::string slurmScript(const scene::Sweep& sweep, const JobRequest& r, const st
 rb::Result<nlohmann::json> readShardSidecar(const std::string& path) {
   std::ifstream in(path + ".json");
   if (!in)
-    return rb::Error{"", path + ".json: cannot read the shard's sidecar (each shard writes its "
-                                "table and TABLE.json beside it)"};
+    return rb::Error{"", path +
+                             ".json: cannot read the shard's sidecar (each shard writes its "
+                             "table and TABLE.json beside it)"};
   nlohmann::json meta = nlohmann::json::parse(in, nullptr, false);
   if (meta.is_discarded() || meta.value("command", "") != "sweep" || !meta.contains("rows"))
     return rb::Error{"", path + ".json: not the sidecar of a sweep table"};
@@ -88,7 +92,8 @@ rb::Status readShardRows(const std::string& path, std::string& head,
                          const std::string& first) {
   std::ifstream in(path);
   std::string line;
-  if (!in || !std::getline(in, line)) return rb::Status::fail(path + ": cannot read the shard's table");
+  if (!in || !std::getline(in, line))
+    return rb::Status::fail(path + ": cannot read the shard's table");
   if (head.empty()) head = line;
   if (line != head) return rb::Status::fail(path + ": its columns differ from " + first + "'s");
   while (std::getline(in, line)) {
@@ -134,8 +139,8 @@ std::optional<Shard> parseShard(const std::string& text) {
 // OUT.csv → OUT.shard-I-of-N.csv; `index` may be a shell expansion for a job script.
 std::string shardPath(const std::string& output, const std::string& index, std::int64_t count) {
   fs::path p(output);
-  const std::string name = p.stem().string() + ".shard-" + index + "-of-" +
-                           std::to_string(count) + p.extension().string();
+  const std::string name = p.stem().string() + ".shard-" + index + "-of-" + std::to_string(count) +
+                           p.extension().string();
   return (p.parent_path() / name).string();
 }
 
@@ -166,8 +171,9 @@ rb::Result<std::string> jobScript(const scene::Sweep& sweep, const JobRequest& r
                              std::to_string(sweep.rows()) + " runs leaves some empty; at most " +
                              std::to_string(sweep.rows())};
   if (r.kind == JobScript::Parallel && !r.plot.empty())
-    return rb::Error{"", "--plot: GNU parallel runs the shards only; plot when you merge them "
-                         "(rattleback sweep merge OUT.csv SHARD… --plot PNG)"};
+    return rb::Error{"",
+                     "--plot: GNU parallel runs the shards only; plot when you merge them "
+                     "(rattleback sweep merge OUT.csv SHARD… --plot PNG)"};
   const std::string sweep_file = absolute(sweep.file);
   const std::string out = absolute(r.output);
   std::vector<std::string> shard_files;
@@ -180,22 +186,25 @@ rb::Result<std::map<std::int64_t, std::string>> Journal::read(
     const std::string& path, const scene::Sweep& sweep, const std::vector<std::int64_t>& rows) {
   std::ifstream in(path);
   if (!in)
-    return rb::Error{"", path + ": nothing to resume (no interrupted run wrote it); run without "
-                                "--resume"};
+    return rb::Error{"", path +
+                             ": nothing to resume (no interrupted run wrote it); run without "
+                             "--resume"};
   // The sweep file and its base scene as they were when the journal was begun.
   std::ifstream print_in(path + ".json");
   const nlohmann::json print = nlohmann::json::parse(print_in, nullptr, false);
   if (print.is_discarded() || !print.is_object() ||
       print.value("fingerprint", "") != sweepFingerprint(sweep))
-    return rb::Error{"", path + ": the sweep file or its base scene changed since the "
-                                "interrupted run (its rows would mix two sweeps); remove it, or "
-                                "run without --resume"};
+    return rb::Error{"", path +
+                             ": the sweep file or its base scene changed since the "
+                             "interrupted run (its rows would mix two sweeps); remove it, or "
+                             "run without --resume"};
   std::vector<std::string> keys;
   for (const auto& axis : sweep.axes) keys.push_back(axis.key);
   std::string line;
   if (!std::getline(in, line) || line != sweepHeader(keys))
-    return rb::Error{"", path + ": its columns are not this sweep's; remove it, or run without "
-                                "--resume"};
+    return rb::Error{"", path +
+                             ": its columns are not this sweep's; remove it, or run without "
+                             "--resume"};
   const std::set<std::int64_t> mine(rows.begin(), rows.end());
   std::map<std::int64_t, std::string> done;
   while (std::getline(in, line)) {
@@ -205,8 +214,8 @@ rb::Result<std::map<std::int64_t, std::string>> Journal::read(
     if (comma == std::string::npos || !mine.count(r) ||
         line.rfind(sweepRowPrefix(sweep, r), 0) != 0)
       return rb::Error{"", path + ": row '" + line.substr(0, 40) +
-                                  "…' is not one of this sweep's (was the sweep file changed?); "
-                                  "remove it, or run without --resume"};
+                               "…' is not one of this sweep's (was the sweep file changed?); "
+                               "remove it, or run without --resume"};
     done[r] = line;
   }
   return done;
@@ -215,7 +224,8 @@ rb::Result<std::map<std::int64_t, std::string>> Journal::read(
 rb::Result<Journal> Journal::open(const std::string& path, const std::string& header,
                                   const std::map<std::int64_t, std::string>& kept,
                                   const std::string& fingerprint) {
-  std::ofstream(path + ".json", std::ios::trunc) << nlohmann::json{{"fingerprint", fingerprint}}.dump() << "\n";
+  std::ofstream(path + ".json", std::ios::trunc)
+      << nlohmann::json{{"fingerprint", fingerprint}}.dump() << "\n";
   std::ofstream out(path, std::ios::trunc);
   if (!out)
     return rb::Error{"", path + ": cannot write the sweep's journal: " + std::strerror(errno)};
@@ -243,8 +253,9 @@ rb::Result<Merged> mergeShards(const std::vector<std::string>& shards) {
   for (const std::string& path : shards) {
     auto meta = readShardSidecar(path);
     if (!meta) return meta.error();
-    if (first && ((*first)["sweep"] != meta.value()["sweep"] || (*first)["rows"] != meta.value()["rows"] ||
-                  (*first)["axes"] != meta.value()["axes"]))
+    if (first &&
+        ((*first)["sweep"] != meta.value()["sweep"] || (*first)["rows"] != meta.value()["rows"] ||
+         (*first)["axes"] != meta.value()["axes"]))
       return rb::Error{"", path + ": from another sweep than " + shards.front() + " (" +
                                meta.value().value("sweep", "?") + ")"};
     if (!first) first = meta.value();

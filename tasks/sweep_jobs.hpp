@@ -1,6 +1,6 @@
-// A sweep beyond one process (docs/commands.md "rattleback sweep"): shards of its rows, the journal an interrupted
-// run keeps for --resume, the merge of shard tables, and job scripts for Slurm and GNU
-// parallel. The files are the command line's: tasks/sweep.hpp writes them.
+// A sweep beyond one process (docs/commands.md "rattleback sweep"): shards of its rows, the journal
+// an interrupted run keeps for --resume, the merge of shard tables, and job scripts for Slurm and
+// GNU parallel. The files are the command line's: tasks/sweep.hpp writes them.
 #pragma once
 
 #include <cstdint>
@@ -36,10 +36,10 @@ rb::Status checkTableIsAFile(const std::string& output);
 /// What a job script runs.
 struct JobRequest {
   JobScript kind = JobScript::Slurm;
-  int shards = 0;         ///< pieces, 1 … rows
-  std::string program;    ///< the rattleback to run (absolute)
-  std::string output;     ///< the merged table (the shards go beside it)
-  std::string plot;       ///< the merge's heatmap, or empty
+  int shards = 0;       ///< pieces, 1 … rows
+  std::string program;  ///< the rattleback to run (absolute)
+  std::string output;   ///< the merged table (the shards go beside it)
+  std::string plot;     ///< the merge's heatmap, or empty
   std::string metric = "first_reversal_s";
 };
 /// The script's text: a Slurm job array whose first task submits the merge, or one command

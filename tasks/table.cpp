@@ -45,16 +45,16 @@ std::string number(std::optional<double> value, int digits) {
   if (!value || !std::isfinite(*value)) return "";
   char text[40];
   // std::to_chars: no locale, no allocation; general format as printf's %.*g.
-  const auto end = std::to_chars(text, text + sizeof text, *value + 0.0, std::chars_format::general,
-                                 digits).ptr;
+  const auto end =
+      std::to_chars(text, text + sizeof text, *value + 0.0, std::chars_format::general, digits).ptr;
   return std::string(text, end);
 }
 
 std::string fixed(std::optional<double> value, int decimals) {
   if (!value || !std::isfinite(*value)) return "";
   char text[400];
-  const auto end = std::to_chars(text, text + sizeof text, *value + 0.0, std::chars_format::fixed,
-                                 decimals).ptr;
+  const auto end =
+      std::to_chars(text, text + sizeof text, *value + 0.0, std::chars_format::fixed, decimals).ptr;
   return std::string(text, end);
 }
 

@@ -93,7 +93,8 @@ TEST(Auto, TheSwitchToRollingOnlyTakesEnergyOut) {
   auto kinetic = [&](const sim::State& s) { return sim::telemetryOf(smooth, s).kinetic; };
   for (int i = 0; i < 200; ++i) {
     sim::State s;
-    s.q = Eigen::Quaterniond(Eigen::AngleAxisd(0.5 * unit(random), Eigen::Vector3d(unit(random), unit(random), 0).normalized()));
+    s.q = Eigen::Quaterniond(Eigen::AngleAxisd(
+        0.5 * unit(random), Eigen::Vector3d(unit(random), unit(random), 0).normalized()));
     s.v_world = 0.05 * Eigen::Vector3d(unit(random), unit(random), unit(random));
     s.L_world = 1e-4 * Eigen::Vector3d(unit(random), unit(random), 5 * unit(random));
     const double before = kinetic(s);
@@ -201,11 +202,13 @@ TEST(Auto, SamplesInASwitchStepBelongToTheModeInForce) {
     double worst_dip = 0;
     for (std::size_t i = 1; i + 1 < run.samples.size(); ++i) {
       const sim::Telemetry& s = run.samples[i];
-      const bool at_a_switch =
-          std::any_of(changes.begin(), changes.end(), [&](const auto& c) { return std::abs(c.first - s.t) < 1e-9; });
+      const bool at_a_switch = std::any_of(changes.begin(), changes.end(), [&](const auto& c) {
+        return std::abs(c.first - s.t) < 1e-9;
+      });
       if (!at_a_switch) EXPECT_EQ(s.mode, inForce(s.t)) << "t = " << s.t;
       // A dip: below both neighbours by more than the smooth contact's own wobble allows.
-      worst_dip = std::max(worst_dip, std::min(run.samples[i - 1].energy, run.samples[i + 1].energy) - s.energy);
+      worst_dip = std::max(
+          worst_dip, std::min(run.samples[i - 1].energy, run.samples[i + 1].energy) - s.energy);
     }
     // 1e-6 of the energy: the energy only falls (damper, friction, impacts), and rounding and
     // interpolation leave dips of 3e-8 of it (measured); the projection's was 5400 times larger.

@@ -19,7 +19,8 @@ TEST(SeedGrid, CountsAndRangesMatchTheReport) {
   EXPECT_EQ(body.bottom.size(), 294u);
   double x_min = 1e9, x_max = -1e9, y_min = 1e9, y_max = -1e9;
   for (std::size_t i = 0; i < body.top.size(); ++i) {
-    const Eigen::Vector3d p = (body.top[i] + body.com_geometric) / 0.01;  // back to cm, geometric frame
+    const Eigen::Vector3d p =
+        (body.top[i] + body.com_geometric) / 0.01;  // back to cm, geometric frame
     x_min = std::min(x_min, p.x());
     x_max = std::max(x_max, p.x());
     y_min = std::min(y_min, p.y());
@@ -69,8 +70,8 @@ TEST(MassProperties, ParallelAxisMatchesDirectSum) {
     Eigen::Matrix3d direct = Eigen::Matrix3d::Zero();
     for (const auto& p : cloud) {
       const Eigen::Vector3d r = p - P;
-      direct += mass / cloud.size() * (r.squaredNorm() * Eigen::Matrix3d::Identity() -
-                                       r * r.transpose());
+      direct +=
+          mass / cloud.size() * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
     }
     // 1e-12 relative: two summation orders of 500 terms in double precision.
     EXPECT_LT((sim::inertiaAbout(m, P) - direct).norm(), 1e-12 * direct.norm());
@@ -85,8 +86,8 @@ TEST(MassProperties, GridConvergesToTheContinuumParaboloid) {
   sim::SceneSpec spec = parse(kStableScene);
   spec.body.dents.reset();
   const double a = 0.01, p = 0.5, s = 0.03, H = 0.015, M = spec.body.mass;
-  const Eigen::Vector3d exact(M * (a * H / (3 * s) + H * H / 18), M * (a * H / (3 * p) + H * H / 18),
-                              M * a * H / 3 * (1 / p + 1 / s));
+  const Eigen::Vector3d exact(M * (a * H / (3 * s) + H * H / 18),
+                              M * (a * H / (3 * p) + H * H / 18), M * a * H / 3 * (1 / p + 1 / s));
   std::vector<double> errors;
   for (double h : {0.04, 0.02, 0.01}) {  // grid spacing, cm
     spec.body.grid = {h, 2 * h, h / 2};
@@ -172,11 +173,12 @@ TEST(GridWalk, ClosedFormLevelsAreThePointByPointGrid) {
     std::vector<sim::Grid> grids;
   };
   const std::vector<sim::Grid> fine = {sim::Grid{1e-3, 2e-3, 5e-5}, sim::Grid{7e-4, 1.3e-3, 3.3e-4},
-                                       sim::Grid{2.5e-4, 2.5e-4, 2.5e-4}, sim::Grid{3e-3, 3e-3, 0.02}};
+                                       sim::Grid{2.5e-4, 2.5e-4, 2.5e-4},
+                                       sim::Grid{3e-3, 3e-3, 0.02}};
   int cases = 0;
   for (const Case& c : {Case{shape, fine}, Case{tilted, fine}, Case{round, {round_grid}}})
-    for (const std::optional<sim::Dents>& d : {std::optional<sim::Dents>(), std::optional(dents),
-                                               std::optional(round_dents)})
+    for (const std::optional<sim::Dents>& d :
+         {std::optional<sim::Dents>(), std::optional(dents), std::optional(round_dents)})
       for (const sim::Grid& grid : c.grids) {
         const sim::Paraboloid& body = c.body;
         const PointByPoint expected = walkPointByPoint(body, d, grid);
@@ -233,7 +235,8 @@ body:
   for (const std::string& run : runs) {
     SCOPED_TRACE(run);
     const auto on = [&](const char* h) {
-      const std::string grid = std::string("  grid: {dx: ") + h + ", dy: " + h + ", dz: " + h + "}\n";
+      const std::string grid =
+          std::string("  grid: {dx: ") + h + ", dy: " + h + ", dz: " + h + "}\n";
       return record(build(parse(body + grid + start + run)), 1e-3);
     };
     const Recorded fine = on("0.025"), coarse = on("0.2");

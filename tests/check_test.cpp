@@ -1,9 +1,10 @@
 // simulate --check (issue 27): the estimated error of a run must be the error it has, as a
 // converged run measures it, within what the estimate's own order leaves.
+#include "tasks/check.hpp"
+
 #include <gtest/gtest.h>
 
 #include "support.hpp"
-#include "tasks/check.hpp"
 
 using namespace testing_support;
 

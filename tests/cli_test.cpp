@@ -9,10 +9,9 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "render/image_io.hpp"
 #include "sim/compile.hpp"
@@ -74,14 +73,16 @@ fs::path badScene(const std::string& from, const std::string& to) {
   return path;
 }
 
-int lines(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
+int lines(const std::string& text) {
+  return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+}
 
 }  // namespace
 
 TEST(Cli, HelpOnEveryCommand) {
-  for (const char* command : {"--help", "simulate --help", "analyze --help", "render --help",
-                              "still --help", "compare --help", "bench --help", "report --help",
-                              "sweep --help", "sweep merge --help"}) {
+  for (const char* command :
+       {"--help", "simulate --help", "analyze --help", "render --help", "still --help",
+        "compare --help", "bench --help", "report --help", "sweep --help", "sweep merge --help"}) {
     const Result r = rattleback(command);
     EXPECT_EQ(r.status, 0) << command;
     EXPECT_NE(r.out.find("Usage"), std::string::npos) << command;
@@ -137,9 +138,9 @@ TEST(Cli, UnwritableOutputIsReportedCleanly) {
 // link with a file.
 TEST(Cli, OutputsAreWrittenThroughSymbolicLinks) {
   const fs::path dir = scratchDir();
-  for (const char* name : {"table.csv", "link.csv", "still.png", "link.png", "video.mp4",
-                           "link.mp4", "late.csv", "made/later.csv", "stdout.csv",
-                           "stdout.csv.json"})
+  for (const char* name :
+       {"table.csv", "link.csv", "still.png", "link.png", "video.mp4", "link.mp4", "late.csv",
+        "made/later.csv", "stdout.csv", "stdout.csv.json"})
     fs::remove(dir / name);
   fs::remove(dir / "made");
   std::ofstream(dir / "table.csv") << "old\n";
@@ -152,9 +153,13 @@ TEST(Cli, OutputsAreWrittenThroughSymbolicLinks) {
   ASSERT_EQ(rattleback("simulate " + run + (dir / "link.csv").string()).status, 0);
   ASSERT_EQ(rattleback("simulate " + run + (dir / "late.csv").string()).status, 0);
   ASSERT_EQ(rattleback("still " + scene("seed-reversed") + " --size 320x180 -q -o " +
-                       (dir / "link.png").string()).status, 0);
-  ASSERT_EQ(rattleback("render " + scene("seed-reversed") + " --duration 0.2 --size 320x180 -q -o " +
-                       (dir / "link.mp4").string()).status, 0);
+                       (dir / "link.png").string())
+                .status,
+            0);
+  ASSERT_EQ(rattleback("render " + scene("seed-reversed") +
+                       " --duration 0.2 --size 320x180 -q -o " + (dir / "link.mp4").string())
+                .status,
+            0);
   const Result piped = rattleback("simulate " + run + (dir / "stdout.csv").string());
   ASSERT_EQ(piped.status, 0) << piped.err;
   for (const char* link : {"link.csv", "link.png", "link.mp4", "late.csv", "stdout.csv"})
@@ -196,8 +201,8 @@ TEST(Cli, ADashSendsTheTableToStandardOutput) {
 // integrator's error: a step too coarse for the run (Kane & Levinson at dt 0.01: −13 % in 2 s)
 // is pointed out; at the scene's own step (−5e-8 % in 2 s) nothing is said.
 TEST(Cli, ACoarseStepInAModelThatKeepsEnergyIsPointedOut) {
-  const std::string run = "simulate " + scene("kane-levinson") + " --duration 2 -o " +
-                          tempFile("kl.csv").string();
+  const std::string run =
+      "simulate " + scene("kane-levinson") + " --duration 2 -o " + tempFile("kl.csv").string();
   // (5 ms: 11 steps a period of its 17.4 Hz pitch, within the rocking limit of 8, and still
   // 2.0 % of the energy lost in 2 s.)
   const Result coarse = rattleback(run + " --dt 0.005");
@@ -345,8 +350,8 @@ TEST(Cli, VersionQuietAndVerbose) {
   const Result version = rattleback("--version");
   EXPECT_EQ(version.status, 0);
   EXPECT_EQ(version.out.rfind("rattleback ", 0), 0u) << version.out;
-  const std::string run = "simulate " + scene("seed-reversed") + " --duration 0.02 -o " +
-                          tempFile("v.csv").string();
+  const std::string run =
+      "simulate " + scene("seed-reversed") + " --duration 0.02 -o " + tempFile("v.csv").string();
   const Result quiet = rattleback(run + " -q");
   EXPECT_EQ(quiet.status, 0);
   EXPECT_EQ(quiet.out, "");
@@ -472,8 +477,8 @@ TEST(Cli, AMistypedCommandSuggestsTheNearest) {
   EXPECT_NE(r.err.find("did you mean 'simulate'"), std::string::npos) << r.err;
   EXPECT_EQ(lines(r.err), 1) << r.err;
   // The list of commands names every command.
-  for (const char* command : {"simulate", "analyze", "render", "still", "compare", "bench",
-                              "sweep", "report"})
+  for (const char* command :
+       {"simulate", "analyze", "render", "still", "compare", "bench", "sweep", "report"})
     EXPECT_NE(r.err.find(command), std::string::npos) << command << ": " << r.err;
 }
 
@@ -503,8 +508,8 @@ TEST(Cli, AMistypedOptionSuggestsTheNearest) {
 // Options people type wrong get one line that names the option (not the scene key it sets)
 // and, for an odd size, a size that works for both sides at once.
 TEST(Cli, OptionErrorsNameTheOptionAndTheWayOut) {
-  const std::string render = "render " + scene("rattleback") + " --duration 0.1 -q -o " +
-                             tempFile("x.mp4").string();
+  const std::string render =
+      "render " + scene("rattleback") + " --duration 0.1 -q -o " + tempFile("x.mp4").string();
   struct Case {
     std::string options, message;
   };
@@ -524,12 +529,15 @@ TEST(Cli, OptionErrorsNameTheOptionAndTheWayOut) {
   }
   // An output name that says another format than the one written is refused, nothing made.
   const fs::path avi = tempFile("x.avi"), jpg = tempFile("s.jpg");
-  const Result as_avi = rattleback("render " + scene("rattleback") + " --duration 0.1 -q -o " + avi.string());
+  const Result as_avi =
+      rattleback("render " + scene("rattleback") + " --duration 0.1 -q -o " + avi.string());
   EXPECT_EQ(as_avi.status, 2);
-  EXPECT_NE(as_avi.err.find("writes MP4 video; give a name ending in .mp4"), std::string::npos) << as_avi.err;
+  EXPECT_NE(as_avi.err.find("writes MP4 video; give a name ending in .mp4"), std::string::npos)
+      << as_avi.err;
   const Result as_jpg = rattleback("still " + scene("rattleback") + " -q -o " + jpg.string());
   EXPECT_EQ(as_jpg.status, 2);
-  EXPECT_NE(as_jpg.err.find("writes PNG; give a name ending in .png"), std::string::npos) << as_jpg.err;
+  EXPECT_NE(as_jpg.err.find("writes PNG; give a name ending in .png"), std::string::npos)
+      << as_jpg.err;
   EXPECT_FALSE(fs::exists(avi));
   EXPECT_FALSE(fs::exists(jpg));
 
@@ -539,8 +547,9 @@ TEST(Cli, OptionErrorsNameTheOptionAndTheWayOut) {
   EXPECT_EQ(long_run.status, 2);
   EXPECT_EQ(long_run.err.rfind("--duration: makes more than 10 million frames of 1e+06 s", 0), 0u)
       << long_run.err;
-  const Result both_steps = rattleback("simulate " + scene("rattleback") +
-                                       " --dt 1e-4 --tolerance 1e-8 -q -o " + tempFile("x.csv").string());
+  const Result both_steps =
+      rattleback("simulate " + scene("rattleback") + " --dt 1e-4 --tolerance 1e-8 -q -o " +
+                 tempFile("x.csv").string());
   EXPECT_EQ(both_steps.status, 2);
   EXPECT_EQ(both_steps.err.rfind("--dt and --tolerance: give one", 0), 0u) << both_steps.err;
 
@@ -577,8 +586,8 @@ TEST(Cli, OutputFoldersAreMadeOrRefusedInOneLine) {
 
   const fs::path nested = scratchDir() / "new" / "deeper" / "x.csv";
   fs::remove_all(scratchDir() / "new");
-  const Result made = rattleback("simulate " + scene("rattleback") + " --duration 0.1 -q -o " +
-                                 nested.string());
+  const Result made =
+      rattleback("simulate " + scene("rattleback") + " --duration 0.1 -q -o " + nested.string());
   EXPECT_EQ(made.status, 0) << made.err;
   EXPECT_TRUE(fs::exists(nested));
 
@@ -588,7 +597,8 @@ TEST(Cli, OutputFoldersAreMadeOrRefusedInOneLine) {
   fs::remove(table);
   for (const std::string& command :
        {"bench " + scene("rattleback") + " --duration 0.2 -o " + table.string(),
-        "sweep " + std::string(RATTLEBACK_SOURCE_DIR) + "/sweeps/spin-drag.yaml -o " + table.string(),
+        "sweep " + std::string(RATTLEBACK_SOURCE_DIR) + "/sweeps/spin-drag.yaml -o " +
+            table.string(),
         "sweep merge " + table.string() + " " + table.string()}) {
     const Result refused = rattleback(command + " --plot /proc/unwritable.png");
     EXPECT_EQ(refused.status, 2) << command << "\n" << refused.err;
@@ -625,8 +635,8 @@ std::vector<std::vector<std::string>> csvRows(const std::string& text) {
 // prints 10 and 9 significant digits.
 TEST(Outputs, TheTelemetryHoldsTheScenesNumbers) {
   const fs::path csv = tempFile("t.csv");
-  const Result r = rattleback("simulate -q " + scene("rattleback") + " --duration 1 --rate 100 -o " +
-                              csv.string());
+  const Result r = rattleback("simulate -q " + scene("rattleback") +
+                              " --duration 1 --rate 100 -o " + csv.string());
   ASSERT_EQ(r.status, 0) << r.err;
   std::ifstream in(csv);
   std::stringstream text;
@@ -637,7 +647,9 @@ TEST(Outputs, TheTelemetryHoldsTheScenesNumbers) {
   for (std::size_t i = 0; i < rows[0].size(); ++i) column[rows[0][i]] = i;
   for (const char* name : {"t", "spin", "energy", "kinetic", "potential", "elastic", "tilt_deg"})
     ASSERT_TRUE(column.count(name)) << name;
-  auto value = [&](std::size_t row, const char* name) { return std::stod(rows[row].at(column[name])); };
+  auto value = [&](std::size_t row, const char* name) {
+    return std::stod(rows[row].at(column[name]));
+  };
   for (std::size_t k = 1; k < rows.size(); ++k) {
     EXPECT_NEAR(value(k, "t"), static_cast<double>(k - 1) / 100, 1e-12) << "row " << k;
     const double sum = value(k, "kinetic") + value(k, "potential") + value(k, "elastic");
@@ -657,7 +669,9 @@ TEST(Outputs, TheTelemetryHoldsTheScenesNumbers) {
   // the total too.
   const fs::path springs = tempFile("s.csv");
   ASSERT_EQ(rattleback("simulate -q " + scene("seed-reversed") + " --duration 0.2 --rate 100 -o " +
-                       springs.string()).status, 0);
+                       springs.string())
+                .status,
+            0);
   std::ifstream springs_in(springs);
   std::stringstream springs_text;
   springs_text << springs_in.rdbuf();
@@ -725,9 +739,9 @@ TEST(Cli, ReportCaptionsSayWhatIsPredictedAndWhatWasMeasured) {
   const std::string csv = (dir / "rattleback.csv").string();
   const std::string page = (dir / "index.html").string();
 
-  ASSERT_EQ(rattleback("simulate " + scene("rattleback") + " --spin -5 --duration 3 -q -o " + csv)
-                .status,
-            0);
+  ASSERT_EQ(
+      rattleback("simulate " + scene("rattleback") + " --spin -5 --duration 3 -q -o " + csv).status,
+      0);
   const nlohmann::json run = nlohmann::json::parse(std::ifstream(csv + ".json"));
   ASSERT_TRUE(run["result"]["first_reversal_s"].is_number());
   char reversal[32];
@@ -742,9 +756,9 @@ TEST(Cli, ReportCaptionsSayWhatIsPredictedAndWhatWasMeasured) {
   EXPECT_NE(said[1].find("predicts it keeps turning"), std::string::npos) << said[1];
   EXPECT_EQ(said[1].find("measured"), std::string::npos) << said[1];
 
-  ASSERT_EQ(rattleback("simulate " + scene("rattleback") + " --spin 5 --duration 1 -q -o " + csv)
-                .status,
-            0);
+  ASSERT_EQ(
+      rattleback("simulate " + scene("rattleback") + " --spin 5 --duration 1 -q -o " + csv).status,
+      0);
   ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
   said = captions(page);
   ASSERT_EQ(said.size(), 2u);
@@ -770,8 +784,10 @@ TEST(Cli, ABadBackendNamesWhereItCameFrom) {
   const Result env = rattleback("still " + scene("rattleback") + " -o " + png.string());
   const Result option =
       rattleback("still " + scene("rattleback") + " --backend nope -o " + png.string());
-  if (before) ::setenv("RATTLEBACK_BACKEND", kept.c_str(), 1);
-  else ::unsetenv("RATTLEBACK_BACKEND");
+  if (before)
+    ::setenv("RATTLEBACK_BACKEND", kept.c_str(), 1);
+  else
+    ::unsetenv("RATTLEBACK_BACKEND");
   EXPECT_EQ(env.status, 2);
   EXPECT_EQ(env.err.rfind("RATTLEBACK_BACKEND", 0), 0u) << env.err;
   EXPECT_EQ(lines(env.err), 1);
@@ -825,17 +841,28 @@ TEST(Cli, TheReportPlacesOutputsByTheManifest) {
   fs::create_directories(dir);
   const std::string s = scene("rattleback");
   auto in = [&](const char* name) { return (dir / name).string(); };
-  ASSERT_EQ(rattleback("render " + s + " --both --duration 0.2 --size 64x48 -q -o " + in("clip")).status, 0);
-  ASSERT_EQ(rattleback("still " + s + " --spin -5 --size 64x48 -q -o " + in("first.png")).status, 0);
+  ASSERT_EQ(
+      rattleback("render " + s + " --both --duration 0.2 --size 64x48 -q -o " + in("clip")).status,
+      0);
+  ASSERT_EQ(rattleback("still " + s + " --spin -5 --size 64x48 -q -o " + in("first.png")).status,
+            0);
   ASSERT_EQ(rattleback("simulate " + s + " --duration 0.5 -q -o " + in("run.csv")).status, 0);
   ASSERT_EQ(rattleback("analyze " + s + " --json -o " + in("theory.json")).status, 0);
   // A second video and a still at another time: shown too (a new user's were dropped, one
   // per slot), the first of each kind keeping its slot.
-  ASSERT_EQ(rattleback("render " + s + " --duration 0.2 --size 64x48 -q -o " + in("small.mp4")).status, 0);
-  ASSERT_EQ(rattleback("render " + s + " --duration 0.2 --size 96x64 -q -o " + in("larger.mp4")).status, 0);
-  ASSERT_EQ(rattleback("still " + s + " --view side --size 64x48 -q -o " + in("side-a.png")).status, 0);
-  ASSERT_EQ(rattleback("still " + s + " --view side --t 0.5 --size 64x48 -q -o " + in("side-b.png")).status, 0);
-  const nlohmann::json manifest = nlohmann::json::parse(std::ifstream(dir / "rattleback-manifest.json"));
+  ASSERT_EQ(
+      rattleback("render " + s + " --duration 0.2 --size 64x48 -q -o " + in("small.mp4")).status,
+      0);
+  ASSERT_EQ(
+      rattleback("render " + s + " --duration 0.2 --size 96x64 -q -o " + in("larger.mp4")).status,
+      0);
+  ASSERT_EQ(rattleback("still " + s + " --view side --size 64x48 -q -o " + in("side-a.png")).status,
+            0);
+  ASSERT_EQ(rattleback("still " + s + " --view side --t 0.5 --size 64x48 -q -o " + in("side-b.png"))
+                .status,
+            0);
+  const nlohmann::json manifest =
+      nlohmann::json::parse(std::ifstream(dir / "rattleback-manifest.json"));
   ASSERT_EQ(manifest["outputs"].size(), 10u) << manifest.dump(1);
   EXPECT_EQ(manifest["outputs"][0]["role"], "reversed");  // spun −5: the reversing way
   ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
@@ -849,10 +876,11 @@ TEST(Cli, TheReportPlacesOutputsByTheManifest) {
   EXPECT_NE(html.find("src=\"clip-reversed.mp4\" muted loop playsinline controls preload=\"auto\" "
                       "poster=\"first.png\""),
             std::string::npos);
-  EXPECT_NE(html.find("preferred direction: <b>counter-clockwise"), std::string::npos);  // theory.json
+  EXPECT_NE(html.find("preferred direction: <b>counter-clockwise"),
+            std::string::npos);  // theory.json
   EXPECT_NE(html.find("href=\"run.csv\""), std::string::npos);
-  for (const char* shown : {"src=\"small.mp4\"", "src=\"larger.mp4\"", "src=\"side-a.png\"",
-                            "src=\"side-b.png\""})
+  for (const char* shown :
+       {"src=\"small.mp4\"", "src=\"larger.mp4\"", "src=\"side-a.png\"", "src=\"side-b.png\""})
     EXPECT_NE(html.find(shown), std::string::npos) << shown;
 }
 
@@ -875,7 +903,9 @@ TEST(Cli, ABodyWithNoPreferredDirectionGetsNone) {
   EXPECT_EQ(nlohmann::json::parse(json.out)["preferred"], "none");
   EXPECT_NE(rattleback("analyze " + s).out.find("preferred        none"), std::string::npos);
   ASSERT_EQ(rattleback("render " + s + " --both --duration 0.2 --size 64x48 -q -o " +
-                       (dir / "v").string()).status, 0);
+                       (dir / "v").string())
+                .status,
+            0);
   EXPECT_TRUE(fs::exists(dir / "v-ccw.mp4"));
   EXPECT_TRUE(fs::exists(dir / "v-cw.mp4"));
   EXPECT_FALSE(fs::exists(dir / "v-reversed.mp4"));
@@ -896,7 +926,8 @@ TEST(Cli, SimulateWarnsOfABodyThatCannotStand) {
   const std::string out = " --duration 0.05 -o " + tempFile("w.csv").string();
   const Result seed = rattleback("simulate " + scene("seed-reversed") + out);
   ASSERT_EQ(seed.status, 0) << seed.err;
-  EXPECT_NE(seed.out.find("WARNING         the body cannot stand upright"), std::string::npos) << seed.out;
+  EXPECT_NE(seed.out.find("WARNING         the body cannot stand upright"), std::string::npos)
+      << seed.out;
   const Result upright = rattleback("simulate " + scene("rattleback") + out);
   EXPECT_EQ(upright.out.find("WARNING"), std::string::npos) << upright.out;
 }
@@ -910,8 +941,10 @@ TEST(Cli, CheckEstimatesTheRunsErrorsAndTheReportShowsThem) {
   const auto run = rattleback("simulate " + scene("kane-levinson") + " --duration 3 --check -o " +
                               (dir / "run.csv").string());
   ASSERT_EQ(run.status, 0) << run.err;
-  EXPECT_NE(run.out.find("check           against rk4 at dt 5e-05 s (half the step); Richardson, order 4"),
-            std::string::npos) << run.out;
+  EXPECT_NE(run.out.find(
+                "check           against rk4 at dt 5e-05 s (half the step); Richardson, order 4"),
+            std::string::npos)
+      << run.out;
   EXPECT_NE(run.out.find("reversal 1 at 2.807"), std::string::npos) << run.out;
   const nlohmann::json sidecar = nlohmann::json::parse(std::ifstream(dir / "run.csv.json"));
   ASSERT_EQ(sidecar["check"]["reversal_errors_s"].size(), 1u);
@@ -924,8 +957,11 @@ TEST(Cli, CheckEstimatesTheRunsErrorsAndTheReportShowsThem) {
   // And the default scene, adaptive since issue 27, is checked at a hundredth of its tolerance.
   const auto adaptive = rattleback("simulate " + scene("rattleback") + " --duration 3 --check -o " +
                                    (dir / "default.csv").string());
-  EXPECT_NE(adaptive.out.find("against dopri5 at tolerance 1e-10 (a hundredth); difference from the "
-                              "tighter run"), std::string::npos) << adaptive.out;
+  EXPECT_NE(
+      adaptive.out.find("against dopri5 at tolerance 1e-10 (a hundredth); difference from the "
+                        "tighter run"),
+      std::string::npos)
+      << adaptive.out;
   ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
   std::ifstream page_in(dir / "index.html");
   std::stringstream page;

@@ -1,12 +1,13 @@
 // The body's mass properties from its shape (sim/continuum.hpp, issue 14): closed form against
 // the axis formula and against cubature, the grid's sums converging to them at the order
 // derived below, and a reversal that no longer depends on the grid.
+#include "sim/continuum.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <optional>
 
-#include "sim/continuum.hpp"
 #include "sim/rollout.hpp"
 #include "support.hpp"
 
@@ -17,8 +18,12 @@ namespace {
 constexpr double kCm = 0.01;
 
 // The default body (SPEC "Physics caveat"), metres.
-sim::Paraboloid defaultShape() { return sim::Paraboloid(1.0 * kCm, 0.5, 0.0, 0.03, 0.5 * kCm); }
-sim::Dents defaultDents(double scale = 0.45) { return {scale, 0.73 * kCm, 4.50 * kCm, 0.1 * kCm}; }
+sim::Paraboloid defaultShape() {
+  return sim::Paraboloid(1.0 * kCm, 0.5, 0.0, 0.03, 0.5 * kCm);
+}
+sim::Dents defaultDents(double scale = 0.45) {
+  return {scale, 0.73 * kCm, 4.50 * kCm, 0.1 * kCm};
+}
 
 // Largest relative difference of two mass properties: CM against the body's size, inertia
 // against its largest entry.
@@ -38,8 +43,8 @@ TEST(Continuum, TheCapMatchesItsClosedForm) {
   const double a = 0.01, p = 0.5, s = 0.03, top = 0.005, M = 0.2, H = top + a;
   const sim::Continuum c = sim::continuumMassProperties(sim::Paraboloid(a, p, 0, s, top), {}, M);
   EXPECT_EQ(c.method, sim::ContinuumMethod::ClosedForm);
-  const Eigen::Vector3d exact(M * (a * H / (3 * s) + H * H / 18), M * (a * H / (3 * p) + H * H / 18),
-                              M * a * H / 3 * (1 / p + 1 / s));
+  const Eigen::Vector3d exact(M * (a * H / (3 * s) + H * H / 18),
+                              M * (a * H / (3 * p) + H * H / 18), M * a * H / 3 * (1 / p + 1 / s));
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(c.mass.inertia(i, i) / exact[i], 1, 1e-12) << i;
   EXPECT_NEAR((c.mass.com.z() + a) / (2 * H / 3), 1, 1e-12);
   EXPECT_EQ(c.mass.inertia(0, 1), 0);
@@ -58,8 +63,11 @@ TEST(Continuum, CubatureAgreesWithTheClosedForm) {
   const sim::Paraboloid skewed(1.0 * kCm, 0.5, 0.03 * kCm, 0.03, 0.5 * kCm);
   const sim::Dents mirrored{0.45, -0.73 * kCm, 4.50 * kCm, 0.1 * kCm};
   const std::vector<std::pair<sim::Paraboloid, std::optional<sim::Dents>>> bodies{
-      {defaultShape(), defaultDents()}, {defaultShape(), std::nullopt},
-      {skewed, std::nullopt}, {skewed, mirrored}, {defaultShape(), defaultDents(0.3)}};
+      {defaultShape(), defaultDents()},
+      {defaultShape(), std::nullopt},
+      {skewed, std::nullopt},
+      {skewed, mirrored},
+      {defaultShape(), defaultDents(0.3)}};
   for (const auto& [shape, dents] : bodies) {
     const std::optional<sim::VolumeMoments> exact = sim::closedFormMoments(shape, dents);
     ASSERT_TRUE(exact);
@@ -118,8 +126,8 @@ TEST(Continuum, GridSumsConvergeAtFirstOrderToTheDerivedCoefficient) {
   const double det = shape.p * shape.s / (a * a);
   const double cx = shape.p / (2 * a * k * k), cy = shape.s / (2 * a * k * k);
   const double dent_height = shape.top + (a - dents.inset) * k;
-  const double flat = 2 * M_PI * (shape.top + a) / std::sqrt(det) -
-                      2 * M_PI * dent_height / std::sqrt(cx * cy);
+  const double flat =
+      2 * M_PI * (shape.top + a) / std::sqrt(det) - 2 * M_PI * dent_height / std::sqrt(cx * cy);
   const double coefficient = flat / 2 * (shape.top - c.com.z()) / exact->volume;
   std::vector<double> inertia_errors;
   for (double h : {0.05, 0.025, 0.0125}) {

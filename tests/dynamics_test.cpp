@@ -158,9 +158,9 @@ TEST(Conservation, VerticalAngularMomentumWithoutFriction) {
 namespace {
 
 struct TiltRun {
-  double max_tilt = 0;           // degrees
-  double min_tilt_late = 1e9;    // degrees, after the first second
-  double final_tilt = 0;         // degrees
+  double max_tilt = 0;         // degrees
+  double min_tilt_late = 1e9;  // degrees, after the first second
+  double final_tilt = 0;       // degrees
 };
 
 // Released from rest tilted across the short axis (about body y), for 3 s.

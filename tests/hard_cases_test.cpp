@@ -34,7 +34,6 @@ simulation: {integrator: symplectic, dt: 2.0e-5, duration: 3.0}
 video: {fps: 25}
 )";
 
-
 /// The reference reversal time of the default body: the rolling model (rk4, 0.5 ms).
 double rollingReversal() {
   sim::SceneSpec spec = parse(kDefaultSmooth);
@@ -58,7 +57,8 @@ TEST(HardCases, HundredTimesStifferFloor) {
   const sim::Model model = build(spec);
   const double limit = sim::contactStability(model).largest_step;
   const double omega = std::sqrt(spec.contact.stiffness / spec.body.mass);
-  const double zeta = spec.contact.damping / (2 * std::sqrt(spec.contact.stiffness * spec.body.mass));
+  const double zeta =
+      spec.contact.damping / (2 * std::sqrt(spec.contact.stiffness * spec.body.mass));
   EXPECT_NEAR(limit, 2 * (std::sqrt(1 + zeta * zeta) - zeta) / omega, 0.01 * limit);
   const Recorded r = record(model);
   ASSERT_FALSE(r.summary.divergence) << *r.summary.divergence;
@@ -184,7 +184,8 @@ TEST(HardCases, ADropSpinningIsNoReversal) {
   for (std::size_t i = 1; i < dropped.samples.size(); ++i)
     crossed |= dropped.samples[i].spin < -0.5;  // n does swing the other way…
   EXPECT_TRUE(crossed);
-  EXPECT_FALSE(dropped.summary.first_reversal_s) << *dropped.summary.first_reversal_s;  // …but no reversal
+  EXPECT_FALSE(dropped.summary.first_reversal_s)
+      << *dropped.summary.first_reversal_s;  // …but no reversal
   EXPECT_GT(dropped.summary.last.spin, 1.0);
   spec.initial = {-5.0, {0.5, 0.5}, 0.0};
   EXPECT_TRUE(record(build(spec), 1e-3).summary.first_reversal_s);
@@ -347,6 +348,7 @@ TEST(HardCases, TheNamedStableStepRunsToTheEnd) {
     ASSERT_FALSE(refused.ok()) << c.name;
     std::ostringstream named;
     named << "largest stable step for a run is " << stability.run_step << " s";
-    EXPECT_NE(refused.error().message.find(named.str()), std::string::npos) << refused.error().message;
+    EXPECT_NE(refused.error().message.find(named.str()), std::string::npos)
+        << refused.error().message;
   }
 }

@@ -34,7 +34,8 @@ bool twins(const std::string& args, Twins& out) {
   const fs::path with = scratch("with.png"), bare = scratch("bare.png");
   EXPECT_EQ(rattleback(args + " -o " + with.string()), 0) << args;
   EXPECT_EQ(rattleback(args + " --no-readouts -o " + bare.string()), 0) << args;
-  if (!render::readPng(with.string(), out.with).ok() || !render::readPng(bare.string(), out.bare).ok() ||
+  if (!render::readPng(with.string(), out.with).ok() ||
+      !render::readPng(bare.string(), out.bare).ok() ||
       out.with.rgba.size() != out.bare.rgba.size()) {
     std::error_code ec;
     ADD_FAILURE() << "unreadable stills for " << args << " (sizes " << fs::file_size(with, ec)
@@ -67,7 +68,8 @@ TEST(Snapshots, ReadoutsAndInsetMatchTheGoldensToOneStep) {
     render::Image a, bare, golden;
     ASSERT_TRUE(render::readPng(with.string(), a).ok());
     ASSERT_TRUE(render::readPng(without.string(), bare).ok());
-    ASSERT_TRUE(render::readPng((kSource / "tests/golden" / (name + ".png")).string(), golden).ok());
+    ASSERT_TRUE(
+        render::readPng((kSource / "tests/golden" / (name + ".png")).string(), golden).ok());
     ASSERT_EQ(a.rgba.size(), golden.rgba.size()) << name;
     long drawn = 0, off = 0;
     for (std::size_t p = 0; p < a.rgba.size(); p += 4) {
@@ -82,7 +84,8 @@ TEST(Snapshots, ReadoutsAndInsetMatchTheGoldensToOneStep) {
     // The read-outs are there (title, time, spin, the inset's frame, labels and curve) …
     EXPECT_GT(drawn, 300) << name;
     // … and every one of their pixels is the golden's.
-    EXPECT_EQ(off, 0) << name << ": " << off << " of the " << drawn << " read-out pixels differ from "
+    EXPECT_EQ(off, 0) << name << ": " << off << " of the " << drawn
+                      << " read-out pixels differ from "
                       << "the golden by more than one step (" << with << ")";
     ++checked;
   }
@@ -100,24 +103,27 @@ TEST(Overlay, ReadoutsNeverCoverTheBody) {
     const char* name;
     double duration;
   };
-  for (const Scene scene : {Scene{"rattleback", 8}, Scene{"kane-levinson", 8}, Scene{"seed-reversed", 10}}) {
+  for (const Scene scene :
+       {Scene{"rattleback", 8}, Scene{"kane-levinson", 8}, Scene{"seed-reversed", 10}}) {
     for (const char* view : {"oblique", "above", "front", "side", "follow"}) {
       for (double fraction : {0.25}) {
-      for (const char* size : {"480x270", "180x180"}) {
-        Twins t;
-        ASSERT_TRUE(twins(std::string("still scenes/") + scene.name + ".yaml --size " + size +
-                              " --view " + view + " --t " + std::to_string(fraction * scene.duration),
-                          t));
-        long covered = 0;
-        for (std::size_t i = 0; i < t.drawn.size(); ++i) {
-          const int r = t.bare.rgba[4 * i], g = t.bare.rgba[4 * i + 1], bl = t.bare.rgba[4 * i + 2];
-          const bool body = (r > 120 && g < 80 && bl < 80) || (bl > 120 && r < 80 && g < 120);
-          covered += t.drawn[i] && body;
+        for (const char* size : {"480x270", "180x180"}) {
+          Twins t;
+          ASSERT_TRUE(twins(std::string("still scenes/") + scene.name + ".yaml --size " + size +
+                                " --view " + view + " --t " +
+                                std::to_string(fraction * scene.duration),
+                            t));
+          long covered = 0;
+          for (std::size_t i = 0; i < t.drawn.size(); ++i) {
+            const int r = t.bare.rgba[4 * i], g = t.bare.rgba[4 * i + 1],
+                      bl = t.bare.rgba[4 * i + 2];
+            const bool body = (r > 120 && g < 80 && bl < 80) || (bl > 120 && r < 80 && g < 120);
+            covered += t.drawn[i] && body;
+          }
+          EXPECT_EQ(covered, 0) << scene.name << ", " << view << ", " << size
+                                << ", t = " << fraction * scene.duration << ": " << covered
+                                << " body pixels under the read-outs";
         }
-        EXPECT_EQ(covered, 0) << scene.name << ", " << view << ", " << size << ", t = "
-                              << fraction * scene.duration << ": " << covered
-                              << " body pixels under the read-outs";
-      }
       }
     }
   }

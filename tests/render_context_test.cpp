@@ -199,12 +199,12 @@ TEST(Renderer, SmallSpheresAsDiscsDifferOnlyWhereTheyOverlap) {
     r.value()->draw(f, image);
     return image;
   };
-  const render::Comparison small = render::compareImages(frame(480, 270, false),
-                                                         frame(480, 270, true), 2);
+  const render::Comparison small =
+      render::compareImages(frame(480, 270, false), frame(480, 270, true), 2);
   EXPECT_GT(small.differing, 0) << "the discs were not drawn";
   EXPECT_LT(small.fraction(), 0.004) << small.differing << " of " << small.pixels;
-  const render::Comparison large = render::compareImages(frame(2560, 1440, false),
-                                                         frame(2560, 1440, true), 0);
+  const render::Comparison large =
+      render::compareImages(frame(2560, 1440, false), frame(2560, 1440, true), 0);
   EXPECT_EQ(large.differing, 0);
 }
 
@@ -227,27 +227,27 @@ TEST(Renderer, AFrameAfterOthersEqualsTheSameFrameDrawnFirst) {
   }
   // 16:9, and a portrait frame (the scene drawn scaled between the read-outs and the inset).
   for (auto [width, height] : {std::pair{320, 180}, std::pair{200, 240}})
-  for (render::View view :
-       {render::View::Oblique, render::View::Above, render::View::Front, render::View::Side}) {
-    render::RenderSettings s;
-    s.width = width;
-    s.height = height;
-    s.view = view;
-    s.readouts = false;
-    auto running = render::Renderer::create(s, body);
-    ASSERT_TRUE(running) << running.error().text();
-    for (std::size_t k = 0; k < frames.size(); ++k) {
-      render::Image after_others, first;
-      running.value()->draw(frames[k], after_others);
-      auto fresh = render::Renderer::create(s, body);
-      ASSERT_TRUE(fresh);
-      fresh.value()->draw(frames[k], first);
-      const render::Comparison c = render::compareImages(after_others, first, 0);
-      EXPECT_EQ(c.differing, 0) << width << "x" << height << " " << rb::nameOf(view)
-                                << ", frame " << k << ": within x " << c.box[0] << "–" << c.box[2]
-                                << ", y " << c.box[1] << "–" << c.box[3];
+    for (render::View view :
+         {render::View::Oblique, render::View::Above, render::View::Front, render::View::Side}) {
+      render::RenderSettings s;
+      s.width = width;
+      s.height = height;
+      s.view = view;
+      s.readouts = false;
+      auto running = render::Renderer::create(s, body);
+      ASSERT_TRUE(running) << running.error().text();
+      for (std::size_t k = 0; k < frames.size(); ++k) {
+        render::Image after_others, first;
+        running.value()->draw(frames[k], after_others);
+        auto fresh = render::Renderer::create(s, body);
+        ASSERT_TRUE(fresh);
+        fresh.value()->draw(frames[k], first);
+        const render::Comparison c = render::compareImages(after_others, first, 0);
+        EXPECT_EQ(c.differing, 0) << width << "x" << height << " " << rb::nameOf(view) << ", frame "
+                                  << k << ": within x " << c.box[0] << "–" << c.box[2] << ", y "
+                                  << c.box[1] << "–" << c.box[3];
+      }
     }
-  }
 }
 
 // The driver can be loaded on another thread while this one loads its scene (as `render` and

@@ -25,7 +25,8 @@ inline std::string backendName() {
 /// A file in the running test's own scratch folder (removed first when it exists).
 inline fs::path scratch(const std::string& name) {
   const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::path(testing::TempDir()) / std::string("rattleback_render-").append(backendName()) /
+  const fs::path dir = fs::path(testing::TempDir()) /
+                       std::string("rattleback_render-").append(backendName()) /
                        (std::string(info->test_suite_name()) + "." + info->name());
   fs::create_directories(dir);
   fs::remove(dir / name);

@@ -4,10 +4,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <csignal>
-
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -15,9 +14,9 @@
 #include <sstream>
 
 extern "C" {
-#include <png.h>
 #include <libavformat/avformat.h>
 #include <libavutil/pixdesc.h>
+#include <png.h>
 }
 
 #include "render/image_io.hpp"
@@ -27,7 +26,6 @@ namespace fs = std::filesystem;
 using namespace render_support;
 
 namespace {
-
 
 // Snapshot tolerance. The same build draws byte-identical pixels run after run; another CPU
 // can move ~0.1% of pixels by one step (DEVELOPERS.md, measured on llvmpipe), and the PNG
@@ -87,7 +85,9 @@ TEST(Snapshots, StillsMatchTheGoldens) {
 // mostly red and the lower half mostly blue. Rendered afresh (not read from the golden).
 TEST(Snapshots, TopIsRedAndBottomIsBlue) {
   const fs::path side = scratch("side.png");
-  ASSERT_EQ(rattleback("still scenes/seed-reversed.yaml --view side --size 320x180 -o " + side.string()), 0);
+  ASSERT_EQ(
+      rattleback("still scenes/seed-reversed.yaml --view side --size 320x180 -o " + side.string()),
+      0);
   render::Image image;
   ASSERT_TRUE(render::readPng(side.string(), image));
   long red_top = 0, blue_top = 0, red_bottom = 0, blue_bottom = 0;
@@ -120,7 +120,8 @@ TEST(Snapshots, TopIsRedAndBottomIsBlue) {
 TEST(Snapshots, SmallFramesDrawTheBodySolid) {
   const fs::path png = scratch("small.png");
   ASSERT_EQ(rattleback("still scenes/rattleback.yaml --t 1 --view above --no-readouts --size "
-                       "320x180 -q -o " + png.string()),
+                       "320x180 -q -o " +
+                       png.string()),
             0);
   render::Image image;
   ASSERT_TRUE(render::readPng(png.string(), image));
@@ -150,12 +151,15 @@ TEST(Snapshots, SmallFramesDrawTheBodySolid) {
 TEST(Snapshots, FrontAndSideShowAHorizon) {
   for (const char* view : {"front", "side"}) {
     const fs::path still = scratch(std::string(view) + ".png");
-    ASSERT_EQ(rattleback(std::string("still scenes/rattleback.yaml --no-readouts --size 640x360 --view ") +
-                         view + " -o " + still.string()),
+    ASSERT_EQ(rattleback(
+                  std::string("still scenes/rattleback.yaml --no-readouts --size 640x360 --view ") +
+                  view + " -o " + still.string()),
               0);
     render::Image image;
     ASSERT_TRUE(render::readPng(still.string(), image));
-    auto pixel = [&](int x, int y) { return &image.rgba[(static_cast<std::size_t>(y) * image.width + x) * 4]; };
+    auto pixel = [&](int x, int y) {
+      return &image.rgba[(static_cast<std::size_t>(y) * image.width + x) * 4];
+    };
     const int background[3] = {237, 240, 245};  // kBackground (0.93, 0.94, 0.96) in 8 bits
     auto fromBackground = [&](int x, int y) {
       int worst = 0;
@@ -227,7 +231,8 @@ std::vector<std::string> topLevelBoxes(const fs::path& path) {
   std::vector<std::string> boxes;
   unsigned char header[8];
   while (in.read(reinterpret_cast<char*>(header), 8)) {
-    std::uint64_t size = (std::uint64_t(header[0]) << 24) | (header[1] << 16) | (header[2] << 8) | header[3];
+    std::uint64_t size =
+        (std::uint64_t(header[0]) << 24) | (header[1] << 16) | (header[2] << 8) | header[3];
     boxes.emplace_back(reinterpret_cast<char*>(header + 4), 4);
     if (size == 1) {  // 64-bit size follows
       unsigned char big[8];
@@ -252,7 +257,8 @@ std::vector<std::string> topLevelBoxes(const fs::path& path) {
 TEST(Video, StreamAndLayoutAreWhatBrowsersPlay) {
   const fs::path video = scratch("seed.mp4");
   ASSERT_EQ(rattleback("render scenes/seed-reversed.yaml --duration 0.4 --size 320x180 --fps 25 "
-                       "-o " + video.string()),
+                       "-o " +
+                       video.string()),
             0);
   const Probe p = probe(video);
   EXPECT_EQ(p.codec, "h264");
@@ -260,7 +266,7 @@ TEST(Video, StreamAndLayoutAreWhatBrowsersPlay) {
   EXPECT_EQ(p.color, "bt709");
   EXPECT_EQ(p.width, 320);
   EXPECT_EQ(p.height, 180);
-  EXPECT_EQ(p.frames, 10);  // 0.4 s × 25 fps
+  EXPECT_EQ(p.frames, 10);             // 0.4 s × 25 fps
   EXPECT_NEAR(p.duration, 0.4, 1e-3);  // 1 ms: the container's time base rounding
   const auto boxes = topLevelBoxes(video);
   const auto moov = std::find(boxes.begin(), boxes.end(), "moov");
@@ -274,12 +280,15 @@ TEST(Video, StreamAndLayoutAreWhatBrowsersPlay) {
 // twice the video time, so twice the frames; 2 in half.
 TEST(Video, PlaybackScalesTheFrameCount) {
   const fs::path slow = scratch("slow.mp4"), fast = scratch("fast.mp4");
-  ASSERT_EQ(rattleback("render scenes/seed-reversed.yaml --duration 0.4 --playback 0.5 --size 160x90 "
-                       "-o " + slow.string()),
-            0);
+  ASSERT_EQ(
+      rattleback("render scenes/seed-reversed.yaml --duration 0.4 --playback 0.5 --size 160x90 "
+                 "-o " +
+                 slow.string()),
+      0);
   EXPECT_EQ(probe(slow).frames, 20);  // 0.4 s / 0.5 × 25 fps
   ASSERT_EQ(rattleback("render scenes/seed-reversed.yaml --duration 0.4 --playback 2 --size 160x90 "
-                       "-o " + fast.string()),
+                       "-o " +
+                       fast.string()),
             0);
   EXPECT_EQ(probe(fast).frames, 5);  // 0.4 s / 2 × 25 fps
 }
@@ -321,7 +330,8 @@ TEST(Video, BothWritesThreeVideos) {
   // other): refused, with nothing written.
   const fs::path zero = scratch("zero");
   EXPECT_EQ(rattleback("render scenes/seed-reversed.yaml --both --spin 0 --duration 0.2 --size "
-                       "160x90 -o " + zero.string()),
+                       "160x90 -o " +
+                       zero.string()),
             2);
   for (const char* suffix : {"-preferred.mp4", "-reversed.mp4", "-both.mp4"})
     EXPECT_FALSE(fs::exists(zero.string() + suffix)) << suffix;
@@ -360,9 +370,11 @@ TEST(Compare, SameAndDifferentImages) {
             1);
   EXPECT_TRUE(fs::exists(diff));
   // Within a looser allowance (5% of pixels) the same pair passes.
-  EXPECT_EQ(rattleback("compare " + changed.string() + " " + golden.string() + " --pixels 0.05"), 0);
+  EXPECT_EQ(rattleback("compare " + changed.string() + " " + golden.string() + " --pixels 0.05"),
+            0);
   // Options out of range are bad input, not a silent pass.
-  EXPECT_EQ(rattleback("compare " + changed.string() + " " + golden.string() + " --tolerance 300"), 2);
+  EXPECT_EQ(rattleback("compare " + changed.string() + " " + golden.string() + " --tolerance 300"),
+            2);
   EXPECT_EQ(rattleback("compare " + changed.string() + " " + golden.string() + " --pixels 2"), 2);
   // Different sizes differ, and the message says no diff was written.
   const fs::path small = scratch("small.png"), out = scratch("compare.txt");
@@ -426,14 +438,15 @@ TEST(Compare, ColourChunksDoNotChangeTheValuesCompared) {
 // the first (as `timeout -s INT` sends, to the process and then its group), which ends the
 // process at once.
 TEST(Video, AnInterruptKeepsTheOldFileAndLeavesNoTemporary) {
-  for (auto [signal, twice] : {std::pair{SIGINT, false}, std::pair{SIGTERM, false},
-                               std::pair{SIGINT, true}}) {
+  for (auto [signal, twice] :
+       {std::pair{SIGINT, false}, std::pair{SIGTERM, false}, std::pair{SIGINT, true}}) {
     const fs::path video = scratch("kept.mp4");
     for (const auto& entry : fs::directory_iterator(video.parent_path())) fs::remove(entry.path());
     std::ofstream(video) << "precious";
-    const std::string command = "cd " + kSource.string() + " && exec " + RATTLEBACK_BIN +
-                                " render scenes/rattleback.yaml --size 640x360 --duration 60 -q -o " +
-                                video.string() + " 2>/dev/null";
+    const std::string command =
+        "cd " + kSource.string() + " && exec " + RATTLEBACK_BIN +
+        " render scenes/rattleback.yaml --size 640x360 --duration 60 -q -o " + video.string() +
+        " 2>/dev/null";
     const pid_t child = fork();
     if (child == 0) {
       execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
@@ -460,8 +473,7 @@ TEST(Video, AnInterruptKeepsTheOldFileAndLeavesNoTemporary) {
     in >> content;
     EXPECT_EQ(content, "precious");
     for (const auto& entry : fs::directory_iterator(video.parent_path()))
-      EXPECT_EQ(entry.path().filename().string().find(".part"), std::string::npos)
-          << entry.path();
+      EXPECT_EQ(entry.path().filename().string().find(".part"), std::string::npos) << entry.path();
   }
 }
 

@@ -1,12 +1,12 @@
 // The reversal rule (sim/reversals.hpp, docs/physics.md P7) on scripted n(t), without a body:
 // each case is a spin history a run can produce, fed at 1 ms steps with the crossing located
 // by linear interpolation (exact for the piecewise-linear scripts, so times compare to 1e-9 s).
+#include "sim/reversals.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
-
-#include "sim/reversals.hpp"
 
 namespace {
 
@@ -54,19 +54,22 @@ TEST(Reversals, ACrossingThatGoesOnIsAReversalAtTheCrossing) {
 
 TEST(Reversals, ADipThroughZeroAndBackIsNone) {
   // n swings to +0.5 (past 1 % of 5) for 60 ms while the body rocks, and back: no reversal.
-  const auto r = reversalsOf({through({{0, -5}, {1.0, -0.5}, {1.02, 0.5}, {1.06, 0.5}, {1.1, -3}, {3, -3}})}, -5);
+  const auto r = reversalsOf(
+      {through({{0, -5}, {1.0, -0.5}, {1.02, 0.5}, {1.06, 0.5}, {1.1, -3}, {3, -3}})}, -5);
   EXPECT_TRUE(r.empty());
 }
 
 TEST(Reversals, ASpinThatDiesOutAndDithersIsNone) {
   // Down to rest, then ±0.02 rad/s about zero (within 1 % of 5): never a reversal.
-  const auto r = reversalsOf({[](double t) { return t < 1 ? -5 * (1 - t) : 0.02 * std::sin(40 * t); }}, -5);
+  const auto r =
+      reversalsOf({[](double t) { return t < 1 ? -5 * (1 - t) : 0.02 * std::sin(40 * t); }}, -5);
   EXPECT_TRUE(r.empty());
 }
 
 TEST(Reversals, WigglesAfterTheThresholdKeepTheCrossing) {
   // Across at 1.0 s, up to +0.1 (reached), back to +0.01 and up again: one reversal at 1.0 s.
-  const auto r = reversalsOf({through({{0, -5}, {1.0, 0}, {1.02, 0.1}, {1.04, 0.01}, {1.06, 0.2}, {2, 4}, {3, 4}})}, -5);
+  const auto r = reversalsOf(
+      {through({{0, -5}, {1.0, 0}, {1.02, 0.1}, {1.04, 0.01}, {1.06, 0.2}, {2, 4}, {3, 4}})}, -5);
   ASSERT_EQ(r.size(), 1u);
   EXPECT_NEAR(r[0], 1.0, 1e-9);
 }
@@ -89,7 +92,8 @@ TEST(Reversals, AtTheEndACrossingThatReachedTheThresholdCounts) {
 
 TEST(Reversals, TheNextIsCountedFromTheNewSign) {
   // −5 → +3 (at 1 s) → −2 (at 2 s): two reversals; n = 0 from the start: none.
-  const auto r = reversalsOf({through({{0, -5}, {1, 0}, {1.5, 3}, {2, 0}, {2.5, -2}, {3, -2}})}, -5);
+  const auto r =
+      reversalsOf({through({{0, -5}, {1, 0}, {1.5, 3}, {2, 0}, {2.5, -2}, {3, -2}})}, -5);
   ASSERT_EQ(r.size(), 2u);
   EXPECT_NEAR(r[0], 1.0, 1e-9);
   EXPECT_NEAR(r[1], 2.0, 1e-9);

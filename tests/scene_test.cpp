@@ -1,7 +1,6 @@
 // Scene files: the shipped scenes load, and every kind of bad input gets one line naming the
 // file, the line and the key.
 #include <gtest/gtest.h>
-
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -32,7 +31,7 @@ video: {fps: 25, size: [320, 180], view: oblique}
 )";
 
 struct BadCase {
-  const char* from;      // text in kBase to replace ("" appends `to`)
+  const char* from;  // text in kBase to replace ("" appends `to`)
   const char* to;
   const char* expected;  // the start of the message after "inline.yaml:"
 };
@@ -64,7 +63,8 @@ const BadCase kBadCases[] = {
     {"dt: 1.0e-5", "dt: 0", "10: simulation.dt must be > 0"},
     {"dt: 1.0e-5", "dt: -1e-5", "10: simulation.dt must be > 0"},
     {"dt: 1.0e-5", "dt: 0.01", "10: simulation.dt = 0.01 s is too large for contact.stiffness"},
-    {"duration: 1.0", "duration: 1e9", "10: simulation.dt 1e-05 s over simulation.duration 1e+09 s makes more than 1e11 steps"},
+    {"duration: 1.0", "duration: 1e9",
+     "10: simulation.dt 1e-05 s over simulation.duration 1e+09 s makes more than 1e11 steps"},
     {"duration: 1.0", "duration: .inf", "10: simulation.duration must be > 0, not inf"},
     {"integrator: symplectic", "integrator: leapfrog", "10: simulation.integrator must be"},
     {"stiffness: 2.0e4", "stiffness: -5", "8: contact.stiffness must be > 0"},
@@ -122,11 +122,13 @@ const BadCase kBadCases[] = {
     {"tilt: [0.0, 0.0]", "tilt: [.nan, 0]", "9: initial.tilt must be a finite number"},
     {"integrator: symplectic", "integrator: 4", "10: simulation.integrator must be"},
     {"duration: 1.0", "duration: -1", "10: simulation.duration must be > 0"},
-    {"dt: 1.0e-5", "dt: 1.0e-5, tolerance: 1.0e-8", "10: simulation.dt and simulation.tolerance are both given"},
+    {"dt: 1.0e-5", "dt: 1.0e-5, tolerance: 1.0e-8",
+     "10: simulation.dt and simulation.tolerance are both given"},
     {"dt: 1.0e-5, ", "", "10: simulation.dt or simulation.tolerance is required"},
     {"dt: 1.0e-5", "tolerance: 0", "10: simulation.tolerance must be > 0"},
     {"dt: 1.0e-5", "tolerance: 1.0e-8", "10: simulation.integrator symplectic takes a fixed step"},
-    {"integrator: symplectic, dt: 1.0e-5", "integrator: dopri5, dt: 1.0e-5", "10: simulation.integrator dopri5 chooses its own steps"},
+    {"integrator: symplectic, dt: 1.0e-5", "integrator: dopri5, dt: 1.0e-5",
+     "10: simulation.integrator dopri5 chooses its own steps"},
     {"size: [320, 180]", "size: [320]", "11: video.size must be a list of two"},
     {"size: [320, 180]", "size: [-320, 180]", "11: video.size sides must be within"},
     {"fps: 25", "fps: 1e9", "11: video.fps must be"},
@@ -174,7 +176,9 @@ bool videoValueCase(const BadCase& c) {
 
 }  // namespace
 
-TEST(Scenes, TheBaseSceneCompiles) { EXPECT_EQ(errorFor(kBase), ""); }
+TEST(Scenes, TheBaseSceneCompiles) {
+  EXPECT_EQ(errorFor(kBase), "");
+}
 
 TEST(Scenes, ShippedScenesLoadAndCompile) {
   for (const char* name :
@@ -274,9 +278,9 @@ TEST(BadScenes, EachExitsTwoFromTheCommandLineWithOneLineAndNoOutput) {
                                 err = dir / "stderr", out = dir / "stdout";
     std::filesystem::remove(csv);
     // Faults in the video section's values reach only the drawing commands: those go to still.
-    const std::string command =
-        std::string(RATTLEBACK_BIN) + (videoValueCase(c) ? " still " : " simulate ") +
-        yaml.string() + " -o " + csv.string() + " >" + out.string() + " 2>" + err.string();
+    const std::string command = std::string(RATTLEBACK_BIN) +
+                                (videoValueCase(c) ? " still " : " simulate ") + yaml.string() +
+                                " -o " + csv.string() + " >" + out.string() + " 2>" + err.string();
     const int raw = std::system(command.c_str());
     std::ifstream in(err);
     std::stringstream text;
@@ -293,9 +297,9 @@ TEST(BadScenes, EachExitsTwoFromTheCommandLineWithOneLineAndNoOutput) {
 TEST(BadScenes, ControlCharactersInTheFileStayOnOneLine) {
   // Found by the fuzzer: yaml-cpp quotes a bad escape's character back, here a newline; and a
   // quoted key can hold one too. The message escapes them.
-  for (const std::string& yaml : {std::string("units: {length: \"\\\n\"}\n"),
-                                 std::string("\"bad\\nkey\": 1\n"),
-                                 std::string("uits:\377\377\377\377~\377 \377\377{\022\000\n", 18)}) {
+  for (const std::string& yaml :
+       {std::string("units: {length: \"\\\n\"}\n"), std::string("\"bad\\nkey\": 1\n"),
+        std::string("uits:\377\377\377\377~\377 \377\377{\022\000\n", 18)}) {
     const std::string message = errorFor(yaml);
     EXPECT_FALSE(message.empty());
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
@@ -311,17 +315,19 @@ TEST(SceneValues, AStepReplacesTheScenesToleranceAndTheOtherWayRound) {
   const std::string with_tolerance =
       adaptive.substr(0, adaptive.find("simulation:")) +
       "simulation: {tolerance: 1.0e-8, duration: 1.0}\nvideo: {fps: 25}\n";
-  auto stepped = scene::loadWithValues(with_tolerance, "t.yaml", {{"simulation.dt", "2.0e-5"}}, "with_values");
+  auto stepped =
+      scene::loadWithValues(with_tolerance, "t.yaml", {{"simulation.dt", "2.0e-5"}}, "with_values");
   ASSERT_TRUE(stepped) << stepped.error().text();
   EXPECT_EQ(stepped->spec.simulation.dt, 2e-5);
   EXPECT_TRUE(std::isnan(stepped->spec.simulation.tolerance));
-  auto tolerant = scene::loadWithValues(adaptive, "s.yaml", {{"simulation.tolerance", "1.0e-7"}}, "with_values");
+  auto tolerant = scene::loadWithValues(adaptive, "s.yaml", {{"simulation.tolerance", "1.0e-7"}},
+                                        "with_values");
   ASSERT_TRUE(tolerant) << tolerant.error().text();
   EXPECT_EQ(tolerant->spec.simulation.tolerance, 1e-7);
   EXPECT_TRUE(std::isnan(tolerant->spec.simulation.dt));
-  auto both = scene::loadWithValues(with_tolerance, "t.yaml",
-                                    {{"simulation.dt", "2.0e-5"}, {"simulation.tolerance", "1.0e-7"}},
-                                    "with_values");
+  auto both = scene::loadWithValues(
+      with_tolerance, "t.yaml", {{"simulation.dt", "2.0e-5"}, {"simulation.tolerance", "1.0e-7"}},
+      "with_values");
   ASSERT_TRUE(both) << both.error().text();
   const auto refused = scene::loadModel(both.value());
   ASSERT_FALSE(refused);

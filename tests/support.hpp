@@ -69,7 +69,8 @@ inline sim::Model build(const sim::SceneSpec& spec) {
 /// Runs `model` from `start` to its end, handing `each` a sample every `period` seconds (at
 /// exact times k·period, and the end).
 template <typename Each>
-sim::RunSummary runFrom(const sim::Model& model, const sim::State& start, double period, Each each) {
+sim::RunSummary runFrom(const sim::Model& model, const sim::State& start, double period,
+                        Each each) {
   sim::Rollout rollout(model, start);
   return sim::sampleRun(rollout, 1 / period, each);
 }

@@ -1,10 +1,9 @@
 // `rattleback sweep` as a user runs it: the same table whatever the threads or shards, rows
 // that equal `simulate` on the same scene, errors that name file, line and key, a bad value
 // that refuses its row only, interrupts that keep the finished rows, and the merge's checks.
-#include <gtest/gtest.h>
-
 #include "scene/sweep.hpp"
-#include "tasks/sweep_jobs.hpp"
+
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -13,11 +12,12 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <thread>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include "tasks/sweep_jobs.hpp"
 
 namespace fs = std::filesystem;
 
@@ -68,9 +68,12 @@ std::vector<std::vector<std::string>> readCsv(const std::string& text) {
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
     if (quoted) {
-      if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') row.back() += '"', ++i;
-      else if (c == '"') quoted = false;
-      else row.back() += c;
+      if (c == '"' && i + 1 < text.size() && text[i + 1] == '"')
+        row.back() += '"', ++i;
+      else if (c == '"')
+        quoted = false;
+      else
+        row.back() += c;
     } else if (c == '"') {
       quoted = true;
     } else if (c == ',') {
@@ -114,19 +117,22 @@ std::string smallSweep() {
 TEST(Sweep, TheTableIsTheSameForOneOrTwoThreadsAndForMergedShards) {
   const fs::path dir = scratch();
   const fs::path sweep = writeSweep(dir, smallSweep());
-  const Outcome one = rattleback(dir, "sweep " + sweep.string() + " -q -j 1 -o " + (dir / "j1.csv").string());
+  const Outcome one =
+      rattleback(dir, "sweep " + sweep.string() + " -q -j 1 -o " + (dir / "j1.csv").string());
   ASSERT_EQ(one.status, 0) << one.err;
-  const Outcome two = rattleback(dir, "sweep " + sweep.string() + " -q -j 2 -o " + (dir / "j2.csv").string());
+  const Outcome two =
+      rattleback(dir, "sweep " + sweep.string() + " -q -j 2 -o " + (dir / "j2.csv").string());
   ASSERT_EQ(two.status, 0) << two.err;
   std::string shards;
   for (int i = 0; i < 3; ++i) {
     const std::string shard = (dir / ("s" + std::to_string(i) + ".csv")).string();
-    const Outcome r = rattleback(dir, "sweep " + sweep.string() + " -q --shard " + std::to_string(i) +
-                                      "/3 -o " + shard);
+    const Outcome r = rattleback(
+        dir, "sweep " + sweep.string() + " -q --shard " + std::to_string(i) + "/3 -o " + shard);
     ASSERT_EQ(r.status, 0) << r.err;
     shards = shard + " " + shards;  // in reverse order: the merge orders the rows itself
   }
-  const Outcome merged = rattleback(dir, "sweep merge -q " + (dir / "merged.csv").string() + " " + shards);
+  const Outcome merged =
+      rattleback(dir, "sweep merge -q " + (dir / "merged.csv").string() + " " + shards);
   ASSERT_EQ(merged.status, 0) << merged.err;
 
   const std::string reference = withoutWall(slurp(dir / "j1.csv"));
@@ -150,7 +156,8 @@ TEST(Sweep, TheTableIsTheSameForOneOrTwoThreadsAndForMergedShards) {
 TEST(Sweep, EveryRowIsWhatSimulateReportsForItsScene) {
   const fs::path dir = scratch();
   const fs::path sweep = writeSweep(dir, smallSweep());
-  const Outcome r = rattleback(dir, "sweep " + sweep.string() + " -q -o " + (dir / "t.csv").string());
+  const Outcome r =
+      rattleback(dir, "sweep " + sweep.string() + " -q -o " + (dir / "t.csv").string());
   ASSERT_EQ(r.status, 0) << r.err;
   const auto rows = readCsv(slurp(dir / "t.csv"));
   ASSERT_EQ(rows.size(), 7u);
@@ -170,7 +177,9 @@ TEST(Sweep, EveryRowIsWhatSimulateReportsForItsScene) {
     ASSERT_EQ(s.status, 0) << s.err;
     const auto meta = nlohmann::json::parse(slurp(csv.string() + ".json"));
     const auto& result = meta["result"];
-    auto near = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(b)); };
+    auto near = [](double a, double b) {
+      return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(b));
+    };
     if (result["first_reversal_s"].is_null()) {
       EXPECT_EQ(row[4], "") << "row " << i;
     } else {
@@ -195,7 +204,8 @@ TEST(Sweep, ErrorsInTheSweepFileNameFileLineAndKey) {
     std::string text, expected;
   };
   const Case cases[] = {
-      {"base: BASE\nvary:\n  initial.spinn: [1, 2]\n", "sweep.yaml:3: initial.spinn is not a known key"},
+      {"base: BASE\nvary:\n  initial.spinn: [1, 2]\n",
+       "sweep.yaml:3: initial.spinn is not a known key"},
       {"base: BASE\nvary:\n  initial.spin: {from: 1, to: 2, count: 0}\n",
        "sweep.yaml:3: initial.spin count must be a whole number from 1 to 1e6"},
       {"base: BASE\nvary:\n  initial.spin: {from: 1, to: 2, count: 3, scale: cubic}\n",
@@ -206,7 +216,8 @@ TEST(Sweep, ErrorsInTheSweepFileNameFileLineAndKey) {
       {"base: BASE\nvary:\n  initial.spin: [1]\nduraton: 3\n",
        "sweep.yaml:4: duraton is not a key of a sweep"},
       {"base: BASE\nvary:\n  body.dents.at[2]: [1]\n",
-       "sweep.yaml:3: body.dents.at[2]: the base scene has no list body.dents.at with an element 2"},
+       "sweep.yaml:3: body.dents.at[2]: the base scene has no list body.dents.at with an element "
+       "2"},
       {"base: BASE\nvary: [1, 2]\n", "sweep.yaml:2: vary must map scene keys to their values"},
       {"base: BASE\nvary:\n  initial.spin: [1\n", "malformed YAML"},
   };
@@ -214,7 +225,8 @@ TEST(Sweep, ErrorsInTheSweepFileNameFileLineAndKey) {
     std::string text = c.text;
     if (auto at = text.find("BASE"); at != std::string::npos) text.replace(at, 4, kBase);
     const fs::path sweep = writeSweep(dir, text);
-    const Outcome r = rattleback(dir, "sweep " + sweep.string() + " -q -o " + (dir / "t.csv").string());
+    const Outcome r =
+        rattleback(dir, "sweep " + sweep.string() + " -q -o " + (dir / "t.csv").string());
     EXPECT_EQ(r.status, 2) << c.text;
     EXPECT_NE(r.err.find(c.expected), std::string::npos) << c.text << "\ngot: " << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
@@ -227,13 +239,16 @@ TEST(Sweep, ErrorsInTheSweepFileNameFileLineAndKey) {
 TEST(Sweep, ABadValueRefusesItsRowOnly) {
   const fs::path dir = scratch();
   const fs::path sweep = writeSweep(
-      dir, "base: " + kBase + "\nvary:\n  contact.air_drag: [0.0, -1.0]\n  initial.spin: [-5]\nduration: 1\n");
-  const Outcome r = rattleback(dir, "sweep " + sweep.string() + " -q -o " + (dir / "t.csv").string());
+      dir, "base: " + kBase +
+               "\nvary:\n  contact.air_drag: [0.0, -1.0]\n  initial.spin: [-5]\nduration: 1\n");
+  const Outcome r =
+      rattleback(dir, "sweep " + sweep.string() + " -q -o " + (dir / "t.csv").string());
   ASSERT_EQ(r.status, 0) << r.err;
   const auto rows = readCsv(slurp(dir / "t.csv"));
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(rows[1][3], "ok");
-  EXPECT_EQ(rows[2][3].rfind("refused: " + sweep.string() + ":3: contact.air_drag", 0), 0u) << rows[2][3];
+  EXPECT_EQ(rows[2][3].rfind("refused: " + sweep.string() + ":3: contact.air_drag", 0), 0u)
+      << rows[2][3];
   EXPECT_EQ(rows[2][4], "");
 }
 
@@ -244,13 +259,15 @@ TEST(Sweep, AStoppedRowKeepsItsLargestTilt) {
   const fs::path dir = scratch();
   const fs::path sweep =
       writeSweep(dir, "base: " + kBase + "\nvary:\n  initial.spin: [-5, -45]\nduration: 1\n");
-  const Outcome r = rattleback(dir, "sweep " + sweep.string() + " -q -o " + (dir / "t.csv").string());
+  const Outcome r =
+      rattleback(dir, "sweep " + sweep.string() + " -q -o " + (dir / "t.csv").string());
   ASSERT_EQ(r.status, 0) << r.err;
   const auto rows = readCsv(slurp(dir / "t.csv"));
   ASSERT_EQ(rows.size(), 3u);
   ASSERT_EQ(rows[0][6], "max_tilt_deg");
   EXPECT_EQ(rows[1][2], "ok");
-  EXPECT_EQ(rows[2][2].rfind("stopped: the body tipped onto the edge of its top", 0), 0u) << rows[2][2];
+  EXPECT_EQ(rows[2][2].rfind("stopped: the body tipped onto the edge of its top", 0), 0u)
+      << rows[2][2];
   ASSERT_FALSE(rows[2][6].empty());
   EXPECT_GT(std::stod(rows[2][6]), 50.0);
   EXPECT_EQ(rows[2][5], "");  // no final spin
@@ -260,11 +277,12 @@ TEST(Sweep, AStoppedRowKeepsItsLargestTilt) {
 // and the table equals an uninterrupted run's.
 TEST(Sweep, AnInterruptKeepsTheFinishedRowsAndResumeCompletesThem) {
   const fs::path dir = scratch();
-  const fs::path sweep = writeSweep(
-      dir, "base: " + kBase + "\nvary:\n  initial.spin: {from: -8, to: 8, count: 161}\nduration: 8\n");
+  const fs::path sweep =
+      writeSweep(dir, "base: " + kBase +
+                          "\nvary:\n  initial.spin: {from: -8, to: 8, count: 161}\nduration: 8\n");
   const fs::path table = dir / "t.csv";
-  const std::string command = std::string(RATTLEBACK_BIN) + " sweep " + sweep.string() +
-                              " -q -j 1 -o " + table.string();
+  const std::string command =
+      std::string(RATTLEBACK_BIN) + " sweep " + sweep.string() + " -q -j 1 -o " + table.string();
   const pid_t pid = fork();
   ASSERT_GE(pid, 0);
   if (pid == 0) {
@@ -291,14 +309,17 @@ TEST(Sweep, AnInterruptKeepsTheFinishedRowsAndResumeCompletesThem) {
   EXPECT_LT(kept_rows, 161);
   EXPECT_NE(slurp(dir / "stderr").find("--resume"), std::string::npos);
 
-  const Outcome resumed = rattleback(dir, "sweep " + sweep.string() + " --resume -o " + table.string());
+  const Outcome resumed =
+      rattleback(dir, "sweep " + sweep.string() + " --resume -o " + table.string());
   ASSERT_EQ(resumed.status, 0) << resumed.err;
   EXPECT_FALSE(fs::exists(journal));
   // The summary counts the journal's rows and this run's (a fresh run mentions no journal).
-  const std::string split = "(" + std::to_string(kept_rows) + " from the journal of the interrupted run, " +
+  const std::string split = "(" + std::to_string(kept_rows) +
+                            " from the journal of the interrupted run, " +
                             std::to_string(161 - kept_rows) + " run now)";
   EXPECT_NE(resumed.out.find(split), std::string::npos) << resumed.out;
-  const Outcome whole = rattleback(dir, "sweep " + sweep.string() + " -o " + (dir / "whole.csv").string());
+  const Outcome whole =
+      rattleback(dir, "sweep " + sweep.string() + " -o " + (dir / "whole.csv").string());
   ASSERT_EQ(whole.status, 0) << whole.err;
   EXPECT_EQ(whole.out.find("journal"), std::string::npos) << whole.out;
   EXPECT_EQ(withoutWall(slurp(table)), withoutWall(slurp(dir / "whole.csv")));
@@ -318,18 +339,24 @@ TEST(Sweep, ResumeRefusesAJournalOfAChangedSweep) {
     std::string header, row;
     std::getline(in, header);
     std::getline(in, row);
-    tasks::Journal::open(journal, header, {{0, row}}, tasks::sweepFingerprint(scene::loadSweep(sweep.string()).value())).value().close();
+    tasks::Journal::open(journal, header, {{0, row}},
+                         tasks::sweepFingerprint(scene::loadSweep(sweep.string()).value()))
+        .value()
+        .close();
     fs::remove(table);
   };
   interrupted();
-  EXPECT_EQ(rattleback(dir, "sweep " + sweep.string() + " -q --resume -o " + table.string()).status, 0);
+  EXPECT_EQ(rattleback(dir, "sweep " + sweep.string() + " -q --resume -o " + table.string()).status,
+            0);
   interrupted();
   std::string text = slurp(sweep);
   text.replace(text.find("duration:"), std::string("duration:").size(), "duration: 0.2 #");
   std::ofstream(sweep) << text;
-  const Outcome changed = rattleback(dir, "sweep " + sweep.string() + " -q --resume -o " + table.string());
+  const Outcome changed =
+      rattleback(dir, "sweep " + sweep.string() + " -q --resume -o " + table.string());
   EXPECT_EQ(changed.status, 2);
-  EXPECT_NE(changed.err.find("changed since the interrupted run"), std::string::npos) << changed.err;
+  EXPECT_NE(changed.err.find("changed since the interrupted run"), std::string::npos)
+      << changed.err;
   EXPECT_FALSE(fs::exists(table));
 }
 
@@ -337,15 +364,18 @@ TEST(Sweep, TheMergeRefusesAMissingOrRepeatedRow) {
   const fs::path dir = scratch();
   const fs::path sweep = writeSweep(dir, smallSweep());
   for (int i = 0; i < 2; ++i) {
-    const Outcome r = rattleback(dir, "sweep " + sweep.string() + " -q --shard " + std::to_string(i) +
-                                      "/2 -o " + (dir / ("s" + std::to_string(i) + ".csv")).string());
+    const Outcome r =
+        rattleback(dir, "sweep " + sweep.string() + " -q --shard " + std::to_string(i) + "/2 -o " +
+                            (dir / ("s" + std::to_string(i) + ".csv")).string());
     ASSERT_EQ(r.status, 0) << r.err;
   }
   const std::string s0 = (dir / "s0.csv").string(), s1 = (dir / "s1.csv").string();
   const Outcome missing = rattleback(dir, "sweep merge -q " + (dir / "m.csv").string() + " " + s0);
   EXPECT_EQ(missing.status, 2);
-  EXPECT_NE(missing.err.find("rows missing (3 of 6), e.g. 1 3 5"), std::string::npos) << missing.err;
-  const Outcome repeated = rattleback(dir, "sweep merge -q " + (dir / "m.csv").string() + " " + s0 + " " + s1 + " " + s0);
+  EXPECT_NE(missing.err.find("rows missing (3 of 6), e.g. 1 3 5"), std::string::npos)
+      << missing.err;
+  const Outcome repeated = rattleback(
+      dir, "sweep merge -q " + (dir / "m.csv").string() + " " + s0 + " " + s1 + " " + s0);
   EXPECT_EQ(repeated.status, 2);
   EXPECT_NE(repeated.err.find("row 0 is also in"), std::string::npos) << repeated.err;
   EXPECT_FALSE(fs::exists(dir / "m.csv"));
@@ -353,8 +383,9 @@ TEST(Sweep, TheMergeRefusesAMissingOrRepeatedRow) {
   // beside the descriptor's link (it would be /dev/stdout.json).
   fs::remove(dir / "out.csv");
   fs::create_symlink("/proc/self/fd/1", dir / "out.csv");
-  for (const std::string& command : {"sweep " + sweep.string() + " -q -o " + (dir / "out.csv").string(),
-                                     "sweep merge -q " + (dir / "out.csv").string() + " " + s0 + " " + s1}) {
+  for (const std::string& command :
+       {"sweep " + sweep.string() + " -q -o " + (dir / "out.csv").string(),
+        "sweep merge -q " + (dir / "out.csv").string() + " " + s0 + " " + s1}) {
     const Outcome device = rattleback(dir, command);
     EXPECT_EQ(device.status, 2) << command;
     EXPECT_NE(device.err.find("a sweep's table is a file"), std::string::npos) << device.err;
@@ -367,8 +398,8 @@ TEST(Sweep, TheMergeRefusesAMissingOrRepeatedRow) {
 TEST(Sweep, EmitSlurmWritesAJobArrayAndItsMerge) {
   const fs::path dir = scratch();
   const fs::path sweep = writeSweep(dir, smallSweep());
-  const Outcome r = rattleback(dir, "sweep " + sweep.string() + " --emit slurm --shards 3 -o " +
-                                    (dir / "t.csv").string());
+  const Outcome r = rattleback(
+      dir, "sweep " + sweep.string() + " --emit slurm --shards 3 -o " + (dir / "t.csv").string());
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("#SBATCH --array=0-2\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("--dependency=afterok:\"$SLURM_ARRAY_JOB_ID\""), std::string::npos);
@@ -389,14 +420,17 @@ TEST(Sweep, EmitKeepsThePlotForTheMerge) {
   const fs::path dir = scratch();
   const fs::path sweep = writeSweep(dir, smallSweep());
   const Outcome r = rattleback(dir, "sweep " + sweep.string() + " --emit slurm --shards 2 -o " +
-                                    (dir / "t.csv").string() + " --plot " +
-                                    (dir / "t.png").string() + " --metric final_spin");
+                                        (dir / "t.csv").string() + " --plot " +
+                                        (dir / "t.png").string() + " --metric final_spin");
   ASSERT_EQ(r.status, 0) << r.err;
   // (Quoted twice: a word of the merge's --wrap, itself one shell word.)
-  EXPECT_NE(r.out.find("--plot '\\''" + (dir / "t.png").string() + "'\\'' --metric '\\''final_spin"),
-            std::string::npos) << r.out;
-  const Outcome p = rattleback(dir, "sweep " + sweep.string() + " --emit parallel --shards 2 --plot " +
-                                    (dir / "t.png").string());
+  EXPECT_NE(
+      r.out.find("--plot '\\''" + (dir / "t.png").string() + "'\\'' --metric '\\''final_spin"),
+      std::string::npos)
+      << r.out;
+  const Outcome p =
+      rattleback(dir, "sweep " + sweep.string() + " --emit parallel --shards 2 --plot " +
+                          (dir / "t.png").string());
   EXPECT_EQ(p.status, 2);
   EXPECT_NE(p.err.find("sweep merge OUT.csv SHARD… --plot PNG"), std::string::npos) << p.err;
 }
@@ -409,7 +443,8 @@ TEST(Sweep, TheProgramThatSimulatesLoadsNoRenderingLibrary) {
   const int raw = std::system(("ldd " + bin + " > " + (dir / "ldd").string()).c_str());
   ASSERT_EQ(WEXITSTATUS(raw), 0);
   const std::string libraries = slurp(dir / "ldd");
-  for (const char* heavy : {"libOSMesa", "libEGL", "libGL", "libLLVM", "libavcodec", "libavformat", "libswscale"})
+  for (const char* heavy :
+       {"libOSMesa", "libEGL", "libGL", "libLLVM", "libavcodec", "libavformat", "libswscale"})
     EXPECT_EQ(libraries.find(heavy), std::string::npos) << heavy << " in\n" << libraries;
   EXPECT_TRUE(fs::exists(fs::path(bin).parent_path() / "rattleback-render"));
 }

@@ -1,5 +1,7 @@
 // The tables' numbers (issue 27): every number the CSV writes reads back as exactly the double
 // that was computed, in the shortest text that does, and the same text as the JSON sidecars.
+#include "tasks/table.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cctype>
@@ -8,15 +10,14 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <map>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <random>
 #include <sstream>
 
 #include "support.hpp"
 #include "tasks/simulate.hpp"
-#include "tasks/table.hpp"
 
 namespace {
 
@@ -33,11 +34,19 @@ std::vector<std::string> split(const std::string& line) {
 // one ulp apart (which a fixed count of digits below 17 cannot tell apart).
 TEST(Numbers, EveryDoubleReadsBackExactly) {
   std::mt19937_64 bits(27);
-  std::vector<double> values = {0.0, -0.0, 1.0, 0.1, 1e-4, 2.3158, -4.999619237890977,
+  std::vector<double> values = {0.0,
+                                -0.0,
+                                1.0,
+                                0.1,
+                                1e-4,
+                                2.3158,
+                                -4.999619237890977,
                                 std::numeric_limits<double>::min(),
                                 std::numeric_limits<double>::denorm_min(),
-                                std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
-                                std::nextafter(0.1, 1.0), std::nextafter(2.3158, 0.0)};
+                                std::numeric_limits<double>::max(),
+                                -std::numeric_limits<double>::max(),
+                                std::nextafter(0.1, 1.0),
+                                std::nextafter(2.3158, 0.0)};
   for (int i = 0; i < 50000; ++i) {
     double v;
     const std::uint64_t b = bits();
@@ -77,7 +86,8 @@ TEST(Numbers, TelemetryRowsAreTheSamplesExactly) {
   spec.simulation.duration = 0.05;
   const Recorded run = record(build(spec), 1e-3);
   ASSERT_GT(run.samples.size(), 40u);
-  const auto header = split(tasks::telemetryHeader().substr(0, tasks::telemetryHeader().size() - 1));
+  const auto header =
+      split(tasks::telemetryHeader().substr(0, tasks::telemetryHeader().size() - 1));
   for (const sim::Telemetry& s : run.samples) {
     std::ostringstream out;
     tasks::writeTelemetryRow(out, s);
@@ -87,13 +97,26 @@ TEST(Numbers, TelemetryRowsAreTheSamplesExactly) {
     const auto fields = split(line);
     ASSERT_EQ(fields.size(), header.size());
     const Eigen::Quaterniond q = tasks::attitude(s);
-    const std::map<std::string, double> expected = {
-        {"t", s.t}, {"spin", s.spin}, {"energy", s.energy}, {"kinetic", s.kinetic},
-        {"potential", s.potential}, {"elastic", s.elastic}, {"tilt_deg", s.tilt_deg},
-        {"x", s.x_world.x()}, {"y", s.x_world.y()}, {"z", s.x_world.z()}, {"wx", s.w_world.x()},
-        {"wy", s.w_world.y()}, {"wz", s.w_world.z()}, {"Lz", s.L_world.z()},
-        {"contacts", s.contacts}, {"normal_force", s.normal_force}, {"qw", q.w()},
-        {"qx", q.x()}, {"qy", q.y()}, {"qz", q.z()}};
+    const std::map<std::string, double> expected = {{"t", s.t},
+                                                    {"spin", s.spin},
+                                                    {"energy", s.energy},
+                                                    {"kinetic", s.kinetic},
+                                                    {"potential", s.potential},
+                                                    {"elastic", s.elastic},
+                                                    {"tilt_deg", s.tilt_deg},
+                                                    {"x", s.x_world.x()},
+                                                    {"y", s.x_world.y()},
+                                                    {"z", s.x_world.z()},
+                                                    {"wx", s.w_world.x()},
+                                                    {"wy", s.w_world.y()},
+                                                    {"wz", s.w_world.z()},
+                                                    {"Lz", s.L_world.z()},
+                                                    {"contacts", s.contacts},
+                                                    {"normal_force", s.normal_force},
+                                                    {"qw", q.w()},
+                                                    {"qx", q.x()},
+                                                    {"qy", q.y()},
+                                                    {"qz", q.z()}};
     for (std::size_t i = 0; i < header.size(); ++i) {
       if (header[i] == "mode") {
         EXPECT_EQ(fields[i], std::string(rb::nameOf(s.mode)));
@@ -117,7 +140,8 @@ TEST(Numbers, AChunkedCsvIsTheRowsInOrder) {
   const sim::Model model = build(spec);
   const Recorded run = record(model, 1e-5);
   ASSERT_EQ(run.samples.size(), 10001u);
-  const std::string path = (std::filesystem::temp_directory_path() / "rattleback-chunked.csv").string();
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "rattleback-chunked.csv").string();
   ASSERT_TRUE(tasks::writeTelemetry(path, "s.yaml", model, 1e5, run.summary, run.samples));
   std::ostringstream expected;
   expected << tasks::telemetryHeader();

@@ -1,11 +1,11 @@
 // The physics that reverses: the rolling model against an independent solver's reversal time,
 // the smooth penalty model against rolling, the linearised theory against runs.
-#include <regex>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <complex>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include "sim/analysis.hpp"
@@ -51,8 +51,9 @@ SceneRun runScene(const sim::SceneSpec& spec, std::int64_t every = 1) {
 // A quoted figure: an earlier issue gave about 2.32 s for this body from a no-slip solver with
 // the same mass properties (0.025 cm grid) and initial-state convention; that solver is not in
 // the repository (the one that is, tests/reference/, checks Kane & Levinson's body below: see
-// Rolling.AgreesWithTheIndependentReferenceSolver). Measured here 2.329 s. We allow ±0.015 s (0.6%): the figure is quoted to two decimals, and the grid alone
-// moves it by 0.007 s per halving (2.340, 2.329, 2.322 s at 0.05, 0.025, 0.0125 cm).
+// Rolling.AgreesWithTheIndependentReferenceSolver). Measured here 2.329 s. We allow ±0.015 s
+// (0.6%): the figure is quoted to two decimals, and the grid alone moves it by 0.007 s per halving
+// (2.340, 2.329, 2.322 s at 0.05, 0.025, 0.0125 cm).
 TEST(Rolling, ReversesWhereTheReferenceSolverDoes) {
   const SceneRun r = runScene(parse(kRollingScene), 100);
   ASSERT_TRUE(r.summary.first_reversal_s.has_value());
@@ -263,7 +264,8 @@ TEST(Ellipsoid, ProductOfInertiaSetsThePreferredDirection) {
   const SceneRun ccw = runScene(spec, 100);
   ASSERT_TRUE(ccw.summary.first_reversal_s.has_value());
   double worst = 0;
-  for (const auto& t : ccw.samples) worst = std::max(worst, std::abs(t.energy - ccw.samples[0].energy));
+  for (const auto& t : ccw.samples)
+    worst = std::max(worst, std::abs(t.energy - ccw.samples[0].energy));
   EXPECT_LT(worst, 1e-8 * ccw.samples[0].energy);
   spec.initial.spin = -5;
   EXPECT_FALSE(runScene(spec, 100).summary.first_reversal_s.has_value());
@@ -289,10 +291,14 @@ TEST(Ellipsoid, BadBodiesAreRefused) {
   EXPECT_EQ(error(base), "");
   EXPECT_EQ(error(with("[0.0, 0.0, 1.7e-3]", "[0.0, 0.0, -1.7e-3]")),
             "e.yaml:6: body.inertia must be positive definite");
-  EXPECT_EQ(error(with("[0.0, 0.0, 1.7e-3]", "[0.0, 0.0, 1.0]")).rfind("e.yaml:6: body.inertia is impossible", 0), 0u);
+  EXPECT_EQ(error(with("[0.0, 0.0, 1.7e-3]", "[0.0, 0.0, 1.0]"))
+                .rfind("e.yaml:6: body.inertia is impossible", 0),
+            0u);
   EXPECT_EQ(error(with("[-2.0e-5, 2.0e-4, 0.0]", "[-3.0e-5, 2.0e-4, 0.0]")),
             "e.yaml:6: body.inertia must be symmetric");
-  EXPECT_EQ(error(with("[0.03, 0.20, 0.02]", "[0.03, -0.20, 0.02]")).rfind("e.yaml:5: body.ellipsoid.semi_axes must be > 0", 0), 0u);
+  EXPECT_EQ(error(with("[0.03, 0.20, 0.02]", "[0.03, -0.20, 0.02]"))
+                .rfind("e.yaml:5: body.ellipsoid.semi_axes must be > 0", 0),
+            0u);
   EXPECT_EQ(error(with("  mass: 1.0", "  mass: 1.0\n  grid: {dx: 1, dy: 1, dz: 1}")),
             "e.yaml:8: body.grid belongs to shape: paraboloid");
   EXPECT_EQ(error(with("[0.03, 0.20, 0.02], center", "[0.03, 0.20], center")),
@@ -331,7 +337,8 @@ TEST(Rolling, AgreesWithTheIndependentReferenceSolver) {
   ASSERT_TRUE(rollout.advanceTo(48.0));
   const std::vector<double>& reversals = rollout.summary().reversals;
   ASSERT_EQ(reversals.size(), 4u);
-  for (std::size_t i = 0; i < 4; ++i) EXPECT_NEAR(reversals[i], reference[i], i < 2 ? 1e-6 : 1e-5) << i;
+  for (std::size_t i = 0; i < 4; ++i)
+    EXPECT_NEAR(reversals[i], reference[i], i < 2 ? 1e-6 : 1e-5) << i;
 }
 
 // The misalignment is measured from the long axis, whichever of x and y it is: the least-inertia
@@ -352,7 +359,8 @@ body:
 contact: {model: rolling}
 initial: {spin: 5.0, tilt: [0.5, 0.5]}
 simulation: {dt: 1.0e-4, duration: 1.0}
-)", semi_axes.c_str(), Ixx, Ixy, Ixy, Iyy, 0.98 * (Ixx + Iyy));
+)",
+                  semi_axes.c_str(), Ixx, Ixy, Ixy, Iyy, 0.98 * (Ixx + Iyy));
     auto loaded = scene::loadString(yaml, "m.yaml");
     EXPECT_TRUE(loaded) << loaded.error().text();
     auto model = scene::loadModel(loaded.value());
@@ -377,13 +385,17 @@ TEST(Ellipsoid, SymplecticIsRefusedWhereTheBodyRolls) {
     EXPECT_TRUE(loaded);
     return scene::loadModel(loaded.value());
   };
-  const std::string named = std::regex_replace(yaml, std::regex("integrator: rk4"), "integrator: symplectic");
+  const std::string named =
+      std::regex_replace(yaml, std::regex("integrator: rk4"), "integrator: symplectic");
   auto refused = compile(named);
   ASSERT_FALSE(refused);
-  EXPECT_EQ(refused.error().text().rfind("e.yaml:10: simulation.integrator symplectic does not keep the energy", 0), 0u)
+  EXPECT_EQ(refused.error().text().rfind(
+                "e.yaml:10: simulation.integrator symplectic does not keep the energy", 0),
+            0u)
       << refused.error().text();
   EXPECT_NE(refused.error().text().find("use rk4 with a step or dopri5"), std::string::npos);
-  auto automatic = compile(std::regex_replace(named, std::regex("model: rolling"), "model: auto, stiffness: 1e5, damping: 5"));
+  auto automatic = compile(std::regex_replace(named, std::regex("model: rolling"),
+                                              "model: auto, stiffness: 1e5, damping: 5"));
   EXPECT_FALSE(automatic);
   auto defaulted = compile(std::regex_replace(yaml, std::regex("integrator: rk4, "), ""));
   ASSERT_TRUE(defaulted) << defaulted.error().text();
@@ -398,16 +410,19 @@ TEST(Stability, StepAmplificationIsTheMethodsStabilityFunction) {
   using sim::Integrator;
   for (double x : {0.1, 1.0, 1.9, 2.1, 2.8, 3.0}) {
     const double omega = 50, h = x / omega;
-    EXPECT_NEAR(sim::stepAmplification(Integrator::Euler, omega, 0, h), std::sqrt(1 + x * x), 1e-12);
+    EXPECT_NEAR(sim::stepAmplification(Integrator::Euler, omega, 0, h), std::sqrt(1 + x * x),
+                1e-12);
     const double t = 2 - x * x;
     const double symplectic = x <= 2 ? 1.0 : std::abs(t) / 2 + std::sqrt(t * t / 4 - 1);
-    EXPECT_NEAR(sim::stepAmplification(Integrator::Symplectic, omega, 0, h), symplectic, 1e-12) << x;
+    EXPECT_NEAR(sim::stepAmplification(Integrator::Symplectic, omega, 0, h), symplectic, 1e-12)
+        << x;
     const std::complex<double> z(0, x);
     const double rk4 = std::abs(1.0 + z + z * z / 2.0 + z * z * z / 6.0 + z * z * z * z / 24.0);
     EXPECT_NEAR(sim::stepAmplification(Integrator::Rk4, omega, 0, h), rk4, 1e-12) << x;
   }
   // Damping: explicit Euler's eigenvalues 1 − ζωh ± iωh√(1 − ζ²) have modulus² 1 − 2ζωh + (ωh)².
-  EXPECT_NEAR(sim::stepAmplification(Integrator::Euler, 50, 0.3, 0.01), std::sqrt(1 - 2 * 0.3 * 0.5 + 0.25), 1e-12);
+  EXPECT_NEAR(sim::stepAmplification(Integrator::Euler, 50, 0.3, 0.01),
+              std::sqrt(1 - 2 * 0.3 * 0.5 + 0.25), 1e-12);
   // Tiny steps: a damped oscillator's step never amplifies (the discriminant's rounding once
   // made the pair real and |λ| = 1 + 1e-8 at ωh = 1e-9, refusing every step above 1e-12 s).
   for (double x : {1e-4, 1e-7, 1e-9, 1e-12})

@@ -64,7 +64,8 @@ sim::State stateAt(const sim::Model& model, double t) {
 // Distance between two poses: CM (m, scaled by the body's 0.1 m size) and orientation (the
 // quaternion's chord, dimensionless).
 double poseDistance(const sim::State& a, const sim::State& b) {
-  const double dq = std::min((a.q.coeffs() - b.q.coeffs()).norm(), (a.q.coeffs() + b.q.coeffs()).norm());
+  const double dq =
+      std::min((a.q.coeffs() - b.q.coeffs()).norm(), (a.q.coeffs() + b.q.coeffs()).norm());
   return (a.x_world - b.x_world).norm() / 0.1 + dq;
 }
 
@@ -99,7 +100,8 @@ TEST(Time, ThePoseBetweenStepsConvergesAtFourthOrder) {
   const double t = 1.2345678;  // on no step of any ladder below
   const sim::State reference = stateAt(withStep(spec, "rk4", 1e-3 / 64), t);
   std::vector<double> errors;
-  for (double h : {8e-3, 4e-3, 2e-3}) errors.push_back(poseDistance(stateAt(withStep(spec, "rk4", h), t), reference));
+  for (double h : {8e-3, 4e-3, 2e-3})
+    errors.push_back(poseDistance(stateAt(withStep(spec, "rk4", h), t), reference));
   for (std::size_t i = 0; i + 1 < errors.size(); ++i) {
     EXPECT_GT(errors[i] / errors[i + 1], 10.0) << "h = " << 8e-3 / (1 << i) << ": " << errors[i];
   }
@@ -173,10 +175,11 @@ TEST(Adaptive, RollingEnergyOverSixtySecondsStaysWithinTheToleranceBudget) {
   for (double tol : {1e-8, 1e-10}) {
     const sim::Model model = withTolerance(spec, tol);
     double worst = 0, e0 = 0;
-    const sim::RunSummary summary = runFrom(model, sim::initialState(model), 0.05, [&](const sim::Telemetry& t) {
-      if (t.t == 0) e0 = t.energy;
-      worst = std::max(worst, std::abs(t.energy - e0) / e0);
-    });
+    const sim::RunSummary summary =
+        runFrom(model, sim::initialState(model), 0.05, [&](const sim::Telemetry& t) {
+          if (t.t == 0) e0 = t.energy;
+          worst = std::max(worst, std::abs(t.energy - e0) / e0);
+        });
     EXPECT_FALSE(summary.divergence);
     EXPECT_LT(worst, static_cast<double>(summary.steps) * tol) << "tolerance " << tol;
   }

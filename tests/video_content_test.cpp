@@ -46,10 +46,9 @@ std::vector<render::Image> decodeFrames(const fs::path& path) {
   SwsContext* sws = nullptr;
   auto drain = [&] {
     while (avcodec_receive_frame(decoder, frame) == 0) {
-      sws = sws_getCachedContext(sws, frame->width, frame->height,
-                                 static_cast<AVPixelFormat>(frame->format), frame->width,
-                                 frame->height, AV_PIX_FMT_RGBA, SWS_BICUBIC, nullptr, nullptr,
-                                 nullptr);
+      sws = sws_getCachedContext(
+          sws, frame->width, frame->height, static_cast<AVPixelFormat>(frame->format), frame->width,
+          frame->height, AV_PIX_FMT_RGBA, SWS_BICUBIC, nullptr, nullptr, nullptr);
       const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
       sws_setColorspaceDetails(sws, bt709, 0, bt709, 1, 0, 1 << 16, 1 << 16);
       render::Image image;
@@ -109,8 +108,10 @@ double difference(const render::Image& a, const render::Image& b, Region r = {})
   constexpr int kBlock = 4;
   double sum = 0;
   long count = 0;
-  for (int by = static_cast<int>(a.height * r.y0) / kBlock; by < static_cast<int>(a.height * r.y1) / kBlock; ++by)
-    for (int bx = static_cast<int>(a.width * r.x0) / kBlock; bx < static_cast<int>(a.width * r.x1) / kBlock; ++bx)
+  for (int by = static_cast<int>(a.height * r.y0) / kBlock;
+       by < static_cast<int>(a.height * r.y1) / kBlock; ++by)
+    for (int bx = static_cast<int>(a.width * r.x0) / kBlock;
+         bx < static_cast<int>(a.width * r.x1) / kBlock; ++bx)
       for (int c = 0; c < 3; ++c) {
         int sa = 0, sb = 0;
         for (int y = by * kBlock; y < (by + 1) * kBlock; ++y)
@@ -151,9 +152,11 @@ TEST(VideoContent, FrameKIsTheStillAtItsTime) {
       const double t = k * c.playback / c.fps;
       char time[32];
       std::snprintf(time, sizeof time, "%.9g", t);
-      const double same = difference(frames[k], still("scenes/rattleback.yaml --t " + std::string(time)));
+      const double same =
+          difference(frames[k], still("scenes/rattleback.yaml --t " + std::string(time)));
       std::snprintf(time, sizeof time, "%.9g", t + 1.0 / c.fps);
-      const double next = difference(frames[k], still("scenes/rattleback.yaml --t " + std::string(time)));
+      const double next =
+          difference(frames[k], still("scenes/rattleback.yaml --t " + std::string(time)));
       EXPECT_LT(same, kRoundTrip) << c.fps << " fps, playback " << c.playback << ", frame " << k;
       EXPECT_GT(next, kRoundTrip) << c.fps << " fps, playback " << c.playback << ", frame " << k;
       EXPECT_GT(next, 2 * same) << c.fps << " fps, playback " << c.playback << ", frame " << k;
@@ -175,7 +178,8 @@ TEST(VideoContent, StillTakesTheVideosTimingOptions) {
   const std::vector<render::Image> frames = decodeFrames(mp4);
   ASSERT_EQ(frames.size(), 60u);
   const Region inset{0.68, 0.76, 0.98, 0.97};
-  const double with = difference(frames[45], still("scenes/rattleback.yaml --t 0.75" + timing), inset);
+  const double with =
+      difference(frames[45], still("scenes/rattleback.yaml --t 0.75" + timing), inset);
   const double without = difference(frames[45], still("scenes/rattleback.yaml --t 0.75"), inset);
   EXPECT_LT(with, kRoundTrip);
   EXPECT_GT(without, 2 * kRoundTrip);
@@ -186,9 +190,10 @@ TEST(VideoContent, StillTakesTheVideosTimingOptions) {
 // chroma planes or of R and B would turn one into the other.
 TEST(VideoContent, RedTopAndBlueBottomSurviveTheRoundTrip) {
   const fs::path mp4 = scratch("side.mp4");
-  ASSERT_EQ(rattleback("render scenes/rattleback.yaml -q --duration 0.2 --view side --size 320x180 -o " +
-                       mp4.string()),
-            0);
+  ASSERT_EQ(
+      rattleback("render scenes/rattleback.yaml -q --duration 0.2 --view side --size 320x180 -o " +
+                 mp4.string()),
+      0);
   const std::vector<render::Image> frames = decodeFrames(mp4);
   ASSERT_FALSE(frames.empty());
   long red = 0, blue = 0;
@@ -211,9 +216,11 @@ TEST(VideoContent, RedTopAndBlueBottomSurviveTheRoundTrip) {
 // its own spin (−5 reverses, +5 is the preferred way), not of the other's.
 TEST(VideoContent, BothFilesHoldTheirOwnSpin) {
   const fs::path base = scratch("pair");
-  ASSERT_EQ(rattleback("render scenes/rattleback.yaml -q --both --duration 0.4 --fps 25 --size 320x180 -o " +
-                       base.string()),
-            0);
+  ASSERT_EQ(
+      rattleback(
+          "render scenes/rattleback.yaml -q --both --duration 0.4 --fps 25 --size 320x180 -o " +
+          base.string()),
+      0);
   const auto reversed = decodeFrames(base.string() + "-reversed.mp4");
   const auto preferred = decodeFrames(base.string() + "-preferred.mp4");
   const auto both = decodeFrames(base.string() + "-both.mp4");
@@ -229,8 +236,8 @@ TEST(VideoContent, BothFilesHoldTheirOwnSpin) {
         const int v = both[0].rgba[4 * (static_cast<std::size_t>(y) * both[0].width + x) + c];
         ASSERT_NEAR(v, 48, 12) << "x " << x << ", y " << y;
       }
-  const int beside = both[0].rgba[4 * (static_cast<std::size_t>(kHeight / 2) * both[0].width +
-                                       kWidth - 4)];
+  const int beside =
+      both[0].rgba[4 * (static_cast<std::size_t>(kHeight / 2) * both[0].width + kWidth - 4)];
   EXPECT_GT(beside, 100);
   // At t = 0 the two spins look alike but for their read-outs; a frame later they have
   // turned 11° apart. Compare the last frames with the stills at t = 0.36 s.
@@ -272,8 +279,9 @@ TEST(VideoContent, EveryViewKeepsTheBodyInsideTheFrame) {
         for (int y = 0; y < f.height; ++y)
           if (body(0, y) || body(f.width - 1, y)) touching = static_cast<int>(k);
       }
-      EXPECT_EQ(touching, -1) << scene.name << ", " << view << ": the body touches the border in frame "
-                              << touching << " (" << mp4 << ")";
+      EXPECT_EQ(touching, -1) << scene.name << ", " << view
+                              << ": the body touches the border in frame " << touching << " ("
+                              << mp4 << ")";
     }
   }
 }
@@ -315,7 +323,8 @@ TEST(Still, TransparentColoursAreStraightNotPremultiplied) {
   // At the scene's 1280 × 720, where the spheres' edges are smoothed (small frames draw them
   // hard: tests/render_test.cpp).
   const fs::path png = scratch("straight.png");
-  ASSERT_EQ(rattleback("still scenes/rattleback.yaml --t 1 --transparent -q -o " + png.string()), 0);
+  ASSERT_EQ(rattleback("still scenes/rattleback.yaml --t 1 --transparent -q -o " + png.string()),
+            0);
   render::Image image;
   ASSERT_TRUE(render::readPng(png.string(), image).ok());
   long red_edge = 0, red_above_alpha = 0;
@@ -332,7 +341,9 @@ TEST(Still, TransparentColoursAreStraightNotPremultiplied) {
 TEST(Still, TransparentKeepsOnlyTheBodyAndItsShadow) {
   const render::Image image = still("scenes/rattleback.yaml --t 1 --view above --transparent");
   ASSERT_FALSE(image.rgba.empty());
-  auto at = [&](int x, int y) { return &image.rgba[4 * (static_cast<std::size_t>(y) * image.width + x)]; };
+  auto at = [&](int x, int y) {
+    return &image.rgba[4 * (static_cast<std::size_t>(y) * image.width + x)];
+  };
   for (auto [x, y] : {std::pair{0, 0}, std::pair{kWidth - 1, 0}, std::pair{0, kHeight - 1},
                       std::pair{kWidth - 1, kHeight - 1}, std::pair{kWidth / 10, kHeight / 2}})
     EXPECT_EQ(at(x, y)[3], 0) << x << "," << y;

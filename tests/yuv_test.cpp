@@ -2,8 +2,9 @@
 // BT.709 for 100 % colour bars, every sample of a random picture against the standard's
 // formulas evaluated in double precision, and where the chroma sits; and that frames
 // converted before the encoder encode as those it converts.
-#include <gtest/gtest.h>
+#include "render/yuv.hpp"
 
+#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -16,7 +17,6 @@
 #include <vector>
 
 #include "render/encoder.hpp"
-#include "render/yuv.hpp"
 
 namespace {
 
@@ -40,9 +40,9 @@ render::Image noise(int w, int h, unsigned seed) {
 render::Image flat(int w, int h, int r, int g, int b) {
   render::Image image{w, h, {}};
   for (int i = 0; i < w * h; ++i)
-    image.rgba.insert(image.rgba.end(), {static_cast<unsigned char>(r),
-                                         static_cast<unsigned char>(g),
-                                         static_cast<unsigned char>(b), 255});
+    image.rgba.insert(image.rgba.end(),
+                      {static_cast<unsigned char>(r), static_cast<unsigned char>(g),
+                       static_cast<unsigned char>(b), 255});
   return image;
 }
 
@@ -57,7 +57,9 @@ std::array<double, 3> bt709(double r, double g, double b) {
 
 // 100 % colour bars in 8-bit BT.709 (SMPTE RP 219, the values the standard's formulas round to).
 TEST(Yuv, ColourBarsHaveTheirBt709Values) {
-  struct Bar { int r, g, b, y, cb, cr; };
+  struct Bar {
+    int r, g, b, y, cb, cr;
+  };
   const Bar bars[] = {{255, 255, 255, 235, 128, 128}, {255, 255, 0, 219, 16, 138},
                       {0, 255, 255, 188, 154, 16},    {0, 255, 0, 173, 42, 26},
                       {255, 0, 255, 78, 214, 230},    {255, 0, 0, 63, 102, 240},
@@ -109,7 +111,8 @@ TEST(Yuv, ChromaIsSitedOnTheLeftPixelOfEachPair) {
   const int w = 16, h = 2, edge = 8;
   render::Image image = flat(w, h, 255, 0, 0);
   for (int y = 0; y < h; ++y)
-    for (int x = edge; x < w; ++x) image.rgba[4 * (y * w + x)] = 0, image.rgba[4 * (y * w + x) + 2] = 255;
+    for (int x = edge; x < w; ++x)
+      image.rgba[4 * (y * w + x)] = 0, image.rgba[4 * (y * w + x) + 2] = 255;
   Yuv420 out(w, h);
   render::Yuv420Converter().convert(image, out.planes());
   const auto seam = bt709(0.25 * 255, 0, 0.75 * 255);

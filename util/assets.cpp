@@ -23,10 +23,9 @@ std::string assetsDir() {
   // The installed layout (bin/ → share/rattleback, relative so the prefix can move), the build
   // tree's copy in <build>/share/rattleback beside <build>/app, <build>/tests, …, and for the
   // Python package <build>/python/rattleback or <prefix>/lib/python3/dist-packages/rattleback.
-  const std::filesystem::path candidates[] = {dir / RATTLEBACK_ASSETS_RELATIVE,
-                                              dir / "../share/rattleback",
-                                              dir / "../../share/rattleback",
-                                              dir / "../../../../share/rattleback"};
+  const std::filesystem::path candidates[] = {
+      dir / RATTLEBACK_ASSETS_RELATIVE, dir / "../share/rattleback", dir / "../../share/rattleback",
+      dir / "../../../../share/rattleback"};
   for (const auto& candidate : candidates)
     if (std::filesystem::is_directory(candidate / "shaders", error))
       return candidate.lexically_normal().string();

@@ -11,7 +11,8 @@
 namespace rb {
 
 template <typename E>
-struct NameTable;  // specialise: static constexpr std::array<std::pair<E, std::string_view>, N> entries
+struct NameTable;  // specialise: static constexpr std::array<std::pair<E, std::string_view>, N>
+                   // entries
 
 template <typename E>
 constexpr std::string_view nameOf(E value) {

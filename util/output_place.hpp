@@ -29,8 +29,8 @@ inline OutputPlace outputPlace(const std::string& path) {
     return (s.starts_with("/dev/") || s.starts_with("/proc/")) && fs::exists(p, ec);
   };
   const fs::file_status status = fs::status(path, ec);  // through links
-  if (device(path) || (fs::exists(status) && !fs::is_regular_file(status) &&
-                       !fs::is_directory(status)))
+  if (device(path) ||
+      (fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status)))
     return {path, ""};
   // Follow the links one by one (a relative link is relative to its own folder), so that one
   // to a file not yet made leads to where that file will be.
