@@ -65,14 +65,18 @@ inline void put(YAML::Node node, const KeyPath& path, std::size_t depth, const Y
 
 // A step set on top of a scene (`given`: the keys set, without indices) replaces the scene's
 // tolerance, and a tolerance its step, as --dt and --tolerance do on the command line: a scene
-// has exactly one of them, and one given with the other is left for the loader to refuse.
+// has exactly one of them, and one given with the other is left for the loader to refuse. The
+// scene's integrator goes with what it replaced (rk4 takes no tolerance, dopri5 no step), unless
+// one is given too: the default for the new setting follows, as with the options.
 template <typename Keys>
 void replaceStepSetting(YAML::Node root, const Keys& given) {
   for (const auto& [set, other] :
        {std::pair{"simulation.dt", "tolerance"}, std::pair{"simulation.tolerance", "dt"}}) {
-    if (given.count(set) && !given.count(std::string("simulation.") + other) &&
-        root["simulation"].IsMap())
-      root["simulation"].remove(other);
+    if (!given.count(set) || given.count(std::string("simulation.") + other) ||
+        !root["simulation"].IsMap() || !root["simulation"][other])
+      continue;
+    root["simulation"].remove(other);
+    if (!given.count("simulation.integrator")) root["simulation"].remove("integrator");
   }
 }
 

@@ -145,9 +145,15 @@ Direction preferredDirection(const Model& model, double spin_magnitude) {
   const Linearisation ccw = linearise(model, n), cw = linearise(model, -n);
   const double ccw_fastest = std::max(ccw.roll_growth, ccw.pitch_growth);
   const double cw_fastest = std::max(cw.roll_growth, cw.pitch_growth);
-  // Alike: within 1e-9 of the rates' size (rounding; a dentless body's differ by 1e-16 /s).
+  // Zero: below 1e-6 of the fastest rocking frequency, where the finite-difference Jacobian's
+  // rates are noise (a skewed body without dents, q = 0.05, gave ±3e-11 /s at 40 rad/s and was
+  // called "preferred cw"); a growth that slow would take 1e6 rocking periods to show. Alike:
+  // within 1e-9 of the rates' size (rounding; a dentless body's differ by 1e-16 /s).
+  const double omega = 2 * M_PI * std::max({ccw.roll_hz, ccw.pitch_hz, cw.roll_hz, cw.pitch_hz});
+  const double zero = 1e-6 * omega;
   const double size = std::max({std::abs(ccw_fastest), std::abs(cw_fastest), 1e-12});
-  if ((ccw_fastest <= 0 && cw_fastest <= 0) || std::abs(ccw_fastest - cw_fastest) <= 1e-9 * size)
+  if ((ccw_fastest <= zero && cw_fastest <= zero) ||
+      std::abs(ccw_fastest - cw_fastest) <= std::max(1e-9 * size, zero))
     return Direction::None;
   return ccw_fastest < cw_fastest ? Direction::Ccw : Direction::Cw;
 }
