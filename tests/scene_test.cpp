@@ -325,6 +325,20 @@ TEST(SceneValues, AStepReplacesTheScenesToleranceAndTheOtherWayRound) {
   ASSERT_TRUE(tolerant) << tolerant.error().text();
   EXPECT_EQ(tolerant->spec.simulation.tolerance, 1e-7);
   EXPECT_TRUE(std::isnan(tolerant->spec.simulation.dt));
+  // The scene's integrator goes with the setting it took (a new user's rk4 scene given a
+  // tolerance was refused: "rk4 takes a fixed step"), unless the values name one.
+  const std::string rk4 =
+      adaptive.substr(0, adaptive.find("simulation:")) +
+      "simulation: {integrator: rk4, dt: 1.0e-4, duration: 1.0}\nvideo: {fps: 25}\n";
+  auto to_tolerance =
+      scene::loadWithValues(rk4, "r.yaml", {{"simulation.tolerance", "1.0e-7"}}, "with_values");
+  ASSERT_TRUE(to_tolerance) << to_tolerance.error().text();
+  auto compiled = scene::loadModel(to_tolerance.value());
+  ASSERT_TRUE(compiled) << compiled.error().text();
+  EXPECT_EQ(compiled->integrator, sim::Integrator::Dopri5);
+  auto kept = scene::loadWithValues(rk4, "r.yaml", {{"simulation.dt", "5.0e-5"}}, "with_values");
+  ASSERT_TRUE(kept);
+  EXPECT_EQ(kept->spec.simulation.integrator, "rk4");  // nothing replaced: the integrator stays
   auto both = scene::loadWithValues(
       with_tolerance, "t.yaml", {{"simulation.dt", "2.0e-5"}, {"simulation.tolerance", "1.0e-7"}},
       "with_values");
