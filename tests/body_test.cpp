@@ -160,7 +160,7 @@ PointByPoint walkPointByPoint(const sim::Paraboloid& shape, const std::optional<
 // bottom and dent surfaces awkwardly (spacings that are not fractions of the height).
 TEST(GridWalk, ClosedFormLevelsAreThePointByPointGrid) {
   const sim::Paraboloid shape(0.01, 0.5, 0.0, 0.03, 0.005);
-  const sim::Paraboloid tilted(0.01, 0.5, 0.002, 0.03, 0.006);
+  const sim::Paraboloid tilted(0.01, 0.5, 0.0002, 0.03, 0.006);  // H positive definite: a bowl
   const sim::Dents dents{0.45, 0.0073, 0.045, 0.001};
   // Round numbers whose levels land on the surfaces: the division's guess is one level off
   // in both directions for some of their columns (found by search; 8 + 8 on the bottom, 24 and
