@@ -10,21 +10,6 @@ using namespace testing_support;
 
 namespace {
 
-// The default body without drag (Kane & Levinson's model on the seed's shape): rolling, one
-// reversal near 2.3 s in 4 s.
-const char* kRolling = R"(
-units: {length: 0.01}
-body:
-  shape: paraboloid
-  paraboloid: {a: 1.0, p: 0.5, q: 0.0, s: 0.03, top: 0.5}
-  dents: {scale: 0.45, at: [0.73, 4.50], inset: 0.1}
-  grid: {dx: 0.1, dy: 0.1, dz: 0.1}
-  mass: 0.059
-contact: {model: rolling}
-initial: {spin: -5.0, tilt: [0.5, 0.5]}
-simulation: {integrator: rk4, dt: 2.0e-3, duration: 4.0}
-)";
-
 struct Checked {
   tasks::RunCheck check;
   Recorded run;
@@ -46,7 +31,10 @@ Checked checked(const sim::Model& model, double rate) {
 // next order, h⁵ against h⁴: measured 0.8 % on the reversal and 1.4 % on n(t); 5 % allows for
 // it, and still fails without Richardson's factor 16/15 (a 6.25 % under-estimate).
 TEST(Check, RichardsonEstimatesAFixedStepRunsErrors) {
-  const sim::Model model = build(parse(kRolling));
+  sim::SceneSpec spec = parse(kRolling);  // the default body without drag: one reversal, 2.3 s
+  spec.simulation.dt = 2e-3;
+  spec.simulation.duration = 4;
+  const sim::Model model = build(spec);
   const Checked c = checked(model, 100);
   sim::Model fine = model;
   fine.dt = model.dt / 16;
@@ -69,6 +57,7 @@ TEST(Check, RichardsonEstimatesAFixedStepRunsErrors) {
 // claimed: within a factor 2 either way (measured 0.99).
 TEST(Check, ATighterToleranceEstimatesAnAdaptiveRunsErrors) {
   sim::SceneSpec spec = parse(kRolling);
+  spec.simulation.duration = 4;
   spec.simulation.integrator = "dopri5";
   spec.simulation.tolerance = 1e-6;
   spec.simulation.dt = sim::kUnset;

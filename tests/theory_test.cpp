@@ -448,17 +448,6 @@ simulation: {integrator: rk4, dt: 1.0e-3, duration: 5}
 )"));
   EXPECT_EQ(sim::preferredDirection(model, 5), sim::Direction::None);
   // The default body's dents still give it one (its rates are 0.6 and 1.6 /s).
-  const sim::Model dented = build(parse(R"(
-units: {length: 0.01}
-body:
-  shape: paraboloid
-  paraboloid: {a: 1.0, p: 0.5, q: 0.0, s: 0.03, top: 0.5}
-  dents: {scale: 0.45, at: [0.73, 4.50], inset: 0.1}
-  grid: {dx: 0.1, dy: 0.1, dz: 0.1}
-  mass: 0.059
-contact: {model: rolling}
-initial: {spin: -5, tilt: [0.5, 0.5]}
-simulation: {integrator: rk4, dt: 1.0e-3, duration: 5}
-)"));
+  const sim::Model dented = build(parse(kRolling));
   EXPECT_EQ(sim::preferredDirection(dented, 5), sim::Direction::Ccw);
 }

@@ -15,20 +15,6 @@ using namespace testing_support;
 
 namespace {
 
-/// The default body (scenes/rattleback.yaml) rolling without drag: it reverses at 2.33 s.
-const char* kRolling = R"(
-units: {length: 0.01}
-body:
-  shape: paraboloid
-  paraboloid: {a: 1.0, p: 0.5, q: 0.0, s: 0.03, top: 0.5}
-  dents: {scale: 0.45, at: [0.73, 4.50], inset: 0.1}
-  grid: {dx: 0.05, dy: 0.05, dz: 0.05}
-  mass: 0.059
-contact: {model: rolling}
-initial: {spin: -5.0, tilt: [0.5, 0.5]}
-simulation: {integrator: rk4, dt: 1.0e-3, duration: 3.0}
-)";
-
 /// Kane & Levinson's ellipsoid (scenes/kane-levinson.yaml) without air drag.
 const char* kKaneLevinson = R"(
 body:
