@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "scene/key_path.hpp"
+#include "scene/keys.hpp"
 #include "scene/tree.hpp"
 #include "sim/model.hpp"
 
@@ -29,25 +30,27 @@ std::string join(const std::string& prefix, const std::string& key) {
   return prefix.empty() ? key : prefix + "." + key;
 }
 
-// Reads one YAML map whose keys must be among `allowed`: an unknown or repeated key is
-// rejected before anything else is read. Records the line of every key it sees.
+// Reads one YAML map whose keys must be those scene/keys.cpp lists inside it: an unknown or
+// repeated key is rejected before anything else is read. Records the line of every key it sees.
 class MapReader {
  public:
-  /// `line` is where the map's own key stands (1 for the whole file).
-  MapReader(const YAML::Node& node, std::string path, int line, Loaded& out,
-            std::initializer_list<const char*> allowed)
+  /// `path` is the map's dotted key ("" for the whole file), `line` where it stands (1 for the
+  /// whole file).
+  MapReader(const YAML::Node& node, std::string path, int line, Loaded& out)
       : path_(std::move(path)), line_(line), out_(out) {
     if (!node.IsMap())
       throw Failure{line_, path_.empty() ? "scene" : path_, "must be a map of keys (key: value)"};
+    const std::vector<const Key*> allowed = keysIn(path_);
     std::set<std::string> seen;
     for (const auto& entry : node) {
       const std::string key = entry.first.as<std::string>();
       if (!seen.insert(key).second)
         throw Failure{lineOf(entry.first), join(path_, key), "is given twice"};
-      if (std::find_if(allowed.begin(), allowed.end(),
-                       [&](const char* name) { return key == name; }) == allowed.end()) {
+      if (std::none_of(allowed.begin(), allowed.end(),
+                       [&](const Key* known) { return nameIn(known->path) == key; })) {
         std::string names;
-        for (const char* name : allowed) names += std::string(names.empty() ? "" : ", ") + name;
+        for (const Key* known : allowed)
+          names += (names.empty() ? "" : ", ") + std::string(nameIn(known->path));
         throw Failure{lineOf(entry.first), join(path_, key),
                       "is not a known key (known here: " + names + ")"};
       }
@@ -58,6 +61,15 @@ class MapReader {
   }
 
   bool has(const std::string& key) const { return present_.count(key) > 0; }
+
+  /// Reads a leaf key into the member the table names.
+  void read(const std::string& key, const Field& field) {
+    std::visit(
+        [&](auto member) {
+          if constexpr (!std::is_same_v<decltype(member), std::monostate>) read(key, member(out_));
+        },
+        field);
+  }
 
   void read(const std::string& key, double& value) {
     if (auto node = take(key)) value = number(*node, key);
@@ -97,26 +109,24 @@ class MapReader {
   }
 
   /// A nested map, or nothing when the key is absent.
-  std::optional<MapReader> child(const std::string& key,
-                                 std::initializer_list<const char*> allowed) {
+  std::optional<MapReader> child(const std::string& key) {
     auto node = take(key);
     if (!node) return std::nullopt;
-    return MapReader(*node, join(path_, key), key_lines_.at(key), out_, allowed);
+    return MapReader(*node, join(path_, key), key_lines_.at(key), out_);
   }
 
-  /// `example`, when given, is a line that would do (from docs/scenes.md's complete scene), so that
-  /// the message shows the way out.
-  void require(const std::string& key, const std::string& example = "") const {
-    if (!has(key))
-      throw Failure{line_, join(path_, key),
-                    example.empty() ? "is required"
-                                    : "is required, e.g. " + example +
-                                          " (docs/scenes.md has a complete scene)"};
+  /// The message names the table's line that would do (scene/keys.cpp), so that it shows the
+  /// way out.
+  void require(const Key& key) const {
+    const std::string name(nameIn(key.path));
+    if (!has(name)) throw Failure{line_, join(path_, name), requiredMessage(key)};
   }
 
   [[noreturn]] void fail(const std::string& key, const std::string& message) const {
     throw Failure{key_lines_.at(key), join(path_, key), message};
   }
+
+  const std::string& path() const { return path_; }
 
  private:
   std::optional<YAML::Node> take(const std::string& key) {
@@ -150,119 +160,33 @@ class MapReader {
   std::map<std::string, int> key_lines_;
 };
 
-// Reads one section whose keys must be among `allowed`. A missing optional section keeps the
-// spec's defaults.
-template <typename Fill>
-void section(MapReader& parent, const std::string& key, std::initializer_list<const char*> allowed,
-             Fill fill) {
-  if (auto reader = parent.child(key, allowed)) fill(*reader);
+// Checks one key of a map: a key of the other shape is refused, a missing required key is
+// named with the line that would do (scene/keys.cpp); a leaf's value goes to its member.
+void checkKey(MapReader& reader, const Key& key, Loaded& out) {
+  const std::string name(nameIn(key.path));
+  if (reader.has(name) && !belongsTo(key, out.spec.body))
+    reader.fail(name, key.shape == Shape::Ellipsoid ? "belongs to shape: ellipsoid"
+                                                    : "belongs to shape: paraboloid");
+  if (requiredIn(key, out.spec)) reader.require(key);
+  reader.read(name, key.field);
 }
 
-void readBody(MapReader& root, sim::BodySpec& b) {
-  root.require("body");
-  section(
-      root, "body",
-      {"shape", "paraboloid", "dents", "grid", "mass_properties", "mass", "ellipsoid", "inertia"},
-      [&](MapReader& r) {
-        r.read("shape", b.shape);
-        r.require("mass", "mass: 0.059 (kg)");
-        r.read("mass", b.mass);
-        // Each shape has its own keys; a key of the other shape is an error, not ignored.
-        const bool ellipsoid = b.shape == "ellipsoid";
-        for (const char* key : {"mass_properties", "paraboloid", "dents", "grid"})
-          if (ellipsoid && r.has(key)) r.fail(key, "belongs to shape: paraboloid");
-        r.read("mass_properties", b.mass_properties);
-        for (const char* key : {"ellipsoid", "inertia"})
-          if (!ellipsoid && r.has(key)) r.fail(key, "belongs to shape: ellipsoid");
-        if (ellipsoid) {
-          r.require("ellipsoid",
-                    "ellipsoid: {semi_axes: [0.03, 0.20, 0.02], center: [0, 0, 0.01]}");
-          r.require(
-              "inertia",
-              "inertia: [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] (kg m², about the CM)");
-          r.read("inertia", b.inertia);
-        } else {
-          r.require("paraboloid", "paraboloid: {a: 1.0, p: 0.5, q: 0.0, s: 0.03, top: 0.5}");
-          r.require("grid", "grid: {dx: 0.05, dy: 0.05, dz: 0.05}");
-        }
-        section(r, "ellipsoid", {"semi_axes", "center"}, [&](MapReader& e) {
-          e.require("semi_axes");
-          e.read("semi_axes", b.ellipsoid.semi_axes);
-          e.read("center", b.ellipsoid.center);
-        });
-        section(r, "paraboloid", {"a", "p", "q", "s", "top"}, [&](MapReader& p) {
-          for (const char* key : {"a", "p", "s", "top"}) p.require(key);
-          p.read("a", b.paraboloid.a);
-          p.read("p", b.paraboloid.p);
-          p.read("q", b.paraboloid.q);
-          p.read("s", b.paraboloid.s);
-          p.read("top", b.paraboloid.top);
-        });
-        section(r, "dents", {"scale", "at", "inset"}, [&](MapReader& d) {
-          d.require("scale");
-          d.require("at");
-          b.dents.emplace();
-          d.read("scale", b.dents->scale);
-          d.read("at", b.dents->at);
-          d.read("inset", b.dents->inset);
-        });
-        section(r, "grid", {"dx", "dy", "dz"}, [&](MapReader& g) {
-          for (const char* key : {"dx", "dy", "dz"}) g.require(key);
-          g.read("dx", b.grid.dx);
-          g.read("dy", b.grid.dy);
-          g.read("dz", b.grid.dz);
-        });
-      });
-}
-
-void readContact(MapReader& root, sim::ContactSpec& c) {
-  root.require("contact");
-  section(
-      root, "contact",
-      {"model", "stiffness", "damping", "friction", "friction_law", "slip_velocity", "air_drag"},
-      [&](MapReader& r) {
-        r.read("model", c.model);
-        // A misspelt model is reported as such (by the check after loading), not as a missing
-        // stiffness.
-        const auto model = rb::parseName<sim::ContactModel>(c.model);
-        if (model && *model != sim::ContactModel::Rolling)
-          r.require("stiffness", "stiffness: 2.0e4 (N/m), or model: rolling, which needs none");
-        r.read("stiffness", c.stiffness);
-        r.read("damping", c.damping);
-        r.read("friction", c.friction);
-        r.read("friction_law", c.friction_law);
-        r.read("slip_velocity", c.slip_velocity);
-        r.read("air_drag", c.air_drag);
-      });
-}
-
-void readRest(MapReader& root, sim::SceneSpec& s) {
-  section(root, "units", {"length"}, [&](MapReader& r) { r.read("length", s.units.length); });
-  root.read("gravity", s.gravity);
-  section(root, "initial", {"spin", "tilt", "height"}, [&](MapReader& r) {
-    r.read("spin", s.initial.spin);
-    r.read("tilt", s.initial.tilt);
-    r.read("height", s.initial.height);
-  });
-  root.require("simulation");
-  section(root, "simulation", {"integrator", "dt", "tolerance", "duration"}, [&](MapReader& r) {
-    r.require("duration", "duration: 8.0 (s)");
-    r.read("integrator", s.simulation.integrator);
-    r.read("dt", s.simulation.dt);
-    r.read("tolerance", s.simulation.tolerance);
-    r.read("duration", s.simulation.duration);
-  });
-}
-
-// The video section's keys and types (a malformed file is malformed for every command); its
-// values are checked only by the commands that draw.
-void readVideo(MapReader& root, VideoSpec& v) {
-  section(root, "video", {"fps", "size", "view", "playback"}, [&](MapReader& r) {
-    r.read("fps", v.fps);
-    r.read("size", v.size);
-    r.read("view", v.view);
-    r.read("playback", v.playback);
-  });
+// Reads one map in the table's order: its plain keys first, then whether its nested maps may and
+// must be there, then the nested maps that are given, the same way. A missing optional key or
+// map keeps the spec's default. The words other keys depend on (body.shape, contact.model) come
+// first in their maps, so they are read before they are asked.
+void readKeys(MapReader& reader, Loaded& out) {
+  const std::vector<const Key*> inside = keysIn(reader.path());
+  for (const bool maps : {false, true})
+    for (const Key* key : inside)
+      if (isMap(*key) == maps) checkKey(reader, *key, out);
+  for (const Key* key : inside) {
+    if (!isMap(*key)) continue;
+    if (auto child = reader.child(std::string(nameIn(key->path)))) {
+      if (key->given) key->given(out);
+      readKeys(*child, out);
+    }
+  }
 }
 
 // One line, whatever the file holds: control characters (a newline in a quoted key, a NUL
@@ -321,12 +245,8 @@ rb::Result<Loaded> loadTree(const YAML::Node& root_node, const std::string& name
       return rb::Error{"", printable(name) +
                                ":1: the scene is empty; expected keys such as "
                                "body, contact, simulation"};
-    MapReader root(root_node, "", 1, out,
-                   {"units", "body", "contact", "gravity", "initial", "simulation", "video"});
-    readBody(root, out.spec.body);
-    readContact(root, out.spec.contact);
-    readRest(root, out.spec);
-    readVideo(root, out.video);
+    MapReader root(root_node, "", 1, out);
+    readKeys(root, out);
   } catch (const Failure& f) {
     // A key set from elsewhere (a sweep's axis) is named where it was set.
     for (const auto& [key, place] : places)
