@@ -1,0 +1,264 @@
+// The table of scene keys (scene/keys.cpp) is what the loader accepts, no more and no less:
+// every key in it loads into its own member, takes the default the reference page shows when
+// left out, is required exactly when the table says (with the table's example in the message),
+// belongs to the shape it says, and takes exactly its choices; every map refuses any other key,
+// naming the table's keys. docs/scene-reference.md is generated from the same table
+// (Docs.SceneReferenceIsTheLoadersTable checks that the committed page is current).
+#include <gtest/gtest.h>
+
+#include <charconv>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "media/video_plan.hpp"
+#include "scene/keys.hpp"
+
+namespace {
+
+// Whether `path` or a map it sits in is left out, or belongs to the other shape than `shape`
+// (unless it is under `also`, which is written whatever the shape).
+bool excluded(const std::string& path, const std::string& shape,
+              const std::set<std::string>& leave_out, const std::string& also) {
+  for (std::size_t end = path.find('.');; end = path.find('.', end + 1)) {
+    const std::string prefix = path.substr(0, end);
+    if (leave_out.count(prefix)) return true;
+    const scene::Key* key = scene::findKey(prefix);
+    const bool other = key->shape != scene::Shape::Any &&
+                       (key->shape == scene::Shape::Ellipsoid) != (shape == "ellipsoid");
+    if (other && prefix != also) return true;
+    if (end == std::string::npos) return false;
+  }
+}
+
+// A complete scene written from the table's samples (block YAML, one key a line): every key
+// of a `shape` body but those left out (and what they hold), with `values` in place of the
+// samples. The samples give simulation.dt; simulation.tolerance is written when dt is left out.
+std::string sampleScene(const std::string& shape, const std::set<std::string>& leave_out = {},
+                        const std::map<std::string, std::string>& values = {},
+                        const std::string& also = "") {
+  std::string yaml;
+  std::vector<std::string> open;  // the maps written along the current key's path
+  for (const scene::Key& key : scene::keys()) {
+    const std::string path(key.path);
+    if (scene::isMap(key) || excluded(path, shape, leave_out, also)) continue;
+    if (path == "simulation.tolerance" && !leave_out.count("simulation.dt")) continue;
+    std::vector<std::string> parts;
+    for (std::size_t start = 0, dot = 0; dot != std::string::npos; start = dot + 1) {
+      dot = path.find('.', start);
+      parts.push_back(path.substr(start, dot == std::string::npos ? dot : dot - start));
+    }
+    std::string prefix;
+    for (std::size_t depth = 0; depth + 1 < parts.size(); ++depth) {
+      prefix += (depth ? "." : "") + parts[depth];
+      if (open.size() > depth && open[depth] == prefix) continue;
+      open.resize(depth);
+      open.push_back(prefix);
+      yaml += std::string(2 * depth, ' ') + parts[depth] + ":\n";
+    }
+    open.resize(parts.size() - 1);
+    const std::string value = values.count(path)     ? values.at(path)
+                              : path == "body.shape" ? shape
+                                                     : std::string(key.sample);
+    yaml += std::string(2 * (parts.size() - 1), ' ') + parts.back() + ": " + value + "\n";
+  }
+  return yaml;
+}
+
+// YAML flow text with each number as its shortest round-trip text and no spaces: "[0.73, 4.50]"
+// and "[0.73, 4.5]" read the same.
+std::string normal(const std::string& yaml) {
+  std::string out;
+  for (std::size_t i = 0; i < yaml.size();) {
+    if (std::string("+-.0123456789").find(yaml[i]) != std::string::npos) {
+      char* end = nullptr;
+      const double v = std::strtod(yaml.c_str() + i, &end);
+      char text[32];
+      out.append(text, std::to_chars(text, text + sizeof text, v).ptr);
+      i = end - yaml.c_str();
+    } else {
+      if (yaml[i] != ' ') out += yaml[i];
+      ++i;
+    }
+  }
+  return out;
+}
+
+// The first error of a scene through loading, compiling and planning its video, or "".
+std::string errorOf(const std::string& yaml) {
+  auto loaded = scene::loadString(yaml, "inline.yaml");
+  if (!loaded) return loaded.error().text();
+  auto model = scene::loadModel(loaded.value());
+  if (!model) return model.error().text();
+  auto plan = media::planVideo(loaded.value(), model->duration);
+  if (!plan) return plan.error().text();
+  return "";
+}
+
+bool endsWith(const std::string& text, const std::string& end) {
+  return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
+}
+
+std::string shapeOf(const scene::Key& key) {
+  return key.shape == scene::Shape::Ellipsoid || key.need == scene::Need::Ellipsoid ||
+                 key.path.starts_with("body.ellipsoid")
+             ? "ellipsoid"
+             : "paraboloid";
+}
+
+}  // namespace
+
+// Every leaf key set to its sample, in a scene of each shape and with either step setting: the
+// scene loads, compiles and plans its video, and each key's member holds its own sample (the
+// samples differ from the defaults and from each other where a mix-up could hide).
+TEST(SceneKeys, EveryKeyLoadsItsValueIntoItsOwnMember) {
+  for (const std::string shape : {"paraboloid", "ellipsoid"})
+    for (const bool adaptive : {false, true}) {
+      const std::set<std::string> leave_out =
+          adaptive ? std::set<std::string>{"simulation.dt", "simulation.integrator"}
+                   : std::set<std::string>{};
+      const std::string yaml = sampleScene(shape, leave_out);
+      ASSERT_EQ(errorOf(yaml), "") << yaml;
+      auto loaded = scene::loadString(yaml, "inline.yaml");
+      int checked = 0;
+      for (const scene::Key& key : scene::keys()) {
+        const std::string path(key.path);
+        if (scene::isMap(key) || excluded(path, shape, leave_out, "") ||
+            (path == "simulation.tolerance" && !adaptive))
+          continue;
+        const std::string sample = path == "body.shape" ? shape : std::string(key.sample);
+        EXPECT_EQ(normal(scene::valueOf(key, loaded.value())), normal(sample)) << path;
+        ++checked;
+      }
+      EXPECT_GE(checked, 20);
+    }
+}
+
+// A key that is not required, left out of a complete scene: the scene loads, and the member
+// holds the default the reference page shows (or the key's note says what is chosen).
+TEST(SceneKeys, AnOptionalKeyLeftOutHoldsTheDocumentedDefault) {
+  for (const scene::Key& key : scene::keys()) {
+    const std::string path(key.path);
+    if (key.need != scene::Need::Optional || path == "simulation.dt" ||
+        path == "simulation.tolerance")  // exactly one of them: see the next test
+      continue;
+    auto loaded = scene::loadString(sampleScene(shapeOf(key), {path}), "inline.yaml");
+    ASSERT_TRUE(loaded) << path << ": " << loaded.error().text();
+    if (scene::isMap(key) || !key.default_note.empty()) continue;
+    EXPECT_NE(scene::defaultOf(key), "") << path;
+    EXPECT_EQ(scene::valueOf(key, loaded.value()), scene::defaultOf(key)) << path;
+  }
+  // The step settings: one of the two, and the scene runs with either.
+  EXPECT_EQ(errorOf(sampleScene("paraboloid", {"simulation.dt", "simulation.integrator"})), "");
+  EXPECT_NE(errorOf(sampleScene("paraboloid", {"simulation.dt", "simulation.tolerance"})), "");
+}
+
+// A required key left out: refused with the loader's one line, naming the key and, where the
+// table has one, the line that would do. A key required only unless rolling may be left out
+// with rolling.
+TEST(SceneKeys, ARequiredKeyLeftOutIsNamedWithTheTablesExample) {
+  int checked = 0;
+  for (const scene::Key& key : scene::keys()) {
+    if (key.need == scene::Need::Optional) continue;
+    const std::string path(key.path);
+    const std::map<std::string, std::string> points{{"contact.model", "points"}};
+    auto loaded = scene::loadString(
+        sampleScene(
+            shapeOf(key), {path},
+            key.need == scene::Need::UnlessRolling ? points : std::map<std::string, std::string>{}),
+        "inline.yaml");
+    ASSERT_FALSE(loaded) << path << " left out loads";
+    EXPECT_TRUE(endsWith(loaded.error().text(), ": " + path + " " + scene::requiredMessage(key)))
+        << loaded.error().text();
+    if (key.need == scene::Need::UnlessRolling) {
+      EXPECT_TRUE(scene::loadString(
+          sampleScene("paraboloid", {path}, {{"contact.model", "rolling"}}), "inline.yaml"));
+    }
+    ++checked;
+  }
+  EXPECT_GE(checked, 20);
+}
+
+// A key of the other shape's body is refused, whole maps and single keys alike.
+TEST(SceneKeys, AKeyOfTheOtherShapeIsRefused) {
+  int checked = 0;
+  for (const scene::Key& key : scene::keys()) {
+    const std::string path(key.path);
+    if (key.shape == scene::Shape::Any) continue;
+    const bool paraboloid = key.shape == scene::Shape::Paraboloid;
+    auto loaded = scene::loadString(
+        sampleScene(paraboloid ? "ellipsoid" : "paraboloid", {}, {}, path), "inline.yaml");
+    ASSERT_FALSE(loaded) << path;
+    EXPECT_TRUE(endsWith(loaded.error().text(), ": " + path + " belongs to shape: " +
+                                                    (paraboloid ? "paraboloid" : "ellipsoid")))
+        << loaded.error().text();
+    ++checked;
+  }
+  EXPECT_EQ(checked, 6);  // paraboloid, dents, grid, mass_properties; ellipsoid, inertia
+}
+
+// Every map (and the top level) refuses a key the table does not list, and names the ones it
+// does, in the table's order.
+TEST(SceneKeys, EveryMapRefusesAnUnknownKeyNamingTheTablesKeys) {
+  std::vector<std::string> maps{""};
+  for (const scene::Key& key : scene::keys())
+    if (scene::isMap(key)) maps.emplace_back(key.path);
+  for (const std::string& map : maps) {
+    std::string known;
+    for (const scene::Key* key : scene::keysIn(map))
+      known += (known.empty() ? "" : ", ") + std::string(scene::nameIn(key->path));
+    const std::string unknown = map.empty() ? "zzz" : map + ".zzz";
+    const scene::Key* key = scene::findKey(map);
+    auto loaded = scene::loadWithValues(sampleScene(key ? shapeOf(*key) : "paraboloid"),
+                                        "inline.yaml", {{unknown, "1"}}, "with_values");
+    ASSERT_FALSE(loaded) << unknown;
+    EXPECT_EQ(loaded.error().text(),
+              "with_values: " + unknown + " is not a known key (known here: " + known + ")");
+  }
+  EXPECT_EQ(maps.size(), 11u);  // the top level, units, body and its four, contact, … video
+}
+
+// A word takes each of its choices (the name table its checker reads) and nothing else: an
+// unknown word is refused with a message that lists every choice.
+TEST(SceneKeys, AWordTakesEachOfItsChoicesAndNoOther) {
+  for (const scene::Key& key : scene::keys()) {
+    if (!key.choices) continue;
+    const std::string path(key.path);
+    EXPECT_EQ(scene::typeOf(key), "word") << path;
+    for (std::string_view name : key.choices()) {
+      const std::string word(name);
+      // dopri5 takes a tolerance and the others a step; an ellipsoid its own keys.
+      const std::set<std::string> leave_out =
+          word == "dopri5" ? std::set<std::string>{"simulation.dt"} : std::set<std::string>{};
+      const std::string yaml =
+          sampleScene(path == "body.shape" ? word : shapeOf(key), leave_out, {{path, word}});
+      auto loaded = scene::loadString(yaml, "inline.yaml");
+      ASSERT_TRUE(loaded) << path << ": " << word << ": " << loaded.error().text();
+      EXPECT_EQ(scene::valueOf(key, loaded.value()), word);
+      // Another key may object to the combination (rolling with a height), never this one.
+      EXPECT_EQ(errorOf(yaml).find(path + " must be"), std::string::npos) << errorOf(yaml);
+    }
+    const std::string refused = errorOf(sampleScene(shapeOf(key), {}, {{path, "zzz"}}));
+    EXPECT_NE(refused.find(path + " must be"), std::string::npos) << refused;
+    for (std::string_view name : key.choices())
+      EXPECT_NE(refused.find(std::string(name)), std::string::npos) << refused;
+  }
+}
+
+// The complete scene that docs/scenes.md shows loads, and names every key of the table (as a
+// key or, for the other shape's and the other step's, in a comment).
+TEST(SceneKeys, TheDocsCompleteSceneLoadsAndNamesEveryKey) {
+  std::ifstream in(RATTLEBACK_SOURCE_DIR "/docs/scenes.md");
+  std::stringstream page;
+  page << in.rdbuf();
+  const std::string text = page.str();
+  const auto heading = text.find("## A complete scene");
+  ASSERT_NE(heading, std::string::npos);
+  const auto start = text.find("```yaml\n", heading) + 8;
+  const std::string yaml = text.substr(start, text.find("```", start) - start);
+  EXPECT_EQ(errorOf(yaml), "") << yaml;
+  for (const scene::Key& key : scene::keys())
+    EXPECT_NE(yaml.find(std::string(scene::nameIn(key.path)) + ":"), std::string::npos) << key.path;
+}
