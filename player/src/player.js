@@ -134,13 +134,16 @@ void main() {
 }`;
 
 // ---------------------------------------------------------------------------------------------
-// Style: injected once, so that the page needs no CSS of its own.
+// Style: injected once, so that the page needs no CSS of its own. The canvas's stage has square
+// corners and clips nothing: with rounded corners (border-radius, overflow: hidden) Chromium
+// composites the canvas through a masked layer of its own, which doubled the cost of each frame
+// on software WebGL (bench/player_speed.py).
 
 const STYLE = `
 .rbp{display:flex;flex-wrap:wrap;gap:10px;align-items:flex-start;font:14px/1.35 system-ui,-apple-system,"Segoe UI",sans-serif;color:#1e1e1e;outline:none;margin:8px 0}
 .rbp:focus-visible{box-shadow:0 0 0 2px #6b8fd6;border-radius:4px}
 .rbp-main{flex:1 1 480px;min-width:280px;max-width:100%}
-.rbp-stage{position:relative;width:100%;aspect-ratio:16/9;background:#eef0f5;border:1px solid #c9ccd4;border-radius:4px;overflow:hidden}
+.rbp-stage{position:relative;width:100%;aspect-ratio:16/9;background:#eef0f5;border:1px solid #c9ccd4}
 .rbp-stage canvas{display:block;width:100%;height:100%;touch-action:none;cursor:grab}
 .rbp-stage.rbp-fixed{aspect-ratio:auto;width:auto}
 .rbp-bar,.rbp-views{display:flex;flex-wrap:wrap;gap:4px;align-items:center;margin-top:6px}
@@ -153,7 +156,11 @@ const STYLE = `
 .rbp-side{flex:0 0 270px;max-width:100%}
 .rbp-title{font-weight:600;margin-bottom:4px;word-break:break-word}
 .rbp-read{font:13px/1.5 ui-monospace,"DejaVu Sans Mono",Menlo,Consolas,monospace;white-space:pre}
-.rbp-plot{display:block;width:270px;height:130px;margin-top:6px;border:1px solid #c9ccd4;border-radius:3px;background:#fff;cursor:crosshair}
+.rbp-plotbox{position:relative;width:272px;margin-top:6px}
+.rbp-plot{display:block;width:270px;height:130px;border:1px solid #c9ccd4;border-radius:3px;background:#fff;cursor:crosshair}
+.rbp-cursor,.rbp-dot{position:absolute;left:0;top:0;background:#d0211a;pointer-events:none;will-change:transform}
+.rbp-cursor{width:1.5px}
+.rbp-dot{width:6px;height:6px;border-radius:50%}
 .rbp-help{font-size:12px;color:#666;margin-top:6px}
 .rbp-missing{padding:10px 12px;border:1px dashed #c9a0a0;border-radius:4px;color:#7a2e2e;background:#fbf4f4;font:14px system-ui,sans-serif;margin:8px 0}
 `;
@@ -239,6 +246,9 @@ function bodyGeometry(run) {
     spacing,
     reach: run.reach > 0 ? +run.reach : reach,
     halfExtent,
+    // The box holding every drawn sphere, body frame (for the part of the picture to redraw).
+    low: low.map((v) => v - r),
+    high: high.map((v) => v + r),
     middleHeight: 0.5 * (high[2] + low[2]),
     footprintHalf: [halfExtent[0], halfExtent[1]],
   };
@@ -267,6 +277,16 @@ class Player {
     this.frameTimes = []; // intervals between consecutive drawn animation frames, ms
     this.renderTimes = []; // CPU time of renderer.render, ms
     this.lastFrameAt = null;
+    this.drawnKey = new Float64Array(36); // the camera and canvas of the last frame drawn
+    this.drawnCamera = null;
+    this.bodyDrawnAt = null; // where the body and its shadow were in the last frame drawn
+    this.redrawAll = true; // the next frame is drawn whole
+    this.alwaysAll = false; // every frame is drawn whole (to compare, measure)
+    this.partialFrames = 0;
+    this.drawnFrames = 0;
+    this.scratch = new Vector3();
+    this.axis = new Vector3();
+    this.forward = new Vector3();
     this.spinNow = run.spin[0];
     this.qa = new Quaternion();
     this.qb = new Quaternion();
@@ -347,9 +367,14 @@ class Player {
     this.readSpin = el('div', 'rbp-read rbp-spin');
     this.readSense = el('div', 'rbp-read rbp-sense');
     side.append(this.readTime, this.readSpin, this.readSense);
+    // The plot is drawn once; the cursor on it is two elements moved over it (no redrawing).
+    const plotBox = el('div', 'rbp-plotbox');
     this.plot = el('canvas', 'rbp-plot');
     this.plot.title = 'spin n(t); click to seek';
-    side.appendChild(this.plot);
+    this.cursorLine = el('div', 'rbp-cursor');
+    this.cursorDot = el('div', 'rbp-dot');
+    plotBox.append(this.plot, this.cursorLine, this.cursorDot);
+    side.appendChild(plotBox);
     const nrev = (this.run.reversals || []).length;
     side.appendChild(el('div', 'rbp-help',
       `${nrev} reversal${nrev === 1 ? '' : 's'} (orange). Drag: orbit, right-drag: pan, wheel: zoom. ` +
@@ -362,13 +387,27 @@ class Player {
   // --- three.js scene ----------------------------------------------------------------------
   buildScene() {
     const run = this.run;
-    this.renderer = new WebGLRenderer({
-      canvas: this.canvas,
+    // The context is made here, not by three.js, which always asks for an alpha channel: an
+    // opaque canvas (alpha: false) lets Chromium draw it over nothing and skip what is under
+    // it, instead of blending it over the page each frame (on software WebGL that halved the
+    // cost of a frame on the report page; bench/player_speed.py).
+    const attributes = {
+      alpha: false,
+      depth: true,
+      stencil: false,
       antialias: false, // the spheres and the checker smooth their own edges: cheaper
-      preserveDrawingBuffer: true,
+      premultipliedAlpha: true,
+      preserveDrawingBuffer: true, // kept between frames: render() redraws only what changed
       powerPreference: 'low-power',
-    });
+    };
+    const context = this.canvas.getContext('webgl2', attributes);
+    if (!context) throw new Error('WebGL 2 is unavailable');
+    this.renderer = new WebGLRenderer({ canvas: this.canvas, context, ...attributes });
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
+    this.canvas.addEventListener('webglcontextrestored', () => {
+      this.redrawAll = true;
+      this.dirty = true;
+    });
     this.scene = new Scene();
     this.scene.background = new Color().setRGB(...BACKGROUND, SRGBColorSpace);
     const body = bodyGeometry(run);
@@ -639,7 +678,7 @@ class Player {
     // The floor's contact shadow follows the body.
     const u = this.floorMaterial.uniforms;
     u.shadowCenter.value.set(this.points.position.x, this.points.position.y);
-    const axis = new Vector3(0, 1, 0).applyQuaternion(this.points.quaternion);
+    const axis = this.axis.set(0, 1, 0).applyQuaternion(this.points.quaternion);
     const norm = Math.hypot(axis.x, axis.y);
     if (norm > 1e-6) u.shadowAxis.value.set(axis.x / norm, axis.y / norm); else u.shadowAxis.value.set(0, 1);
     if (this.viewName === 'follow') this.placeChase();
@@ -708,112 +747,123 @@ class Player {
   }
 
   // --- read-outs and the n(t) plot ------------------------------------------------------------
+  // The read-outs, the slider and the plot's cursor at the current time; each element is written
+  // only when what it shows changes (a write costs the page a style, layout and paint pass).
   updateReadouts() {
     const t = this.time;
     const spin = Math.abs(this.spinNow) < 0.005 ? 0 : this.spinNow;
-    this.readTime.textContent = `t = ${t.toFixed(2).padStart(6)} s`;
     const signed = (spin >= 0 ? '+' : '-') + Math.abs(spin).toFixed(2);
-    this.readSpin.textContent = `spin n = ${signed.padStart(6)} rad/s`;
-    this.readSense.textContent = spin > 0.05 ? '(counter-clockwise)' : spin < -0.05 ? '(clockwise)' : '\u00a0';
+    this.show(this.readTime, `t = ${t.toFixed(2).padStart(6)} s`);
+    this.show(this.readSpin, `spin n = ${signed.padStart(6)} rad/s`);
+    this.show(this.readSense, spin > 0.05 ? '(counter-clockwise)' : spin < -0.05 ? '(clockwise)' : '\u00a0');
     if (document.activeElement !== this.slider || !this.sliderDragging) this.slider.value = String(t);
-    this.drawPlot();
+    this.moveCursor();
+  }
+
+  show(element, text) {
+    if (element.rbText !== text) {
+      element.textContent = text;
+      element.rbText = text;
+    }
   }
 
   plotLayout() {
     const dpr = Math.min(window.devicePixelRatio || 1, 2);
+    if (this.layout && this.layout.dpr === dpr) return this.layout;
     const w = 270, h = 130;
-    if (this.plot.width !== Math.round(w * dpr)) {
-      this.plot.width = Math.round(w * dpr);
-      this.plot.height = Math.round(h * dpr);
-      this.plotCurve = null;
-    }
+    this.plot.width = Math.round(w * dpr);
+    this.plot.height = Math.round(h * dpr);
+    this.plotDrawn = null;
     let m = 0;
     for (const v of this.run.spin) m = Math.max(m, Math.abs(v));
     m = m > 0 ? 1.1 * m : 1;
     const box = { left: 34, right: w - 8, top: 8, bottom: h - 20 };
     const span = this.tEnd - this.t0 || 1;
-    return {
+    this.layout = {
       dpr, w, h, m, box,
       x: (t) => box.left + ((t - this.t0) / span) * (box.right - box.left),
       y: (n) => box.top + ((m - n) / (2 * m)) * (box.bottom - box.top),
       tAt: (px) => this.t0 + ((px - box.left) / (box.right - box.left)) * span,
     };
+    return this.layout;
   }
 
+  // The cursor at the current time: a line across the plot and a dot on the curve, moved (CSS
+  // transforms, whole 0.1 px) over the plot drawn once. The plot's border is 1 px.
+  moveCursor() {
+    const L = this.plotLayout();
+    if (!this.plotDrawn) this.drawPlot();
+    const x = Math.round(10 * (1 + L.x(this.time))) / 10;
+    const y = Math.round(10 * (1 + L.y(this.spinNow))) / 10;
+    if (x === this.cursorX && y === this.cursorY) return;
+    if (this.cursorX === undefined) {
+      this.cursorLine.style.top = `${1 + L.box.top}px`;
+      this.cursorLine.style.height = `${L.box.bottom - L.box.top}px`;
+    }
+    this.cursorX = x;
+    this.cursorY = y;
+    this.cursorLine.style.transform = `translate(${x - 0.75}px,0)`;
+    this.cursorDot.style.transform = `translate(${x - 3}px,${y - 3}px)`;
+  }
+
+  // The plot without its cursor, drawn once.
   drawPlot() {
     const L = this.plotLayout();
     const g = this.plot.getContext('2d');
-    if (!this.plotCurve) {
-      // The static part, drawn once and kept.
-      g.setTransform(L.dpr, 0, 0, L.dpr, 0, 0);
-      g.clearRect(0, 0, L.w, L.h);
-      g.fillStyle = '#fff';
-      g.fillRect(0, 0, L.w, L.h);
-      const { box } = L;
-      g.strokeStyle = '#bbb';
-      g.lineWidth = 1;
-      g.strokeRect(box.left, box.top, box.right - box.left, box.bottom - box.top);
-      g.beginPath();
-      g.moveTo(box.left, L.y(0));
-      g.lineTo(box.right, L.y(0));
-      g.stroke();
-      // Reversals: dashed orange lines.
-      g.strokeStyle = '#e08a00';
-      g.setLineDash([3, 3]);
-      for (const tr of this.run.reversals || []) {
-        g.beginPath();
-        g.moveTo(L.x(tr), box.top);
-        g.lineTo(L.x(tr), box.bottom);
-        g.stroke();
-      }
-      g.setLineDash([]);
-      g.strokeStyle = '#2a2a2a';
-      g.lineWidth = 1.3;
-      g.beginPath();
-      const { t, spin } = this.run;
-      const every = Math.max(1, Math.floor(this.n / 600));
-      for (let i = 0; i < this.n; i += every) {
-        if (i === 0) g.moveTo(L.x(t[i]), L.y(spin[i])); else g.lineTo(L.x(t[i]), L.y(spin[i]));
-      }
-      g.lineTo(L.x(t[this.n - 1]), L.y(spin[this.n - 1]));
-      g.stroke();
-      g.fillStyle = '#e08a00';
-      for (const tr of this.run.reversals || []) {
-        g.beginPath();
-        g.arc(L.x(tr), L.y(0), 3, 0, 2 * Math.PI);
-        g.fill();
-      }
-      g.fillStyle = '#444';
-      g.font = '10px system-ui,sans-serif';
-      g.textAlign = 'right';
-      g.textBaseline = 'middle';
-      const label = (v) => (Math.abs(v) >= 10 ? v.toFixed(0) : v.toFixed(1));
-      g.fillText(`+${label(L.m / 1.1)}`, box.left - 3, L.y(L.m / 1.1));
-      g.fillText('0', box.left - 3, L.y(0));
-      g.fillText(`−${label(L.m / 1.1)}`, box.left - 3, L.y(-L.m / 1.1));
-      g.textBaseline = 'top';
-      g.textAlign = 'left';
-      g.fillText(`${this.t0.toFixed(0)} s`, box.left, box.bottom + 4);
-      g.textAlign = 'center';
-      g.fillText('n (rad/s) over t', (box.left + box.right) / 2, box.bottom + 4);
-      g.textAlign = 'right';
-      g.fillText(`${this.tEnd.toFixed(this.tEnd % 1 ? 1 : 0)} s`, box.right, box.bottom + 4);
-      this.plotCurve = g.getImageData(0, 0, this.plot.width, this.plot.height);
-    } else {
-      g.putImageData(this.plotCurve, 0, 0);
-    }
     g.setTransform(L.dpr, 0, 0, L.dpr, 0, 0);
-    const x = L.x(this.time);
-    g.strokeStyle = '#d0211a';
-    g.lineWidth = 1.5;
+    g.clearRect(0, 0, L.w, L.h);
+    g.fillStyle = '#fff';
+    g.fillRect(0, 0, L.w, L.h);
+    const { box } = L;
+    g.strokeStyle = '#bbb';
+    g.lineWidth = 1;
+    g.strokeRect(box.left, box.top, box.right - box.left, box.bottom - box.top);
     g.beginPath();
-    g.moveTo(x, L.box.top);
-    g.lineTo(x, L.box.bottom);
+    g.moveTo(box.left, L.y(0));
+    g.lineTo(box.right, L.y(0));
     g.stroke();
-    g.fillStyle = '#d0211a';
+    // Reversals: dashed orange lines.
+    g.strokeStyle = '#e08a00';
+    g.setLineDash([3, 3]);
+    for (const tr of this.run.reversals || []) {
+      g.beginPath();
+      g.moveTo(L.x(tr), box.top);
+      g.lineTo(L.x(tr), box.bottom);
+      g.stroke();
+    }
+    g.setLineDash([]);
+    g.strokeStyle = '#2a2a2a';
+    g.lineWidth = 1.3;
     g.beginPath();
-    g.arc(x, L.y(this.spinNow), 3, 0, 2 * Math.PI);
-    g.fill();
+    const { t, spin } = this.run;
+    const every = Math.max(1, Math.floor(this.n / 600));
+    for (let i = 0; i < this.n; i += every) {
+      if (i === 0) g.moveTo(L.x(t[i]), L.y(spin[i])); else g.lineTo(L.x(t[i]), L.y(spin[i]));
+    }
+    g.lineTo(L.x(t[this.n - 1]), L.y(spin[this.n - 1]));
+    g.stroke();
+    g.fillStyle = '#e08a00';
+    for (const tr of this.run.reversals || []) {
+      g.beginPath();
+      g.arc(L.x(tr), L.y(0), 3, 0, 2 * Math.PI);
+      g.fill();
+    }
+    g.fillStyle = '#444';
+    g.font = '10px system-ui,sans-serif';
+    g.textAlign = 'right';
+    g.textBaseline = 'middle';
+    const label = (v) => (Math.abs(v) >= 10 ? v.toFixed(0) : v.toFixed(1));
+    g.fillText(`+${label(L.m / 1.1)}`, box.left - 3, L.y(L.m / 1.1));
+    g.fillText('0', box.left - 3, L.y(0));
+    g.fillText(`−${label(L.m / 1.1)}`, box.left - 3, L.y(-L.m / 1.1));
+    g.textBaseline = 'top';
+    g.textAlign = 'left';
+    g.fillText(`${this.t0.toFixed(0)} s`, box.left, box.bottom + 4);
+    g.textAlign = 'center';
+    g.fillText('n (rad/s) over t', (box.left + box.right) / 2, box.bottom + 4);
+    g.textAlign = 'right';
+    g.fillText(`${this.tEnd.toFixed(this.tEnd % 1 ? 1 : 0)} s`, box.right, box.bottom + 4);
+    this.plotDrawn = true;
   }
 
   // --- events ----------------------------------------------------------------------------------
@@ -835,6 +885,7 @@ class Player {
     this.plot.addEventListener('pointerup', () => { this.plotDragging = false; });
     if (typeof ResizeObserver !== 'undefined') {
       new ResizeObserver(() => this.resize()).observe(this.stage);
+      this.resizeObserved = true;
     }
     if (typeof IntersectionObserver !== 'undefined') {
       new IntersectionObserver((entries) => {
@@ -871,8 +922,7 @@ class Player {
     const u = this.floorMaterial.uniforms;
     const target = this.activeControls().target;
     u.center.value.set(target.x, target.y);
-    const forward = new Vector3();
-    this.camera.getWorldDirection(forward);
+    const forward = this.camera.getWorldDirection(this.forward);
     const elevation = Math.asin(Math.max(-1, Math.min(1, -forward.z)));
     const level = this.camera.isOrthographicCamera && elevation > 1 * DEG && elevation < 30 * DEG;
     if (level) {
@@ -892,18 +942,99 @@ class Player {
     }
   }
 
+  // Draws the picture. Software WebGL pays for every pixel drawn, and the floor alone covers
+  // most of the canvas: while the camera stays (playing or stepping in a fixed view) only the
+  // part where the body and its shadow were and now are changes, so only that part is cleared
+  // and drawn again (a scissor; the canvas keeps the rest, preserveDrawingBuffer).
   render() {
     const started = performance.now();
     this.updateFloorFade();
-    this.renderer.render(this.scene, this.camera);
+    this.camera.updateMatrixWorld();
+    const rect = this.changedRect();
+    const renderer = this.renderer;
+    if (rect) {
+      renderer.setScissor(rect[0], rect[1], rect[2], rect[3]);
+      renderer.setScissorTest(true);
+    }
+    renderer.render(this.scene, this.camera);
+    if (rect) renderer.setScissorTest(false);
+    this.partialFrames += rect ? 1 : 0;
+    this.drawnFrames += 1;
     this.renderTimes.push(performance.now() - started);
     if (this.renderTimes.length > 60) this.renderTimes.shift();
     this.dirty = false;
   }
 
+  // The part of the canvas to draw again, [x, y, width, height] in CSS pixels from its bottom
+  // left corner, or null for all of it: the camera, the canvas or the floor's fade changed since
+  // the last frame drawn, or the body cannot be bounded on the screen.
+  changedRect() {
+    const key = this.drawnKey;
+    const m = this.camera.matrixWorld.elements;
+    const pm = this.camera.projectionMatrix.elements;
+    const target = this.activeControls().target;
+    let same = this.drawnCamera === this.camera && !this.redrawAll && !this.alwaysAll;
+    const put = (i, v) => {
+      if (key[i] !== v) { same = false; key[i] = v; }
+    };
+    for (let i = 0; i < 16; i++) { put(i, m[i]); put(16 + i, pm[i]); }
+    put(32, this.width); put(33, this.height); put(34, target.x); put(35, target.y);
+    this.drawnCamera = this.camera;
+    this.redrawAll = false;
+    const now = this.bodyRect();
+    const before = this.bodyDrawnAt;
+    this.bodyDrawnAt = now;
+    if (!same || !now || !before) return null;
+    const x0 = Math.max(0, Math.floor(Math.min(now[0], before[0])));
+    const y0 = Math.max(0, Math.floor(Math.min(now[1], before[1])));
+    const x1 = Math.min(this.width, Math.ceil(Math.max(now[2], before[2])));
+    const y1 = Math.min(this.height, Math.ceil(Math.max(now[3], before[3])));
+    if (x1 <= x0 || y1 <= y0) return [0, 0, 0, 0]; // off the canvas, then and now
+    if ((x1 - x0) * (y1 - y0) > 0.7 * this.width * this.height) return null;
+    return [x0, this.height - y1, x1 - x0, y1 - y0];
+  }
+
+  // Where the body and its contact shadow are on the canvas: [x0, y0, x1, y1], CSS pixels from
+  // the top left, padded for the spheres' smallest size and edges; null when some corner of
+  // them is behind the camera or beyond its range.
+  bodyRect() {
+    const v = this.scratch;
+    const b = this.body;
+    const box = [Infinity, Infinity, -Infinity, -Infinity];
+    const add = () => {
+      v.project(this.camera);
+      if (!(v.z >= -1 && v.z <= 1)) return false;
+      const x = ((v.x + 1) / 2) * this.width;
+      const y = ((1 - v.y) / 2) * this.height;
+      if (x < box[0]) box[0] = x;
+      if (y < box[1]) box[1] = y;
+      if (x > box[2]) box[2] = x;
+      if (y > box[3]) box[3] = y;
+      return true;
+    };
+    const matrix = this.points.matrixWorld;
+    for (let c = 0; c < 8; c++) {
+      v.set(c & 1 ? b.high[0] : b.low[0], c & 2 ? b.high[1] : b.low[1], c & 4 ? b.high[2] : b.low[2]);
+      v.applyMatrix4(matrix);
+      if (!add()) return null;
+    }
+    // The shadow fades out at 1.15 of the footprint's half extents (FLOOR_FRAGMENT).
+    const u = this.floorMaterial.uniforms;
+    const center = u.shadowCenter.value, axis = u.shadowAxis.value, half = u.shadowHalf.value;
+    for (let c = 0; c < 4; c++) {
+      const across = (c & 1 ? 1.2 : -1.2) * half.x, along = (c & 2 ? 1.2 : -1.2) * half.y;
+      v.set(center.x + across * axis.y + along * axis.x, center.y - across * axis.x + along * axis.y, 0);
+      if (!add()) return null;
+    }
+    const pad = 6;
+    return [box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad];
+  }
+
   loop(now) {
     requestAnimationFrame(this.loop);
-    if (!this.fixedSize && this.stage.clientWidth && Math.round(this.stage.clientWidth) !== this.width) this.resize();
+    // (A ResizeObserver follows the stage's size where there is one: no layout read per frame.)
+    if (!this.resizeObserved && !this.fixedSize && this.stage.clientWidth &&
+        Math.round(this.stage.clientWidth) !== this.width) this.resize();
     if (this.playing) {
       if (this.lastTick != null) {
         const next = this.time + ((now - this.lastTick) / 1000) * this.speed;
@@ -999,6 +1130,12 @@ class Player {
       },
       canvas: () => self.canvas,
       render() { self.render(); },
+      // Draws the whole picture again (not only the part that changed).
+      renderAll() { self.redrawAll = true; self.render(); },
+      // Every frame drawn whole (true) or only its changed part (false, the default).
+      setDrawAll(on) { self.alwaysAll = !!on; self.redrawAll = true; self.dirty = true; },
+      // [frames drawn in part, frames drawn] since the player was built.
+      drawCounts: () => [self.partialFrames, self.drawnFrames],
     };
   }
 }

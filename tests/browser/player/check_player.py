@@ -15,6 +15,8 @@ and, for every .rb-player on it:
     (within 1e-6, up to sign) and the position their linear interpolation; the data embedded
     equals the run's CSV (DIR/ID.csv, when there) at those samples; the canvas changes;
   - play advances time, pause stops it, and the run stops at its end;
+  - while the camera stays most frames are drawn in part (where the body and its shadow were and
+    are), and the picture after playing is the one drawn whole (no pixel differs);
   - each view button moves the camera, to where the renderer puts it (render/camera.cpp): the
     oblique, above, front and side directions from the framing centre, above with +y to the
     right and +x down the screen, follow moving with the body across its long axis; a drag
@@ -296,6 +298,23 @@ class Checker:
         time.sleep(0.3)
         self.check(not self.hook(element, "playing()") and self.hook(element, "time()") == paused,
                    f"{where}: the pause button does not stop time")
+        # While the camera stays, a frame redraws only the part where the body and its shadow
+        # were and are; the picture then must be the one drawn whole.
+        partial, drawn = self.hook(element, "drawCounts()")
+        self.check(drawn > 10 and partial > 0.5 * drawn,
+                   f"{where}: only {partial} of {drawn} frames were drawn in part in a fixed view")
+        for view in ["oblique", "side"]:
+            self.click_view(element, view)
+            self.hook(element, "play()")
+            time.sleep(0.5)
+            self.hook(element, "pause()")
+            self.frames()
+            self.pixels(element, f"{run_id}-part")
+            self.hook(element, "renderAll()")
+            px = self.pixels(element, f"{run_id}-part")
+            self.check(px["changed"] == 0, f"{where}: after playing in the {view} view, drawing the "
+                                           f"picture whole changed {px['changed']} pixels")
+        self.click_view(element, "oblique")
         self.hook(element, "setTime(arguments[1])", t[-1] - 0.1)
         self.hook(element, "play()")
         time.sleep(0.6)
