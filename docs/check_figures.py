@@ -1,0 +1,253 @@
+#!/usr/bin/python3
+"""Checks that the figures the pages quote from the program's output are what it prints today.
+
+Each claim below is a phrase as it stands in a page (white space collapsed), with every number
+it quotes from a run marked «so», and for each mark the value that the program gives now. A
+claim fails when its phrase, with any numbers at the marks, is no longer in the page (edit the
+claim with the page) or when a number the page has there differs from the program's value at
+the digits quoted: «2.37» is the value rounded to
+two decimals, «+3.08» also shows its sign, «−0.3243» writes minus as the page does, «6e-9» has
+one significant digit, a number of more than 12 digits is Python's repr, and «ccw» is a word the program prints. The runs are the shipped scenes
+and sweeps (about 10 s in all). Timings and figures dated to a commit measured by bench/ are not
+claims: they belong to their commit (docs/speed.md).
+
+Usage (from the repository's folder):
+    /usr/bin/python3 docs/check_figures.py build/app/rattleback
+"""
+import csv
+import functools
+import json
+import re
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+class Runs:
+    """The program's output for the shipped scenes and sweeps, each run once."""
+
+    def __init__(self, binary, folder):
+        self.binary, self.folder = binary, Path(folder)
+
+    def _run(self, *args):
+        return subprocess.run([self.binary, *args], cwd=ROOT, capture_output=True, text=True,
+                              check=True).stdout
+
+    @functools.lru_cache(maxsize=None)
+    def analyze(self, scene, spin=None):
+        extra = ["--spin", str(spin)] if spin is not None else []
+        return json.loads(self._run("analyze", "--json", f"scenes/{scene}.yaml", *extra))
+
+    @functools.lru_cache(maxsize=None)
+    def _simulate(self, scene):
+        table = self.folder / f"{scene}.csv"
+        self._run("simulate", "-q", f"scenes/{scene}.yaml", "-o", str(table))
+        sidecar = json.loads(Path(str(table) + ".json").read_text())
+        with open(table, newline="") as f:
+            rows = list(csv.DictReader(f))
+        return sidecar["result"], rows
+
+    def simulate(self, scene):
+        """The summary of `rattleback simulate` (its sidecar's "result")."""
+        return self._simulate(scene)[0]
+
+    def column(self, scene, name):
+        return [float(row[name]) for row in self._simulate(scene)[1]]
+
+    @functools.lru_cache(maxsize=None)
+    def sweep(self, name):
+        table = self.folder / f"sweep-{name}.csv"
+        self._run("sweep", "-q", f"sweeps/{name}.yaml", "-o", str(table))
+        with open(table, newline="") as f:
+            return list(csv.DictReader(f))
+
+    def row(self, name, **axes):
+        """The sweep's row whose axes have these values (keys with dots as __: contact__air_drag)."""
+        for row in self.sweep(name):
+            if all(float(row[key.replace("__", ".").replace("_0", "[0]")]) == value
+                   for key, value in axes.items()):
+                return row
+        raise KeyError(f"{name}: no row {axes}")
+
+
+def energy_kept(r, scene):
+    """The largest relative change of the total energy from its start, over the telemetry."""
+    energy = r.column(scene, "energy")
+    return max(abs(e - energy[0]) for e in energy) / abs(energy[0])
+
+
+def status_count(r, name, status):
+    return sum(1 for row in r.sweep(name) if row["status"].split(":")[0] == status)
+
+
+# (page, phrase with «numbers», one function of the runs a number)
+CLAIMS = [
+    ("README.md",
+     "clockwise at 5 rad/s: at «2.37» s it has stopped rocking and spins back, to «+3.08» rad/s",
+     [lambda r: r.simulate("rattleback")["first_reversal_s"],
+      lambda r: r.simulate("rattleback")["final_spin"]]),
+    ("README.md", "# preferred: «ccw»; roll «3.474» Hz, pitch «6.97» Hz",
+     [lambda r: r.analyze("rattleback")["preferred"],
+      lambda r: r.analyze("rattleback")["frequencies_hz"]["roll"],
+      lambda r: r.analyze("rattleback")["frequencies_hz"]["pitch"]]),
+    ("README.md", "# first reversal «2.3665» s",
+     [lambda r: r.simulate("rattleback")["first_reversal_s"]]),
+    ("docs/index.md", "spun clockwise at 5 rad/s; at «2.37» s it stops rocking and spins back",
+     [lambda r: r.simulate("rattleback")["first_reversal_s"]]),
+    ("docs/commands.md", "first reversal «2.3665» s (spin -5 rad/s changed sign)",
+     [lambda r: r.simulate("rattleback")["first_reversal_s"]]),
+    ("docs/commands.md", "energy «0.00683868» J -> «0.00605795» J («-11.42» %)",
+     [lambda r: r.simulate("rattleback")["energy_j"]["initial"],
+      lambda r: r.simulate("rattleback")["energy_j"]["final"],
+      lambda r: 100 * (r.simulate("rattleback")["energy_j"]["final"] /
+                       r.simulate("rattleback")["energy_j"]["initial"] - 1)]),
+    ("docs/commands.md", "final spin «+3.0767» rad/s, tilt «0.76» deg",
+     [lambda r: r.simulate("rattleback")["final_spin"],
+      lambda r: r.simulate("rattleback")["final_tilt_deg"]]),
+    ("docs/commands.md", "Richardson, order 4 reversal 1 at «2.807328» s: error about",
+     [lambda r: r.simulate("kane-levinson")["first_reversal_s"]]),
+    ("docs/commands.md", "difference from the tighter run reversal 1 at «2.366476» s: error about",
+     [lambda r: r.simulate("rattleback")["first_reversal_s"]]),
+    ("docs/commands.md",
+     "roll «3.474» Hz, pitch «6.97» Hz at rest; spun −5 rad/s the pitch mode grows at «1.5655» /s "
+     "(it reverses), spun +5 only the roll mode grows, at «0.1638» /s; preferred: «ccw».",
+     [lambda r: r.analyze("rattleback")["frequencies_hz"]["roll"],
+      lambda r: r.analyze("rattleback")["frequencies_hz"]["pitch"],
+      lambda r: r.analyze("rattleback", -5)["growth_rates"]["pitch"],
+      lambda r: r.analyze("rattleback", 5)["growth_rates"]["roll"],
+      lambda r: r.analyze("rattleback")["preferred"]]),
+    ("docs/physics.md",
+     "roll «3.474» Hz and pitch «6.97» Hz at rest; spun −5 rad/s the pitch mode grows at «1.5655» "
+     "/s (it reverses); spun +5 rad/s only the roll mode grows, at «0.1638» /s; first order: "
+     "roll «+0.08051», pitch «−0.3243» per rad; preferred: «ccw».",
+     [lambda r: r.analyze("rattleback")["frequencies_hz"]["roll"],
+      lambda r: r.analyze("rattleback")["frequencies_hz"]["pitch"],
+      lambda r: r.analyze("rattleback", -5)["growth_rates"]["pitch"],
+      lambda r: r.analyze("rattleback", 5)["growth_rates"]["roll"],
+      lambda r: r.analyze("rattleback")["first_order_growth_per_spin"]["roll"],
+      lambda r: r.analyze("rattleback")["first_order_growth_per_spin"]["pitch"],
+      lambda r: r.analyze("rattleback")["preferred"]]),
+    ("docs/physics.md", "lying at 62.5° («62.49»° today)",
+     [lambda r: r.simulate("seed-reversed")["final_tilt_deg"]]),
+    ("docs/python.md",
+     "print(run.first_reversal, run.spin.max()) # «2.366476116609818» «3.757577150224879»",
+     [lambda r: r.simulate("rattleback")["first_reversal_s"],
+      lambda r: max(r.column("rattleback", "spin"))]),
+    ("docs/python.md", "('«ccw»', {'pitch': «6.970009429470167», 'roll': «3.473898080545364»})",
+     [lambda r: r.analyze("rattleback")["preferred"],
+      lambda r: r.analyze("rattleback")["frequencies_hz"]["pitch"],
+      lambda r: r.analyze("rattleback")["frequencies_hz"]["roll"]]),
+    ("docs/scenes.md", "misalignment «+2.22»°",
+     [lambda r: r.analyze("rattleback")["misalignment_deg"]]),
+    ("docs/scenes.md", "stops at «2.3665» s and spins back to «+3.08» rad/s",
+     [lambda r: r.simulate("rattleback")["first_reversal_s"],
+      lambda r: r.simulate("rattleback")["final_spin"]]),
+    ("docs/scenes.md", "spun +5 rad/s, reverses at «2.8073» s",
+     [lambda r: r.simulate("kane-levinson")["first_reversal_s"]]),
+    ("docs/scenes.md",
+     "four reversals («2.81», «17.40», «31.94», «46.54» s) with the energy kept to «6e-9»",
+     [lambda r: r.simulate("kane-levinson-long")["reversals_s"][0],
+      lambda r: r.simulate("kane-levinson-long")["reversals_s"][1],
+      lambda r: r.simulate("kane-levinson-long")["reversals_s"][2],
+      lambda r: r.simulate("kane-levinson-long")["reversals_s"][3],
+      lambda r: energy_kept(r, "kane-levinson-long")]),
+    ("docs/scenes.md", "n(t) swinging between ±«5.36» rad/s",
+     [lambda r: max(abs(n) for n in r.column("kane-levinson-long", "spin"))]),
+    ("docs/scenes.md", "it rolls onto its side and ends lying at «62.49»°",
+     [lambda r: r.simulate("seed-reversed")["final_tilt_deg"]]),
+    ("docs/scenes.md", "(«115» ok, «8» stopped;",
+     [lambda r: status_count(r, "spin-drag", "ok"),
+      lambda r: status_count(r, "spin-drag", "stopped")]),
+    ("docs/scenes.md", "without drag «2.10» s at −8 rad/s and «3.29» s at −2.5 rad/s",
+     [lambda r: float(r.row("spin-drag", initial__spin=-8, contact__air_drag=0)["first_reversal_s"]),
+      lambda r: float(r.row("spin-drag", initial__spin=-2.5, contact__air_drag=0)["first_reversal_s"])]),
+    ("docs/scenes.md", "(at −5 rad/s: «2.32», «2.37» and «4.16» s for the three drags)",
+     [lambda r, d=d: float(r.row("spin-drag", initial__spin=-5, contact__air_drag=d)["first_reversal_s"])
+      for d in (0, 5.9e-6, 5.9e-5)]),
+    ("docs/scenes.md", "at −8 rad/s the light drag gives «1.96» s",
+     [lambda r: float(r.row("spin-drag", initial__spin=-8, contact__air_drag=5.9e-6)["first_reversal_s"])]),
+    ("docs/scenes.md", "−5 rad/s reverses at «4.16» s",
+     [lambda r: float(r.row("spin-drag", initial__spin=-5, contact__air_drag=5.9e-5)["first_reversal_s"])]),
+    ("docs/scenes.md", "spins of 5.5 … 8 rad/s reverse after «7.80» … «5.56» s",
+     [lambda r: float(r.row("spin-drag", initial__spin=5.5, contact__air_drag=0)["first_reversal_s"]),
+      lambda r: float(r.row("spin-drag", initial__spin=8, contact__air_drag=0)["first_reversal_s"])]),
+    ("docs/scenes.md", "first-order growth rate «+0.0805»·n per second",
+     [lambda r: r.analyze("rattleback")["first_order_growth_per_spin"]["roll"]]),
+    ("docs/scenes.md", "only +10 rad/s reverses, at «7.74» s (tilt up to «33.6»°)",
+     [lambda r: float(r.row("spin-drag", initial__spin=10, contact__air_drag=5.9e-6)["first_reversal_s"]),
+      lambda r: float(r.row("spin-drag", initial__spin=10, contact__air_drag=5.9e-6)["max_tilt_deg"])]),
+    ("docs/scenes.md", "(«0.57» s at at[0] = 0.75, scale 0.7;",
+     [lambda r: float(r.row("dents", body__dents__at_0=0.75, body__dents__scale=0.7)["first_reversal_s"])]),
+    ("docs/scenes.md", "also 0.5 at −1.25 and −1, late: «7.1» and «7.9» s)",
+     [lambda r: float(r.row("dents", body__dents__at_0=-1.25, body__dents__scale=0.5)["first_reversal_s"]),
+      lambda r: float(r.row("dents", body__dents__at_0=-1, body__dents__scale=0.5)["first_reversal_s"])]),
+    ("docs/scenes.md", "(«78» ok, 2.2 s on 2 threads)",
+     [lambda r: status_count(r, "dents", "ok")]),
+]
+
+
+def shown(value, quoted):
+    """`value` written as `quoted` is: the same digits, sign style and notation."""
+    if isinstance(value, str):
+        return value
+    if len(re.sub(r"[^0-9]", "", quoted.split("e")[0]).lstrip("0")) > 12:
+        return repr(value)  # all the digits, as Python prints a float: its shortest round trip
+    minus = "−" if "−" in quoted else "-"
+    plain = quoted.replace("−", "-")
+    if "e" in plain:
+        digits = len(plain.split("e")[0].lstrip("+-").replace(".", "")) - 1
+        mantissa, exponent = f"{abs(value):.{digits}e}".split("e")
+        text = f"{mantissa}e{int(exponent)}"
+    else:
+        decimals = len(plain.split(".")[1]) if "." in plain else 0
+        text = f"{abs(value):.{decimals}f}"
+    if value < 0 and float(text.replace("e", "E")) != 0:
+        return minus + text
+    return ("+" if plain.startswith("+") else "") + text
+
+
+def pattern(phrase):
+    """A regular expression for the phrase with any number (or word) where it has «…»."""
+    parts = re.split("«[^»]*»", " ".join(phrase.split()))
+    return r"([+−-]?[0-9][0-9.]*(?:e[+−-]?[0-9]+)?|[a-z]+)".join(re.escape(p) for p in parts)
+
+
+def check(runs):
+    failures = []
+    pages = {}
+    for page, phrase, values in CLAIMS:
+        if page not in pages:
+            pages[page] = " ".join((ROOT / page).read_text().split())
+        assert len(re.findall("«[^»]*»", phrase)) == len(values), phrase
+        found = re.search(pattern(phrase), pages[page])
+        if not found:
+            text = " ".join(phrase.split())
+            failures.append(f"{page}: the phrase is no longer there: {text!r} (edit the claim)")
+            continue
+        for number, value in zip(found.groups(), values):
+            actual = shown(value(runs), number)
+            if actual != number:
+                failures.append(f"{page}: {found.group(0)!r} quotes {number}; the program gives "
+                                f"{actual} ({value(runs)!r})")
+    return failures
+
+
+def main(argv):
+    if len(argv) != 1:
+        print(__doc__)
+        return 2
+    with tempfile.TemporaryDirectory() as folder:
+        failures = check(Runs(str(Path(argv[0]).resolve()), folder))
+    for failure in failures:
+        print(failure)
+    count = sum(len(values) for _, _, values in CLAIMS)
+    print(f"{len(failures)} problems among {count} quoted figures" if failures
+          else f"all {count} quoted figures are the program's output")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
