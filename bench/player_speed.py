@@ -18,6 +18,8 @@ are recorded for S seconds (after 1 s to settle) and their median and 90th perce
   whole       the player playing, at 1× speed, oblique view, every frame drawn whole
   player      the same, each frame drawing only the part of the picture that changed (the
               player's way: while the camera stays, only where the body and shadow are)
+  follow      the player playing in the follow view: the camera moves with the body, so every
+              frame is drawn whole
   paused      the same, paused (nothing changes, so nothing should be drawn)
 
 and, for the player, the cost of one frame (the pose, read-outs and drawing) drawn and waited for
@@ -244,6 +246,9 @@ class Bench:
         results["empty"] = self.playing(element, True)
         results["whole"] = self.playing(element, False, True)
         results["player"] = self.playing(element, False)
+        self.js("arguments[0].rbPlayer.setView('follow');", element)
+        results["follow"] = self.playing(element, False)
+        self.js("arguments[0].rbPlayer.setView('oblique');", element)
         self.js("arguments[0].rbPlayer.pause();", element)
         results["paused"] = self.record()
         cost = self.js(DRAW_COST_JS, element, 30)
