@@ -15,16 +15,7 @@
 namespace sim {
 namespace {
 
-// "In the air" means a flight: the floor carrying nothing for at least this long. Contact lost
-// for a few milliseconds (a hop of a few µm when auto starts to slide with its spring pushing
-// M g where rolling needed less, or chatter of a skidding body) is no flight; the bounces
-// after a drop from 5 cm last tens of milliseconds.
-constexpr double kFlightTime = 0.01;  // s
-// Nothing in the model adds energy (no drive; friction, dampers and drag only remove it), so a
-// rise of the total energy by more than this fraction of its initial value is no integration
-// error of a usable step (the bench ladders show ≤ 1e-3 where a step is stable) but the start of
-// an instability. Checked about once per simulated millisecond (every step when adaptive).
-constexpr double kEnergyGrowthBound = 0.10;
+// The watchdog looks about once per simulated millisecond (every step when adaptive).
 constexpr double kEnergyCheckPeriod = 1e-3;  // s
 
 // Times closer than this (relative) are the same time: a sample asked for at k/rate is the
@@ -68,7 +59,11 @@ std::string stepAdvice(const Model& model) {
 Rollout::Rollout(Model model) : Rollout(model, initialState(model)) {}
 
 Rollout::Rollout(Model model, const State& start)
-    : model_(std::move(model)), active_(model_), previous_(start), current_(start) {
+    : model_(std::move(model)),
+      active_(model_),
+      previous_(start),
+      current_(start),
+      watchdog_(0, 0, false, "") {
   if (model_.contact.model == ContactModel::Auto) startAuto();
   if (isAdaptive(model_.integrator))
     adaptive_ = std::make_unique<AdaptiveStepper>(active_, current_);
@@ -78,10 +73,9 @@ Rollout::Rollout(Model model, const State& start)
   min_cos_tilt_ = std::cos(summary_.first.tilt_deg * M_PI / 180.0);
   // Reversals of the spin n = ω·ẑ at the start (opposite to initial.spin when upside down).
   reversals_ = ReversalDetector(summary_.first.spin);
-  if (summary_.first.contacts == 0 || summary_.first.normal_force <= 0)
-    last_airborne_ = airborne_since_ = start.t;
-  const double e0 = summary_.first.energy;
-  energy_bound_ = e0 + kEnergyGrowthBound * std::abs(e0) + 1e-12;
+  watchdog_ = Watchdog(start.t, summary_.first.energy,
+                       summary_.first.contacts == 0 || summary_.first.normal_force <= 0,
+                       stepAdvice(model_));
   check_every_ =
       adaptive_ ? 1 : std::max<std::int64_t>(1, std::llround(kEnergyCheckPeriod / model_.dt));
 }
@@ -151,66 +145,31 @@ void Rollout::stepOnce() {
   if (current_.step % check_every_ == 0) watch();
 }
 
-// NaN or infinity, energy from nowhere, or a rolling body on its rim: the run stops, naming
-// the quantity, the time and the step.
 void Rollout::watch() {
-  if (const char* quantity = nonFinite(current_)) {
-    std::ostringstream msg;
-    msg << quantity << " became NaN or infinite at t = " << current_.t << " s (step "
-        << current_.step << "); " << stepAdvice(model_);
-    summary_.stop = Stop{StopReason::NonFinite, current_.t, current_.step};
-    summary_.divergence = msg.str();
-    return;
-  }
-  // The energy, and whether the floor carries the body. Rolling keeps it on the floor and has
-  // no spring: its energy needs no contact solve (this check runs every step or millisecond).
-  const bool rolling = active_.contact.model == ContactModel::Rolling;
-  double energy = 0;
-  if (rolling) {
-    const Eigen::Vector3d w = angularVelocity(active_, current_);
-    const double M = active_.body->mass, depth = active_.rolling_depth;
-    energy = 0.5 * M * current_.v_world.squaredNorm() + 0.5 * w.dot(current_.L_world) +
-             M * active_.gravity * current_.x_world.z() +
-             (depth > 0 ? 0.5 * active_.contact.stiffness * depth * depth : 0.0);
-  } else {
-    const Telemetry now = telemetryOf(active_, current_);
-    // In the air: no point below the floor. Not "no force": a strongly damped floor's clipped
-    // force max(0, k d − c v) is zero for tens of ms while a point rises out of it, and that
-    // was taken for a bounce, hiding a reversal (issue 26: k 1e8, c 2e4 N s/m).
-    if (now.contacts == 0) {
-      if (!(airborne_since_ <= current_.t)) airborne_since_ = current_.t;
-      if (current_.t - airborne_since_ >= kFlightTime || airborne_since_ == summary_.first.t)
-        last_airborne_ = current_.t;
+  StepEnd end{current_.t, current_.step, nonFinite(current_)};
+  if (!end.non_finite) {
+    // Rolling keeps the body on the floor and has no spring: its energy needs no contact solve
+    // (this runs every step or millisecond).
+    if (active_.contact.model == ContactModel::Rolling) {
+      const Eigen::Vector3d w = angularVelocity(active_, current_);
+      const double M = active_.body->mass, depth = active_.rolling_depth;
+      end.energy = 0.5 * M * current_.v_world.squaredNorm() + 0.5 * w.dot(current_.L_world) +
+                   M * active_.gravity * current_.x_world.z() +
+                   (depth > 0 ? 0.5 * active_.contact.stiffness * depth * depth : 0.0);
     } else {
-      airborne_since_ = kNever;
+      const Telemetry now = telemetryOf(active_, current_);
+      end.energy = now.energy;
+      end.contacts = now.contacts;
     }
-    energy = now.energy;
+    if (model_.contact.model == ContactModel::Rolling) {
+      const Eigen::Matrix3d R = current_.q.toRotationMatrix();
+      if (model_.body->surface.lowestOnRim(-R.row(2).transpose()))
+        end.rim_tilt_deg = std::acos(std::clamp(R(2, 2), -1.0, 1.0)) * 180.0 / M_PI;
+    }
   }
-  if (!(energy <= energy_bound_)) {
-    const double e0 = summary_.first.energy;
-    std::ostringstream msg;
-    msg << "the energy rose from " << e0 << " J to " << energy << " J (" << std::showpos
-        << 100 * (energy - e0) / std::abs(e0) << std::noshowpos << " %, beyond the "
-        << 100 * kEnergyGrowthBound
-        << " % that nothing in the model can supply) at t = " << current_.t << " s (step "
-        << current_.step << "); " << stepAdvice(model_);
-    summary_.stop = Stop{StopReason::EnergyGain, current_.t, current_.step};
-    summary_.divergence = msg.str();
-    return;
-  }
-  // Rolling is a smooth surface rolling on the floor; tipped onto the edge of its flat top the
-  // body pivots on an edge, which that model cannot describe (auto slides instead).
-  if (model_.contact.model == ContactModel::Rolling) {
-    const Eigen::Matrix3d R = current_.q.toRotationMatrix();
-    if (!model_.body->surface.lowestOnRim(-R.row(2).transpose())) return;
-    const double tilt = std::acos(std::clamp(R(2, 2), -1.0, 1.0)) * 180.0 / M_PI;
-    std::ostringstream msg;
-    msg << "the body tipped onto the edge of its top (tilt " << tilt
-        << " degrees) at t = " << current_.t << " s (step " << current_.step
-        << "), where rolling on its smooth bottom no longer describes it; use "
-           "contact.model smooth or points";
-    summary_.stop = Stop{StopReason::OnRim, current_.t, current_.step};
-    summary_.divergence = msg.str();
+  if (const std::optional<Stop> stop = watchdog_.observe(end)) {
+    summary_.stop = stop;
+    summary_.divergence = watchdog_.message();
   }
 }
 
@@ -218,10 +177,11 @@ void Rollout::watch() {
 // the step by regula falsi (Illinois), so it is as accurate as the states between steps.
 void Rollout::locateReversal(double previous_spin, double spin) {
   const bool at_end = current_.t >= model_.duration * (1 - kSameTime);
-  reversals_.step(previous_.t, previous_spin, current_.t, spin, last_airborne_, at_end, [&] {
-    return zeroCrossing([&](double t) { return angularVelocity(model_, interpolate(t)).z(); },
-                        previous_.t, current_.t, previous_spin, spin);
-  });
+  reversals_.step(
+      previous_.t, previous_spin, current_.t, spin, watchdog_.lastFlight(), at_end, [&] {
+        return zeroCrossing([&](double t) { return angularVelocity(model_, interpolate(t)).z(); },
+                            previous_.t, current_.t, previous_spin, spin);
+      });
   if (reversals_.reversals().size() > summary_.reversals.size()) {
     summary_.reversals = reversals_.reversals();
     if (!summary_.first_reversal_s) summary_.first_reversal_s = summary_.reversals.front();

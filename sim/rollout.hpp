@@ -15,24 +15,11 @@
 #include "sim/model.hpp"
 #include "sim/reversals.hpp"
 #include "sim/telemetry.hpp"
+#include "sim/watchdog.hpp"
 
 namespace sim {
 
 class AdaptiveStepper;
-
-/// Why a run stopped by itself (RunSummary::stop).
-enum class StopReason {
-  NonFinite,   ///< a quantity became NaN or infinite
-  EnergyGain,  ///< the energy rose beyond what the model can supply
-  OnRim,       ///< a rolling body tipped onto the edge of its flat top
-};
-
-/// A run that stopped by itself: why, when, and the message that says it.
-struct Stop {
-  StopReason reason;
-  double t = 0;           ///< s
-  std::int64_t step = 0;  ///< the step it stopped at
-};
 
 /// What a run did so far.
 struct RunSummary {
@@ -103,6 +90,7 @@ class Rollout {
 
  private:
   void stepOnce();
+  /// Feeds the watchdog the end of the last step; records its stop.
   void watch();
   State interpolate(double t) const;
   /// The cubic Hermite interpolant between a and b with their rates (packed as the state).
@@ -131,10 +119,7 @@ class Rollout {
   ReversalDetector reversals_{0};  ///< the reversal rule, fed each step's ends
   double spin_ = 0;                ///< n = ω·ẑ of current_, rad/s
   double min_cos_tilt_ = 1;        ///< smallest cosine of the tilt so far
-  double last_airborne_ = -1e300;  ///< last time of a flight (the floor carrying nothing), s
-  static constexpr double kNever = std::numeric_limits<double>::quiet_NaN();
-  double airborne_since_ = kNever;  ///< since when the floor has carried nothing, s (NaN: it does)
-  double energy_bound_ = 0;
+  Watchdog watchdog_;              ///< NaN, energy from nowhere, the rim; and the last flight
   std::int64_t check_every_ = 1;
   // Auto: how long the contact point has stuck while sliding; adaptive counts of earlier steppers.
   double stuck_for_ = 0;
@@ -171,14 +156,3 @@ const RunSummary& sampleRun(Rollout& rollout, double rate, Each&& each) {
 }
 
 }  // namespace sim
-
-namespace rb {
-template <>
-struct NameTable<sim::StopReason> {
-  static constexpr std::array<std::pair<sim::StopReason, std::string_view>, 3> entries{{
-      {sim::StopReason::NonFinite, "non_finite"},
-      {sim::StopReason::EnergyGain, "energy_gain"},
-      {sim::StopReason::OnRim, "on_rim"},
-  }};
-};
-}  // namespace rb

@@ -1,0 +1,59 @@
+#include "sim/watchdog.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace sim {
+
+Watchdog::Watchdog(double t0, double e0, bool in_air_at_start, std::string advice)
+    : t0_(t0),
+      e0_(e0),
+      bound_(e0 + kEnergyGrowthBound * std::abs(e0) + 1e-12),
+      advice_(std::move(advice)) {
+  if (in_air_at_start) last_flight_ = in_air_since_ = t0;
+}
+
+std::optional<Stop> Watchdog::observe(const StepEnd& end) {
+  if (end.non_finite) {
+    std::ostringstream msg;
+    msg << end.non_finite << " became NaN or infinite at t = " << end.t << " s (step " << end.step
+        << "); " << advice_;
+    message_ = msg.str();
+    return Stop{StopReason::NonFinite, end.t, end.step};
+  }
+  // In the air: no point below the floor. Not "no force": a strongly damped floor's clipped
+  // force max(0, k d − c v) is zero for tens of ms while a point rises out of it, and that was
+  // taken for a bounce, hiding a reversal (issue 26: k 1e8, c 2e4 N s/m). A start in the air
+  // is a flight at once (a drop).
+  if (end.contacts) {
+    if (*end.contacts == 0) {
+      if (!(in_air_since_ <= end.t)) in_air_since_ = end.t;
+      if (end.t - in_air_since_ >= kFlightTime || in_air_since_ == t0_) last_flight_ = end.t;
+    } else {
+      in_air_since_ = std::numeric_limits<double>::quiet_NaN();
+    }
+  }
+  if (!(end.energy <= bound_)) {
+    std::ostringstream msg;
+    msg << "the energy rose from " << e0_ << " J to " << end.energy << " J (" << std::showpos
+        << 100 * (end.energy - e0_) / std::abs(e0_) << std::noshowpos << " %, beyond the "
+        << 100 * kEnergyGrowthBound << " % that nothing in the model can supply) at t = " << end.t
+        << " s (step " << end.step << "); " << advice_;
+    message_ = msg.str();
+    return Stop{StopReason::EnergyGain, end.t, end.step};
+  }
+  // Rolling is a smooth surface rolling on the floor; tipped onto the edge of its flat top the
+  // body pivots on an edge, which that model cannot describe (auto slides instead).
+  if (end.rim_tilt_deg) {
+    std::ostringstream msg;
+    msg << "the body tipped onto the edge of its top (tilt " << *end.rim_tilt_deg
+        << " degrees) at t = " << end.t << " s (step " << end.step
+        << "), where rolling on its smooth bottom no longer describes it; use "
+           "contact.model smooth or points";
+    message_ = msg.str();
+    return Stop{StopReason::OnRim, end.t, end.step};
+  }
+  return std::nullopt;
+}
+
+}  // namespace sim
