@@ -79,6 +79,20 @@ void printTheory(std::FILE* out, const sim::Model& model, double spin) {
                  "predicted to reverse\n",
                  std::string(rb::nameOf(preferred)).c_str(),
                  preferred == sim::Direction::Ccw ? "counter-clockwise" : "clockwise");
+  const sim::ReversalForecast forecast = sim::forecastFirstReversal(model, spin, model.duration);
+  if (!forecast.applies) {
+    std::fprintf(out, "first reversal   not predicted: the theory needs a body that can stand\n");
+    return;
+  }
+  if (forecast.time)
+    std::fprintf(out, "first reversal   predicted at %.3g s spun %g rad/s with the scene's tilt",
+                 *forecast.time, spin);
+  else
+    std::fprintf(out, "first reversal   none predicted within the run's %g s", model.duration);
+  std::fprintf(out,
+               " (averaged theory, docs/physics.md P8.5; it holds where n²ρ/g = %.2g and the "
+               "rocking's energy against the spin's, %.2g, are small)\n",
+               forecast.spin_parameter, forecast.energy_ratio);
 }
 
 void printText(std::FILE* out, const std::string& scene, const sim::Model& model) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <complex>
+#include <optional>
 #include <vector>
 
 #include "sim/model.hpp"
@@ -35,6 +36,51 @@ struct FirstOrder {
   double roll = 0, pitch = 0;
 };
 FirstOrder firstOrderGrowth(const Model& model);
+
+/// The averaged small-oscillation theory of the first reversal (docs/physics.md P8.5; Garcia &
+/// Hubbard 1988 in the form of Kondo & Nakanishi 2017): the spin n and the energies of the roll
+/// and pitch modes E_r, E_p, averaged over the rocking, obey
+///   C ṅ = −σ n − 2 (k_r E_r + k_p E_p),   Ė_j = 2 (k_j n + g_j) E_j,
+/// with C the moment of inertia about the vertical, σ the air drag, k_j the first-order growth
+/// (FirstOrder) and g_j the modes' own growth at rest (their decay under drag). Without drag
+/// the energy ½ C n² + E_r + E_p is conserved.
+struct AveragedModes {
+  double spin = 0;     ///< n at the start, rad/s
+  double inertia = 0;  ///< C, kg m²
+  double drag = 0;     ///< σ, N m s
+  struct Mode {
+    double k = 0;       ///< first-order growth per spin, 1/rad
+    double decay = 0;   ///< g: growth at rest, 1/s (≤ 0)
+    double energy = 0;  ///< J at the start
+  } roll, pitch;
+};
+
+/// The first zero of n within `horizon` s, integrating the averaged equations.
+std::optional<double> averagedReversalTime(const AveragedModes& modes, double horizon);
+
+/// Their closed form for one mode without drag: n = −N tanh(k N (t − t_r)) with
+/// N² = n0² + 2 E/C, so t_r = artanh(|n0| / N) / (|k| N) where k·n0 > 0 (the mode grows);
+/// none where it decays.
+std::optional<double> oneModeReversalTime(double n0, double k, double energy, double inertia);
+
+/// The forecast for a model's initial tilt spun at `spin` about the body axis.
+struct ReversalForecast {
+  bool applies = false;    ///< the body stands upright (Rest::stable)
+  AveragedModes modes;     ///< the equations' values; the modes' energies are the initial tilt's
+                           ///< share in each (linearised at rest, where the modes do not mix)
+  double tilt_energy = 0;  ///< J: the tilt's potential energy ½ δuᵀ K δu (= E_r + E_p)
+  /// The theory is first order in n² ρ / g (ρ the larger radius of curvature at rest: the spin's
+  /// centripetal acceleration at the contact's lever against gravity) and needs the rocking's
+  /// energy small against the spin's, 2 (E_r + E_p) / (C n²). Measured against rolling runs
+  /// without drag (docs/physics.md P8.5): 13 % early at 0.85, 3 % at 0.14, 1 % at 0.03.
+  double spin_parameter = 0;
+  double energy_ratio = 0;
+  std::optional<double> time;  ///< s: the first zero of n within the horizon, if any
+};
+
+/// The forecast for the model's initial tilt spun at `spin` about the body axis (n = spin ×
+/// cos tilt), followed for `horizon` seconds.
+ReversalForecast forecastFirstReversal(const Model& model, double spin, double horizon);
 
 /// A direction of spin seen from above.
 enum class Direction {

@@ -82,6 +82,17 @@ nlohmann::json analysisJson(const sim::Model& model, double spin) {
     eigenvalues.push_back({lambda.real(), lambda.imag()});
   j["eigenvalues"] = eigenvalues;
   j["preferred"] = std::string(rb::nameOf(sim::preferredDirection(model, spin)));
+  const sim::ReversalForecast forecast = sim::forecastFirstReversal(model, spin, model.duration);
+  j["predicted_first_reversal"] = {
+      {"theory", "averaged small-oscillation (Garcia & Hubbard 1988; docs/physics.md P8.5)"},
+      {"applies", forecast.applies},
+      {"time_s", forecast.time ? nlohmann::json(*forecast.time) : nlohmann::json(nullptr)},
+      {"within_s", model.duration},
+      {"spin", forecast.modes.spin},
+      {"spin_parameter", forecast.spin_parameter},
+      {"energy_ratio", forecast.energy_ratio},
+      {"mode_energy_j",
+       {{"roll", forecast.modes.roll.energy}, {"pitch", forecast.modes.pitch.energy}}}};
   return j;
 }
 

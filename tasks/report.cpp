@@ -116,6 +116,18 @@ std::string reversalOf(const nlohmann::json& result) {
   return "no reversal in " + number(field(result, "simulated_s"), "%g") + " s";
 }
 
+// The first reversal the averaged theory predicts (analyze's "predicted_first_reversal").
+std::string forecastOf(const nlohmann::json& theory) {
+  const nlohmann::json& f = field(theory, "predicted_first_reversal");
+  if (!f.is_object()) return "";
+  std::string text = "<br>first reversal (averaged theory): ";
+  if (field(f, "applies") == false) return text + "none: the body cannot stand";
+  if (!field(f, "time_s").is_number())
+    return text + "none within " + number(field(f, "within_s"), "%g") + " s";
+  return text + "<b>" + number(field(f, "time_s"), "%.2f") + " s</b> (holds where n²ρ/g, here " +
+         number(field(f, "spin_parameter"), "%.2g") + ", is small)";
+}
+
 // The run's estimated errors (simulate --check, its sidecar's "check"); empty without one.
 std::string checkOf(const nlohmann::json& check) {
   if (!check.is_object()) return "";
@@ -220,7 +232,8 @@ void writeAnalysis(std::ostream& out, const SceneFiles& f,
         << number(field(t, "misalignment_deg"), "%+.2f") << "°; "
         << (field(t, "rest_stable") == true    ? "stands upright"
             : field(t, "rest_stable") == false ? "<b>cannot stand upright</b>"
-                                               : "upright: –");
+                                               : "upright: –")
+        << forecastOf(t);
     if (f.has("-analysis.txt"))
       out << "<br><a href=\"" << escape(f.at("-analysis.txt")) << "\">full analysis</a>";
   }

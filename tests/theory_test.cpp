@@ -451,3 +451,110 @@ simulation: {integrator: rk4, dt: 1.0e-3, duration: 5}
   const sim::Model dented = build(parse(kRolling));
   EXPECT_EQ(sim::preferredDirection(dented, 5), sim::Direction::Ccw);
 }
+
+// The averaged theory of the first reversal (docs/physics.md P8.5).
+namespace {
+
+struct Forecast {
+  double predicted, measured;  ///< s
+};
+
+// `spec` rolling without drag, spun n rad/s and tilted θ° about both axes: the averaged
+// theory's first reversal and a run's (rk4 at `dt`: its reversal times converge to 5 µs at
+// 1e-3 s for the default body, docs/physics.md P7).
+Forecast forecastAndRun(sim::SceneSpec spec, double n, double tilt_deg, double dt) {
+  spec.contact.model = "rolling";
+  spec.contact.air_drag = 0;
+  spec.initial.spin = n;
+  spec.initial.tilt = {tilt_deg, tilt_deg};
+  spec.simulation = {"rk4", dt, sim::kUnset, 40.0};
+  const sim::Model model = build(spec);
+  const sim::ReversalForecast forecast = sim::forecastFirstReversal(model, n, 40.0);
+  EXPECT_TRUE(forecast.time) << n;
+  sim::Rollout rollout(model);
+  rollout.advanceTo(model.duration);
+  EXPECT_TRUE(rollout.summary().first_reversal_s) << n;
+  return {forecast.time.value_or(0), rollout.summary().first_reversal_s.value_or(1)};
+}
+
+sim::SceneSpec kaneLevinson() {
+  auto loaded = scene::loadFile(std::string(RATTLEBACK_SOURCE_DIR) + "/scenes/kane-levinson.yaml");
+  if (!loaded) ADD_FAILURE() << loaded.error().text();
+  return loaded ? loaded->spec : sim::SceneSpec{};
+}
+
+}  // namespace
+
+// The theory is first order in n²ρ/g (P8.5). Along runs that keep the rocking's energy in the
+// same ratio to the spin's (tilt ∝ n), its relative error must then fall about 4× per halving
+// of n; we require 3× (measured 3.2× and 4.1× for the default body, 3.6× and 3.9× for Kane &
+// Levinson's) and under 1 % at the smallest spin (measured 0.19 % and 0.82 %). Both bodies,
+// both directions of their reversing spin.
+TEST(Forecast, ConvergesToRunsAsTheSpinGetsSmall) {
+  struct Case {
+    const char* name;
+    sim::SceneSpec spec;
+    double spin, tilt, dt;
+  };
+  for (const Case& c : {Case{"default body", parse(kRolling), -2, 0.4, 1e-3},
+                        Case{"Kane & Levinson", kaneLevinson(), 2, 0.04, 2e-4}}) {
+    std::vector<double> errors;
+    for (double scale : {1.0, 0.5, 0.25}) {
+      const Forecast f = forecastAndRun(c.spec, c.spin * scale, c.tilt * scale, c.dt);
+      errors.push_back(std::abs(f.predicted - f.measured) / f.measured);
+      SCOPED_TRACE(std::string(c.name) + " predicted " + std::to_string(f.predicted) +
+                   " s, measured " + std::to_string(f.measured) + " s");
+    }
+    EXPECT_GT(errors[0] / errors[1], 3.0) << c.name << ": " << errors[0] << " " << errors[1];
+    EXPECT_GT(errors[1] / errors[2], 3.0) << c.name << ": " << errors[1] << " " << errors[2];
+    EXPECT_LT(errors[2], 0.01) << c.name;
+  }
+}
+
+// The averaged equations have no scale of their own without drag: spin and tilt halved
+// (energies quartered) take twice as long. 2e-6 relative: the tilt enters as sin θ and
+// n = spin cos θ, which scale with θ only to O(θ²) = 8e-7 at 0.05°; the Runge–Kutta step
+// scales with the rates, so both integrations take the same steps in scaled time.
+TEST(Forecast, HalfTheSpinAndTiltTakesTwiceAsLong) {
+  sim::SceneSpec spec = parse(kRolling);
+  spec.initial.tilt = {0.05, 0.05};
+  const double full = *sim::forecastFirstReversal(build(spec), -2, 100).time;
+  spec.initial.tilt = {0.025, 0.025};
+  const double half = *sim::forecastFirstReversal(build(spec), -1, 100).time;
+  EXPECT_NEAR(half / full, 2.0, 2e-6);
+}
+
+// The rest's modes are orthogonal in the stiffness, so the tilt's potential energy splits
+// exactly between them (1e-6: finite-difference Jacobian and Hessian, each good to ~1e-8).
+TEST(Forecast, TheTiltsEnergyIsSharedBetweenTheModes) {
+  for (const sim::SceneSpec& spec : {parse(kRolling), kaneLevinson()}) {
+    const sim::ReversalForecast f = sim::forecastFirstReversal(build(spec), 5, 10);
+    EXPECT_GT(f.modes.roll.energy, 0);
+    EXPECT_GT(f.modes.pitch.energy, 0);
+    EXPECT_NEAR((f.modes.roll.energy + f.modes.pitch.energy) / f.tilt_energy, 1.0, 1e-6);
+  }
+}
+
+// One mode without drag has a closed form, n = −N tanh(k N (t − t_r)) (P8.5); the integration
+// must agree to its own error (Runge–Kutta h⁴ at h = 1/100 of the rate's time: 1e-8, and the
+// cubic's zero), and a decaying mode, or drag alone, never reverses.
+TEST(Forecast, IntegrationAgreesWithTheClosedForm) {
+  sim::AveragedModes m;
+  m.spin = -5;
+  m.inertia = 1e-4;
+  m.pitch = {-0.32, 0, 7e-6};
+  const double closed = *sim::oneModeReversalTime(m.spin, m.pitch.k, m.pitch.energy, m.inertia);
+  EXPECT_NEAR(*sim::averagedReversalTime(m, 100), closed, 1e-7 * closed);
+  EXPECT_NEAR(closed, 2.04867, 1e-5);  // artanh(5/N)/(0.32 N), N² = 25 + 0.14
+  m.spin = 5;                          // k n > 0: the mode decays
+  EXPECT_FALSE(sim::oneModeReversalTime(m.spin, m.pitch.k, m.pitch.energy, m.inertia));
+  EXPECT_FALSE(sim::averagedReversalTime(m, 100));
+  m.pitch.energy = 0;
+  m.drag = 5.9e-6;
+  EXPECT_FALSE(sim::averagedReversalTime(m, 100));
+  // Beyond the horizon: none.
+  m.spin = -5;
+  m.drag = 0;
+  m.pitch.energy = 7e-6;
+  EXPECT_FALSE(sim::averagedReversalTime(m, 0.5 * closed));
+}
