@@ -203,7 +203,9 @@ const std::vector<CommandSpec>& commands() {
   static const std::vector<CommandSpec> table = {
       {"simulate", "Run a scene; write CSV telemetry and print a summary", false, defineSimulate,
        [](Cli& c) { return simulateCommand(c.simulate_args); }},
-      {"analyze", "Mass properties, rest stability, frequencies, growth rates, preferred direction",
+      {"analyze",
+       "Mass properties, rest stability, frequencies, growth rates, preferred direction, forecast "
+       "first reversal",
        false, defineAnalyze, [](Cli& c) { return analyzeCommand(c.analyze_args); }},
       {"render", "Render a scene to an MP4 video (H.264)", true, defineRender, runRender},
       {"still", "Render one frame of a scene to a PNG", true, defineStill, runStill},

@@ -44,8 +44,7 @@ TEST(Watchdog, EnergyFromNowhereStopsBeyondTenPercent) {
   EXPECT_EQ(stop->reason, sim::StopReason::EnergyGain);
   EXPECT_DOUBLE_EQ(stop->t, 0.6);
   EXPECT_EQ(stop->step, 600);
-  EXPECT_NE(dog.message().find("the energy rose from 1 J to 1.1001 J (+10.01 %"),
-            std::string::npos)
+  EXPECT_NE(dog.message().find("the energy rose from 1 J to 1.1001 J (+10.01 %"), std::string::npos)
       << dog.message();
   EXPECT_NE(dog.message().find("at t = 0.6 s (step 600); try a smaller simulation.dt"),
             std::string::npos)
