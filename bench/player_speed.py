@@ -15,7 +15,8 @@ are recorded for S seconds (after 1 s to settle) and their median and 90th perce
               (Chromium's cost of presenting and compositing a canvas that changes each frame)
   empty       the report page with the player playing, its body and floor hidden: three.js
               clearing an empty scene each frame (plus the player's per-frame page work)
-  whole       the player playing, at 1× speed, oblique view, every frame drawn whole
+  whole       the player playing, at 1× speed, oblique view, every frame drawn whole (a
+              bundle older than setDrawAll() draws every frame whole anyway: the same as player)
   player      the same, each frame drawing only the part of the picture that changed (the
               player's way: while the camera stays, only where the body and shadow are)
   follow      the player playing in the follow view: the camera moves with the body, so every
