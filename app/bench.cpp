@@ -136,7 +136,7 @@ int benchCommand(const BenchArgs& args) {
   const tasks::BenchOptions options = optionsOf(args);
   if (auto ok = tasks::checkBenchOptions(options); !ok) return fail(ok);
   std::vector<std::string> paths = args.scenes;
-  if (paths.empty()) paths = {"scenes/rattleback.yaml", "scenes/seed-reversed.yaml"};
+  if (paths.empty()) paths = {"scenes/rattleback.yaml", "scenes/seed-flip-ccw.yaml"};
   // Each scene's body is compiled once and shared by every run of the bench.
   std::vector<tasks::BenchScene> scenes;
   std::vector<std::string> names;

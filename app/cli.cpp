@@ -138,7 +138,7 @@ void defineCompare(CLI::App& c, Cli& cli) {
 void defineBench(CLI::App& c, Cli& cli) {
   BenchArgs& b = cli.bench_args;
   c.add_option("scenes", b.scenes,
-               "Scene files (default scenes/rattleback.yaml scenes/seed-reversed.yaml)");
+               "Scene files (default scenes/rattleback.yaml scenes/seed-flip-ccw.yaml)");
   c.add_option("-o,--output", b.csv, "CSV table (default out/bench.csv)");
   c.add_option("--plot", b.plot, "Error-against-cost plot, PNG (default out/bench.png)");
   c.add_option("--duration", b.duration, "Simulated seconds per run (default 3)");

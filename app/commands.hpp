@@ -88,7 +88,7 @@ struct StillArgs {
 int stillCommand(const StillArgs& args);
 
 struct BenchArgs {
-  std::vector<std::string> scenes;  ///< empty: scenes/rattleback.yaml, scenes/seed-reversed.yaml
+  std::vector<std::string> scenes;  ///< empty: scenes/rattleback.yaml, scenes/seed-flip-ccw.yaml
   std::string csv;                  ///< empty: out/bench.csv
   std::string plot;                 ///< empty: out/bench.png
   double duration = 3;              ///< simulated seconds per run

@@ -36,9 +36,9 @@ void stepScene(benchmark::State& state, const char* scene, const char* model,
                      : std::string(model));
 }
 
-BENCHMARK_CAPTURE(stepScene, seed_points_euler, "seed-reversed.yaml", "points", "euler");
-BENCHMARK_CAPTURE(stepScene, seed_points_symplectic, "seed-reversed.yaml", "points", "symplectic");
-BENCHMARK_CAPTURE(stepScene, seed_points_rk4, "seed-reversed.yaml", "points", "rk4");
+BENCHMARK_CAPTURE(stepScene, seed_points_euler, "seed-flip-ccw.yaml", "points", "euler");
+BENCHMARK_CAPTURE(stepScene, seed_points_symplectic, "seed-flip-ccw.yaml", "points", "symplectic");
+BENCHMARK_CAPTURE(stepScene, seed_points_rk4, "seed-flip-ccw.yaml", "points", "rk4");
 BENCHMARK_CAPTURE(stepScene, default_rolling_rk4, "rattleback.yaml", "rolling", "rk4");
 BENCHMARK_CAPTURE(stepScene, default_rolling_symplectic, "rattleback.yaml", "rolling",
                   "symplectic");
@@ -96,6 +96,6 @@ void sweepRowOverhead(benchmark::State& state) {
 
 BENCHMARK(sweepRowOverhead)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(prepareRun, default_body, "rattleback.yaml");
-BENCHMARK_CAPTURE(prepareRun, seed_body, "seed-reversed.yaml");
+BENCHMARK_CAPTURE(prepareRun, seed_body, "seed-flip-ccw.yaml");
 
 BENCHMARK_MAIN();

@@ -20,14 +20,14 @@ $rb still scenes/rattleback.yaml --spin -5 -o out/rattleback-reversed.png -q
 $rb still scenes/rattleback.yaml --spin 5 -o out/rattleback-preferred.png -q
 for view in oblique above front side; do
   $rb still scenes/rattleback.yaml --view "$view" --t 1.0 -o "out/rattleback-$view.png" -q
-  $rb still scenes/seed-reversed.yaml --view "$view" -o "out/seed-$view.png" -q
+  $rb still scenes/seed-flip-ccw.yaml --view "$view" -o "out/seed-$view.png" -q
 done
 
 echo "== telemetry and analysis"
 # The scenes side by side (the seed's two, with their checks, take most of it); any failure fails
 # the job.
 pids=()
-for scene in seed-preferred seed-reversed rattleback kane-levinson kane-levinson-long; do
+for scene in seed-flip-cw seed-flip-ccw rattleback kane-levinson kane-levinson-long; do
   (
     $rb analyze "scenes/$scene.yaml" -o "out/$scene-analysis.txt"
     $rb analyze "scenes/$scene.yaml" --json -o "out/$scene-analysis.json"

@@ -63,7 +63,7 @@ fs::path tempFile(const std::string& name) {
 
 // A copy of a shipped scene with one line changed.
 fs::path badScene(const std::string& from, const std::string& to) {
-  std::ifstream in(scene("seed-reversed"));
+  std::ifstream in(scene("seed-flip-ccw"));
   std::stringstream s;
   s << in.rdbuf();
   std::string text = s.str();
@@ -105,10 +105,10 @@ TEST(Cli, BadInputLeavesAnExistingOutputUntouched) {
   std::ofstream(csv) << "precious\n";
   for (const std::string& args :
        {"simulate " + badScene("dt: 1.0e-5", "dt: 0.5").string() + " -o " + csv.string(),
-        "simulate " + scene("seed-reversed") + " --dt -1 -o " + csv.string(),
-        "simulate " + scene("seed-reversed") + " --integrator leapfrog -o " + csv.string(),
-        "simulate " + scene("seed-reversed") + " --rate 0 -o " + csv.string(),
-        "simulate " + scene("seed-reversed") + " --dt 1e-5 --tolerance 1e-8 --integrator rk4 -o " +
+        "simulate " + scene("seed-flip-ccw") + " --dt -1 -o " + csv.string(),
+        "simulate " + scene("seed-flip-ccw") + " --integrator leapfrog -o " + csv.string(),
+        "simulate " + scene("seed-flip-ccw") + " --rate 0 -o " + csv.string(),
+        "simulate " + scene("seed-flip-ccw") + " --dt 1e-5 --tolerance 1e-8 --integrator rk4 -o " +
             csv.string()}) {
     const Result r = rattleback(args);
     EXPECT_EQ(r.status, 2) << args;
@@ -124,7 +124,7 @@ TEST(Cli, UnwritableOutputIsReportedCleanly) {
   // A folder that cannot be made (its parent is a file) and a device that is full.
   for (const char* target : {"/dev/null/dir/x.csv", "/dev/full"}) {
     const Result r =
-        rattleback("simulate " + scene("seed-reversed") + " --duration 0.05 -o " + target);
+        rattleback("simulate " + scene("seed-flip-ccw") + " --duration 0.05 -o " + target);
     EXPECT_EQ(r.status, 2) << target;
     EXPECT_EQ(lines(r.err), 1) << r.err;
     EXPECT_EQ(r.err.rfind(std::string(target) + ":", 0), 0u) << r.err;
@@ -149,14 +149,14 @@ TEST(Cli, OutputsAreWrittenThroughSymbolicLinks) {
   fs::create_symlink(dir / "video.mp4", dir / "link.mp4");  // absolute, to a file not yet made
   fs::create_symlink("made/later.csv", dir / "late.csv");   // into a folder not yet made
   fs::create_symlink("/proc/self/fd/1", dir / "stdout.csv");
-  const std::string run = scene("seed-reversed") + " --duration 0.1 --rate 100 -q -o ";
+  const std::string run = scene("seed-flip-ccw") + " --duration 0.1 --rate 100 -q -o ";
   ASSERT_EQ(rattleback("simulate " + run + (dir / "link.csv").string()).status, 0);
   ASSERT_EQ(rattleback("simulate " + run + (dir / "late.csv").string()).status, 0);
-  ASSERT_EQ(rattleback("still " + scene("seed-reversed") + " --size 320x180 -q -o " +
+  ASSERT_EQ(rattleback("still " + scene("seed-flip-ccw") + " --size 320x180 -q -o " +
                        (dir / "link.png").string())
                 .status,
             0);
-  ASSERT_EQ(rattleback("render " + scene("seed-reversed") +
+  ASSERT_EQ(rattleback("render " + scene("seed-flip-ccw") +
                        " --duration 0.2 --size 320x180 -q -o " + (dir / "link.mp4").string())
                 .status,
             0);
@@ -183,7 +183,7 @@ TEST(Cli, ADashSendsTheTableToStandardOutput) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   const std::string command =
-      "cd " + dir.string() + " && " + RATTLEBACK_BIN + " simulate " + scene("seed-reversed") +
+      "cd " + dir.string() + " && " + RATTLEBACK_BIN + " simulate " + scene("seed-flip-ccw") +
       " --duration 0.1 --rate 100 -o - 2>err.txt | python3 -c 'import csv, sys; " +
       "rows = list(csv.DictReader(sys.stdin)); print(len(rows), rows[-1][\"t\"])' >out.txt";
   ASSERT_EQ(std::system(command.c_str()), 0);
@@ -228,7 +228,7 @@ TEST(Cli, AStepTooCoarseForTheRockingIsRefused) {
 
 TEST(Cli, SimulateWritesTelemetryWithUnitsAndSummary) {
   const fs::path csv = tempFile("run.csv");
-  const Result r = rattleback("simulate " + scene("seed-reversed") +
+  const Result r = rattleback("simulate " + scene("seed-flip-ccw") +
                               " --duration 0.1 --rate 100 -o " + csv.string());
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("first reversal"), std::string::npos);
@@ -254,7 +254,7 @@ TEST(Cli, SimulateWritesTelemetryWithUnitsAndSummary) {
 // analyze --json parses as JSON (it is written by a JSON library) and holds the seed's
 // numbers: its grid's counts (seed §3.1: 4256 points, 308 top, 294 bottom) and its mass.
 TEST(Cli, AnalyzeJsonHasTheSeedCounts) {
-  const Result r = rattleback("analyze " + scene("seed-reversed") + " --json");
+  const Result r = rattleback("analyze " + scene("seed-flip-ccw") + " --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["points"]["total"], 4256);
@@ -351,7 +351,7 @@ TEST(Cli, VersionQuietAndVerbose) {
   EXPECT_EQ(version.status, 0);
   EXPECT_EQ(version.out.rfind("rattleback ", 0), 0u) << version.out;
   const std::string run =
-      "simulate " + scene("seed-reversed") + " --duration 0.02 -o " + tempFile("v.csv").string();
+      "simulate " + scene("seed-flip-ccw") + " --duration 0.02 -o " + tempFile("v.csv").string();
   const Result quiet = rattleback(run + " -q");
   EXPECT_EQ(quiet.status, 0);
   EXPECT_EQ(quiet.out, "");
@@ -668,7 +668,7 @@ TEST(Outputs, TheTelemetryHoldsTheScenesNumbers) {
   // With contact springs (the seed's points model) the elastic term is not zero, and it is in
   // the total too.
   const fs::path springs = tempFile("s.csv");
-  ASSERT_EQ(rattleback("simulate -q " + scene("seed-reversed") + " --duration 0.2 --rate 100 -o " +
+  ASSERT_EQ(rattleback("simulate -q " + scene("seed-flip-ccw") + " --duration 0.2 --rate 100 -o " +
                        springs.string())
                 .status,
             0);
@@ -924,7 +924,7 @@ TEST(Cli, ABodyWithNoPreferredDirectionGetsNone) {
 // toppling body ran quietly. The default body, which stands, gets no warning.
 TEST(Cli, SimulateWarnsOfABodyThatCannotStand) {
   const std::string out = " --duration 0.05 -o " + tempFile("w.csv").string();
-  const Result seed = rattleback("simulate " + scene("seed-reversed") + out);
+  const Result seed = rattleback("simulate " + scene("seed-flip-ccw") + out);
   ASSERT_EQ(seed.status, 0) << seed.err;
   EXPECT_NE(seed.out.find("WARNING         the body cannot stand upright"), std::string::npos)
       << seed.out;

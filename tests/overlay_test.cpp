@@ -104,7 +104,7 @@ TEST(Overlay, ReadoutsNeverCoverTheBody) {
     double duration;
   };
   for (const Scene scene :
-       {Scene{"rattleback", 8}, Scene{"kane-levinson", 8}, Scene{"seed-reversed", 10}}) {
+       {Scene{"rattleback", 8}, Scene{"kane-levinson", 8}, Scene{"seed-flip-ccw", 10}}) {
     for (const char* view : {"oblique", "above", "front", "side", "follow"}) {
       for (double fraction : {0.25}) {
         for (const char* size : {"480x270", "180x180"}) {

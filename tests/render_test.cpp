@@ -86,7 +86,7 @@ TEST(Snapshots, StillsMatchTheGoldens) {
 TEST(Snapshots, TopIsRedAndBottomIsBlue) {
   const fs::path side = scratch("side.png");
   ASSERT_EQ(
-      rattleback("still scenes/seed-reversed.yaml --view side --size 320x180 -o " + side.string()),
+      rattleback("still scenes/seed-flip-ccw.yaml --view side --size 320x180 -o " + side.string()),
       0);
   render::Image image;
   ASSERT_TRUE(render::readPng(side.string(), image));
@@ -256,7 +256,7 @@ std::vector<std::string> topLevelBoxes(const fs::path& path) {
 // can start playing before it has the whole file.
 TEST(Video, StreamAndLayoutAreWhatBrowsersPlay) {
   const fs::path video = scratch("seed.mp4");
-  ASSERT_EQ(rattleback("render scenes/seed-reversed.yaml --duration 0.4 --size 320x180 --fps 25 "
+  ASSERT_EQ(rattleback("render scenes/seed-flip-ccw.yaml --duration 0.4 --size 320x180 --fps 25 "
                        "-o " +
                        video.string()),
             0);
@@ -281,12 +281,12 @@ TEST(Video, StreamAndLayoutAreWhatBrowsersPlay) {
 TEST(Video, PlaybackScalesTheFrameCount) {
   const fs::path slow = scratch("slow.mp4"), fast = scratch("fast.mp4");
   ASSERT_EQ(
-      rattleback("render scenes/seed-reversed.yaml --duration 0.4 --playback 0.5 --size 160x90 "
+      rattleback("render scenes/seed-flip-ccw.yaml --duration 0.4 --playback 0.5 --size 160x90 "
                  "-o " +
                  slow.string()),
       0);
   EXPECT_EQ(probe(slow).frames, 20);  // 0.4 s / 0.5 × 25 fps
-  ASSERT_EQ(rattleback("render scenes/seed-reversed.yaml --duration 0.4 --playback 2 --size 160x90 "
+  ASSERT_EQ(rattleback("render scenes/seed-flip-ccw.yaml --duration 0.4 --playback 2 --size 160x90 "
                        "-o " +
                        fast.string()),
             0);
@@ -297,7 +297,7 @@ TEST(Video, PlaybackScalesTheFrameCount) {
 // drawn at exact times between steps): 24, 30 and 60 fps give round(duration · fps) frames,
 // frame k stamped at k / fps in the MP4 (to the stream's time base).
 TEST(Video, CommonFrameRatesWorkForEveryShippedScene) {
-  for (const char* scene : {"rattleback", "kane-levinson", "seed-reversed", "seed-preferred"}) {
+  for (const char* scene : {"rattleback", "kane-levinson", "seed-flip-ccw", "seed-flip-cw"}) {
     for (int fps : {24, 30, 60}) {
       const fs::path video = scratch(std::string(scene) + "-" + std::to_string(fps) + ".mp4");
       ASSERT_EQ(rattleback(std::string("render scenes/") + scene + ".yaml --duration 0.25 --fps " +
@@ -318,7 +318,7 @@ TEST(Video, CommonFrameRatesWorkForEveryShippedScene) {
 // two frames wide. No temporary file is left.
 TEST(Video, BothWritesThreeVideos) {
   const fs::path base = scratch("pair");
-  ASSERT_EQ(rattleback("render scenes/seed-reversed.yaml --both --duration 0.2 --size 160x90 -o " +
+  ASSERT_EQ(rattleback("render scenes/seed-flip-ccw.yaml --both --duration 0.2 --size 160x90 -o " +
                        base.string()),
             0);
   for (const char* suffix : {"-preferred.mp4", "-reversed.mp4"})
@@ -329,7 +329,7 @@ TEST(Video, BothWritesThreeVideos) {
   // At spin 0 the spin and its reverse are one run (the two videos were written over each
   // other): refused, with nothing written.
   const fs::path zero = scratch("zero");
-  EXPECT_EQ(rattleback("render scenes/seed-reversed.yaml --both --spin 0 --duration 0.2 --size "
+  EXPECT_EQ(rattleback("render scenes/seed-flip-ccw.yaml --both --spin 0 --duration 0.2 --size "
                        "160x90 -o " +
                        zero.string()),
             2);
@@ -341,17 +341,17 @@ TEST(Video, BothWritesThreeVideos) {
 TEST(Video, FailureLeavesAnExistingFileAlone) {
   const fs::path video = scratch("keep.mp4");
   std::ofstream(video) << "precious";
-  EXPECT_EQ(rattleback("render scenes/seed-reversed.yaml --size 321x180 -o " + video.string()), 2);
-  EXPECT_EQ(rattleback("render scenes/seed-reversed.yaml --fps 500 -o " + video.string()), 2);
-  EXPECT_EQ(rattleback("render scenes/seed-reversed.yaml --crf 60 -o " + video.string()), 2);
-  EXPECT_EQ(rattleback("render scenes/seed-reversed.yaml --preset bogus -o " + video.string()), 2);
-  EXPECT_EQ(rattleback("render scenes/seed-reversed.yaml --view sideways -o " + video.string()), 2);
+  EXPECT_EQ(rattleback("render scenes/seed-flip-ccw.yaml --size 321x180 -o " + video.string()), 2);
+  EXPECT_EQ(rattleback("render scenes/seed-flip-ccw.yaml --fps 500 -o " + video.string()), 2);
+  EXPECT_EQ(rattleback("render scenes/seed-flip-ccw.yaml --crf 60 -o " + video.string()), 2);
+  EXPECT_EQ(rattleback("render scenes/seed-flip-ccw.yaml --preset bogus -o " + video.string()), 2);
+  EXPECT_EQ(rattleback("render scenes/seed-flip-ccw.yaml --view sideways -o " + video.string()), 2);
   std::ifstream in(video);
   std::string content;
   in >> content;
   EXPECT_EQ(content, "precious");
-  EXPECT_EQ(rattleback("render scenes/seed-reversed.yaml --duration 0.1 -o /dev/null/x.mp4"), 2);
-  EXPECT_EQ(rattleback("still scenes/seed-reversed.yaml -o /dev/null/x.png"), 2);
+  EXPECT_EQ(rattleback("render scenes/seed-flip-ccw.yaml --duration 0.1 -o /dev/null/x.mp4"), 2);
+  EXPECT_EQ(rattleback("still scenes/seed-flip-ccw.yaml -o /dev/null/x.png"), 2);
 }
 
 // `compare` is the snapshot check users can call: 0 when equal within the tolerance, 1 when
@@ -378,7 +378,7 @@ TEST(Compare, SameAndDifferentImages) {
   EXPECT_EQ(rattleback("compare " + changed.string() + " " + golden.string() + " --pixels 2"), 2);
   // Different sizes differ, and the message says no diff was written.
   const fs::path small = scratch("small.png"), out = scratch("compare.txt");
-  ASSERT_EQ(rattleback("still scenes/seed-reversed.yaml --size 160x90 -q -o " + small.string()), 0);
+  ASSERT_EQ(rattleback("still scenes/seed-flip-ccw.yaml --size 160x90 -q -o " + small.string()), 0);
   const std::string command = "cd " + kSource.string() + " && " + RATTLEBACK_BIN + " compare " +
                               small.string() + " " + golden.string() + " --diff " +
                               scratch("none.png").string() + " >" + out.string();
@@ -481,7 +481,7 @@ TEST(Video, AnInterruptKeepsTheOldFileAndLeavesNoTemporary) {
 // (x264 logs its CPU capabilities and statistics at libav's info level).
 TEST(Video, NoLibraryLogLinesOnTheTerminal) {
   const fs::path video = scratch("quiet.mp4");
-  ASSERT_EQ(rattleback("render scenes/seed-reversed.yaml --duration 0.2 --size 160x90 -q -o " +
+  ASSERT_EQ(rattleback("render scenes/seed-flip-ccw.yaml --duration 0.2 --size 160x90 -q -o " +
                        video.string()),
             0);
   std::ifstream err(video.parent_path() / "stderr.txt");

@@ -182,7 +182,7 @@ TEST(Scenes, TheBaseSceneCompiles) {
 
 TEST(Scenes, ShippedScenesLoadAndCompile) {
   for (const char* name :
-       {"rattleback", "seed-preferred", "seed-reversed", "kane-levinson", "kane-levinson-long"}) {
+       {"rattleback", "seed-flip-cw", "seed-flip-ccw", "kane-levinson", "kane-levinson-long"}) {
     const std::string path = std::string(RATTLEBACK_SOURCE_DIR) + "/scenes/" + name + ".yaml";
     auto loaded = scene::loadFile(path);
     ASSERT_TRUE(loaded.ok()) << loaded.error().text();

@@ -258,7 +258,7 @@ TEST(VideoContent, EveryViewKeepsTheBodyInsideTheFrame) {
     double duration;
   };
   for (const Scene scene : {Scene{"rattleback", 8}, Scene{"kane-levinson", 8},
-                            Scene{"seed-reversed", 3}, Scene{"seed-preferred", 3}}) {
+                            Scene{"seed-flip-ccw", 3}, Scene{"seed-flip-cw", 3}}) {
     for (const char* view : {"oblique", "above", "front", "side", "follow"}) {
       const fs::path mp4 = scratch(std::string(scene.name) + "-" + view + ".mp4");
       ASSERT_EQ(rattleback("render scenes/" + std::string(scene.name) + ".yaml -q --fps 5 --view " +

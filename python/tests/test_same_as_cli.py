@@ -16,8 +16,8 @@ CASES = [
     ("rattleback.yaml", 2.0, 500),
     ("rattleback.yaml", 1.5, 333),
     ("kane-levinson.yaml", 2.0, 200),
-    ("seed-reversed.yaml", 0.2, 1000),
-    ("seed-preferred.yaml", 0.2, 250),
+    ("seed-flip-ccw.yaml", 0.2, 1000),
+    ("seed-flip-cw.yaml", 0.2, 250),
 ]
 
 
