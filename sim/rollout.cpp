@@ -102,7 +102,10 @@ bool Rollout::advanceTo(double t) {
     summary_.evaluations = evaluations_before_ + adaptive_->evaluations();
     summary_.rejected = rejected_before_ + adaptive_->rejected(current_.step - stepper_start_);
   }
-  return !stopped() || current_.t >= t || sameTime(current_.t, t);
+  const bool reached = !stopped() || current_.t >= t || sameTime(current_.t, t);
+  reached_ = reached ? std::min(t, current_.t) : current_.t;
+  last_filled_ = false;
+  return reached;
 }
 
 void Rollout::stepOnce() {
@@ -245,9 +248,16 @@ State Rollout::stateAt(double t) const {
   return s;
 }
 
-Telemetry Rollout::sampleAt(double t) {
-  summary_.last = telemetryOf(modeAt(t), stateAt(t));
-  return summary_.last;
+Telemetry Rollout::sampleAt(double t) const {
+  return telemetryOf(modeAt(t), stateAt(t));
+}
+
+const RunSummary& Rollout::summary() const {
+  if (!last_filled_) {
+    summary_.last = sampleAt(reached_);
+    last_filled_ = true;
+  }
+  return summary_;
 }
 
 // Auto's first mode: rolling when the run starts on the floor and rolling holds there, with

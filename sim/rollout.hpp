@@ -77,8 +77,9 @@ class Rollout {
   /// integrator's dense output (adaptive) or a cubic Hermite interpolant (fixed steps), with
   /// the quaternion renormalised and, under rolling, the state put back on the constraint.
   State stateAt(double t) const;
-  /// Telemetry at time t (as stateAt); also becomes summary().last.
-  Telemetry sampleAt(double t);
+  /// Telemetry at time t (as stateAt). No side effects: sampling at any times of the last step,
+  /// in any order, leaves the run and its summary as they are.
+  Telemetry sampleAt(double t) const;
 
   /// Stops the run at its next step; safe from another thread.
   void requestStop() { stop_.request_stop(); }
@@ -86,7 +87,9 @@ class Rollout {
   void stopWith(std::stop_token token) { external_ = std::move(token); }
   bool stopped() const { return summary_.divergence.has_value() || summary_.stop_requested; }
 
-  const RunSummary& summary() const { return summary_; }
+  /// What the run did so far; its `last` is the telemetry at the time the last advanceTo asked
+  /// for (or where the run stopped, when it stopped before it).
+  const RunSummary& summary() const;
 
  private:
   void stepOnce();
@@ -112,7 +115,9 @@ class Rollout {
   std::unique_ptr<AdaptiveStepper> adaptive_;
   std::stop_source stop_;
   std::stop_token external_;
-  RunSummary summary_;
+  mutable RunSummary summary_;  ///< `last` is filled in when asked for (summary())
+  double reached_ = 0;          ///< the time of summary().last, s
+  mutable bool last_filled_ = true;
   // Rates at the ends of the last step for the Hermite interpolant, computed when first needed.
   mutable bool have_rates_ = false;
   mutable Eigen::Matrix<double, 13, 1> rates_previous_, rates_current_;

@@ -245,6 +245,30 @@ TEST(Rollout, AStopRequestEndsTheRun) {
   EXPECT_FALSE(watched.advanceTo(0.1));
 }
 
+// Sampling has no side effects (issue 26.12): samples at times of the last step, in any order
+// and as often as wished, give the same telemetry, and the summary's `last` is the time that
+// advanceTo asked for, sampled or not. Exact equality: the same state, the same arithmetic.
+TEST(Rollout, SamplingChangesNothing) {
+  sim::SceneSpec spec = parse(kRolling);
+  spec.simulation.dt = 0.01;  // steps long enough to sample inside
+  const sim::Model model = build(spec);
+  sim::Rollout run(model), twin(model);
+  ASSERT_TRUE(run.advanceTo(0.505));
+  ASSERT_TRUE(twin.advanceTo(0.505));
+  const double t0 = run.current().t - 0.01;
+  const sim::Telemetry late = run.sampleAt(0.505), early = run.sampleAt(t0 + 0.001);
+  EXPECT_EQ(run.sampleAt(0.505).spin, late.spin);
+  EXPECT_EQ(run.sampleAt(t0 + 0.001).energy, early.energy);
+  EXPECT_EQ(run.summary().last.t, 0.505);
+  EXPECT_EQ(run.summary().last.spin, late.spin);
+  // The sampled run and the twin never sampled go on alike.
+  ASSERT_TRUE(run.advanceTo(1.0));
+  ASSERT_TRUE(twin.advanceTo(1.0));
+  EXPECT_EQ(run.current().L_world, twin.current().L_world);
+  EXPECT_EQ(run.summary().last.spin, twin.summary().last.spin);
+  EXPECT_EQ(twin.summary().last.t, 1.0);
+}
+
 // The reversal detector's root finder on signals whose zero is known: exact (to rounding) for
 // a straight line, as regula falsi's first secant is the line itself; to 1e-14 s for smooth
 // simple roots (the sine's π, the exponential's ln 2, a cubic's 0.3 far off the bracket's
