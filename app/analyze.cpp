@@ -81,18 +81,36 @@ void printTheory(std::FILE* out, const sim::Model& model, double spin) {
                  preferred == sim::Direction::Ccw ? "counter-clockwise" : "clockwise");
   const sim::ReversalForecast forecast = sim::forecastFirstReversal(model, spin, model.duration);
   if (!forecast.applies) {
-    std::fprintf(out, "first reversal   not predicted: the theory needs a body that can stand\n");
+    std::fprintf(out, "first reversal   not forecast: the theory needs a body that can stand\n");
+    return;
+  }
+  const char* where = "docs/physics.md P8.5";
+  if (forecast.tilt_energy == 0) {
+    std::fprintf(out,
+                 "first reversal   none forecast: with no tilt nothing starts the rocking (%s)\n",
+                 where);
+    return;
+  }
+  if (forecast.range == sim::ForecastRange::Outside) {
+    std::fprintf(out,
+                 "first reversal   not forecast: spun %g rad/s this is outside the averaged "
+                 "theory's range (n²ρ/g = %.2g, rocking energy / spin energy = %.2g; either above "
+                 "1; %s)\n",
+                 spin, forecast.spin_parameter, forecast.energy_ratio, where);
     return;
   }
   if (forecast.time)
-    std::fprintf(out, "first reversal   predicted at %.3g s spun %g rad/s with the scene's tilt",
+    std::fprintf(out, "first reversal   forecast at %.3g s spun %g rad/s with the scene's tilt",
                  *forecast.time, spin);
   else
-    std::fprintf(out, "first reversal   none predicted within the run's %g s", model.duration);
+    std::fprintf(out, "first reversal   none forecast within the run's %g s spun %g rad/s",
+                 model.duration, spin);
   std::fprintf(out,
-               " (averaged theory, docs/physics.md P8.5; it holds where n²ρ/g = %.2g and the "
-               "rocking's energy against the spin's, %.2g, are small)\n",
-               forecast.spin_parameter, forecast.energy_ratio);
+               " (averaged theory, %s; n²ρ/g = %.2g, rocking energy / spin energy = %.2g: %s)\n",
+               where, forecast.spin_parameter, forecast.energy_ratio,
+               forecast.range == sim::ForecastRange::Within
+                   ? "within its range, where it is within about 3 % of a run"
+                   : "beyond its range (0.15 and 0.1), where it is early by 5-20 %");
 }
 
 void printText(std::FILE* out, const std::string& scene, const sim::Model& model) {

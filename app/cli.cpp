@@ -43,6 +43,9 @@ void defineSimulate(CLI::App& c, Cli& cli) {
   c.add_option("--spin", s.spin, "Initial spin, rad/s (overrides the scene)");
   stepOptions(c, s.dt, s.tolerance);
   c.add_option("--integrator", s.integrator, names<sim::Integrator>());
+  c.add_option("--set", s.set,
+               "KEY=VALUE: set a scene key (dotted, e.g. contact.model=smooth or "
+               "body.dents.at[0]=0.8; the value in YAML), before the options above; repeatable");
   c.add_option("--rate", s.rate,
                "Telemetry samples per simulated second, at exact times (default 500)");
   c.add_option("--plot", s.plot_dir,
@@ -59,8 +62,9 @@ void defineAnalyze(CLI::App& c, Cli& cli) {
   c.add_flag("--json", cli.analyze_args.json, "Print JSON");
   c.add_option("-o,--output", cli.analyze_args.output,
                "Write to this file (whole or not at all) instead of standard output");
-  c.add_option("--spin", cli.analyze_args.spin,
-               "Spin for the growth rates and eigenvalues, rad/s (default: the scene's)");
+  c.add_option(
+      "--spin", cli.analyze_args.spin,
+      "Spin for the growth rates, eigenvalues and forecast, rad/s (default: the scene's, else 5)");
 }
 
 // The backend's default can come from the environment (CI runs the render tests on both).

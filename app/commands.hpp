@@ -44,8 +44,9 @@ struct SimulateArgs {
   std::string output;  ///< CSV path; empty: out/<scene name>.csv
   std::optional<double> duration, dt, tolerance, rate, spin;
   std::optional<std::string> integrator;
-  std::string plot_dir;  ///< non-empty: write the four figures (PNG) there
-  bool check = false;    ///< also estimate the run's error (tasks/check.hpp)
+  std::vector<std::string> set;  ///< KEY=VALUE: a scene key's value (YAML), before the options
+  std::string plot_dir;          ///< non-empty: write the four figures (PNG) there
+  bool check = false;            ///< also estimate the run's error (tasks/check.hpp)
   bool quiet = false;
   bool verbose = false;
 };

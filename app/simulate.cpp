@@ -171,9 +171,17 @@ rb::Status writePlots(const std::string& dir, const std::string& scene,
 
 }  // namespace
 
-// The run's overrides as simulate's options give them.
-Overrides overridesOf(const SimulateArgs& args) {
+// The run's overrides as simulate's options give them; "--set" entries split at their first '='.
+rb::Result<Overrides> overridesOf(const SimulateArgs& args) {
   Overrides o;
+  for (const std::string& entry : args.set) {
+    const auto equals = entry.find('=');
+    if (equals == std::string::npos || equals == 0)
+      return rb::Error{"", "--set: '" + entry +
+                               "' is not KEY=VALUE (e.g. --set contact.model=smooth or "
+                               "--set initial.tilt=[1,0])"};
+    o.values.push_back({entry.substr(0, equals), entry.substr(equals + 1)});
+  }
   o.duration = args.duration;
   o.spin = args.spin;
   o.dt = args.dt;
@@ -211,7 +219,9 @@ int notWritten(const SimulateArgs& args, const tasks::Outcome& outcome) {
 
 int simulateCommand(const SimulateArgs& args) {
   installInterruptHandlers();
-  auto loaded = loadScene(args.scene, overridesOf(args));
+  const auto overrides = overridesOf(args);
+  if (!overrides) return fail(overrides);
+  auto loaded = loadScene(args.scene, overrides.value());
   if (!loaded) return fail(loaded);
   const sim::Model& model = loaded->model;
   const double rate = args.rate.value_or(tasks::kDefaultRate);

@@ -131,15 +131,14 @@ CLAIMS = [
       lambda r: r.analyze("rattleback")["first_order_growth_per_spin"]["pitch"],
       lambda r: r.analyze("rattleback")["preferred"]]),
     ("docs/physics.md",
-     "the default scene (n²ρ/g = «0.85») is forecast at «2.12» s and reverses at «2.37» s; "
-     "Kane & Levinson's (n²ρ/g = «5.1», its rocking energy «0.036» of the spin's) at «1.10» s "
-     "against «2.81» s",
-     [lambda r: r.analyze("rattleback")["predicted_first_reversal"]["spin_parameter"],
+     "The default scene lies «beyond» the range (n²ρ/g = «0.85»): forecast at «2.12» s, it "
+     "reverses at «2.37» s. Kane & Levinson's (n²ρ/g = «5.1») lies «outside» it: it takes «2.81» s",
+     [lambda r: r.analyze("rattleback")["predicted_first_reversal"]["range"],
+      lambda r: r.analyze("rattleback")["predicted_first_reversal"]["spin_parameter"],
       lambda r: r.analyze("rattleback")["predicted_first_reversal"]["time_s"],
       lambda r: r.simulate("rattleback")["first_reversal_s"],
       lambda r: r.analyze("kane-levinson")["predicted_first_reversal"]["spin_parameter"],
-      lambda r: r.analyze("kane-levinson")["predicted_first_reversal"]["energy_ratio"],
-      lambda r: r.analyze("kane-levinson")["predicted_first_reversal"]["time_s"],
+      lambda r: r.analyze("kane-levinson")["predicted_first_reversal"]["range"],
       lambda r: r.simulate("kane-levinson")["first_reversal_s"]]),
     ("docs/physics.md", "lying at 62.5° («62.49»° today)",
      [lambda r: r.simulate("seed-flip-ccw")["final_tilt_deg"]]),

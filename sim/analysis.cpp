@@ -279,7 +279,10 @@ ReversalForecast forecastFirstReversal(const Model& model, double spin, double h
   modes.pitch.k = k.pitch;
   modes.roll.decay = at_rest.roll_growth;
   modes.pitch.decay = at_rest.pitch_growth;
-  out.time = averagedReversalTime(modes, horizon);
+  out.range = out.spin_parameter > 1 || out.energy_ratio > 1        ? ForecastRange::Outside
+              : out.spin_parameter > 0.15 || out.energy_ratio > 0.1 ? ForecastRange::Beyond
+                                                                    : ForecastRange::Within;
+  if (out.range != ForecastRange::Outside) out.time = averagedReversalTime(modes, horizon);
   return out;
 }
 

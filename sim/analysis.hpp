@@ -63,6 +63,14 @@ std::optional<double> averagedReversalTime(const AveragedModes& modes, double ho
 /// none where it decays.
 std::optional<double> oneModeReversalTime(double n0, double k, double energy, double inertia);
 
+/// How far the averaged theory holds for a forecast (ReversalForecast), from the measured
+/// table of docs/physics.md P8.5.
+enum class ForecastRange {
+  Within,   ///< n²ρ/g ≤ 0.15 and the energy ratio ≤ 0.1: within about 3 % of a run
+  Beyond,   ///< either larger, up to 1: early by 5–20 %
+  Outside,  ///< either above 1: no forecast (Kane & Levinson's scene, 5.1: 60 % early)
+};
+
 /// The forecast for a model's initial tilt spun at `spin` about the body axis.
 struct ReversalForecast {
   bool applies = false;    ///< the body stands upright (Rest::stable)
@@ -75,6 +83,7 @@ struct ReversalForecast {
   /// without drag (docs/physics.md P8.5): 13 % early at 0.85, 3 % at 0.14, 1 % at 0.03.
   double spin_parameter = 0;
   double energy_ratio = 0;
+  ForecastRange range = ForecastRange::Outside;
   std::optional<double> time;  ///< s: the first zero of n within the horizon, if any
 };
 
@@ -104,6 +113,14 @@ inline bool turns(Direction direction, double spin) {
 }  // namespace sim
 
 namespace rb {
+template <>
+struct NameTable<sim::ForecastRange> {
+  static constexpr std::array<std::pair<sim::ForecastRange, std::string_view>, 3> entries{{
+      {sim::ForecastRange::Within, "within"},
+      {sim::ForecastRange::Beyond, "beyond"},
+      {sim::ForecastRange::Outside, "outside"},
+  }};
+};
 template <>
 struct NameTable<sim::Direction> {
   static constexpr std::array<std::pair<sim::Direction, std::string_view>, 3> entries{{

@@ -26,6 +26,12 @@ Eigen::Vector3d clean(const Eigen::Vector3d& v, double scale) {
   return {clean(v.x(), scale), clean(v.y(), scale), clean(v.z(), scale)};
 }
 
+// `value` where it means something, else null (a body that cannot stand has no modes).
+template <typename T>
+nlohmann::json orNull(bool meaningful, const T& value) {
+  return meaningful ? nlohmann::json(value) : nlohmann::json(nullptr);
+}
+
 }  // namespace
 
 // Where the mass properties came from (body.mass_properties), as analyze reports it.
@@ -86,13 +92,15 @@ nlohmann::json analysisJson(const sim::Model& model, double spin) {
   j["predicted_first_reversal"] = {
       {"theory", "averaged small-oscillation (Garcia & Hubbard 1988; docs/physics.md P8.5)"},
       {"applies", forecast.applies},
+      {"range", orNull(forecast.applies, std::string(rb::nameOf(forecast.range)))},
       {"time_s", forecast.time ? nlohmann::json(*forecast.time) : nlohmann::json(nullptr)},
       {"within_s", model.duration},
       {"spin", forecast.modes.spin},
       {"spin_parameter", forecast.spin_parameter},
-      {"energy_ratio", forecast.energy_ratio},
+      {"energy_ratio", orNull(forecast.applies, forecast.energy_ratio)},
       {"mode_energy_j",
-       {{"roll", forecast.modes.roll.energy}, {"pitch", forecast.modes.pitch.energy}}}};
+       orNull(forecast.applies, nlohmann::json{{"roll", forecast.modes.roll.energy},
+                                               {"pitch", forecast.modes.pitch.energy}})}};
   return j;
 }
 

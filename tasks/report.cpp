@@ -122,10 +122,15 @@ std::string forecastOf(const nlohmann::json& theory) {
   if (!f.is_object()) return "";
   std::string text = "<br>first reversal (averaged theory): ";
   if (field(f, "applies") == false) return text + "none: the body cannot stand";
+  const std::string measures = " (n²ρ/g " + number(field(f, "spin_parameter"), "%.2g") +
+                               ", rocking / spin energy " +
+                               number(field(f, "energy_ratio"), "%.2g") + ")";
+  if (field(f, "range") == "outside") return text + "outside its range" + measures;
   if (!field(f, "time_s").is_number())
-    return text + "none within " + number(field(f, "within_s"), "%g") + " s";
-  return text + "<b>" + number(field(f, "time_s"), "%.2f") + " s</b> (holds where n²ρ/g, here " +
-         number(field(f, "spin_parameter"), "%.2g") + ", is small)";
+    return text + "none within " + number(field(f, "within_s"), "%g") + " s" + measures;
+  return text + "<b>" + number(field(f, "time_s"), "%.2f") + " s</b>" + measures +
+         (field(f, "range") == "within" ? ", within its range: about 3 %"
+                                        : ", beyond its range: early by 5–20 %");
 }
 
 // The run's estimated errors (simulate --check, its sidecar's "check"); empty without one.
@@ -213,7 +218,8 @@ void writeAnalysis(std::ostream& out, const SceneFiles& f,
                    const std::optional<nlohmann::json>& theory,
                    const std::optional<nlohmann::json>& run) {
   if (!theory && !run) return;
-  out << "<table><tr><th>predicted (linearised rolling model)</th><th>measured (simulate)</th></tr>"
+  out << "<table><tr><th>predicted (linearised and averaged rolling model)</th><th>measured "
+         "(simulate)</th></tr>"
          "<tr><td>";
   if (theory) {
     const nlohmann::json& t = *theory;

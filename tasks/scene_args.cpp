@@ -18,7 +18,13 @@ std::string findShipped(const std::string& path) {
 }
 
 rb::Result<LoadedScene> loadScene(const std::string& path, const Overrides& o) {
-  auto loaded = scene::loadFile(findShipped(path));
+  const std::string file = findShipped(path);
+  auto loaded = [&]() -> rb::Result<scene::Loaded> {
+    if (o.values.empty()) return scene::loadFile(file);
+    auto text = scene::readSceneFile(file);
+    if (!text) return text.error();
+    return scene::loadWithValues(text.value(), file, o.values, o.option_prefix + "set");
+  }();
   if (!loaded) return loaded.error();
   return applyOverrides(std::move(loaded).value(), o);
 }
