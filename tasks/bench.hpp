@@ -28,6 +28,9 @@ struct BenchRow {
   std::string status = "ok";       ///< or the failure in full (CSV)
   std::string brief;               ///< the failure in a few words (table)
   double cost_median = NAN, cost_min = NAN, cost_max = NAN, us_per_step = NAN;
+  /// Wall time of the rung's run as a whole process (`rattleback simulate` with the rung's
+  /// settings: start-up, loading, the run and its telemetry), s, median of the repeats.
+  std::optional<double> process_s;
   std::optional<double> reversal, reversal_error, reversal_error_rolling;
   std::optional<double> spin_error, spin_error_rolling, energy_drift;
 };
@@ -35,6 +38,7 @@ struct BenchRow {
 /// A scene to bench: its spec and the body compiled once for every run.
 struct BenchScene {
   std::string name;  ///< the file's name
+  std::string path;  ///< where it was read
   sim::SceneSpec spec;
   std::shared_ptr<const sim::Body> body;
 };
@@ -50,7 +54,15 @@ struct BenchOptions {
   std::function<bool()> cancelled;               ///< asked before each rung (may be empty)
   std::function<void(const BenchRow&)> row;      ///< each row as it is measured
   std::function<void(const std::string&)> note;  ///< a line worth saying (may be empty)
+  /// Runs the program with these arguments as a process of its own and returns its wall time,
+  /// s, or nothing when it failed (may be empty: no process column).
+  std::function<std::optional<double>(const std::vector<std::string>&)> process;
 };
+
+/// The arguments of `rattleback simulate` that run `spec` (the scene file with the bench's
+/// changes put in by --set) for `duration` s, sampled as the bench samples, writing nothing.
+std::vector<std::string> processArguments(const BenchScene& scene, const sim::SceneSpec& spec,
+                                          double duration);
 
 /// Checks the options: known models and integrators, tolerances within 1e-14 … 0.1, duration
 /// > 0, repeats ≥ 1, rungs 1 … 12.

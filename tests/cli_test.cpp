@@ -16,6 +16,7 @@
 
 #include "render/image_io.hpp"
 #include "sim/compile.hpp"
+#include "sim/rollout.hpp"
 #include "tasks/bench.hpp"
 
 namespace fs = std::filesystem;
@@ -153,6 +154,36 @@ TEST(Cli, SetGivesAKeyAsTheFileWould) {
     EXPECT_EQ(lines(r.err), 1) << r.err;
     EXPECT_EQ(r.err.rfind("--set:", 0), 0u) << r.err;
   }
+}
+
+// bench's process column runs the rung's own run: the arguments it gives `simulate` (the
+// scene file with the rung's changes put in by --set) reproduce, bit for bit, the first
+// reversal of the spec run in this process (numbers pass as their shortest exact text).
+TEST(Cli, BenchsProcessRunsTheRungsOwnRun) {
+  auto scene_file = tasks::loadBenchScene(scene("rattleback"));
+  ASSERT_TRUE(scene_file) << scene_file.error().text();
+  sim::SceneSpec spec = scene_file->spec;
+  spec.contact.model = "smooth";
+  spec.contact.stiffness = 2.0e4;
+  spec.contact.damping = 0.1307;
+  spec.simulation = {"rk4", 1.6e-4, sim::kUnset, 2.5};
+  const fs::path csv = tempFile("process.csv");
+  std::vector<std::string> args = tasks::processArguments(scene_file.value(), spec, 2.5);
+  std::string line;
+  for (std::string& a : args) {
+    if (a == "/dev/null") a = csv.string();
+    line += " '" + a + "'";
+  }
+  ASSERT_EQ(rattleback(line).status, 0) << line;
+  std::ifstream in(csv.string() + ".json");
+  const nlohmann::json sidecar = nlohmann::json::parse(in);
+  auto compiled = sim::compile(spec);
+  ASSERT_TRUE(compiled) << compiled.error().text();
+  sim::Rollout run(std::move(compiled).value());
+  run.advanceTo(2.5);
+  ASSERT_TRUE(run.summary().first_reversal_s);
+  EXPECT_EQ(sidecar["result"]["first_reversal_s"].get<double>(), *run.summary().first_reversal_s)
+      << line;
 }
 
 TEST(Cli, UnwritableOutputIsReportedCleanly) {
