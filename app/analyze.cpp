@@ -75,8 +75,8 @@ void printTheory(std::FILE* out, const sim::Model& model, double spin) {
                  "no direction is predicted to reverse rather than the other)\n");
   else
     std::fprintf(out,
-                 "preferred        %s (%s seen from above); spun the other way it is "
-                 "predicted to reverse\n",
+                 "preferred        %s (%s seen from above): its rocking grows more slowly; "
+                 "spun the other way it is predicted to reverse sooner\n",
                  std::string(rb::nameOf(preferred)).c_str(),
                  preferred == sim::Direction::Ccw ? "counter-clockwise" : "clockwise");
   const sim::ReversalForecast forecast = sim::forecastFirstReversal(model, spin, model.duration);

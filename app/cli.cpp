@@ -229,6 +229,9 @@ const std::vector<CommandSpec>& commands() {
 Cli::Cli() {
   app.set_version_flag("--version", "rattleback " RATTLEBACK_VERSION);
   app.require_subcommand(1);
+  app.footer(
+      "Documentation: docs/ in the source (docs/getting-started.md first; bash scripts/docs.sh "
+      "builds it as a site into site/). rattleback COMMAND --help for a command's options.");
   for (const CommandSpec& spec : commands())
     spec.define(*app.add_subcommand(spec.name, spec.summary), *this);
 }

@@ -242,10 +242,10 @@ void printSummary(const SweepArgs& args, const std::optional<tasks::Shard>& shar
   if (plan.from_journal)
     std::printf(" (%zu from the journal of the interrupted run, %zu run now)", plan.from_journal,
                 plan.todo.size());
-  std::printf("\nwall time       %.3f s on %d threads (%.1f runs/s, of the %zu run now)\n",
-              run.wall_s, run.threads,
-              plan.todo.empty() ? 0.0 : static_cast<double>(plan.todo.size()) / run.wall_s,
-              plan.todo.size());
+  std::printf("\nwall time       %.3f s on %d thread%s: %zu run%s, %.1f a second\n", run.wall_s,
+              run.threads, run.threads == 1 ? "" : "s", plan.todo.size(),
+              plan.todo.size() == 1 ? "" : "s",
+              plan.todo.empty() ? 0.0 : static_cast<double>(plan.todo.size()) / run.wall_s);
   std::printf("table           %s\n", output.c_str());
   if (!args.plot.empty()) std::printf("plot            %s\n", args.plot.c_str());
 }

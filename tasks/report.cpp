@@ -560,7 +560,9 @@ void writePage(std::ostream& out, const fs::path& dir, const Folder& folder,
          "<title>rattleback: results</title><style>"
       << kStyle << "</style></head><body>\n<h1>rattleback: results</h1>\n"
       << "<p>What the runs left in this folder, by scene. Made by rattleback " RATTLEBACK_VERSION
-         " (<code>rattleback report</code>).</p>\n";
+         " (<code>rattleback report</code>). What each figure means: the documentation, "
+         "<code>docs/</code> in rattleback's source (<code>docs/getting-started.md</code> first; "
+         "<code>bash scripts/docs.sh</code> builds it as a site).</p>\n";
   // Scenes with videos first, then the rest, each in name order.
   std::vector<std::string> order;
   for (const auto& [name, files] : folder.scenes)

@@ -109,9 +109,14 @@ rb::Status checkRate(double rate, double duration) {
   if (!(rate > 0) || !std::isfinite(rate) || rate > 1e7)
     return rb::Status::fail("rate: samples per simulated second must be > 0 and at most 1e7, not " +
                             rb::show(rate));
-  if (duration * rate > 1e8)
+  // A row of the CSV is about 300 bytes (21 columns of shortest round-trip numbers): 1e7 rows
+  // are about 3 GB, more than any plot or fit needs; a rate typed with too many zeros (1e7 for
+  // 1e3: 7.4 GB over 2 s, written without a word before) is refused before anything is written.
+  if (duration * rate > 1e7)
     return rb::Status::fail("rate: " + rb::show(rate) + " Hz over " + rb::show(duration) +
-                            " s makes more than 1e8 rows; choose a lower rate");
+                            " s is " + rb::show(std::floor(duration * rate) + 1) + " rows, about " +
+                            rb::show(std::round(duration * rate * 300 / 1e8) / 10) +
+                            " GB of CSV; at most 1e7 rows (about 3 GB): choose a lower rate");
   return {};
 }
 

@@ -623,6 +623,16 @@ TEST(Cli, OptionErrorsNameTheOptionAndTheWayOut) {
                                  tempFile("x.csv").string());
   EXPECT_EQ(rate.status, 2);
   EXPECT_NE(rate.err.find("must be > 0 and at most 1e7, not 0"), std::string::npos) << rate.err;
+  // A rate with zeros too many (1e7 for 1e3) over 2 s: 2e7 rows, refused before any is written
+  // (it wrote 7.4 GB without a word).
+  const fs::path huge = tempFile("huge.csv");
+  const Result many = rattleback("simulate " + scene("rattleback") +
+                                 " --duration 2 --rate 1e7 -q -o " + huge.string());
+  EXPECT_EQ(many.status, 2);
+  EXPECT_EQ(lines(many.err), 1) << many.err;
+  EXPECT_NE(many.err.find("is 2e+07 rows, about 6 GB of CSV; at most 1e7 rows"), std::string::npos)
+      << many.err;
+  EXPECT_FALSE(fs::exists(huge));
   const Result adaptive = rattleback("simulate " + scene("kane-levinson") +
                                      " --integrator dopri5 -q -o " + tempFile("x.csv").string());
   EXPECT_EQ(adaptive.status, 2);
