@@ -202,11 +202,13 @@ std::optional<double> averagedReversalTime(const AveragedModes& m, double horizo
                    2 * (m.pitch.k * y(0) + m.pitch.decay) * y(2));
   };
   // Classical Runge–Kutta at 1/100 of the fastest rate's time: its error (h⁴) is far below the
-  // theory's own (first order in the spin).
+  // theory's own (first order in the spin). Not beyond 10⁵ of those times (10⁷ steps, well
+  // under a second): what grows has grown by then, and what decays stays gone.
   const double fastest =
       std::max({std::abs(m.roll.k * m.spin), std::abs(m.pitch.k * m.spin), std::abs(m.roll.decay),
                 std::abs(m.pitch.decay), m.drag / m.inertia, 1e-3});
   const double h = 0.01 / fastest;
+  horizon = std::min(horizon, 1e5 / fastest);
   Vector3 y(m.spin, m.roll.energy, m.pitch.energy);
   for (double t = 0; t < horizon && y(0) != 0; t += h) {
     const Vector3 k1 = rates(y), k2 = rates(y + 0.5 * h * k1), k3 = rates(y + 0.5 * h * k2),
