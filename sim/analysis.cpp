@@ -210,11 +210,18 @@ std::optional<double> averagedReversalTime(const AveragedModes& m, double horizo
   const double h = 0.01 / fastest;
   horizon = std::min(horizon, 1e5 / fastest);
   Vector3 y(m.spin, m.roll.energy, m.pitch.energy);
-  for (double t = 0; t < horizon && y(0) != 0; t += h) {
+  // A zero of n counts as docs/physics.md P7's rule counts a reversal: once n has gone on to 1 %
+  // of its start the new way. The sign is tested against the start's, not as n0·n1 ≤ 0: a spin
+  // dying away under drag (the default body spun +5 rad/s) reached 1e-163 rad/s by 6,270 s,
+  // where the product of two such spins underflows to zero and was taken for a crossing.
+  const double threshold = 0.01 * std::abs(m.spin);
+  std::optional<double> crossing;
+  double sign = m.spin > 0 ? 1 : -1;
+  for (double t = 0; t < horizon && m.spin != 0; t += h) {
     const Vector3 k1 = rates(y), k2 = rates(y + 0.5 * h * k1), k3 = rates(y + 0.5 * h * k2),
                   k4 = rates(y + h * k3);
     const Vector3 next = y + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
-    if (next(0) * y(0) <= 0) {
+    if (next(0) * sign <= 0 && y(0) * sign > 0) {
       // The zero on the cubic through the step's ends and slopes, by bisection.
       const double n0 = y(0), n1 = next(0), d0 = h * k1(0), d1 = h * rates(next)(0);
       auto cubic = [&](double s) {
@@ -226,10 +233,11 @@ std::optional<double> averagedReversalTime(const AveragedModes& m, double horizo
         const double mid = 0.5 * (lo + hi);
         (cubic(mid) * n0 > 0 ? lo : hi) = mid;
       }
-      const double when = t + h * 0.5 * (lo + hi);
-      if (when <= horizon) return when;
-      return std::nullopt;
+      crossing = t + h * 0.5 * (lo + hi);
+    } else if (crossing && next(0) * sign > 0) {
+      crossing.reset();  // back the old way before it got anywhere
     }
+    if (crossing && -next(0) * sign >= threshold) return *crossing;
     y = next;
   }
   return std::nullopt;

@@ -558,3 +558,15 @@ TEST(Forecast, IntegrationAgreesWithTheClosedForm) {
   m.pitch.energy = 7e-6;
   EXPECT_FALSE(sim::averagedReversalTime(m, 0.5 * closed));
 }
+
+// A spin that dies away is no reversal. The default body with its air drag, spun the preferred
+// way, has its spin decay to 1e-163 rad/s by 6,270 s, where the product of two successive spins
+// underflowed to zero and was forecast as a reversal there.
+TEST(Forecast, ASpinThatDiesAwayIsNoReversal) {
+  sim::SceneSpec spec = parse(kRolling);
+  spec.contact.air_drag = 5.9e-6;
+  spec.simulation.duration = 1e5;
+  const sim::Model model = build(spec);
+  EXPECT_FALSE(sim::forecastFirstReversal(model, 5, 1e5).time);
+  EXPECT_TRUE(sim::forecastFirstReversal(model, -5, 1e5).time);  // the other way it reverses
+}
