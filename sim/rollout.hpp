@@ -90,6 +90,9 @@ class Rollout {
   /// What the run did so far; its `last` is the telemetry at the time the last advanceTo asked
   /// for (or where the run stopped, when it stopped before it).
   const RunSummary& summary() const;
+  /// Wall-clock time spent stepping so far, s: summary().wall_s without sampling the last time
+  /// (for a budget checked at every sample).
+  double wallSeconds() const { return summary_.wall_s; }
 
  private:
   void stepOnce();

@@ -69,7 +69,7 @@ Trace runOnce(const sim::SceneSpec& spec, const std::shared_ptr<const sim::Body>
   for (double t : sim::sampleTimes(model.duration, kSampleRate)) {
     if (!rollout.advanceTo(t)) break;
     trace.samples.push_back(rollout.sampleAt(t));
-    if (rollout.summary().wall_s > kRunBudget) break;
+    if (rollout.wallSeconds() > kRunBudget) break;
   }
   const sim::RunSummary& summary = rollout.summary();
   trace.steps = summary.steps;

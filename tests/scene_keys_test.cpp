@@ -15,6 +15,7 @@
 
 #include "media/video_plan.hpp"
 #include "scene/keys.hpp"
+#include "support.hpp"
 
 namespace {
 
@@ -86,17 +87,6 @@ std::string normal(const std::string& yaml) {
   return out;
 }
 
-// The first error of a scene through loading, compiling and planning its video, or "".
-std::string errorOf(const std::string& yaml) {
-  auto loaded = scene::loadString(yaml, "inline.yaml");
-  if (!loaded) return loaded.error().text();
-  auto model = scene::loadModel(loaded.value());
-  if (!model) return model.error().text();
-  auto plan = media::planVideo(loaded.value(), model->duration);
-  if (!plan) return plan.error().text();
-  return "";
-}
-
 bool endsWith(const std::string& text, const std::string& end) {
   return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
 }
@@ -120,7 +110,7 @@ TEST(SceneKeys, EveryKeyLoadsItsValueIntoItsOwnMember) {
           adaptive ? std::set<std::string>{"simulation.dt", "simulation.integrator"}
                    : std::set<std::string>{};
       const std::string yaml = sampleScene(shape, leave_out);
-      ASSERT_EQ(errorOf(yaml), "") << yaml;
+      ASSERT_EQ(testing_support::errorFor(yaml), "") << yaml;
       auto loaded = scene::loadString(yaml, "inline.yaml");
       int checked = 0;
       for (const scene::Key& key : scene::keys()) {
@@ -151,8 +141,12 @@ TEST(SceneKeys, AnOptionalKeyLeftOutHoldsTheDocumentedDefault) {
     EXPECT_EQ(scene::valueOf(key, loaded.value()), scene::defaultOf(key)) << path;
   }
   // The step settings: one of the two, and the scene runs with either.
-  EXPECT_EQ(errorOf(sampleScene("paraboloid", {"simulation.dt", "simulation.integrator"})), "");
-  EXPECT_NE(errorOf(sampleScene("paraboloid", {"simulation.dt", "simulation.tolerance"})), "");
+  EXPECT_EQ(testing_support::errorFor(
+                sampleScene("paraboloid", {"simulation.dt", "simulation.integrator"})),
+            "");
+  EXPECT_NE(testing_support::errorFor(
+                sampleScene("paraboloid", {"simulation.dt", "simulation.tolerance"})),
+            "");
 }
 
 // A required key left out: refused with the loader's one line, naming the key and, where the
@@ -238,9 +232,11 @@ TEST(SceneKeys, AWordTakesEachOfItsChoicesAndNoOther) {
       ASSERT_TRUE(loaded) << path << ": " << word << ": " << loaded.error().text();
       EXPECT_EQ(scene::valueOf(key, loaded.value()), word);
       // Another key may object to the combination (rolling with a height), never this one.
-      EXPECT_EQ(errorOf(yaml).find(path + " must be"), std::string::npos) << errorOf(yaml);
+      EXPECT_EQ(testing_support::errorFor(yaml).find(path + " must be"), std::string::npos)
+          << testing_support::errorFor(yaml);
     }
-    const std::string refused = errorOf(sampleScene(shapeOf(key), {}, {{path, "zzz"}}));
+    const std::string refused =
+        testing_support::errorFor(sampleScene(shapeOf(key), {}, {{path, "zzz"}}));
     EXPECT_NE(refused.find(path + " must be"), std::string::npos) << refused;
     for (std::string_view name : key.choices())
       EXPECT_NE(refused.find(std::string(name)), std::string::npos) << refused;
@@ -258,7 +254,7 @@ TEST(SceneKeys, TheDocsCompleteSceneLoadsAndNamesEveryKey) {
   ASSERT_NE(heading, std::string::npos);
   const auto start = text.find("```yaml\n", heading) + 8;
   const std::string yaml = text.substr(start, text.find("```", start) - start);
-  EXPECT_EQ(errorOf(yaml), "") << yaml;
+  EXPECT_EQ(testing_support::errorFor(yaml), "") << yaml;
   for (const scene::Key& key : scene::keys())
     EXPECT_NE(yaml.find(std::string(scene::nameIn(key.path)) + ":"), std::string::npos) << key.path;
 }

@@ -154,18 +154,6 @@ std::string simulationErrorFor(const std::string& yaml) {
   return "";
 }
 
-// The one line `render` or `still` prints for a scene (which also checks its video section),
-// or "" when it can be drawn.
-std::string errorFor(const std::string& yaml) {
-  auto loaded = scene::loadString(yaml, "inline.yaml");
-  if (!loaded) return loaded.error().text();
-  auto model = scene::loadModel(loaded.value());
-  if (!model) return model.error().text();
-  auto plan = media::planVideo(loaded.value(), model->duration);
-  if (!plan) return plan.error().text();
-  return "";
-}
-
 // A case whose error is in the video section's values: only the drawing commands see it.
 bool videoValueCase(const BadCase& c) {
   return std::string(c.expected).find(": video.") != std::string::npos &&

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "media/video_plan.hpp"
 #include "scene/loader.hpp"
 #include "sim/compile.hpp"
 #include "sim/initial.hpp"
@@ -69,6 +70,18 @@ inline sim::SceneSpec parse(const std::string& yaml) {
     return {};
   }
   return loaded->spec;
+}
+
+/// The one line `render` or `still` prints for a scene (loading, compiling and planning its
+/// video), or "" when it can be drawn.
+inline std::string errorFor(const std::string& yaml) {
+  auto loaded = scene::loadString(yaml, "inline.yaml");
+  if (!loaded) return loaded.error().text();
+  auto model = scene::loadModel(loaded.value());
+  if (!model) return model.error().text();
+  auto plan = media::planVideo(loaded.value(), model->duration);
+  if (!plan) return plan.error().text();
+  return "";
 }
 
 /// The compiled model; a test failure (and an empty model) when the scene is refused.

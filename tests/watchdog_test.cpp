@@ -89,6 +89,7 @@ TEST(Watchdog, ARollingBodyOnTheRimStops) {
       << dog.message();
 }
 
+// (Times compare to 1e-12 s: the scripted step ends are k · 1e-3, rounded products.)
 TEST(Watchdog, OnlyTenMillisecondsInTheAirIsAFlight) {
   // A hop: 5 ms with no point below the floor at 1 s. No flight.
   sim::Watchdog hop(0, 1.0, false, "");
