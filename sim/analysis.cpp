@@ -29,6 +29,7 @@ Vector5d rollingRates(const Model& rolling, const Vector5d& y) {
   Kinematics k;
   k.R = tiltedBy(u);
   k.x_world.setZero();
+  k.w_body = w_body;
   k.w_world = k.R * w_body;
   k.v_world.setZero();
   const Eigen::Vector3d w_dot_body = k.R.transpose() * rollingMotion(rolling, k).w_dot_world;

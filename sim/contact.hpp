@@ -13,6 +13,7 @@ struct Kinematics {
   Eigen::Vector3d x_world;  ///< CM position, m
   Eigen::Vector3d v_world;  ///< CM velocity, m/s
   Eigen::Vector3d w_world;  ///< angular velocity, rad/s
+  Eigen::Vector3d w_body;   ///< the same in body axes, rad/s
 };
 
 Kinematics kinematicsOf(const Model& model, const State& s);

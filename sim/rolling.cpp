@@ -36,27 +36,28 @@ Eigen::Vector3d solveSymmetric(const Eigen::Matrix3d& A, const Eigen::Vector3d& 
 }  // namespace
 
 RollingMotion rollingMotion(const Model& model, const Kinematics& k) {
-  const double M = model.body->mass;
-  const ContactGeometry g = contactGeometry(model, k.R);
-  const Eigen::Vector3d& r = g.r_world;
-  const Eigen::Vector3d& w = k.w_world;
-  // The down direction turns in body axes as ḋ = −ω_body × d; the contact point follows.
-  const Eigen::Vector3d w_body = k.R.transpose() * w;
-  const Eigen::Vector3d down_rate = -w_body.cross(g.down_body);
-  const Eigen::Vector3d r_body_rate = model.body->surface.lowestPointRate(g.down_body, down_rate);
-  const Eigen::Vector3d r_rate = w.cross(r) + k.R * r_body_rate;
+  // In body axes, where the inertia is constant: the equations are between vectors, so they
+  // hold in any axes, and only the three results are turned into the world's.
+  const Body& body = *model.body;
+  const double M = body.mass;
+  const Eigen::Vector3d up = k.R.row(2).transpose();  // Rᵀ ẑ
+  const Eigen::Vector3d down = -up;
+  const Eigen::Vector3d r = lowestSurfacePoint(body, down);
+  const Eigen::Vector3d& w = k.w_body;
+  // The down direction turns in body axes as ḋ = −ω × d; the contact point follows.
+  const Eigen::Vector3d r_rate = w.cross(r) + body.surface.lowestPointRate(down, -w.cross(down));
 
-  const Eigen::Matrix3d I = k.R * model.body->inertia * k.R.transpose();
+  const Eigen::Matrix3d& I = body.inertia;
   const Eigen::Matrix3d A =
       I + M * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
   const Eigen::Vector3d rhs = -w.cross(I * w) - M * r.cross(w.cross(r_rate)) +
-                              M * model.gravity * r.cross(Eigen::Vector3d::UnitZ()) -
-                              model.contact.air_drag * w;
+                              M * model.gravity * r.cross(up) - model.contact.air_drag * w;
+  const Eigen::Vector3d w_dot = solveSymmetric(A, rhs);
+  const Eigen::Vector3d v_dot = -w_dot.cross(r) - w.cross(r_rate);
   RollingMotion out;
-  out.r_world = r;
-  out.w_dot_world = solveSymmetric(A, rhs);
-  const Eigen::Vector3d v_dot = -out.w_dot_world.cross(r) - w.cross(r_rate);
-  out.force_world = M * (v_dot + model.gravity * Eigen::Vector3d::UnitZ());
+  out.r_world = k.R * r;
+  out.w_dot_world = k.R * w_dot;
+  out.force_world = k.R * (M * (v_dot + model.gravity * up));
   return out;
 }
 

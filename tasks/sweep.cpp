@@ -3,6 +3,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstdio>
 #include <mutex>
 #include <thread>
@@ -186,7 +187,9 @@ SweepRun runSweep(const scene::Sweep& sweep, const scene::SweepScenes& scenes,
   Bodies bodies(sweep, rows);
   std::vector<std::optional<SweepRow>> results(rows.size());
   std::atomic<std::size_t> next{0}, finished{0};
-  std::atomic<int> running{0};
+  int running = 0;  // workers not yet done, under done_mutex
+  std::mutex done_mutex;
+  std::condition_variable done;
   std::stop_source stop;
   std::mutex finished_mutex;
   const auto start = std::chrono::steady_clock::now();
@@ -221,14 +224,24 @@ SweepRun runSweep(const scene::Sweep& sweep, const scene::SweepScenes& scenes,
           results[i] = std::move(row);
           ++finished;
         }
-        --running;
+        {
+          std::lock_guard lock(done_mutex);
+          --running;
+        }
+        done.notify_one();
       });
     }
-    while (running > 0) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    // Every 50 ms: Ctrl-C and the progress line; the last worker's end wakes this at once (a
+    // plain 50 ms sleep here had cost a sweep of 0.1 s a quarter of its time).
+    std::unique_lock lock(done_mutex);
+    while (!done.wait_for(lock, std::chrono::milliseconds(50), [&] { return running == 0; })) {
+      lock.unlock();
       if (options.cancelled && options.cancelled()) stop.request_stop();
       if (options.progress) options.progress(static_cast<std::int64_t>(finished));
+      lock.lock();
     }
+    lock.unlock();
+    if (options.progress) options.progress(static_cast<std::int64_t>(finished));
   }
   out.wall_s = since(start);
   out.interrupted = stop.stop_requested();
