@@ -35,6 +35,7 @@ const ELEVATION = 10 * DEG; // front and side look this far down (render/camera.
 const BACKGROUND = [0.93, 0.94, 0.96]; // the renderer's kBackground (sRGB)
 const VIEWS = ['oblique', 'above', 'front', 'side', 'follow'];
 const SPEEDS = [0.1, 0.25, 0.5, 1, 2, 4];
+const FORECAST_COLOR = '#7a3fd0'; // the forecast first reversal on the n(t) plot (violet)
 const UP = new Vector3(0, 0, 1);
 
 // ---------------------------------------------------------------------------------------------
@@ -259,6 +260,25 @@ function bodyGeometry(run) {
 
 const players = [];
 
+// The averaged theory's forecast of the first reversal, from the container's data-forecast
+// (analyze's "predicted_first_reversal", JSON): {time, range} when it applies (the body stands,
+// n²ρ/g and the rocking within the theory's reach: range not "outside") and falls within the
+// run, else null, as the report's text gives no time then.
+function forecastOf(container, t0, tEnd) {
+  const text = container.getAttribute('data-forecast');
+  if (!text) return null;
+  let f;
+  try {
+    f = JSON.parse(text);
+  } catch (e) {
+    return null;
+  }
+  if (!f || f.applies !== true || f.range === 'outside') return null;
+  if (typeof f.time_s !== 'number' || !Number.isFinite(f.time_s)) return null;
+  if (f.time_s < t0 || f.time_s > tEnd) return null;
+  return { time: f.time_s, range: typeof f.range === 'string' ? f.range : '' };
+}
+
 class Player {
   constructor(container, run) {
     this.container = container;
@@ -288,6 +308,7 @@ class Player {
     this.axis = new Vector3();
     this.forward = new Vector3();
     this.spinNow = run.spin[0];
+    this.forecast = forecastOf(container, this.t0, this.tEnd);
     this.qa = new Quaternion();
     this.qb = new Quaternion();
     this.buildDom();
@@ -377,7 +398,9 @@ class Player {
     side.appendChild(plotBox);
     const nrev = (this.run.reversals || []).length;
     side.appendChild(el('div', 'rbp-help',
-      `${nrev} reversal${nrev === 1 ? '' : 's'} (orange). Drag: orbit, right-drag: pan, wheel: zoom. ` +
+      `${nrev} reversal${nrev === 1 ? '' : 's'} (orange)` +
+      (this.forecast ? ', the averaged theory\'s forecast of the first (violet)' : '') +
+      '. Drag: orbit, right-drag: pan, wheel: zoom. ' +
       'Keys: space play/pause, ← → step one sample (' + formatStep(this.run.t) + ').'));
     root.append(main, side);
     c.appendChild(root);
@@ -832,6 +855,24 @@ class Player {
       g.stroke();
     }
     g.setLineDash([]);
+    // The averaged theory's forecast of the first reversal: a thin violet line, labelled.
+    if (this.forecast) {
+      const x = Math.round(L.x(this.forecast.time)) + 0.5;
+      g.strokeStyle = FORECAST_COLOR;
+      g.lineWidth = 1;
+      g.beginPath();
+      g.moveTo(x, box.top);
+      g.lineTo(x, box.bottom);
+      g.stroke();
+      g.fillStyle = FORECAST_COLOR;
+      g.font = '9px system-ui,sans-serif';
+      g.textBaseline = 'top';
+      // left of the line where it fits (the forecast is seldom late: the run's reversal, its
+      // dashed line, is then clear of the label)
+      const left = x - box.left > 44;
+      g.textAlign = left ? 'right' : 'left';
+      g.fillText('forecast', x + (left ? -2 : 2), box.top + 2);
+    }
     g.strokeStyle = '#2a2a2a';
     g.lineWidth = 1.3;
     g.beginPath();
@@ -1136,6 +1177,10 @@ class Player {
       setDrawAll(on) { self.alwaysAll = !!on; self.redrawAll = true; self.dirty = true; },
       // [frames drawn in part, frames drawn] since the player was built.
       drawCounts: () => [self.partialFrames, self.drawnFrames],
+      // The forecast first reversal marked on the n(t) plot (s), or null; and where its line
+      // is, in the plot canvas's pixels.
+      forecast: () => (self.forecast ? self.forecast.time : null),
+      forecastX: () => (self.forecast ? Math.round(self.plotLayout().x(self.forecast.time)) * self.plotLayout().dpr : null),
     };
   }
 }

@@ -9,6 +9,8 @@ and, for every .rb-player on it:
   - a player with run data is built (element.rbPlayer), one without shows a note instead;
   - the canvas shows red and blue pixels where the body is (the body's centre projects into
     their bounding box), and from above mostly red (the top is red);
+  - the n(t) plot marks the forecast first reversal (data-forecast) with a violet line and its
+    label when the forecast applies and falls within the run, and has no violet otherwise;
   - the read-outs show the time and the spin with its sense, at the slider's times;
   - the slider (its value set and an 'input' event dispatched) to times between samples gives
     the run's pose: the drawn quaternion equals the slerp of the data's two neighbouring samples
@@ -33,6 +35,7 @@ Exit status 0 when every check passes, 1 when one fails (each failure printed), 
 or Chromium is not installed (CTest's "skipped")."""
 import argparse
 import csv
+import json
 import math
 import pathlib
 import shutil
@@ -86,6 +89,22 @@ window.__rbPixels = function (element, snapshotName) {
   return {red, blue, box: [x0 / scale, y0 / scale, x1 / scale, y1 / scale], changed: before ? changed : -1,
           total: c.width * c.height, nonBackground, width: c.width, height: c.height};
 };
+"""
+
+# The n(t) plot's violet pixels (the forecast's line and label): in all, and in the canvas column
+# at x (device pixels) and its neighbours, with the plot box's height for scale.
+PLOT_JS = """
+const element = arguments[0], x = arguments[1];
+const c = element.querySelector('.rbp-plot');
+const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+let all = 0, column = 0;
+for (let i = 0, p = 0; i < d.length; i += 4, p++) {
+  const r = d[i], g = d[i + 1], b = d[i + 2];
+  if (!(b > 120 && b > r + 40 && r > g + 25)) continue;  // violet, not the grey, orange or red
+  all++;
+  if (x !== null && Math.abs(p % c.width - x) <= 1) column++;
+}
+return {all, column, height: c.height};
 """
 
 # Waits for two animation frames: whatever the last change asked to be drawn is drawn.
@@ -226,6 +245,26 @@ class Checker:
         # As loaded (the oblique view at the start): the body is drawn, its top red.
         px = self.pixels(element)
         self.check(px["red"] > 100, f"{where}: as loaded the canvas shows {px['red']} red pixels")
+        # The forecast first reversal (data-forecast, when it applies and falls within the run): a
+        # violet line across the n(t) plot at its time; none otherwise.
+        forecast = self.js("return arguments[0].getAttribute('data-forecast');", element)
+        forecast = json.loads(forecast) if forecast else None
+        expect = (forecast["time_s"] if forecast and forecast.get("applies") is True
+                  and forecast.get("range") != "outside" and isinstance(forecast.get("time_s"), (int, float))
+                  and t[0] <= forecast["time_s"] <= t[-1] else None)
+        got = self.hook(element, "forecast()")
+        self.check(got == expect, f"{where}: the plot's forecast is {got}, not {expect} (data-forecast {forecast})")
+        plot = self.js(PLOT_JS, element, self.hook(element, "forecastX()"))
+        if expect is None:
+            self.check(plot["all"] == 0, f"{where}: no forecast, yet {plot['all']} violet pixels on the n(t) plot")
+        else:
+            # the line spans the plot box (130 − 28 px tall at 1 px per CSS px)
+            self.check(plot["column"] >= 0.6 * plot["height"],
+                       f"{where}: the forecast line at t = {expect:.3f} s has {plot['column']} violet pixels "
+                       f"in its column of the n(t) plot ({plot['height']} tall)")
+            self.check(plot["all"] > plot["column"] + 20,
+                       f"{where}: the forecast line has no label ({plot['all'] - plot['column']} violet pixels beside it)")
+
         # Colours where the body is, from the side at the start: red top and blue bottom.
         self.hook(element, "setTime(arguments[1])", t[0])
         self.click_view(element, "side")

@@ -2,7 +2,8 @@
 """Writes a dev page for the report's 3D player into DIR, for check_player.py:
 
   DIR/index.html     two players (the default scene and Kane & Levinson's) and one whose run
-                     is missing, with the report's markup
+                     is missing, with the report's markup (data-forecast: the default scene's
+                     forecast applies, Kane & Levinson's is outside the theory's range)
   DIR/single.html    the default scene's player alone (keys work without focusing it)
   DIR/missing.html   one player whose run is missing, and no run data at all
   DIR/ID.player.js   each run's data (the C++ side's player_script, through the Python package)
@@ -13,6 +14,7 @@ Usage: make_page.py DIR [--bundle FILE] [--python BUILD_PYTHON_DIR]
 The package is imported from --python, else $RATTLEBACK_PYTHON, else <repo>/build/python."""
 import argparse
 import html
+import json
 import pathlib
 import shutil
 import subprocess
@@ -39,8 +41,21 @@ def page(title, players, scripts):
 """
 
 
+# Each run's forecast first reversal as the report passes it (data-forecast: analyze's
+# "predicted_first_reversal", here its fields the player reads; the times analyze gave for these
+# scenes): the default scene's applies (a line on the plot), Kane & Levinson's is outside the
+# theory's range (n²ρ/g 5.1: no line, as the report gives no time).
+FORECASTS = {
+    "rattleback": {"applies": True, "range": "beyond", "time_s": 2.1155056027782315, "within_s": 8.0},
+    "kl": {"applies": True, "range": "outside", "time_s": 1.0968102946398548, "within_s": 8.0},
+}
+
+
 def player_div(run_id, heading):
-    return f'<h2>{html.escape(heading)}</h2>\n<div class="rb-player" data-run="{html.escape(run_id)}"></div>'
+    forecast = FORECASTS.get(run_id)
+    data = f' data-forecast="{html.escape(json.dumps(forecast))}"' if forecast else ""
+    return (f'<h2>{html.escape(heading)}</h2>\n'
+            f'<div class="rb-player" data-run="{html.escape(run_id)}"{data}></div>')
 
 
 def main():
