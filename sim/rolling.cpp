@@ -37,7 +37,7 @@ Eigen::Vector3d solveSymmetric(const Eigen::Matrix3d& A, const Eigen::Vector3d& 
 
 RollingMotion rollingMotion(const Model& model, const Kinematics& k) {
   // In body axes, where the inertia is constant: the equations are between vectors, so they
-  // hold in any axes, and only the three results are turned into the world's.
+  // hold in any axes, and only the contact point and the force are turned into the world's.
   const Body& body = *model.body;
   const double M = body.mass;
   const Eigen::Vector3d up = k.R.row(2).transpose();  // Rᵀ ẑ
@@ -52,11 +52,10 @@ RollingMotion rollingMotion(const Model& model, const Kinematics& k) {
       I + M * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
   const Eigen::Vector3d rhs = -w.cross(I * w) - M * r.cross(w.cross(r_rate)) +
                               M * model.gravity * r.cross(up) - model.contact.air_drag * w;
-  const Eigen::Vector3d w_dot = solveSymmetric(A, rhs);
-  const Eigen::Vector3d v_dot = -w_dot.cross(r) - w.cross(r_rate);
   RollingMotion out;
+  out.w_dot_body = solveSymmetric(A, rhs);
+  const Eigen::Vector3d v_dot = -out.w_dot_body.cross(r) - w.cross(r_rate);
   out.r_world = k.R * r;
-  out.w_dot_world = k.R * w_dot;
   out.force_world = k.R * (M * (v_dot + model.gravity * up));
   return out;
 }

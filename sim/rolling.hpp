@@ -11,7 +11,7 @@ namespace sim {
 
 struct RollingMotion {
   Eigen::Vector3d r_world;      ///< CM → contact point, m
-  Eigen::Vector3d w_dot_world;  ///< angular acceleration, rad/s²
+  Eigen::Vector3d w_dot_body;   ///< angular acceleration, body axes, rad/s²
   Eigen::Vector3d force_world;  ///< the floor's force on the body, N
 };
 
