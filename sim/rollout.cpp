@@ -143,18 +143,20 @@ void Rollout::stepOnce() {
   min_cos_tilt_ =
       std::min(min_cos_tilt_,
                (q.w() * q.w() + q.z() * q.z() - q.x() * q.x() - q.y() * q.y()) / q.squaredNorm());
-  spin_ = angularVelocity(model_, current_).z();
+  // The step end's rotation and ω, once for the spin and the watchdog.
+  const Eigen::Matrix3d R = current_.q.normalized().toRotationMatrix();
+  const Eigen::Vector3d w = angularVelocity(*model_.body, R, current_.L_world);
+  spin_ = w.z();
   locateReversal(previous_spin, spin_);
-  if (current_.step % check_every_ == 0) watch();
+  if (current_.step % check_every_ == 0) watch(R, w);
 }
 
-void Rollout::watch() {
+void Rollout::watch(const Eigen::Matrix3d& R, const Eigen::Vector3d& w) {
   StepEnd end{current_.t, current_.step, nonFinite(current_)};
   if (!end.non_finite) {
     // Rolling keeps the body on the floor and has no spring: its energy needs no contact solve
     // (this runs every step or millisecond).
     if (active_.contact.model == ContactModel::Rolling) {
-      const Eigen::Vector3d w = angularVelocity(active_, current_);
       const double M = active_.body->mass, depth = active_.rolling_depth;
       end.energy = 0.5 * M * current_.v_world.squaredNorm() + 0.5 * w.dot(current_.L_world) +
                    M * active_.gravity * current_.x_world.z() +
@@ -165,7 +167,6 @@ void Rollout::watch() {
       end.contacts = now.contacts;
     }
     if (model_.contact.model == ContactModel::Rolling) {
-      const Eigen::Matrix3d R = current_.q.toRotationMatrix();
       if (model_.body->surface.lowestOnRim(-R.row(2).transpose()))
         end.rim_tilt_deg = std::acos(std::clamp(R(2, 2), -1.0, 1.0)) * 180.0 / M_PI;
     }

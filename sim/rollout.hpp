@@ -97,7 +97,8 @@ class Rollout {
  private:
   void stepOnce();
   /// Feeds the watchdog the end of the last step; records its stop.
-  void watch();
+  /// The watchdog's look at the step's end, whose rotation and ω (world) are R and w.
+  void watch(const Eigen::Matrix3d& R, const Eigen::Vector3d& w);
   State interpolate(double t) const;
   /// The cubic Hermite interpolant between a and b with their rates (packed as the state).
   State hermite(const State& a, const Eigen::Matrix<double, 13, 1>& rates_a, const State& b,
