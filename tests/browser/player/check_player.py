@@ -537,8 +537,12 @@ def main():
     profile = tempfile.mkdtemp(prefix="rattleback-chromium-")
     for flag in ["--headless=new", "--no-sandbox", "--disable-quic", "--no-first-run",
                  "--disable-background-networking", "--disable-component-update", "--disable-sync",
-                 # WebGL on the CPU (SwiftShader through ANGLE): no GPU needed
+                 # WebGL on the CPU (SwiftShader through ANGLE): no GPU needed; the page
+                 # composited on the CPU, as Chromium does by itself on a machine without a GPU
+                 # (compositing on SwiftShader instead cost ~30 ms of CPU a frame, whole window:
+                 # bench/player_speed.py's swiftshader-gl against as-installed)
                  "--use-gl=angle", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+                 "--disable-gpu-compositing",
                  "--force-device-scale-factor=1", "--window-size=1700,1100",
                  f"--user-data-dir={profile}"]:
         options.add_argument(flag)
