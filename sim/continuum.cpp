@@ -151,7 +151,7 @@ Moments10 slab(const Surfaces& s, double x) {
 // Gauss–Kronrod 31-point estimate over [a, b] (Boost.Math's nodes and weights), with the
 // embedded 15-point Gauss estimate and the L1 integral of each component.
 struct Estimate {
-  Moments10 kronrod, gauss, l1;
+  Moments10 kronrod = Moments10::Zero(), gauss = Moments10::Zero(), l1 = Moments10::Zero();
 };
 
 template <class F>
@@ -178,14 +178,16 @@ Estimate gaussKronrod(const F& f, double a, double b) {
 
 // Adaptive bisection: an interval is accepted when Kronrod and Gauss agree within its share of
 // the tolerance (halved with each split) in every component.
+// `e` is the estimate over [a, b] itself (the first level's comes from the pass that set the
+// scales: computing it twice had been half of a dented body's cubature when no piece splits).
 template <class F>
-Moments10 adaptive(const F& f, double a, double b, const Moments10& tolerance, int depth) {
-  const Estimate e = gaussKronrod(f, a, b);
+Moments10 adaptive(const F& f, double a, double b, const Estimate& e, const Moments10& tolerance,
+                   int depth) {
   if (((e.kronrod - e.gauss).cwiseAbs().array() <= tolerance.array()).all() || depth == 0)
     return e.kronrod;
   const double mid = 0.5 * (a + b);
-  return adaptive(f, a, mid, tolerance / 2, depth - 1) +
-         adaptive(f, mid, b, tolerance / 2, depth - 1);
+  return adaptive(f, a, mid, gaussKronrod(f, a, mid), tolerance / 2, depth - 1) +
+         adaptive(f, mid, b, gaussKronrod(f, mid, b), tolerance / 2, depth - 1);
 }
 
 VolumeMoments momentsOf(const Moments10& m) {
@@ -303,9 +305,12 @@ VolumeMoments cubatureMoments(const Paraboloid& shape, const std::optional<Dents
   std::sort(xs.begin(), xs.end());
 
   auto f = [&](double x) { return slab(surfaces, x); };
+  std::vector<Estimate> pieces;
   Moments10 l1 = Moments10::Zero();
-  for (std::size_t k = 0; k + 1 < xs.size(); ++k)
-    if (xs[k + 1] > xs[k]) l1 += gaussKronrod(f, xs[k], xs[k + 1]).l1;
+  for (std::size_t k = 0; k + 1 < xs.size(); ++k) {
+    pieces.push_back(xs[k + 1] > xs[k] ? gaussKronrod(f, xs[k], xs[k + 1]) : Estimate{});
+    l1 += pieces.back().l1;
+  }
   // Each moment's scale: ∫|integrand|, and at least V·R^n for a moment of n lengths beyond the
   // volume (R the body's largest extent), so a moment that is zero by symmetry is held to the
   // others' scale instead of to its own rounding noise.
@@ -315,7 +320,8 @@ VolumeMoments cubatureMoments(const Paraboloid& shape, const std::optional<Dents
   Moments10 total = Moments10::Zero();
   for (std::size_t k = 0; k + 1 < xs.size(); ++k)
     if (xs[k + 1] > xs[k])
-      total += adaptive(f, xs[k], xs[k + 1], tolerance * l1 * (xs[k + 1] - xs[k]) / (2 * half), 50);
+      total += adaptive(f, xs[k], xs[k + 1], pieces[k],
+                        tolerance * l1 * (xs[k + 1] - xs[k]) / (2 * half), 50);
   return momentsOf(total);
 }
 
