@@ -509,10 +509,17 @@ void writeScene(std::ostream& out, const fs::path& dir, const std::string& name,
   if (f.has("-analysis.json")) theory = readJson(dir / f.at("-analysis.json"));
   if (f.has(".csv.json")) run = readJson(dir / f.at(".csv.json"));
   writeVideos(out, f, theory, run);
-  if (player)
+  if (player) {
+    // The averaged theory's forecast first reversal, for the player's n(t) plot
+    // (player/README.md: data-forecast; the player marks it when it applies).
+    std::string forecast;
+    if (theory && field(*theory, "predicted_first_reversal").is_object())
+      forecast =
+          " data-forecast=\"" + escape(field(*theory, "predicted_first_reversal").dump()) + "\"";
     out << "<h3>Turn it around</h3><p>The run replayed in 3D: drag to orbit, scroll to zoom, "
            "space plays and pauses, arrows step.</p><div class=\"rb-player\" data-run=\""
-        << escape(name) << "\"></div>\n";
+        << escape(name) << "\"" << forecast << "></div>\n";
+  }
   writeAnalysis(out, f, theory, run);
   for (const std::string& file : f.more_videos)
     out << "<figure><video src=\"" << escape(file) << "\" muted loop playsinline controls "

@@ -13,7 +13,8 @@ scene=scenes/rattleback.yaml
 "$rb" render "$scene" --both --duration 2 --size 320x180 -q -o "$dir/rattleback.mp4"
 "$rb" still "$scene" --spin -5 --size 320x180 -q -o "$dir/rattleback-reversed.png"
 for view in oblique above; do "$rb" still "$scene" --view "$view" --t 1 --size 320x180 -q -o "$dir/rattleback-$view.png"; done
-"$rb" simulate "$scene" --duration 2 -o "$dir/rattleback.csv" --plot "$dir" -q
+# 3 s of telemetry: the averaged theory's forecast first reversal (2.12 s) falls within it.
+"$rb" simulate "$scene" --duration 3 -o "$dir/rattleback.csv" --plot "$dir" -q
 "$rb" analyze "$scene" > "$dir/rattleback-analysis.txt"
 "$rb" analyze "$scene" --json > "$dir/rattleback-analysis.json"
 "$rb" bench "$scene" --duration 0.5 --rungs 1 --repeats 1 --models rolling --integrators rk4 -q \
@@ -27,6 +28,8 @@ if grep -q "$dir" "$dir/index.html"; then echo "FAIL: index.html holds absolute 
 if [ -f "$dir/rattleback-player.js" ]; then
   grep -q 'class="rb-player" data-run="rattleback"' "$dir/index.html" ||
     { echo "FAIL: the page has no player for the scene with telemetry"; exit 1; }
+  grep -q 'data-forecast="{' "$dir/index.html" ||
+    { echo "FAIL: the player has no data-forecast from the scene's analysis"; exit 1; }
   /usr/bin/python3 "$source_dir/tests/browser/player/check_player.py" "$dir"
 else
   echo "note: no player bundle (the build had no node/npm); the player is not checked"
