@@ -32,9 +32,12 @@ class PiStepAdjuster {
   }
   double increase_step(double dt, double error, int /*stepper_order*/) {
     error = std::max(error, 1e-4);  // Hairer's floor: a vanishing error grows h at most 10×
-    double factor = kSafety * std::pow(error, -kExponent) * std::pow(previous_, kBeta);
+    // err^−(1/5 − 0.75β) · err_prev^β as one exponential of logarithms, the last one kept (two
+    // pow calls had been 4 % of a run's instructions).
+    const double log_error = std::log(error);
+    double factor = kSafety * std::exp(kBeta * previous_log_ - kExponent * log_error);
     factor = std::clamp(factor, kLeast, rejected_ ? 1.0 : kMost);
-    previous_ = error;
+    previous_log_ = log_error;
     rejected_ = false;
     return dt * factor;
   }
@@ -44,7 +47,7 @@ class PiStepAdjuster {
  private:
   static constexpr double kBeta = 0.04, kExponent = 0.2 - 0.75 * kBeta, kSafety = 0.9;
   static constexpr double kLeast = 0.2, kMost = 10;
-  double previous_ = 1e-4;
+  double previous_log_ = std::log(1e-4);
   bool rejected_ = false;
 };
 
