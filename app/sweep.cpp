@@ -193,10 +193,19 @@ rb::Result<Plan> planRows(const SweepArgs& args, const scene::Sweep& sweep,
                           const std::optional<tasks::Shard>& shard, const std::string& output) {
   Plan plan;
   plan.rows = tasks::shardRows(sweep, shard);
+  const std::string journal = tasks::Journal::pathOf(output);
   if (args.resume) {
-    auto kept = tasks::Journal::read(tasks::Journal::pathOf(output), sweep, plan.rows);
+    auto kept = tasks::Journal::read(journal, sweep, plan.rows);
     if (!kept) return kept.error();
     plan.done = std::move(kept).value();
+  } else if (std::error_code ec; std::filesystem::exists(journal, ec)) {
+    // Finished runs of this very sweep are not thrown away by a command typed without
+    // --resume (a journal of a changed sweep is no use to it, and is begun afresh).
+    auto kept = tasks::Journal::read(journal, sweep, plan.rows);
+    if (kept && !kept->empty())
+      return rb::Error{"", journal + ": holds " + std::to_string(kept->size()) +
+                               " finished runs of an interrupted run of this sweep; give "
+                               "--resume to run only the rest, or remove it to start again"};
   }
   for (std::int64_t r : plan.rows)
     if (!plan.done.count(r)) plan.todo.push_back(r);

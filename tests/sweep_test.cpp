@@ -309,6 +309,15 @@ TEST(Sweep, AnInterruptKeepsTheFinishedRowsAndResumeCompletesThem) {
   EXPECT_LT(kept_rows, 161);
   EXPECT_NE(slurp(dir / "stderr").find("--resume"), std::string::npos);
 
+  // The same command typed again without --resume keeps the journal and says how to go on.
+  const Outcome again = rattleback(dir, "sweep " + sweep.string() + " -q -o " + table.string());
+  EXPECT_EQ(again.status, 2);
+  EXPECT_NE(again.err.find("holds " + std::to_string(kept_rows) + " finished runs"),
+            std::string::npos)
+      << again.err;
+  EXPECT_EQ(slurp(journal), kept);
+  EXPECT_FALSE(fs::exists(table));
+
   const Outcome resumed =
       rattleback(dir, "sweep " + sweep.string() + " --resume -o " + table.string());
   ASSERT_EQ(resumed.status, 0) << resumed.err;
