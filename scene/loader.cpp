@@ -336,8 +336,20 @@ rb::Result<Loaded> loadFile(const std::string& path) {
   return loadString(text.value(), path);
 }
 
+// The option or sweep line that set `key`, a key inside it (body.grid's error for a varied
+// body.grid.dx), or the map around it.
+std::map<std::string, std::string>::const_iterator overrideOf(const Loaded& loaded,
+                                                              const std::string& key) {
+  if (auto it = loaded.overrides.find(key); it != loaded.overrides.end() || key.empty()) return it;
+  for (auto it = loaded.overrides.begin(); it != loaded.overrides.end(); ++it)
+    if (it->first.rfind(key + ".", 0) == 0) return it;
+  for (auto it = loaded.overrides.begin(); it != loaded.overrides.end(); ++it)
+    if (key.rfind(it->first + ".", 0) == 0) return it;
+  return loaded.overrides.end();
+}
+
 rb::Error locate(const Loaded& loaded, const rb::Error& error) {
-  if (auto it = loaded.overrides.find(error.key); it != loaded.overrides.end()) {
+  if (auto it = overrideOf(loaded, error.key); it != loaded.overrides.end()) {
     // An option (--fps) is named alone, not with the key it sets; a sweep's line with it.
     const bool option = it->second.rfind("--", 0) == 0 || it->second.rfind("argument ", 0) == 0;
     rb::Error e{"", printable(it->second + ": " + (option ? "" : error.key + " ") + error.message)};

@@ -252,6 +252,22 @@ TEST(Sweep, ABadValueRefusesItsRowOnly) {
   EXPECT_EQ(rows[2][4], "");
 }
 
+// An error about the map around the varied key (the grid as a whole, for a spacing typed as
+// 1e-9) is named at the sweep file's line too, not at the base scene's first line.
+TEST(Sweep, AnErrorAboutTheVariedKeysMapNamesTheSweepsLine) {
+  const fs::path dir = scratch();
+  const fs::path sweep =
+      writeSweep(dir, "base: " + kBase + "\nvary:\n  body.grid.dx: [0.05, 1e-9]\nduration: 0.01\n");
+  const Outcome r =
+      rattleback(dir, "sweep " + sweep.string() + " -q -o " + (dir / "t.csv").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = readCsv(slurp(dir / "t.csv"));
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[1][2], "ok");
+  EXPECT_EQ(rows[2][2].rfind("refused: " + sweep.string() + ":3: body.grid makes about", 0), 0u)
+      << rows[2][2];
+}
+
 // A row whose run stops (rolling cannot hold the default body spun at 45 rad/s: it tips onto
 // its rim, past 50°) says why, and still gives its largest tilt, past the 50° it stopped at;
 // the values only a finished run has stay empty.
