@@ -31,11 +31,18 @@ rb::Status makeParentFolder(const std::string& path) {
   std::error_code ec;
   if (fs::is_directory(parent, ec)) return {};
   fs::create_directories(parent, ec);
-  if (ec)
-    return rb::Status::fail(path + ": cannot make its folder " + parent.string() + ": " +
-                            ec.message() +
-                            " (run from a folder you can write to, or give -o a path there)");
-  return {};
+  if (!ec) return {};
+  // A file where a folder of the path should be is the cause to name (its own message,
+  // "Not a directory", says neither which nor what to do).
+  for (fs::path up = parent; !up.empty() && up != up.parent_path(); up = up.parent_path()) {
+    std::error_code e;
+    if (fs::exists(up, e) && !fs::is_directory(up, e))
+      return rb::Status::fail(path + ": cannot make its folder " + parent.string() + ": " +
+                              up.string() + " is a file, not a folder (give -o another path)");
+  }
+  return rb::Status::fail(path + ": cannot make its folder " + parent.string() + ": " +
+                          ec.message() +
+                          " (run from a folder you can write to, or give -o a path there)");
 }
 
 void registerTemporary(const std::string& temp) {
@@ -84,7 +91,12 @@ rb::Result<AtomicOutput> AtomicOutput::open(const std::string& path) {
   errno = 0;
   file.out_.open(in_place ? file.target_ : file.temp_, std::ios::binary | std::ios::trunc);
   if (!file.out_)
-    return rb::Error{"", path + ": cannot write: " + std::strerror(errno ? errno : EACCES)};
+    return rb::Error{"", path + ": cannot write a file in " +
+                             (fs::path(file.target_).parent_path().empty()
+                                  ? std::string("this folder")
+                                  : fs::path(file.target_).parent_path().string()) +
+                             ": " + std::strerror(errno ? errno : EACCES) +
+                             " (give the output a path in a folder you can write)"};
   if (!in_place) registerTemporary(file.temp_);
   return file;
 }

@@ -657,8 +657,18 @@ TEST(Cli, OutputFoldersAreMadeOrRefusedInOneLine) {
   std::stringstream err;
   err << in.rdbuf();
   EXPECT_EQ(lines(err.str()), 1) << err.str();
-  EXPECT_NE(err.str().find("out/rattleback.csv: cannot make its folder out"), std::string::npos)
+  EXPECT_NE(err.str().find("out/rattleback.csv: cannot make its folder out: out is a file, not a "
+                           "folder"),
+            std::string::npos)
       << err.str();
+  // A folder where no file can be made: named, with the way out.
+  const Result proc =
+      rattleback("simulate " + scene("rattleback") + " --duration 0.1 -q -o /proc/x.csv");
+  EXPECT_EQ(proc.status, 2);
+  EXPECT_EQ(lines(proc.err), 1) << proc.err;
+  EXPECT_NE(proc.err.find("/proc/x.csv: cannot write a file in /proc: "), std::string::npos)
+      << proc.err;
+  EXPECT_NE(proc.err.find("a folder you can write"), std::string::npos) << proc.err;
 
   const fs::path nested = scratchDir() / "new" / "deeper" / "x.csv";
   fs::remove_all(scratchDir() / "new");
