@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -10,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "scene/key_path.hpp"
 #include "scene/keys.hpp"
@@ -226,11 +228,56 @@ rb::Error located(const std::string& file, int line, const std::string& key,
   return e;
 }
 
-rb::Error malformed(const std::string& name, const YAML::Exception& e) {
-  const int line = e.mark.is_null() ? 1 : e.mark.line + 1;
-  rb::Error error{"", printable(name + ":" + std::to_string(line) + ": malformed YAML: " + e.msg)};
+}  // namespace
+
+int unclosedFlowLine(const std::string& text) {
+  std::vector<int> open;  // the lines of the brackets not yet closed
+  int line = 1;
+  char quote = 0;
+  bool comment = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '\n') {
+      ++line;
+      comment = false;
+      if (quote == '\'') quote = 0;  // a single-quoted scalar on one line, as scenes write them
+      continue;
+    }
+    if (comment) continue;
+    if (quote) {
+      if (c == quote && !(quote == '"' && i > 0 && text[i - 1] == '\\')) quote = 0;
+    } else if (c == '"' || c == '\'') {
+      quote = c;
+    } else if (c == '#' && (i == 0 || std::isspace(static_cast<unsigned char>(text[i - 1])))) {
+      comment = true;
+    } else if (c == '{' || c == '[') {
+      open.push_back(line);
+    } else if ((c == '}' || c == ']') && !open.empty()) {
+      open.pop_back();
+    }
+  }
+  return open.empty() ? 0 : open.back();
+}
+
+rb::Error malformedYaml(const std::string& name, const std::string& text,
+                        const YAML::Exception& e) {
+  int line = e.mark.is_null() ? 1 : e.mark.line + 1;
+  std::string message = e.msg;
+  if (e.msg.find("flow not found") != std::string::npos)
+    if (const int opened = unclosedFlowLine(text); opened > 0) {
+      line = opened;
+      message = "a { or [ on this line is never closed (" + e.msg + ")";
+    }
+  rb::Error error{"",
+                  printable(name + ":" + std::to_string(line) + ": malformed YAML: " + message)};
   error.where = rb::Error::Where{name, line, ""};
   return error;
+}
+
+namespace {
+
+rb::Error malformed(const std::string& name, const YAML::Exception& e) {
+  return malformedYaml(name, "", e);
 }
 
 }  // namespace
@@ -267,7 +314,7 @@ rb::Result<Loaded> loadString(const std::string& yaml, const std::string& name) 
   try {
     root = YAML::Load(yaml);
   } catch (const YAML::Exception& e) {
-    return malformed(name, e);  // syntax errors: yaml-cpp knows the line but no key
+    return malformedYaml(name, yaml, e);  // syntax errors: yaml-cpp knows the line but no key
   }
   return loadTree(root, name, {});
 }
@@ -278,7 +325,7 @@ rb::Result<Loaded> loadWithValues(const std::string& yaml, const std::string& na
   try {
     root = YAML::Load(yaml);
   } catch (const YAML::Exception& e) {
-    return malformed(name, e);
+    return malformedYaml(name, yaml, e);
   }
   if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
   std::map<std::string, std::string> places;

@@ -45,6 +45,11 @@ rb::Result<std::string> readSceneFile(const std::string& path);
 /// `name` stands for the file in messages.
 rb::Result<Loaded> loadString(const std::string& yaml, const std::string& name);
 
+/// The 1-based line of the last `{` or `[` in YAML text that is never closed (outside quotes
+/// and comments), or 0. yaml-cpp reports an unclosed flow map or list ("end of map flow not
+/// found") at the end of the file, where nothing is wrong; this is the line to name.
+int unclosedFlowLine(const std::string& text);
+
 /// "file:line: key message" for an error found in a loaded scene (by compile() or a video
 /// check); a key set from the command line is named by its option instead.
 std::string describe(const Loaded& loaded, const rb::Error& error);

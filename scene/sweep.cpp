@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <mutex>
 #include <set>
@@ -181,14 +183,14 @@ rb::Result<Sweep> loadSweep(const std::string& path) {
                              ": is a folder, not a sweep file (give a .yaml file, e.g. "
                              "sweeps/spin-drag.yaml)"};
   if (!fs::exists(path, ec)) return rb::Error{"", path + ": no such sweep file"};
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return rb::Error{"", path + ": cannot open the sweep file"};
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   YAML::Node root;
   try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    return rb::Error{"", path + ": cannot open the sweep file"};
+    root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
-    const int line = e.mark.is_null() ? 1 : e.mark.line + 1;
-    return rb::Error{"", path + ":" + std::to_string(line) + ": malformed YAML: " + e.msg};
+    return malformedYaml(path, text, e);
   }
   auto at = [&](const YAML::Node& node) { return path + ":" + std::to_string(lineOf(node)); };
   try {

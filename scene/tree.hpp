@@ -16,6 +16,10 @@ inline int lineOf(const YAML::Node& node) {
   return node.Mark().is_null() ? 1 : node.Mark().line + 1;
 }
 
+/// "NAME:LINE: malformed YAML: …" for a parse error in `text` (an unclosed bracket named at
+/// the line that opened it).
+rb::Error malformedYaml(const std::string& name, const std::string& text, const YAML::Exception& e);
+
 /// As loadString, from a parsed tree. `places` maps dotted keys that were set from elsewhere
 /// to where ("sweeps/x.yaml:4"): an error in such a key (or inside it) names that place.
 rb::Result<Loaded> loadTree(const YAML::Node& root, const std::string& name,

@@ -225,6 +225,20 @@ TEST(BadScenes, MalformedYamlNamesTheLine) {
   EXPECT_EQ(errorFor("- 1\n- 2\n").rfind("inline.yaml:1: scene must be a map", 0), 0u);
 }
 
+// yaml-cpp reports an unclosed { or [ at the end of the file; the error names the line that
+// opened it (a new user's file of 10 lines was told "line 11: end of map flow not found").
+TEST(BadScenes, AnUnclosedBracketIsNamedWhereItOpens) {
+  const std::string message = errorFor(
+      "units: {length: 0.01}\nbody:\n  paraboloid: {a: 1, p: 0.5, s: 0.03, top: 0.5\n"
+      "  mass: 0.05\ngravity: 9.81\n");
+  EXPECT_EQ(
+      message.rfind("inline.yaml:3: malformed YAML: a { or [ on this line is never closed", 0), 0u)
+      << message;
+  // Brackets in quotes and comments are not counted; the last one left open is named.
+  EXPECT_EQ(scene::unclosedFlowLine("a: \"{\"  # {\nb: [1, 2]\nc: {d: [1\ne: 2\n"), 3);
+  EXPECT_EQ(scene::unclosedFlowLine("a: {b: '['}\nc: [1, {d: 2}]\n"), 0);
+}
+
 TEST(BadScenes, AMissingFileIsNamedWithTheSystemsReason) {
   auto loaded = scene::loadFile("/nonexistent/scene.yaml");
   ASSERT_FALSE(loaded.ok());
