@@ -23,7 +23,14 @@ int zLevels(const Paraboloid& shape, double dz) {
 }  // namespace
 
 Paraboloid::Paraboloid(double a_, double p_, double q_, double s_, double top_)
-    : a(a_), p(p_), q(q_), s(s_), top(top_) {
+    : a(a_),
+      p(p_),
+      q(q_),
+      s(s_),
+      top(top_),
+      xx_(p_ / (2 * a_)),
+      xy_(q_ / (a_ * a_)),
+      yy_(s_ / (2 * a_)) {
   Eigen::Matrix2d hessian;
   hessian << p / a, q / (a * a), q / (a * a), s / a;
   hessian_inv = hessian.inverse();
@@ -48,7 +55,10 @@ bool Paraboloid::lowestOnRim(const Eigen::Vector3d& down) const {
 }
 
 Eigen::Vector3d Paraboloid::lowestPointOfBody(const Eigen::Vector3d& down) const {
-  if (!lowestOnRim(down)) return lowestPoint(down);
+  // lowestOnRim's test, with the point it finds kept (it was found twice an evaluation).
+  if (down.z() < 0)
+    if (const Eigen::Vector3d bottom_point = lowestPoint(down); bottom_point.z() <= top)
+      return bottom_point;
   const Eigen::Matrix2d& inverse = hessian_inv;
   const Eigen::Vector2d d = down.head<2>();
   const double norm = std::sqrt(d.dot(inverse * d));

@@ -22,9 +22,7 @@ struct Paraboloid {
 
   Paraboloid(double a_, double p_, double q_, double s_, double top_);
   /// Height of the bottom surface above (x, y), m.
-  double bottom(double x, double y) const {
-    return p / (2 * a) * x * x + q / (a * a) * x * y + s / (2 * a) * y * y - a;
-  }
+  double bottom(double x, double y) const { return xx_ * x * x + xy_ * x * y + yy_ * y * y - a; }
   /// Half-widths of the top rim ellipse along x and y, m.
   Eigen::Vector2d rimHalfWidths() const;
   /// The point of the bottom surface lowest along `down` (a unit vector in the geometric
@@ -43,6 +41,9 @@ struct Paraboloid {
   /// there). m/s.
   Eigen::Vector3d lowestPointRate(const Eigen::Vector3d& down,
                                   const Eigen::Vector3d& down_rate) const;
+
+ private:
+  double xx_, xy_, yy_;  // p/(2a), q/a², s/(2a): bottom()'s coefficients, divided once
 };
 
 /// Two dents z = p/(2a k²)(x ∓ m_x)² + s/(2a k²)(y ∓ m_y)² − (a − inset) k cut from
