@@ -9,8 +9,7 @@ Kinematics kinematicsOf(const Model& model, const State& s) {
   k.R = s.q.toRotationMatrix();  // q is a unit quaternion (the adaptive stepper normalises its own)
   k.x_world = s.x_world;
   k.v_world = s.v_world;
-  // ω = R I⁻¹ Rᵀ L (model.hpp's angularVelocity), keeping the body axes' ω on the way.
-  k.w_body = model.body->inertia_inv * (k.R.transpose() * s.L_world);
+  k.w_body = bodyAngularVelocity(*model.body, k.R, s.L_world);
   k.w_world = k.R * k.w_body;
   return k;
 }

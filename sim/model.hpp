@@ -150,10 +150,16 @@ inline Eigen::Vector3d lowestSurfacePoint(const Body& body, const Eigen::Vector3
   return body.surface.lowestPoint(down_body) - body.com_geometric;
 }
 
-/// ω_world = R I⁻¹ Rᵀ L (rad/s) for rotation R (body → world): the one place this is written.
+/// ω in body axes, I⁻¹ Rᵀ L (rad/s), for rotation R (body → world): the one place this is
+/// written.
+inline Eigen::Vector3d bodyAngularVelocity(const Body& body, const Eigen::Matrix3d& R,
+                                           const Eigen::Vector3d& L_world) {
+  return body.inertia_inv * (R.transpose() * L_world);
+}
+/// ω_world = R I⁻¹ Rᵀ L (rad/s).
 inline Eigen::Vector3d angularVelocity(const Body& body, const Eigen::Matrix3d& R,
                                        const Eigen::Vector3d& L_world) {
-  return R * (body.inertia_inv * (R.transpose() * L_world));
+  return R * bodyAngularVelocity(body, R, L_world);
 }
 /// ω_world of a state (rad/s).
 inline Eigen::Vector3d angularVelocity(const Model& model, const State& s) {

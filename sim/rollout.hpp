@@ -96,8 +96,8 @@ class Rollout {
 
  private:
   void stepOnce();
-  /// Feeds the watchdog the end of the last step; records its stop.
-  /// The watchdog's look at the step's end, whose rotation and ω (world) are R and w.
+  /// Feeds the watchdog the end of the last step (its rotation R and ω w, world axes);
+  /// records its stop.
   void watch(const Eigen::Matrix3d& R, const Eigen::Vector3d& w);
   State interpolate(double t) const;
   /// The cubic Hermite interpolant between a and b with their rates (packed as the state).
