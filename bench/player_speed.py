@@ -37,7 +37,7 @@ frames shown, measured). The cases:
   offscreen   the same cleared by a worker (transferControlToOffscreen; the worker's script from
               a Blob URL, as a page from file:// may load it): the page's own animation frames
               are empty, the frames displayed are the worker's
-  empty       the report page with the player playing, its body and floor hidden: three.js
+  empty       the report page with the player playing, its body, floor and shadow hidden: three.js
               clearing an empty scene each frame (plus the player's per-frame page work)
   whole       the player playing, at 1× speed, oblique view, every frame drawn whole (a
               bundle older than setDrawAll() draws every frame whole anyway: the same as player)
@@ -333,6 +333,7 @@ class Bench:
                    const h = arguments[0].rbPlayer;
                    if (h.setDrawAll) h.setDrawAll(arguments[2]);
                    p.points.visible = !arguments[1]; p.floor.visible = !arguments[1];
+                   if (p.shadow) p.shadow.visible = !arguments[1];
                    p.setTime(p.t0, true); h.play();""", element, hide, whole)
         result = self.record()
         self.js("arguments[0].rbPlayer.pause();", element)

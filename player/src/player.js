@@ -94,7 +94,12 @@ void main() {
 }`;
 
 // The floor: a box-filtered checker fading into the background, with a soft contact shadow
-// under the body (the renderer's floor.frag and floor_common.frag).
+// under the body (the renderer's floor.frag and floor_common.frag). On software WebGL this
+// shader runs for most of the canvas's pixels, so each pixel does only what its view needs:
+// FOG (the orthographic views along the floor) or the fade with distance, chosen by a define
+// (its own program, not a branch that runs both sides); and the shadow (SHADOW) only in a quad
+// around the body drawn over the floor with the same formula, where the floor's own pixels
+// have none. Outside the shadow's ellipse the quad's pixels are the floor's, to the bit.
 const FLOOR_VERTEX = /* glsl */ `
 varying vec2 vXY;
 void main() {
@@ -111,7 +116,7 @@ uniform float fadeNear;
 uniform float fadeFar;
 uniform vec2 depthDirection;   // orthographic views along the floor: away from the camera
 uniform float fogNear;
-uniform float fogFar;          // 0: fade with distance from the centre instead
+uniform float fogFar;
 uniform vec2 shadowCenter;
 uniform vec2 shadowAxis;       // the body's long axis on the floor
 uniform vec2 shadowHalf;       // half extents across and along it, m
@@ -122,17 +127,25 @@ void main() {
   vec2 w = fwidth(p) + 1e-4;
   vec2 i = 2.0 * (abs(fract((p - 0.5 * w) * 0.5) - 0.5) - abs(fract((p + 0.5 * w) * 0.5) - 0.5)) / w;
   float checker = 0.5 - 0.5 * i.x * i.y;
+#ifdef FOG
   float depth = dot(vXY - center, depthDirection);
-  float fog = step(1e-9, fogFar);
-  checker = mix(checker, 0.5, smoothstep(fogNear, mix(fogNear, fogFar, 0.5), depth) * fog);
+  checker = mix(checker, 0.5, smoothstep(fogNear, mix(fogNear, fogFar, 0.5), depth));
+  float fade = smoothstep(fogNear, fogFar, depth);
+#else
+  float fade = smoothstep(fadeNear, fadeFar, length(vXY - center));
+#endif
   vec3 color = mix(vec3(0.80, 0.80, 0.78), vec3(0.66, 0.67, 0.66), checker);
+#ifdef SHADOW
   vec2 d = vXY - shadowCenter;
   vec2 local = vec2(dot(d, vec2(shadowAxis.y, -shadowAxis.x)), dot(d, shadowAxis));
-  float shadow = shadowStrength * (1.0 - smoothstep(0.55, 1.15, length(local / shadowHalf)));
-  float fade = fog > 0.5 ? smoothstep(fogNear, fogFar, depth)
-                         : smoothstep(fadeNear, fadeFar, length(vXY - center));
-  gl_FragColor = vec4(mix(color * (1.0 - shadow), background, fade), 1.0);
+  color *= 1.0 - shadowStrength * (1.0 - smoothstep(0.55, 1.15, length(local / shadowHalf)));
+#endif
+  gl_FragColor = vec4(mix(color, background, fade), 1.0);
 }`;
+
+// The shadow's reach: it fades out at 1.15 of the footprint's half extents (FLOOR_FRAGMENT);
+// its quad, and the part of the canvas redrawn for it, reach a little further.
+const SHADOW_REACH = 1.2;
 
 // ---------------------------------------------------------------------------------------------
 // Style: injected once, so that the page needs no CSS of its own. The canvas's stage has square
@@ -469,28 +482,44 @@ class Player {
     const decade = Math.pow(10, Math.floor(Math.log10(raw)));
     this.tile = raw / decade < 2 ? decade : raw / decade < 5 ? 2 * decade : 5 * decade;
     this.size = size;
+    const floorUniforms = {
+      tile: { value: this.tile },
+      background: { value: new Vector3(...BACKGROUND) },
+      center: { value: new Vector2() },
+      fadeNear: { value: 3 * size },
+      fadeFar: { value: 12 * size },
+      depthDirection: { value: new Vector2() },
+      fogNear: { value: 0 },
+      fogFar: { value: 0 },
+      shadowCenter: { value: new Vector2() },
+      shadowAxis: { value: new Vector2(0, 1) },
+      shadowHalf: { value: new Vector2(...body.footprintHalf) },
+      shadowStrength: { value: 0.45 },
+    };
     this.floorMaterial = new ShaderMaterial({
       vertexShader: FLOOR_VERTEX,
       fragmentShader: FLOOR_FRAGMENT,
-      uniforms: {
-        tile: { value: this.tile },
-        background: { value: new Vector3(...BACKGROUND) },
-        center: { value: new Vector2() },
-        fadeNear: { value: 3 * size },
-        fadeFar: { value: 12 * size },
-        depthDirection: { value: new Vector2() },
-        fogNear: { value: 0 },
-        fogFar: { value: 0 },
-        shadowCenter: { value: new Vector2() },
-        shadowAxis: { value: new Vector2(0, 1) },
-        shadowHalf: { value: new Vector2(...body.footprintHalf) },
-        shadowStrength: { value: 0.45 },
-      },
+      uniforms: floorUniforms,
+      defines: {},
     });
     this.floor = new Mesh(floorGeometry, this.floorMaterial);
     this.floor.position.set(0.5 * (x0 + x1), 0.5 * (y0 + y1), 0);
-    this.floor.renderOrder = -1;
+    this.floor.renderOrder = -2;
     this.scene.add(this.floor);
+    // The contact shadow: a quad over the floor around the body (placed in applyTime), drawn
+    // after the floor with the floor's formula and the shadow (same uniforms), before the body.
+    this.shadowMaterial = new ShaderMaterial({
+      vertexShader: FLOOR_VERTEX,
+      fragmentShader: FLOOR_FRAGMENT,
+      uniforms: floorUniforms,
+      defines: { SHADOW: 1 },
+      depthTest: false,
+      depthWrite: false,
+    });
+    this.shadow = new Mesh(new PlaneGeometry(2 * SHADOW_REACH, 2 * SHADOW_REACH), this.shadowMaterial);
+    this.shadow.scale.set(body.footprintHalf[0], body.footprintHalf[1], 1);
+    this.shadow.renderOrder = -1;
+    this.scene.add(this.shadow);
 
     // Cameras, z up: a perspective one (oblique, follow) and an orthographic one (above, front,
     // side), each with its own orbit controls; any drag or zoom makes the view "free".
@@ -704,6 +733,10 @@ class Player {
     const axis = this.axis.set(0, 1, 0).applyQuaternion(this.points.quaternion);
     const norm = Math.hypot(axis.x, axis.y);
     if (norm > 1e-6) u.shadowAxis.value.set(axis.x / norm, axis.y / norm); else u.shadowAxis.value.set(0, 1);
+    // Its quad: local x across the body's long axis, y along it.
+    const along = u.shadowAxis.value;
+    this.shadow.position.set(this.points.position.x, this.points.position.y, 0);
+    this.shadow.rotation.set(0, 0, Math.atan2(-along.x, along.y));
     if (this.viewName === 'follow') this.placeChase();
     this.updateReadouts();
     this.dirty = true;
@@ -981,6 +1014,13 @@ class Player {
       u.fadeNear.value = Math.max(3 * this.size, 1.5 * reachOut);
       u.fadeFar.value = Math.max(12 * this.size, 6 * reachOut);
     }
+    // The floor's programs follow the mode (three keeps both once compiled).
+    if (!!this.floorMaterial.defines.FOG !== level) {
+      for (const m of [this.floorMaterial, this.shadowMaterial]) {
+        if (level) m.defines.FOG = 1; else delete m.defines.FOG;
+        m.needsUpdate = true;
+      }
+    }
   }
 
   // Draws the picture. Software WebGL pays for every pixel drawn, and the floor alone covers
@@ -1063,7 +1103,8 @@ class Player {
     const u = this.floorMaterial.uniforms;
     const center = u.shadowCenter.value, axis = u.shadowAxis.value, half = u.shadowHalf.value;
     for (let c = 0; c < 4; c++) {
-      const across = (c & 1 ? 1.2 : -1.2) * half.x, along = (c & 2 ? 1.2 : -1.2) * half.y;
+      const across = (c & 1 ? SHADOW_REACH : -SHADOW_REACH) * half.x;
+      const along = (c & 2 ? SHADOW_REACH : -SHADOW_REACH) * half.y;
       v.set(center.x + across * axis.y + along * axis.x, center.y - across * axis.x + along * axis.y, 0);
       if (!add()) return null;
     }
