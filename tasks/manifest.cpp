@@ -42,12 +42,16 @@ std::optional<OutputEntry> fromJson(const nlohmann::json& j) {
   return e;
 }
 
-// Holds an exclusive lock on DIR/.rattleback-manifest.lock while alive.
+// Holds an exclusive lock on the folder itself while alive: flock(2) on the folder's own
+// descriptor leaves no file behind. Where a folder cannot be locked so (NFS refuses an
+// exclusive lock on a descriptor not open for writing), DIR/.rattleback-manifest.lock.
 class Lock {
  public:
   explicit Lock(const fs::path& dir)
-      : fd_(::open((dir / ".rattleback-manifest.lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC,
-                   0644)) {
+      : fd_(::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)) {
+    if (fd_ >= 0 && ::flock(fd_, LOCK_EX) == 0) return;
+    if (fd_ >= 0) ::close(fd_);
+    fd_ = ::open((dir / ".rattleback-manifest.lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
     if (fd_ >= 0) ::flock(fd_, LOCK_EX);
   }
   ~Lock() {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -968,6 +969,50 @@ TEST(Cli, TheReportPlacesOutputsByTheManifest) {
   for (const char* shown :
        {"src=\"small.mp4\"", "src=\"larger.mp4\"", "src=\"side-a.png\"", "src=\"side-b.png\""})
     EXPECT_NE(html.find(shown), std::string::npos) << shown;
+}
+
+// An output folder holds the outputs and their manifest, nothing else: the manifest's lock is
+// the folder itself (flock on its descriptor), where it was an empty .rattleback-manifest.lock
+// left in every folder written into.
+TEST(Cli, AnOutputFolderHoldsOnlyTheOutputsAndTheManifest) {
+  const fs::path dir = scratchDir() / "only";
+  fs::remove_all(dir);
+  auto listing = [](const fs::path& folder) {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(folder))
+      names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  };
+  const Result run = rattleback("simulate " + scene("rattleback") + " --duration 0.2 -q -o " +
+                                (dir / "run" / "run.csv").string());
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(listing(dir / "run"),
+            (std::vector<std::string>{"rattleback-manifest.json", "run.csv", "run.csv.json"}));
+  std::ofstream(dir / "two.yaml") << "base: " << scene("rattleback")
+                                  << "\nvary:\n  initial.spin: {from: -5, to: 5, count: 2}\n"
+                                     "duration: 0.2\n";
+  const Result sweep = rattleback("sweep " + (dir / "two.yaml").string() + " -q -o " +
+                                  (dir / "sweep" / "t.csv").string());
+  ASSERT_EQ(sweep.status, 0) << sweep.err;
+  EXPECT_EQ(listing(dir / "sweep"),
+            (std::vector<std::string>{"rattleback-manifest.json", "t.csv", "t.csv.json"}));
+}
+
+// Commands writing into one folder at once keep each other's entries: the manifest is read,
+// extended and replaced under the folder's lock. 16 runs side by side; without the lock some
+// read the manifest before another's replacement and drop its entry (4 and 12 of 16 kept).
+TEST(Cli, RunsSideBySideAllListTheirOutputsInTheManifest) {
+  const fs::path dir = scratchDir() / "together";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string command = "for i in $(seq 16); do " + std::string(RATTLEBACK_BIN) +
+                              " simulate " + scene("rattleback") + " --duration 0.01 -q -o " +
+                              dir.string() + "/run-$i.csv & done; wait";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  const nlohmann::json manifest =
+      nlohmann::json::parse(std::ifstream(dir / "rattleback-manifest.json"));
+  EXPECT_EQ(manifest["outputs"].size(), 16u) << manifest.dump(1);
 }
 
 // A body with no preferred direction (the default body without its dents: misalignment 0,
