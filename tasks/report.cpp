@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "scene/loader.hpp"
+#include "tasks/analysis.hpp"
 #include "tasks/drawn_points.hpp"
 #include "tasks/manifest.hpp"
 #include "tasks/output.hpp"
@@ -130,7 +131,8 @@ std::string forecastOf(const nlohmann::json& theory) {
     return text + "none within " + number(field(f, "within_s"), "%g") + " s" + measures;
   return text + "<b>" + number(field(f, "time_s"), "%.2f") + " s</b>" + measures +
          (field(f, "range") == "within" ? ", within its range: about 3 %"
-                                        : ", beyond its range: early by 5–20 %");
+                                        : std::string(", beyond its range: early by ") +
+                                              kBeyondRangeEarlyBy + " in the runs measured");
 }
 
 // The run's estimated errors (simulate --check, its sidecar's "check"); empty without one.
