@@ -95,15 +95,44 @@ void main() {
 
 // The floor: a box-filtered checker fading into the background, with a soft contact shadow
 // under the body (the renderer's floor.frag and floor_common.frag). On software WebGL this
-// shader runs for most of the canvas's pixels, so each pixel does only what its view needs:
-// FOG (the orthographic views along the floor) or the fade with distance, chosen by a define
-// (its own program, not a branch that runs both sides); and the shadow (SHADOW) only in a quad
-// around the body drawn over the floor with the same formula, where the floor's own pixels
-// have none. Outside the shadow's ellipse the quad's pixels are the floor's, to the bit.
+// shader runs for most of the canvas's pixels, so each pixel does only what its view needs.
+// The fade (with distance from the target, or the fog of the orthographic views along the
+// floor, FOG) is computed at the vertices of a mesh that covers only where the floor shows,
+// fine enough that the linear interpolation of the smoothstep is within half a level of it:
+// rings about the target from fadeNear to fadeFar (the background beyond is the clear colour),
+// or rows across the view from fogNear to fogFar. The mode is a define (its own program, not a
+// branch that runs both sides). The shadow (SHADOW) is drawn only in a quad around the body,
+// over the floor, with the same formula computed per pixel and the shadow; outside the
+// shadow's ellipse the quad's pixels are the floor's.
 const FLOOR_VERTEX = /* glsl */ `
+uniform vec2 center;           // where the floor fades from, m
+uniform float fadeNear;
+uniform float fadeFar;
+uniform vec2 depthDirection;   // orthographic views along the floor: away from the camera
+uniform float fogNear;
+uniform float fogFar;
+uniform float reach;           // FOG: the band's half width and how far it reaches back, m
 varying vec2 vXY;
+varying float vFade;
+varying float vFog;
 void main() {
+#if defined(SHADOW)
   vec4 world = modelMatrix * vec4(position, 1.0);
+#elif defined(FOG)
+  // position: x across the view in [-1, 1]; y < 0 the row nearest the camera, else [0, 1]
+  // from fogNear to fogFar.
+  float depth = position.y < 0.0 ? -reach : mix(fogNear, fogFar, position.y);
+  vec2 across = vec2(depthDirection.y, -depthDirection.x);
+  vec4 world = vec4(center + depthDirection * depth + across * (position.x * reach), 0.0, 1.0);
+  vFade = smoothstep(fogNear, fogFar, depth);
+  vFog = smoothstep(fogNear, mix(fogNear, fogFar, 0.5), depth);
+#else
+  // position: x the angle about the centre, y < 0 the centre, else [0, 1] from fadeNear to
+  // fadeFar.
+  float r = position.y < 0.0 ? 0.0 : mix(fadeNear, fadeFar, position.y);
+  vec4 world = vec4(center + r * vec2(cos(position.x), sin(position.x)), 0.0, 1.0);
+  vFade = smoothstep(fadeNear, fadeFar, r);
+#endif
   vXY = world.xy;
   gl_Position = projectionMatrix * viewMatrix * world;
 }`;
@@ -111,10 +140,10 @@ void main() {
 const FLOOR_FRAGMENT = /* glsl */ `
 uniform float tile;            // checker square, m
 uniform vec3 background;
-uniform vec2 center;           // where the floor fades from, m
+uniform vec2 center;
 uniform float fadeNear;
 uniform float fadeFar;
-uniform vec2 depthDirection;   // orthographic views along the floor: away from the camera
+uniform vec2 depthDirection;
 uniform float fogNear;
 uniform float fogFar;
 uniform vec2 shadowCenter;
@@ -122,17 +151,24 @@ uniform vec2 shadowAxis;       // the body's long axis on the floor
 uniform vec2 shadowHalf;       // half extents across and along it, m
 uniform float shadowStrength;
 varying vec2 vXY;
+varying float vFade;
+varying float vFog;
 void main() {
   vec2 p = vXY / tile;
   vec2 w = fwidth(p) + 1e-4;
   vec2 i = 2.0 * (abs(fract((p - 0.5 * w) * 0.5) - 0.5) - abs(fract((p + 0.5 * w) * 0.5) - 0.5)) / w;
   float checker = 0.5 - 0.5 * i.x * i.y;
-#ifdef FOG
+#if defined(SHADOW) && defined(FOG)
   float depth = dot(vXY - center, depthDirection);
   checker = mix(checker, 0.5, smoothstep(fogNear, mix(fogNear, fogFar, 0.5), depth));
   float fade = smoothstep(fogNear, fogFar, depth);
-#else
+#elif defined(SHADOW)
   float fade = smoothstep(fadeNear, fadeFar, length(vXY - center));
+#elif defined(FOG)
+  checker = mix(checker, 0.5, vFog);
+  float fade = vFade;
+#else
+  float fade = vFade;
 #endif
   vec3 color = mix(vec3(0.80, 0.80, 0.78), vec3(0.66, 0.67, 0.66), checker);
 #ifdef SHADOW
@@ -266,6 +302,47 @@ function bodyGeometry(run) {
     middleHeight: 0.5 * (high[2] + low[2]),
     footprintHalf: [halfExtent[0], halfExtent[1]],
   };
+}
+
+// The floor's meshes, in the parameters FLOOR_VERTEX places them by. Rings: the centre and
+// FADE_RINGS + 1 rings from fadeNear to fadeFar, FADE_SIDES around (the polygon's chords fall
+// short of the circle by 0.2 %); rows: one nearest the camera and FOG_ROWS + 1 from fogNear to
+// fogFar, each two vertices across.
+const FADE_SIDES = 48;
+const FADE_RINGS = 10;
+const FOG_ROWS = 16;
+
+function fadeRings() {
+  const position = [0, -1, 0];
+  for (let k = 0; k <= FADE_RINGS; k++) {
+    for (let j = 0; j < FADE_SIDES; j++) position.push((2 * Math.PI * j) / FADE_SIDES, k / FADE_RINGS, 0);
+  }
+  const index = [];
+  const at = (k, j) => 1 + k * FADE_SIDES + (j % FADE_SIDES);
+  for (let j = 0; j < FADE_SIDES; j++) index.push(0, at(0, j), at(0, j + 1));
+  for (let k = 0; k < FADE_RINGS; k++) {
+    for (let j = 0; j < FADE_SIDES; j++) {
+      index.push(at(k, j), at(k + 1, j), at(k + 1, j + 1), at(k, j), at(k + 1, j + 1), at(k, j + 1));
+    }
+  }
+  const geometry = new BufferGeometry();
+  geometry.setAttribute('position', new BufferAttribute(new Float32Array(position), 3));
+  geometry.setIndex(index);
+  return geometry;
+}
+
+function fogRows() {
+  const position = [-1, -1, 0, 1, -1, 0];
+  for (let k = 0; k <= FOG_ROWS; k++) position.push(-1, k / FOG_ROWS, 0, 1, k / FOG_ROWS, 0);
+  const index = [];
+  for (let k = 0; k <= FOG_ROWS; k++) {
+    const a = 2 * k, b = 2 * k + 2; // this row's left vertex, the next row's
+    index.push(a, a + 1, b + 1, a, b + 1, b);
+  }
+  const geometry = new BufferGeometry();
+  geometry.setAttribute('position', new BufferAttribute(new Float32Array(position), 3));
+  geometry.setIndex(index);
+  return geometry;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -477,7 +554,9 @@ class Player {
     }
     const size = Math.max(...body.halfExtent);
     const margin = 14 * size + 20 * this.framing.radius;
-    const floorGeometry = new PlaneGeometry(x1 - x0 + 2 * margin, y1 - y0 + 2 * margin);
+    // FOG's band reaches as far as the floor did when it was a plane over this rectangle.
+    const reach = Math.hypot(x1 - x0 + 2 * margin, y1 - y0 + 2 * margin);
+    this.floorGeometries = { fade: fadeRings(), fog: fogRows() };
     const raw = size / 5;
     const decade = Math.pow(10, Math.floor(Math.log10(raw)));
     this.tile = raw / decade < 2 ? decade : raw / decade < 5 ? 2 * decade : 5 * decade;
@@ -495,6 +574,7 @@ class Player {
       shadowAxis: { value: new Vector2(0, 1) },
       shadowHalf: { value: new Vector2(...body.footprintHalf) },
       shadowStrength: { value: 0.45 },
+      reach: { value: reach },
     };
     this.floorMaterial = new ShaderMaterial({
       vertexShader: FLOOR_VERTEX,
@@ -502,8 +582,8 @@ class Player {
       uniforms: floorUniforms,
       defines: {},
     });
-    this.floor = new Mesh(floorGeometry, this.floorMaterial);
-    this.floor.position.set(0.5 * (x0 + x1), 0.5 * (y0 + y1), 0);
+    this.floor = new Mesh(this.floorGeometries.fade, this.floorMaterial);
+    this.floor.frustumCulled = false; // placed by its shader
     this.floor.renderOrder = -2;
     this.scene.add(this.floor);
     // The contact shadow: a quad over the floor around the body (placed in applyTime), drawn
@@ -1020,6 +1100,7 @@ class Player {
         if (level) m.defines.FOG = 1; else delete m.defines.FOG;
         m.needsUpdate = true;
       }
+      this.floor.geometry = level ? this.floorGeometries.fog : this.floorGeometries.fade;
     }
   }
 
