@@ -69,7 +69,11 @@ void printTheory(std::FILE* out, const sim::Model& model, double spin) {
     std::fprintf(out, " %.4g%+.4gi", clean(lambda.real(), largest), clean(lambda.imag(), largest));
   std::fprintf(out, "\n");
   const sim::Direction preferred = sim::preferredDirection(model, spin);
-  if (preferred == sim::Direction::None)
+  if (!rest.stable)
+    std::fprintf(out,
+                 "preferred        none: the body cannot stand (it has no rocking about upright "
+                 "for a direction of spin to favour)\n");
+  else if (preferred == sim::Direction::None)
     std::fprintf(out,
                  "preferred        none (the rocking grows alike both ways, or neither way: "
                  "no direction is predicted to reverse rather than the other)\n");

@@ -87,7 +87,9 @@ nlohmann::json analysisJson(const sim::Model& model, double spin) {
   for (const auto& lambda : spinning.eigenvalues)
     eigenvalues.push_back({lambda.real(), lambda.imag()});
   j["eigenvalues"] = eigenvalues;
-  j["preferred"] = std::string(rb::nameOf(sim::preferredDirection(model, spin)));
+  // A body that cannot stand has no rocking about upright for a spin direction to favour.
+  j["preferred"] =
+      orNull(rest.stable, std::string(rb::nameOf(sim::preferredDirection(model, spin))));
   const sim::ReversalForecast forecast = sim::forecastFirstReversal(model, spin, model.duration);
   j["predicted_first_reversal"] = {
       {"theory", "averaged small-oscillation (Garcia & Hubbard 1988; docs/physics.md P8.5)"},

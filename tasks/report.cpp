@@ -226,10 +226,12 @@ void writeAnalysis(std::ostream& out, const SceneFiles& f,
   if (theory) {
     const nlohmann::json& t = *theory;
     const nlohmann::json& preferred = field(t, "preferred");
+    const bool topples = preferred.is_null() && field(t, "rest_stable") == false;
     out << "preferred direction: <b>"
         << (preferred == "ccw"    ? "counter-clockwise"
             : preferred == "cw"   ? "clockwise"
             : preferred == "none" ? "none"
+            : topples             ? "none: the body cannot stand"
                                   : "–")
         << "</b><br>growth rates at n = " << number(field(t, "spin"), "%+g") << " rad/s: roll "
         << number(field(field(t, "growth_rates"), "roll"), "%+.3f") << " /s, pitch "

@@ -1053,6 +1053,49 @@ TEST(Cli, TheForecastBeyondItsRangeQuotesTheMeasuredErrors) {
   EXPECT_NE(html.str().find("beyond its range: " + range), std::string::npos) << range;
 }
 
+// A body that cannot stand: an egg on its end, its CM 12 cm above the floor, above both radii
+// of curvature of its bottom (0.75 and 2.1 cm), so that it topples both ways.
+constexpr const char* kEggOnEnd = R"(units: {length: 1.0}
+body:
+  shape: ellipsoid
+  ellipsoid: {semi_axes: [0.03, 0.05, 0.12]}
+  inertia: [[3.38e-3, -2.0e-5, 0.0], [-2.0e-5, 3.06e-3, 0.0], [0.0, 0.0, 6.8e-4]]
+  mass: 1.0
+contact: {model: rolling}
+gravity: 9.81
+initial: {spin: 5.0, tilt: [0.5, 0.5]}
+simulation: {integrator: rk4, dt: 1.0e-4, duration: 1.0}
+)";
+
+// A body that cannot stand has no small rocking about upright, so no spin direction is
+// preferred: analyze says so (it said "preferred cw" for the egg and "ccw" for the seed's
+// body, under its WARNING), --json has null, and the report says none.
+TEST(Cli, ABodyThatCannotStandPrefersNoDirection) {
+  const fs::path dir = scratchDir() / "topples";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "egg.yaml") << kEggOnEnd;
+  for (const std::string& s : {(dir / "egg.yaml").string(), scene("seed-flip-ccw")}) {
+    const Result text = rattleback("analyze " + s);
+    ASSERT_EQ(text.status, 0) << text.err;
+    EXPECT_NE(text.out.find("WARNING: the body cannot stand upright"), std::string::npos);
+    EXPECT_NE(text.out.find("preferred        none: the body cannot stand"), std::string::npos)
+        << text.out;
+    const Result json = rattleback("analyze " + s + " --json");
+    ASSERT_EQ(json.status, 0) << json.err;
+    EXPECT_TRUE(nlohmann::json::parse(json.out)["preferred"].is_null()) << s;
+  }
+  ASSERT_EQ(rattleback("analyze " + (dir / "egg.yaml").string() + " --json -o " +
+                       (dir / "egg-analysis.json").string())
+                .status,
+            0);
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  std::stringstream html;
+  html << std::ifstream(dir / "index.html").rdbuf();
+  EXPECT_NE(html.str().find("preferred direction: <b>none: the body cannot stand</b>"),
+            std::string::npos);
+}
+
 // A body with no preferred direction (the default body without its dents: misalignment 0,
 // growth rates alike both ways, all negative: roll −0.228, pitch −0.035 /s at ±5 rad/s) gets
 // none (issue 26: it got "cw" from rounding, and render --both named its +5 run "reversed").
