@@ -149,7 +149,7 @@ CLAIMS = [
     ("docs/physics.md", "lying at 62.5° («62.49»° today)",
      [lambda r: r.simulate("seed-flip-ccw")["final_tilt_deg"]]),
     ("docs/python.md",
-     "print(run.first_reversal, run.spin.max()) # «2.3664761166098174» «3.7575771502248765»",
+     "print(run.first_reversal, run.spin.max()) # «2.3664759726320264» «3.757577089559586»",
      [lambda r: r.simulate("rattleback")["first_reversal_s"],
       lambda r: max(r.column("rattleback", "spin"))]),
     ("docs/python.md", "('«ccw»', {'pitch': «6.9700094294691946», 'roll': «3.47389808054533»})",

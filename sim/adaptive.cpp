@@ -5,13 +5,12 @@
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
 
+#include "sim/rolling.hpp"
 #include "sim/step.hpp"
 
 namespace sim {
 namespace {
-
 namespace odeint = boost::numeric::odeint;
-using Vector = std::array<double, 13>;  // x (3), v (3), q (x, y, z, w), L (3), scaled
 
 // Gustafsson's PI step-size control, in the form of Hairer's DOPRI5 code (Hairer, Nørsett &
 // Wanner, Solving Ordinary Differential Equations I, 2nd ed., §II.4, "Automatic step size
@@ -51,12 +50,6 @@ class PiStepAdjuster {
   bool rejected_ = false;
 };
 
-using Stepper = odeint::runge_kutta_dopri5<Vector>;
-using Checker =
-    odeint::default_error_checker<double, Stepper::algebra_type, Stepper::operations_type>;
-using Controlled = odeint::controlled_runge_kutta<Stepper, Checker, PiStepAdjuster>;
-using Dense = odeint::dense_output_runge_kutta<Controlled>;
-
 // The body's own scales, which make the integrated state dimensionless.
 struct Scales {
   double length = 1, time = 1, momentum = 1;  // m, s, kg m²/s
@@ -67,88 +60,183 @@ struct Scales {
     length = extent.norm() > 0 ? extent.norm() : 1.0;
     time = model.gravity > 0 ? std::sqrt(length / model.gravity) : 1.0;
     momentum = body.inertia.diagonal().maxCoeff() / time;
+    for (int i = 0; i < 3; ++i)
+      spin[i] = time * body.inertia(i, i) / body.inertia.diagonal().maxCoeff();
+  }
+  // ω in body axes is scaled as the angular momentum is, component by component (I_ii ω_i
+  // over I_max/τ): a rocking about a light axis is held to the error the same momentum about
+  // the heaviest would be. Scaling ω by τ alone, for the same reversal error, cost the default
+  // scene 13 % less and Kane & Levinson 20 % more (docs/speed.md).
+  std::array<double, 3> spin;
+};
+
+// The whole state: x (3), v (3), q (x, y, z, w), L (3), scaled.
+struct Free {
+  using Vector = std::array<double, 13>;
+
+  static Vector pack(const Model&, const State& s, const Scales& k) {
+    Vector y;
+    for (int i = 0; i < 3; ++i) {
+      y[i] = s.x_world[i] / k.length;
+      y[3 + i] = s.v_world[i] * k.time / k.length;
+      y[10 + i] = s.L_world[i] / k.momentum;
+    }
+    for (int i = 0; i < 4; ++i) y[6 + i] = s.q.coeffs()[i];
+    return y;
+  }
+
+  static State unpack(const Model&, const Vector& y, const Scales& k, double t) {
+    State s;
+    for (int i = 0; i < 3; ++i) {
+      s.x_world[i] = y[i] * k.length;
+      s.v_world[i] = y[3 + i] * k.length / k.time;
+      s.L_world[i] = y[10 + i] * k.momentum;
+    }
+    for (int i = 0; i < 4; ++i) s.q.coeffs()[i] = y[6 + i];
+    s.t = t;
+    return s;
+  }
+
+  static void rates(const Model& model, const Vector& y, Vector& dydt, const Scales& k, double t) {
+    State s = unpack(model, y, k, t);
+    // The integrator keeps |q| = 1 only to its tolerance; the rates must not depend on that
+    // drift (q̇ = ½ ω ⊗ q̂ still keeps |q| constant: q · q̇ = 0).
+    s.q.normalize();
+    const Rates r = ratesOf(model, s);
+    const double k_x = k.time / k.length;
+    for (int i = 0; i < 3; ++i) {
+      dydt[i] = r.dx[i] * k_x;
+      dydt[3 + i] = r.dv[i] * k_x * k.time;
+      dydt[10 + i] = r.dL[i] * k.time / k.momentum;
+    }
+    for (int i = 0; i < 4; ++i) dydt[6 + i] = r.dq[i] * k.time;
   }
 };
 
-Vector pack(const State& s, const Scales& k) {
-  Vector y;
-  for (int i = 0; i < 3; ++i) {
-    y[i] = s.x_world[i] / k.length;
-    y[3 + i] = s.v_world[i] * k.time / k.length;
-    y[10 + i] = s.L_world[i] / k.momentum;
-  }
-  for (int i = 0; i < 4; ++i) y[6 + i] = s.q.coeffs()[i];
-  return y;
-}
+// Rolling: the constraint gives the CM's height and velocity, so what is integrated is its
+// place on the floor (x, y), q (x, y, z, w) and ω in body axes (sim/rolling.hpp's
+// rollingRates), scaled; the states handed out are put back on the constraint. Nine unknowns
+// instead of thirteen, and no force, torque or momentum to form in an evaluation.
+struct Rolling {
+  using Vector = std::array<double, 9>;
 
-State unpack(const Vector& y, const Scales& k, double t) {
-  State s;
-  for (int i = 0; i < 3; ++i) {
-    s.x_world[i] = y[i] * k.length;
-    s.v_world[i] = y[3 + i] * k.length / k.time;
-    s.L_world[i] = y[10 + i] * k.momentum;
+  static Vector pack(const Model& model, const State& s, const Scales& k) {
+    Vector y;
+    y[0] = s.x_world.x() / k.length;
+    y[1] = s.x_world.y() / k.length;
+    const Eigen::Quaterniond q = s.q.normalized();
+    for (int i = 0; i < 4; ++i) y[2 + i] = q.coeffs()[i];
+    const Eigen::Vector3d w = bodyAngularVelocity(*model.body, q.toRotationMatrix(), s.L_world);
+    for (int i = 0; i < 3; ++i) y[6 + i] = w[i] * k.spin[i];
+    return y;
   }
-  for (int i = 0; i < 4; ++i) s.q.coeffs()[i] = y[6 + i];
-  s.t = t;
-  return s;
-}
+
+  static State unpack(const Model& model, const Vector& y, const Scales& k, double t) {
+    State s;
+    s.x_world = Eigen::Vector3d(y[0] * k.length, y[1] * k.length, 0);
+    for (int i = 0; i < 4; ++i) s.q.coeffs()[i] = y[2 + i];
+    const Eigen::Vector3d w(y[6] / k.spin[0], y[7] / k.spin[1], y[8] / k.spin[2]);
+    // L = R I ω with q normalised (the integrated q is a unit one only to the tolerance);
+    // then z and v from the constraint.
+    s.L_world = s.q.normalized().toRotationMatrix() * (model.body->inertia * w);
+    enforceRolling(model, s);
+    s.t = t;
+    return s;
+  }
+
+  static void rates(const Model& model, const Vector& y, Vector& dydt, const Scales& k, double) {
+    const Eigen::Quaterniond q = Eigen::Quaterniond(y[5], y[2], y[3], y[4]).normalized();
+    const Eigen::Vector3d w(y[6] / k.spin[0], y[7] / k.spin[1], y[8] / k.spin[2]);
+    const RollingRates r = rollingRates(model, q, w);
+    const double k_x = k.time / k.length;
+    dydt[0] = r.dxy.x() * k_x;
+    dydt[1] = r.dxy.y() * k_x;
+    for (int i = 0; i < 4; ++i) dydt[2 + i] = r.dq[i] * k.time;
+    for (int i = 0; i < 3; ++i) dydt[6 + i] = r.w_dot_body[i] * k.spin[i] * k.time;
+  }
+};
 
 }  // namespace
 
 struct AdaptiveStepper::Impl {
-  Model model;
-  Scales scales;
-  Dense dense;
+  virtual ~Impl() = default;
+  virtual State step(std::int64_t step_index) = 0;
+  virtual State at(double t) const = 0;
   std::int64_t evaluations = 0;
+};
 
-  Impl(const Model& m, const State& start)
-      : model(m),
-        scales(m),
-        dense(Controlled(Checker(m.tolerance, m.tolerance), PiStepAdjuster(), Stepper())) {
+namespace {
+
+// One run's Odeint stepper over a layout of the state (Free or Rolling).
+template <class Layout>
+class Integration final : public AdaptiveStepper::Impl {
+ public:
+  using Vector = typename Layout::Vector;
+
+  Integration(const Model& m, const State& start)
+      : model_(m),
+        scales_(m),
+        dense_(Controlled(Checker(m.tolerance, m.tolerance), PiStepAdjuster(), Stepper())) {
     // The controller grows a cautious first step quickly (by up to 5× a step).
-    dense.initialize(pack(start, scales), start.t / scales.time, 1e-3);
+    dense_.initialize(Layout::pack(model_, start, scales_), start.t / scales_.time, 1e-3);
   }
+
+  State step(std::int64_t step_index) override {
+    // Odeint copies the system it is given; a small forwarding lambda keeps one counter.
+    Integration* self = this;
+    const auto interval = dense_.do_step(
+        [self](const Vector& y, Vector& dydt, double t) { self->rates(y, dydt, t); });
+    State s =
+        Layout::unpack(model_, dense_.current_state(), scales_, interval.second * scales_.time);
+    s.step = step_index;
+    return s;
+  }
+
+  State at(double t) const override {
+    Vector y;
+    dense_.calc_state(t / scales_.time, y);
+    return Layout::unpack(model_, y, scales_, t);
+  }
+
+ private:
+  using Stepper = odeint::runge_kutta_dopri5<Vector>;
+  using Checker = odeint::default_error_checker<double, typename Stepper::algebra_type,
+                                                typename Stepper::operations_type>;
+  using Controlled = odeint::controlled_runge_kutta<Stepper, Checker, PiStepAdjuster>;
+  using Dense = odeint::dense_output_runge_kutta<Controlled>;
 
   // The equations of motion in scaled variables (Odeint's system signature). Flattened: every
   // call inside is inlined where its body is in this translation unit (sim/CMakeLists.txt
   // puts the evaluation's files in one unity batch): 3.5 % fewer instructions a run.
   [[gnu::flatten]] void rates(const Vector& y, Vector& dydt, double t_scaled) {
     ++evaluations;
-    State s = unpack(y, scales, t_scaled * scales.time);
-    // The integrator keeps |q| = 1 only to its tolerance; the rates must not depend on that
-    // drift (q̇ = ½ ω ⊗ q̂ still keeps |q| constant: q · q̇ = 0).
-    s.q.normalize();
-    const Rates r = ratesOf(model, s);
-    const double k_x = scales.time / scales.length;
-    for (int i = 0; i < 3; ++i) {
-      dydt[i] = r.dx[i] * k_x;
-      dydt[3 + i] = r.dv[i] * k_x * scales.time;
-      dydt[10 + i] = r.dL[i] * scales.time / scales.momentum;
-    }
-    for (int i = 0; i < 4; ++i) dydt[6 + i] = r.dq[i] * scales.time;
+    Layout::rates(model_, y, dydt, scales_, t_scaled * scales_.time);
   }
+
+  Model model_;
+  Scales scales_;
+  Dense dense_;
 };
 
+std::unique_ptr<AdaptiveStepper::Impl> integrationOf(const Model& model, const State& start) {
+  if (model.contact.model == ContactModel::Rolling)
+    return std::make_unique<Integration<Rolling>>(model, start);
+  return std::make_unique<Integration<Free>>(model, start);
+}
+
+}  // namespace
+
 AdaptiveStepper::AdaptiveStepper(const Model& model, const State& start)
-    : impl_(std::make_unique<Impl>(model, start)) {}
+    : impl_(integrationOf(model, start)) {}
 
 AdaptiveStepper::~AdaptiveStepper() = default;
 
 State AdaptiveStepper::step(std::int64_t step_index) {
-  Impl& m = *impl_;
-  // Odeint copies the system it is given; a small forwarding lambda keeps one Impl counting.
-  Impl* self = &m;
-  const auto interval =
-      m.dense.do_step([self](const Vector& y, Vector& dydt, double t) { self->rates(y, dydt, t); });
-  State s = unpack(m.dense.current_state(), m.scales, interval.second * m.scales.time);
-  s.step = step_index;
-  return s;
+  return impl_->step(step_index);
 }
 
 State AdaptiveStepper::at(double t) const {
-  Vector y;
-  impl_->dense.calc_state(t / impl_->scales.time, y);
-  return unpack(y, impl_->scales, t);
+  return impl_->at(t);
 }
 
 std::int64_t AdaptiveStepper::evaluations() const {

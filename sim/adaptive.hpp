@@ -25,7 +25,7 @@ class AdaptiveStepper {
   AdaptiveStepper& operator=(const AdaptiveStepper&) = delete;
 
   /// Takes one accepted step; returns the state at its end (t and step set; the quaternion
-  /// as integrated, not renormalised).
+  /// as integrated, not renormalised; under rolling, on the constraint).
   State step(std::int64_t step_index);
   /// The dense output inside the last step, t within it.
   State at(double t) const;
@@ -33,8 +33,9 @@ class AdaptiveStepper {
   /// Steps rejected by error control so far.
   std::int64_t rejected(std::int64_t accepted) const;
 
+  struct Impl;  ///< the Odeint stepper over the state's layout (adaptive.cpp)
+
  private:
-  struct Impl;
   std::unique_ptr<Impl> impl_;
 };
 

@@ -35,28 +35,54 @@ Eigen::Vector3d solveSymmetric(const Eigen::Matrix3d& A, const Eigen::Vector3d& 
 
 }  // namespace
 
-RollingMotion rollingMotion(const Model& model, const Kinematics& k) {
-  // In body axes, where the inertia is constant: the equations are between vectors, so they
-  // hold in any axes, and only the contact point and the force are turned into the world's.
+namespace {
+
+// ω̇ in body axes, where the inertia is constant: the equations are between vectors, so they
+// hold in any axes, and only the contact point and the force are turned into the world's.
+struct Core {
+  Eigen::Vector3d up, r, r_rate, w_dot;  // body axes
+};
+
+Core rollingCore(const Model& model, const Eigen::Matrix3d& R, const Eigen::Vector3d& w) {
   const Body& body = *model.body;
   const double M = body.mass;
-  const Eigen::Vector3d up = k.R.row(2).transpose();  // Rᵀ ẑ
-  const Eigen::Vector3d down = -up;
-  const Eigen::Vector3d r = lowestSurfacePoint(body, down);
-  const Eigen::Vector3d& w = k.w_body;
+  Core c;
+  c.up = R.row(2).transpose();  // Rᵀ ẑ
+  const Eigen::Vector3d down = -c.up;
+  c.r = lowestSurfacePoint(body, down);
   // The down direction turns in body axes as ḋ = −ω × d; the contact point follows.
-  const Eigen::Vector3d r_rate = w.cross(r) + body.surface.lowestPointRate(down, -w.cross(down));
-
+  c.r_rate = w.cross(c.r) + body.surface.lowestPointRate(down, -w.cross(down));
   const Eigen::Matrix3d& I = body.inertia;
   const Eigen::Matrix3d A =
-      I + M * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
-  const Eigen::Vector3d rhs = -w.cross(I * w) - M * r.cross(w.cross(r_rate)) +
-                              M * model.gravity * r.cross(up) - model.contact.air_drag * w;
+      I + M * (c.r.squaredNorm() * Eigen::Matrix3d::Identity() - c.r * c.r.transpose());
+  const Eigen::Vector3d rhs = -w.cross(I * w) - M * c.r.cross(w.cross(c.r_rate)) +
+                              M * model.gravity * c.r.cross(c.up) - model.contact.air_drag * w;
+  c.w_dot = solveSymmetric(A, rhs);
+  return c;
+}
+
+}  // namespace
+
+RollingMotion rollingMotion(const Model& model, const Kinematics& k) {
+  const Core c = rollingCore(model, k.R, k.w_body);
   RollingMotion out;
-  out.w_dot_body = solveSymmetric(A, rhs);
-  const Eigen::Vector3d v_dot = -out.w_dot_body.cross(r) - w.cross(r_rate);
-  out.r_world = k.R * r;
-  out.force_world = k.R * (M * (v_dot + model.gravity * up));
+  out.w_dot_body = c.w_dot;
+  const Eigen::Vector3d v_dot = -c.w_dot.cross(c.r) - k.w_body.cross(c.r_rate);
+  out.r_world = k.R * c.r;
+  out.force_world = k.R * (model.body->mass * (v_dot + model.gravity * c.up));
+  return out;
+}
+
+RollingRates rollingRates(const Model& model, const Eigen::Quaterniond& q,
+                          const Eigen::Vector3d& w_body) {
+  const Eigen::Matrix3d R = q.toRotationMatrix();
+  const Core c = rollingCore(model, R, w_body);
+  RollingRates out;
+  // ẋ = −ω × r, turned into world axes; only its floor components are integrated.
+  out.dxy = -(R.topRows<2>() * w_body.cross(c.r));
+  // q̇ = ½ q ⊗ (0, ω_body), the same as ½ (0, ω_world) ⊗ q.
+  out.dq = 0.5 * (q * Eigen::Quaterniond(0, w_body.x(), w_body.y(), w_body.z())).coeffs();
+  out.w_dot_body = c.w_dot;
   return out;
 }
 

@@ -22,6 +22,17 @@ struct RollingMotion {
 /// (derived from Newton and Euler about the CM with the constraint differentiated once).
 RollingMotion rollingMotion(const Model& model, const Kinematics& k);
 
+/// What an adaptive run integrates under rolling: the constraint fixes the CM's height and
+/// velocity, so the state reduces to the CM's place on the floor, the attitude and ω in body
+/// axes (where ω̇ comes straight from the equations above, with no force and no momentum).
+struct RollingRates {
+  Eigen::Vector2d dxy;         ///< the CM's velocity along the floor, world x and y, m/s
+  Eigen::Vector4d dq;          ///< quaternion coefficients (x, y, z, w), 1/s
+  Eigen::Vector3d w_dot_body;  ///< rad/s²
+};
+/// For a unit quaternion q (body → world) and ω in body axes.
+RollingRates rollingRates(const Model& model, const Eigen::Quaterniond& q,
+                          const Eigen::Vector3d& w_body);
 /// Puts the state back on the constraint: contact point on the floor, or model.rolling_depth
 /// below it (z_cm = −r_z − depth), and not sliding (v = −ω × r).
 void enforceRolling(const Model& model, State& s);

@@ -117,11 +117,9 @@ void Rollout::stepOnce() {
   previous_ = current_;
   if (adaptive_) {
     current_ = adaptive_->step(current_.step + 1);
-    // The integrator's own copy is not touched: under rolling, z and v do not enter the
-    // equations (ẋ = −ω × r comes from q and L), and the rates use q normalised, so putting
-    // the handed-out state back on the constraint here is the same as restoring it inside.
+    // The integrator's own copy is not touched: the rates use q normalised. (Under rolling
+    // the stepper integrates no z or v; its states come on the constraint.)
     current_.q.normalize();
-    if (active_.contact.model == ContactModel::Rolling) enforceRolling(active_, current_);
     if (active_.contact.model != model_.contact.model &&
         active_.contact.model == ContactModel::Smooth)
       countStuck(current_, current_.t - previous_.t);

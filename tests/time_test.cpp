@@ -126,8 +126,8 @@ TEST(Time, ReversalTimesAgreeToFarLessThanTheStep) {
 
 // Adaptive steps (dopri5): the reversal time's error falls as the tolerance does, and at a
 // tight tolerance it is the fixed-step answer. Errors against rk4 at 0.125 ms (whose own
-// error is ~1e-10 s): measured 4.4e-3, 4.8e-5, 8.2e-7, 9.6e-9 s at 1e-4, 1e-6, 1e-8, 1e-10
-// (159, 366, 862, 2131 steps). We ask each to fall below the one before (20% slack) and the
+// error is ~1e-10 s): measured 2.7e-3, 3.8e-5, 5.3e-7, 5.6e-9 s at 1e-4, 1e-6, 1e-8, 1e-10
+// (156, 378, 913, 2283 steps). We ask each to fall below the one before (20% slack) and the
 // tightest to be within 1e-7 s.
 TEST(Adaptive, TheReversalErrorFallsWithTheTolerance) {
   const sim::SceneSpec spec = parse(kRolling);
@@ -151,11 +151,38 @@ TEST(Adaptive, TheReversalErrorFallsWithTheTolerance) {
   EXPECT_LT(errors.back(), 1e-7);
 }
 
+// Under rolling the adaptive stepper integrates only the CM's place on the floor, the attitude
+// and ω: the height and velocity follow from the constraint. The place must still move as the
+// no-slip constraint says. The path's slope, a central difference of samples 10 µs apart
+// (its own error (10 µs)² |x⃛| / 6 with |x⃛| ≈ ω² |v| ≈ 30 m/s³, about 5e-10 m/s), is the
+// velocity −ω × r within 1e-8 m/s against speeds up to 0.03 m/s (measured 7.7e-10 m/s); and
+// after 3 s the place agrees with rk4 at 0.125 ms, which integrates ẋ = −ω × r on the whole
+// state, within 1e-8 m (measured 1.7e-10 m; it is 0.7 mm from the start).
+TEST(Adaptive, ARollingBodysPlaceOnTheFloorMovesWithoutSlipping) {
+  const sim::SceneSpec spec = parse(kRolling);
+  sim::Rollout run(withTolerance(spec, 1e-10));
+  double worst = 0, speed = 0;
+  for (double t : {0.5, 1.0, 1.5, 2.0, 2.5}) {
+    ASSERT_TRUE(run.advanceTo(t + 1e-5));
+    const sim::State s = run.stateAt(t);
+    const Eigen::Vector3d slope =
+        (run.stateAt(t + 1e-5).x_world - run.stateAt(t - 1e-5).x_world) / 2e-5;
+    worst = std::max(worst, (slope.head<2>() - s.v_world.head<2>()).norm());
+    speed = std::max(speed, s.v_world.head<2>().norm());
+  }
+  EXPECT_LT(worst, 1e-8);
+  EXPECT_GT(speed, 1e-3);
+  ASSERT_TRUE(run.advanceTo(3.0));
+  const sim::State fixed = stateAt(withStep(spec, "rk4", 1.25e-4), 3.0);
+  const sim::State adaptive = run.stateAt(3.0);
+  EXPECT_LT((adaptive.x_world - fixed.x_world).norm(), 1e-8);
+}
+
 // Rolling conserves energy exactly; an adaptive run's drift stays within its error budget:
 // each accepted step errs by at most `tolerance` relative to the body's scales, so over N steps
 // the energy (a smooth function of the state, of order one in those scales) can drift by at
-// most about N · tolerance. Measured over 60 s: 1.7e-6 at 1e-8 (32338 steps, budget 3.2e-4)
-// and 2.7e-8 at 1e-10 (79510 steps, budget 8.0e-6).
+// most about N · tolerance. Measured over 60 s: 2.2e-6 at 1e-8 (34947 steps, budget 3.5e-4)
+// and 2.1e-8 at 1e-10 (86196 steps, budget 8.6e-6).
 TEST(Adaptive, RollingEnergyOverSixtySecondsStaysWithinTheToleranceBudget) {
   const sim::SceneSpec spec = parse(kKaneLevinson);
   for (double tol : {1e-8, 1e-10}) {
@@ -175,7 +202,7 @@ TEST(Adaptive, RollingEnergyOverSixtySecondsStaysWithinTheToleranceBudget) {
 // no-slip studies report (Kane & Levinson 1982 show repeated reversals; Moffatt & Tokieda 2008
 // an infinite succession in the reduced model). Two independent integrations, rk4 at a fixed
 // 0.1 ms and dopri5 at tolerance 1e-12, agree on every reversal time within 0.2 ms (measured:
-// the first two to 1e-7 s, the third and fourth to 2.1e-5 and 2.6e-5 s: near the third the
+// the first two to 1e-7 s, the third and fourth to 2.0e-5 and 1.9e-5 s: near the third the
 // spin lingers close to zero and small errors move it; runs at tolerance 1e-9 already differ
 // there by 3 ms).
 TEST(Adaptive, KaneLevinsonWithoutDragReversesFourTimesInSixtySeconds) {
