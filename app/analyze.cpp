@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include "app/commands.hpp"
@@ -28,6 +29,16 @@ Eigen::Vector3d clean(const Eigen::Vector3d& v, double scale) {
   return {clean(v.x(), scale), clean(v.y(), scale), clean(v.z(), scale)};
 }
 
+// A mode at rest: its frequency, or how fast it grows where it topples instead of rocking.
+std::string restModeText(const tasks::RestMode& mode) {
+  char text[64];
+  if (mode.hz)
+    std::snprintf(text, sizeof text, "%.4g Hz", *mode.hz);
+  else
+    std::snprintf(text, sizeof text, "unstable (grows at %.4g /s)", mode.growth);
+  return text;
+}
+
 void printTheory(std::FILE* out, const sim::Model& model, double spin) {
   const double unit = model.length_unit;
   const sim::Rest rest = sim::restOf(model);
@@ -43,9 +54,9 @@ void printTheory(std::FILE* out, const sim::Model& model, double spin) {
                  "above the radius of curvature %.4g (needs h below both radii)\n",
                  rest.h / unit, rest.radii(0) / unit);
   }
-  const sim::Linearisation at_rest = sim::linearise(model, 0);
-  std::fprintf(out, "at rest          roll %.4g Hz, pitch %.4g Hz (linearised rolling model)\n",
-               at_rest.roll_hz, at_rest.pitch_hz);
+  const tasks::RestModes modes = tasks::restModes(sim::linearise(model, 0));
+  std::fprintf(out, "at rest          roll %s, pitch %s (linearised rolling model)\n",
+               restModeText(modes.roll).c_str(), restModeText(modes.pitch).c_str());
   const sim::FirstOrder first = sim::firstOrderGrowth(model);
   std::fprintf(out,
                "first order      growth rate = n × (roll %+.4g, pitch %+.4g) 1/rad "

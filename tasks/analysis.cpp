@@ -1,5 +1,6 @@
 #include "tasks/analysis.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "sim/analysis.hpp"
@@ -41,6 +42,15 @@ std::string massSourceText(const sim::Body& body) {
   return body.mass_by_cubature ? "continuum (cubature)" : "continuum (closed form)";
 }
 
+RestModes restModes(const sim::Linearisation& at_rest) {
+  const double zero = 1e-6 * 2 * M_PI * std::max(at_rest.roll_hz, at_rest.pitch_hz);
+  auto mode = [&](double hz, double growth) {
+    if (growth > zero) return RestMode{std::nullopt, growth};
+    return RestMode{hz, std::abs(growth) <= zero ? 0.0 : growth};
+  };
+  return {mode(at_rest.roll_hz, at_rest.roll_growth), mode(at_rest.pitch_hz, at_rest.pitch_growth)};
+}
+
 double analysisSpin(const sim::Model& model, const std::optional<double>& spin) {
   if (spin) return *spin;
   return model.initial.spin != 0 ? model.initial.spin : 5.0;
@@ -79,7 +89,11 @@ nlohmann::json analysisJson(const sim::Model& model, double spin) {
   j["h"] = rest.h;
   j["radii_of_curvature"] = {rest.radii(0), rest.radii(1)};
   j["rest_stable"] = rest.stable;
-  j["frequencies_hz"] = {{"roll", at_rest.roll_hz}, {"pitch", at_rest.pitch_hz}};
+  // A mode that grows at rest does not rock: no frequency, and how fast it grows.
+  const RestModes modes = restModes(at_rest);
+  auto hzOrNull = [](const RestMode& m) { return m.hz ? nlohmann::json(*m.hz) : nlohmann::json(); };
+  j["frequencies_hz"] = {{"roll", hzOrNull(modes.roll)}, {"pitch", hzOrNull(modes.pitch)}};
+  j["growth_rates_at_rest"] = {{"roll", modes.roll.growth}, {"pitch", modes.pitch.growth}};
   j["spin"] = spin;
   j["growth_rates"] = {{"roll", spinning.roll_growth}, {"pitch", spinning.pitch_growth}};
   j["first_order_growth_per_spin"] = {{"roll", first.roll}, {"pitch", first.pitch}};

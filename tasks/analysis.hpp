@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "sim/analysis.hpp"
 #include "sim/body.hpp"
 #include "sim/model.hpp"
 
@@ -17,6 +18,21 @@ double analysisSpin(const sim::Model& model, const std::optional<double>& spin);
 
 /// Where the mass properties came from (body.mass_properties): scene, grid or continuum.
 std::string massSourceText(const sim::Body& body);
+
+/// A rocking mode of the body upright at rest: its frequency, or none where it grows without
+/// rocking (a body that cannot stand topples along it), and its growth rate, 1/s.
+struct RestMode {
+  std::optional<double> hz;
+  double growth = 0;
+};
+struct RestModes {
+  RestMode roll, pitch;
+};
+
+/// The modes of `at_rest` (sim::linearise at spin 0). A mode is unstable where it grows faster
+/// than 1e-6 of the fastest rocking frequency (below that the rates are the finite-difference
+/// Jacobian's noise, as in sim::preferredDirection); its growth is 0 below that.
+RestModes restModes(const sim::Linearisation& at_rest);
 
 /// How early the forecast of the first reversal came beyond the theory's range: the least and
 /// largest error measured there, rounded out (docs/physics.md P8.5's table; a test reads it).

@@ -117,6 +117,16 @@ std::string reversalOf(const nlohmann::json& result) {
   return "no reversal in " + number(field(result, "simulated_s"), "%g") + " s";
 }
 
+// A mode at rest (analyze's "frequencies_hz"): its frequency, or how fast it grows where it
+// topples instead ("growth_rates_at_rest").
+std::string restModeOf(const nlohmann::json& theory, const char* mode) {
+  const nlohmann::json& hz = field(field(theory, "frequencies_hz"), mode);
+  const nlohmann::json& growth = field(field(theory, "growth_rates_at_rest"), mode);
+  if (hz.is_null() && growth.is_number())
+    return "<b>unstable</b> (grows at " + number(growth, "%.3g") + " /s)";
+  return number(hz, "%.2f") + " Hz";
+}
+
 // The first reversal the averaged theory predicts (analyze's "predicted_first_reversal").
 std::string forecastOf(const nlohmann::json& theory) {
   const nlohmann::json& f = field(theory, "predicted_first_reversal");
@@ -236,9 +246,8 @@ void writeAnalysis(std::ostream& out, const SceneFiles& f,
         << "</b><br>growth rates at n = " << number(field(t, "spin"), "%+g") << " rad/s: roll "
         << number(field(field(t, "growth_rates"), "roll"), "%+.3f") << " /s, pitch "
         << number(field(field(t, "growth_rates"), "pitch"), "%+.3f")
-        << " /s<br>rocking at rest: roll "
-        << number(field(field(t, "frequencies_hz"), "roll"), "%.2f") << " Hz, pitch "
-        << number(field(field(t, "frequencies_hz"), "pitch"), "%.2f") << " Hz<br>misalignment "
+        << " /s<br>rocking at rest: roll " << restModeOf(t, "roll") << ", pitch "
+        << restModeOf(t, "pitch") << "<br>misalignment "
         << number(field(t, "misalignment_deg"), "%+.2f") << "°; "
         << (field(t, "rest_stable") == true    ? "stands upright"
             : field(t, "rest_stable") == false ? "<b>cannot stand upright</b>"

@@ -1096,6 +1096,47 @@ TEST(Cli, ABodyThatCannotStandPrefersNoDirection) {
             std::string::npos);
 }
 
+// A mode that grows at rest does not rock: analyze says it is unstable and how fast it grows,
+// where it printed "0 Hz" (the egg topples both ways: roll 7.95, pitch 7.40 /s; the seed's
+// body only about its long axis, 11.2 /s, and rocks at 2.878 Hz the other way). --json has
+// a null frequency and growth_rates_at_rest; the report says it too. A body that stands keeps
+// its frequencies and rests with no growth but its drag's decay.
+TEST(Cli, AModeThatGrowsAtRestIsCalledUnstable) {
+  const fs::path dir = scratchDir() / "unstable";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "egg.yaml") << kEggOnEnd;
+  const std::string egg = (dir / "egg.yaml").string();
+  const Result text = rattleback("analyze " + egg);
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("at rest          roll unstable (grows at 7.95 /s), pitch unstable "
+                          "(grows at 7.397 /s)"),
+            std::string::npos)
+      << text.out;
+  EXPECT_EQ(text.out.find(" 0 Hz"), std::string::npos) << text.out;
+  const Result seed = rattleback("analyze " + scene("seed-flip-ccw"));
+  EXPECT_NE(seed.out.find("roll unstable (grows at 11.17 /s), pitch 2.878 Hz"), std::string::npos)
+      << seed.out;
+  const nlohmann::json j = nlohmann::json::parse(rattleback("analyze " + egg + " --json").out);
+  EXPECT_TRUE(j["frequencies_hz"]["roll"].is_null()) << j["frequencies_hz"];
+  EXPECT_TRUE(j["frequencies_hz"]["pitch"].is_null()) << j["frequencies_hz"];
+  EXPECT_NEAR(j["growth_rates_at_rest"]["roll"].get<double>(), 7.95, 0.01);
+  EXPECT_NEAR(j["growth_rates_at_rest"]["pitch"].get<double>(), 7.40, 0.01);
+  const nlohmann::json upright =
+      nlohmann::json::parse(rattleback("analyze " + scene("rattleback") + " --json").out);
+  EXPECT_NEAR(upright["frequencies_hz"]["roll"].get<double>(), 3.474, 0.001);
+  EXPECT_LT(upright["growth_rates_at_rest"]["roll"].get<double>(), 0);  // air drag: −0.234 /s
+  ASSERT_EQ(
+      rattleback("analyze " + egg + " --json -o " + (dir / "egg-analysis.json").string()).status,
+      0);
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  std::stringstream html;
+  html << std::ifstream(dir / "index.html").rdbuf();
+  EXPECT_NE(html.str().find("rocking at rest: roll <b>unstable</b> (grows at 7.95 /s), pitch "
+                            "<b>unstable</b> (grows at 7.4 /s)"),
+            std::string::npos);
+}
+
 // A body with no preferred direction (the default body without its dents: misalignment 0,
 // growth rates alike both ways, all negative: roll −0.228, pitch −0.035 /s at ±5 rad/s) gets
 // none (issue 26: it got "cw" from rounding, and render --both named its +5 run "reversed").
