@@ -66,7 +66,7 @@ struct Scales {
   // ω in body axes is scaled as the angular momentum is, component by component (I_ii ω_i
   // over I_max/τ): a rocking about a light axis is held to the error the same momentum about
   // the heaviest would be. Scaling ω by τ alone, for the same reversal error, cost the default
-  // scene 13 % less and Kane & Levinson 20 % more (docs/speed.md).
+  // scene 7 % less and Kane & Levinson 17 % more (docs/speed.md).
   std::array<double, 3> spin;
 };
 
@@ -134,12 +134,13 @@ struct Rolling {
   static State unpack(const Model& model, const Vector& y, const Scales& k, double t) {
     State s;
     s.x_world = Eigen::Vector3d(y[0] * k.length, y[1] * k.length, 0);
-    for (int i = 0; i < 4; ++i) s.q.coeffs()[i] = y[2 + i];
+    // q normalised (the integrated one is a unit quaternion only to the tolerance), L = R I ω,
+    // then the height and velocity from the constraint.
+    s.q = Eigen::Quaterniond(y[5], y[2], y[3], y[4]).normalized();
     const Eigen::Vector3d w(y[6] / k.spin[0], y[7] / k.spin[1], y[8] / k.spin[2]);
-    // L = R I ω with q normalised (the integrated q is a unit one only to the tolerance);
-    // then z and v from the constraint.
-    s.L_world = s.q.normalized().toRotationMatrix() * (model.body->inertia * w);
-    enforceRolling(model, s);
+    const Eigen::Matrix3d R = s.q.toRotationMatrix();
+    s.L_world = R * (model.body->inertia * w);
+    enforceRolling(model, s, R, R * w);
     s.t = t;
     return s;
   }

@@ -25,7 +25,8 @@ class AdaptiveStepper {
   AdaptiveStepper& operator=(const AdaptiveStepper&) = delete;
 
   /// Takes one accepted step; returns the state at its end (t and step set; the quaternion
-  /// as integrated, not renormalised; under rolling, on the constraint).
+  /// as integrated, not renormalised; under rolling, normalised and the state on the
+  /// constraint).
   State step(std::int64_t step_index);
   /// The dense output inside the last step, t within it.
   State at(double t) const;

@@ -3,19 +3,6 @@
 namespace sim {
 namespace {
 
-// CM → contact (world) and the contact point's rate over the surface (body axes).
-struct ContactGeometry {
-  Eigen::Vector3d r_world, r_body, down_body;
-};
-
-ContactGeometry contactGeometry(const Model& model, const Eigen::Matrix3d& R) {
-  ContactGeometry g;
-  g.down_body = -R.row(2).transpose();  // Rᵀ(−ẑ)
-  g.r_body = lowestSurfacePoint(*model.body, g.down_body);
-  g.r_world = R * g.r_body;
-  return g;
-}
-
 // A x = b for the symmetric positive definite 3×3 A (the inertia about the contact point) by
 // its cofactors: x = adj(A) b / det A. A's condition is that of the body's inertia (≤ 10⁴ for
 // any body a scene can give), so the cofactors lose at most 4 of 16 digits, as LDLT's pivots
@@ -88,10 +75,14 @@ RollingRates rollingRates(const Model& model, const Eigen::Quaterniond& q,
 
 void enforceRolling(const Model& model, State& s) {
   const Eigen::Matrix3d R = s.q.toRotationMatrix();
-  const Eigen::Vector3d r = contactGeometry(model, R).r_world;
-  const Eigen::Vector3d w = angularVelocity(*model.body, R, s.L_world);
+  enforceRolling(model, s, R, angularVelocity(*model.body, R, s.L_world));
+}
+
+void enforceRolling(const Model& model, State& s, const Eigen::Matrix3d& R,
+                    const Eigen::Vector3d& w_world) {
+  const Eigen::Vector3d r = R * lowestSurfacePoint(*model.body, -R.row(2).transpose());
   s.x_world.z() = -r.z() - model.rolling_depth;
-  s.v_world = -w.cross(r);
+  s.v_world = -w_world.cross(r);
 }
 
 }  // namespace sim

@@ -36,5 +36,8 @@ RollingRates rollingRates(const Model& model, const Eigen::Quaterniond& q,
 /// Puts the state back on the constraint: contact point on the floor, or model.rolling_depth
 /// below it (z_cm = −r_z − depth), and not sliding (v = −ω × r).
 void enforceRolling(const Model& model, State& s);
+/// The same with the rotation of s.q and ω (world axes) already at hand.
+void enforceRolling(const Model& model, State& s, const Eigen::Matrix3d& R,
+                    const Eigen::Vector3d& w_world);
 
 }  // namespace sim
