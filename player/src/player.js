@@ -408,6 +408,11 @@ class Player {
     this.applyTime(this.t0);
     this.render();
     this.loop = this.loop.bind(this);
+    this.heldReadouts = false;
+    this.drawQueued = false;
+    this.pixel = new Uint8Array(4);
+    this.afterFrame = typeof MessageChannel !== 'undefined' ? new MessageChannel() : null;
+    if (this.afterFrame) this.afterFrame.port1.onmessage = () => this.drawAfterFrame();
     requestAnimationFrame(this.loop);
   }
 
@@ -793,7 +798,9 @@ class Player {
     return [lo, (t - ts[lo]) / (ts[hi] - ts[lo])];
   }
 
-  applyTime(t) {
+  // The pose at time t; the read-outs too, or (hold) at the next animation frame, the one that
+  // shows the picture of this pose (drawn after the current frame: loop()).
+  applyTime(t, hold) {
     const run = this.run;
     t = Math.min(this.tEnd, Math.max(this.t0, t));
     this.time = t;
@@ -818,7 +825,7 @@ class Player {
     this.shadow.position.set(this.points.position.x, this.points.position.y, 0);
     this.shadow.rotation.set(0, 0, Math.atan2(-along.x, along.y));
     if (this.viewName === 'follow') this.placeChase();
-    this.updateReadouts();
+    if (hold) this.heldReadouts = true; else this.updateReadouts();
     this.dirty = true;
   }
 
@@ -1193,8 +1200,20 @@ class Player {
     return [box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad];
   }
 
+  // Each animation frame moves the playback on and asks for a picture, drawn after the frame
+  // (drawAfterFrame). Chromium, compositing a WebGL canvas on the CPU, reads the canvas back while
+  // it commits a frame, waiting on its main thread for every drawing command sent before: a
+  // picture drawn in the frame's own callback is drawn and read back on the frame's critical
+  // path. Drawn in a task after the frame's commit, it is drawn while the main thread waits for
+  // the next frame, and that frame reads back a finished picture. The picture is shown one frame
+  // later than it would be; the read-outs of a pose reached in playback are written at that same
+  // frame (applyTime's hold), so that the two agree.
   loop(now) {
     requestAnimationFrame(this.loop);
+    if (this.heldReadouts) {
+      this.heldReadouts = false;
+      this.updateReadouts();
+    }
     // (A ResizeObserver follows the stage's size where there is one: no layout read per frame.)
     if (!this.resizeObserved && !this.fixedSize && this.stage.clientWidth &&
         Math.round(this.stage.clientWidth) !== this.width) this.resize();
@@ -1202,10 +1221,10 @@ class Player {
       if (this.lastTick != null) {
         const next = this.time + ((now - this.lastTick) / 1000) * this.speed;
         if (next >= this.tEnd) {
-          this.applyTime(this.tEnd);
+          this.applyTime(this.tEnd, true);
           this.pause();
         } else {
-          this.applyTime(next);
+          this.applyTime(next, true);
         }
       }
       this.lastTick = now;
@@ -1213,7 +1232,14 @@ class Player {
       this.lastTick = null;
     }
     if (this.dirty && this.visible) {
-      this.render();
+      if (this.afterFrame) {
+        if (!this.drawQueued) {
+          this.drawQueued = true;
+          this.afterFrame.port2.postMessage(0);
+        }
+      } else {
+        this.render();
+      }
       if (this.lastFrameAt != null) {
         this.frameTimes.push(now - this.lastFrameAt);
         if (this.frameTimes.length > 60) this.frameTimes.shift();
@@ -1222,6 +1248,18 @@ class Player {
     } else {
       this.lastFrameAt = null; // an idle frame breaks the run of drawn frames
     }
+  }
+
+  // The picture asked for by the last animation frame, drawn in a task of its own (a message to
+  // ourselves: it runs once the frame has been committed) and waited for.
+  drawAfterFrame() {
+    this.drawQueued = false;
+    if (!this.dirty || !this.visible) return;
+    this.render();
+    // Wait for it here (finish() does not: Chromium sends the commands, SwiftShader draws only
+    // when something reads the picture), not in the next frame's read-back.
+    const gl = this.renderer.getContext();
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, this.pixel);
   }
 
   // --- the test hook -----------------------------------------------------------------------------
