@@ -67,13 +67,18 @@ Eigen::Vector3d Paraboloid::lowestPointOfBody(const Eigen::Vector3d& down) const
   return {u.x(), u.y(), top};
 }
 
-Eigen::Vector3d Paraboloid::lowestPointRate(const Eigen::Vector3d& down,
-                                            const Eigen::Vector3d& down_rate) const {
-  const Eigen::Vector2d g(-down.x() / down.z(), -down.y() / down.z());
-  const Eigen::Vector2d g_rate =
-      -down_rate.head<2>() / down.z() + down.head<2>() * down_rate.z() / (down.z() * down.z());
+PointAndRate Paraboloid::lowestPointMoving(const Eigen::Vector3d& down,
+                                           const Eigen::Vector3d& down_rate) const {
+  const double inverse_z = 1 / down.z();
+  const Eigen::Vector2d g = -down.head<2>() * inverse_z;
+  const Eigen::Vector2d g_rate = (-down_rate.head<2>() - g * down_rate.z()) * inverse_z;
   const Eigen::Vector2d xy_rate = hessian_inv * g_rate;
-  return {xy_rate.x(), xy_rate.y(), g.dot(xy_rate)};
+  PointAndRate out;
+  out.rate = {xy_rate.x(), xy_rate.y(), g.dot(xy_rate)};
+  const Eigen::Vector2d xy = hessian_inv * g;
+  out.point = {xy.x(), xy.y(), bottom(xy.x(), xy.y())};
+  if (!(down.z() < 0 && out.point.z() <= top)) out.point = lowestPointOfBody(down);  // on the rim
+  return out;
 }
 
 double Dents::surface(const Paraboloid& shape, double x, double y) const {

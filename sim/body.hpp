@@ -14,6 +14,11 @@ namespace sim {
 
 /// Paraboloid shape in metres: bottom z = p/(2a) x² + q/a² xy + s/(2a) y² − a
 /// (SPEC; the seed's eq. 24), flat top at z = top.
+/// A point of a surface and its velocity over it (m, m/s).
+struct PointAndRate {
+  Eigen::Vector3d point, rate;
+};
+
 struct Paraboloid {
   double a, p, q, s, top;
   /// H⁻¹ with H = [p/a, q/a²; q/a², s/a] the bottom's Hessian: derived once, here, from the
@@ -36,11 +41,11 @@ struct Paraboloid {
   /// Whether the body's lowest point along `down` lies on the rim of the flat top (the body is
   /// tipped past the bottom's edge or upside down) rather than on the smooth bottom.
   bool lowestOnRim(const Eigen::Vector3d& down) const;
-  /// How fast the lowest point moves over the bottom when `down` turns at `down_rate`:
-  /// with g = −(d_x, d_y)/d_z, (ẋ, ẏ) = H⁻¹ ġ and ż = g·(ẋ, ẏ) (the surface's slope is g
-  /// there). m/s.
-  Eigen::Vector3d lowestPointRate(const Eigen::Vector3d& down,
-                                  const Eigen::Vector3d& down_rate) const;
+  /// lowestPointOfBody, and how fast the lowest point moves over the bottom when `down`
+  /// turns at `down_rate`: with g = −(d_x, d_y)/d_z, ġ = −(ḋ_x, ḋ_y)/d_z − g ḋ_z/d_z,
+  /// (ẋ, ẏ) = H⁻¹ ġ and ż = g·(ẋ, ẏ) (the surface's slope is g there). m, m/s.
+  PointAndRate lowestPointMoving(const Eigen::Vector3d& down,
+                                 const Eigen::Vector3d& down_rate) const;
 
  private:
   double xx_, xy_, yy_;  // p/(2a), q/a², s/(2a): bottom()'s coefficients, divided once

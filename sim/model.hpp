@@ -149,6 +149,13 @@ struct State {
 inline Eigen::Vector3d lowestSurfacePoint(const Body& body, const Eigen::Vector3d& down_body) {
   return body.surface.lowestPoint(down_body) - body.com_geometric;
 }
+/// The same, and how fast it moves over the surface as `down_body` turns at `down_rate` (m/s).
+inline PointAndRate lowestSurfacePointMoving(const Body& body, const Eigen::Vector3d& down_body,
+                                             const Eigen::Vector3d& down_rate) {
+  PointAndRate out = body.surface.lowestPointMoving(down_body, down_rate);
+  out.point -= body.com_geometric;
+  return out;
+}
 
 /// ω in body axes, I⁻¹ Rᵀ L (rad/s), for rotation R (body → world): the one place this is
 /// written.

@@ -36,9 +36,10 @@ Core rollingCore(const Model& model, const Eigen::Matrix3d& R, const Eigen::Vect
   Core c;
   c.up = R.row(2).transpose();  // Rᵀ ẑ
   const Eigen::Vector3d down = -c.up;
-  c.r = lowestSurfacePoint(body, down);
   // The down direction turns in body axes as ḋ = −ω × d; the contact point follows.
-  c.r_rate = w.cross(c.r) + body.surface.lowestPointRate(down, -w.cross(down));
+  const PointAndRate contact = lowestSurfacePointMoving(body, down, -w.cross(down));
+  c.r = contact.point;
+  c.r_rate = w.cross(c.r) + contact.rate;
   const Eigen::Matrix3d& I = body.inertia;
   const Eigen::Matrix3d A =
       I + M * (c.r.squaredNorm() * Eigen::Matrix3d::Identity() - c.r * c.r.transpose());

@@ -11,22 +11,25 @@ Eigen::Vector3d Ellipsoid::lowestPoint(const Eigen::Vector3d& down) const {
   return a2.cwiseProduct(down) / s;
 }
 
-Eigen::Vector3d Ellipsoid::lowestPointRate(const Eigen::Vector3d& down,
-                                           const Eigen::Vector3d& down_rate) const {
+PointAndRate Ellipsoid::lowestPointMoving(const Eigen::Vector3d& down,
+                                          const Eigen::Vector3d& down_rate) const {
   const Eigen::Vector3d a2 = semi_axes.cwiseAbs2();
-  const double s = std::sqrt(down.dot(a2.cwiseProduct(down)));
-  const Eigen::Vector3d p = a2.cwiseProduct(down) / s;
-  return (a2.cwiseProduct(down_rate) - p * down.dot(a2.cwiseProduct(down_rate)) / s) / s;
+  const Eigen::Vector3d a2_down = a2.cwiseProduct(down), a2_rate = a2.cwiseProduct(down_rate);
+  const double inverse_s = 1 / std::sqrt(down.dot(a2_down));
+  PointAndRate out;
+  out.point = a2_down * inverse_s;
+  out.rate = (a2_rate - out.point * (down.dot(a2_rate) * inverse_s)) * inverse_s;
+  return out;
 }
 
 Eigen::Vector3d Surface::lowestPoint(const Eigen::Vector3d& down) const {
   return kind == Kind::Ellipsoid ? ellipsoid.lowestPoint(down) : paraboloid.lowestPointOfBody(down);
 }
 
-Eigen::Vector3d Surface::lowestPointRate(const Eigen::Vector3d& down,
-                                         const Eigen::Vector3d& down_rate) const {
-  return kind == Kind::Ellipsoid ? ellipsoid.lowestPointRate(down, down_rate)
-                                 : paraboloid.lowestPointRate(down, down_rate);
+PointAndRate Surface::lowestPointMoving(const Eigen::Vector3d& down,
+                                        const Eigen::Vector3d& down_rate) const {
+  return kind == Kind::Ellipsoid ? ellipsoid.lowestPointMoving(down, down_rate)
+                                 : paraboloid.lowestPointMoving(down, down_rate);
 }
 
 Eigen::Vector2d Surface::radiiAtBottom() const {

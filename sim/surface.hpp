@@ -13,9 +13,9 @@ struct Ellipsoid {
   Eigen::Vector3d semi_axes;  ///< (a, b, c), m
   /// Lowest along `down`: p = A²d / √(dᵀA²d), A = diag(a, b, c).
   Eigen::Vector3d lowestPoint(const Eigen::Vector3d& down) const;
-  /// ṗ = (A²ḋ − p (dᵀA²ḋ)/√(dᵀA²d)) / √(dᵀA²d).
-  Eigen::Vector3d lowestPointRate(const Eigen::Vector3d& down,
-                                  const Eigen::Vector3d& down_rate) const;
+  /// That point and its rate ṗ = (A²ḋ − p (dᵀA²ḋ)/√(dᵀA²d)) / √(dᵀA²d).
+  PointAndRate lowestPointMoving(const Eigen::Vector3d& down,
+                                 const Eigen::Vector3d& down_rate) const;
 };
 
 struct Surface {
@@ -31,9 +31,10 @@ struct Surface {
   bool lowestOnRim(const Eigen::Vector3d& down) const {
     return kind == Kind::Paraboloid && paraboloid.lowestOnRim(down);
   }
-  /// How fast that point moves over the surface as `down` turns at `down_rate`, m/s.
-  Eigen::Vector3d lowestPointRate(const Eigen::Vector3d& down,
-                                  const Eigen::Vector3d& down_rate) const;
+  /// That point, and how fast it moves over the surface as `down` turns at `down_rate` (the
+  /// two share their divisions), m and m/s.
+  PointAndRate lowestPointMoving(const Eigen::Vector3d& down,
+                                 const Eigen::Vector3d& down_rate) const;
   /// Principal radii of curvature at the point lowest when upright, ascending, m.
   Eigen::Vector2d radiiAtBottom() const;
   /// Half extents of the outline seen from above, across (x) and along (y), m.
