@@ -98,7 +98,7 @@ void main() {
 // shader runs for most of the canvas's pixels, so each pixel does only what its view needs.
 // The fade (with distance from the target, or the fog of the orthographic views along the
 // floor, FOG) is computed at the vertices of a mesh that covers only where the floor shows,
-// fine enough that the linear interpolation of the smoothstep is within half a level of it:
+// fine enough that the picture is within two levels of the fade computed per pixel:
 // rings about the target from fadeNear to fadeFar (the background beyond is the clear colour),
 // or rows across the view from fogNear to fogFar. The mode is a define (its own program, not a
 // branch that runs both sides). The shadow (SHADOW) is drawn only in a quad around the body,
