@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <boost/container/small_vector.hpp>
 #include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
@@ -56,8 +57,14 @@ Quadric quadricOf(const DentShape& d) {
   return {d.cx, 0, d.cy, -2 * d.cx * x0, -2 * d.cy * y0, d.cx * x0 * x0 + d.cy * y0 * y0 - d.depth};
 }
 
+// Where a line crosses the surfaces' meeting curves: two roots for each pair of at most four
+// surfaces (the bottom, the top and two dents), held without a heap allocation (Boost's
+// small_vector; the vectors these were made one for every line, a third of a dented body's
+// cubature).
+using Cuts = boost::container::small_vector<double, 16>;
+
 // Real roots of c2 y² + c1 y + c0 = 0 (a line when c2 is 0), appended to `out`.
-void appendRoots(double c2, double c1, double c0, std::vector<double>& out) {
+void appendRoots(double c2, double c1, double c0, Cuts& out) {
   const double scale = std::abs(c2) + std::abs(c1) + std::abs(c0);
   if (std::abs(c2) <= 1e-15 * scale) {
     if (c1 != 0) out.push_back(-c0 / c1);
@@ -73,7 +80,7 @@ void appendRoots(double c2, double c1, double c0, std::vector<double>& out) {
 
 // The x where the conic Q(x, y) = 0 has a vertical tangent: the y-discriminant
 // (Bx + E)² − 4C(Ax² + Dx + F) vanishes there. Where these lie, columns appear or vanish.
-void appendTangentXs(const Quadric& Q, std::vector<double>& out) {
+void appendTangentXs(const Quadric& Q, Cuts& out) {
   appendRoots(Q.B * Q.B - 4 * Q.A * Q.C, 2 * Q.B * Q.E - 4 * Q.C * Q.D, Q.E * Q.E - 4 * Q.C * Q.F,
               out);
 }
@@ -99,13 +106,13 @@ using ColumnSums = Eigen::Matrix<double, 6, 1>;  // ∫L, ∫yL, ∫y²L, ∫Z1,
 // to one ceiling, both quadratic in y, so the integrands are polynomials of degree ≤ 6 and
 // 7-point Gauss–Legendre (exact to degree 13) gives them to rounding.
 ColumnSums lineIntegrals(const Surfaces& s, double x) {
-  std::vector<double> cuts;
+  Cuts cuts;
   const Quadric rim = s.bottom - s.ceilings.front();
   appendRoots(rim.C, rim.B * x + rim.E, rim.A * x * x + rim.D * x + rim.F, cuts);
   if (cuts.size() < 2) return ColumnSums::Zero();
   const double lo = std::min(cuts[0], cuts[1]), hi = std::max(cuts[0], cuts[1]);
   cuts = {lo, hi};
-  std::vector<const Quadric*> all{&s.bottom};
+  boost::container::small_vector<const Quadric*, 4> all{&s.bottom};
   for (const Quadric& c : s.ceilings) all.push_back(&c);
   for (std::size_t i = 0; i < all.size(); ++i)
     for (std::size_t j = i + 1; j < all.size(); ++j) {
@@ -296,12 +303,13 @@ VolumeMoments cubatureMoments(const Paraboloid& shape, const std::optional<Dents
   // Split x where columns appear or vanish (a vertical tangent of any meeting curve), so each
   // piece's integrand is smooth inside, with at most a square-root behaviour at its ends.
   const double half = shape.rimHalfWidths().x();
-  std::vector<double> xs{-half, half};
-  std::vector<const Quadric*> all{&surfaces.bottom};
+  Cuts xs{-half, half};
+  boost::container::small_vector<const Quadric*, 4> all{&surfaces.bottom};
   for (const Quadric& c : surfaces.ceilings) all.push_back(&c);
   for (std::size_t i = 0; i < all.size(); ++i)
     for (std::size_t j = i + 1; j < all.size(); ++j) appendTangentXs(*all[i] - *all[j], xs);
-  std::erase_if(xs, [&](double x) { return !(std::abs(x) <= half); });
+  xs.erase(std::remove_if(xs.begin(), xs.end(), [&](double x) { return !(std::abs(x) <= half); }),
+           xs.end());
   std::sort(xs.begin(), xs.end());
 
   auto f = [&](double x) { return slab(surfaces, x); };
