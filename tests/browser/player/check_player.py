@@ -9,6 +9,8 @@ and, for every .rb-player on it:
   - a player with run data is built (element.rbPlayer), one without shows a note instead;
   - the canvas shows red and blue pixels where the body is (the body's centre projects into
     their bounding box), and from above mostly red (the top is red);
+  - the contact shadow darkens the floor under the body's centre and, a little, where its
+    footprint ends (from above with the body hidden, against the shadow's strength set to 0);
   - the n(t) plot marks the forecast first reversal (data-forecast) with a violet line and its
     label when the forecast applies and falls within the run, and has no violet otherwise;
   - the read-outs show the time and the spin with its sense, at the slider's times;
@@ -108,6 +110,58 @@ return {all, column, height: c.height};
 """
 
 # Waits for two animation frames: whatever the last change asked to be drawn is drawn.
+# The contact shadow, from above with the body hidden, at the sample where the body's long axis
+# is nearest 45° to the world axes: how much darker the floor is with the shadow than without
+# (its strength set to 0), in grey levels, at the centre of the shadow's ellipse and at its four
+# points where the footprint ends (ρ = 1: 3 % darker, the shadow fading out by ρ = 1.15). The
+# shadow is a quad of its own around the body (player.js): placed or turned wrongly, it clips the
+# ellipse and some of the four points are not darkened.
+SHADOW_JS = """
+const element = arguments[0];
+const p = window.RattlebackPlayer.players.find((q) => q.container === element);
+const h = element.rbPlayer;
+const u = p.floorMaterial.uniforms;
+const before = [h.time(), h.view()];
+let best = null;
+for (let k = 0; k < p.n; k += Math.max(1, Math.floor(p.n / 200))) {
+  h.setTime(p.run.t[k]);
+  const a = u.shadowAxis.value;
+  const off = Math.abs(Math.abs(Math.atan2(a.y, a.x)) % (Math.PI / 2) - Math.PI / 4);
+  if (!best || off < best[1]) best = [p.run.t[k], off];
+}
+h.setTime(best[0]);
+h.setView('above');
+p.points.visible = false;
+const read = () => {
+  h.renderAll();
+  const c = document.createElement('canvas');
+  c.width = p.canvas.width; c.height = p.canvas.height;
+  const g = c.getContext('2d');
+  g.drawImage(p.canvas, 0, 0);
+  return g.getImageData(0, 0, c.width, c.height).data;
+};
+const strength = u.shadowStrength.value;
+const on = read();
+u.shadowStrength.value = 0;
+const off = read();
+u.shadowStrength.value = strength;
+p.points.visible = true;
+const c = u.shadowCenter.value, a = u.shadowAxis.value, half = u.shadowHalf.value;
+const across = [a.y, -a.x];
+const scale = p.canvas.width / p.width;
+const darker = (x, y) => {
+  const [px, py] = h.project([x, y, 0]);
+  const i = 4 * (Math.round(py * scale) * p.canvas.width + Math.round(px * scale));
+  return (off[i] + off[i + 1] + off[i + 2] - on[i] - on[i + 1] - on[i + 2]) / 3;
+};
+const ends = [[1, 0], [-1, 0], [0, 1], [0, -1]].map(([i, j]) => darker(
+  c.x + i * half.x * across[0] + j * half.y * a.x, c.y + i * half.x * across[1] + j * half.y * a.y));
+const result = {t: best[0], angle: Math.atan2(a.y, a.x) * 180 / Math.PI, centre: darker(c.x, c.y), ends};
+h.setTime(before[0]);
+h.setView(before[1]);
+return result;
+"""
+
 FRAMES_JS = "const done = arguments[arguments.length - 1]; requestAnimationFrame(() => requestAnimationFrame(() => done(true)));"
 
 
@@ -283,6 +337,14 @@ class Checker:
         px = self.pixels(element)
         self.check(px["red"] > 100 and px["red"] > 3 * px["blue"],
                    f"{where}: from above the top should be red: {px['red']} red, {px['blue']} blue")
+
+        # The contact shadow: under the body and as wide as its footprint (SHADOW_JS).
+        shadow = self.js(SHADOW_JS, element)
+        self.check(shadow["centre"] > 40, f"{where}: the contact shadow darkens the floor under the body's "
+                                          f"centre by {shadow['centre']:.1f} levels (t = {shadow['t']:.2f} s)")
+        self.check(min(shadow["ends"]) >= 2, f"{where}: where the footprint ends (long axis at "
+                   f"{shadow['angle']:.0f}°, t = {shadow['t']:.2f} s) the contact shadow darkens the floor "
+                   f"by {[round(v, 1) for v in shadow['ends']]} levels")
 
         # The slider: poses between samples, as slerp / lerp of the neighbouring samples.
         self.click_view(element, "oblique")
