@@ -45,9 +45,7 @@ Eigen::Vector2d Paraboloid::rimHalfWidths() const {
 }
 
 Eigen::Vector3d Paraboloid::lowestPoint(const Eigen::Vector3d& down) const {
-  const Eigen::Vector2d slope(-down.x() / down.z(), -down.y() / down.z());
-  const Eigen::Vector2d xy = hessian_inv * slope;
-  return {xy.x(), xy.y(), bottom(xy.x(), xy.y())};
+  return pointAtSlope(Eigen::Vector2d(-down.x() / down.z(), -down.y() / down.z()));
 }
 
 bool Paraboloid::lowestOnRim(const Eigen::Vector3d& down) const {
@@ -75,8 +73,7 @@ PointAndRate Paraboloid::lowestPointMoving(const Eigen::Vector3d& down,
   const Eigen::Vector2d xy_rate = hessian_inv * g_rate;
   PointAndRate out;
   out.rate = {xy_rate.x(), xy_rate.y(), g.dot(xy_rate)};
-  const Eigen::Vector2d xy = hessian_inv * g;
-  out.point = {xy.x(), xy.y(), bottom(xy.x(), xy.y())};
+  out.point = pointAtSlope(g);
   if (!(down.z() < 0 && out.point.z() <= top)) out.point = lowestPointOfBody(down);  // on the rim
   return out;
 }

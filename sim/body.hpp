@@ -12,13 +12,13 @@
 
 namespace sim {
 
-/// Paraboloid shape in metres: bottom z = p/(2a) x² + q/a² xy + s/(2a) y² − a
-/// (SPEC; the seed's eq. 24), flat top at z = top.
 /// A point of a surface and its velocity over it (m, m/s).
 struct PointAndRate {
   Eigen::Vector3d point, rate;
 };
 
+/// Paraboloid shape in metres: bottom z = p/(2a) x² + q/a² xy + s/(2a) y² − a
+/// (SPEC; the seed's eq. 24), flat top at z = top.
 struct Paraboloid {
   double a, p, q, s, top;
   /// H⁻¹ with H = [p/a, q/a²; q/a², s/a] the bottom's Hessian: derived once, here, from the
@@ -49,6 +49,11 @@ struct Paraboloid {
 
  private:
   double xx_, xy_, yy_;  // p/(2a), q/a², s/(2a): bottom()'s coefficients, divided once
+  // The bottom's point whose slope is g = −(d_x, d_y)/d_z: (x, y) = H⁻¹ g.
+  Eigen::Vector3d pointAtSlope(const Eigen::Vector2d& g) const {
+    const Eigen::Vector2d xy = hessian_inv * g;
+    return {xy.x(), xy.y(), bottom(xy.x(), xy.y())};
+  }
 };
 
 /// Two dents z = p/(2a k²)(x ∓ m_x)² + s/(2a k²)(y ∓ m_y)² − (a − inset) k cut from

@@ -20,10 +20,6 @@ Eigen::Vector3d solveSymmetric(const Eigen::Matrix3d& A, const Eigen::Vector3d& 
          det;
 }
 
-}  // namespace
-
-namespace {
-
 // ω̇ in body axes, where the inertia is constant: the equations are between vectors, so they
 // hold in any axes, and only the contact point and the force are turned into the world's.
 struct Core {
