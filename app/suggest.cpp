@@ -4,22 +4,9 @@
 #include <cctype>
 #include <vector>
 
-namespace app {
+#include "util/nearest.hpp"
 
-std::size_t editDistance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
+namespace app {
 
 namespace {
 
@@ -64,16 +51,10 @@ std::string explainOptionError(const CLI::App& cli, int argc, char** argv,
     } else if (known(word)) {
       continue;
     }
-    std::string nearest;
-    std::size_t best = 0;
-    for (const std::string& name : names) {
-      const std::size_t d = editDistance(word, name);
-      if (nearest.empty() || d < best) nearest = name, best = d;
-    }
     std::string line = path + ": no option " + word;
     // A one-letter option is one edit from every other: no guess for those.
-    if (word.size() > 2 && !nearest.empty() && best <= std::max<std::size_t>(2, word.size() / 3))
-      line += "; did you mean " + nearest + "?";
+    if (const auto nearest = rb::nearestWord(word, names); word.size() > 2 && nearest)
+      line += "; did you mean " + *nearest + "?";
     return line + " (see rattleback " + path + " --help)";
   }
   // CLI11 says "Could not convert: --dt = abc": said as what the option takes.
@@ -99,19 +80,14 @@ std::string explainOptionError(const CLI::App& cli, int argc, char** argv,
 std::string explainParseError(const CLI::App& cli, int argc, char** argv, const std::string& what) {
   if (argc < 2 || argv[1][0] == '-') return what + " (see rattleback --help)";
   const std::string word = argv[1];
-  std::string nearest;
-  std::size_t best = 0;
-  bool known = false;
-  for (const CLI::App* sub : cli.get_subcommands([](const CLI::App*) { return true; })) {
-    const std::string name = sub->get_name();
-    if (name == word) known = true;
-    const std::size_t d = editDistance(word, name);
-    if (nearest.empty() || d < best) nearest = name, best = d;
-  }
-  if (known) return explainOptionError(cli, argc, argv, what);
+  std::vector<std::string> commands;
+  for (const CLI::App* sub : cli.get_subcommands([](const CLI::App*) { return true; }))
+    commands.push_back(sub->get_name());
+  if (std::find(commands.begin(), commands.end(), word) != commands.end())
+    return explainOptionError(cli, argc, argv, what);
   std::string line = "'" + word + "' is not a command";
-  if (!nearest.empty() && best <= std::max<std::size_t>(2, word.size() / 3))
-    line += "; did you mean '" + nearest + "'?";
+  if (const auto nearest = rb::nearestWord(word, commands))
+    line += "; did you mean '" + *nearest + "'?";
   std::string names;
   for (const CLI::App* sub : cli.get_subcommands([](const CLI::App*) { return true; }))
     names += (names.empty() ? "" : ", ") + sub->get_name();

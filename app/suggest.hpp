@@ -7,9 +7,6 @@
 
 namespace app {
 
-/// Levenshtein distance between two words.
-std::size_t editDistance(const std::string& a, const std::string& b);
-
 /// The line to print for a command-line error: when the first word is no command, it says so
 /// and names the nearest one; when a word of a known command is none of its options ("--fsp"),
 /// it names the nearest option; otherwise CLI11's message and a pointer to --help.

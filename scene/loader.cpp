@@ -17,6 +17,7 @@
 #include "scene/keys.hpp"
 #include "scene/tree.hpp"
 #include "sim/model.hpp"
+#include "util/nearest.hpp"
 
 namespace scene {
 namespace {
@@ -51,10 +52,15 @@ class MapReader {
       if (std::none_of(allowed.begin(), allowed.end(),
                        [&](const Key* known) { return nameIn(known->path) == key; })) {
         std::string names;
-        for (const Key* known : allowed)
+        std::vector<std::string_view> words;
+        for (const Key* known : allowed) {
           names += (names.empty() ? "" : ", ") + std::string(nameIn(known->path));
+          words.push_back(nameIn(known->path));
+        }
+        const std::optional<std::string> nearest = rb::nearestWord(key, words);
         throw Failure{lineOf(entry.first), join(path_, key),
-                      "is not a known key (known here: " + names + ")"};
+                      "is not a known key" + (nearest ? "; did you mean " + *nearest + "?" : "") +
+                          " (known here: " + names + ")"};
       }
       out_.lines[join(path_, key)] = lineOf(entry.first);
       present_[key] = entry.second;

@@ -58,7 +58,10 @@ const BadCase kBadCases[] = {
     {" duration: 1.0", "", "10: simulation.duration is required, e.g. duration: 8.0 (s)"},
     {"  mass: 0.5\n", "  mass: 0.5\n  mass: 0.6\n", "8: body.mass is given twice"},
     {"  mass: 0.5\n", "  mass: 0.5\n  colour: red\n", "8: body.colour is not a known key"},
-    {"", "extra: 1\n", "12: extra is not a known key"},
+    {"", "extra: 1\n", "12: extra is not a known key (known here:"},  // near no key: no guess
+    // A key one or two edits from a known one is named as the likely typo.
+    {"  mass: 0.5\n", "  mass: 0.5\n  mas: 0.6\n",
+     "8: body.mas is not a known key; did you mean mass? (known here:"},
     {"body:\n", "body: [\n", ""},  // malformed: checked separately for its line
     {"dt: 1.0e-5", "dt: 0", "10: simulation.dt must be > 0"},
     {"dt: 1.0e-5", "dt: -1e-5", "10: simulation.dt must be > 0"},
