@@ -236,6 +236,14 @@ rb::Error located(const std::string& file, int line, const std::string& key,
 
 }  // namespace
 
+std::string yamlContent(const std::string& text) {
+  try {
+    return YAML::Dump(YAML::Load(text));
+  } catch (const YAML::Exception&) {
+    return text;
+  }
+}
+
 int unclosedFlowLine(const std::string& text) {
   std::vector<int> open;  // the lines of the brackets not yet closed
   int line = 1;

@@ -50,6 +50,11 @@ rb::Result<Loaded> loadString(const std::string& yaml, const std::string& name);
 /// found") at the end of the file, where nothing is wrong; this is the line to name.
 int unclosedFlowLine(const std::string& text);
 
+/// A YAML text's content without its comments and layout (yaml-cpp's own emitting of what it
+/// read), or the text itself when it is no YAML: two texts that differ only in comments, blank
+/// lines or indentation give the same.
+std::string yamlContent(const std::string& text);
+
 /// "file:line: key message" for an error found in a loaded scene (by compile() or a video
 /// check); a key set from the command line is named by its option instead.
 std::string describe(const Loaded& loaded, const rb::Error& error);

@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "scene/loader.hpp"
 #include "util/output_place.hpp"
 
 namespace tasks {
@@ -117,10 +118,12 @@ std::string textOf(const std::string& path) {
 }  // namespace
 
 std::string sweepFingerprint(const scene::Sweep& sweep) {
-  // FNV-1a (64 bits) of the sweep file and its base scene: any edit to either (a duration, a
-  // mass) changes it, where the rows' own values catch only a changed axis.
+  // FNV-1a (64 bits) of the sweep file's and its base scene's content: any edit to either (a
+  // duration, a mass) changes it, where the rows' own values catch only a changed axis; a
+  // comment or a blank line does not (a new user's comment had made --resume refuse).
   std::uint64_t hash = 14695981039346656037ull;
-  for (const std::string& text : {textOf(sweep.file), std::string("\n--\n"), textOf(sweep.base)})
+  for (const std::string& text : {scene::yamlContent(textOf(sweep.file)), std::string("\n--\n"),
+                                  scene::yamlContent(textOf(sweep.base))})
     for (unsigned char c : text) hash = (hash ^ c) * 1099511628211ull;
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));

@@ -350,7 +350,7 @@ TEST(Sweep, AnInterruptKeepsTheFinishedRowsAndResumeCompletesThem) {
   EXPECT_EQ(withoutWall(slurp(table)), withoutWall(slurp(dir / "whole.csv")));
 }
 
-// --resume refuses a journal begun for another text of the sweep or its base scene: a changed
+// --resume refuses a journal begun for another content of the sweep or its base scene: a changed
 // duration or mass leaves every row's axis values as they were, and the resumed table mixed two
 // sweeps' rows (a new user's first try: 16 rows of 25 s runs beside 4 of 6 s, exit 0).
 TEST(Sweep, ResumeRefusesAJournalOfAChangedSweep) {
@@ -373,6 +373,12 @@ TEST(Sweep, ResumeRefusesAJournalOfAChangedSweep) {
   interrupted();
   EXPECT_EQ(rattleback(dir, "sweep " + sweep.string() + " -q --resume -o " + table.string()).status,
             0);
+  // A comment and a blank line change nothing the sweep does: the journal is used.
+  interrupted();
+  std::ofstream(sweep, std::ios::app) << "\n# the same sweep, with a note\n";
+  const Outcome noted =
+      rattleback(dir, "sweep " + sweep.string() + " -q --resume -o " + table.string());
+  EXPECT_EQ(noted.status, 0) << noted.err;
   interrupted();
   std::string text = slurp(sweep);
   text.replace(text.find("duration:"), std::string("duration:").size(), "duration: 0.2 #");
