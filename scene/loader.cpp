@@ -282,6 +282,18 @@ rb::Error malformedYaml(const std::string& name, const std::string& text,
       line = opened;
       message = "a { or [ on this line is never closed (" + e.msg + ")";
     }
+  // A tab in the indentation: yaml-cpp names what it then misreads ("illegal map value").
+  int at = 1;
+  for (std::size_t start = 0; start < text.size() && at <= line; ++at) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    const std::size_t first = text.find_first_not_of(' ', start);
+    if (first < end && text[first] == '\t') {
+      line = at;
+      message = "a tab in this line's indentation: YAML indents with spaces only (" + e.msg + ")";
+      break;
+    }
+    start = end + 1;
+  }
   rb::Error error{"",
                   printable(name + ":" + std::to_string(line) + ": malformed YAML: " + message)};
   error.where = rb::Error::Where{name, line, ""};

@@ -224,6 +224,10 @@ TEST(BadScenes, MalformedYamlNamesTheLine) {
   const std::string indented =
       errorFor("units: {length: 0.01}\nbody:\n  shape: paraboloid\n   mass: 1\n");
   EXPECT_EQ(indented.rfind("inline.yaml:4: malformed YAML", 0), 0u) << indented;
+  // A tab in the indentation is named as such (yaml-cpp says "illegal map value" there).
+  const std::string tabbed = errorFor("units: {length: 0.01}\nbody:\n\tshape: paraboloid\n");
+  EXPECT_EQ(tabbed.rfind("inline.yaml:3: malformed YAML: a tab in this line's indentation", 0), 0u)
+      << tabbed;
   EXPECT_EQ(errorFor("").rfind("inline.yaml:1: the scene is empty", 0), 0u);
   EXPECT_EQ(errorFor("- 1\n- 2\n").rfind("inline.yaml:1: scene must be a map", 0), 0u);
 }
