@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -100,11 +101,11 @@ rb::Status checkPlotFile(const std::string& png) {
   if (fs::is_directory(png, ec)) return rb::Status::fail(png + ": --plot is a folder, not a file");
   const rb::OutputPlace place = rb::outputPlace(png);
   if (auto refused = refuseDevice(png, place); !refused) return refused;
+  const rb::OutputNamedBy naming("--plot");
   if (auto made = tasks::makeParentFolder(place.target); !made) return made;
   const fs::path dir = fs::absolute(place.target).parent_path();
   if (std::string why = probeWrite(dir); !why.empty())
-    return rb::Status::fail(png + ": --plot cannot write into " + dir.string() + ": " + why +
-                            " (give --plot a path in a folder you can write)");
+    return rb::Status::fail(rb::cannotWriteIn(png, why));
   return {};
 }
 
@@ -120,8 +121,7 @@ rb::Status drawWithGnuplot(const std::string& png, Write write) {
   const rb::OutputPlace place = rb::outputPlace(png);
   if (auto refused = refuseDevice(png, place); !refused) return refused;
   const fs::path parent = fs::absolute(place.target).parent_path();
-  if (!fs::is_directory(parent, ec))
-    return rb::Status::fail(png + ": cannot write: the folder does not exist");
+  if (!fs::is_directory(parent, ec)) return rb::Status::fail(rb::cannotWriteIn(png, ENOENT));
   char pattern[] = "/tmp/rattleback-plot-XXXXXX";
   if (!mkdtemp(pattern))
     return rb::Status::fail(png + ": cannot make a temporary folder: " + std::strerror(errno));
@@ -227,55 +227,93 @@ rb::Status plotPng(const std::string& png, const std::string& title,
   });
 }
 
+namespace {
+
+// A tic label as printed: a number's minus signs as U+2212 (the font's hyphen is a short dash
+// that, rotated, reads as "`6"); any other label as it is.
+std::string ticLabel(const std::string& value) {
+  char* end = nullptr;
+  (void)std::strtod(value.c_str(), &end);
+  if (value.empty() || end != value.c_str() + value.size()) return value;
+  std::string out;
+  for (char c : value) out += c == '-' ? std::string("\xE2\x88\x92") : std::string(1, c);
+  return out;
+}
+
+}  // namespace
+
+void writeHeatmapScript(std::ostream& script, const Heatmap& map, const fs::path& work,
+                        const fs::path& temp_png, int width, int height) {
+  const std::size_t nx = map.x_values.size(), ny = map.y_values.size();
+  // At most about a dozen labels on an axis: every k-th value.
+  auto shown = [](const std::vector<std::string>& values) {
+    std::vector<std::pair<std::string, std::size_t>> tics;
+    const std::size_t every = std::max<std::size_t>(1, (values.size() + 11) / 12);
+    for (std::size_t i = 0; i < values.size(); i += every)
+      tics.emplace_back(ticLabel(values[i]), i);
+    return tics;
+  };
+  auto list = [](const std::vector<std::pair<std::string, std::size_t>>& tics) {
+    std::string text;
+    for (const auto& [label, i] : tics)
+      text += (text.empty() ? "" : ", ") + quoted(label) + " " + std::to_string(i);
+    return "(" + text + ")";
+  };
+  // The x labels level when each fits its column (10-point DejaVu Sans: about 7 pixels a
+  // character, the map about three quarters of the width); turned by 30° only when they would
+  // run into each other.
+  const auto x_tics = shown(map.x_values);
+  std::size_t longest = 0;
+  for (const auto& tic : x_tics) longest = std::max(longest, map.x_values[tic.second].size());
+  const double column = 0.75 * width / std::max<std::size_t>(1, x_tics.size());
+  const bool rotate = 7.0 * static_cast<double>(longest) + 8.0 > column;
+  script
+      << "set terminal pngcairo size " << width << "," << height
+      << " font \"DejaVu Sans,10\" noenhanced\n"
+      << "set output " << quoted(temp_png.string()) << "\n"
+      << "set title " << quoted(map.title) << "\n"
+      << "set xlabel " << quoted(map.x_label) << "\nset ylabel " << quoted(map.y_label) << "\n"
+      << "set cblabel " << quoted(map.value_label) << "\n"
+      << "set xtics " << list(x_tics) << (rotate ? " rotate by -30" : "") << "\n"
+      << "set ytics " << list(shown(map.y_values)) << "\n"
+      << "set xrange [-0.5:" << nx - 0.5 << "]\nset yrange [-0.5:" << ny - 0.5
+      << "]\n"
+      // Viridis (perceptually uniform, readable in grey and by colour-blind readers).
+      << "set palette defined (0 '#440154', 1 '#3b528b', 2 '#21918c', 3 '#5ec962', 4 '#fde725')\n"
+      << "set object 1 rectangle from graph 0,0 to graph 1,1 behind fc rgb '#c8c8c8' fs solid\n";
+  // The note on a line of its own under the axis title, centred: the bottom margin grows by
+  // two lines to hold it.
+  if (!map.note.empty())
+    script << "set bmargin " << (rotate ? 7 : 6) << "\n"
+           << "set label 1 " << quoted(map.note) << " at screen 0.5, character 1 center\n";
+  bool any = false;
+  for (double v : map.values) any = any || std::isfinite(v);
+  if (!any) script << "set cbrange [0:1]\n";
+  script << "plot " << quoted((work / "map.dat").string()) << " matrix with image notitle\n"
+         << "set output\n";
+}
+
 rb::Status heatmapPng(const std::string& png, const Heatmap& map, int width, int height) {
-  return drawWithGnuplot(png, [&](std::ofstream& script, const fs::path& work,
-                                  const fs::path& temp_png) {
-    // The data as gnuplot's matrix: one line per y value, one column per x value; NaN for a
-    // cell without a value, which shows the grey background.
-    const std::size_t nx = map.x_values.size(), ny = map.y_values.size();
-    std::ofstream data(work / "map.dat");
-    data.precision(10);
-    for (std::size_t iy = 0; iy < ny; ++iy) {
-      for (std::size_t ix = 0; ix < nx; ++ix) {
-        const double v = map.values[ix * ny + iy];
-        data << (ix ? " " : "");
-        if (std::isfinite(v))
-          data << v;
-        else
-          data << "NaN";
-      }
-      data << "\n";
-    }
-    // At most about a dozen labels on an axis: every k-th value.
-    auto tics = [](const std::vector<std::string>& values) {
-      const std::size_t every = std::max<std::size_t>(1, (values.size() + 11) / 12);
-      std::string list;
-      for (std::size_t i = 0; i < values.size(); i += every)
-        list += (list.empty() ? "" : ", ") + quoted(values[i]) + " " + std::to_string(i);
-      return "(" + list + ")";
-    };
-    script
-        << "set terminal pngcairo size " << width << "," << height
-        << " font \"DejaVu Sans,10\" noenhanced\n"
-        << "set output " << quoted(temp_png.string()) << "\n"
-        << "set title " << quoted(map.title) << "\n"
-        << "set xlabel " << quoted(map.x_label) << "\nset ylabel " << quoted(map.y_label) << "\n"
-        << "set cblabel " << quoted(map.value_label) << "\n"
-        << "set xtics " << tics(map.x_values) << " rotate by -30\n"
-        << "set ytics " << tics(map.y_values) << "\n"
-        << "set xrange [-0.5:" << nx - 0.5 << "]\nset yrange [-0.5:" << ny - 0.5
-        << "]\n"
-        // Viridis (perceptually uniform, readable in grey and by colour-blind readers).
-        << "set palette defined (0 '#440154', 1 '#3b528b', 2 '#21918c', 3 '#5ec962', 4 '#fde725')\n"
-        << "set object 1 rectangle from graph 0,0 to graph 1,1 behind fc rgb '#c8c8c8' fs solid\n";
-    if (!map.note.empty())
-      script << "set label 1 " << quoted(map.note) << " at screen 0.99, screen 0.02 right\n";
-    bool any = false;
-    for (double v : map.values) any = any || std::isfinite(v);
-    if (!any) script << "set cbrange [0:1]\n";
-    script << "plot " << quoted((work / "map.dat").string()) << " matrix with image notitle\n"
-           << "set output\n";
-  });
+  return drawWithGnuplot(
+      png, [&](std::ofstream& script, const fs::path& work, const fs::path& temp_png) {
+        // The data as gnuplot's matrix: one line per y value, one column per x value; NaN for a
+        // cell without a value, which shows the grey background.
+        const std::size_t nx = map.x_values.size(), ny = map.y_values.size();
+        std::ofstream data(work / "map.dat");
+        data.precision(10);
+        for (std::size_t iy = 0; iy < ny; ++iy) {
+          for (std::size_t ix = 0; ix < nx; ++ix) {
+            const double v = map.values[ix * ny + iy];
+            data << (ix ? " " : "");
+            if (std::isfinite(v))
+              data << v;
+            else
+              data << "NaN";
+          }
+          data << "\n";
+        }
+        writeHeatmapScript(script, map, work, temp_png, width, height);
+      });
 }
 
 }  // namespace app

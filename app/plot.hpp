@@ -3,7 +3,9 @@
 // and it is renamed into place only when gnuplot succeeded.
 #pragma once
 
+#include <filesystem>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -51,5 +53,8 @@ struct Heatmap {
 
 /// Draws `map` into a PNG of width × height pixels, as plotPng.
 rb::Status heatmapPng(const std::string& png, const Heatmap& map, int width, int height);
+/// The gnuplot script heatmapPng runs (its data in `work`/map.dat, drawn into `temp_png`).
+void writeHeatmapScript(std::ostream& script, const Heatmap& map, const std::filesystem::path& work,
+                        const std::filesystem::path& temp_png, int width, int height);
 
 }  // namespace app

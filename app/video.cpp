@@ -183,6 +183,7 @@ int compareCommand(const CompareArgs& args) {
     std::printf("\n");
   }
   if (!same && !args.diff.empty()) {
+    const rb::OutputNamedBy naming("--diff");  // the way out an error line suggests
     if (auto e = render::writePng(args.diff, render::diffImage(a, b, args.channel_tolerance)); !e) {
       std::cerr << e.error().text() << "\n";
       return kBadInput;

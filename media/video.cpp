@@ -78,8 +78,10 @@ struct Output {
   std::jthread thread;
 
   void start() {
-    thread = std::jthread([this](std::stop_token stop) {
+    // The encoder opens on its own thread: the caller's name for the output goes with it.
+    thread = std::jthread([this, named = rb::output_named_by](std::stop_token stop) {
       try {
+        const rb::OutputNamedBy naming(named);
         auto opened = render::VideoEncoder::open(path, settings);
         if (!opened) {
           error = opened.error().text();

@@ -21,6 +21,7 @@
 #include "tasks/simulate.hpp"
 #include "tasks/sweep.hpp"
 #include "tasks/sweep_jobs.hpp"
+#include "util/output_place.hpp"
 
 namespace py = pybind11;
 
@@ -187,6 +188,7 @@ void sweepToCsv(const SweepTable& t, const std::string& path) {
   rb::Status written;
   {
     py::gil_scoped_release release;
+    const rb::OutputNamedBy naming("to_csv");  // the way out an error line suggests
     written = tasks::writeSweepTable(path, keys, lines, sidecar);
     if (written)
       (void)tasks::recordOutputs({{path,
@@ -231,6 +233,7 @@ PYBIND11_MODULE(_core, m) {
         rb::Status written;
         {
           py::gil_scoped_release release;
+          const rb::OutputNamedBy naming("to_csv");  // the way out an error line suggests
           written =
               tasks::writeTelemetry(path, r.scene, r.model, r.rate, r.summary, r.samples, r.check);
           // Listed in the folder's manifest, as the command line lists it (a failure to list

@@ -95,6 +95,7 @@ py::list renderVideos(const LoadedScene& loaded, const std::string& output, bool
   request.preset = preset;
   request.backend = backendOf(backend);
   auto made = interruptible([&](const std::function<bool()>& cancelled) {
+    const rb::OutputNamedBy naming("render's output");  // the way out an error suggests
     request.cancelled = cancelled;
     return media::renderVideo(loaded.value, request);
   });
@@ -149,6 +150,7 @@ PYBIND11_MODULE(_draw, m) {
       "write_png",
       [](const std::string& path,
          const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>& a) {
+        const rb::OutputNamedBy naming("save");  // Image.save: the way out an error suggests
         if (auto e = tasks::makeParentFolder(path); !e) raise(e.error());
         if (auto e = render::writePng(path, imageOf(a)); !e) raise(e.error());
       },

@@ -153,8 +153,11 @@ rb::Result<std::unique_ptr<VideoEncoder>> VideoEncoder::open(const std::string& 
   s.stream = avformat_new_stream(s.format, nullptr);
   s.stream->time_base = c->time_base;
   avcodec_parameters_from_context(s.stream->codecpar, c);
-  if (int r = avio_open(&s.format->pb, s.temp.c_str(), AVIO_FLAG_WRITE); r < 0)
-    return rb::Error{"", s.error("cannot write", r)};
+  if (int r = avio_open(&s.format->pb, s.temp.c_str(), AVIO_FLAG_WRITE); r < 0) {
+    char reason[AV_ERROR_MAX_STRING_SIZE] = "";
+    av_strerror(r, reason, sizeof reason);
+    return rb::Error{"", rb::cannotWriteIn(path, reason)};
+  }
   AVDictionary* options = nullptr;
   av_dict_set(&options, "movflags", "+faststart", 0);
   const int r = avformat_write_header(s.format, &options);

@@ -72,7 +72,7 @@ rb::Status writePng(const std::string& path, const Image& image) {
   if (!bytes) return rb::Status::fail(path + ": " + bytes.error().text());
   File file;
   file.f = std::fopen(temp.c_str(), "wb");
-  if (!file.f) return rb::Status::fail(path + ": cannot write: " + std::strerror(errno));
+  if (!file.f) return rb::Status::fail(rb::cannotWriteIn(path, errno));
   const bool written = std::fwrite(bytes->data(), 1, bytes->size(), file.f) == bytes->size();
   const bool flushed = written && std::fflush(file.f) == 0 && !std::ferror(file.f);
   const int close_status = std::fclose(file.f);

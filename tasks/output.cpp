@@ -38,11 +38,12 @@ rb::Status makeParentFolder(const std::string& path) {
     std::error_code e;
     if (fs::exists(up, e) && !fs::is_directory(up, e))
       return rb::Status::fail(path + ": cannot make its folder " + parent.string() + ": " +
-                              up.string() + " is a file, not a folder (give -o another path)");
+                              up.string() + " is a file, not a folder (give " +
+                              rb::output_named_by + " another path)");
   }
   return rb::Status::fail(path + ": cannot make its folder " + parent.string() + ": " +
-                          ec.message() +
-                          " (run from a folder you can write to, or give -o a path there)");
+                          ec.message() + " (run from a folder you can write to, or give " +
+                          rb::output_named_by + " a path there)");
 }
 
 void registerTemporary(const std::string& temp) {
@@ -90,13 +91,7 @@ rb::Result<AtomicOutput> AtomicOutput::open(const std::string& path) {
   file.done_ = in_place;
   errno = 0;
   file.out_.open(in_place ? file.target_ : file.temp_, std::ios::binary | std::ios::trunc);
-  if (!file.out_)
-    return rb::Error{"", path + ": cannot write a file in " +
-                             (fs::path(file.target_).parent_path().empty()
-                                  ? std::string("this folder")
-                                  : fs::path(file.target_).parent_path().string()) +
-                             ": " + std::strerror(errno ? errno : EACCES) +
-                             " (give the output a path in a folder you can write)"};
+  if (!file.out_) return rb::Error{"", rb::cannotWriteIn(path, errno)};
   if (!in_place) registerTemporary(file.temp_);
   return file;
 }

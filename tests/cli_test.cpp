@@ -16,6 +16,7 @@
 #include <sstream>
 #include <vector>
 
+#include "app/plot.hpp"
 #include "render/image_io.hpp"
 #include "sim/compile.hpp"
 #include "sim/rollout.hpp"
@@ -691,8 +692,10 @@ TEST(Cli, OutputFoldersAreMadeOrRefusedInOneLine) {
     const Result refused = rattleback(command + " --plot /proc/unwritable.png");
     EXPECT_EQ(refused.status, 2) << command << "\n" << refused.err;
     EXPECT_EQ(lines(refused.err), 1) << refused.err;
-    EXPECT_NE(refused.err.find("/proc/unwritable.png: --plot cannot write into /proc"),
+    EXPECT_NE(refused.err.find("/proc/unwritable.png: cannot write a file in /proc: "),
               std::string::npos)
+        << refused.err;
+    EXPECT_NE(refused.err.find("(give --plot a path in a folder you can write)"), std::string::npos)
         << refused.err;
     EXPECT_FALSE(fs::exists(table)) << command;
   }
@@ -721,6 +724,61 @@ std::vector<std::vector<std::string>> csvRows(const std::string& text) {
 // as n = ω·ẑ (spin about the body axis tilted 0.5° about x and y: n = −5 cos² 0.5°), the total
 // energy the sum of its terms, and the sidecar's figures the table's. Tolerances: the CSV
 // prints 10 and 9 significant digits.
+// Every writer says the same where it cannot make its file: the folder, the system's reason and
+// the way out (found by a new user: a still and a video said only "cannot write: No such file
+// or directory", with no way out, where a table named the folder).
+TEST(Cli, EveryWriterNamesTheFolderItCannotWriteAndTheWayOut) {
+  const std::string s = scene("rattleback");
+  for (const auto& [command, path] :
+       {std::pair<std::string, std::string>{"simulate " + s + " --duration 0.1 -q", "/proc/x.csv"},
+        {"still " + s + " --size 64x48 -q", "/proc/x.png"},
+        {"render " + s + " --duration 0.1 --size 64x48 -q", "/proc/x.mp4"},
+        {"analyze " + s + " --json", "/proc/x.json"}}) {
+    const Result r = rattleback(command + " -o " + path);
+    EXPECT_EQ(r.status, 2) << command << "\n" << r.err;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_EQ(r.err.rfind(path + ": cannot write a file in /proc: ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find("(give -o a path in a folder you can write)"), std::string::npos) << r.err;
+  }
+}
+
+// The sweep heatmap's script: numbers' minus signs as U+2212 (DejaVu's hyphen, turned by 30°,
+// read as "`6"), x labels level when they fit, turned only when they would not, and the note
+// on its own line under the axis title (it sat beside it, running to the edge).
+TEST(Plot, TheHeatmapsLabelsShowTheirMinusSignsAndTheNoteSitsClear) {
+  app::Heatmap map;
+  map.title = "t";
+  map.x_label = "initial.spin";
+  map.y_label = "contact.air_drag";
+  map.value_label = "first_reversal_s";
+  for (int i = -10; i <= 10; i += 2) map.x_values.push_back(std::to_string(i));
+  map.y_values = {"0.0", "5.9e-6", "seed-flip"};
+  map.values.assign(map.x_values.size() * map.y_values.size(), 1.0);
+  map.note = "grey: no value (no reversal, or run stopped or refused)";
+  std::ostringstream script;
+  app::writeHeatmapScript(script, map, "/w", "/w/x.png", 900, 600);
+  const std::string text = script.str();
+  const std::string minus = "\u2212";  // U+2212, in UTF-8
+  EXPECT_NE(text.find("(\"" + minus + "10\" 0, \"" + minus + "8\" 1,"), std::string::npos) << text;
+  EXPECT_EQ(text.find("\"-10\""), std::string::npos) << text;
+  EXPECT_NE(text.find("\"5.9e" + minus + "6\" 1"), std::string::npos) << text;
+  EXPECT_NE(text.find("\"seed-flip\" 2"), std::string::npos) << text;  // not a number: as it is
+  // 11 short labels fit level.
+  EXPECT_EQ(text.find("rotate"), std::string::npos) << text;
+  EXPECT_NE(text.find("set bmargin 6\n"), std::string::npos) << text;
+  EXPECT_NE(text.find(" at screen 0.5, character 1 center\n"), std::string::npos) << text;
+  // Long labels, many of them: turned, and still with their minus signs.
+  map.x_values.clear();
+  for (int i = 0; i < 12; ++i) map.x_values.push_back("-1.2345678e-0" + std::to_string(i % 10));
+  map.values.assign(map.x_values.size() * map.y_values.size(), 1.0);
+  std::ostringstream turned;
+  app::writeHeatmapScript(turned, map, "/w", "/w/x.png", 900, 600);
+  EXPECT_NE(turned.str().find(" rotate by -30\n"), std::string::npos) << turned.str();
+  EXPECT_NE(turned.str().find("\"" + minus + "1.2345678e" + minus + "00\" 0"), std::string::npos)
+      << turned.str();
+  EXPECT_NE(turned.str().find("set bmargin 7\n"), std::string::npos) << turned.str();
+}
+
 TEST(Outputs, TheTelemetryHoldsTheScenesNumbers) {
   const fs::path csv = tempFile("t.csv");
   const Result r = rattleback("simulate -q " + scene("rattleback") +

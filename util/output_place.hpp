@@ -10,6 +10,8 @@
 
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <string>
 #include <system_error>
@@ -45,6 +47,37 @@ inline OutputPlace outputPlace(const std::string& path) {
   name += target.filename().string();
   name += ".part-" + std::to_string(::getpid());
   return {target.string(), (target.parent_path() / name).string()};
+}
+
+/// How the caller named the output, for the way out an error line suggests: "-o" on the command
+/// line (the default), "--plot" for a plot, "to_csv" or "save" from Python. Per thread: a
+/// writer reads it on the thread that asked for the file.
+inline thread_local const char* output_named_by = "-o";
+
+/// Sets output_named_by for as long as it lives (then puts back the one before).
+class OutputNamedBy {
+ public:
+  explicit OutputNamedBy(const char* name) : before_(output_named_by) { output_named_by = name; }
+  ~OutputNamedBy() { output_named_by = before_; }
+  OutputNamedBy(const OutputNamedBy&) = delete;
+  OutputNamedBy& operator=(const OutputNamedBy&) = delete;
+
+ private:
+  const char* before_;
+};
+
+/// The one error line for an output file that cannot be made where it was asked for (every
+/// writer: tables, PNGs, plots, videos): the path, the folder, the system's reason and the
+/// way out, in the caller's terms (output_named_by).
+inline std::string cannotWriteIn(const std::string& path, const std::string& reason) {
+  const std::filesystem::path folder =
+      std::filesystem::path(outputPlace(path).target).parent_path();
+  return path + ": cannot write a file in " +
+         (folder.empty() ? std::string("this folder") : folder.string()) + ": " + reason +
+         " (give " + output_named_by + " a path in a folder you can write)";
+}
+inline std::string cannotWriteIn(const std::string& path, int error) {
+  return cannotWriteIn(path, std::strerror(error ? error : EACCES));
 }
 
 }  // namespace rb

@@ -75,6 +75,12 @@ class Scene:
             return cls(json.dumps(scene, default=_yaml_value_default), name)
         except SceneError as e:
             if e.file == name:
+                # The dict was read as one line of JSON: neither the attribute nor the message
+                # names a line ("<dict>: contact is required", not "<dict>:1: …").
+                located = f"{name}:{e.line}: "
+                message = str(e)
+                if e.line is not None and message.startswith(located):
+                    e.args = (f"{name}: " + message[len(located):],)
                 e.line = None
             raise
 

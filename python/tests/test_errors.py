@@ -53,7 +53,7 @@ def test_a_yaml_string_and_a_dict_are_named_in_their_errors():
         rb.Scene.from_dict(DICT_SCENE | {"gravity": -9.81})
     assert caught.value.file == "<dict>" and caught.value.key == "gravity"
     assert caught.value.line is None  # a dict has no lines
-    assert str(caught.value).startswith("<dict>:1: gravity must be")
+    assert str(caught.value).startswith("<dict>: gravity must be")
     run = rb.simulate(rb.Scene.from_dict(DICT_SCENE), duration=0.5)
     assert len(run) == 251 and run.result["status"] == "ok"
 
@@ -115,3 +115,33 @@ def test_a_dict_has_no_line():
     with pytest.raises(rb.SceneError) as caught:
         rb.Scene.from_dict(DICT_SCENE | {"gravity": -9.81})
     assert caught.value.line is None
+    # Nor does its message print one (it said "<dict>:1: contact is required").
+    without_contact = {k: v for k, v in DICT_SCENE.items() if k != "contact"}
+    with pytest.raises(rb.SceneError) as caught:
+        rb.Scene.from_dict(without_contact)
+    assert caught.value.line is None
+    assert str(caught.value) == "<dict>: contact is required"
+    with pytest.raises(rb.SceneError) as caught:
+        rb.Scene.from_dict(without_contact, name="mine")
+    assert str(caught.value) == "mine: contact is required"
+
+
+def test_an_unwritable_output_gives_the_way_out_in_pythons_terms(tmp_path):
+    # A file where a folder of the path should be, and a folder nothing can be written in: the
+    # way out names the method, not the command line's -o.
+    (tmp_path / "afile").write_text("a file, not a folder")
+    run = rb.simulate(rb.Scene.from_dict(DICT_SCENE), duration=0.1)
+    with pytest.raises(ValueError) as caught:
+        run.to_csv(tmp_path / "afile" / "x.csv")
+    message = str(caught.value)
+    assert "is a file, not a folder (give to_csv another path)" in message
+    assert "give -o" not in message
+    with pytest.raises(ValueError) as caught:
+        run.to_csv("/proc/x.csv")
+    assert str(caught.value).startswith("/proc/x.csv: cannot write a file in /proc: ")
+    assert str(caught.value).endswith("(give to_csv a path in a folder you can write)")
+    image = rb.still(rb.Scene.from_dict(DICT_SCENE), t=0.0, size=(64, 48))
+    with pytest.raises(ValueError) as caught:
+        image.save("/proc/x.png")
+    assert str(caught.value).startswith("/proc/x.png: cannot write a file in /proc: ")
+    assert str(caught.value).endswith("(give save a path in a folder you can write)")
