@@ -71,6 +71,9 @@ struct SceneFiles {
   // Videos and stills the manifest lists beyond one per slot (a scene rendered at several
   // sizes, stills at other times): shown too, not dropped.
   std::vector<std::string> more_videos, more_stills;
+  // Telemetry the manifest lists beside the scene's main run (".csv": the scene's own
+  // <scene>.csv, else the first by name), in name order: each listed with what it measured.
+  std::vector<std::string> more_runs;
   bool has(const std::string& suffix) const { return by_suffix.count(suffix) > 0; }
   const std::string& at(const std::string& suffix) const { return by_suffix.at(suffix); }
 };
@@ -219,17 +222,43 @@ void writeVideos(std::ostream& out, const SceneFiles& f,
                   "</b>: the theory prefers neither direction" + measuredAs(run, ccw));
     out << "</div>\n";
   }
-  if (f.has(".mp4")) video(f.at(".mp4"), "-oblique.png", "The scene as rendered");
+  if (f.has(".mp4")) video(f.at(".mp4"), "-single.png", "The scene as rendered");
   if (f.has("-both.mp4"))
     out << "<p><a href=\"" << escape(f.at("-both.mp4"))
         << "\">Both side by side in one video</a></p>\n";
+}
+
+// What a run measured (simulate's sidecar): its spin, reversal, final spin, energy and check.
+std::string measuredOf(const nlohmann::json& run) {
+  const nlohmann::json& r = field(run, "result");
+  const nlohmann::json& spin = field(r, "initial_spin");
+  std::ostringstream out;
+  out << "spun " << number(spin, "%+.3g") << " rad/s ("
+      << spinWords(spin.is_number() ? spin.get<double>() : 0.0) << ")<br>" << reversalOf(r)
+      << "<br>final spin " << number(field(r, "final_spin"), "%+.3f") << " rad/s<br>energy "
+      << number(field(field(r, "energy_j"), "initial"), "%.4g") << " J → "
+      << number(field(field(r, "energy_j"), "final"), "%.4g") << " J"
+      << checkOf(field(run, "check"));
+  return out.str();
+}
+
+// The scene's other runs (SceneFiles::more_runs), each a row: its CSV and what it measured.
+void writeMoreRuns(std::ostream& out, const fs::path& dir, const SceneFiles& f) {
+  if (f.more_runs.empty()) return;
+  out << "<h3>Other runs</h3><table><tr><th>telemetry</th><th>measured (simulate)</th></tr>\n";
+  for (const std::string& csv : f.more_runs) {
+    const std::optional<nlohmann::json> run = readJson(dir / (csv + ".json"));
+    out << "<tr><td><a href=\"" << escape(csv) << "\">" << escape(csv) << "</a></td><td>"
+        << (run ? measuredOf(*run) : "–") << "</td></tr>\n";
+  }
+  out << "</table>\n";
 }
 
 // Theory (analyze --json) beside what the run measured (simulate's sidecar).
 void writeAnalysis(std::ostream& out, const SceneFiles& f,
                    const std::optional<nlohmann::json>& theory,
                    const std::optional<nlohmann::json>& run) {
-  if (!theory && !run) return;
+  if (!theory && !run && !f.has(".csv")) return;
   out << "<table><tr><th>predicted (linearised and averaged rolling model)</th><th>measured "
          "(simulate)</th></tr>"
          "<tr><td>";
@@ -257,17 +286,9 @@ void writeAnalysis(std::ostream& out, const SceneFiles& f,
       out << "<br><a href=\"" << escape(f.at("-analysis.txt")) << "\">full analysis</a>";
   }
   out << "</td><td>";
-  if (run) {
-    const nlohmann::json& r = field(*run, "result");
-    const nlohmann::json& spin = field(r, "initial_spin");
-    out << "spun " << number(spin, "%+.3g") << " rad/s ("
-        << spinWords(spin.is_number() ? spin.get<double>() : 0.0) << ")<br>" << reversalOf(r)
-        << "<br>final spin " << number(field(r, "final_spin"), "%+.3f") << " rad/s<br>energy "
-        << number(field(field(r, "energy_j"), "initial"), "%.4g") << " J → "
-        << number(field(field(r, "energy_j"), "final"), "%.4g") << " J";
-    out << checkOf(field(*run, "check"));
-    if (f.has(".csv")) out << "<br><a href=\"" << escape(f.at(".csv")) << "\">telemetry (CSV)</a>";
-  }
+  if (run) out << measuredOf(*run);
+  if (f.has(".csv"))
+    out << (run ? "<br>" : "") << "<a href=\"" << escape(f.at(".csv")) << "\">telemetry (CSV)</a>";
   out << "</td></tr></table>\n";
 }
 
@@ -340,10 +361,27 @@ std::set<std::string> placeListed(const fs::path& dir, Folder& folder) {
   for (const OutputEntry& e : entries)
     if (e.kind == OutputKind::Video && e.spin && e.role != "both" && e.role != "single")
       video_spins[e.scene][*e.spin] = e.role;
+  std::map<std::string, std::set<double>> single_spins;  // scene → spins of lone videos
+  for (const OutputEntry& e : entries)
+    if (e.kind == OutputKind::Video && e.spin && e.role == "single")
+      single_spins[e.scene].insert(*e.spin);
+  std::map<std::string, std::vector<std::string>> runs;  // scene → its telemetry
   std::set<std::string> placed;
   std::error_code ec;
   for (const OutputEntry& e : entries) {
     if (!fs::is_regular_file(dir / e.file, ec)) continue;  // since removed
+    if (e.kind == OutputKind::Telemetry) {
+      runs[e.scene].push_back(e.file);
+      placed.insert(e.file);
+      if (fs::is_regular_file(dir / (e.file + ".json"), ec)) placed.insert(e.file + ".json");
+      continue;
+    }
+    // A lone video's poster: a still at t = 0 spun as it was (whatever its view).
+    if (e.kind == OutputKind::Still && e.t && *e.t == 0 && e.spin &&
+        single_spins[e.scene].count(*e.spin)) {
+      SceneFiles& f = folder.scenes[e.scene];
+      if (!f.has("-single.png")) f.by_suffix["-single.png"] = e.file;
+    }
     if (e.kind == OutputKind::Bench || e.kind == OutputKind::BenchPlot) {
       folder.others.push_back(e.file);
     } else if (e.kind == OutputKind::Sweep || e.kind == OutputKind::SweepPlot) {
@@ -357,12 +395,21 @@ std::set<std::string> placeListed(const fs::path& dir, Folder& folder) {
         continue;
       }
       f.by_suffix[*slot] = e.file;
-      if (e.kind == OutputKind::Telemetry && fs::is_regular_file(dir / (e.file + ".json"), ec)) {
-        folder.scenes[e.scene].by_suffix[".csv.json"] = e.file + ".json";
-        placed.insert(e.file + ".json");
-      }
     }
     placed.insert(e.file);
+  }
+  // Each scene's main run is its own <scene>.csv, else the first by name (not the last
+  // written); the others are listed beside it.
+  for (auto& [scene, files] : runs) {
+    std::sort(files.begin(), files.end());
+    auto main = std::find(files.begin(), files.end(), scene + ".csv");
+    if (main == files.end()) main = files.begin();
+    SceneFiles& f = folder.scenes[scene];
+    f.by_suffix[".csv"] = *main;
+    if (fs::is_regular_file(dir / (*main + ".json"), ec))
+      f.by_suffix[".csv.json"] = *main + ".json";
+    for (const std::string& file : files)
+      if (file != *main) f.more_runs.push_back(file);
   }
   return placed;
 }
@@ -389,7 +436,10 @@ void placeByName(const fs::path& dir, const std::set<std::string>& placed, Folde
     bool claimed = false;
     for (const std::string& suffix : suffixes)
       if (!claimed && endsWith(name, suffix)) {
-        folder.scenes[name.substr(0, name.size() - suffix.size())].by_suffix[suffix] = name;
+        SceneFiles& f = folder.scenes[name.substr(0, name.size() - suffix.size())];
+        f.by_suffix[suffix] = name;
+        // A lone <scene>.mp4 takes <scene>-oblique.png, when the manifest names no poster.
+        if (suffix == "-oblique.png" && !f.has("-single.png")) f.by_suffix["-single.png"] = name;
         claimed = true;
       }
     if (!claimed && (endsWith(name, ".png") || endsWith(name, ".csv")))
@@ -421,7 +471,10 @@ void separateSweeps(const fs::path& dir, Folder& folder) {
   }
   for (auto it = scenes.begin(); it != scenes.end();) {
     const bool lone_csv = it->second.by_suffix.size() == 1 && it->second.has(".csv");
-    if (lone_csv) others.push_back(it->second.at(".csv"));
+    if (lone_csv) {
+      others.push_back(it->second.at(".csv"));
+      others.insert(others.end(), it->second.more_runs.begin(), it->second.more_runs.end());
+    }
     it = lone_csv ? scenes.erase(it) : std::next(it);
   }
   std::sort(others.begin(), others.end());
@@ -534,6 +587,7 @@ void writeScene(std::ostream& out, const fs::path& dir, const std::string& name,
         << escape(name) << "\"" << forecast << "></div>\n";
   }
   writeAnalysis(out, f, theory, run);
+  writeMoreRuns(out, dir, f);
   for (const std::string& file : f.more_videos)
     out << "<figure><video src=\"" << escape(file) << "\" muted loop playsinline controls "
         << "preload=\"metadata\"></video><figcaption>" << escape(file)

@@ -1030,6 +1030,102 @@ TEST(Cli, TheReportPlacesOutputsByTheManifest) {
     EXPECT_NE(html.find(shown), std::string::npos) << shown;
 }
 
+namespace {
+
+std::string readText(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+// Every run of a scene is on its page: a new user's two runs (S.csv, then S-ccw.csv spun the
+// other way) and a --check run's S-check.csv showed only the last written, S.csv linked
+// nowhere. The scene's own file (S.csv) is its main run (the measured cell, the player), written
+// first or not; the others are listed each with what it measured.
+TEST(Cli, TheReportShowsEveryRunOfAScene) {
+  const fs::path dir = scratchDir() / "runs";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string s = scene("rattleback");
+  auto in = [&](const char* name) { return (dir / name).string(); };
+  ASSERT_EQ(rattleback("simulate " + s + " --duration 0.3 -q -o " + in("rattleback.csv")).status,
+            0);
+  ASSERT_EQ(
+      rattleback("simulate " + s + " --spin 4 --duration 0.4 -q -o " + in("rattleback-ccw.csv"))
+          .status,
+      0);
+  ASSERT_EQ(rattleback("simulate " + s + " --spin -3 --duration 0.2 --check -q -o " +
+                       in("rattleback-check.csv"))
+                .status,
+            0);
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  const std::string html = readText(dir / "index.html");
+  for (const char* csv : {"rattleback.csv", "rattleback-ccw.csv", "rattleback-check.csv"})
+    EXPECT_NE(html.find("href=\"" + std::string(csv) + "\""), std::string::npos) << csv;
+  // The main measured cell is the scene's own run (−5 rad/s, 0.3 s), not the last written.
+  const std::size_t main = html.find("measured (simulate)</th>");
+  ASSERT_NE(main, std::string::npos);
+  const std::size_t spun = html.find("spun ", main);
+  ASSERT_NE(spun, std::string::npos);
+  EXPECT_EQ(html.compare(spun, 9, "spun -5 r"), 0) << html.substr(spun, 80);
+  // Each other run with its own measured line: its spin and how long it ran.
+  for (const char* line : {"spun +4 rad/s", "no reversal in 0.4 s", "spun -3 rad/s",
+                           "no reversal in 0.2 s", "estimated error"})
+    EXPECT_NE(html.find(line), std::string::npos) << line;
+  // The player replays the main run: spun −5 rad/s (its first pose, a step in: −4.99…).
+  if (fs::exists(dir / "rattleback.player.js")) {
+    const std::string data = readText(dir / "rattleback.player.js");
+    const std::size_t at = data.find("\"spin\":[");
+    ASSERT_NE(at, std::string::npos);
+    EXPECT_NEAR(std::strtod(data.c_str() + at + 8, nullptr), -5.0, 0.05) << data.substr(at, 40);
+  }
+}
+
+// A video's poster is the still at t = 0 spun as it was, per the manifest: a new user's lone
+// video took a still at t = 2.1 (named <scene>-oblique.png) as its poster, by the name-based
+// fallback meant only for files the manifest does not list. That still is shown as a still; a
+// still at t = 0 is the poster; and unlisted files are still placed by their names.
+TEST(Cli, AStillIsAPosterOnlyWhenTheManifestSaysItIsOne) {
+  const fs::path dir = scratchDir() / "poster";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string s = scene("rattleback");
+  auto in = [&](const char* name) { return (dir / name).string(); };
+  ASSERT_EQ(
+      rattleback("render " + s + " --duration 0.2 --size 64x48 -q -o " + in("rattleback-24.mp4"))
+          .status,
+      0);
+  ASSERT_EQ(rattleback("still " + s + " --t 0.1 --size 64x48 -q -o " + in("rattleback-oblique.png"))
+                .status,
+            0);
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  std::string html = readText(dir / "index.html");
+  EXPECT_NE(html.find("src=\"rattleback-24.mp4\""), std::string::npos);
+  EXPECT_EQ(html.find("poster="), std::string::npos) << html;
+  EXPECT_NE(html.find("src=\"rattleback-oblique.png\""), std::string::npos);  // as a still
+
+  ASSERT_EQ(rattleback("still " + s + " --view above --size 64x48 -q -o " + in("first.png")).status,
+            0);
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  html = readText(dir / "index.html");
+  EXPECT_NE(html.find("src=\"rattleback-24.mp4\" muted loop playsinline controls "
+                      "preload=\"auto\" poster=\"first.png\""),
+            std::string::npos)
+      << html;
+
+  // Files no manifest lists: a lone <scene>.mp4 takes <scene>-oblique.png, by their names.
+  const fs::path bare = scratchDir() / "poster-bare";
+  fs::remove_all(bare);
+  fs::create_directories(bare);
+  std::ofstream(bare / "toy.mp4");
+  fs::copy_file(dir / "rattleback-oblique.png", bare / "toy-oblique.png");
+  ASSERT_EQ(rattleback("report " + bare.string() + " -q").status, 0);
+  EXPECT_NE(readText(bare / "index.html").find("poster=\"toy-oblique.png\""), std::string::npos);
+}
+
 // An output folder holds the outputs and their manifest, nothing else: the manifest's lock is
 // the folder itself (flock on its descriptor), where it was an empty .rattleback-manifest.lock
 // left in every folder written into.
