@@ -181,7 +181,7 @@ std::optional<std::string> seriesClause(const Panel& panel, const Series& series
 }
 
 // One panel of a multiplot: its axes, then its series (or "no data").
-void writePanel(std::ofstream& script, const Panel& panel, bool titled, const fs::path& work,
+void writePanel(std::ostream& script, const Panel& panel, bool titled, const fs::path& work,
                 int& file_index) {
   // A twentieth of the height above and below the data, so that a line at its top or bottom
   // (a conserved energy) is not drawn on the frame; none below an axis from 0.
@@ -205,9 +205,27 @@ void writePanel(std::ofstream& script, const Panel& panel, bool titled, const fs
            << "plot [0:1][0:1] NaN notitle\nunset label 1\n";
     return;
   }
+  // Each mark's label right of its line, or left of one in the last fifth of the data's x
+  // range (it would run off the frame); every other one a line lower, so that neighbours'
+  // labels do not run into each other.
+  double x_lo = INFINITY, x_hi = -INFINITY;
+  for (const Series& series : panel.series)
+    for (const auto& [x, y] : series.points)
+      if (std::isfinite(x)) x_lo = std::min(x_lo, x), x_hi = std::max(x_hi, x);
+  for (std::size_t i = 0; i < panel.marks.size(); ++i) {
+    const Mark& mark = panel.marks[i];
+    if (!std::isfinite(mark.x)) continue;
+    const bool late = mark.x > x_hi - (x_hi - x_lo) / 5;
+    script << "set arrow " << i + 1 << " from first " << mark.x << ", graph 0 to first " << mark.x
+           << ", graph 1 nohead dt 2 lw 1.5 lc rgb '#e6550d' front\n"
+           << "set label " << i + 2 << " " << quoted(mark.label) << " at first " << mark.x
+           << ", graph " << (i % 2 ? 0.91 : 0.97) << " "
+           << (late ? "right offset -0.5, 0" : "left offset 0.5, 0") << " tc rgb '#e6550d' front\n";
+  }
   script << "plot ";
   for (std::size_t i = 0; i < clauses.size(); ++i) script << (i ? ", \\\n     " : "") << clauses[i];
   script << "\n";
+  if (!panel.marks.empty()) script << "unset arrow\nunset label\n";
 }
 
 rb::Status plotPng(const std::string& png, const std::string& title,

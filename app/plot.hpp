@@ -23,8 +23,15 @@ struct Series {
   int dash = 1;             ///< gnuplot dash type (1 solid)
 };
 
+/// A moment marked across a panel: a dashed vertical line at x, labelled at its top.
+struct Mark {
+  double x = 0;
+  std::string label;
+};
+
 struct Panel {
   std::string title, x_label, y_label, y2_label;
+  std::vector<Mark> marks;  ///< e.g. the spin's reversals
   bool log_x = false, log_y = false;
   bool lines_only = false;   ///< no point markers (time series)
   bool y_from_zero = false;  ///< a quantity never negative (a tilt): its axis starts at 0
@@ -42,6 +49,11 @@ rb::Status checkPlotFile(const std::string& png);
 /// Returns one error line naming `png` on failure; an existing `png` is then left as it was.
 rb::Status plotPng(const std::string& png, const std::string& title,
                    const std::vector<Panel>& panels, int width, int height);
+
+/// One panel's part of plotPng's gnuplot script: its axes, marks and series (their data
+/// written into `work`/series<file_index>.dat, file_index counting on).
+void writePanel(std::ostream& script, const Panel& panel, bool titled,
+                const std::filesystem::path& work, int& file_index);
 
 /// A map of values over two axes (a sweep's first two), drawn as coloured cells.
 struct Heatmap {

@@ -124,7 +124,8 @@ void printCheck(std::FILE* out, const tasks::RunCheck& check, const sim::RunSumm
 // The seed's figures (6–8, 12–16) from the telemetry: energy, spin, tilt and CM height, and
 // the normal force, each against time, into DIR/<scene>-<what>.png.
 rb::Status writePlots(const std::string& dir, const std::string& scene,
-                      const std::vector<sim::Telemetry>& samples) {
+                      const std::vector<sim::Telemetry>& samples,
+                      const std::vector<double>& reversals) {
   const std::string stem = std::filesystem::path(scene).stem().string();
   auto series = [&](const char* title, auto value, bool right = false) {
     Series s;
@@ -151,6 +152,11 @@ rb::Status writePlots(const std::string& dir, const std::string& scene,
   Panel spin =
       panel("Spin about the vertical, n = w.z (+ counter-clockwise from above)", "spin n [rad/s]");
   spin.series = {series("n", [](const sim::Telemetry& t) { return t.spin; })};
+  for (double t : reversals) {  // where n changed sign, as the summary finds it
+    char label[48];
+    std::snprintf(label, sizeof label, "reversal %.3f s", t);
+    spin.marks.push_back({t, label});
+  }
   Panel tilt = panel("Tilt of the body axis and height of the centre of mass", "tilt [degrees]");
   tilt.y2_label = "CM height z [mm]";
   tilt.y_from_zero = true;
@@ -263,7 +269,8 @@ int simulateCommand(const SimulateArgs& args) {
       !e)
     return fail(e);
   if (!args.plot_dir.empty())
-    if (auto e = writePlots(args.plot_dir, args.scene, kept); !e) return fail(e);
+    if (auto e = writePlots(args.plot_dir, args.scene, kept, run.summary.reversals); !e)
+      return fail(e);
   record(outputsOf(args, csv));
   if (args.quiet) return kOk;
   std::FILE* report = to_stdout ? stderr : stdout;

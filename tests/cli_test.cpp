@@ -742,6 +742,39 @@ TEST(Cli, EveryWriterNamesTheFolderItCannotWriteAndTheWayOut) {
   }
 }
 
+// The spin figure marks each reversal: a dashed vertical line at its time and its label beside
+// it, right of the line, or left of one in the last fifth of the run (it would run off the
+// frame); every other label a line lower (Kane & Levinson's four labels had run into each
+// other); the marks unset after the panel, so the next panel has none.
+TEST(Plot, TheSpinFigureMarksEachReversal) {
+  const fs::path work = fs::temp_directory_path() / "rattleback-plot-marks";
+  fs::create_directories(work);
+  app::Panel panel;
+  panel.lines_only = true;
+  panel.series.push_back({"n", {{0.0, -5.0}, {2.5, 0.0}, {10.0, 3.0}}});
+  panel.marks = {{2.5, "reversal 2.500 s"}, {9.5, "reversal 9.500 s"}};
+  std::ostringstream script;
+  int index = 0;
+  app::writePanel(script, panel, false, work, index);
+  const std::string text = script.str();
+  EXPECT_NE(text.find("set arrow 1 from first 2.5, graph 0 to first 2.5, graph 1 nohead"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("set label 2 \"reversal 2.500 s\" at first 2.5, graph 0.97 left"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("set label 3 \"reversal 9.500 s\" at first 9.5, graph 0.91 right"),
+            std::string::npos)
+      << text;
+  EXPECT_LT(text.find("set arrow 2"), text.find("plot "));
+  EXPECT_GT(text.find("unset arrow"), text.find("plot "));
+  panel.marks.clear();
+  std::ostringstream bare;
+  app::writePanel(bare, panel, false, work, index);
+  EXPECT_EQ(bare.str().find("arrow"), std::string::npos) << bare.str();
+  fs::remove_all(work);
+}
+
 // The sweep heatmap's script: numbers' minus signs as U+2212 (DejaVu's hyphen, turned by 30°,
 // read as "`6"), x labels level when they fit, turned only when they would not, and the note
 // on its own line under the axis title (it sat beside it, running to the edge).
