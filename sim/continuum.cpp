@@ -6,6 +6,7 @@
 #include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
+#include <unsupported/Eigen/Polynomials>
 #include <vector>
 
 namespace sim {
@@ -83,6 +84,46 @@ void appendRoots(double c2, double c1, double c0, Cuts& out) {
 void appendTangentXs(const Quadric& Q, Cuts& out) {
   appendRoots(Q.B * Q.B - 4 * Q.A * Q.C, 2 * Q.B * Q.E - 4 * Q.C * Q.D, Q.E * Q.E - 4 * Q.C * Q.F,
               out);
+}
+
+// A polynomial in t of degree ≤ 4, lowest power first.
+using Quartic = std::array<double, 5>;
+
+Quartic times(const Quartic& p, const Quartic& q) {
+  Quartic r{};
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; i + j < 5; ++j) r[i + j] += p[i] * q[j];
+  return r;
+}
+
+Quartic minus(const Quartic& p, const Quartic& q) {
+  Quartic r;
+  for (int i = 0; i < 5; ++i) r[i] = p[i] - q[i];
+  return r;
+}
+
+// The x where the conics P = 0 and Q = 0 meet (at most four): where, as quadratics in y, they
+// have a root in common, that is where their resultant (a quartic in x) vanishes. Solved in
+// t = x / half, where its coefficients are of one scale, by the eigenvalues of its companion
+// matrix (Eigen's PolynomialSolver); the real roots in [−half, half] are appended.
+void appendMeetingXs(const Quadric& P, const Quadric& Q, double half, Cuts& out) {
+  // Coefficients of y², y, 1 as polynomials in t.
+  const Quartic a2{P.C}, a1{P.E, P.B * half}, a0{P.F, P.D * half, P.A * half * half};
+  const Quartic b2{Q.C}, b1{Q.E, Q.B * half}, b0{Q.F, Q.D * half, Q.A * half * half};
+  const Quartic u = minus(times(a2, b0), times(b2, a0)), v = minus(times(a2, b1), times(b2, a1)),
+                w = minus(times(a1, b0), times(b1, a0));
+  const Quartic r = minus(times(u, u), times(v, w));
+  double scale = 0;
+  for (double c : r) scale = std::max(scale, std::abs(c));
+  int degree = 4;
+  while (degree > 0 && std::abs(r[degree]) <= 1e-12 * scale) --degree;
+  if (degree == 0) return;  // no meeting, or the same curve
+  Eigen::VectorXd poly(degree + 1);
+  for (int i = 0; i <= degree; ++i) poly[i] = r[i];
+  Eigen::PolynomialSolver<double, Eigen::Dynamic> solver(poly);
+  for (const std::complex<double>& root : solver.roots())
+    if (std::abs(root.imag()) <= 1e-6 && std::abs(root.real()) < 1)
+      out.push_back(root.real() * half);
 }
 
 // The body's surfaces: the bottom, and the lowest of the top and the dents over it.
@@ -308,6 +349,12 @@ VolumeMoments cubatureMoments(const Paraboloid& shape, const std::optional<Dents
   for (const Quadric& c : surfaces.ceilings) all.push_back(&c);
   for (std::size_t i = 0; i < all.size(); ++i)
     for (std::size_t j = i + 1; j < all.size(); ++j) appendTangentXs(*all[i] - *all[j], xs);
+  // And where three surfaces meet: there the lowest ceiling changes, and the integrand has a
+  // kink that no split found (a dented body's cubature bisected down to them).
+  for (std::size_t i = 0; i < all.size(); ++i)
+    for (std::size_t j = i + 1; j < all.size(); ++j)
+      for (std::size_t k = j + 1; k < all.size(); ++k)
+        appendMeetingXs(*all[i] - *all[j], *all[i] - *all[k], half, xs);
   xs.erase(std::remove_if(xs.begin(), xs.end(), [&](double x) { return !(std::abs(x) <= half); }),
            xs.end());
   std::sort(xs.begin(), xs.end());
