@@ -92,8 +92,11 @@ double rollExcess(const Vector& v) {
 }
 
 ModePairs modePairs(const Model& rolling, double spin) {
-  const Eigen::EigenSolver<Matrix5d> solver(jacobianAt(rolling, spin));
-  const Eigen::Matrix<std::complex<double>, 5, 5> vectors = solver.eigenvectors();
+  // Dynamic sizes: Eigen's eigensolver for a fixed 5×5 (and 4×4 below) took the compiler
+  // 34 s and 1.5 GB for this file, the longest step of a fresh build (docs/speed.md); the
+  // arithmetic is the same.
+  const Eigen::EigenSolver<Eigen::MatrixXd> solver(Eigen::MatrixXd(jacobianAt(rolling, spin)));
+  const Eigen::MatrixXcd vectors = solver.eigenvectors();
   ModePairs out;
   // The spin mode moves ω_z alone.
   int spin_mode = 0;
@@ -269,10 +272,10 @@ ReversalForecast forecastFirstReversal(const Model& model, double spin, double h
   Model conservative = asRolling(model);
   conservative.contact.air_drag = 0;
   const Eigen::Matrix4d J = jacobianAt(conservative, 0).topLeftCorner<4, 4>();
-  const Eigen::EigenSolver<Eigen::Matrix4d> solver(J);
-  const Eigen::Matrix4cd V = solver.eigenvectors();
-  const Eigen::Vector4cd start(u0.x(), u0.y(), 0, 0);
-  const Eigen::Vector4cd c = V.partialPivLu().solve(start);
+  const Eigen::EigenSolver<Eigen::MatrixXd> solver{Eigen::MatrixXd(J)};
+  const Eigen::MatrixXcd V = solver.eigenvectors();
+  const Eigen::VectorXcd start = Eigen::Vector4cd(u0.x(), u0.y(), 0, 0);
+  const Eigen::VectorXcd c = V.partialPivLu().solve(start);
   const Eigen::Matrix2d K = tiltStiffness(model);
   for (int i = 0; i < 4; ++i) {
     if (solver.eigenvalues()(i).imag() <= 0) continue;  // one of each conjugate pair
