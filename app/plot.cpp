@@ -232,7 +232,10 @@ rb::Status plotPng(const std::string& png, const std::string& title,
                    const std::vector<Panel>& panels, int width, int height) {
   return drawWithGnuplot(png, [&](std::ofstream& script, const fs::path& work,
                                   const fs::path& temp_png) {
-    script << "set terminal pngcairo size " << width << "," << height
+    // Tic labels' minus signs as U+2212, as the heatmap's (ticLabel): the hyphen is shorter
+    // than a digit's width and reads as a dash.
+    script << "set encoding utf8\nset minussign\n"
+           << "set terminal pngcairo size " << width << "," << height
            << " font \"DejaVu Sans,10\" noenhanced\n"
            << "set output " << quoted(temp_png.string()) << "\n"
            << "set datafile separator ' '\nset grid lc rgb '#dddddd'\nset key outside right top\n"
