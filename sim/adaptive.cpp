@@ -4,6 +4,7 @@
 #include <array>
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
+#include <type_traits>
 
 #include "sim/rolling.hpp"
 #include "sim/step.hpp"
@@ -163,6 +164,7 @@ struct AdaptiveStepper::Impl {
   virtual ~Impl() = default;
   virtual State step(std::int64_t step_index) = 0;
   virtual State at(double t) const = 0;
+  virtual bool keepsRolling() const = 0;
   std::int64_t evaluations = 0;
 };
 
@@ -192,6 +194,8 @@ class Integration final : public AdaptiveStepper::Impl {
     s.step = step_index;
     return s;
   }
+
+  bool keepsRolling() const override { return std::is_same_v<Layout, Rolling>; }
 
   State at(double t) const override {
     Vector y;
@@ -242,6 +246,10 @@ State AdaptiveStepper::at(double t) const {
 
 std::int64_t AdaptiveStepper::evaluations() const {
   return impl_->evaluations;
+}
+
+bool AdaptiveStepper::keepsRolling() const {
+  return impl_->keepsRolling();
 }
 
 // Dormand–Prince with first-same-as-last: every try of a step evaluates the equations six

@@ -31,6 +31,9 @@ class AdaptiveStepper {
   /// The dense output inside the last step, t within it.
   State at(double t) const;
   std::int64_t evaluations() const;
+  /// Whether the states it hands out are on the rolling constraint already (its model rolls:
+  /// step() and at() put them there).
+  bool keepsRolling() const;
   /// Steps rejected by error control so far.
   std::int64_t rejected(std::int64_t accepted) const;
 

@@ -194,14 +194,18 @@ void Rollout::locateReversal(double previous_spin, double spin) {
 // interpolant of the whole state with its rates at both ends (x with v, v with v̇, q with q̇,
 // L with τ): its error is O(h⁴) for a smooth motion, below the integrators' own, and it hits
 // both ends exactly. (Slerp would interpolate the rotation at only O(h²) and ignore ω.)
-State Rollout::interpolate(double t) const {
+State Rollout::interpolate(double t, bool* on_constraint) const {
+  if (on_constraint) *on_constraint = false;
   // Before a switch inside the last step: the old mode's own step, from its start to where it
   // ended before the switch cut it (issue 26: interpolating across the switch, a rolling state
   // to a sliding one, made the samples' energy dip and recover).
   if (previous_.t < switched_at_ && t < switched_at_ && !sameTime(t, switched_at_))
     return hermite(previous_, packRates(ratesOf(before_switch_, previous_)), before_end_,
                    packRates(ratesOf(before_switch_, before_end_)), t);
-  if (adaptive_ && !hermite_) return adaptive_->at(t);
+  if (adaptive_ && !hermite_) {
+    if (on_constraint) *on_constraint = adaptive_->keepsRolling();
+    return adaptive_->at(t);
+  }
   if (!have_rates_) {
     rates_previous_ = packRates(ratesOf(active_, previous_));
     rates_current_ = packRates(ratesOf(active_, current_));
@@ -240,7 +244,9 @@ State Rollout::stateAt(double t) const {
     s.t = t;
     return s;
   }
-  State s = interpolate(t);
+  bool on_constraint = false;
+  State s = interpolate(t, &on_constraint);
+  if (on_constraint) return s;  // normalised and placed by the stepper (adaptive.cpp's Rolling)
   s.q.normalize();
   const Model& mode = modeAt(t);
   if (mode.contact.model == ContactModel::Rolling) enforceRolling(mode, s);

@@ -99,7 +99,9 @@ class Rollout {
   /// Feeds the watchdog the end of the last step (its rotation R and ω w, world axes);
   /// records its stop.
   void watch(const Eigen::Matrix3d& R, const Eigen::Vector3d& w);
-  State interpolate(double t) const;
+  /// The state at t inside the last step; `on_constraint` (when given) says whether it is on
+  /// the rolling constraint already (the adaptive stepper's rolling layout answered).
+  State interpolate(double t, bool* on_constraint = nullptr) const;
   /// The cubic Hermite interpolant between a and b with their rates (packed as the state).
   State hermite(const State& a, const Eigen::Matrix<double, 13, 1>& rates_a, const State& b,
                 const Eigen::Matrix<double, 13, 1>& rates_b, double t) const;
