@@ -20,7 +20,16 @@ from typing import Any, Mapping, Optional, Sequence, Union
 
 import numpy as np
 
-from . import _core
+try:
+    from . import _core
+except ImportError:  # the package's files laid out (at configure time), its modules not built
+    _here = os.path.dirname(os.path.abspath(__file__))
+    if any(name.startswith("_core.") and not name.endswith(".pyi") for name in os.listdir(_here)):
+        raise
+    raise ImportError(
+        f"rattleback's compiled modules are not built in {_here}: build them with "
+        "`bash scripts/build.sh rattleback_python` (scripts/run.sh builds only the command)"
+    ) from None
 from ._errors import RunStopped, SceneError
 
 __all__ = [

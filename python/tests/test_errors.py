@@ -1,6 +1,8 @@
 """Bad input raises the command line's message, with the file, line and key apart."""
 
+import os
 import subprocess
+import sys
 
 import pytest
 
@@ -145,3 +147,23 @@ def test_an_unwritable_output_gives_the_way_out_in_pythons_terms(tmp_path):
         image.save("/proc/x.png")
     assert str(caught.value).startswith("/proc/x.png: cannot write a file in /proc: ")
     assert str(caught.value).endswith("(give save a path in a folder you can write)")
+
+
+def test_a_package_whose_modules_are_not_built_says_how_to_build_them(tmp_path):
+    # The layout right after configuring (or after scripts/run.sh, which builds only the
+    # command): the package's Python files without its compiled modules. The import names the
+    # build command; it had imported an empty namespace package, and `rb.simulate` failed with
+    # "module 'rattleback' has no attribute 'simulate'".
+    import shutil
+    package = tmp_path / "rattleback"
+    package.mkdir()
+    for source in os.scandir(os.path.dirname(rb.__file__)):
+        if source.name.endswith((".py", ".pyi")):
+            shutil.copy(source.path, package / source.name)
+    result = subprocess.run([sys.executable, "-c", "import rattleback"], capture_output=True,
+                            text=True, env=dict(os.environ, PYTHONPATH=str(tmp_path)))
+    assert result.returncode == 1
+    last = result.stderr.strip().splitlines()[-1]
+    assert last == (f"ImportError: rattleback's compiled modules are not built in {package}: "
+                    "build them with `bash scripts/build.sh rattleback_python` "
+                    "(scripts/run.sh builds only the command)"), result.stderr
