@@ -228,6 +228,18 @@ void writePanel(std::ostream& script, const Panel& panel, bool titled, const fs:
   if (!panel.marks.empty()) script << "unset arrow\nunset label\n";
 }
 
+bool logarithmicAxis(const std::vector<double>& values) {
+  if (values.size() < 3) return false;
+  for (double v : values)
+    if (!(v > 0) || !std::isfinite(v)) return false;
+  const double ratio = values[1] / values[0];
+  // Ratios equal within 1e-9: the values are the sweep's own, written to round trip.
+  for (std::size_t i = 1; i + 1 < values.size(); ++i)
+    if (std::abs(values[i + 1] / values[i] / ratio - 1) > 1e-9) return false;
+  const double span = values.back() / values.front();
+  return span > 10 || span < 0.1;
+}
+
 rb::Status plotPng(const std::string& png, const std::string& title,
                    const std::vector<Panel>& panels, int width, int height) {
   return drawWithGnuplot(png, [&](std::ofstream& script, const fs::path& work,

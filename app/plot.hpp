@@ -38,6 +38,12 @@ struct Panel {
   std::vector<Series> series;
 };
 
+/// Whether values are best drawn on a logarithmic axis: three or more, all positive, each a
+/// constant ratio to the one before (a sweep axis with `scale: log`, or values listed by
+/// powers), spanning more than a factor of 10. On a linear axis all but the last few of them
+/// crowd at its left.
+bool logarithmicAxis(const std::vector<double>& values);
+
 /// Makes `dir` when missing and checks that a file can be written into it (before a run whose
 /// plots go there); an error line with the system's reason otherwise.
 rb::Status checkPlotFolder(const std::string& dir);

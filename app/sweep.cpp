@@ -108,9 +108,12 @@ rb::Status plotTable(const std::string& png, const std::string& metric, const st
     panel.y_label = metric;
     Series series;
     series.title = metric;
-    for (std::size_t i = 0; i < table.values.size(); ++i)
-      series.points.emplace_back(std::strtod(table.axis_values[0][i].c_str(), nullptr),
-                                 table.values[i]);
+    std::vector<double> xs;
+    for (std::size_t i = 0; i < table.values.size(); ++i) {
+      xs.push_back(std::strtod(table.axis_values[0][i].c_str(), nullptr));
+      series.points.emplace_back(xs.back(), table.values[i]);
+    }
+    panel.log_x = logarithmicAxis(xs);
     panel.series.push_back(series);
     return plotPng(png, title + ": " + metric, {panel}, 900, 500);
   }

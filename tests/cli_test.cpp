@@ -775,6 +775,21 @@ TEST(Plot, TheSpinFigureMarksEachReversal) {
   fs::remove_all(work);
 }
 
+// A sweep's one axis drawn against its metric: on a logarithmic x axis when its values are a
+// geometric sequence over more than a decade (`scale: log`: on a linear axis 5 of 7 drags
+// from 1e-7 to 1e-4 sat in its leftmost 3 %), else linear.
+TEST(Plot, AGeometricSweepAxisIsDrawnLogarithmic) {
+  std::vector<double> drags;
+  for (int i = 0; i < 7; ++i) drags.push_back(1e-7 * std::pow(10.0, i * 0.5));
+  EXPECT_TRUE(app::logarithmicAxis(drags));
+  EXPECT_TRUE(app::logarithmicAxis({100, 10, 1, 0.1}));       // descending
+  EXPECT_FALSE(app::logarithmicAxis({1, 2, 3, 4, 5, 6, 7}));  // evenly spaced
+  EXPECT_FALSE(app::logarithmicAxis({1, 1.2, 1.44, 1.728}));  // geometric, within a decade
+  EXPECT_FALSE(app::logarithmicAxis({0, 1e-6, 1e-5, 1e-4}));  // a zero drag
+  EXPECT_FALSE(app::logarithmicAxis({-1, -10, -100}));        // negative spins
+  EXPECT_FALSE(app::logarithmicAxis({1e-6, 1e-4}));           // two points: either way
+}
+
 // The sweep heatmap's script: numbers' minus signs as U+2212 (DejaVu's hyphen, turned by 30°,
 // read as "`6"), x labels level when they fit, turned only when they would not, and the note
 // on its own line under the axis title (it sat beside it, running to the edge).
