@@ -66,8 +66,10 @@ py::dict columns(const Run& run) {
   d["wy"] = column(s, [](const T& x) { return x.w_world.y(); });
   d["wz"] = column(s, [](const T& x) { return x.w_world.z(); });
   d["Lz"] = column(s, [](const T& x) { return x.L_world.z(); });
-  py::array_t<std::int32_t> contacts(static_cast<py::ssize_t>(s.size()));
-  std::int32_t* c = contacts.mutable_data();
+  // 64-bit, as pandas and NumPy read a column of whole numbers (pd.read_csv of the CSV gives
+  // int64): a frame from to_pandas and one read from the CSV compare equal.
+  py::array_t<std::int64_t> contacts(static_cast<py::ssize_t>(s.size()));
+  std::int64_t* c = contacts.mutable_data();
   for (const T& x : s) *c++ = x.contacts;
   d["contacts"] = contacts;
   d["normal_force"] = column(s, [](const T& x) { return x.normal_force; });
