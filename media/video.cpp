@@ -201,8 +201,9 @@ rb::Status checkExtension(const std::string& output, const std::string& wanted,
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return std::tolower(c); });
   if (ext == wanted || (base_allowed && ext.empty())) return {};
-  return rb::Status::fail("-o " + output + ": writes " + format + "; give a name ending in " +
-                          wanted);
+  // Named as the caller names the output (-o; render's output in Python).
+  return rb::Status::fail(std::string(rb::output_named_by) + " " + output + ": writes " + format +
+                          "; give a name ending in " + wanted);
 }
 
 std::jthread preloadDriver(render::Backend backend) {

@@ -167,3 +167,13 @@ def test_a_package_whose_modules_are_not_built_says_how_to_build_them(tmp_path):
     assert last == (f"ImportError: rattleback's compiled modules are not built in {package}: "
                     "build them with `bash scripts/build.sh rattleback_python` "
                     "(scripts/run.sh builds only the command)"), result.stderr
+
+
+def test_a_video_name_of_another_kind_is_named_as_python_names_it(tmp_path):
+    # The command line's "-o": in Python the argument is render's output.
+    path = tmp_path / "v.avi"
+    with pytest.raises(ValueError) as caught:
+        rb.render(scene_path("rattleback.yaml"), path, duration=0.1)
+    assert str(caught.value) == (f"render's output {path}: writes MP4 video; "
+                                 "give a name ending in .mp4")
+    assert not path.exists()
