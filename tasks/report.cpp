@@ -21,6 +21,7 @@
 #include "tasks/manifest.hpp"
 #include "tasks/output.hpp"
 #include "tasks/player_data.hpp"
+#include "tasks/run_json.hpp"
 #include "util/assets.hpp"
 
 namespace tasks {
@@ -530,6 +531,20 @@ std::vector<Pose> posesOf(const fs::path& csv) {
   return poses;
 }
 
+// Whether the scene file no longer describes the run its sidecar recorded: its content's
+// fingerprint differs from the one simulate wrote, or, in a sidecar older than that key, the
+// body's mass does, the only body parameter such a sidecar records (a relative 1e-9: the same
+// file gives the same mass to the last digit). Without either, the scene is taken as it is. The
+// player would otherwise draw the body as it is now, moving as the old one did.
+bool sceneChangedSince(const nlohmann::json& sidecar, const std::string& scene_path,
+                       const sim::Model& model) {
+  const nlohmann::json& fingerprint = field(sidecar, "scene_fingerprint");
+  if (fingerprint.is_string()) return fingerprint != sceneFingerprint(scene_path);
+  const nlohmann::json& mass = field(field(sidecar, "model"), "mass_kg");
+  if (!mass.is_number()) return false;
+  return std::abs(mass.get<double>() - model.body->mass) > 1e-9 * std::abs(model.body->mass);
+}
+
 // DIR/<id>.player.js for a scene with telemetry: its poses, reversals and drawn points; false
 // (the page then has no player for it) when the CSV, its sidecar or its scene cannot be read.
 bool writePlayerData(const fs::path& dir, const std::string& id, const SceneFiles& f) {
@@ -542,6 +557,12 @@ bool writePlayerData(const fs::path& dir, const std::string& id, const SceneFile
   if (!loaded) return false;
   auto model = scene::loadModel(loaded.value());
   if (!model) return false;
+  if (sceneChangedSince(*sidecar, *scene_path, model.value())) {
+    std::cerr << (dir / f.at(".csv")).string() << ": " << *scene_path
+              << " has changed since this run was simulated: no 3D player for it (simulate it "
+                 "again to replay it)\n";
+    return false;
+  }
   PlayerRun run;
   run.id = id;
   run.title = id;

@@ -1,7 +1,10 @@
 #include "tasks/run_json.hpp"
 
+#include <cstdint>
+#include <cstdio>
 #include <string>
 
+#include "scene/loader.hpp"
 #include "tasks/outcome.hpp"
 
 namespace tasks {
@@ -61,6 +64,20 @@ nlohmann::json runJson(const sim::RunSummary& run) {
   j["mode_changes"] = changes;
   j["wall_s"] = run.wall_s;
   return j;
+}
+
+std::string fingerprintOf(const std::vector<std::string>& texts) {
+  std::uint64_t hash = 14695981039346656037ull;
+  for (const std::string& text : texts)
+    for (unsigned char c : text) hash = (hash ^ c) * 1099511628211ull;
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+  return hex;
+}
+
+std::string sceneFingerprint(const std::string& path) {
+  const auto text = scene::readSceneFile(path);
+  return text ? fingerprintOf({scene::yamlContent(text.value())}) : "";
 }
 
 }  // namespace tasks

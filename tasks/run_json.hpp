@@ -4,6 +4,8 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include "sim/model.hpp"
 #include "sim/rollout.hpp"
@@ -15,5 +17,11 @@ nlohmann::json modelJson(const sim::Model& model);
 /// What a run found: reversals, final spin and tilt, energy, steps, wall time, and why it
 /// stopped when it did.
 nlohmann::json runJson(const sim::RunSummary& run);
+
+/// FNV-1a (64 bits) of the texts in turn, as 16 hex digits: a fingerprint of content.
+std::string fingerprintOf(const std::vector<std::string>& texts);
+/// The fingerprint of a scene file's content (scene::yamlContent: comments and layout do not
+/// count), or "" when the file cannot be read.
+std::string sceneFingerprint(const std::string& path);
 
 }  // namespace tasks

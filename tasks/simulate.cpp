@@ -146,6 +146,10 @@ nlohmann::json telemetrySidecar(const std::string& scene, const sim::Model& mode
   std::error_code ec;
   const std::filesystem::path absolute = std::filesystem::absolute(scene, ec);
   j["scene_path"] = ec ? scene : absolute.lexically_normal().string();
+  // The scene's content as it was run, so that `report` can tell when the file has been edited
+  // since and its 3D player would draw another body than the one simulated.
+  const std::string fingerprint = sceneFingerprint(scene);
+  j["scene_fingerprint"] = fingerprint.empty() ? nlohmann::json() : nlohmann::json(fingerprint);
   j["columns"] = columnsJson(kColumns);
   j["rows"] = rows;
   j["rate_hz"] = rate;

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "scene/loader.hpp"
+#include "tasks/run_json.hpp"
 #include "util/output_place.hpp"
 
 namespace tasks {
@@ -121,13 +122,8 @@ std::string sweepFingerprint(const scene::Sweep& sweep) {
   // FNV-1a (64 bits) of the sweep file's and its base scene's content: any edit to either (a
   // duration, a mass) changes it, where the rows' own values catch only a changed axis; a
   // comment or a blank line does not (a new user's comment had made --resume refuse).
-  std::uint64_t hash = 14695981039346656037ull;
-  for (const std::string& text : {scene::yamlContent(textOf(sweep.file)), std::string("\n--\n"),
-                                  scene::yamlContent(textOf(sweep.base))})
-    for (unsigned char c : text) hash = (hash ^ c) * 1099511628211ull;
-  char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
-  return hex;
+  return fingerprintOf(
+      {scene::yamlContent(textOf(sweep.file)), "\n--\n", scene::yamlContent(textOf(sweep.base))});
 }
 
 std::optional<Shard> parseShard(const std::string& text) {

@@ -1132,6 +1132,56 @@ TEST(Cli, TheReportShowsEveryRunOfAScene) {
   }
 }
 
+// The player draws the body the run simulated, not the scene file as it is now: a new user
+// edited a scene's body after simulating it and `report` replayed the old run on the new body
+// without a word. A scene whose content changed since (its sidecar's scene_fingerprint; in an
+// older sidecar without one, the body's mass) gets no player and one line on stderr naming the
+// scene and the way out; a comment added changes no content and keeps the player.
+TEST(Report, AnEditedSceneGetsNoPlayer) {
+  const fs::path dir = scratchDir() / "edited";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path yaml = dir / "edit.yaml";
+  fs::copy_file(scene("rattleback"), yaml);
+  const std::string csv = (dir / "edit.csv").string();
+  ASSERT_EQ(rattleback("simulate " + yaml.string() + " --duration 0.2 -q -o " + csv).status, 0);
+  const fs::path data = dir / "edit.player.js";
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  if (!fs::exists(data)) GTEST_SKIP() << "built without the player (no node and npm)";
+  std::ofstream(yaml, std::ios::app) << "# a comment changes no content\n";
+  Result same = rattleback("report " + dir.string() + " -q");
+  ASSERT_EQ(same.status, 0);
+  EXPECT_EQ(same.err, "");
+  EXPECT_NE(readText(dir / "index.html").find("data-run=\"edit\""), std::string::npos);
+
+  std::string text = readText(yaml);
+  text.replace(text.find("a: 1.0, p: 0.5"), 14, "a: 1.2, p: 0.5");
+  std::ofstream(yaml) << text;
+  fs::remove(data);
+  for (bool old_sidecar : {false, true}) {
+    // A sidecar from before scene_fingerprint: the mass is the only body parameter it records.
+    if (old_sidecar) {
+      text.replace(text.find("mass: 0.059"), 11, "mass: 0.070");
+      std::ofstream(yaml) << text;
+      nlohmann::json sidecar = nlohmann::json::parse(readText(csv + ".json"));
+      ASSERT_TRUE(sidecar.contains("scene_fingerprint"));
+      sidecar.erase("scene_fingerprint");
+      std::ofstream(csv + ".json") << sidecar.dump(2);
+    }
+    const Result edited = rattleback("report " + dir.string() + " -q");
+    ASSERT_EQ(edited.status, 0);
+    EXPECT_FALSE(fs::exists(data)) << old_sidecar;
+    const std::string html = readText(dir / "index.html");
+    EXPECT_EQ(html.find("data-run=\"edit\""), std::string::npos) << old_sidecar;
+    EXPECT_NE(html.find("href=\"edit.csv\""), std::string::npos);  // the rest of the page stays
+    EXPECT_NE(edited.err.find(yaml.string() + " has changed since this run was simulated"),
+              std::string::npos)
+        << edited.err;
+    EXPECT_NE(edited.err.find("simulate it again"), std::string::npos) << edited.err;
+    EXPECT_EQ(std::count(edited.err.begin(), edited.err.end(), '\n'), 1) << edited.err;
+  }
+}
+
 // A video's poster is the still at t = 0 spun as it was, per the manifest: a new user's lone
 // video took a still at t = 2.1 (named <scene>-oblique.png) as its poster, by the name-based
 // fallback meant only for files the manifest does not list. That still is shown as a still; a
