@@ -23,6 +23,7 @@
 #include "tasks/player_data.hpp"
 #include "tasks/run_json.hpp"
 #include "util/assets.hpp"
+#include "util/output_place.hpp"
 
 namespace tasks {
 namespace {
@@ -687,6 +688,8 @@ rb::Result<std::string> writeReport(const std::string& folder_path) {
   if (!fs::is_directory(dir, ec))
     return rb::Error{
         "", folder_path + ": not a folder (give the folder the runs wrote into, e.g. out)"};
+  // `report` takes a folder, not -o: the way out of a folder it cannot write in says so.
+  const rb::OutputNamedBy naming("rattleback report", "a folder");
   Folder folder;
   placeByName(dir, placeListed(dir, folder), folder);
   separateSweeps(dir, folder);

@@ -742,6 +742,18 @@ TEST(Cli, EveryWriterNamesTheFolderItCannotWriteAndTheWayOut) {
   }
 }
 
+// `report` takes a folder, and no -o: where it cannot write its page, the way out says to give
+// it a folder (a new user's trial read "give -o a path in a folder you can write").
+TEST(Report, AFolderItCannotWriteInNamesTheWayOutReportTakes) {
+  const Result r = rattleback("report /proc -q");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("/proc/index.html: cannot write a file in /proc: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("(give rattleback report a folder you can write)"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("-o"), std::string::npos) << r.err;
+}
+
 // The spin figure marks each reversal: a dashed vertical line at its time and its label beside
 // it, right of the line, or left of one in the last fifth of the run (it would run off the
 // frame); every other label a line lower (Kane & Levinson's four labels had run into each

@@ -53,28 +53,40 @@ inline OutputPlace outputPlace(const std::string& path) {
 /// line (the default), "--plot" for a plot, "to_csv" or "save" from Python. Per thread: a
 /// writer reads it on the thread that asked for the file.
 inline thread_local const char* output_named_by = "-o";
+/// What the caller gives output_named_by, for the same way out: "a path in a folder" (a file's
+/// path, the default), or "a folder" where it takes the folder itself (`report DIR`).
+inline thread_local const char* output_named_as = "a path in a folder";
 
-/// Sets output_named_by for as long as it lives (then puts back the one before).
+/// Sets output_named_by and output_named_as for as long as it lives (then puts back the ones
+/// before).
 class OutputNamedBy {
  public:
-  explicit OutputNamedBy(const char* name) : before_(output_named_by) { output_named_by = name; }
-  ~OutputNamedBy() { output_named_by = before_; }
+  explicit OutputNamedBy(const char* name, const char* as = "a path in a folder")
+      : before_(output_named_by), before_as_(output_named_as) {
+    output_named_by = name;
+    output_named_as = as;
+  }
+  ~OutputNamedBy() {
+    output_named_by = before_;
+    output_named_as = before_as_;
+  }
   OutputNamedBy(const OutputNamedBy&) = delete;
   OutputNamedBy& operator=(const OutputNamedBy&) = delete;
 
  private:
   const char* before_;
+  const char* before_as_;
 };
 
 /// The one error line for an output file that cannot be made where it was asked for (every
 /// writer: tables, PNGs, plots, videos): the path, the folder, the system's reason and the
-/// way out, in the caller's terms (output_named_by).
+/// way out, in the caller's terms (output_named_by, output_named_as).
 inline std::string cannotWriteIn(const std::string& path, const std::string& reason) {
   const std::filesystem::path folder =
       std::filesystem::path(outputPlace(path).target).parent_path();
   return path + ": cannot write a file in " +
          (folder.empty() ? std::string("this folder") : folder.string()) + ": " + reason +
-         " (give " + output_named_by + " a path in a folder you can write)";
+         " (give " + output_named_by + " " + output_named_as + " you can write)";
 }
 inline std::string cannotWriteIn(const std::string& path, int error) {
   return cannotWriteIn(path, std::strerror(error ? error : EACCES));
