@@ -234,6 +234,17 @@ rb::Error located(const std::string& file, int line, const std::string& key,
   return e;
 }
 
+// An error in a key set from outside the file, named by what set it: an option for the key
+// alone ("--fps: must be …"), else with the key: "--set body.mass=-3: body.mass must be > 0",
+// "with_values: body.mass …", a sweep's line.
+rb::Error setBy(const std::string& place, const std::string& set_key, const rb::Error& error) {
+  const bool option = place.rfind("--", 0) == 0 || place.rfind("argument ", 0) == 0;
+  const bool alone = option && place.find('=') == std::string::npos && error.key == set_key;
+  rb::Error e{"", printable(place + ": " + (alone ? "" : error.key + " ") + error.message)};
+  e.where = rb::Error::Where{place, 0, error.key};
+  return e;
+}
+
 }  // namespace
 
 std::string yamlContent(const std::string& text) {
@@ -321,13 +332,10 @@ rb::Result<Loaded> loadTree(const YAML::Node& root_node, const std::string& name
     MapReader root(root_node, "", 1, out);
     readKeys(root, out);
   } catch (const Failure& f) {
-    // A key set from elsewhere (a sweep's axis) is named where it was set.
+    // A key set from elsewhere (a sweep's axis, --set) is named where it was set.
     for (const auto& [key, place] : places)
-      if (f.key == key || f.key.rfind(key + ".", 0) == 0) {
-        rb::Error e{"", printable(place + ": " + f.key + " " + f.message)};
-        e.where = rb::Error::Where{place, 0, f.key};
-        return e;
-      }
+      if (f.key == key || f.key.rfind(key + ".", 0) == 0)
+        return setBy(place, key, rb::Error{f.key, f.message});
     return located(name, f.line, f.key, f.message);
   } catch (const YAML::Exception& e) {
     return malformed(name, e);
@@ -380,7 +388,9 @@ rb::Result<Loaded> loadWithValues(const std::string& yaml, const std::string& na
                     withoutIndex(kv.key) + ", which the scene does not have");
     }
     put(root, *path, 0, value);
-    places[withoutIndex(kv.key)] = place;
+    // An option names each value as typed ("--set body.mass=-3"); with_values by its name.
+    places[withoutIndex(kv.key)] =
+        place.rfind("--", 0) == 0 ? place + " " + kv.key + "=" + kv.yaml : place;
   }
   replaceStepSetting(root, places);
   return loadTree(root, name, places);
@@ -422,13 +432,13 @@ std::map<std::string, std::string>::const_iterator overrideOf(const Loaded& load
 }
 
 rb::Error locate(const Loaded& loaded, const rb::Error& error) {
-  if (auto it = overrideOf(loaded, error.key); it != loaded.overrides.end()) {
-    // An option (--fps) is named alone, not with the key it sets; a sweep's line with it.
-    const bool option = it->second.rfind("--", 0) == 0 || it->second.rfind("argument ", 0) == 0;
-    rb::Error e{"", printable(it->second + ": " + (option ? "" : error.key + " ") + error.message)};
-    e.where = rb::Error::Where{it->second, 0, error.key};
-    return e;
-  }
+  if (auto it = overrideOf(loaded, error.key); it != loaded.overrides.end())
+    return setBy(it->second, it->first, error);
+  // A key of the file's whose error comes of a value set from outside it (the step count of
+  // the file's dt over a --duration) is named by that option, with the key.
+  for (const std::string& other : error.involves)
+    if (auto it = overrideOf(loaded, other); it != loaded.overrides.end())
+      return setBy(it->second, "", error);
   // The key's own line, else the nearest enclosing key that the file has.
   std::string key = error.key;
   while (!key.empty()) {

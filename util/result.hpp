@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 #include <variant>
+#include <vector>
 
 namespace rb {
 
@@ -23,6 +24,9 @@ struct Error {
     std::string key;
   };
   std::optional<Where> where = std::nullopt;
+  /// Other dotted keys whose values the message names ("simulation.duration" for a step
+  /// count): when one of them was set by an option, the message names that option.
+  std::vector<std::string> involves = {};
   /// "key message", or the message alone.
   std::string text() const { return key.empty() ? message : key + " " + message; }
 };
