@@ -20,6 +20,20 @@ std::vector<std::string> optionNames(const CLI::App& command) {
   return names;
 }
 
+// What an option takes, as the messages say it: "a number", "a whole number", "a value".
+std::string takes(const CLI::Option& option) {
+  const std::string type = option.get_type_name();
+  return type == "INT" ? "a whole number" : type == "FLOAT" ? "a number" : "a value";
+}
+
+// An option's help up to its first parenthesis: "initial spin, rad/s".
+std::string gist(const CLI::Option& option) {
+  std::string text = option.get_description().substr(0, option.get_description().find(" ("));
+  if (text.size() > 1 && std::islower(static_cast<unsigned char>(text[1])))
+    text[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(text[0])));
+  return text;
+}
+
 bool looksLikeANumber(const std::string& word) {
   return word.size() > 1 && (std::isdigit(static_cast<unsigned char>(word[1])) || word[1] == '.');
 }
@@ -63,15 +77,17 @@ std::string explainOptionError(const CLI::App& cli, int argc, char** argv,
       what.rfind(prefix, 0) == 0 && at != std::string::npos) {
     const std::string name = what.substr(prefix.size(), at - prefix.size());
     const std::string value = what.substr(at + equals.size());
-    const CLI::Option* option = command->get_option_no_throw(name);
-    const std::string type = option ? option->get_type_name() : "";
-    const std::string wanted = type == "INT"     ? "a whole number"
-                               : type == "FLOAT" ? "a number"
-                                                 : "a value of type " + type;
-    if (!type.empty())
-      return path + ": " + name + " takes " + wanted + ", not '" + value + "' (see rattleback " +
-             path + " --help)";
+    if (const CLI::Option* option = command->get_option_no_throw(name))
+      return path + ": " + name + " takes " + takes(*option) + ", not '" + value +
+             "' (see rattleback " + path + " --help)";
   }
+  // CLI11 says "--spin: 1 required FLOAT missing" for an option given no value.
+  if (const std::size_t at = what.find(": ");
+      at != std::string::npos && what.find(" required ") != std::string::npos && what.size() > 8 &&
+      what.compare(what.size() - 8, 8, " missing") == 0)
+    if (const CLI::Option* option = command->get_option_no_throw(what.substr(0, at)))
+      return path + ": " + what.substr(0, at) + " takes " + takes(*option) + " (" + gist(*option) +
+             "), none given (see rattleback " + path + " --help)";
   return what + " (see rattleback " + path + " --help)";
 }
 
