@@ -76,6 +76,8 @@ struct SceneFiles {
   // Telemetry the manifest lists beside the scene's main run (".csv": the scene's own
   // <scene>.csv, else the first by name), in name order: each listed with what it measured.
   std::vector<std::string> more_runs;
+  // Stills' captions from the manifest (file name → "oblique view, t = 1 s, spun −4 rad/s").
+  std::map<std::string, std::string> captions;
   bool has(const std::string& suffix) const { return by_suffix.count(suffix) > 0; }
   const std::string& at(const std::string& suffix) const { return by_suffix.at(suffix); }
 };
@@ -294,6 +296,44 @@ void writeAnalysis(std::ostream& out, const SceneFiles& f,
   out << "</td></tr></table>\n";
 }
 
+// A number for a caption: %g, with U+2212 for its minus sign as the plots' tic labels have.
+std::string shown(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text[0] == '-' ? "\u2212" + std::string(text + 1) : text;
+}
+
+// What a still shows, from its manifest entry: "oblique view, t = 1 s, spun −4 rad/s".
+std::string stillCaption(const OutputEntry& e) {
+  std::string caption = (e.role.empty() ? std::string("a") : e.role) + " view";
+  if (e.t) caption += ", t = " + shown(*e.t) + " s";
+  if (e.spin) caption += *e.spin == 0 ? ", not spun" : ", spun " + shown(*e.spin) + " rad/s";
+  return caption;
+}
+
+// What a plot against time shows, by its suffix; else "" (the file's name is shown).
+std::string plotCaption(const std::string& file) {
+  const std::pair<const char*, const char*> plots[] = {
+      {"-spin.png", "spin n against time"},
+      {"-energy.png", "energy against time"},
+      {"-tilt.png", "tilt against time"},
+      {"-normal.png", "normal force against time"}};
+  for (const auto& [suffix, caption] : plots)
+    if (endsWith(file, suffix)) return caption;
+  return "";
+}
+
+// An image linked to itself, captioned (its file name when there is no caption), with the
+// caption as its alt text: a bare file name told a reader nothing of what the still shows.
+void writeFigure(std::ostream& out, const std::string& file, const std::string& caption,
+                 const char* loading = "eager") {
+  const std::string text = caption.empty() ? file : caption;
+  out << "<figure><a href=\"" << escape(file) << "\"><img src=\"" << escape(file) << "\" alt=\""
+      << escape(text) << "\" loading=\"" << loading << "\"></a><figcaption>" << escape(text)
+      << (caption.empty() ? "" : " (<a href=\"" + escape(file) + "\">" + escape(file) + "</a>)")
+      << "</figcaption></figure>\n";
+}
+
 void writeImages(std::ostream& out, const SceneFiles& f, const char* const* suffixes,
                  std::size_t count, const char* heading,
                  const std::vector<std::string>& more = {}) {
@@ -303,9 +343,10 @@ void writeImages(std::ostream& out, const SceneFiles& f, const char* const* suff
   files.insert(files.end(), more.begin(), more.end());
   if (files.empty()) return;
   out << "<h3>" << heading << "</h3><div class=\"grid\">\n";
-  for (const std::string& file : files)
-    out << "<a href=\"" << escape(file) << "\"><img src=\"" << escape(file) << "\" alt=\""
-        << escape(file) << "\" loading=\"eager\"></a>\n";
+  for (const std::string& file : files) {
+    const auto listed = f.captions.find(file);
+    writeFigure(out, file, listed != f.captions.end() ? listed->second : plotCaption(file));
+  }
   out << "</div>\n";
 }
 
@@ -315,6 +356,7 @@ h1{margin-bottom:0}section{border-top:1px solid #ccc;margin-top:1.5em}
 .pair{display:flex;gap:1em;flex-wrap:wrap}.pair figure{flex:1 1 500px;margin:0}
 video,img{max-width:100%;height:auto;background:#eee}figure{margin:0 0 1em}
 .grid{display:grid;grid-template-columns:repeat(auto-fill,minmax(300px,1fr));gap:.7em}
+.grid figure{margin:0}figcaption{font-size:.9em;color:#444}
 table{border-collapse:collapse;margin:1em 0}
 td,th{border:1px solid #ccc;padding:.4em .8em;vertical-align:top;text-align:left}
 )";
@@ -372,6 +414,7 @@ std::set<std::string> placeListed(const fs::path& dir, Folder& folder) {
   std::error_code ec;
   for (const OutputEntry& e : entries) {
     if (!fs::is_regular_file(dir / e.file, ec)) continue;  // since removed
+    if (e.kind == OutputKind::Still) folder.scenes[e.scene].captions[e.file] = stillCaption(e);
     if (e.kind == OutputKind::Telemetry) {
       runs[e.scene].push_back(e.file);
       placed.insert(e.file);
@@ -630,9 +673,7 @@ void writeSweep(std::ostream& out, const SweepFiles& sweep) {
         << "</code> (" << (values.is_array() ? values.size() : 0) << " values)";
   }
   out << ": <a href=\"" << escape(sweep.csv) << "\">the table (CSV)</a></p><div class=\"grid\">\n";
-  for (const std::string& image : sweep.images)
-    out << "<a href=\"" << escape(image) << "\"><img src=\"" << escape(image) << "\" alt=\""
-        << escape(image) << "\"></a>\n";
+  for (const std::string& image : sweep.images) writeFigure(out, image, "");
   out << "</div></section>\n";
 }
 
@@ -641,8 +682,7 @@ void writeOthers(std::ostream& out, const std::vector<std::string>& others) {
   out << "<section id=\"other\"><h2>Benchmarks and other figures</h2><div class=\"grid\">\n";
   for (const std::string& name : others) {
     if (endsWith(name, ".png"))
-      out << "<a href=\"" << escape(name) << "\"><img src=\"" << escape(name) << "\" alt=\""
-          << escape(name) << "\"></a>\n";
+      writeFigure(out, name, "");
     else
       out << "<p><a href=\"" << escape(name) << "\">" << escape(name) << "</a></p>\n";
   }

@@ -1236,6 +1236,35 @@ TEST(Cli, AStillIsAPosterOnlyWhenTheManifestSaysItIsOne) {
   EXPECT_NE(readText(bare / "index.html").find("poster=\"toy-oblique.png\""), std::string::npos);
 }
 
+// Each still is captioned with what it shows, from the manifest (its view, time and spin, the
+// minus sign U+2212), and has that as its alt text: a new user's page had bare thumbnails with
+// alt="lesson-oblique.png". A still the manifest does not list is captioned with its name; a
+// plot says what it plots.
+TEST(Report, StillsAndPlotsHaveCaptions) {
+  const fs::path dir = scratchDir() / "stills";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string s = scene("rattleback");
+  const std::string still = (dir / "lesson-oblique.png").string();
+  ASSERT_EQ(rattleback("still " + s + " --t 1 --spin -4 --size 64x48 -q -o " + still).status, 0);
+  fs::copy_file(still, dir / "toy-above.png");  // listed by no manifest
+  ASSERT_EQ(rattleback("simulate " + s + " --duration 0.2 -q -o " + (dir / "lesson.csv").string() +
+                       " --plot " + dir.string())
+                .status,
+            0);
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  const std::string html = readText(dir / "index.html");
+  const std::string shown = "oblique view, t = 1 s, spun \u22124 rad/s";
+  EXPECT_NE(html.find("alt=\"" + shown + "\""), std::string::npos) << html;
+  EXPECT_NE(html.find("<figcaption>" + shown + " (<a href=\"lesson-oblique.png\">"),
+            std::string::npos)
+      << html;
+  EXPECT_NE(html.find("alt=\"toy-above.png\""), std::string::npos) << html;
+  EXPECT_NE(html.find("<figcaption>toy-above.png</figcaption>"), std::string::npos) << html;
+  if (fs::exists(dir / "rattleback-spin.png"))  // gnuplot drew it
+    EXPECT_NE(html.find("<figcaption>spin n against time"), std::string::npos) << html;
+}
+
 // An output folder holds the outputs and their manifest, nothing else: the manifest's lock is
 // the folder itself (flock on its descriptor), where it was an empty .rattleback-manifest.lock
 // left in every folder written into.
