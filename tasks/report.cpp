@@ -605,6 +605,9 @@ bool writePlayerData(const fs::path& dir, const std::string& id, const SceneFile
     std::cerr << (dir / f.at(".csv")).string() << ": " << *scene_path
               << " has changed since this run was simulated: no 3D player for it (simulate it "
                  "again to replay it)\n";
+    // The data an earlier report wrote for this run would replay it on the edited body.
+    std::error_code ec;
+    fs::remove(dir / (id + ".player.js"), ec);
     return false;
   }
   PlayerRun run;
