@@ -589,23 +589,33 @@ bool sceneChangedSince(const nlohmann::json& sidecar, const std::string& scene_p
   return std::abs(mass.get<double>() - model.body->mass) > 1e-9 * std::abs(model.body->mass);
 }
 
+// The model of the scene a telemetry sidecar names, when that scene can be read and still
+// describes the run (sceneChangedSince); none otherwise.
+std::optional<sim::Model> runModelOf(const nlohmann::json& sidecar, const fs::path& dir) {
+  if (field(sidecar, "command") != "simulate") return std::nullopt;
+  const auto scene_path = sceneOf(sidecar, dir);
+  if (!scene_path) return std::nullopt;
+  auto loaded = scene::loadFile(*scene_path);
+  if (!loaded) return std::nullopt;
+  auto model = scene::loadModel(loaded.value());
+  if (!model || sceneChangedSince(sidecar, *scene_path, model.value())) return std::nullopt;
+  return std::move(model).value();
+}
+
 // DIR/<id>.player.js for a scene with telemetry: its poses, reversals and drawn points; false
 // (the page then has no player for it) when the CSV, its sidecar or its scene cannot be read.
 bool writePlayerData(const fs::path& dir, const std::string& id, const SceneFiles& f) {
   if (!f.has(".csv") || !f.has(".csv.json")) return false;
   const std::optional<nlohmann::json> sidecar = readJson(dir / f.at(".csv.json"));
   if (!sidecar || field(*sidecar, "command") != "simulate") return false;
-  const auto scene_path = sceneOf(*sidecar, dir);
-  if (!scene_path) return false;
-  auto loaded = scene::loadFile(*scene_path);
-  if (!loaded) return false;
-  auto model = scene::loadModel(loaded.value());
-  if (!model) return false;
-  if (sceneChangedSince(*sidecar, *scene_path, model.value())) {
-    std::cerr << (dir / f.at(".csv")).string() << ": " << *scene_path
-              << " has changed since this run was simulated: no 3D player for it (simulate it "
-                 "again to replay it)\n";
-    // The data an earlier report wrote for this run would replay it on the edited body.
+  const std::optional<sim::Model> model = runModelOf(*sidecar, dir);
+  if (!model) {
+    const auto scene_path = sceneOf(*sidecar, dir);
+    if (scene_path && scene::loadFile(*scene_path))
+      std::cerr << (dir / f.at(".csv")).string() << ": " << *scene_path
+                << " has changed since this run was simulated: no 3D player for it (simulate it "
+                   "again to replay it)\n";
+    // The data an earlier report wrote for this run would replay it on another body.
     std::error_code ec;
     fs::remove(dir / (id + ".player.js"), ec);
     return false;
@@ -613,7 +623,7 @@ bool writePlayerData(const fs::path& dir, const std::string& id, const SceneFile
   PlayerRun run;
   run.id = id;
   run.title = id;
-  run.points = drawnPointsOf(model.value());
+  run.points = drawnPointsOf(*model);
   run.poses = thinPoses(posesOf(dir / f.at(".csv")));
   if (run.poses.size() < 2) return false;
   const nlohmann::json& reversals = field(field(*sidecar, "result"), "reversals_s");
@@ -642,6 +652,16 @@ void writeScene(std::ostream& out, const fs::path& dir, const std::string& name,
   std::optional<nlohmann::json> theory, run;
   if (f.has("-analysis.json")) theory = readJson(dir / f.at("-analysis.json"));
   if (f.has(".csv.json")) run = readJson(dir / f.at(".csv.json"));
+  // No analysis in the folder (a user who ran simulate and render, not analyze --json): the
+  // theory of the run's scene at the run's spin, as analyze --json would write it, so that the
+  // page's predicted column and the videos' measured lines do not go empty.
+  if (!theory && run)
+    if (const std::optional<sim::Model> model = runModelOf(*run, dir)) {
+      const nlohmann::json& spin = field(field(field(*run, "model"), "initial"), "spin");
+      theory = analysisJson(
+          *model, analysisSpin(
+                      *model, spin.is_number() ? std::optional(spin.get<double>()) : std::nullopt));
+    }
   writeVideos(out, f, theory, run);
   if (player) {
     // The averaged theory's forecast first reversal, for the player's n(t) plot

@@ -1193,6 +1193,30 @@ TEST(Report, AnEditedSceneGetsNoPlayer) {
   }
 }
 
+// A folder with a run but no analyze --json (getting-started's commands): the page computes
+// the theory of the run's scene, at the run's spin, and shows it as analyze's JSON would; the
+// videos' captions then carry the run's measured line. It had left the predicted column empty
+// and the captions without what the run measured.
+TEST(Report, ARunWithoutAnalysisGetsItsScenesTheory) {
+  const fs::path dir = scratchDir() / "no-analysis";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string csv = (dir / "rattleback.csv").string();
+  ASSERT_EQ(rattleback("simulate " + scene("rattleback") + " --duration 3 -q -o " + csv).status, 0);
+  const fs::path json = dir / "rattleback-analysis.json";
+  ASSERT_EQ(rattleback("analyze " + scene("rattleback") + " --json -o " + json.string()).status, 0);
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  const std::string with_file = readText(dir / "index.html");
+  ASSERT_NE(with_file.find("preferred direction: <b>counter-clockwise</b>"), std::string::npos)
+      << with_file;
+  fs::remove(json);
+  const Result r = rattleback("report " + dir.string() + " -q");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  // The same page as with analyze's file (less its link to the text analysis, none here).
+  EXPECT_EQ(readText(dir / "index.html"), with_file);
+}
+
 // A video's poster is the still at t = 0 spun as it was, per the manifest: a new user's lone
 // video took a still at t = 2.1 (named <scene>-oblique.png) as its poster, by the name-based
 // fallback meant only for files the manifest does not list. That still is shown as a still; a
