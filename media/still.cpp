@@ -8,6 +8,7 @@
 #include "media/video_plan.hpp"
 #include "render/renderer.hpp"
 #include "sim/rollout.hpp"
+#include "util/format.hpp"
 
 namespace media {
 
@@ -18,6 +19,18 @@ rb::Result<StillResult> renderStill(const tasks::LoadedScene& loaded, const Stil
   // A still may show a time past the scene's duration: the run then goes on to it.
   model.duration = std::max(model.duration, request.t);
   auto planned = planVideo(loaded.scene, model.duration);
+  // The scene's own run plans, the run on to t does not (past the longest run its video may
+  // show, 10 million frames): --t is named, not the file's video section nor --duration.
+  if (!planned && request.t > loaded.model.duration &&
+      planVideo(loaded.scene, loaded.model.duration)) {
+    const scene::VideoSpec& video = loaded.scene.video;
+    return rb::Error{"", "--t: " + rb::show(request.t) +
+                             " s is past the longest run a video of this scene may show (10 "
+                             "million frames at playback " +
+                             rb::show(video.playback) + " and " + std::to_string(video.fps) +
+                             " fps: " + rb::show(1e7 * video.playback / video.fps) +
+                             " s); a still is one of its frames: choose an earlier time"};
+  }
   if (!planned) return planned.error();
   const VideoPlan& plan = planned.value();
   StillResult result;

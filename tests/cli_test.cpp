@@ -1609,3 +1609,17 @@ TEST(Cli, AnOptionWithoutItsValueSaysWhatItTakes) {
     EXPECT_EQ(r.err, expected) << args;
   }
 }
+
+// A still far past any run a video may show (10 million frames) names --t, the option that asked
+// for the run, not line 1 of a file without a video section nor --duration (a new user's trial:
+// "base.yaml:1: video.playback makes more than 10 million frames …"). One line, exit 2, no PNG.
+TEST(Cli, AStillTooLateNamesT) {
+  const fs::path png = tempFile("late.png");
+  const Result r = rattleback("still " + scene("kane-levinson") + " --t 1e9 -o " + png.string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err.rfind("--t: 1e+09 s is past the longest run a video of this scene may show", 0),
+            0u)
+      << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_FALSE(fs::exists(png));
+}
