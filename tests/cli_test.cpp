@@ -35,6 +35,15 @@ fs::path scratchDir() {
   return dir;
 }
 
+// A folder of the running test's scratch folder, emptied and made: what a test writes in it is
+// all that is there.
+fs::path emptyDir(const std::string& name) {
+  const fs::path dir = scratchDir() / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
 struct Result {
   int status;
   std::string out, err;
@@ -248,9 +257,7 @@ TEST(Cli, OutputsAreWrittenThroughSymbolicLinks) {
 // "-o -" is standard output, as people type it for tables: the CSV alone on stdout (read by
 // Python's csv module), the summary on stderr, and no file named "-" or "-.json" made.
 TEST(Cli, ADashSendsTheTableToStandardOutput) {
-  const fs::path dir = scratchDir() / "dash";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = emptyDir("dash");
   const std::string command =
       "cd " + dir.string() + " && " + RATTLEBACK_BIN + " simulate " + scene("seed-flip-ccw") +
       " --duration 0.1 --rate 100 -o - 2>err.txt | python3 -c 'import csv, sys; " +
@@ -933,9 +940,7 @@ std::vector<std::string> captions(const fs::path& page) {
 // turning". The default body reverses spun clockwise (2.366 s, README) and not in 1 s spun
 // counter-clockwise (its growth rates: it cannot rock that way).
 TEST(Cli, ReportCaptionsSayWhatIsPredictedAndWhatWasMeasured) {
-  const fs::path dir = scratchDir() / "page";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = emptyDir("page");
   const Result theory = rattleback("analyze " + scene("rattleback") + " --json");
   ASSERT_EQ(theory.status, 0) << theory.err;
   std::ofstream(dir / "rattleback-analysis.json") << theory.out;
@@ -1042,9 +1047,7 @@ TEST(Cli, AnalyzeShowsProductsASymmetricBodyLacksAsZero) {
 // "theory.json") all land in the section of the scene they came from, the poster under the
 // video spun as it was. By names alone they made four sections of their own.
 TEST(Cli, TheReportPlacesOutputsByTheManifest) {
-  const fs::path dir = scratchDir() / "manifest";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = emptyDir("manifest");
   const std::string s = scene("rattleback");
   auto in = [&](const char* name) { return (dir / name).string(); };
   ASSERT_EQ(
@@ -1106,9 +1109,7 @@ std::string readText(const fs::path& path) {
 // nowhere. The scene's own file (S.csv) is its main run (the measured cell, the player), written
 // first or not; the others are listed each with what it measured.
 TEST(Cli, TheReportShowsEveryRunOfAScene) {
-  const fs::path dir = scratchDir() / "runs";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = emptyDir("runs");
   const std::string s = scene("rattleback");
   auto in = [&](const char* name) { return (dir / name).string(); };
   ASSERT_EQ(rattleback("simulate " + s + " --duration 0.3 -q -o " + in("rattleback.csv")).status,
@@ -1150,9 +1151,7 @@ TEST(Cli, TheReportShowsEveryRunOfAScene) {
 // older sidecar without one, the body's mass) gets no player and one line on stderr naming the
 // scene and the way out; a comment added changes no content and keeps the player.
 TEST(Report, AnEditedSceneGetsNoPlayer) {
-  const fs::path dir = scratchDir() / "edited";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = emptyDir("edited");
   const fs::path yaml = dir / "edit.yaml";
   fs::copy_file(scene("rattleback"), yaml);
   const std::string csv = (dir / "edit.csv").string();
@@ -1198,9 +1197,7 @@ TEST(Report, AnEditedSceneGetsNoPlayer) {
 // videos' captions then carry the run's measured line. It had left the predicted column empty
 // and the captions without what the run measured.
 TEST(Report, ARunWithoutAnalysisGetsItsScenesTheory) {
-  const fs::path dir = scratchDir() / "no-analysis";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = emptyDir("no-analysis");
   const std::string csv = (dir / "rattleback.csv").string();
   ASSERT_EQ(rattleback("simulate " + scene("rattleback") + " --duration 3 -q -o " + csv).status, 0);
   const fs::path json = dir / "rattleback-analysis.json";
@@ -1222,9 +1219,7 @@ TEST(Report, ARunWithoutAnalysisGetsItsScenesTheory) {
 // fallback meant only for files the manifest does not list. That still is shown as a still; a
 // still at t = 0 is the poster; and unlisted files are still placed by their names.
 TEST(Cli, AStillIsAPosterOnlyWhenTheManifestSaysItIsOne) {
-  const fs::path dir = scratchDir() / "poster";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = emptyDir("poster");
   const std::string s = scene("rattleback");
   auto in = [&](const char* name) { return (dir / name).string(); };
   ASSERT_EQ(
@@ -1264,9 +1259,7 @@ TEST(Cli, AStillIsAPosterOnlyWhenTheManifestSaysItIsOne) {
 // alt="lesson-oblique.png". A still the manifest does not list is captioned with its name; a
 // plot says what it plots.
 TEST(Report, StillsAndPlotsHaveCaptions) {
-  const fs::path dir = scratchDir() / "stills";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = emptyDir("stills");
   const std::string s = scene("rattleback");
   const std::string still = (dir / "lesson-oblique.png").string();
   ASSERT_EQ(rattleback("still " + s + " --t 1 --spin -4 --size 64x48 -q -o " + still).status, 0);
@@ -1320,9 +1313,7 @@ TEST(Cli, AnOutputFolderHoldsOnlyTheOutputsAndTheManifest) {
 // extended and replaced under the folder's lock. 16 runs side by side; without the lock some
 // read the manifest before another's replacement and drop its entry (4 and 12 of 16 kept).
 TEST(Cli, RunsSideBySideAllListTheirOutputsInTheManifest) {
-  const fs::path dir = scratchDir() / "together";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = emptyDir("together");
   const std::string command = "for i in $(seq 16); do " + std::string(RATTLEBACK_BIN) +
                               " simulate " + scene("rattleback") + " --duration 0.01 -q -o " +
                               dir.string() + "/run-$i.csv & done; wait";
@@ -1387,9 +1378,7 @@ simulation: {integrator: rk4, dt: 1.0e-4, duration: 1.0}
 // preferred: analyze says so (it said "preferred cw" for the egg and "ccw" for the seed's
 // body, under its WARNING), --json has null, and the report says none.
 TEST(Cli, ABodyThatCannotStandPrefersNoDirection) {
-  const fs::path dir = scratchDir() / "topples";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = emptyDir("topples");
   std::ofstream(dir / "egg.yaml") << kEggOnEnd;
   for (const std::string& s : {(dir / "egg.yaml").string(), scene("seed-flip-ccw")}) {
     const Result text = rattleback("analyze " + s);
@@ -1418,9 +1407,7 @@ TEST(Cli, ABodyThatCannotStandPrefersNoDirection) {
 // a null frequency and growth_rates_at_rest; the report says it too. A body that stands keeps
 // its frequencies and rests with no growth but its drag's decay.
 TEST(Cli, AModeThatGrowsAtRestIsCalledUnstable) {
-  const fs::path dir = scratchDir() / "unstable";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = emptyDir("unstable");
   std::ofstream(dir / "egg.yaml") << kEggOnEnd;
   const std::string egg = (dir / "egg.yaml").string();
   const Result text = rattleback("analyze " + egg);
@@ -1458,9 +1445,7 @@ TEST(Cli, AModeThatGrowsAtRestIsCalledUnstable) {
 // none (issue 26: it got "cw" from rounding, and render --both named its +5 run "reversed").
 // Its videos are named by their spins, and the page says the theory prefers neither.
 TEST(Cli, ABodyWithNoPreferredDirectionGetsNone) {
-  const fs::path dir = scratchDir() / "none";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = emptyDir("none");
   std::ifstream in(scene("rattleback"));
   std::ofstream scene_out(dir / "flat.yaml");
   for (std::string line; std::getline(in, line);)
@@ -1504,9 +1489,7 @@ TEST(Cli, SimulateWarnsOfABodyThatCannotStand) {
 // simulate --check (issue 27): the summary names the tighter run and each reversal's error, the
 // sidecar carries it, and the report page shows it beside the run.
 TEST(Cli, CheckEstimatesTheRunsErrorsAndTheReportShowsThem) {
-  const fs::path dir = scratchDir() / "check";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = emptyDir("check");
   const auto run = rattleback("simulate " + scene("kane-levinson") + " --duration 3 --check -o " +
                               (dir / "run.csv").string());
   ASSERT_EQ(run.status, 0) << run.err;
