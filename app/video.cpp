@@ -113,8 +113,11 @@ int stillCommand(const StillArgs& args) {
   request.transparent = args.transparent;
   request.backend = *backend;
   request.cancelled = interrupted;
+  Progress progress("still", 1000, !args.quiet);
+  request.progress = [&](std::int64_t done, std::int64_t) { progress.update(done); };
   preload.join();
   auto drawn = media::renderStill(loaded.value(), request);
+  progress.finish();
   if (!drawn) return fail(drawn);
   const media::StillResult& still = drawn.value();
   if (args.verbose) std::cerr << "still: OpenGL " << still.opengl << "\n";

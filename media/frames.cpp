@@ -36,7 +36,8 @@ render::Framing framingOf(const sim::Telemetry& start, const render::BodyPoints&
 }
 
 render::Framing framingOfRun(const sim::Model& model, const render::BodyPoints& points,
-                             const std::function<bool()>& cancelled) {
+                             const std::function<bool()>& cancelled,
+                             const std::function<void(double)>& reached) {
   sim::Rollout run(model);
   const sim::Telemetry start = run.sampleAt(0);
   const render::Framing near = framingOf(start, points);
@@ -44,6 +45,7 @@ render::Framing framingOfRun(const sim::Model& model, const render::BodyPoints& 
   double wander = 0;  // m: the CM's largest distance from where it started, across the floor
   sim::sampleRun(run, 100, [&](const sim::Telemetry& s) {
     if (cancelled && cancelled()) run.requestStop();
+    if (reached) reached(s.t);
     low = low.cwiseMin(s.x_world.head<2>());
     high = high.cwiseMax(s.x_world.head<2>());
     wander = std::max(wander, (s.x_world - start.x_world).head<2>().norm());

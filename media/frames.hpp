@@ -22,8 +22,9 @@ render::Framing framingOf(const sim::Telemetry& start, const render::BodyPoints&
 /// further than that quarter (a body sliding on a slippery floor), the sphere holds the path of
 /// the body over the run instead (issue 26: a body spun −50 rad/s on friction 0.02 slid 10 cm,
 /// off the frame of the fixed views). Runs `model` to its end, sampling every 10 ms, or until
-/// `cancelled` (when given) says to stop.
+/// `cancelled` (when given) says to stop; `reached` (when given) hears each sample's time.
 render::Framing framingOfRun(const sim::Model& model, const render::BodyPoints& points,
-                             const std::function<bool()>& cancelled = {});
+                             const std::function<bool()>& cancelled = {},
+                             const std::function<void(double)>& reached = {});
 
 }  // namespace media

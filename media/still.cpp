@@ -7,6 +7,7 @@
 #include "media/spin_history.hpp"
 #include "media/video_plan.hpp"
 #include "render/renderer.hpp"
+#include "sim/compile.hpp"
 #include "sim/rollout.hpp"
 #include "util/format.hpp"
 
@@ -32,6 +33,12 @@ rb::Result<StillResult> renderStill(const tasks::LoadedScene& loaded, const Stil
                              " s); a still is one of its frames: choose an earlier time"};
   }
   if (!planned) return planned.error();
+  // The same for the step count: the scene's run is within sim::kMaxSteps, 1e11 (compile), the run
+  // on to t may not be (1e9 s at 0.5 ms would integrate for weeks).
+  if (model.dt > 0 && model.duration / model.dt > sim::kMaxSteps)
+    return rb::Error{"", "--t: " + rb::show(request.t) + " s at simulation.dt " +
+                             rb::show(model.dt) +
+                             " s is more than 1e11 steps to run: choose an earlier time"};
   const VideoPlan& plan = planned.value();
   StillResult result;
   result.view = plan.view;
@@ -45,19 +52,37 @@ rb::Result<StillResult> renderStill(const tasks::LoadedScene& loaded, const Stil
   if (!created) return rb::Error{"", "still: " + created.error().text()};
   result.opengl = created.value()->description();
   render::Renderer& renderer = *created.value();
-  // Run to the still's time, keeping the spin for the inset as the video would have.
+  // Progress in thousandths of the simulated time of both runs (to t, then the framing's).
+  const double work = request.t + model.duration;
+  const auto report = [&](double simulated) {
+    if (request.progress && work > 0)
+      request.progress(static_cast<std::int64_t>(1000 * std::min(1.0, simulated / work)), 1000);
+  };
+  // Run to the still's time, keeping the spin for the inset as the video would have (in
+  // slices, to show progress: the history goes on from one slice to the next unchanged).
   sim::Rollout run(model);
   SpinHistory history(model.duration, plan.width);
-  if (!history.advanceTo(run, request.t, request.cancelled) || !run.advanceTo(request.t)) {
+  constexpr int kSlices = 200;
+  bool ran = true;
+  for (int k = 1; k <= kSlices && ran; ++k) {
+    const double slice = k == kSlices ? request.t : request.t * k / kSlices;
+    ran = history.advanceTo(run, slice, request.cancelled);
+    report(slice);
+  }
+  const auto stopped = [&] {
     result.outcome = tasks::outcomeOf(run.summary());
     if (result.outcome.ending == tasks::Ending::Completed)
       result.outcome.ending = tasks::Ending::Interrupted;
     return result;
-  }
+  };
+  if (!ran || !run.advanceTo(request.t)) return stopped();
   const sim::Telemetry sample = run.sampleAt(request.t);
   render::FrameInput frame = frameOf(sample);
   // The video's framing: of the run to the scene's end (or to t, when past it).
-  frame.framing = framingOfRun(model, points, request.cancelled);
+  frame.framing =
+      framingOfRun(model, points, request.cancelled, [&](double t) { report(request.t + t); });
+  // Stopped while framing: the framing is of part of the run, so no still.
+  if (request.cancelled && request.cancelled()) return stopped();
   frame.history = history.with(sample);
   renderer.draw(frame, result.image);
   result.outcome.t = request.t;

@@ -2,6 +2,7 @@
 // still() returns as an array.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <string>
 
@@ -20,6 +21,9 @@ struct StillRequest {
   bool transparent = false;  ///< alpha: no floor, no background, no read-outs
   render::Backend backend = render::Backend::Auto;
   std::function<bool()> cancelled;  ///< asked as the run goes: true stops (may be empty)
+  /// Called as the runs go (the framing's over the whole run, then the one to t), with the
+  /// thousandths done and 1000 (may be empty).
+  std::function<void(std::int64_t, std::int64_t)> progress;
 };
 
 struct StillResult {

@@ -143,7 +143,7 @@ std::optional<rb::Error> checkSimulation(const SimulationSpec& sim) {
         std::string(rb::nameOf(integrator)) +
             " takes a fixed step: give simulation.dt (or --dt), or use dopri5 with the tolerance"};
   if (auto e = needPositive("simulation.duration", sim.duration)) return e;
-  if (has_dt && sim.duration / sim.dt > 1e11)
+  if (has_dt && sim.duration / sim.dt > kMaxSteps)
     return rb::Error{"simulation.dt",
                      show(sim.dt) + " s over simulation.duration " + show(sim.duration) +
                          " s makes more than 1e11 steps: shorten the run or "

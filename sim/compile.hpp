@@ -15,6 +15,10 @@ namespace sim {
 /// Largest point-grid size compile() accepts (bounding-box estimate), points.
 inline constexpr double kMaxGridPoints = 2.0e8;
 
+/// Most fixed steps a run may take (simulation.duration / simulation.dt): about a day of
+/// integrating at 1 µs a step, far past any run a toy's seconds need; more is a typo.
+inline constexpr double kMaxSteps = 1e11;
+
 /// Where the scene's body takes its mass properties from: body.mass_properties, or when the
 /// scene leaves it out the grid's sums for contact.model points (the seed's rule, so its scenes
 /// reproduce its report) and the continuum's integrals for the others.

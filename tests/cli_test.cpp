@@ -1606,3 +1606,42 @@ TEST(Cli, AStillTooLateNamesT) {
   EXPECT_EQ(lines(r.err), 1) << r.err;
   EXPECT_FALSE(fs::exists(png));
 }
+
+// Within the frame limit but past the step limit: a still of a fixed-step scene at 1e9 s with
+// playback 1e5 (10 million frames reach 3.3e10 s) would integrate 1e13 steps at Kane &
+// Levinson's 1e-4 s, for weeks, with nothing on the screen (a new user's trial). It is refused
+// at once, naming --t and the scene's step. Run under `timeout 60`: without the check the test
+// fails by the timeout's status rather than hanging the suite.
+TEST(Cli, AStillPastTheStepLimitNamesT) {
+  const fs::path png = tempFile("steps.png");
+  const fs::path err = tempFile("steps.err");
+  const std::string command = "timeout -s INT 60 " + std::string(RATTLEBACK_BIN) + " still " +
+                              scene("kane-levinson") + " --t 1e9 --playback 1e5 -o " +
+                              png.string() + " 2>" + err.string() + " </dev/null";
+  const int raw = std::system(command.c_str());
+  EXPECT_EQ(WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, 2);
+  std::ifstream in(err);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(text,
+            "--t: 1e+09 s at simulation.dt 0.0001 s is more than 1e11 steps to run: choose an "
+            "earlier time\n");
+  EXPECT_FALSE(fs::exists(png));
+}
+
+// Ctrl-C while a still frames the run (the framing runs the whole scene, here 20,000 s of Kane
+// & Levinson at 0.1 ms: a minute; the run to t = 0 is nothing) stops it with no still written,
+// as Ctrl-C during the run to t does: the framing of part of the run would place the camera
+// for a run the scene does not make.
+TEST(Cli, CtrlCWhileAStillFramesWritesNoStill) {
+  const fs::path png = tempFile("framing.png");
+  const fs::path err = tempFile("framing.err");
+  const std::string command = "timeout -s INT 2 " + std::string(RATTLEBACK_BIN) + " still " +
+                              scene("kane-levinson") + " --t 0 --duration 20000 -o " +
+                              png.string() + " 2>" + err.string() + " </dev/null";
+  const int raw = std::system(command.c_str());
+  EXPECT_NE(WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, 0);
+  std::ifstream in(err);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("interrupted; no still written"), std::string::npos) << text;
+  EXPECT_FALSE(fs::exists(png));
+}
