@@ -32,6 +32,7 @@ namespace {
 /// command line's exact text.
 struct Run {
   std::string scene;
+  std::vector<scene::KeyValue> values;  ///< put in over the scene file (with_values)
   sim::Model model;
   double rate = tasks::kDefaultRate;
   std::vector<sim::Telemetry> samples;
@@ -88,6 +89,7 @@ std::shared_ptr<Run> simulate(const LoadedScene& loaded, double rate, bool check
   if (auto ok = tasks::checkRate(rate, model.duration); !ok) raise(ok.error());
   auto run = std::make_shared<Run>();
   run->scene = loaded.value.scene.file;
+  run->values = loaded.value.scene.values;
   run->model = model;
   run->rate = rate;
   const tasks::SimulateResult result =
@@ -225,9 +227,9 @@ PYBIND11_MODULE(_core, m) {
       .def("model", [](const Run& r) { return toPython(tasks::modelJson(r.model)); })
       .def("sidecar",
            [](const Run& r) {
-             return toPython(tasks::telemetrySidecar(r.scene, r.model, r.rate, r.summary,
-                                                     static_cast<std::int64_t>(r.samples.size()),
-                                                     r.check));
+             return toPython(
+                 tasks::telemetrySidecar({r.scene, r.values}, r.model, r.rate, r.summary,
+                                         static_cast<std::int64_t>(r.samples.size()), r.check));
            })
       .def_readonly("scene", &Run::scene)
       .def_readonly("rate", &Run::rate)
@@ -236,8 +238,8 @@ PYBIND11_MODULE(_core, m) {
         {
           py::gil_scoped_release release;
           const rb::OutputNamedBy naming("to_csv");  // the way out an error line suggests
-          written =
-              tasks::writeTelemetry(path, r.scene, r.model, r.rate, r.summary, r.samples, r.check);
+          written = tasks::writeTelemetry(path, {r.scene, r.values}, r.model, r.rate, r.summary,
+                                          r.samples, r.check);
           // Listed in the folder's manifest, as the command line lists it (a failure to list
           // loses nothing: the report then places the file by its name).
           if (written)

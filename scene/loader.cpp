@@ -393,7 +393,9 @@ rb::Result<Loaded> loadWithValues(const std::string& yaml, const std::string& na
         place.rfind("--", 0) == 0 ? place + " " + kv.key + "=" + kv.yaml : place;
   }
   replaceStepSetting(root, places);
-  return loadTree(root, name, places);
+  auto loaded = loadTree(root, name, places);
+  if (loaded) loaded->values = values;
+  return loaded;
 }
 
 rb::Result<std::string> readSceneFile(const std::string& path) {

@@ -28,6 +28,13 @@ struct VideoSpec {
   double playback = 1.0;
 };
 
+/// A value for a dotted scene key ("initial.spin", "body.dents.at[1]"), as YAML flow text
+/// ("-5", "[0.5, 0.5]", "rk4").
+struct KeyValue {
+  std::string key;
+  std::string yaml;
+};
+
 /// A parsed scene and where each of its keys sits.
 struct Loaded {
   sim::SceneSpec spec;
@@ -35,6 +42,9 @@ struct Loaded {
   std::string file;                              ///< as given, for messages
   std::map<std::string, int> lines;              ///< dotted key → 1-based line
   std::map<std::string, std::string> overrides;  ///< dotted key → the option that set it
+  /// The values put in over the text (loadWithValues: --set, Python's with_values), in order:
+  /// with the file they make the scene as run (a telemetry sidecar records them).
+  std::vector<KeyValue> values;
 };
 
 /// Errors come back as rb::Error with an empty key and one line, ready to print:
@@ -60,13 +70,6 @@ std::string yamlContent(const std::string& text);
 std::string describe(const Loaded& loaded, const rb::Error& error);
 /// The same line as an error whose `where` holds the file (or option), line and key.
 rb::Error locate(const Loaded& loaded, const rb::Error& error);
-
-/// A value for a dotted scene key ("initial.spin", "body.dents.at[1]"), as YAML flow text
-/// ("-5", "[0.5, 0.5]", "rk4").
-struct KeyValue {
-  std::string key;
-  std::string yaml;
-};
 
 /// As loadString, with each value put at its key first; an error in one of them names `place`
 /// ("with_values") and the key.

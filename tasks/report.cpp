@@ -589,13 +589,24 @@ bool sceneChangedSince(const nlohmann::json& sidecar, const std::string& scene_p
   return std::abs(mass.get<double>() - model.body->mass) > 1e-9 * std::abs(model.body->mass);
 }
 
-// The model of the scene a telemetry sidecar names, when that scene can be read and still
-// describes the run (sceneChangedSince); none otherwise.
+// The model of the scene a telemetry sidecar names, with the values the run put in over it
+// (scene_values: --set, Python's with_values), when that scene can be read and still describes
+// the run (sceneChangedSince); none otherwise.
 std::optional<sim::Model> runModelOf(const nlohmann::json& sidecar, const fs::path& dir) {
   if (field(sidecar, "command") != "simulate") return std::nullopt;
   const auto scene_path = sceneOf(sidecar, dir);
   if (!scene_path) return std::nullopt;
-  auto loaded = scene::loadFile(*scene_path);
+  std::vector<scene::KeyValue> values;
+  const nlohmann::json& put = field(sidecar, "scene_values");
+  if (put.is_array())
+    for (const nlohmann::json& kv : put) {
+      const nlohmann::json &key = field(kv, "key"), &value = field(kv, "value");
+      if (!key.is_string() || !value.is_string()) return std::nullopt;  // not a sidecar of ours
+      values.push_back({key.get<std::string>(), value.get<std::string>()});
+    }
+  const auto text = scene::readSceneFile(*scene_path);
+  if (!text) return std::nullopt;
+  auto loaded = scene::loadWithValues(text.value(), *scene_path, values, "scene_values");
   if (!loaded) return std::nullopt;
   auto model = scene::loadModel(loaded.value());
   if (!model || sceneChangedSince(sidecar, *scene_path, model.value())) return std::nullopt;

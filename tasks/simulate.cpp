@@ -135,21 +135,26 @@ SimulateResult simulate(const sim::Model& model, const SimulateOptions& options)
   return result;
 }
 
-nlohmann::json telemetrySidecar(const std::string& scene, const sim::Model& model, double rate,
+nlohmann::json telemetrySidecar(const RunScene& scene, const sim::Model& model, double rate,
                                 const sim::RunSummary& run, std::int64_t rows,
                                 const nlohmann::json& check) {
   nlohmann::json j;
   j["program"] = "rattleback " RATTLEBACK_VERSION;
   j["command"] = "simulate";
-  j["scene"] = scene;
+  j["scene"] = scene.file;
   // Absolute too, so that `report` run from another folder finds the body for its 3D player.
   std::error_code ec;
-  const std::filesystem::path absolute = std::filesystem::absolute(scene, ec);
-  j["scene_path"] = ec ? scene : absolute.lexically_normal().string();
+  const std::filesystem::path absolute = std::filesystem::absolute(scene.file, ec);
+  j["scene_path"] = ec ? scene.file : absolute.lexically_normal().string();
   // The scene's content as it was run, so that `report` can tell when the file has been edited
   // since and its 3D player would draw another body than the one simulated.
-  const std::string fingerprint = sceneFingerprint(scene);
+  const std::string fingerprint = sceneFingerprint(scene.file);
   j["scene_fingerprint"] = fingerprint.empty() ? nlohmann::json() : nlohmann::json(fingerprint);
+  // The values put in over the file, in order ({"key", "value": YAML text}): the file and these
+  // make the scene as run.
+  j["scene_values"] = nlohmann::json::array();
+  for (const scene::KeyValue& kv : scene.values)
+    j["scene_values"].push_back({{"key", kv.key}, {"value", kv.yaml}});
   j["columns"] = columnsJson(kColumns);
   j["rows"] = rows;
   j["rate_hz"] = rate;
@@ -194,7 +199,7 @@ void TelemetryWriter::writeFormatted(std::size_t keep) {
   }
 }
 
-rb::Status TelemetryWriter::commit(const std::string& scene, const sim::Model& model, double rate,
+rb::Status TelemetryWriter::commit(const RunScene& scene, const sim::Model& model, double rate,
                                    const sim::RunSummary& run, const nlohmann::json& check) {
   handOff();
   writeFormatted(0);
@@ -204,8 +209,8 @@ rb::Status TelemetryWriter::commit(const std::string& scene, const sim::Model& m
   return meta_ ? meta_->commit() : rb::Status();
 }
 
-rb::Status writeTelemetry(const std::string& path, const std::string& scene,
-                          const sim::Model& model, double rate, const sim::RunSummary& run,
+rb::Status writeTelemetry(const std::string& path, const RunScene& scene, const sim::Model& model,
+                          double rate, const sim::RunSummary& run,
                           const std::vector<sim::Telemetry>& samples, const nlohmann::json& check) {
   auto writer = TelemetryWriter::open(path);
   if (!writer) return writer.error();

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/loader.hpp"
 #include "sim/model.hpp"
 #include "sim/rollout.hpp"
 #include "tasks/outcome.hpp"
@@ -58,9 +59,17 @@ struct SimulateResult {
 /// Runs `model` to its end (or a stop), sampling at t_k = k / rate and at the end.
 SimulateResult simulate(const sim::Model& model, const SimulateOptions& options);
 
+/// The scene a run was made of, as its sidecar records it: the file as named, and the values put
+/// in over it (--set, Python's with_values; scene::Loaded::values), which `report` puts in
+/// again to draw the body that ran.
+struct RunScene {
+  std::string file;
+  std::vector<scene::KeyValue> values;
+};
+
 /// The sidecar X.csv.json: what the CSV is (program, scene, columns and units, the model) and
 /// what the run found.
-nlohmann::json telemetrySidecar(const std::string& scene, const sim::Model& model, double rate,
+nlohmann::json telemetrySidecar(const RunScene& scene, const sim::Model& model, double rate,
                                 const sim::RunSummary& run, std::int64_t rows,
                                 const nlohmann::json& check = nullptr);
 
@@ -74,7 +83,7 @@ class TelemetryWriter {
   std::int64_t rows() const { return rows_; }
   /// Writes the sidecar and puts both files in place.
   /// `check`: the sidecar's "check" (checkJson), or null.
-  rb::Status commit(const std::string& scene, const sim::Model& model, double rate,
+  rb::Status commit(const RunScene& scene, const sim::Model& model, double rate,
                     const sim::RunSummary& run, const nlohmann::json& check = nullptr);
 
  private:
@@ -96,8 +105,8 @@ class TelemetryWriter {
 
 /// Writes the samples as CSV at `path` and the sidecar at `path`.json, each whole or not at all
 /// (no sidecar for a device such as /dev/stdout).
-rb::Status writeTelemetry(const std::string& path, const std::string& scene,
-                          const sim::Model& model, double rate, const sim::RunSummary& run,
+rb::Status writeTelemetry(const std::string& path, const RunScene& scene, const sim::Model& model,
+                          double rate, const sim::RunSummary& run,
                           const std::vector<sim::Telemetry>& samples,
                           const nlohmann::json& check = nullptr);
 

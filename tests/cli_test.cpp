@@ -1192,6 +1192,37 @@ TEST(Report, AnEditedSceneGetsNoPlayer) {
   }
 }
 
+// A run made with --set values is replayed on the body those values make, not on the file's: the
+// sidecar records them (scene_values) and `report` puts them in again, for the player and the
+// theory alike. It drew the file's body, a = 1.0, under a run of a = 1.2 (a new user's trial).
+// The page and the player's data are the same as for a file with the value written in.
+TEST(Report, ARunWithSetValuesIsReplayedOnItsBody) {
+  std::string pages[2], players[2];
+  for (int written = 0; written < 2; ++written) {
+    const fs::path dir = emptyDir(written ? "set-written" : "set-given");
+    const fs::path yaml = dir / "edit.yaml";
+    std::string text = readText(scene("rattleback"));
+    if (written) text.replace(text.find("a: 1.0, p: 0.5"), 14, "a: 1.2, p: 0.5");
+    std::ofstream(yaml) << text;
+    const std::string csv = (dir / "edit.csv").string();
+    const std::string set = written ? "" : " --set body.paraboloid.a=1.2";
+    ASSERT_EQ(rattleback("simulate " + yaml.string() + set + " --duration 0.2 -q -o " + csv).status,
+              0);
+    const nlohmann::json sidecar = nlohmann::json::parse(readText(csv + ".json"));
+    EXPECT_EQ(sidecar["scene_values"],
+              written ? nlohmann::json::array()
+                      : nlohmann::json::parse(R"([{"key": "body.paraboloid.a", "value": "1.2"}])"));
+    const Result r = rattleback("report " + dir.string() + " -q");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    pages[written] = readText(dir / "index.html");
+    if (fs::exists(dir / "edit.player.js")) players[written] = readText(dir / "edit.player.js");
+  }
+  EXPECT_NE(pages[0].find("preferred direction"), std::string::npos);  // the theory is there
+  EXPECT_EQ(pages[0], pages[1]);
+  EXPECT_EQ(players[0], players[1]);
+}
+
 // A folder with a run but no analyze --json (getting-started's commands): the page computes
 // the theory of the run's scene, at the run's spin, and shows it as analyze's JSON would; the
 // videos' captions then carry the run's measured line. It had left the predicted column empty

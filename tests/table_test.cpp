@@ -142,7 +142,7 @@ TEST(Numbers, AChunkedCsvIsTheRowsInOrder) {
   ASSERT_EQ(run.samples.size(), 10001u);
   const std::string path =
       (std::filesystem::temp_directory_path() / "rattleback-chunked.csv").string();
-  ASSERT_TRUE(tasks::writeTelemetry(path, "s.yaml", model, 1e5, run.summary, run.samples));
+  ASSERT_TRUE(tasks::writeTelemetry(path, {"s.yaml", {}}, model, 1e5, run.summary, run.samples));
   std::ostringstream expected;
   expected << tasks::telemetryHeader();
   for (const sim::Telemetry& s : run.samples) tasks::writeTelemetryRow(expected, s);

@@ -38,6 +38,24 @@ def test_the_csv_is_the_command_lines_text(tmp_path, name, duration, rate):
     assert a == b
 
 
+def test_values_put_in_are_the_command_lines_set(tmp_path):
+    """A scene with values put in from Python writes the CSV and sidecar that --set writes,
+    the values listed in the sidecar's scene_values (report puts them in again to draw the body
+    that ran)."""
+    ours, theirs = tmp_path / "py.csv", tmp_path / "cli.csv"
+    scene = rb.Scene.from_file(scene_path("rattleback.yaml")).with_values({"body.paraboloid.a": 1.2})
+    rb.simulate(scene, duration=0.3, rate=100).to_csv(ours)
+    cli("simulate", scene_path("rattleback.yaml"), "--set", "body.paraboloid.a=1.2", "--duration",
+        "0.3", "--rate", "100", "-q", "-o", str(theirs))
+    assert ours.read_text() == theirs.read_text()
+    a = json.loads((tmp_path / "py.csv.json").read_text())
+    b = json.loads((tmp_path / "cli.csv.json").read_text())
+    for side in (a, b):
+        side["result"].pop("wall_s")
+    assert a == b
+    assert a["scene_values"] == [{"key": "body.paraboloid.a", "value": "1.2"}]
+
+
 def test_the_arrays_are_the_csv_columns(tmp_path, default_scene):
     run = rb.simulate(default_scene, duration=1.0)
     run.to_csv(tmp_path / "r.csv")
