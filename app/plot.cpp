@@ -273,23 +273,69 @@ std::string ticLabel(const std::string& value) {
   return out;
 }
 
+// The labels of an axis's values: each number with the fewest significant digits that keep all
+// the axis's values apart and each within 1 % of itself, in %g's form with the exponent's zeros
+// and plus dropped ("3.16e-7"), or as written where that is no longer: a log axis's values come
+// as 3.16227766017e-07, 18 characters that had to be turned and ran into the axis title (a new
+// user's trial). Text that is not a number stays as it is.
+std::vector<std::string> axisLabels(const std::vector<std::string>& values) {
+  std::vector<std::optional<double>> numbers;
+  for (const std::string& v : values) {
+    char* end = nullptr;
+    const double x = std::strtod(v.c_str(), &end);
+    numbers.push_back(!v.empty() && end == v.c_str() + v.size() && std::isfinite(x)
+                          ? std::optional(x)
+                          : std::nullopt);
+  }
+  auto shortest = [](double x, int digits) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.*g", digits, x);
+    std::string s = text;
+    const std::size_t e = s.find('e');
+    if (e == std::string::npos) return s;
+    std::string exponent = s.substr(e + 1);
+    const bool negative = exponent[0] == '-';
+    exponent.erase(0, exponent.find_first_not_of("+-0"));
+    return s.substr(0, e + 1) + (negative ? "-" : "") + (exponent.empty() ? "0" : exponent);
+  };
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::vector<std::string> labels;
+    bool close = true;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (!numbers[i]) {
+        labels.push_back(values[i]);
+        continue;
+      }
+      // As written where that is no longer ("-10", not "-1e1").
+      const std::string made = shortest(*numbers[i], digits);
+      labels.push_back(values[i].size() <= made.size() ? values[i] : made);
+      const double shown = std::strtod(labels.back().c_str(), nullptr);
+      close = close && std::abs(shown - *numbers[i]) <= 0.01 * std::abs(*numbers[i]);
+    }
+    std::vector<std::string> sorted = labels;
+    std::sort(sorted.begin(), sorted.end());
+    if (close && std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end()) return labels;
+  }
+  return values;
+}
+
 }  // namespace
 
 void writeHeatmapScript(std::ostream& script, const Heatmap& map, const fs::path& work,
                         const fs::path& temp_png, int width, int height) {
   const std::size_t nx = map.x_values.size(), ny = map.y_values.size();
-  // At most about a dozen labels on an axis: every k-th value.
+  // At most about a dozen labels on an axis: every k-th value, each as axisLabels gives it.
   auto shown = [](const std::vector<std::string>& values) {
     std::vector<std::pair<std::string, std::size_t>> tics;
+    const std::vector<std::string> labels = axisLabels(values);
     const std::size_t every = std::max<std::size_t>(1, (values.size() + 11) / 12);
-    for (std::size_t i = 0; i < values.size(); i += every)
-      tics.emplace_back(ticLabel(values[i]), i);
+    for (std::size_t i = 0; i < values.size(); i += every) tics.emplace_back(labels[i], i);
     return tics;
   };
   auto list = [](const std::vector<std::pair<std::string, std::size_t>>& tics) {
     std::string text;
     for (const auto& [label, i] : tics)
-      text += (text.empty() ? "" : ", ") + quoted(label) + " " + std::to_string(i);
+      text += (text.empty() ? "" : ", ") + quoted(ticLabel(label)) + " " + std::to_string(i);
     return "(" + text + ")";
   };
   // The x labels level when each fits its column (10-point DejaVu Sans: about 7 pixels a
@@ -297,7 +343,7 @@ void writeHeatmapScript(std::ostream& script, const Heatmap& map, const fs::path
   // run into each other.
   const auto x_tics = shown(map.x_values);
   std::size_t longest = 0;
-  for (const auto& tic : x_tics) longest = std::max(longest, map.x_values[tic.second].size());
+  for (const auto& tic : x_tics) longest = std::max(longest, tic.first.size());
   const double column = 0.75 * width / std::max<std::size_t>(1, x_tics.size());
   const bool rotate = 7.0 * static_cast<double>(longest) + 8.0 > column;
   script
@@ -315,9 +361,12 @@ void writeHeatmapScript(std::ostream& script, const Heatmap& map, const fs::path
       << "set palette defined (0 '#440154', 1 '#3b528b', 2 '#21918c', 3 '#5ec962', 4 '#fde725')\n"
       << "set object 1 rectangle from graph 0,0 to graph 1,1 behind fc rgb '#c8c8c8' fs solid\n";
   // The note on a line of its own under the axis title, centred: the bottom margin grows by
-  // two lines to hold it.
+  // two lines to hold it, and by the turned labels' depth (a 30° turn drops a label by half its
+  // length: 3.5 pixels a character, against lines of about 15).
+  const int label_lines =
+      rotate ? static_cast<int>(std::ceil(3.5 * static_cast<double>(longest) / 15.0)) : 1;
   if (!map.note.empty())
-    script << "set bmargin " << (rotate ? 7 : 6) << "\n"
+    script << "set bmargin " << 5 + label_lines << "\n"
            << "set label 1 " << quoted(map.note) << " at screen 0.5, character 1 center\n";
   bool any = false;
   for (double v : map.values) any = any || std::isfinite(v);

@@ -834,16 +834,38 @@ TEST(Plot, TheHeatmapsLabelsShowTheirMinusSignsAndTheNoteSitsClear) {
   EXPECT_EQ(text.find("rotate"), std::string::npos) << text;
   EXPECT_NE(text.find("set bmargin 6\n"), std::string::npos) << text;
   EXPECT_NE(text.find(" at screen 0.5, character 1 center\n"), std::string::npos) << text;
-  // Long labels, many of them: turned, and still with their minus signs.
+  // Many labels: turned, and still with their minus signs. A log axis's values as a sweep
+  // writes them (3.16227766017e-07: to round trip) are labelled with the fewest digits that
+  // keep them apart and within 1 % ("3.16e−7"; "1e−7", no exponent's zeros): 18 characters
+  // turned ran into the axis title and the note (a new user's trial), the bottom margin
+  // growing by the turned labels' depth.
   map.x_values.clear();
-  for (int i = 0; i < 12; ++i) map.x_values.push_back("-1.2345678e-0" + std::to_string(i % 10));
+  for (int i = 0; i < 12; ++i) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.12g", -std::pow(10.0, -7 + 0.25 * i));
+    map.x_values.push_back(text);
+  }
+  ASSERT_EQ(map.x_values[2], "-3.16227766017e-07");
   map.values.assign(map.x_values.size() * map.y_values.size(), 1.0);
   std::ostringstream turned;
   app::writeHeatmapScript(turned, map, "/w", "/w/x.png", 900, 600);
-  EXPECT_NE(turned.str().find(" rotate by -30\n"), std::string::npos) << turned.str();
-  EXPECT_NE(turned.str().find("\"" + minus + "1.2345678e" + minus + "00\" 0"), std::string::npos)
-      << turned.str();
-  EXPECT_NE(turned.str().find("set bmargin 7\n"), std::string::npos) << turned.str();
+  const std::string t = turned.str();
+  EXPECT_NE(t.find(" rotate by -30\n"), std::string::npos) << t;
+  EXPECT_NE(t.find("(\"" + minus + "1e" + minus + "7\" 0, \"" + minus + "1.78e" + minus +
+                   "7\" 1, \"" + minus + "3.16e" + minus + "7\" 2,"),
+            std::string::npos)
+      << t;
+  EXPECT_NE(t.find("\"" + minus + "5.62e" + minus + "5\" 11)"), std::string::npos) << t;
+  EXPECT_NE(t.find("set bmargin 7\n"), std::string::npos) << t;
+  // Labels as written where they are short and apart; text that is no number as it is.
+  map.x_values = {"0.05", "0.1", "0.15", "0.2"};
+  map.y_values = {"rk4", "dopri5"};
+  map.values.assign(map.x_values.size() * map.y_values.size(), 1.0);
+  std::ostringstream plain;
+  app::writeHeatmapScript(plain, map, "/w", "/w/x.png", 900, 600);
+  EXPECT_NE(plain.str().find("(\"0.05\" 0, \"0.1\" 1, \"0.15\" 2, \"0.2\" 3)"), std::string::npos)
+      << plain.str();
+  EXPECT_NE(plain.str().find("(\"rk4\" 0, \"dopri5\" 1)"), std::string::npos) << plain.str();
 }
 
 TEST(Outputs, TheTelemetryHoldsTheScenesNumbers) {
