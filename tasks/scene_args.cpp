@@ -63,14 +63,16 @@ rb::Result<LoadedScene> applyOverrides(scene::Loaded scene, const Overrides& o) 
   if (o.fps) {
     char text[64];
     std::snprintf(text, sizeof text, "%g", *o.fps);
+    // Placed as the other overrides' errors are (the option, no line, the key it sets), so that
+    // Python raises SceneError for a bad fps as for a bad view or size.
+    auto refused = [&](const std::string& why) {
+      return rb::Error{"", name("fps") + ": " + why, rb::Error::Where{name("fps"), 0, "video.fps"}};
+    };
     if (*o.fps != std::floor(*o.fps))  // (NaN too)
-      return rb::Error{"", name("fps") +
-                               ": must be a whole number of frames per second "
-                               "(24, 25, 30, 60 …), not " +
-                               text};
+      return refused("must be a whole number of frames per second (24, 25, 30, 60 …), not " +
+                     std::string(text));
     if (*o.fps < 1 || *o.fps > scene::kMaxFps)
-      return rb::Error{"", name("fps") + ": must be within 1 … " + std::to_string(scene::kMaxFps) +
-                               ", not " + text};
+      return refused("must be within 1 … " + std::to_string(scene::kMaxFps) + ", not " + text);
     scene.video.fps = static_cast<int>(*o.fps);
     scene.overrides["video.fps"] = name("fps");
   }

@@ -113,6 +113,21 @@ def test_a_bad_video_argument_is_a_scene_error_naming_the_argument():
     assert caught.value.key == "video.view"
 
 
+@pytest.mark.parametrize("fps, message", [
+    (29.97, "argument fps: must be a whole number of frames per second (24, 25, 30, 60 …), not 29.97"),
+    (0, "argument fps: must be within 1 … 240, not 0"),
+])
+def test_a_bad_fps_is_a_scene_error_as_the_other_video_arguments(tmp_path, fps, message):
+    # It was a plain ValueError, while a bad view, size or playback is a SceneError (as
+    # docs/python.md lists fps among them).
+    scene = rb.Scene.from_file(scene_path("rattleback.yaml"))
+    with pytest.raises(rb.SceneError) as caught:
+        rb.render(scene, tmp_path / "x.mp4", fps=fps, duration=0.1, size=(64, 48))
+    assert str(caught.value) == message
+    assert (caught.value.file, caught.value.line, caught.value.key) == ("argument fps", None, "video.fps")
+    assert not (tmp_path / "x.mp4").exists()
+
+
 def test_a_dict_has_no_line():
     with pytest.raises(rb.SceneError) as caught:
         rb.Scene.from_dict(DICT_SCENE | {"gravity": -9.81})
