@@ -30,6 +30,7 @@ except ImportError:  # the package's files laid out (at configure time), its mod
         f"rattleback's compiled modules are not built in {_here}: build them with "
         "`bash scripts/build.sh rattleback_python` (scripts/run.sh builds only the command)"
     ) from None
+from ._args import checked, refuse
 from ._errors import RunStopped, SceneError
 
 __all__ = [
@@ -48,7 +49,7 @@ def _yaml_value(value: Any) -> str:
         value = value.item()
     if isinstance(value, np.ndarray):
         value = value.tolist()
-    return json.dumps(value)
+    return json.dumps(value, default=_yaml_value_default)
 
 
 class Scene:
@@ -66,17 +67,20 @@ class Scene:
         self._loaded = _core.load(yaml, name, list(self._values), {})
 
     @classmethod
+    @checked
     def from_file(cls, path: Union[str, os.PathLike]) -> "Scene":
         """The scene in a YAML file (``scenes/rattleback.yaml``)."""
         path = os.fspath(path)
         return cls(_core.read_scene_file(path), path)
 
     @classmethod
+    @checked
     def from_yaml(cls, text: str, name: str = "<yaml>") -> "Scene":
         """A scene written as YAML text; ``name`` stands for the file in messages."""
         return cls(text, name)
 
     @classmethod
+    @checked
     def from_dict(cls, scene: Mapping[str, Any], name: str = "<dict>") -> "Scene":
         """A scene as nested dicts, keyed as the file is (``{"body": {...}, ...}``). Its errors
         name ``name`` and the key; ``line`` is None (a dict has no lines)."""
@@ -93,6 +97,7 @@ class Scene:
                 e.line = None
             raise
 
+    @checked
     def with_values(self, values: Mapping[str, Any]) -> "Scene":
         """A copy with values put at dotted keys: ``{"initial.spin": -5,
         "contact.air_drag": 1e-5, "body.dents.at[0]": 0.3}``. A wrong key or value raises
@@ -127,6 +132,8 @@ class Scene:
 
     def _load(self, **overrides: Any):
         overrides = {k: v for k, v in overrides.items() if v is not None}
+        if "size" in overrides:  # NumPy's integers too, as the ints the library casts to
+            overrides["size"] = [int(side) for side in overrides["size"]]
         if not overrides:
             return self._loaded
         return _core.load(self._yaml, self._name, list(self._values), overrides)
@@ -151,7 +158,7 @@ def _scene(scene: SceneLike) -> Scene:
         return Scene.from_dict(scene)
     if isinstance(scene, (str, os.PathLike)):
         return Scene.from_file(scene)
-    raise TypeError(f"scene: a Scene, a path or a dict, not {type(scene).__name__}")
+    refuse("scene", scene)
 
 
 class Run:
@@ -250,6 +257,7 @@ class Run:
         import pandas as pd
         return pd.DataFrame(self._columns)
 
+    @checked
     def to_csv(self, path: Union[str, os.PathLike]) -> None:
         """Writes the command line's exact CSV at ``path`` and its sidecar at
         ``path + ".json"``, each whole or not at all."""
@@ -261,6 +269,7 @@ class Run:
         return f"<Run {self.scene}: {len(self)} samples, {rev}>"
 
 
+@checked
 def simulate(scene: SceneLike, *, rate: float = _core.default_rate,
              duration: Optional[float] = None, spin: Optional[float] = None,
              dt: Optional[float] = None, tolerance: Optional[float] = None,
@@ -289,6 +298,7 @@ def simulate(scene: SceneLike, *, rate: float = _core.default_rate,
     return Run(_core.simulate(loaded, float(rate), bool(check)))
 
 
+@checked
 def analyze(scene: SceneLike, *, spin: Optional[float] = None) -> dict:
     """Mass properties, rest, contact limits, the linearised theory and the preferred
     direction: the dict ``rattleback analyze --json`` prints. ``spin`` (rad/s) is where the
@@ -319,6 +329,7 @@ class Image:
     def _repr_png_(self) -> bytes:
         return self.png()
 
+    @checked
     def save(self, path: Union[str, os.PathLike]) -> None:
         """Writes the image as PNG, whole or not at all (the command line's writer)."""
         from . import _draw
@@ -328,6 +339,7 @@ class Image:
         return f"<Image {self.width}x{self.height}>"
 
 
+@checked
 def still(scene: SceneLike, t: float = 0.0, *, view: Optional[str] = None,
           size: Optional[tuple[int, int]] = None, spin: Optional[float] = None,
           readouts: bool = True, transparent: bool = False, backend: str = "auto") -> Image:
@@ -346,6 +358,7 @@ def still(scene: SceneLike, t: float = 0.0, *, view: Optional[str] = None,
     return Image(_draw.still(loaded, float(t), readouts, transparent, backend))
 
 
+@checked
 def render(scene: SceneLike, output: Union[str, os.PathLike, None] = None, *,
            both: bool = False, fps: Optional[int] = None, size: Optional[tuple[int, int]] = None,
            view: Optional[str] = None, playback: Optional[float] = None,

@@ -8,6 +8,7 @@ from typing import Union
 import numpy as np
 
 from . import _core
+from ._args import checked
 
 
 def _numbers_or_text(values: list) -> np.ndarray:
@@ -57,6 +58,7 @@ class SweepTable:
         import pandas as pd
         return pd.DataFrame(self._columns)
 
+    @checked
     def to_csv(self, path: Union[str, os.PathLike]) -> None:
         """Writes the command line's table and sidecar (``path + ".json"``), each whole."""
         self._table.to_csv(os.fspath(path))
@@ -66,6 +68,7 @@ class SweepTable:
         return f"<SweepTable {self._table.file}: {len(self)} runs, {ok} ok>"
 
 
+@checked
 def sweep(path: Union[str, os.PathLike], *, jobs: int = 0) -> SweepTable:
     """Runs every scene of the sweep file at ``path`` (docs/scenes.md "Sweep files": a base scene and axes
     of values) on ``jobs`` threads (0: all cores), as ``rattleback sweep`` does.

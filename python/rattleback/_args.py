@@ -1,0 +1,169 @@
+"""The types the public functions' arguments take, checked in one place before any call.
+
+A value of the wrong type raises TypeError naming the argument and what it takes
+(``argument duration: takes a number (s), not '3' (str)``); without this the compiled modules
+raised pybind11's "Unable to cast Python instance to C++ type", naming neither. A value of the
+right type that the scene cannot use (``duration=-3``) is left to the library, whose
+:class:`SceneError` names the scene key, as the command line's message does.
+"""
+
+from __future__ import annotations
+
+import functools
+import inspect
+import numbers
+import os
+from collections.abc import Mapping
+from typing import Any, Callable
+
+import numpy as np
+
+
+# Each test first looks at the value's exact type, the common case, for the per-call cost (a
+# short simulate takes tens of µs; numbers.Real's isinstance alone takes ~0.3 µs).
+def _number(value: Any) -> bool:
+    if type(value) in (float, int):
+        return True
+    # A bool is an int to Python, but True as a spin (1 rad/s) or a step is a flag given to the
+    # wrong argument far more often than a number; the scene file refuses `spin: true` too.
+    return isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_))
+
+
+def _whole(value: Any) -> bool:
+    if type(value) is int:
+        return True
+    return isinstance(value, numbers.Integral) and not isinstance(value, (bool, np.bool_))
+
+
+def _flag(value: Any) -> bool:
+    # Only True or False: any object is truthy, and check="no" would have run the check.
+    return value is True or value is False or isinstance(value, np.bool_)
+
+
+def _text(value: Any) -> bool:
+    return type(value) is str or isinstance(value, str)
+
+
+def _path(value: Any) -> bool:
+    return isinstance(value, (str, os.PathLike))
+
+
+def _size(value: Any) -> bool:
+    if isinstance(value, (str, bytes)):
+        return False
+    try:
+        return len(value) == 2 and all(_whole(side) for side in value)
+    except TypeError:  # no length
+        return False
+
+
+def _scene(value: Any) -> bool:
+    global _Scene
+    if _Scene is None:
+        from . import Scene as _Scene  # (the package imports this module first)
+    return (type(value) in (_Scene, str)
+            or isinstance(value, (_Scene, str, os.PathLike, Mapping)))
+
+
+_Scene = None
+
+
+def _scene_value(value: Any) -> bool:
+    """What a scene key can hold: what YAML (as JSON) writes, NumPy's scalars and arrays too."""
+    if value is None or isinstance(value, (str, bool, numbers.Real, np.generic, np.ndarray)):
+        return True
+    if isinstance(value, (list, tuple)):
+        return all(_scene_value(v) for v in value)
+    if isinstance(value, Mapping):
+        return all(isinstance(k, str) and _scene_value(v) for k, v in value.items())
+    return False
+
+
+# What each argument takes, by name: an argument means the same in every function that has it
+# (`spin` is rad/s in simulate, analyze, still and render), so a name is described once.
+_NUMBER = "a number"
+_TAKES: dict[str, tuple[Callable[[Any], bool], str]] = {
+    "scene": (_scene, "a Scene, a path or a dict"),
+    "rate": (_number, f"{_NUMBER} (samples per simulated second)"),
+    "duration": (_number, f"{_NUMBER} (s)"),
+    "spin": (_number, f"{_NUMBER} (rad/s)"),
+    "dt": (_number, f"{_NUMBER} (s)"),
+    "tolerance": (_number, _NUMBER),
+    "t": (_number, f"{_NUMBER} (s)"),
+    "playback": (_number, f"{_NUMBER} (times real time)"),
+    # A number, not a whole one: fps=29.97 is refused by the library as the other video
+    # arguments' values are, with a SceneError naming video.fps.
+    "fps": (_number, f"{_NUMBER} (frames per second)"),
+    "crf": (_whole, "a whole number"),
+    "jobs": (_whole, "a whole number"),
+    "size": (_size, "(width, height) in pixels, e.g. (640, 360)"),
+    "integrator": (_text, "a name (text), e.g. 'rk4'"),
+    "view": (_text, "a name (text), e.g. 'oblique'"),
+    "preset": (_text, "a name (text), e.g. 'veryfast'"),
+    "backend": (_text, "a name (text), e.g. 'auto'"),
+    "check": (_flag, "True or False"),
+    "both": (_flag, "True or False"),
+    "readouts": (_flag, "True or False"),
+    "transparent": (_flag, "True or False"),
+    "path": (_path, "a path (text or os.PathLike)"),
+    "output": (_path, "a path (text or os.PathLike)"),
+    "name": (_text, "text"),
+    "text": (_text, "YAML text"),
+    "values": (lambda v: isinstance(v, Mapping),
+               "a dict of dotted keys and values, e.g. {'initial.spin': -5}"),
+}
+
+
+def _shown(value: Any) -> str:
+    """The value as the message shows it: its repr, cut short, and its type."""
+    text = repr(value)
+    if len(text) > 40:
+        text = text[:37] + "..."
+    return f"{text} ({type(value).__name__})"
+
+
+def refuse(name: str, value: Any) -> None:
+    """Raises the TypeError for `value` given as argument `name`."""
+    raise TypeError(f"argument {name}: takes {_TAKES[name][1]}, not {_shown(value)}")
+
+
+def _check(name: str, value: Any) -> None:
+    test, _ = _TAKES[name]
+    if not test(value):
+        refuse(name, value)
+    if name == "values":  # and each value, named by its key
+        for key, v in value.items():
+            if not isinstance(key, str):
+                raise TypeError(f"argument values: takes dotted keys as text, not {_shown(key)}")
+            if not _scene_value(v):
+                raise TypeError(f"argument values: {key} takes a number, text, True or False, "
+                                f"a list or a dict, not {_shown(v)}")
+
+
+def checked(function: Callable) -> Callable:
+    """`function` with its arguments' types checked first, each by its name in _TAKES (a
+    function with an argument not in it fails at import, so none goes unchecked). An argument
+    whose default is None may be None; defaults are not checked."""
+    parameters = [p for p in inspect.signature(function).parameters.values()
+                  if p.name not in ("self", "cls")]
+    unknown = [p.name for p in parameters if p.name not in _TAKES]
+    if unknown:
+        raise AssertionError(f"{function.__qualname__}: no type for {', '.join(unknown)}")
+    offset = len(inspect.signature(function).parameters) - len(parameters)
+    positional = [p.name for p in parameters
+                  if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)]
+    optional = frozenset(p.name for p in parameters if p.default is None)
+    names = frozenset(p.name for p in parameters)
+
+    @functools.wraps(function)
+    def call(*args, **kwargs):
+        for name, value in zip(positional, args[offset:]):
+            if value is not None or name not in optional:
+                _check(name, value)
+        for name, value in kwargs.items():
+            # A name the function has not is left to the call itself, whose TypeError names it.
+            if name in names and (value is not None or name not in optional):
+                _check(name, value)
+        return function(*args, **kwargs)
+
+    return call
