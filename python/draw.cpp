@@ -5,6 +5,7 @@
 #include <pybind11/stl.h>
 
 #include <filesystem>
+#include <optional>
 
 #include "media/presets.hpp"
 #include "media/still.hpp"
@@ -66,8 +67,10 @@ render::Image imageOf(
   return image;
 }
 
-py::array_t<std::uint8_t> still(const LoadedScene& loaded, double t, bool readouts,
-                                bool transparent, const std::string& backend) {
+// The still drawn, and what the folder's manifest lists of it when it is saved (as `rattleback
+// still` lists its PNG): the scene's name, the view, the initial spin and t.
+py::tuple still(const LoadedScene& loaded, double t, bool readouts, bool transparent,
+                const std::string& backend) {
   media::StillRequest request;
   request.scene_name = loaded.value.scene.file;
   request.t = t;
@@ -82,7 +85,12 @@ py::array_t<std::uint8_t> still(const LoadedScene& loaded, double t, bool readou
   const media::StillResult& still = drawn.value();
   if (still.outcome.ending == tasks::Ending::Stopped)
     raiseStopped(still.outcome, request.scene_name);
-  return arrayOf(still.image, transparent);
+  py::dict listed;
+  listed["scene"] = std::filesystem::path(request.scene_name).stem().string();
+  listed["view"] = std::string(rb::nameOf(still.view));
+  listed["spin"] = loaded.value.model.initial.spin;
+  listed["t"] = t;
+  return py::make_tuple(arrayOf(still.image, transparent), listed);
 }
 
 py::list renderVideos(const LoadedScene& loaded, const std::string& output, bool both, int crf,
@@ -149,12 +157,21 @@ PYBIND11_MODULE(_draw, m) {
   m.def(
       "write_png",
       [](const std::string& path,
-         const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>& a) {
+         const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>& a,
+         const std::optional<py::dict>& still) {
         const rb::OutputNamedBy naming("save");  // Image.save: the way out an error suggests
         if (auto e = tasks::makeParentFolder(path); !e) raise(e.error());
         if (auto e = render::writePng(path, imageOf(a)); !e) raise(e.error());
+        // A still of a scene is listed in the folder's manifest, so that the report shows it
+        // under Stills with its view, time and spin (a failure to list loses nothing: the
+        // report then places the file by its name). An image made from an array is not.
+        if (still)
+          (void)tasks::recordOutputs(
+              {{path, tasks::OutputKind::Still, (*still)["scene"].cast<std::string>(),
+                (*still)["view"].cast<std::string>(), (*still)["spin"].cast<double>(),
+                (*still)["t"].cast<double>()}});
       },
-      py::arg("path"), py::arg("array"));
+      py::arg("path"), py::arg("array"), py::arg("still") = py::none());
   py::list presets;
   for (std::string_view p : media::kPresets) presets.append(std::string(p));
   m.attr("presets") = presets;

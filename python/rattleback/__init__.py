@@ -310,8 +310,11 @@ class Image:
     """A drawn frame: ``array`` is H×W×3 (or H×W×4 with transparency) ``uint8``, rows from
     the top. Shows itself in Jupyter; ``save(path)`` writes PNG."""
 
-    def __init__(self, array: np.ndarray):
+    def __init__(self, array: np.ndarray, _still: Optional[dict] = None):
         self.array = array
+        # For a still of a scene (rb.still), what the folder's manifest lists of it when saved:
+        # its scene, view, initial spin and t.
+        self._still = _still
 
     @property
     def width(self) -> int:
@@ -331,9 +334,11 @@ class Image:
 
     @checked
     def save(self, path: Union[str, os.PathLike]) -> None:
-        """Writes the image as PNG, whole or not at all (the command line's writer)."""
+        """Writes the image as PNG, whole or not at all (the command line's writer). A still
+        of a scene is listed in the folder's manifest, as ``rattleback still`` lists its PNG,
+        so that ``rattleback report`` shows it under Stills with its view, time and spin."""
         from . import _draw
-        _draw.write_png(os.fspath(path), self.array)
+        _draw.write_png(os.fspath(path), self.array, self._still)
 
     def __repr__(self) -> str:
         return f"<Image {self.width}x{self.height}>"
@@ -355,7 +360,8 @@ def still(scene: SceneLike, t: float = 0.0, *, view: Optional[str] = None,
     """
     from . import _draw
     loaded = _scene(scene)._load(view=view, size=size, spin=spin)
-    return Image(_draw.still(loaded, float(t), readouts, transparent, backend))
+    array, listed = _draw.still(loaded, float(t), bool(readouts), bool(transparent), backend)
+    return Image(array, listed)
 
 
 @checked

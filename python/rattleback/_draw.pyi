@@ -1,6 +1,6 @@
 """Type stubs of rattleback._draw, the drawing side (see rattleback.still, rattleback.render)."""
 
-from typing import Any
+from typing import Any, Optional
 
 import numpy as np
 
@@ -9,8 +9,9 @@ from ._core import LoadedScene
 presets: list[str]
 
 def still(scene: LoadedScene, t: float, readouts: bool, transparent: bool,
-          backend: str) -> np.ndarray: ...
+          backend: str) -> tuple[np.ndarray, dict[str, Any]]: ...
 def render(scene: LoadedScene, output: str, both: bool, crf: int, preset: str,
            backend: str) -> list[dict[str, Any]]: ...
 def encode_png(array: np.ndarray) -> bytes: ...
-def write_png(path: str, array: np.ndarray) -> None: ...
+def write_png(path: str, array: np.ndarray,
+              still: Optional[dict[str, Any]] = None) -> None: ...

@@ -180,6 +180,22 @@ def test_python_lists_its_csv_in_the_folders_manifest(tmp_path, default_scene):
                         "spin": None, "t": None}]
 
 
+def test_a_saved_still_is_listed_as_the_command_lines_still(tmp_path, default_scene):
+    # It was not listed at all: the report put it under "other figures", captioned with its file
+    # name, not under Stills with its view, time and spin.
+    rb.still(default_scene, 0.5, view="above", spin=-4, size=(64, 48)).save(tmp_path / "py.png")
+    cli("still", default_scene, "--t", "0.5", "--view", "above", "--spin", "-4", "--size",
+        "64x48", "-q", "-o", str(tmp_path / "cli.png"))
+    outputs = json.loads((tmp_path / "rattleback-manifest.json").read_text())["outputs"]
+    by_file = {entry.pop("file"): entry for entry in outputs}
+    assert by_file["py.png"] == by_file["cli.png"] == {
+        "kind": "still", "scene": "rattleback", "role": "above", "spin": -4.0, "t": 0.5}
+    # An image made from an array is no still of a scene: saved, it is not listed.
+    rb.Image(np.zeros((48, 64, 3), np.uint8)).save(tmp_path / "drawn.png")
+    outputs = json.loads((tmp_path / "rattleback-manifest.json").read_text())["outputs"]
+    assert sorted(entry["file"] for entry in outputs) == ["cli.png", "py.png"]
+
+
 def test_check_is_the_command_lines_check(tmp_path, default_scene):
     """simulate(check=True) estimates the same errors as ``simulate --check``, in the same
     sidecar."""
