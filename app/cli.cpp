@@ -65,6 +65,10 @@ void defineAnalyze(CLI::App& c, Cli& cli) {
   c.add_option(
       "--spin", cli.analyze_args.spin,
       "Spin for the growth rates, eigenvalues and forecast, rad/s (default: the scene's, else 5)");
+  // Every other command has -q; a script that gives it to all of them works here too.
+  c.add_flag("-q,--quiet", cli.analyze_args.quiet,
+             "Nothing but the analysis (analyze prints nothing else: taken as the other commands "
+             "take it)");
 }
 
 // The backend's default can come from the environment (CI runs the render tests on both).

@@ -57,6 +57,7 @@ struct AnalyzeArgs {
   bool json = false;
   std::string output;          ///< a file to write instead of standard output
   std::optional<double> spin;  ///< rad/s for the growth rates; default the scene's (or 5)
+  bool quiet = false;          ///< accepted as every command's -q; analyze prints nothing else
 };
 int analyzeCommand(const AnalyzeArgs& args);
 

@@ -184,14 +184,14 @@ std::string stem(const std::string& path) {
 rb::Status checkEncoderOptions(int crf, const std::string& preset) {
   if (crf < 1 || crf > 51)
     return rb::Status::fail(
-        "--crf must be within 1 … 51 (lower is better; 0 would be lossless "
+        "--crf: must be within 1 … 51 (lower is better; 0 would be lossless "
         "High 4:4:4, which browsers do not play), not " +
         std::to_string(crf));
   for (std::string_view p : kPresets)
     if (preset == p) return {};
   std::string names;
   for (std::string_view p : kPresets) names.append(names.empty() ? "" : ", ").append(p);
-  return rb::Status::fail("--preset must be one of x264's: " + names + "; not '" + preset + "'");
+  return rb::Status::fail("--preset: must be one of x264's: " + names + "; not '" + preset + "'");
 }
 
 rb::Status checkExtension(const std::string& output, const std::string& wanted,

@@ -369,9 +369,9 @@ rb::Result<Model> compileRun(const SceneSpec& spec, std::shared_ptr<const Body> 
   // Refused above the linear limit; the message names the step a run completes at.
   if (model.contact.model != ContactModel::Auto && model.dt > stability.largest_step) {
     std::ostringstream msg;
-    msg << "= " << model.dt << " s is too large for contact.stiffness " << c.stiffness
-        << " N/m with " << rb::nameOf(model.integrator) << ": the stiffest contact mode ("
-        << stability.omega << " rad/s) grows above " << stability.largest_step
+    msg << model.dt << " s is too large for contact.stiffness " << c.stiffness << " N/m with "
+        << rb::nameOf(model.integrator) << ": the stiffest contact mode (" << stability.omega
+        << " rad/s) grows above " << stability.largest_step
         << " s at rest, and a run that rocks or lands needs half that: the largest stable step "
            "for a run is "
         << stability.run_step << " s (or give simulation.tolerance for adaptive steps)";

@@ -227,7 +227,7 @@ rb::Result<Journal> Journal::open(const std::string& path, const std::string& he
       << nlohmann::json{{"fingerprint", fingerprint}}.dump() << "\n";
   std::ofstream out(path, std::ios::trunc);
   if (!out)
-    return rb::Error{"", path + ": cannot write the sweep's journal: " + std::strerror(errno)};
+    return rb::Error{"", rb::cannotWriteIn(path, errno)};  // the journal: the way out is -o's
   out << header << "\n";
   for (const auto& [r, line] : kept) out << line << "\n";
   out.flush();

@@ -65,7 +65,7 @@ const BadCase kBadCases[] = {
     {"body:\n", "body: [\n", ""},  // malformed: checked separately for its line
     {"dt: 1.0e-5", "dt: 0", "10: simulation.dt must be > 0"},
     {"dt: 1.0e-5", "dt: -1e-5", "10: simulation.dt must be > 0"},
-    {"dt: 1.0e-5", "dt: 0.01", "10: simulation.dt = 0.01 s is too large for contact.stiffness"},
+    {"dt: 1.0e-5", "dt: 0.01", "10: simulation.dt 0.01 s is too large for contact.stiffness"},
     {"duration: 1.0", "duration: 1e9",
      "10: simulation.dt 1e-05 s over simulation.duration 1e+09 s makes more than 1e11 steps"},
     {"duration: 1.0", "duration: .inf", "10: simulation.duration must be > 0, not inf"},
