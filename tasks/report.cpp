@@ -62,6 +62,12 @@ std::string escape(const std::string& text) {
   return out;
 }
 
+// A file's name as an attribute's URL (href, src, poster): percent-encoded, then escaped. Its
+// visible text (a caption, a heading) stays as escape() alone writes it.
+std::string url(const std::string& file) {
+  return escape(urlPath(file));
+}
+
 bool endsWith(const std::string& s, const std::string& suffix) {
   return s.size() > suffix.size() &&
          s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
@@ -192,8 +198,8 @@ void writeVideos(std::ostream& out, const SceneFiles& f,
   auto video = [&](const std::string& file, const std::string& poster_suffix,
                    const std::string& caption) {
     const std::string poster = f.has(poster_suffix) ? f.at(poster_suffix) : "";
-    out << "<figure><video src=\"" << escape(file) << "\" muted loop playsinline controls "
-        << "preload=\"auto\"" << (poster.empty() ? "" : " poster=\"" + escape(poster) + "\"")
+    out << "<figure><video src=\"" << url(file) << "\" muted loop playsinline controls "
+        << "preload=\"auto\"" << (poster.empty() ? "" : " poster=\"" + url(poster) + "\"")
         << "></video><figcaption>" << caption << "</figcaption></figure>\n";
   };
   // The preferred direction as analyze found it (render --both names its videos the same way).
@@ -228,7 +234,7 @@ void writeVideos(std::ostream& out, const SceneFiles& f,
   }
   if (f.has(".mp4")) video(f.at(".mp4"), "-single.png", "The scene as rendered");
   if (f.has("-both.mp4"))
-    out << "<p><a href=\"" << escape(f.at("-both.mp4"))
+    out << "<p><a href=\"" << url(f.at("-both.mp4"))
         << "\">Both side by side in one video</a></p>\n";
 }
 
@@ -252,7 +258,7 @@ void writeMoreRuns(std::ostream& out, const fs::path& dir, const SceneFiles& f) 
   out << "<h3>Other runs</h3><table><tr><th>telemetry</th><th>measured (simulate)</th></tr>\n";
   for (const std::string& csv : f.more_runs) {
     const std::optional<nlohmann::json> run = readJson(dir / (csv + ".json"));
-    out << "<tr><td><a href=\"" << escape(csv) << "\">" << escape(csv) << "</a></td><td>"
+    out << "<tr><td><a href=\"" << url(csv) << "\">" << escape(csv) << "</a></td><td>"
         << (run ? measuredOf(*run) : "–") << "</td></tr>\n";
   }
   out << "</table>\n";
@@ -287,12 +293,12 @@ void writeAnalysis(std::ostream& out, const SceneFiles& f,
                                                : "upright: –")
         << forecastOf(t);
     if (f.has("-analysis.txt"))
-      out << "<br><a href=\"" << escape(f.at("-analysis.txt")) << "\">full analysis</a>";
+      out << "<br><a href=\"" << url(f.at("-analysis.txt")) << "\">full analysis</a>";
   }
   out << "</td><td>";
   if (run) out << measuredOf(*run);
   if (f.has(".csv"))
-    out << (run ? "<br>" : "") << "<a href=\"" << escape(f.at(".csv")) << "\">telemetry (CSV)</a>";
+    out << (run ? "<br>" : "") << "<a href=\"" << url(f.at(".csv")) << "\">telemetry (CSV)</a>";
   out << "</td></tr></table>\n";
 }
 
@@ -328,9 +334,9 @@ std::string plotCaption(const std::string& file) {
 void writeFigure(std::ostream& out, const std::string& file, const std::string& caption,
                  const char* loading = "eager") {
   const std::string text = caption.empty() ? file : caption;
-  out << "<figure><a href=\"" << escape(file) << "\"><img src=\"" << escape(file) << "\" alt=\""
+  out << "<figure><a href=\"" << url(file) << "\"><img src=\"" << url(file) << "\" alt=\""
       << escape(text) << "\" loading=\"" << loading << "\"></a><figcaption>" << escape(text)
-      << (caption.empty() ? "" : " (<a href=\"" + escape(file) + "\">" + escape(file) + "</a>)")
+      << (caption.empty() ? "" : " (<a href=\"" + url(file) + "\">" + escape(file) + "</a>)")
       << "</figcaption></figure>\n";
 }
 
@@ -688,7 +694,7 @@ void writeScene(std::ostream& out, const fs::path& dir, const std::string& name,
   writeAnalysis(out, f, theory, run);
   writeMoreRuns(out, dir, f);
   for (const std::string& file : f.more_videos)
-    out << "<figure><video src=\"" << escape(file) << "\" muted loop playsinline controls "
+    out << "<figure><video src=\"" << url(file) << "\" muted loop playsinline controls "
         << "preload=\"metadata\"></video><figcaption>" << escape(file)
         << "</figcaption></figure>\n";
   writeImages(out, f, kStillSuffixes, std::size(kStillSuffixes), "Stills", f.more_stills);
@@ -706,7 +712,7 @@ void writeSweep(std::ostream& out, const SweepFiles& sweep) {
     out << (i ? " × " : "") << "<code>" << escape(stringOr(field(axes[i], "key"), "?"))
         << "</code> (" << (values.is_array() ? values.size() : 0) << " values)";
   }
-  out << ": <a href=\"" << escape(sweep.csv) << "\">the table (CSV)</a></p><div class=\"grid\">\n";
+  out << ": <a href=\"" << url(sweep.csv) << "\">the table (CSV)</a></p><div class=\"grid\">\n";
   for (const std::string& image : sweep.images) writeFigure(out, image, "");
   out << "</div></section>\n";
 }
@@ -718,7 +724,7 @@ void writeOthers(std::ostream& out, const std::vector<std::string>& others) {
     if (endsWith(name, ".png"))
       writeFigure(out, name, "");
     else
-      out << "<p><a href=\"" << escape(name) << "\">" << escape(name) << "</a></p>\n";
+      out << "<p><a href=\"" << url(name) << "\">" << escape(name) << "</a></p>\n";
   }
   out << "</div></section>\n";
 }
@@ -749,12 +755,26 @@ void writePage(std::ostream& out, const fs::path& dir, const Folder& folder,
   // Classic scripts (a page opened from disk may not import modules or fetch): each run's
   // data, then the player, which finds every .rb-player.
   for (const std::string& id : players)
-    out << "<script src=\"" << escape(id) << ".player.js\"></script>\n";
-  if (!players.empty()) out << "<script src=\"" << kPlayerBundle << "\"></script>\n";
+    out << "<script src=\"" << url(id + ".player.js") << "\"></script>\n";
+  if (!players.empty()) out << "<script src=\"" << url(kPlayerBundle) << "\"></script>\n";
   out << "</body></html>\n";
 }
 
 }  // namespace
+
+std::string urlPath(const std::string& name) {
+  const char* hex = "0123456789ABCDEF";
+  std::string out;
+  for (const unsigned char c : name) {
+    const bool kept = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
+                      c == '-' || c == '.' || c == '_' || c == '~' || c == '/';
+    if (kept)
+      out += static_cast<char>(c);
+    else
+      out += {'%', hex[c >> 4], hex[c & 15]};
+  }
+  return out;
+}
 
 rb::Result<std::string> writeReport(const std::string& folder_path) {
   const fs::path dir = folder_path;

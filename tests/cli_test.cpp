@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -21,6 +22,7 @@
 #include "sim/compile.hpp"
 #include "sim/rollout.hpp"
 #include "tasks/bench.hpp"
+#include "tasks/report.hpp"
 
 namespace fs = std::filesystem;
 
@@ -1357,6 +1359,79 @@ TEST(Report, StillsAndPlotsHaveCaptions) {
   EXPECT_NE(html.find("<figcaption>toy-above.png</figcaption>"), std::string::npos) << html;
   if (fs::exists(dir / "rattleback-spin.png"))  // gnuplot drew it
     EXPECT_NE(html.find("<figcaption>spin n against time"), std::string::npos) << html;
+}
+
+// A file's name in a link: unreserved bytes and '/' as they are, every other byte of its UTF-8 as
+// %XX, so that '#' starts no fragment, '?' no query and '%' no escape.
+TEST(Report, FileNamesAreWrittenAsUrlPaths) {
+  EXPECT_EQ(tasks::urlPath("my top #1-energy.png"), "my%20top%20%231-energy.png");
+  EXPECT_EQ(tasks::urlPath("100% sure?.csv"), "100%25%20sure%3F.csv");
+  EXPECT_EQ(tasks::urlPath("wälze&co.player.js"), "w%C3%A4lze%26co.player.js");
+  EXPECT_EQ(tasks::urlPath("runs/A-z_0.9~.mp4"), "runs/A-z_0.9~.mp4");
+}
+
+namespace {
+
+// The files a page's links name (every href, src and poster), as a browser finds them: up to a
+// '#' or '?', percent-decoded, after the attribute's own escapes.
+std::vector<std::string> linkedFiles(const std::string& html) {
+  std::vector<std::string> files;
+  const std::regex attribute(R"re(\b(?:href|src|poster)="([^"]*)")re");
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), attribute);
+       it != std::sregex_iterator(); ++it) {
+    std::string value = (*it)[1];
+    for (const auto& [entity, text] :
+         {std::pair{"&quot;", "\""}, {"&lt;", "<"}, {"&gt;", ">"}, {"&amp;", "&"}})
+      for (std::size_t at; (at = value.find(entity)) != std::string::npos;)
+        value.replace(at, std::strlen(entity), text);
+    value = value.substr(0, value.find_first_of("#?"));
+    std::string file;
+    for (std::size_t i = 0; i < value.size(); ++i)
+      if (value[i] == '%' && i + 2 < value.size()) {
+        file += static_cast<char>(std::stoi(value.substr(i + 1, 2), nullptr, 16));
+        i += 2;
+      } else {
+        file += value[i];
+      }
+    files.push_back(file);
+  }
+  return files;
+}
+
+}  // namespace
+
+// Every link of a page over scenes named with a space, '#', '&' and a letter beyond ASCII names a
+// file in the folder. The page wrote the names as they are: "my top #1-energy.png" is the file
+// "my top " and a fragment to a browser, and every plot, video and the player's data of the scene
+// failed to load (a new user's trial).
+TEST(Report, EveryLinkOfAnOddlyNamedSceneFindsItsFile) {
+  const fs::path dir = emptyDir("odd names");
+  for (const std::string name : {"my top #1", "wälze&co"}) {
+    const fs::path yaml = dir / (name + ".yaml");
+    fs::copy_file(scene("rattleback"), yaml);
+    const std::string in = "'" + yaml.string() + "' ";
+    const std::string out = "'" + (dir / name).string();
+    ASSERT_EQ(rattleback("simulate " + in + "--duration 0.2 -q --plot '" + dir.string() + "' -o " +
+                         out + ".csv'")
+                  .status,
+              0);
+    ASSERT_EQ(
+        rattleback("still " + in + "--t 0.1 --size 64x48 -q -o " + out + "-oblique.png'").status,
+        0);
+    ASSERT_EQ(
+        rattleback("render " + in + "--duration 0.2 --size 64x48 -q -o " + out + ".mp4'").status,
+        0);
+  }
+  const Result r = rattleback("report '" + dir.string() + "' -q");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string html = readText(dir / "index.html");
+  const std::vector<std::string> files = linkedFiles(html);
+  EXPECT_GE(files.size(), 10u) << html;
+  for (const std::string& file : files) EXPECT_TRUE(fs::is_regular_file(dir / file)) << file;
+  for (const char* shown : {"<h2>my top #1</h2>", "<h2>wälze&amp;co</h2>"})
+    EXPECT_NE(html.find(shown), std::string::npos) << shown;  // the text stays as named
+  if (fs::exists(dir / "my top #1.player.js"))
+    EXPECT_NE(std::find(files.begin(), files.end(), "my top #1.player.js"), files.end()) << html;
 }
 
 // An output folder holds the outputs and their manifest, nothing else: the manifest's lock is

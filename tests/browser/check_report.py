@@ -98,7 +98,7 @@ def main():
         # wide page (blown up, its pixels blur), and a large one shrinks to fit.
         sizes = driver.execute_script("""
             return Array.from(document.querySelectorAll('img, video')).map(e =>
-                [e.getAttribute('src'), e.clientWidth, e.naturalWidth || e.videoWidth]);""")
+                [e.getAttribute('src'), e.clientWidth, e.naturalWidth || e.videoWidth || 0]);""")
         for src, shown, natural in sizes:
             if natural > 0 and shown > natural + 1:
                 failures.append(f"{src} is drawn {shown} px wide, larger than its own {natural} px")

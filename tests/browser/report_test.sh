@@ -19,6 +19,15 @@ for view in oblique above; do "$rb" still "$scene" --view "$view" --t 1 --size 3
 "$rb" analyze "$scene" --json > "$dir/rattleback-analysis.json"
 "$rb" bench "$scene" --duration 0.5 --rungs 1 --repeats 1 --models rolling --integrators rk4 -q \
   -o "$dir/bench.csv" --plot "$dir/bench.png"
+# A scene named with a space and '#': its links must be percent-encoded, or the browser reads
+# "my top #1-energy.png" as "my top " and a fragment, and its video, plots, still and player's
+# data fail to load (console errors, images that do not decode). 3 s of telemetry as above: the
+# player's play-then-pause check on a 2 s run reached its end.
+odd="$dir/scenes/my top #1.yaml"
+mkdir -p "$dir/scenes" && cp "$scene" "$odd"
+"$rb" simulate "$odd" --duration 3 -o "$dir/my top #1.csv" --plot "$dir" -q
+"$rb" still "$odd" --t 1 --size 320x180 -q -o "$dir/my top #1-oblique.png"
+"$rb" render "$odd" --duration 2 --size 320x180 -q -o "$dir/my top #1.mp4"
 "$rb" report "$dir" -q
 test -s "$dir/index.html"
 # Relative paths only: the page must not name the folder it was made in.
