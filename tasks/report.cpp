@@ -776,7 +776,7 @@ std::string urlPath(const std::string& name) {
   return out;
 }
 
-rb::Result<std::string> writeReport(const std::string& folder_path) {
+rb::Result<ReportPage> writeReport(const std::string& folder_path) {
   const fs::path dir = folder_path;
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
@@ -798,7 +798,7 @@ rb::Result<std::string> writeReport(const std::string& folder_path) {
   if (!opened) return opened.error();
   writePage(opened->stream(), dir, folder, players);
   if (auto e = opened->commit(); !e) return e.error();
-  return path;
+  return ReportPage{path, folder.scenes.empty() && folder.sweeps.empty() && folder.others.empty()};
 }
 
 }  // namespace tasks

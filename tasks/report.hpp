@@ -11,8 +11,13 @@
 
 namespace tasks {
 
-/// Writes DIR/index.html (whole or not at all); its path.
-rb::Result<std::string> writeReport(const std::string& dir);
+struct ReportPage {
+  std::string path;    ///< DIR/index.html
+  bool empty = false;  ///< DIR held no runs, videos, stills, plots or tables to show
+};
+
+/// Writes DIR/index.html (whole or not at all).
+rb::Result<ReportPage> writeReport(const std::string& dir);
 
 /// A file's name (or a path relative to the page, '/' between folders) as a relative URL's path:
 /// each byte but the unreserved ones (RFC 3986: A-Z a-z 0-9 - . _ ~) and '/' as %XX. The browser

@@ -1434,6 +1434,34 @@ TEST(Report, EveryLinkOfAnOddlyNamedSceneFindsItsFile) {
     EXPECT_NE(std::find(files.begin(), files.end(), "my top #1.player.js"), files.end()) << html;
 }
 
+// A folder with nothing of ours still gets its page (a CI step may open it), and one line on
+// stderr says why it is empty and how to fill it; it said nothing (a new user's trial).
+TEST(Report, AFolderWithNothingToShowIsSaidToBe) {
+  const fs::path dir = emptyDir("nothing");
+  std::ofstream(dir / "notes.txt") << "not an output\n";
+  const Result r = rattleback("report " + dir.string());
+  EXPECT_EQ(r.status, 0);
+  EXPECT_TRUE(fs::is_regular_file(dir / "index.html"));
+  EXPECT_EQ(r.out, (dir / "index.html").string() + "\n");
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_EQ(r.err.rfind(dir.string() + ": no runs, videos, stills or plots", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("rattleback simulate SCENE -o " + dir.string() + "/NAME.csv"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("scripts/run.sh"), std::string::npos) << r.err;
+  const Result quiet = rattleback("report " + dir.string() + " -q");
+  EXPECT_EQ(quiet.status, 0);
+  EXPECT_EQ(quiet.out + quiet.err, "");
+  // A folder with a run says nothing of the kind.
+  ASSERT_EQ(rattleback("simulate " + scene("rattleback") + " --duration 0.1 -q -o " +
+                       (dir / "run.csv").string())
+                .status,
+            0);
+  const Result some = rattleback("report " + dir.string());
+  EXPECT_EQ(some.status, 0);
+  EXPECT_EQ(some.err, "");
+}
+
 // An output folder holds the outputs and their manifest, nothing else: the manifest's lock is
 // the folder itself (flock on its descriptor), where it was an empty .rattleback-manifest.lock
 // left in every folder written into.
