@@ -215,7 +215,7 @@ PYBIND11_MODULE(_core, m) {
   m.attr("default_rate") = tasks::kDefaultRate;
   py::list names;
   for (const tasks::Column& c : tasks::telemetryColumns())
-    names.append(py::make_tuple(c.name, c.unit));
+    names.append(py::make_tuple(c.name, c.unit, c.meaning));
   m.attr("telemetry_columns") = names;
 
   bindScene(m);

@@ -14,34 +14,34 @@
 namespace tasks {
 namespace {
 
-// The CSV's columns and their units: the header is the first line of the file (so that every
-// CSV reader takes it as the header); the units go to the sidecar X.csv.json.
+// The CSV's columns, their units and meanings: the header is the first line of the file (so
+// that every CSV reader takes it as the header); units and meanings go to the sidecar X.csv.json.
 constexpr Column kColumns[] = {
-    {"t", "s"},
-    {"spin", "rad/s: n = w.z, + counter-clockwise seen from above"},
-    {"energy", "J: kinetic + potential + elastic"},
-    {"kinetic", "J: M v^2/2 + w.L/2"},
-    {"potential", "J: M g z of the centre of mass"},
-    {"elastic", "J: sum of k depth^2/2 over the contact springs"},
-    {"tilt_deg", "degrees between the body's z axis and the vertical"},
-    {"x", "m: centre of mass"},
-    {"y", "m: centre of mass"},
-    {"z", "m: centre of mass"},
-    {"wx", "rad/s: angular velocity, world axes"},
-    {"wy", "rad/s: angular velocity, world axes"},
-    {"wz", "rad/s: angular velocity, world axes"},
-    {"Lz", "kg m^2/s: vertical angular momentum about the centre of mass"},
-    {"contacts", "count of contact points below the floor"},
-    {"normal_force", "N: total normal force of the floor"},
-    {"mode",
+    {"t", "s", "time"},
+    {"spin", "rad/s", "n = w.z, + counter-clockwise seen from above"},
+    {"energy", "J", "kinetic + potential + elastic"},
+    {"kinetic", "J", "M v^2/2 + w.L/2"},
+    {"potential", "J", "M g z of the centre of mass"},
+    {"elastic", "J", "sum of k depth^2/2 over the contact springs"},
+    {"tilt_deg", "deg", "angle between the body's z axis and the vertical"},
+    {"x", "m", "centre of mass"},
+    {"y", "m", "centre of mass"},
+    {"z", "m", "centre of mass"},
+    {"wx", "rad/s", "angular velocity, world axes"},
+    {"wy", "rad/s", "angular velocity, world axes"},
+    {"wz", "rad/s", "angular velocity, world axes"},
+    {"Lz", "kg m^2/s", "vertical angular momentum about the centre of mass"},
+    {"contacts", "", "count of contact points below the floor"},
+    {"normal_force", "N", "total normal force of the floor"},
+    {"mode", "",
      "the contact model integrated: points, smooth or rolling (contact.model auto "
      "switches between rolling and smooth)"},
-    {"qw",
+    {"qw", "",
      "attitude: unit quaternion (qw, qx, qy, qz), scalar first, rotating body axes into "
      "world axes (world z up); continuous in time (q and -q are the same rotation)"},
-    {"qx", "attitude quaternion, x part (see qw)"},
-    {"qy", "attitude quaternion, y part (see qw)"},
-    {"qz", "attitude quaternion, z part (see qw)"},
+    {"qx", "", "attitude quaternion, x part (see qw)"},
+    {"qy", "", "attitude quaternion, y part (see qw)"},
+    {"qz", "", "attitude quaternion, z part (see qw)"},
 };
 
 }  // namespace

@@ -8,6 +8,8 @@
 #include <mutex>
 #include <thread>
 
+#include "scene/key_path.hpp"
+#include "scene/keys.hpp"
 #include "sim/compile.hpp"
 #include "sim/rollout.hpp"
 #include "tasks/output.hpp"
@@ -17,14 +19,14 @@ namespace {
 
 // The columns after the varied keys, with their units (for the sidecar and the plot).
 constexpr Column kResults[] = {
-    {"status", "ok | stopped: reason | refused: reason"},
-    {"first_reversal_s", "s: first spin reversal (as simulate), empty when none"},
-    {"reversals", "count of spin reversals (as simulate)"},
-    {"final_spin", "rad/s: n = w.z at the end of the run"},
-    {"max_tilt_deg",
-     "degrees: largest tilt of the body axis over the steps (to the stop, if it stopped)"},
-    {"energy_lost", "fraction of the initial energy lost by the end"},
-    {"wall_s", "s: wall-clock time of the run (the only column that varies between runs)"},
+    {"status", "", "ok | stopped: reason | refused: reason"},
+    {"first_reversal_s", "s", "first spin reversal (as simulate), empty when none"},
+    {"reversals", "", "count of spin reversals (as simulate)"},
+    {"final_spin", "rad/s", "n = w.z at the end of the run"},
+    {"max_tilt_deg", "deg",
+     "largest tilt of the body axis over the steps (to the stop, if it stopped)"},
+    {"energy_lost", "", "fraction of the initial energy lost by the end"},
+    {"wall_s", "s", "wall-clock time of the run (the only column that varies between runs)"},
 };
 
 double since(std::chrono::steady_clock::time_point start) {
@@ -164,10 +166,17 @@ std::string sweepLine(const SweepRow& row) {
 
 nlohmann::json sweepColumnsJson(const std::vector<std::string>& keys) {
   nlohmann::json columns = nlohmann::json::array();
-  columns.push_back(
-      {{"name", "row"}, {"unit", "index of the run in the sweep's order (first axis slowest)"}});
-  for (const std::string& key : keys)
-    columns.push_back({{"name", key}, {"unit", "the value put into the scene"}});
+  columns.push_back({{"name", "row"},
+                     {"unit", ""},
+                     {"meaning", "index of the run in the sweep's order (first axis slowest)"}});
+  // An axis's unit is its scene key's (the schema's: lengths in the file's unit).
+  for (const std::string& key : keys) {
+    const scene::Key* k = scene::findKey(scene::withoutIndex(key));
+    columns.push_back({{"name", key},
+                       {"unit", k ? std::string(k->unit) : ""},
+                       {"meaning", "the value put into the scene" +
+                                       (k ? ": " + std::string(k->doc) : std::string())}});
+  }
   for (const auto& c : columnsJson(kResults)) columns.push_back(c);
   return columns;
 }

@@ -23,7 +23,8 @@ std::string csvHeader(std::span<const Column> columns) {
 
 nlohmann::json columnsJson(std::span<const Column> columns) {
   nlohmann::json out = nlohmann::json::array();
-  for (const Column& c : columns) out.push_back({{"name", c.name}, {"unit", c.unit}});
+  for (const Column& c : columns)
+    out.push_back({{"name", c.name}, {"unit", c.unit}, {"meaning", c.meaning}});
   return out;
 }
 

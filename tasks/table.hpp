@@ -10,10 +10,12 @@
 
 namespace tasks {
 
-/// A column of a table: its name (the CSV header's) and its unit and meaning (the sidecar's).
+/// A column of a table: its name (the CSV header's), its unit and its meaning (the sidecar's).
+/// The unit alone, as a plot's axis label takes it ("rad/s"); "" for a count, a fraction or text.
 struct Column {
   const char* name;
   const char* unit;
+  const char* meaning;
 };
 
 /// A CSV field (RFC 4180): quoted when it holds a comma, a quote or a line break, quotes
@@ -23,7 +25,7 @@ std::string csvField(const std::string& text);
 /// The header line of these columns (no newline).
 std::string csvHeader(std::span<const Column> columns);
 
-/// The columns as the sidecars list them: [{"name": …, "unit": …}, …].
+/// The columns as the sidecars list them: [{"name": …, "unit": …, "meaning": …}, …].
 nlohmann::json columnsJson(std::span<const Column> columns);
 
 /// Room writeNumber needs: the longest shortest form of a double is 24 characters

@@ -548,6 +548,40 @@ TEST(UsersScenes, AnyRateAndTheSidecarParses) {
   EXPECT_DOUBLE_EQ(j["rate_hz"].get<double>(), 3000.0);
 }
 
+// Every table's sidecar gives each column's unit alone, as a plot's axis label takes it, and
+// its meaning apart (a new user's trial: spin's "unit" was "rad/s: n = w.z, + counter-clockwise
+// seen from above"); a sweep's axis has its scene key's unit, from the schema.
+TEST(Outputs, SidecarsGiveUnitsAloneAndMeaningsApart) {
+  const fs::path dir = emptyDir("units");
+  const fs::path sweep = dir / "s.yaml";
+  std::ofstream(sweep) << "base: " << scene("rattleback") << "\nduration: 0.1\n"
+                       << "vary:\n  contact.air_drag: [0, 1.0e-5]\n  body.mass: [0.05]\n";
+  ASSERT_EQ(rattleback("sweep " + sweep.string() + " -q -o " + (dir / "s.csv").string()).status, 0);
+  ASSERT_EQ(rattleback("simulate " + scene("rattleback") + " --duration 0.1 -q -o " +
+                       (dir / "t.csv").string())
+                .status,
+            0);
+  std::map<std::string, std::string> units;
+  for (const char* table : {"s.csv.json", "t.csv.json"}) {
+    std::ifstream in(dir / table);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    for (const nlohmann::json& c : j["columns"]) {
+      const std::string unit = c["unit"], name = c["name"];
+      units[name] = unit;
+      EXPECT_LE(unit.size(), 8u) << name << ": " << unit;
+      EXPECT_EQ(unit.find(':'), std::string::npos) << name << ": " << unit;
+      EXPECT_FALSE(c["meaning"].get<std::string>().empty()) << name;
+    }
+  }
+  EXPECT_EQ(units["spin"], "rad/s");
+  EXPECT_EQ(units["t"], "s");
+  EXPECT_EQ(units["Lz"], "kg m^2/s");
+  EXPECT_EQ(units["contacts"], "");
+  EXPECT_EQ(units["first_reversal_s"], "s");
+  EXPECT_EQ(units["contact.air_drag"], "N m s");  // scene/keys.cpp: the torque −σω
+  EXPECT_EQ(units["body.mass"], "kg");
+}
+
 // A mistyped command names the nearest one.
 TEST(Cli, AMistypedCommandSuggestsTheNearest) {
   const Result r = rattleback("simulat " + scene("rattleback"));

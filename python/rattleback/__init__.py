@@ -214,8 +214,15 @@ class Run:
 
     @property
     def units(self) -> dict[str, str]:
-        """Each column's unit and meaning, as in the sidecar."""
-        return dict(_core.telemetry_columns)
+        """Each column's unit, as in the sidecar: ``"rad/s"``, ``"J"``; ``""`` for a count, a
+        fraction or text."""
+        return {name: unit for name, unit, _ in _core.telemetry_columns}
+
+    @property
+    def meanings(self) -> dict[str, str]:
+        """What each column is, as in the sidecar (``"n = w.z, + counter-clockwise seen from
+        above"``)."""
+        return {name: meaning for name, _, meaning in _core.telemetry_columns}
 
     @property
     def reversals(self) -> list[float]:

@@ -6,7 +6,7 @@ import numpy as np
 
 version: str
 default_rate: float
-telemetry_columns: list[tuple[str, str]]
+telemetry_columns: list[tuple[str, str, str]]
 
 class LoadedScene:
     @property

@@ -93,7 +93,10 @@ def test_the_summary_is_the_sidecars_result(default_scene):
     assert run.first_reversal == pytest.approx(2.3665, abs=5e-5)  # README: first reversal 2.3665 s
     assert run.reversals == run.result["reversals_s"]
     assert run.sidecar()["result"]["first_reversal_s"] == run.first_reversal
-    assert run.units["spin"].startswith("rad/s")
+    # The unit alone, as an axis label takes it; what the column is apart.
+    assert run.units["spin"] == "rad/s"
+    assert run.meanings["spin"].startswith("n = w.z")
+    assert list(run.units) == list(run.meanings) == [c["name"] for c in run.sidecar()["columns"]]
 
 
 def test_analyze_is_the_command_lines_json(default_scene):
