@@ -595,28 +595,58 @@ bool sceneChangedSince(const nlohmann::json& sidecar, const std::string& scene_p
   return std::abs(mass.get<double>() - model.body->mass) > 1e-9 * std::abs(model.body->mass);
 }
 
+// The model of a run's scene, or why there is none to replay it on: `why` completes "SCENE …"
+// for the line `report` prints ("has changed since this run was simulated: …"), empty where there
+// is nothing to say (no scene named, or none to be found: the page then has no player, as for a
+// run made from a string).
+struct RunModel {
+  std::optional<sim::Model> model;
+  std::string scene;  ///< the scene file's path, where one was found
+  std::string why;
+};
+
 // The model of the scene a telemetry sidecar names, with the values the run put in over it
 // (scene_values: --set, Python's with_values), when that scene can be read and still describes
-// the run (sceneChangedSince); none otherwise.
-std::optional<sim::Model> runModelOf(const nlohmann::json& sidecar, const fs::path& dir) {
-  if (field(sidecar, "command") != "simulate") return std::nullopt;
+// the run (sceneChangedSince).
+RunModel runModelOf(const nlohmann::json& sidecar, const fs::path& dir) {
+  if (field(sidecar, "command") != "simulate") return {};
   const auto scene_path = sceneOf(sidecar, dir);
-  if (!scene_path) return std::nullopt;
+  if (!scene_path) return {};
+  RunModel out{std::nullopt, *scene_path, ""};
   std::vector<scene::KeyValue> values;
   const nlohmann::json& put = field(sidecar, "scene_values");
   if (put.is_array())
     for (const nlohmann::json& kv : put) {
       const nlohmann::json &key = field(kv, "key"), &value = field(kv, "value");
-      if (!key.is_string() || !value.is_string()) return std::nullopt;  // not a sidecar of ours
+      if (!key.is_string() || !value.is_string()) return out;  // not a sidecar of ours
       values.push_back({key.get<std::string>(), value.get<std::string>()});
     }
   const auto text = scene::readSceneFile(*scene_path);
-  if (!text) return std::nullopt;
+  if (!text) return out;
+  const std::string changed =
+      "has changed since this run was simulated: no 3D player for it (simulate it again to "
+      "replay it)";
+  // Its content first: an edited scene has changed, whether or not it still loads.
+  const nlohmann::json& fingerprint = field(sidecar, "scene_fingerprint");
+  if (fingerprint.is_string() && fingerprint != sceneFingerprint(*scene_path)) {
+    out.why = changed;
+    return out;
+  }
+  // The same content that no longer loads: this rattleback reads it otherwise than the one
+  // that ran it (a key since renamed, a check since added); its own error line says how.
   auto loaded = scene::loadWithValues(text.value(), *scene_path, values, "scene_values");
-  if (!loaded) return std::nullopt;
-  auto model = scene::loadModel(loaded.value());
-  if (!model || sceneChangedSince(sidecar, *scene_path, model.value())) return std::nullopt;
-  return std::move(model).value();
+  auto model = loaded ? scene::loadModel(loaded.value()) : rb::Result<sim::Model>(loaded.error());
+  if (!model) {
+    out.why = "no longer loads in this rattleback (" + model.error().text() +
+              "): no 3D player for it (mend the scene and simulate it again to replay it)";
+    return out;
+  }
+  if (sceneChangedSince(sidecar, *scene_path, model.value())) {
+    out.why = changed;
+    return out;
+  }
+  out.model = std::move(model).value();
+  return out;
 }
 
 // DIR/<id>.player.js for a scene with telemetry: its poses, reversals and drawn points; false
@@ -625,13 +655,11 @@ bool writePlayerData(const fs::path& dir, const std::string& id, const SceneFile
   if (!f.has(".csv") || !f.has(".csv.json")) return false;
   const std::optional<nlohmann::json> sidecar = readJson(dir / f.at(".csv.json"));
   if (!sidecar || field(*sidecar, "command") != "simulate") return false;
-  const std::optional<sim::Model> model = runModelOf(*sidecar, dir);
+  const RunModel found = runModelOf(*sidecar, dir);
+  const std::optional<sim::Model>& model = found.model;
   if (!model) {
-    const auto scene_path = sceneOf(*sidecar, dir);
-    if (scene_path && scene::loadFile(*scene_path))
-      std::cerr << (dir / f.at(".csv")).string() << ": " << *scene_path
-                << " has changed since this run was simulated: no 3D player for it (simulate it "
-                   "again to replay it)\n";
+    if (!found.why.empty())
+      std::cerr << (dir / f.at(".csv")).string() << ": " << found.scene << " " << found.why << "\n";
     // The data an earlier report wrote for this run would replay it on another body.
     std::error_code ec;
     fs::remove(dir / (id + ".player.js"), ec);
@@ -673,7 +701,7 @@ void writeScene(std::ostream& out, const fs::path& dir, const std::string& name,
   // theory of the run's scene at the run's spin, as analyze --json would write it, so that the
   // page's predicted column and the videos' measured lines do not go empty.
   if (!theory && run)
-    if (const std::optional<sim::Model> model = runModelOf(*run, dir)) {
+    if (const std::optional<sim::Model> model = runModelOf(*run, dir).model) {
       const nlohmann::json& spin = field(field(field(*run, "model"), "initial"), "spin");
       theory = analysisJson(
           *model, analysisSpin(

@@ -1275,6 +1275,38 @@ TEST(Report, AnEditedSceneGetsNoPlayer) {
   }
 }
 
+// Why a run gets no player is said as it is: a scene edited into one that no longer loads has
+// changed (it had been passed over in silence), and a scene as it ran that this rattleback no
+// longer loads says so with its error, not that it has changed (here the sidecar's values put
+// in stand for a check the program has since added).
+TEST(Report, ARunsSceneThatNoLongerLoadsIsSaidToAsItIs) {
+  const fs::path dir = emptyDir("no-longer");
+  const fs::path yaml = dir / "edit.yaml";
+  fs::copy_file(scene("rattleback"), yaml);
+  const std::string csv = (dir / "edit.csv").string();
+  ASSERT_EQ(rattleback("simulate " + yaml.string() + " --duration 0.2 -q -o " + csv).status, 0);
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  if (!fs::exists(dir / "edit.player.js")) GTEST_SKIP() << "built without the player";
+  nlohmann::json sidecar = nlohmann::json::parse(readText(csv + ".json"));
+  sidecar["scene_values"] = nlohmann::json::parse(R"([{"key": "body.mass", "value": "-3"}])");
+  std::ofstream(csv + ".json") << sidecar.dump(2);
+  const Result refused = rattleback("report " + dir.string() + " -q");
+  ASSERT_EQ(refused.status, 0);
+  EXPECT_EQ(refused.err, csv + ": " + yaml.string() +
+                             " no longer loads in this rattleback (scene_values: body.mass must "
+                             "be > 0, not -3): no 3D player for it (mend the scene and simulate "
+                             "it again to replay it)\n");
+  sidecar["scene_values"] = nlohmann::json::array();
+  std::ofstream(csv + ".json") << sidecar.dump(2);
+  std::ofstream(yaml, std::ios::app) << "body: [unclosed\n";
+  const Result broken = rattleback("report " + dir.string() + " -q");
+  ASSERT_EQ(broken.status, 0);
+  EXPECT_EQ(broken.err, csv + ": " + yaml.string() +
+                            " has changed since this run was simulated: no 3D player for it "
+                            "(simulate it again to replay it)\n");
+  EXPECT_FALSE(fs::exists(dir / "edit.player.js"));
+}
+
 // A run made with --set values is replayed on the body those values make, not on the file's: the
 // sidecar records them (scene_values) and `report` puts them in again, for the player and the
 // theory alike. It drew the file's body, a = 1.0, under a run of a = 1.2 (a new user's trial).
