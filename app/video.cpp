@@ -11,6 +11,7 @@
 #include "app/interrupt.hpp"
 #include "app/progress.hpp"
 #include "media/still.hpp"
+#include "media/video_plan.hpp"
 #include "render/image_io.hpp"
 #include "tasks/output.hpp"
 
@@ -68,6 +69,16 @@ int renderCommand(const RenderArgs& args) {
   auto loaded = loadScene(args.scene, args.overrides);
   if (!loaded) return fail(loaded);
   if (args.verbose) describeModel(loaded->model, args.scene);
+  // A video over ten minutes long is said up front, on or off a terminal (where no progress
+  // bar shows): a playback typed 0.001 for 1 made 180,000 frames of a 6 s scene, hundreds of
+  // megabytes, with nothing said for as long as it ran (a new user's trial).
+  if (const auto plan = media::planVideo(loaded->scene, loaded->model.duration);
+      plan && !args.quiet && plan->frames > 600LL * plan->fps)
+    std::cerr << args.scene << ": " << plan->frames << " frames, "
+              << std::lround(static_cast<double>(plan->frames) / plan->fps / 60.0)
+              << " min of video (" << loaded->model.duration << " s simulated at playback "
+              << plan->playback << ", " << plan->fps
+              << " fps); this takes a while, and Ctrl-C stops it with nothing written\n";
   media::VideoRequest request;
   request.scene_name = args.scene;
   request.output = args.output;

@@ -1892,3 +1892,23 @@ TEST(Cli, CtrlCWhileAStillFramesWritesNoStill) {
   EXPECT_NE(text.find("interrupted; no still written"), std::string::npos) << text;
   EXPECT_FALSE(fs::exists(png));
 }
+
+// A video over ten minutes long is said up front, on or off a terminal: a playback typed 0.001
+// for 1 rendered 180,000 frames with nothing said off a terminal for as long as it ran (a new
+// user's trial). Stopped by Ctrl-C after two seconds: the note came first, nothing is written.
+TEST(Cli, ALongVideoIsSaidUpFront) {
+  const fs::path mp4 = tempFile("long.mp4");
+  const fs::path err = tempFile("long.err");
+  const std::string command = "timeout -s INT 2 " + std::string(RATTLEBACK_BIN) + " render " +
+                              scene("rattleback") +
+                              " --playback 0.001 --duration 1 --size 64x48 -o " + mp4.string() +
+                              " 2>" + err.string() + " </dev/null";
+  (void)std::system(command.c_str());
+  std::ifstream in(err);
+  std::string first;
+  std::getline(in, first);
+  EXPECT_EQ(first, scene("rattleback") +
+                       ": 25000 frames, 17 min of video (1 s simulated at playback 0.001, 25 fps); "
+                       "this takes a while, and Ctrl-C stops it with nothing written");
+  EXPECT_FALSE(fs::exists(mp4));
+}
