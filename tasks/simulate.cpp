@@ -90,7 +90,7 @@ char* formatRow(char* line, const sim::Telemetry& s) {
 }
 
 // A chunk of rows as text.
-std::string formatRows(const std::vector<sim::Telemetry>& rows) {
+std::string formatRows(std::span<const sim::Telemetry> rows) {
   std::string text(rows.size() * kRowChars, '\0');
   char* at = text.data();
   for (const sim::Telemetry& s : rows) at = formatRow(at, s);
@@ -186,10 +186,24 @@ void TelemetryWriter::row(const sim::Telemetry& sample) {
 
 void TelemetryWriter::handOff() {
   if (pending_.empty()) return;
-  formatting_.push_back(std::async(std::launch::async, formatRows, std::move(pending_)));
+  formatting_.push_back(
+      std::async(std::launch::async, [rows = std::move(pending_)] { return formatRows(rows); }));
   pending_ = {};
   pending_.reserve(kChunkRows);
   writeFormatted(kChunksInFlight);
+}
+
+void TelemetryWriter::rows(std::span<const sim::Telemetry> samples) {
+  handOff();
+  // Chunks formatted straight from the caller's samples (they outlive the writes: each chunk
+  // is written before this returns), not copied into chunks of the writer's own first.
+  for (std::size_t at = 0; at < samples.size(); at += kChunkRows) {
+    const auto part = samples.subspan(at, std::min(kChunkRows, samples.size() - at));
+    formatting_.push_back(std::async(std::launch::async, [part] { return formatRows(part); }));
+    writeFormatted(kChunksInFlight);
+  }
+  writeFormatted(0);
+  rows_ += static_cast<std::int64_t>(samples.size());
 }
 
 void TelemetryWriter::writeFormatted(std::size_t keep) {
@@ -214,7 +228,7 @@ rb::Status writeTelemetry(const std::string& path, const RunScene& scene, const 
                           const std::vector<sim::Telemetry>& samples, const nlohmann::json& check) {
   auto writer = TelemetryWriter::open(path);
   if (!writer) return writer.error();
-  for (const sim::Telemetry& s : samples) writer->row(s);
+  writer->rows(samples);
   return writer->commit(scene, model, rate, run, check);
 }
 

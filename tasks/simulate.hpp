@@ -80,6 +80,8 @@ class TelemetryWriter {
   static rb::Result<TelemetryWriter> open(const std::string& path);
   TelemetryWriter(TelemetryWriter&&) noexcept = default;
   void row(const sim::Telemetry& sample);
+  /// Rows handed over at once (a finished run's samples), formatted in parallel chunks.
+  void rows(std::span<const sim::Telemetry> samples);
   std::int64_t rows() const { return rows_; }
   /// Writes the sidecar and puts both files in place.
   /// `check`: the sidecar's "check" (checkJson), or null.
