@@ -231,6 +231,9 @@ const std::vector<CommandSpec>& commands() {
 }
 
 Cli::Cli() {
+  // The usage lines say "rattleback", not the path the program was started by (CLI11 takes
+  // argv[0] where the app has no name: "Usage: /usr/lib/…/bin/rattleback simulate …").
+  app.name("rattleback");
   app.set_version_flag("--version", "rattleback " RATTLEBACK_VERSION);
   app.require_subcommand(1);
   app.footer(

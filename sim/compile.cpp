@@ -189,7 +189,7 @@ std::optional<rb::Error> checkRockingStep(const Model& model) {
   const double largest = 2 * M_PI / omega / kStepsPerRocking;
   if (model.dt <= largest) return std::nullopt;
   std::ostringstream msg;
-  msg << "= " << model.dt << " s is too large for the body's rocking: its fastest mode ("
+  msg << model.dt << " s is too large for the body's rocking: its fastest mode ("
       << omega / (2 * M_PI) << " Hz, a period of " << 2 * M_PI / omega << " s) needs at least "
       << kStepsPerRocking << " steps a period, so at most " << largest
       << " s (or give simulation.tolerance for adaptive steps)";
