@@ -264,7 +264,7 @@ int simulateCommand(const SimulateArgs& args) {
     check = tasks::checkRun(model, rate, run.summary, spins, options.cancelled);
     if (!check) return notWritten(args, {tasks::Ending::Interrupted, {}, "", model.duration});
   }
-  if (auto e = writer->commit({args.scene, loaded->scene.values}, model, rate, run.summary,
+  if (auto e = writer->commit({loaded->scene.file, loaded->scene.values}, model, rate, run.summary,
                               check ? tasks::checkJson(*check) : nlohmann::json());
       !e)
     return fail(e);

@@ -597,8 +597,8 @@ bool sceneChangedSince(const nlohmann::json& sidecar, const std::string& scene_p
 
 // The model of a run's scene, or why there is none to replay it on: `why` completes "SCENE …"
 // for the line `report` prints ("has changed since this run was simulated: …"), empty where there
-// is nothing to say (no scene named, or none to be found: the page then has no player, as for a
-// run made from a string).
+// is nothing to say (no scene named: the page then has no player, as for a run made from a
+// string).
 struct RunModel {
   std::optional<sim::Model> model;
   std::string scene;  ///< the scene file's path, where one was found
@@ -611,7 +611,13 @@ struct RunModel {
 RunModel runModelOf(const nlohmann::json& sidecar, const fs::path& dir) {
   if (field(sidecar, "command") != "simulate") return {};
   const auto scene_path = sceneOf(sidecar, dir);
-  if (!scene_path) return {};
+  // A scene read from a file when it ran (it has a fingerprint) that is not there now: moved or
+  // removed (a run made from a string has none, and nothing to say).
+  if (!scene_path) {
+    if (!field(sidecar, "scene_fingerprint").is_string()) return {};
+    return {std::nullopt, stringOr(field(sidecar, "scene_path"), ""),
+            "is not there any more: no 3D player for it (simulate it again to replay it)"};
+  }
   RunModel out{std::nullopt, *scene_path, ""};
   std::vector<scene::KeyValue> values;
   const nlohmann::json& put = field(sidecar, "scene_values");

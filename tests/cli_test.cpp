@@ -1312,6 +1312,13 @@ TEST(Report, ARunsSceneThatNoLongerLoadsIsSaidToAsItIs) {
                             " has changed since this run was simulated: no 3D player for it "
                             "(simulate it again to replay it)\n");
   EXPECT_FALSE(fs::exists(dir / "edit.player.js"));
+  // Moved or removed: said too (it had been passed over in silence).
+  fs::remove(yaml);
+  const Result gone = rattleback("report " + dir.string() + " -q");
+  ASSERT_EQ(gone.status, 0);
+  EXPECT_EQ(gone.err, csv + ": " + yaml.string() +
+                          " is not there any more: no 3D player for it (simulate it again to "
+                          "replay it)\n");
 }
 
 // A run made with --set values is replayed on the body those values make, not on the file's: the

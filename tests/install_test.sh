@@ -56,6 +56,18 @@ python_still "$work/prefix"
     --integrators rk4 -q -o b.csv --plot b.png &&
   test -s r.csv && test -s b.csv) || { echo "FAIL: the installed scenes are not found"; exit 1; }
 echo "ok: the installed scenes are found from another folder"
+# A run of an installed scene names the file it ran in its sidecar, so that report replays it in
+# 3D from any folder (a new user's trial: the sidecar named ./scenes/rattleback.yaml, which is
+# not there, and the page had no player and said nothing).
+if [ -e "$work/prefix/share/rattleback/player/rattleback-player.js" ]; then
+  rep=$(mktemp -d "$work/report.XXXX")
+  (cd "$rep" &&
+    "$work/prefix/bin/rattleback" simulate scenes/rattleback.yaml --duration 0.2 -q -o out/rattleback.csv &&
+    "$work/prefix/bin/rattleback" report out -q &&
+    test -s out/rattleback.player.js && grep -q 'data-run="rattleback"' out/index.html) ||
+    { echo "FAIL: report made no player for an installed scene's run"; exit 1; }
+  echo "ok: report replays an installed scene's run from another folder"
+fi
 mv "$work/prefix" "$work/moved"
 render_still "$work/moved"
 python_still "$work/moved"
