@@ -44,6 +44,10 @@ struct Panel {
 /// crowd at its left.
 bool logarithmicAxis(const std::vector<double>& values);
 
+/// A sweep plot's label for a varied key or a result column: the name with its unit,
+/// "initial.spin [rad/s]" (the schema's unit; none for lengths in file units or a count).
+std::string sweepLabel(const std::string& name);
+
 /// Makes `dir` when missing and checks that a file can be written into it (before a run whose
 /// plots go there); an error line with the system's reason otherwise.
 rb::Status checkPlotFolder(const std::string& dir);

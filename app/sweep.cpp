@@ -15,12 +15,27 @@
 #include "app/interrupt.hpp"
 #include "app/plot.hpp"
 #include "app/progress.hpp"
+#include "scene/key_path.hpp"
+#include "scene/keys.hpp"
 #include "tasks/output.hpp"
 #include "tasks/scene_args.hpp"
 #include "tasks/sweep.hpp"
 #include "tasks/sweep_jobs.hpp"
 
 namespace app {
+
+// An axis's label: the key or column with its unit, "initial.spin [rad/s]", as the run's plots
+// label theirs ("spin n [rad/s]"). A scene key's unit is the schema's; lengths in the file's
+// unit ("file units") and dimensionless values go bare (a new user's trial: the sweep's plots
+// said "initial.spin" and "first_reversal_s" with no units).
+std::string sweepLabel(const std::string& name) {
+  std::string unit;
+  if (const scene::Key* key = scene::findKey(scene::withoutIndex(name))) unit = key->unit;
+  for (const tasks::Column& c : tasks::sweepResultColumns())
+    if (name == c.name) unit = c.unit;
+  return unit.empty() || unit == "file units" ? name : name + " [" + unit + "]";
+}
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -104,8 +119,8 @@ rb::Status plotTable(const std::string& png, const std::string& metric, const st
   if (axes == 1) {
     Panel panel;
     panel.title = metric;
-    panel.x_label = table.keys[0];
-    panel.y_label = metric;
+    panel.x_label = sweepLabel(table.keys[0]);
+    panel.y_label = sweepLabel(metric);
     Series series;
     series.title = metric;
     std::vector<double> xs;
@@ -119,9 +134,9 @@ rb::Status plotTable(const std::string& png, const std::string& metric, const st
   }
   Heatmap map;
   map.title = title + ": " + metric + (fixed.empty() ? "" : " (" + fixed + ")");
-  map.x_label = table.keys[0];
-  map.y_label = table.keys[1];
-  map.value_label = metric;
+  map.x_label = sweepLabel(table.keys[0]);
+  map.y_label = sweepLabel(table.keys[1]);
+  map.value_label = sweepLabel(metric);
   map.x_values = table.axis_values[0];
   map.y_values = table.axis_values[1];
   for (std::size_t i0 = 0; i0 < map.x_values.size(); ++i0)

@@ -877,6 +877,19 @@ TEST(Plot, AGeometricSweepAxisIsDrawnLogarithmic) {
   EXPECT_FALSE(app::logarithmicAxis({1e-6, 1e-4}));           // two points: either way
 }
 
+// A sweep plot labels its axes with their units, as the run's plots do ("spin n [rad/s]"): the
+// scene key's from the schema, the result column's from the sidecar's table; lengths in file
+// units and counts bare (a new user's trial: "initial.spin", "first_reversal_s", no units).
+TEST(Plot, SweepAxesAreLabelledWithTheirUnits) {
+  EXPECT_EQ(app::sweepLabel("initial.spin"), "initial.spin [rad/s]");
+  EXPECT_EQ(app::sweepLabel("contact.air_drag"), "contact.air_drag [N m s]");
+  EXPECT_EQ(app::sweepLabel("body.mass"), "body.mass [kg]");
+  EXPECT_EQ(app::sweepLabel("first_reversal_s"), "first_reversal_s [s]");
+  EXPECT_EQ(app::sweepLabel("max_tilt_deg"), "max_tilt_deg [deg]");
+  EXPECT_EQ(app::sweepLabel("body.dents.at[0]"), "body.dents.at[0]");  // file units
+  EXPECT_EQ(app::sweepLabel("reversals"), "reversals");                // a count
+}
+
 // The sweep heatmap's script: numbers' minus signs as U+2212 (DejaVu's hyphen, turned by 30°,
 // read as "`6"), x labels level when they fit, turned only when they would not, and the note
 // on its own line under the axis title (it sat beside it, running to the edge).
