@@ -370,13 +370,21 @@ int sweepMergeCommand(const SweepMergeArgs& args) {
   if (!merged) return fail(merged);
   const tasks::Merged& m = merged.value();
   if (auto e = tasks::writeSweepTable(args.output, m.keys, m.lines, m.sidecar); !e) return fail(e);
+  const std::string sweep_file = m.sidecar.value("sweep", "sweep");
   if (!args.plot.empty()) {
     Table table{m.keys, m.axis_values, {}};
     for (const std::string& line : m.lines)
       table.values.push_back(metricOf(line, m.keys.size(), args.metric));
-    const std::string title = fs::path(m.sidecar.value("sweep", "sweep")).stem().string();
+    const std::string title = fs::path(sweep_file).stem().string();
     if (auto e = plotTable(args.plot, args.metric, title, table); !e) return fail(e);
   }
+  // The merged table and its plot go into the folder's manifest as an in-process sweep's do.
+  std::vector<tasks::OutputEntry> entries = {
+      {args.output, tasks::OutputKind::Sweep, sceneName(sweep_file), "", {}, {}}};
+  if (!args.plot.empty())
+    entries.push_back(
+        {args.plot, tasks::OutputKind::SweepPlot, sceneName(sweep_file), args.metric, {}, {}});
+  record(entries);
   if (!args.quiet)
     std::printf("merged          %lld rows from %zu shards into %s\n",
                 static_cast<long long>(m.rows), args.shards.size(), args.output.c_str());

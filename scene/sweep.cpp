@@ -216,6 +216,7 @@ rb::Result<Sweep> loadSweep(const std::string& path) {
       throw SweepFailure{path + ":1: base is required: the scene file the runs start from"};
     if (!base_node.IsScalar() || base_node.Scalar().empty())
       throw SweepFailure{at(base_key) + ": base must be the path of a scene file"};
+    sweep.base_as_written = base_node.Scalar();
     fs::path base = base_node.Scalar();
     if (base.is_relative()) base = fs::path(path).parent_path() / base;
     sweep.base = base.lexically_normal().string();

@@ -34,6 +34,7 @@ struct SweepAxis {
 struct Sweep {
   std::string file;  ///< as given
   std::string base;  ///< the base scene's path (resolved against the sweep file's folder)
+  std::string base_as_written;  ///< the base scene's path as the sweep file writes it
   std::vector<SweepAxis> axes;
   std::optional<double> duration;  ///< s; overrides simulation.duration
 

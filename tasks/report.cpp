@@ -372,6 +372,7 @@ struct SweepFiles {
   std::string name, csv;
   nlohmann::json meta;
   std::vector<std::string> images;
+  std::vector<std::string> parts;  ///< the shard tables merged into it, found in the folder
 };
 struct Folder {
   std::map<std::string, SceneFiles> scenes;
@@ -498,6 +499,33 @@ void placeByName(const fs::path& dir, const std::set<std::string>& placed, Folde
   }
 }
 
+// A shard's table whose merged table is in the folder (its sidecar lists the shard in
+// `merged_from`) is a part of that sweep, not a sweep of its own: it is listed under it. A shard
+// not merged yet stays a section of its own, which says it is one.
+void attachShards(std::vector<SweepFiles>& sweeps) {
+  for (auto it = sweeps.begin(); it != sweeps.end();) {
+    SweepFiles* whole = nullptr;
+    if (field(it->meta, "shard").is_object())
+      for (SweepFiles& merged : sweeps) {
+        const nlohmann::json& from = field(merged.meta, "merged_from");
+        if (&merged == &*it || !from.is_array() ||
+            field(merged.meta, "sweep") != field(it->meta, "sweep"))
+          continue;
+        for (const nlohmann::json& f : from)
+          if (f.is_string() && fs::path(f.get<std::string>()).filename() == it->csv)
+            whole = &merged;
+      }
+    if (!whole) {
+      ++it;
+      continue;
+    }
+    whole->parts.push_back(it->csv);
+    whole->images.insert(whole->images.end(), it->images.begin(), it->images.end());
+    it = sweeps.erase(it);
+  }
+  for (SweepFiles& sweep : sweeps) std::sort(sweep.parts.begin(), sweep.parts.end());
+}
+
 // A sweep's table (its sidecar says so), with its heatmaps NAME.png and NAME-*.png; a CSV of its
 // own (bench.csv) is no scene: it goes with the other files.
 void separateSweeps(const fs::path& dir, Folder& folder) {
@@ -510,7 +538,7 @@ void separateSweeps(const fs::path& dir, Folder& folder) {
       ++it;
       continue;
     }
-    SweepFiles sweep{it->first, it->second.at(".csv"), *meta, {}};
+    SweepFiles sweep{it->first, it->second.at(".csv"), *meta, {}, {}};
     for (auto o = others.begin(); o != others.end();) {
       const bool mine =
           endsWith(*o, ".png") && (*o == it->first + ".png" || o->rfind(it->first + "-", 0) == 0);
@@ -520,6 +548,7 @@ void separateSweeps(const fs::path& dir, Folder& folder) {
     folder.sweeps.push_back(std::move(sweep));
     it = scenes.erase(it);
   }
+  attachShards(folder.sweeps);
   for (auto it = scenes.begin(); it != scenes.end();) {
     const bool lone_csv = it->second.by_suffix.size() == 1 && it->second.has(".csv");
     if (lone_csv) {
@@ -736,17 +765,52 @@ void writeScene(std::ostream& out, const fs::path& dir, const std::string& name,
   out << "</section>\n";
 }
 
+// The base scene as the sweep file names it, not as the machine that ran it resolved it (an
+// absolute path of that machine); a sidecar from before `base_as_written` has only that.
+std::string baseAsNamed(const nlohmann::json& meta) {
+  const std::string written = stringOr(field(meta, "base_as_written"), "");
+  return written.empty() ? stringOr(field(meta, "base"), "?") : written;
+}
+
+// The sweep's runs: the product of its axes' sizes.
+long long sweepRows(const nlohmann::json& meta) {
+  long long rows = 1;
+  const nlohmann::json& axes = field(meta, "axes");
+  for (std::size_t i = 0; axes.is_array() && i < axes.size(); ++i) {
+    const nlohmann::json& values = field(axes[i], "values");
+    rows *= values.is_array() ? static_cast<long long>(values.size()) : 0;
+  }
+  return rows;
+}
+
 void writeSweep(std::ostream& out, const SweepFiles& sweep) {
+  const nlohmann::json& shard = field(sweep.meta, "shard");
   out << "<section id=\"sweep-" << escape(sweep.name) << "\"><h2>Sweep: " << escape(sweep.name)
-      << "</h2>\n<p>" << number(field(sweep.meta, "rows"), "%g") << " runs of "
-      << escape(stringOr(field(sweep.meta, "base"), "?")) << " over ";
+      << "</h2>\n<p>" << number(field(sweep.meta, "rows"), "%g") << " runs of ";
+  if (shard.is_object())
+    out << "the sweep's " << sweepRows(sweep.meta) << " (shard "
+        << number(field(shard, "index"), "%g") << " of " << number(field(shard, "count"), "%g")
+        << ", not merged here) of ";
+  const std::string sweep_file = stringOr(field(sweep.meta, "sweep"), "");
+  out << "<code>" << escape(baseAsNamed(sweep.meta)) << "</code>"
+      << (sweep_file.empty() ? std::string()
+                             : " (the base scene of <code>" +
+                                   escape(fs::path(sweep_file).filename().string()) + "</code>)")
+      << " over ";
   const nlohmann::json& axes = field(sweep.meta, "axes");
   for (std::size_t i = 0; axes.is_array() && i < axes.size(); ++i) {
     const nlohmann::json& values = field(axes[i], "values");
     out << (i ? " × " : "") << "<code>" << escape(stringOr(field(axes[i], "key"), "?"))
         << "</code> (" << (values.is_array() ? values.size() : 0) << " values)";
   }
-  out << ": <a href=\"" << url(sweep.csv) << "\">the table (CSV)</a></p><div class=\"grid\">\n";
+  out << ": <a href=\"" << url(sweep.csv) << "\">the table (CSV)</a>";
+  if (!sweep.parts.empty()) {
+    out << "; merged from " << sweep.parts.size() << " shard"
+        << (sweep.parts.size() == 1 ? "" : "s") << ":";
+    for (const std::string& part : sweep.parts)
+      out << " <a href=\"" << url(part) << "\">" << escape(part) << "</a>";
+  }
+  out << "</p><div class=\"grid\">\n";
   for (const std::string& image : sweep.images) writeFigure(out, image, "");
   out << "</div></section>\n";
 }

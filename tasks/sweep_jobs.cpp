@@ -83,7 +83,8 @@ rb::Result<nlohmann::json> readShardSidecar(const std::string& path) {
                              ".json: cannot read the shard's sidecar (each shard writes its "
                              "table and TABLE.json beside it)"};
   nlohmann::json meta = nlohmann::json::parse(in, nullptr, false);
-  if (meta.is_discarded() || meta.value("command", "") != "sweep" || !meta.contains("rows"))
+  if (meta.is_discarded() || meta.value("command", "") != "sweep" || !meta.contains("rows") ||
+      !meta.contains("axes") || !meta["axes"].is_array())
     return rb::Error{"", path + ".json: not the sidecar of a sweep table"};
   return meta;
 }
@@ -253,15 +254,17 @@ rb::Result<Merged> mergeShards(const std::vector<std::string>& shards) {
     auto meta = readShardSidecar(path);
     if (!meta) return meta.error();
     if (first &&
-        ((*first)["sweep"] != meta.value()["sweep"] || (*first)["rows"] != meta.value()["rows"] ||
-         (*first)["axes"] != meta.value()["axes"]))
+        ((*first)["sweep"] != meta.value()["sweep"] || (*first)["axes"] != meta.value()["axes"]))
       return rb::Error{"", path + ": from another sweep than " + shards.front() + " (" +
                                meta.value().value("sweep", "?") + ")"};
     if (!first) first = meta.value();
     if (auto ok = readShardRows(path, head, rows, shards.front()); !ok) return ok.error();
   }
   Merged merged;
-  merged.rows = (*first)["rows"].get<std::int64_t>();
+  // The sweep's rows: the product of its axes' sizes (a shard's `rows` counts its own).
+  merged.rows = 1;
+  for (const auto& axis : (*first)["axes"])
+    merged.rows *= static_cast<std::int64_t>(axis.value("values", nlohmann::json::array()).size());
   std::vector<std::int64_t> missing;
   for (std::int64_t r = 0; r < merged.rows && missing.size() < 6; ++r)
     if (!rows.count(r)) missing.push_back(r);
@@ -283,6 +286,7 @@ rb::Result<Merged> mergeShards(const std::vector<std::string>& shards) {
   }
   for (const auto& [r, entry] : rows) merged.lines.push_back(entry.first);
   merged.sidecar = *first;
+  merged.sidecar["rows"] = merged.rows;
   merged.sidecar["shard"] = nullptr;
   merged.sidecar["merged_from"] = shards;
   return merged;
@@ -294,8 +298,14 @@ nlohmann::json sweepSidecar(const scene::Sweep& sweep, const std::optional<Shard
   sidecar["command"] = "sweep";
   sidecar["sweep"] = sweep.file;
   sidecar["base"] = sweep.base;
-  sidecar["rows"] = sweep.rows();
-  sidecar["shard"] = shard ? nlohmann::json{{"index", shard->index}, {"count", shard->count}}
+  sidecar["base_as_written"] = sweep.base_as_written;
+  // The rows of this table: a shard's own (rows I, I + N, … of the sweep's), as `rows` of a
+  // run's sidecar counts the rows of its CSV; the sweep's are the product of the axes' sizes.
+  sidecar["rows"] =
+      shard ? (sweep.rows() - shard->index + shard->count - 1) / shard->count : sweep.rows();
+  sidecar["shard"] = shard ? nlohmann::json{{"index", shard->index},
+                                            {"count", shard->count},
+                                            {"sweep_rows", sweep.rows()}}
                            : nlohmann::json(nullptr);
   sidecar["axes"] = sweepAxesJson(sweep);
   return sidecar;

@@ -425,6 +425,60 @@ TEST(Sweep, TheMergeRefusesAMissingOrRepeatedRow) {
   EXPECT_FALSE(fs::exists(dir / "out.csv.partial"));
 }
 
+// The merge lists its table and plot in the folder's manifest as an in-process sweep does, and
+// the report shows the merged sweep once, its shards as its parts (each shard had been a
+// "Sweep:" section of its own saying it held all the sweep's runs). A shard's sidecar counts
+// its own rows.
+TEST(Sweep, TheMergeIsListedAndTheReportShowsTheSweepOnce) {
+  const fs::path dir = scratch();
+  const fs::path sweep = writeSweep(dir, smallSweep());
+  const fs::path par = dir / "par";  // made by the shards
+  std::string shards;
+  for (int i = 0; i < 3; ++i) {
+    const std::string shard = tasks::shardPath((par / "t.csv").string(), tasks::Shard{i, 3});
+    const Outcome r = rattleback(
+        dir, "sweep " + sweep.string() + " -q --shard " + std::to_string(i) + "/3 -o " + shard);
+    ASSERT_EQ(r.status, 0) << r.err;
+    shards += " " + shard;
+  }
+  const nlohmann::json shard_meta =
+      nlohmann::json::parse(slurp(par / "t.shard-1-of-3.csv.json"), nullptr, false);
+  EXPECT_EQ(shard_meta.value("rows", -1), 2) << shard_meta.dump();  // rows 1 and 4 of 6
+  EXPECT_EQ(shard_meta["shard"].value("sweep_rows", -1), 6) << shard_meta.dump();
+  EXPECT_EQ(shard_meta.value("base_as_written", ""), kBase);
+
+  // Not merged yet: each shard says it is one.
+  ASSERT_EQ(rattleback(dir, "report -q " + par.string()).status, 0);
+  const std::string before = slurp(par / "index.html");
+  EXPECT_NE(before.find("2 runs of the sweep's 6 (shard 1 of 3, not merged here)"),
+            std::string::npos)
+      << before;
+
+  const Outcome merged = rattleback(dir, "sweep merge -q " + (par / "t.csv").string() + shards +
+                                             " --plot " + (par / "t.png").string());
+  ASSERT_EQ(merged.status, 0) << merged.err;
+  const nlohmann::json manifest =
+      nlohmann::json::parse(slurp(par / "rattleback-manifest.json"), nullptr, false);
+  std::map<std::string, std::string> kinds;
+  for (const auto& e : manifest["outputs"]) kinds[e["file"]] = e["kind"];
+  EXPECT_EQ(kinds["t.csv"], "sweep") << manifest.dump();
+  EXPECT_EQ(kinds["t.png"], "sweep_plot") << manifest.dump();
+  EXPECT_EQ(nlohmann::json::parse(slurp(par / "t.csv.json"))["rows"], 6);
+
+  ASSERT_EQ(rattleback(dir, "report -q " + par.string()).status, 0);
+  const std::string page = slurp(par / "index.html");
+  std::size_t sections = 0;
+  for (std::size_t at = page.find("<h2>Sweep: "); at != std::string::npos;
+       at = page.find("<h2>Sweep: ", at + 1))
+    ++sections;
+  EXPECT_EQ(sections, 1u) << page;
+  EXPECT_NE(page.find("<h2>Sweep: t</h2>"), std::string::npos) << page;
+  EXPECT_NE(page.find("6 runs of"), std::string::npos) << page;
+  EXPECT_NE(page.find("merged from 3 shards: <a href=\"t.shard-0-of-3.csv\">"), std::string::npos)
+      << page;
+  EXPECT_NE(page.find("<img src=\"t.png\""), std::string::npos) << page;
+}
+
 // The Slurm script: a job array of N tasks, one shard each, and the merge after all of them.
 TEST(Sweep, EmitSlurmWritesAJobArrayAndItsMerge) {
   const fs::path dir = scratch();
