@@ -303,7 +303,12 @@ rb::Result<std::string> outputOf(const SweepArgs& args, const std::optional<task
   std::string output =
       args.output.empty() ? "out/" + fs::path(args.file).stem().string() + ".csv" : args.output;
   if (auto ok = tasks::checkTableIsAFile(output); !ok) return ok.error();
-  if (!args.emit.empty()) return output;
+  if (!args.emit.empty()) {
+    // The job script's logs go into the table's folder, which Slurm opens before the script
+    // runs: it is made now, or the tasks fail before their first line with nothing said.
+    if (auto made = tasks::makeParentFolder(output); !made) return made.error();
+    return output;
+  }
   if (shard && args.output.empty()) output = tasks::shardPath(output, *shard);
   if (!args.plot.empty())
     if (auto ok = checkPlotFile(args.plot); !ok) return ok.error();

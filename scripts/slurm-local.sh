@@ -115,20 +115,27 @@ if [ "$state" != idle ]; then
 fi
 echo "slurm-local: slurmctld and slurmd up on $host ($cpus CPUs) in $work"
 
-out=$work/out/table.csv
-mkdir -p "$work/out"
+# Into a folder that does not exist yet: the script's #SBATCH --output points into it, and
+# Slurm opens that before the script's first line runs (the tasks failed with nothing said).
+out=$work/fresh/out/table.csv
 "$rb" sweep "$sweep_file" --emit slurm --shards "$shards" -o "$out" > "$work/job.sh"
 job=$(sbatch --parsable "$work/job.sh")
 echo "slurm-local: submitted job array $job ($shards tasks) and, from its first task, the merge"
 
 # Wait for the array, then for the merge it submits, to leave the queue.
+# An empty queue for 5 s with no table means the jobs failed (e.g. their logs could not be
+# opened): say so then, with the logs, rather than after the timeout.
 deadline=$((SECONDS + 300))
+empty=0
 while :; do
-  [ -f "$out" ] && [ -z "$(squeue -h -o %i 2>/dev/null)" ] && break
-  if [ $SECONDS -gt $deadline ]; then
-    echo "slurm-local: timed out; queue:" >&2
+  queue=$(squeue -h -o %i 2>/dev/null || true)
+  [ -f "$out" ] && [ -z "$queue" ] && break
+  if [ -z "$queue" ]; then empty=$((empty + 1)); else empty=0; fi
+  if [ $SECONDS -gt $deadline ] || [ $empty -gt 10 ]; then
+    echo "slurm-local: no merged table $out; queue:" >&2
     squeue >&2 || true
-    cat "$work"/out/slurm-*.out >&2 2>/dev/null || true
+    cat "$(dirname "$out")"/slurm-*.out >&2 2>/dev/null || true
+    grep -i "could not\|error" "$work/log/slurmd.log" >&2 || true
     exit 1
   fi
   sleep 0.5

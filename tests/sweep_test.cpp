@@ -497,6 +497,15 @@ TEST(Sweep, EmitSlurmWritesAJobArrayAndItsMerge) {
   const Outcome none = rattleback(dir, "sweep " + sweep.string() + " --emit slurm");
   EXPECT_EQ(none.status, 2);
   EXPECT_NE(none.err.find("--shards"), std::string::npos);
+  // The table's folder is made with the script: its #SBATCH --output logs go there, and Slurm
+  // opens them before the script runs (every task failed, silently, into a new folder).
+  const Outcome fresh = rattleback(dir, "sweep " + sweep.string() + " --emit slurm --shards 2 -o " +
+                                            (dir / "new" / "t.csv").string());
+  ASSERT_EQ(fresh.status, 0) << fresh.err;
+  EXPECT_NE(fresh.out.find("#SBATCH --output=" + (dir / "new").string() + "/slurm-"),
+            std::string::npos)
+      << fresh.out;
+  EXPECT_TRUE(fs::is_directory(dir / "new"));
 }
 
 // --plot goes to the merge job (it was dropped: the merge made no heatmap); GNU parallel runs
