@@ -457,7 +457,17 @@ class Player {
       if (s === 1) o.selected = true;
       this.speedSelect.appendChild(o);
     }
-    this.speedSelect.addEventListener('change', () => this.setSpeed(parseFloat(this.speedSelect.value)));
+    // A speed chosen with the pointer gives the keys back to the player (they went to the menu:
+    // → chose the next speed, space did nothing); one chosen with the keyboard (the menu tabbed
+    // to, its arrows) leaves the focus on the menu, so its keys go on choosing.
+    this.speedKeyed = false;
+    this.speedSelect.addEventListener('keydown', () => { this.speedKeyed = true; });
+    this.speedSelect.addEventListener('pointerdown', () => { this.speedKeyed = false; });
+    this.speedSelect.addEventListener('blur', () => { this.speedKeyed = false; });
+    this.speedSelect.addEventListener('change', () => {
+      this.setSpeed(parseFloat(this.speedSelect.value));
+      if (!this.speedKeyed) this.root.focus({ preventScroll: true });
+    });
     bar.append(this.backButton, this.playButton, this.forwardButton, this.slider,
                el('span', 'rbp-label', 'speed'), this.speedSelect);
     main.appendChild(bar);

@@ -51,6 +51,7 @@ try:
     from selenium.webdriver.common.action_chains import ActionChains
     from selenium.webdriver.common.by import By
     from selenium.webdriver.common.keys import Keys
+    from selenium.webdriver.support.ui import Select
 except ImportError:
     print("selenium is not installed (Debian: python3-selenium); skipped")
     sys.exit(77)
@@ -488,6 +489,37 @@ class Checker:
         self.check(self.js("return arguments[0].contains(document.activeElement);", element),
                    f"{where}: a click on the player does not focus it")
         self.keys(element, where, run)
+        self.speed_menu(element, where, run)
+
+    def speed_menu(self, element, where, run):
+        # A speed chosen from the menu with the pointer gives the keys back to the player (they
+        # went to the menu: → chose the next speed, space did nothing); tabbed to, the menu's
+        # own arrows still choose speeds.
+        t = run["t"]
+        k = len(t) // 3
+        self.hook(element, "pause()")
+        menu = element.find_element(By.CSS_SELECTOR, ".rbp-speed")
+        Select(menu).select_by_value("0.5")
+        self.check(self.hook(element, "speed()") == 0.5, f"{where}: the menu did not set 0.5×")
+        self.hook(element, "setTime(arguments[1])", between(t, k, 0.4))
+        ActionChains(self.driver).send_keys(Keys.ARROW_RIGHT).perform()
+        speed, got = self.hook(element, "speed()"), self.hook(element, "time()")
+        self.check(speed == 0.5 and got == t[k + 1],
+                   f"{where}: → after choosing 0.5× made the speed {speed}× and the time {got}, "
+                   f"not 0.5× and {t[k + 1]}")
+        ActionChains(self.driver).send_keys(Keys.SPACE).perform()
+        time.sleep(0.3)
+        self.check(self.hook(element, "playing()"), f"{where}: space after choosing a speed does not play")
+        self.hook(element, "pause()")
+        self.js("document.activeElement && document.activeElement.blur(); arguments[0].focus();", menu)
+        ActionChains(self.driver).send_keys(Keys.ARROW_DOWN).perform()
+        speed = self.hook(element, "speed()")
+        self.check(speed == 1 and self.js("return document.activeElement === arguments[0];", menu),
+                   f"{where}: ↓ on the focused menu made the speed {speed}×, not 1×, or moved the focus")
+        ActionChains(self.driver).send_keys(Keys.ARROW_DOWN).perform()
+        speed = self.hook(element, "speed()")
+        self.check(speed == 2, f"{where}: ↓ again on the menu made the speed {speed}×, not 2×")
+        self.hook(element, "setSpeed(1)")
 
     def keys(self, element, where, run):
         t = run["t"]
