@@ -1902,15 +1902,16 @@ TEST(Cli, AStillPastTheStepLimitNamesT) {
   EXPECT_FALSE(fs::exists(png));
 }
 
-// Ctrl-C while a still frames the run (the framing runs the whole scene, here 20,000 s of Kane
-// & Levinson at 0.1 ms: a minute; the run to t = 0 is nothing) stops it with no still written,
-// as Ctrl-C during the run to t does: the framing of part of the run would place the camera
-// for a run the scene does not make.
+// Ctrl-C while a still frames the run (the framing runs the whole scene, here 40,000 s of Kane
+// & Levinson at 0.1 ms: two minutes; the run to t = 0 is nothing) stops it with no still
+// written, as Ctrl-C during the run to t does: the framing of part of the run would place the
+// camera for a run the scene does not make. Ctrl-C after 5 s: long after start-up even on a
+// busy machine (at 2 s it once came before the handler was in place while builds ran).
 TEST(Cli, CtrlCWhileAStillFramesWritesNoStill) {
   const fs::path png = tempFile("framing.png");
   const fs::path err = tempFile("framing.err");
-  const std::string command = "timeout -s INT 2 " + std::string(RATTLEBACK_BIN) + " still " +
-                              scene("kane-levinson") + " --t 0 --duration 20000 -o " +
+  const std::string command = "timeout -s INT 5 " + std::string(RATTLEBACK_BIN) + " still " +
+                              scene("kane-levinson") + " --t 0 --duration 40000 -o " +
                               png.string() + " 2>" + err.string() + " </dev/null";
   const int raw = std::system(command.c_str());
   EXPECT_NE(WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, 0);
@@ -1922,11 +1923,12 @@ TEST(Cli, CtrlCWhileAStillFramesWritesNoStill) {
 
 // A video over ten minutes long is said up front, on or off a terminal: a playback typed 0.001
 // for 1 rendered 180,000 frames with nothing said off a terminal for as long as it ran (a new
-// user's trial). Stopped by Ctrl-C after two seconds: the note came first, nothing is written.
+// user's trial). Stopped by Ctrl-C after four seconds (the render takes a minute): the note came
+// first, nothing is written.
 TEST(Cli, ALongVideoIsSaidUpFront) {
   const fs::path mp4 = tempFile("long.mp4");
   const fs::path err = tempFile("long.err");
-  const std::string command = "timeout -s INT 2 " + std::string(RATTLEBACK_BIN) + " render " +
+  const std::string command = "timeout -s INT 4 " + std::string(RATTLEBACK_BIN) + " render " +
                               scene("rattleback") +
                               " --playback 0.001 --duration 1 --size 64x48 -o " + mp4.string() +
                               " 2>" + err.string() + " </dev/null";
