@@ -668,11 +668,14 @@ RunModel runModelOf(const nlohmann::json& sidecar, const fs::path& dir) {
     return out;
   }
   // The same content that no longer loads: this rattleback reads it otherwise than the one
-  // that ran it (a key since renamed, a check since added); its own error line says how.
+  // that ran it (a key since renamed, a check since added); its own error line says how. (A
+  // sidecar from before the fingerprint cannot tell that from an edit.)
   auto loaded = scene::loadWithValues(text.value(), *scene_path, values, "scene_values");
   auto model = loaded ? scene::loadModel(loaded.value()) : rb::Result<sim::Model>(loaded.error());
   if (!model) {
-    out.why = "no longer loads in this rattleback (" + model.error().text() +
+    out.why = std::string(fingerprint.is_string() ? "no longer loads in this rattleback ("
+                                                  : "no longer loads (") +
+              model.error().text() +
               "): no 3D player for it (mend the scene and simulate it again to replay it)";
     return out;
   }
