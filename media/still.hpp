@@ -21,7 +21,7 @@ struct StillRequest {
   bool transparent = false;  ///< alpha: no floor, no background, no read-outs
   render::Backend backend = render::Backend::Auto;
   std::function<bool()> cancelled;  ///< asked as the run goes: true stops (may be empty)
-  /// Called as the runs go (the framing's over the whole run, then the one to t), with the
+  /// Called as the runs go (the one to t, then the framing's over the whole run), with the
   /// thousandths done and 1000 (may be empty).
   std::function<void(std::int64_t, std::int64_t)> progress;
 };
