@@ -15,8 +15,6 @@
 #include "app/interrupt.hpp"
 #include "app/plot.hpp"
 #include "app/progress.hpp"
-#include "scene/key_path.hpp"
-#include "scene/keys.hpp"
 #include "tasks/output.hpp"
 #include "tasks/scene_args.hpp"
 #include "tasks/sweep.hpp"
@@ -29,10 +27,7 @@ namespace app {
 // unit ("file units") and dimensionless values go bare (a new user's trial: the sweep's plots
 // said "initial.spin" and "first_reversal_s" with no units).
 std::string sweepLabel(const std::string& name) {
-  std::string unit;
-  if (const scene::Key* key = scene::findKey(scene::withoutIndex(name))) unit = key->unit;
-  for (const tasks::Column& c : tasks::sweepResultColumns())
-    if (name == c.name) unit = c.unit;
+  const std::string unit = tasks::sweepColumnUnit(name);
   return unit.empty() || unit == "file units" ? name : name + " [" + unit + "]";
 }
 

@@ -121,6 +121,13 @@ std::span<const Column> sweepResultColumns() {
   return kResults;
 }
 
+std::string sweepColumnUnit(const std::string& name) {
+  for (const Column& c : kResults)
+    if (name == c.name) return c.unit;
+  const scene::Key* key = scene::findKey(scene::withoutIndex(name));
+  return key ? std::string(key->unit) : "";
+}
+
 bool isSweepMetric(const std::string& name) {
   for (const Column& c : kResults)
     if (name == c.name && name != "status") return true;
@@ -173,7 +180,7 @@ nlohmann::json sweepColumnsJson(const std::vector<std::string>& keys) {
   for (const std::string& key : keys) {
     const scene::Key* k = scene::findKey(scene::withoutIndex(key));
     columns.push_back({{"name", key},
-                       {"unit", k ? std::string(k->unit) : ""},
+                       {"unit", sweepColumnUnit(key)},
                        {"meaning", "the value put into the scene" +
                                        (k ? ": " + std::string(k->doc) : std::string())}});
   }

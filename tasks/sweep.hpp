@@ -46,6 +46,9 @@ struct SweepRow {
 
 /// The result columns after the axes' (name and unit), in the table's order.
 std::span<const Column> sweepResultColumns();
+/// The unit of a sweep table's column: a varied key's from the schema (lengths "file units"),
+/// a result column's from sweepResultColumns(); "" for none (the sidecar and the plots').
+std::string sweepColumnUnit(const std::string& name);
 /// Whether `name` is a result column with a number (what a heatmap can show).
 bool isSweepMetric(const std::string& name);
 /// "a, b or c": the metrics, for messages and --help.
