@@ -264,8 +264,9 @@ int simulateCommand(const SimulateArgs& args) {
     check = tasks::checkRun(model, rate, run.summary, spins, options.cancelled);
     if (!check) return notWritten(args, {tasks::Ending::Interrupted, {}, "", model.duration});
   }
-  if (auto e = writer->commit({loaded->scene.file, loaded->scene.values}, model, rate, run.summary,
-                              check ? tasks::checkJson(*check) : nlohmann::json());
+  if (auto e =
+          writer->commit({loaded->scene.file, loaded->scene.values, loaded->scene.content}, model,
+                         rate, run.summary, check ? tasks::checkJson(*check) : nlohmann::json());
       !e)
     return fail(e);
   if (!args.plot_dir.empty())

@@ -33,6 +33,7 @@ namespace {
 struct Run {
   std::string scene;
   std::vector<scene::KeyValue> values;  ///< put in over the scene file (with_values)
+  std::string content;                  ///< the scene file's content as read (scene::Loaded)
   sim::Model model;
   double rate = tasks::kDefaultRate;
   std::vector<sim::Telemetry> samples;
@@ -90,6 +91,7 @@ std::shared_ptr<Run> simulate(const LoadedScene& loaded, double rate, bool check
   auto run = std::make_shared<Run>();
   run->scene = loaded.value.scene.file;
   run->values = loaded.value.scene.values;
+  run->content = loaded.value.scene.content;
   run->model = model;
   run->rate = rate;
   const tasks::SimulateResult result =
@@ -228,7 +230,7 @@ PYBIND11_MODULE(_core, m) {
       .def("sidecar",
            [](const Run& r) {
              return toPython(
-                 tasks::telemetrySidecar({r.scene, r.values}, r.model, r.rate, r.summary,
+                 tasks::telemetrySidecar({r.scene, r.values, r.content}, r.model, r.rate, r.summary,
                                          static_cast<std::int64_t>(r.samples.size()), r.check));
            })
       .def_readonly("scene", &Run::scene)
@@ -238,8 +240,8 @@ PYBIND11_MODULE(_core, m) {
         {
           py::gil_scoped_release release;
           const rb::OutputNamedBy naming("to_csv");  // the way out an error line suggests
-          written = tasks::writeTelemetry(path, {r.scene, r.values}, r.model, r.rate, r.summary,
-                                          r.samples, r.check);
+          written = tasks::writeTelemetry(path, {r.scene, r.values, r.content}, r.model, r.rate,
+                                          r.summary, r.samples, r.check);
           // Listed in the folder's manifest, as the command line lists it (a failure to list
           // loses nothing: the report then places the file by its name).
           if (written)

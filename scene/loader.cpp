@@ -350,7 +350,10 @@ rb::Result<Loaded> loadString(const std::string& yaml, const std::string& name) 
   } catch (const YAML::Exception& e) {
     return malformedYaml(name, yaml, e);  // syntax errors: yaml-cpp knows the line but no key
   }
-  return loadTree(root, name, {});
+  std::string content = YAML::Dump(root);  // yamlContent(yaml), without parsing it again
+  auto loaded = loadTree(root, name, {});
+  if (loaded) loaded->content = std::move(content);
+  return loaded;
 }
 
 rb::Result<Loaded> loadWithValues(const std::string& yaml, const std::string& name,
@@ -361,6 +364,7 @@ rb::Result<Loaded> loadWithValues(const std::string& yaml, const std::string& na
   } catch (const YAML::Exception& e) {
     return malformedYaml(name, yaml, e);
   }
+  std::string content = YAML::Dump(root);  // yamlContent(yaml), before the values go in
   if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
   std::map<std::string, std::string> places;
   for (const KeyValue& kv : values) {
@@ -394,7 +398,10 @@ rb::Result<Loaded> loadWithValues(const std::string& yaml, const std::string& na
   }
   replaceStepSetting(root, places);
   auto loaded = loadTree(root, name, places);
-  if (loaded) loaded->values = values;
+  if (loaded) {
+    loaded->values = values;
+    loaded->content = std::move(content);
+  }
   return loaded;
 }
 

@@ -45,6 +45,10 @@ struct Loaded {
   /// The values put in over the text (loadWithValues: --set, Python's with_values), in order:
   /// with the file they make the scene as run (a telemetry sidecar records them).
   std::vector<KeyValue> values;
+  /// The file's content as read, before any values were put in (yamlContent's text): what a
+  /// telemetry sidecar's scene_fingerprint is of, taken when the scene was read, so that a file
+  /// edited while the run goes on (or before Python's to_csv) does not stand for the run's.
+  std::string content;
 };
 
 /// Errors come back as rb::Error with an empty key and one line, ready to print:

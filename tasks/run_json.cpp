@@ -77,7 +77,7 @@ std::string fingerprintOf(const std::vector<std::string>& texts) {
 
 std::string sceneFingerprint(const std::string& path) {
   const auto text = scene::readSceneFile(path);
-  return text ? fingerprintOf({scene::yamlContent(text.value())}) : "";
+  return text ? fingerprintOf({scene::yamlContent(text.value())}) : "";  // as Loaded::content
 }
 
 }  // namespace tasks

@@ -146,10 +146,9 @@ nlohmann::json telemetrySidecar(const RunScene& scene, const sim::Model& model, 
   std::error_code ec;
   const std::filesystem::path absolute = std::filesystem::absolute(scene.file, ec);
   j["scene_path"] = ec ? scene.file : absolute.lexically_normal().string();
-  // The scene's content as it was run, so that `report` can tell when the file has been edited
-  // since and its 3D player would draw another body than the one simulated.
-  const std::string fingerprint = sceneFingerprint(scene.file);
-  j["scene_fingerprint"] = fingerprint.empty() ? nlohmann::json() : nlohmann::json(fingerprint);
+  // The scene's content as it was read for the run, so that `report` can tell when the file has
+  // been edited since and its 3D player would draw another body than the one simulated.
+  j["scene_fingerprint"] = fingerprintOf({scene.content});
   // The values put in over the file, in order ({"key", "value": YAML text}): the file and these
   // make the scene as run.
   j["scene_values"] = nlohmann::json::array();

@@ -61,10 +61,12 @@ SimulateResult simulate(const sim::Model& model, const SimulateOptions& options)
 
 /// The scene a run was made of, as its sidecar records it: the file as named, and the values put
 /// in over it (--set, Python's with_values; scene::Loaded::values), which `report` puts in
-/// again to draw the body that ran.
+/// again to draw the body that ran, and the file's content as read (scene::Loaded::content),
+/// whose fingerprint tells `report` whether the file still holds that scene.
 struct RunScene {
   std::string file;
   std::vector<scene::KeyValue> values;
+  std::string content;
 };
 
 /// The sidecar X.csv.json: what the CSV is (program, scene, columns and units, the model) and

@@ -3,6 +3,7 @@ as the same text."""
 
 import csv
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -55,6 +56,24 @@ def test_values_put_in_are_the_command_lines_set(tmp_path):
     a, b = sidecars_without_wall_time(tmp_path)
     assert a == b
     assert a["scene_values"] == [{"key": "body.paraboloid.a", "value": "1.2"}]
+
+
+def test_the_sidecar_fingerprints_the_scene_as_it_was_read(tmp_path):
+    """A run written after its scene file was edited still fingerprints the scene it ran: the
+    fingerprint was taken of the file as to_csv found it, so `report` drew the edited body for
+    the old run without a word."""
+    yaml = tmp_path / "edit.yaml"
+    yaml.write_text(Path(scene_path("rattleback.yaml")).read_text())
+    run = rb.simulate(str(yaml), duration=0.2, rate=100)
+    run.to_csv(tmp_path / "before.csv")
+    yaml.write_text(yaml.read_text().replace("a: 1.0, p: 0.5", "a: 1.2, p: 0.5"))
+    run.to_csv(tmp_path / "after.csv")
+    rb.simulate(str(yaml), duration=0.2, rate=100).to_csv(tmp_path / "edited.csv")
+
+    def fingerprint(name):
+        return json.loads((tmp_path / f"{name}.csv.json").read_text())["scene_fingerprint"]
+    assert fingerprint("after") == fingerprint("before")
+    assert fingerprint("edited") != fingerprint("before")
 
 
 def test_the_arrays_are_the_csv_columns(tmp_path, default_scene):
