@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 
 #include "app/suggest.hpp"
@@ -230,15 +231,36 @@ const std::vector<CommandSpec>& commands() {
   return table;
 }
 
+namespace {
+
+// --help's last line: where the documentation is. An installed program's pages are in
+// <prefix>/share/doc/rattleback (found relative to the program, as the prefix may move); a
+// program run from its build tree points to the source's docs/.
+std::string documentation() {
+  const char* more = " rattleback COMMAND --help for a command's options.";
+  std::error_code error;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (!error) {
+    const std::filesystem::path docs =
+        (self.parent_path() / RATTLEBACK_DOCS_RELATIVE).lexically_normal();
+    if (std::filesystem::is_regular_file(docs / "getting-started.md", error))
+      return "Documentation: " + docs.string() + "/ (getting-started.md first)." + more;
+  }
+  return std::string(
+             "Documentation: docs/ in the source (docs/getting-started.md first; bash "
+             "scripts/docs.sh builds it as a site into site/).") +
+         more;
+}
+
+}  // namespace
+
 Cli::Cli() {
   // The usage lines say "rattleback", not the path the program was started by (CLI11 takes
   // argv[0] where the app has no name: "Usage: /usr/lib/…/bin/rattleback simulate …").
   app.name("rattleback");
   app.set_version_flag("--version", "rattleback " RATTLEBACK_VERSION);
   app.require_subcommand(1);
-  app.footer(
-      "Documentation: docs/ in the source (docs/getting-started.md first; bash scripts/docs.sh "
-      "builds it as a site into site/). rattleback COMMAND --help for a command's options.");
+  app.footer(documentation());
   for (const CommandSpec& spec : commands())
     spec.define(*app.add_subcommand(spec.name, spec.summary), *this);
 }

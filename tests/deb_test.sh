@@ -25,7 +25,7 @@ grep -q "_core.cpython" <<<"$(dpkg-deb -c "$deb")" || { echo "FAIL: the package 
 contents=$(dpkg-deb -c "$deb")
 for f in ./usr/bin/rattleback ./usr/libexec/rattleback-render ./usr/share/rattleback/fonts.txt ./usr/share/rattleback/shaders/points.frag \
          ./usr/lib/python3/dist-packages/rattleback/__init__.py ./usr/share/rattleback/scenes/rattleback.yaml \
-         ./usr/share/rattleback/sweeps/spin-drag.yaml; do
+         ./usr/share/rattleback/sweeps/spin-drag.yaml ./usr/share/doc/rattleback/getting-started.md; do
   grep -q " $f\$" <<<"$contents" || { echo "FAIL: the package lacks $f"; exit 1; }
 done
 echo "ok: $(basename "$deb"), $(stat -c %s "$deb") bytes"

@@ -48,6 +48,15 @@ for f in bin/rattleback share/rattleback/fonts.txt share/rattleback/shaders/poin
 done
 render_still "$work/prefix"
 python_still "$work/prefix"
+# The documentation is installed, and the installed --help names where (it named "docs/ in the
+# source", which an installed user does not have).
+for f in share/doc/rattleback/getting-started.md share/doc/rattleback/images/rattleback-oblique.png; do
+  [ -e "$work/prefix/$f" ] || { echo "FAIL: the install lacks $f"; exit 1; }
+done
+help=$("$work/prefix/bin/rattleback" --help)
+grep -q "^Documentation: $work/prefix/share/doc/rattleback/ (getting-started.md first)" <<<"$help" ||
+  { echo "FAIL: the installed --help does not name the installed documentation: ${help##*$'\n'}"; exit 1; }
+echo "ok: the installed --help names $work/prefix/share/doc/rattleback"
 # The shipped scenes and sweeps are installed, and found by their relative names from any folder
 # (issue 26: plain `bench` and `still scenes/rattleback.yaml` failed outside the source tree).
 (cd "$(mktemp -d "$work/elsewhere.XXXX")" &&
