@@ -41,13 +41,22 @@ struct Run {
   nlohmann::json check;  ///< checkJson, or null without check=True
 };
 
-// One column of the samples as a NumPy array (a copy: the arrays outlive the run).
+// Made read-only: a column is the run's record, and to_csv writes the samples, not the arrays
+// (`s = run.spin; s *= 2` changed run.spin and to_pandas() but not the CSV). The flag is set on
+// the array itself, as pybind11's Eigen views set it, for the per-call cost.
+template <typename A>
+A frozen(A a) {
+  py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+  return a;
+}
+
+// One column of the samples as a NumPy array (a copy: the arrays outlive the run), read-only.
 template <typename F>
 py::array_t<double> column(const std::vector<sim::Telemetry>& samples, F value) {
   py::array_t<double> out(static_cast<py::ssize_t>(samples.size()));
   double* p = out.mutable_data();
   for (const sim::Telemetry& s : samples) *p++ = value(s);
-  return out;
+  return frozen(std::move(out));
 }
 
 py::dict columns(const Run& run) {
@@ -73,11 +82,11 @@ py::dict columns(const Run& run) {
   py::array_t<std::int64_t> contacts(static_cast<py::ssize_t>(s.size()));
   std::int64_t* c = contacts.mutable_data();
   for (const T& x : s) *c++ = x.contacts;
-  d["contacts"] = contacts;
+  d["contacts"] = frozen(std::move(contacts));
   d["normal_force"] = column(s, [](const T& x) { return x.normal_force; });
   py::list modes;
   for (const T& x : s) modes.append(py::str(std::string(rb::nameOf(x.mode))));
-  d["mode"] = py::module_::import("numpy").attr("array")(modes);
+  d["mode"] = frozen(py::array(py::module_::import("numpy").attr("array")(modes)));
   d["qw"] = column(s, [](const T& x) { return tasks::attitude(x).w(); });
   d["qx"] = column(s, [](const T& x) { return tasks::attitude(x).x(); });
   d["qy"] = column(s, [](const T& x) { return tasks::attitude(x).y(); });

@@ -168,7 +168,8 @@ class Run:
     tilt_deg, x, y, z, wx, wy, wz, Lz, contacts, normal_force, mode, qw, qx, qy, qz`` (the
     last four the attitude quaternion: unit, scalar first, body to world); ``units`` gives each
     one's unit. ``result`` is the sidecar's ``result`` (status, reversals, energy, steps, …),
-    ``model`` its ``model``.
+    ``model`` its ``model``. The arrays are read-only, as the CSV they stand for is (``.copy()``
+    gives one to change).
     """
 
     def __init__(self, core_run):

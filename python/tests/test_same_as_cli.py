@@ -236,3 +236,25 @@ def test_check_is_the_command_lines_check(tmp_path, default_scene):
     assert len(run.check["reversal_errors_s"]) == len(run.result["reversals_s"]) == 1
     assert 0 < abs(run.check["reversal_errors_s"][0]) < 1e-7  # rk4 at 0.1 ms: ~1e-9 s
     assert rb.simulate(default_scene, duration=0.1).check is None
+
+
+def test_a_runs_arrays_are_read_only(tmp_path, default_scene):
+    """A run's columns are what its CSV holds: `s = run.spin; s *= 2` changed run.spin,
+    run.columns and to_pandas() but not what to_csv wrote. A copy is the caller's to change."""
+    run = rb.simulate(default_scene, duration=0.2, rate=100)
+    first = run.spin[0]
+    for name, column in run.columns.items():
+        assert not column.flags.writeable, name
+        with pytest.raises(ValueError):
+            column[0] = column[1]
+    s = run.spin
+    with pytest.raises(ValueError):
+        s *= 2
+    assert run.spin[0] == run["spin"][0] == first
+    mine = run.spin.copy()
+    mine *= 2
+    assert mine[0] == 2 * first
+    pd = pytest.importorskip("pandas")
+    frame = run.to_pandas()
+    frame["spin"] *= 2  # the frame is the caller's
+    assert run.spin[0] == first
