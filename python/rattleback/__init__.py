@@ -314,12 +314,32 @@ def analyze(scene: SceneLike, *, spin: Optional[float] = None) -> dict:
     return _core.analyze(_scene(scene)._loaded, spin)
 
 
+def _image_array(array: Any) -> np.ndarray:
+    """`array` if it is an image the writer takes as it is: the writer cast any other dtype to
+    uint8 without a word (0.5 → 0, black; 300 → 44)."""
+    if not isinstance(array, np.ndarray):
+        raise TypeError("argument array: takes an H×W×3 or H×W×4 uint8 NumPy array, not "
+                        f"{type(array).__name__}")
+    what = "argument array: an image is an H×W×3 or H×W×4 uint8 array"
+    if array.ndim != 3 or array.shape[2] not in (3, 4):
+        raise ValueError(f"{what}, not of shape {array.shape}")
+    if array.dtype != np.uint8:
+        if array.dtype.kind == "f":  # 0…1, as matplotlib's images are
+            way_out = "np.clip(a * 255, 0, 255).astype(np.uint8)"
+        elif array.dtype.kind == "b":
+            way_out = "a.astype(np.uint8) * 255"
+        else:
+            way_out = "np.clip(a, 0, 255).astype(np.uint8)"
+        raise ValueError(f"{what}, not {array.dtype} (give {way_out})")
+    return array
+
+
 class Image:
     """A drawn frame: ``array`` is H×W×3 (or H×W×4 with transparency) ``uint8``, rows from
     the top. Shows itself in Jupyter; ``save(path)`` writes PNG."""
 
     def __init__(self, array: np.ndarray, _still: Optional[dict] = None):
-        self.array = array
+        self.array = _image_array(array)
         # For a still of a scene (rb.still), what the folder's manifest lists of it when saved:
         # its scene, view, initial spin and t.
         self._still = _still

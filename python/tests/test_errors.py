@@ -4,6 +4,7 @@ import os
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 
 import rattleback as rb
@@ -192,3 +193,24 @@ def test_a_video_name_of_another_kind_is_named_as_python_names_it(tmp_path):
     assert str(caught.value) == (f"render's output {path}: writes MP4 video; "
                                  "give a name ending in .mp4")
     assert not path.exists()
+
+
+@pytest.mark.parametrize("array,given,way_out", [
+    # A float image in 0…1 (matplotlib's) was cast to 0 or 1: black; 300 as int64 wrapped to 44.
+    (np.full((4, 6, 3), 0.5), "float64", "np.clip(a * 255, 0, 255).astype(np.uint8)"),
+    (np.full((4, 6, 3), 300), "int64", "np.clip(a, 0, 255).astype(np.uint8)"),
+    (np.zeros((4, 6, 3), bool), "bool", "a.astype(np.uint8) * 255"),
+])
+def test_an_image_of_another_dtype_than_uint8_is_refused(array, given, way_out):
+    with pytest.raises(ValueError) as caught:
+        rb.Image(array)
+    assert str(caught.value) == (f"argument array: an image is an H×W×3 or H×W×4 uint8 array, "
+                                 f"not {given} (give {way_out})")
+
+
+def test_an_image_of_another_shape_is_refused_when_made():
+    with pytest.raises(ValueError) as caught:
+        rb.Image(np.zeros((4, 6), np.uint8))
+    assert str(caught.value) == ("argument array: an image is an H×W×3 or H×W×4 uint8 array, "
+                                 "not of shape (4, 6)")
+    assert rb.Image(np.zeros((4, 6, 4), np.uint8)).png().startswith(b"\x89PNG")
