@@ -15,7 +15,7 @@ namespace media {
 
 rb::Result<StillResult> renderStill(const tasks::LoadedScene& loaded, const StillRequest& request) {
   if (!(request.t >= 0) || !std::isfinite(request.t))
-    return rb::Error{"", "--t must be a time ≥ 0 s"};
+    return rb::Error{"", request.t_named + ": must be a time ≥ 0 s, not " + rb::show(request.t)};
   sim::Model model = loaded.model;
   // A still may show a time past the scene's duration: the run then goes on to it.
   model.duration = std::max(model.duration, request.t);
@@ -25,7 +25,7 @@ rb::Result<StillResult> renderStill(const tasks::LoadedScene& loaded, const Stil
   if (!planned && request.t > loaded.model.duration &&
       planVideo(loaded.scene, loaded.model.duration)) {
     const scene::VideoSpec& video = loaded.scene.video;
-    return rb::Error{"", "--t: " + rb::show(request.t) +
+    return rb::Error{"", request.t_named + ": " + rb::show(request.t) +
                              " s is past the longest run a video of this scene may show (10 "
                              "million frames at playback " +
                              rb::show(video.playback) + " and " + std::to_string(video.fps) +
@@ -36,7 +36,7 @@ rb::Result<StillResult> renderStill(const tasks::LoadedScene& loaded, const Stil
   // The same for the step count: the scene's run is within sim::kMaxSteps, 1e11 (compile), the run
   // on to t may not be (1e9 s at 0.5 ms would integrate for weeks).
   if (model.dt > 0 && model.duration / model.dt > sim::kMaxSteps)
-    return rb::Error{"", "--t: " + rb::show(request.t) + " s at simulation.dt " +
+    return rb::Error{"", request.t_named + ": " + rb::show(request.t) + " s at simulation.dt " +
                              rb::show(model.dt) +
                              " s is more than 1e11 steps to run: choose an earlier time"};
   const VideoPlan& plan = planned.value();

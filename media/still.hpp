@@ -15,10 +15,11 @@
 namespace media {
 
 struct StillRequest {
-  std::string scene_name;    ///< the scene's path or name: its stem titles the frame
-  double t = 0;              ///< s; past the scene's duration the run goes on to it
-  bool readouts = true;      ///< title, read-outs and the spin inset
-  bool transparent = false;  ///< alpha: no floor, no background, no read-outs
+  std::string scene_name;       ///< the scene's path or name: its stem titles the frame
+  double t = 0;                 ///< s; past the scene's duration the run goes on to it
+  std::string t_named = "--t";  ///< t as messages name it: the option, "argument t" in Python
+  bool readouts = true;         ///< title, read-outs and the spin inset
+  bool transparent = false;     ///< alpha: no floor, no background, no read-outs
   render::Backend backend = render::Backend::Auto;
   std::function<bool()> cancelled;  ///< asked as the run goes: true stops (may be empty)
   /// Called as the runs go (the one to t, then the framing's over the whole run), with the

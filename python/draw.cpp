@@ -74,6 +74,7 @@ py::tuple still(const LoadedScene& loaded, double t, bool readouts, bool transpa
   media::StillRequest request;
   request.scene_name = loaded.value.scene.file;
   request.t = t;
+  request.t_named = "argument t";
   request.readouts = readouts;
   request.transparent = transparent;
   request.backend = backendOf(backend);

@@ -89,6 +89,17 @@ def test_a_bad_argument_is_named_as_the_argument():
         rb.simulate(scene_path("rattleback.yaml"), rate=0)
 
 
+def test_a_stills_time_is_named_as_the_argument():
+    # It was the command line's "--t must be a time ≥ 0 s", an option Python has not.
+    scene = scene_path("rattleback.yaml")
+    with pytest.raises(ValueError) as caught:
+        rb.still(scene, t=-1)
+    assert str(caught.value) == "argument t: must be a time ≥ 0 s, not -1"
+    with pytest.raises(ValueError) as caught:
+        rb.still(scene, t=1e9)
+    assert str(caught.value).startswith("argument t: 1e+09 s is past the longest run")
+
+
 def test_a_missing_file_is_a_scene_error():
     with pytest.raises(rb.SceneError, match="cannot open the scene file"):
         rb.simulate("no/such/scene.yaml")
