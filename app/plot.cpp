@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -87,6 +88,17 @@ rb::Status refuseDevice(const std::string& png, const rb::OutputPlace& place) {
 
 rb::Status checkPlotFolder(const std::string& dir) {
   std::error_code ec;
+  // sweep, sweep merge and bench take `--plot FILE.png`: a simulate --plot named as an image
+  // would otherwise become a folder of that name holding the four figures.
+  std::string ext = fs::path(dir).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  for (const char* image :
+       {".png", ".jpg", ".jpeg", ".svg", ".pdf", ".gif", ".webp", ".bmp", ".tif", ".tiff", ".eps"})
+    if (ext == image && !fs::is_directory(dir, ec))
+      return rb::Status::fail("--plot " + dir +
+                              ": takes a folder for the four figures, not an image's name (e.g. " +
+                              "--plot " + (fs::path(dir).parent_path() / "figures").string() + ")");
   fs::create_directories(dir, ec);
   if (!fs::is_directory(dir, ec))
     return rb::Status::fail(dir + ": --plot needs a folder it can write into" +

@@ -435,6 +435,35 @@ TEST(Cli, SimulatePlotsTheFourFigures) {
   EXPECT_FALSE(fs::exists(csv));
 }
 
+// simulate's --plot takes a folder, where sweep, sweep merge and bench take `--plot FILE.png`:
+// a name ending as an image's is refused (a new user's trial: `--plot pl/x.png` made a folder
+// x.png holding the four figures), nothing written; an existing folder of that name is taken.
+TEST(Cli, SimulatesPlotTakesAFolderNotAnImagesName) {
+  const fs::path dir = emptyDir("pl");
+  for (const char* name : {"x.png", "x.JPG", "x.svg", "x.pdf"}) {
+    const fs::path plot = dir / name;
+    const Result r = rattleback("simulate " + scene("rattleback") + " --duration 0.1 -q -o " +
+                                (dir / "x.csv").string() + " --plot " + plot.string());
+    EXPECT_EQ(r.status, 2) << name;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("--plot " + plot.string() +
+                              ": takes a folder for the four figures, not an image's name (e.g. "
+                              "--plot " +
+                              (dir / "figures").string() + ")",
+                          0),
+              0u)
+        << r.err;
+    EXPECT_FALSE(fs::exists(plot)) << name;
+    EXPECT_FALSE(fs::exists(dir / "x.csv")) << name;
+  }
+  fs::create_directories(dir / "old.png");
+  const Result taken =
+      rattleback("simulate " + scene("rattleback") + " --duration 0.1 -q -o " +
+                 (dir / "x.csv").string() + " --plot " + (dir / "old.png").string());
+  EXPECT_EQ(taken.status, 0) << taken.err;
+  EXPECT_TRUE(fs::exists(dir / "old.png" / "rattleback-spin.png"));
+}
+
 TEST(Cli, VersionQuietAndVerbose) {
   const Result version = rattleback("--version");
   EXPECT_EQ(version.status, 0);
