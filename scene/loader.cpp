@@ -27,6 +27,7 @@ struct Failure {
   int line;
   std::string key;
   std::string message;
+  bool unknown_key = false;  ///< `key` is not a scene key (which a key set from elsewhere can make)
 };
 
 std::string join(const std::string& prefix, const std::string& key) {
@@ -60,7 +61,8 @@ class MapReader {
         const std::optional<std::string> nearest = rb::nearestWord(key, words);
         throw Failure{lineOf(entry.first), join(path_, key),
                       "is not a known key" + (nearest ? "; did you mean " + *nearest + "?" : "") +
-                          " (known here: " + names + ")"};
+                          " (known here: " + names + ")",
+                      true};
       }
       out_.lines[join(path_, key)] = lineOf(entry.first);
       present_[key] = entry.second;
@@ -336,6 +338,11 @@ rb::Result<Loaded> loadTree(const YAML::Node& root_node, const std::string& name
     for (const auto& [key, place] : places)
       if (f.key == key || f.key.rfind(key + ".", 0) == 0)
         return setBy(place, key, rb::Error{f.key, f.message});
+    // An unknown key above the one set ("intial" of --set intial.spin=3) was made by the setting:
+    // the file has no such key, and its line 1 is not where the mistake is.
+    if (f.unknown_key)
+      for (const auto& [key, place] : places)
+        if (key.rfind(f.key + ".", 0) == 0) return setBy(place, key, rb::Error{f.key, f.message});
     return located(name, f.line, f.key, f.message);
   } catch (const YAML::Exception& e) {
     return malformed(name, e);

@@ -214,6 +214,23 @@ TEST(SceneKeys, EveryMapRefusesAnUnknownKeyNamingTheTablesKeys) {
   EXPECT_EQ(maps.size(), 11u);  // the top level, units, body and its four, contact, … video
 }
 
+// A misspelt map above the key set ("intial" of intial.spin) is the setting's mistake, named by
+// it: it was blamed on the file's line 1, where nothing is wrong.
+TEST(SceneKeys, AnUnknownMapAboveAKeySetIsNamedByTheSetting) {
+  for (const char* key : {"intial.spin", "bdy.paraboloid.a"}) {
+    auto loaded = scene::loadWithValues(sampleScene("paraboloid"), "inline.yaml", {{key, "1"}},
+                                        "with_values");
+    ASSERT_FALSE(loaded) << key;
+    const std::string word = std::string(key).substr(0, std::string(key).find('.'));
+    EXPECT_EQ(loaded.error().text().rfind(
+                  "with_values: " + word + " is not a known key; did you mean ", 0),
+              0u)
+        << loaded.error().text();
+    ASSERT_TRUE(loaded.error().where);
+    EXPECT_EQ(loaded.error().where->line, 0) << key;
+  }
+}
+
 // A word takes each of its choices (the name table its checker reads) and nothing else: an
 // unknown word is refused with a message that lists every choice.
 TEST(SceneKeys, AWordTakesEachOfItsChoicesAndNoOther) {

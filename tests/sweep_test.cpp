@@ -206,6 +206,10 @@ TEST(Sweep, ErrorsInTheSweepFileNameFileLineAndKey) {
   const Case cases[] = {
       {"base: BASE\nvary:\n  initial.spinn: [1, 2]\n",
        "sweep.yaml:3: initial.spinn is not a known key"},
+      // A misspelt map above the key set is the line's mistake too (it was blamed on the base's
+      // line 1, and every row was refused with exit 0).
+      {"base: BASE\nvary:\n  intial.spin: [1, 2]\n",
+       "sweep.yaml:3: intial is not a known key; did you mean initial?"},
       {"base: BASE\nvary:\n  initial.spin: {from: 1, to: 2, count: 0}\n",
        "sweep.yaml:3: initial.spin count must be a whole number from 1 to 1e6"},
       {"base: BASE\nvary:\n  initial.spin: {from: 1, to: 2, count: 3, scale: cubic}\n",
