@@ -131,6 +131,11 @@ def _check(name: str, value: Any) -> None:
     test, _ = _TAKES[name]
     if not test(value):
         refuse(name, value)
+    if name in ("path", "output") and os.fspath(value) == "":
+        # A wrong value, not a wrong type: to_csv("") failed on moving its file into place, and
+        # render(output="") wrote its default name as if none had been given.
+        way_out = "a file name, or None for the default" if name == "output" else "a file name"
+        raise ValueError(f"argument {name}: '' names no file; give {way_out}")
     if name == "values":  # and each value, named by its key
         for key, v in value.items():
             if not isinstance(key, str):

@@ -225,3 +225,20 @@ def test_an_image_of_another_shape_is_refused_when_made():
     assert str(caught.value) == ("argument array: an image is an H×W×3 or H×W×4 uint8 array, "
                                  "not of shape (4, 6)")
     assert rb.Image(np.zeros((4, 6, 4), np.uint8)).png().startswith(b"\x89PNG")
+
+
+def test_an_empty_output_name_is_refused_as_the_argument(tmp_path, monkeypatch):
+    # to_csv("") said ": cannot move the finished file into place: No such file or directory",
+    # and render(output="") wrote out/<scene>.mp4 as if no name had been given.
+    monkeypatch.chdir(tmp_path)
+    run = rb.simulate(rb.Scene.from_dict(DICT_SCENE), duration=0.1)
+    with pytest.raises(ValueError) as caught:
+        run.to_csv("")
+    assert str(caught.value) == "argument path: '' names no file; give a file name"
+    with pytest.raises(ValueError, match="^argument path: '' names no file"):
+        rb.Image(np.zeros((4, 6, 3), np.uint8)).save("")
+    with pytest.raises(ValueError) as caught:
+        rb.render(rb.Scene.from_dict(DICT_SCENE), "", duration=0.1)
+    assert str(caught.value) == ("argument output: '' names no file; give a file name, or None "
+                                 "for the default")
+    assert list(tmp_path.iterdir()) == []
