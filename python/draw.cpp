@@ -160,6 +160,11 @@ PYBIND11_MODULE(_draw, m) {
       [](const std::string& path,
          const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>& a,
          const std::optional<py::dict>& still) {
+        {
+          // As `still -o y.jpg` refuses it: the data is PNG whatever the name says.
+          const rb::OutputNamedBy naming("save's path");
+          if (auto e = media::checkExtension(path, ".png", "PNG", false); !e) raise(e.error());
+        }
         const rb::OutputNamedBy naming("save");  // Image.save: the way out an error suggests
         if (auto e = tasks::makeParentFolder(path); !e) raise(e.error());
         if (auto e = render::writePng(path, imageOf(a)); !e) raise(e.error());

@@ -362,7 +362,8 @@ class Image:
 
     @checked
     def save(self, path: Union[str, os.PathLike]) -> None:
-        """Writes the image as PNG, whole or not at all (the command line's writer). A still
+        """Writes the image as PNG, whole or not at all (the command line's writer), at a name
+        ending in ``.png`` (another raises ValueError, as ``still -o`` refuses it). A still
         of a scene is listed in the folder's manifest, as ``rattleback still`` lists its PNG,
         so that ``rattleback report`` shows it under Stills with its view, time and spin."""
         from . import _draw

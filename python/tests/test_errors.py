@@ -242,3 +242,18 @@ def test_an_empty_output_name_is_refused_as_the_argument(tmp_path, monkeypatch):
     assert str(caught.value) == ("argument output: '' names no file; give a file name, or None "
                                  "for the default")
     assert list(tmp_path.iterdir()) == []
+
+
+def test_an_image_name_of_another_kind_is_refused_as_still_refuses_it(tmp_path):
+    # save("x.jpg") wrote PNG data under a .jpg name; `rattleback still -o y.jpg` refuses it.
+    image = rb.Image(np.zeros((4, 6, 3), np.uint8))
+    for name in ("x.jpg", "x"):
+        path = tmp_path / name
+        with pytest.raises(ValueError) as caught:
+            image.save(path)
+        assert str(caught.value) == f"save's path {path}: writes PNG; give a name ending in .png"
+        assert not path.exists()
+    image.save(tmp_path / "x.PNG")  # as the command line takes it, in any case
+    theirs = cli("still", scene_path("rattleback.yaml"), "-o", str(tmp_path / "y.jpg"),
+                 check=False)
+    assert theirs.returncode != 0 and "writes PNG; give a name ending in .png" in theirs.stderr
