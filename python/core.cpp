@@ -142,7 +142,7 @@ std::shared_ptr<SweepTable> sweep(const std::string& path, int jobs) {
     throw py::value_error("argument jobs: threads must be 1 … 1024 (0: all cores), not " +
                           std::to_string(jobs));
   auto table = std::make_shared<SweepTable>();
-  table->sweep = take(scene::loadSweep(path));
+  table->sweep = take(scene::loadSweep(tasks::findShipped(path)));
   auto scenes = take(scene::SweepScenes::open(table->sweep));
   std::vector<std::int64_t> rows;
   for (std::int64_t r = 0; r < table->sweep.rows(); ++r) rows.push_back(r);

@@ -54,6 +54,8 @@ inline void bindScene(py::module_& m) {
   m.def(
       "read_scene_file", [](const std::string& path) { return take(scene::readSceneFile(path)); },
       py::arg("path"));
+  // As the command line finds a scene: a relative name not here is the installed copy's.
+  m.def("find_shipped", &tasks::findShipped, py::arg("path"));
   m.def(
       "load",
       [](const std::string& yaml, const std::string& name,

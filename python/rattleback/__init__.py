@@ -69,8 +69,10 @@ class Scene:
     @classmethod
     @checked
     def from_file(cls, path: Union[str, os.PathLike]) -> "Scene":
-        """The scene in a YAML file (``scenes/rattleback.yaml``)."""
-        path = os.fspath(path)
+        """The scene in a YAML file (``scenes/rattleback.yaml``). A relative path that is not
+        here is the installed copy's, as the command line finds it: the shipped scenes load by
+        their names from any folder, and are named by the file read."""
+        path = _core.find_shipped(os.fspath(path))
         return cls(_core.read_scene_file(path), path)
 
     @classmethod

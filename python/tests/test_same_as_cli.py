@@ -258,3 +258,40 @@ def test_a_runs_arrays_are_read_only(tmp_path, default_scene):
     frame = run.to_pandas()
     frame["spin"] *= 2  # the frame is the caller's
     assert run.spin[0] == first
+
+
+def test_a_shipped_scene_is_found_from_any_folder_as_the_command_line_finds_it(tmp_path,
+                                                                              monkeypatch):
+    """`rb.simulate("scenes/rattleback.yaml")` from another folder said "cannot open the scene
+    file", while `rattleback simulate scenes/rattleback.yaml` there found the installed copy
+    (tasks::findShipped). The installed assets folder is stood for by one holding the build
+    tree's assets and the source's scenes and sweeps."""
+    assets = tmp_path / "share"
+    assets.mkdir()
+    built = Path(rb.__file__).resolve().parents[2] / "share" / "rattleback"
+    for entry in built.iterdir():
+        (assets / entry.name).symlink_to(entry)
+    for folder in ("scenes", "sweeps"):
+        (assets / folder).symlink_to(Path(scene_path("rattleback.yaml")).parents[1] / folder)
+    elsewhere = tmp_path / "elsewhere"
+    elsewhere.mkdir()
+    monkeypatch.setenv("RATTLEBACK_ASSETS", str(assets))
+    monkeypatch.chdir(elsewhere)
+
+    shipped = str(assets / "scenes" / "rattleback.yaml")
+    scene = rb.Scene.from_file("scenes/rattleback.yaml")
+    assert scene.name == shipped  # named as the command line names it, by the file it read
+    run = rb.simulate("scenes/rattleback.yaml", duration=0.2, rate=100)
+    run.to_csv("py.csv")
+    cli("simulate", "scenes/rattleback.yaml", "--duration", "0.2", "--rate", "100", "-q", "-o",
+        "cli.csv")
+    assert Path("py.csv").read_text() == Path("cli.csv").read_text()
+    a, b = sidecars_without_wall_time(elsewhere)
+    assert a == b and a["scene_path"] == shipped
+    assert rb.analyze("scenes/rattleback.yaml")["preferred"] == "ccw"
+    assert rb.still("scenes/rattleback.yaml", size=(64, 48)).width == 64
+    assert len(rb.sweep("sweeps/spin-drag.yaml", jobs=1)) > 0
+    # A file of that name here is the one read, as for the command line.
+    (elsewhere / "scenes").mkdir()
+    (elsewhere / "scenes" / "rattleback.yaml").write_text(Path(shipped).read_text())
+    assert rb.Scene.from_file("scenes/rattleback.yaml").name == "scenes/rattleback.yaml"
