@@ -86,7 +86,7 @@ rb::Status refuseDevice(const std::string& png, const rb::OutputPlace& place) {
 
 }  // namespace
 
-rb::Status checkPlotFolder(const std::string& dir) {
+rb::Status checkPlotFolder(const std::string& dir, const std::string& first_figure) {
   std::error_code ec;
   // sweep, sweep merge and bench take `--plot FILE.png`: a simulate --plot named as an image
   // would otherwise become a folder of that name holding the four figures.
@@ -99,12 +99,12 @@ rb::Status checkPlotFolder(const std::string& dir) {
       return rb::Status::fail("--plot " + dir +
                               ": takes a folder for the four figures, not an image's name (e.g. " +
                               "--plot " + (fs::path(dir).parent_path() / "figures").string() + ")");
-  fs::create_directories(dir, ec);
-  if (!fs::is_directory(dir, ec))
-    return rb::Status::fail(dir + ": --plot needs a folder it can write into" +
-                            (ec ? ": " + ec.message() : std::string()));
+  // Said as every writer says it, of the first figure's file, with --plot's way out.
+  const std::string figure = (fs::path(dir) / first_figure).string();
+  const rb::OutputNamedBy naming("--plot", "a folder");
+  if (auto made = tasks::makeParentFolder(figure); !made) return made;
   if (std::string why = probeWrite(dir); !why.empty())
-    return rb::Status::fail(dir + ": --plot cannot write into this folder: " + why);
+    return rb::Status::fail(rb::cannotWriteIn(figure, why));
   return {};
 }
 

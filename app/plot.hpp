@@ -49,8 +49,9 @@ bool logarithmicAxis(const std::vector<double>& values);
 std::string sweepLabel(const std::string& name);
 
 /// Makes `dir` when missing and checks that a file can be written into it (before a run whose
-/// plots go there); an error line with the system's reason otherwise.
-rb::Status checkPlotFolder(const std::string& dir);
+/// plots go there); otherwise the error line every writer gives, for `first_figure` (a file
+/// name) in `dir`, with --plot's way out.
+rb::Status checkPlotFolder(const std::string& dir, const std::string& first_figure);
 /// The same for one PNG: its folder made when missing and a file written into it and removed,
 /// so that an unwritable --plot fails before the run, not after it.
 rb::Status checkPlotFile(const std::string& png);

@@ -240,7 +240,8 @@ int simulateCommand(const SimulateArgs& args) {
   if (csv == "-") csv = "/dev/stdout";
   const bool to_stdout = isStandardOutput(csv);
   if (!args.plot_dir.empty())
-    if (auto plots = checkPlotFolder(args.plot_dir); !plots) return fail(plots);
+    if (auto plots = checkPlotFolder(args.plot_dir, sceneName(args.scene) + "-energy.png"); !plots)
+      return fail(plots);
   auto writer = tasks::TelemetryWriter::open(csv);
   if (!writer) return fail(writer);
   if (args.verbose) describeModel(model, args.scene);

@@ -433,6 +433,21 @@ TEST(Cli, SimulatePlotsTheFourFigures) {
   EXPECT_EQ(bad.status, 2);
   EXPECT_EQ(lines(bad.err), 1) << bad.err;
   EXPECT_FALSE(fs::exists(csv));
+  EXPECT_NE(bad.err.find("/dev/full/plots/rattleback-energy.png: cannot make its folder "
+                         "/dev/full/plots: /dev/full is a file, not a folder (give --plot "
+                         "another path)"),
+            std::string::npos)
+      << bad.err;
+  // A folder it cannot write in is said as every writer says it, with --plot's way out (a new
+  // user's trial read "ro: --plot cannot write into this folder: Operation not permitted").
+  const Result ro = rattleback("simulate " + scene("rattleback") + " --duration 0.1 -o " +
+                               csv.string() + " --plot /proc");
+  EXPECT_EQ(ro.status, 2);
+  EXPECT_EQ(lines(ro.err), 1) << ro.err;
+  EXPECT_EQ(ro.err.rfind("/proc/rattleback-energy.png: cannot write a file in /proc: ", 0), 0u)
+      << ro.err;
+  EXPECT_NE(ro.err.find("(give --plot a folder you can write)"), std::string::npos) << ro.err;
+  EXPECT_FALSE(fs::exists(csv));
 }
 
 // simulate's --plot takes a folder, where sweep, sweep merge and bench take `--plot FILE.png`:
