@@ -835,7 +835,8 @@ class Player {
     this.shadow.position.set(this.points.position.x, this.points.position.y, 0);
     this.shadow.rotation.set(0, 0, Math.atan2(-along.x, along.y));
     if (this.viewName === 'follow') this.placeChase();
-    if (hold) this.heldReadouts = true; else this.updateReadouts();
+    this.heldReadouts = !!hold;
+    if (!hold) this.updateReadouts();
     this.dirty = true;
   }
 
@@ -871,9 +872,18 @@ class Player {
     this.updatePlayButton();
   }
 
+  // Stops where the player is seen to be. Playback applies each pose a frame before it shows it
+  // (loop: the picture is drawn after the frame, the read-outs held for the next); paused in
+  // between, the pose applied and not yet shown would appear at the next frame, one frame on
+  // from the moment paused at. It is taken back instead: time returns to the read-outs' time,
+  // and that pose is drawn now, before the next frame, which shows it.
   pause() {
     if (!this.playing) return;
     this.playing = false;
+    if (this.heldReadouts) {
+      this.applyTime(this.shownTime);
+      this.render();
+    }
     this.updatePlayButton();
   }
 
@@ -904,6 +914,7 @@ class Player {
   // only when what it shows changes (a write costs the page a style, layout and paint pass).
   updateReadouts() {
     const t = this.time;
+    this.shownTime = t; // (pause goes back to it)
     const spin = Math.abs(this.spinNow) < 0.005 ? 0 : this.spinNow;
     const signed = (spin >= 0 ? '+' : '-') + Math.abs(spin).toFixed(2);
     this.show(this.readTime, `t = ${t.toFixed(2).padStart(6)} s`);
@@ -1231,8 +1242,10 @@ class Player {
       if (this.lastTick != null) {
         const next = this.time + ((now - this.lastTick) / 1000) * this.speed;
         if (next >= this.tEnd) {
+          // Stopped at the end, not paused: the end is the pose to stop at, shown next frame.
           this.applyTime(this.tEnd, true);
-          this.pause();
+          this.playing = false;
+          this.updatePlayButton();
         } else {
           this.applyTime(next, true);
         }

@@ -19,6 +19,9 @@ and, for every .rb-player on it:
     (within 1e-6, up to sign) and the position their linear interpolation; the data embedded
     equals the run's CSV (DIR/ID.csv, when there) at those samples; the canvas changes;
   - play advances time, pause stops it, and the run stops at its end;
+  - pause (the button; space after a click on the canvas) stops at what was shown when it
+    was pressed: the time is the slider's then, and the slider, read-outs, plot cursor and
+    picture stay as they were (six times, at different moments);
   - while the camera stays most frames are drawn in part (where the body and its shadow were and
     are), and the picture after playing is the one drawn whole (no pixel differs);
   - each view button moves the camera, to where the renderer puts it (render/camera.cpp): the
@@ -108,6 +111,31 @@ for (let i = 0, p = 0; i < d.length; i += 4, p++) {
   if (x !== null && Math.abs(p % c.width - x) <= 1) column++;
 }
 return {all, column, height: c.height};
+"""
+
+# What a player shows at the moment pause is pressed, recorded by listeners on the window that
+# capture the click on the play button and space, so run before the player's own: whether it
+# was playing, the slider's value and the read-outs' and the plot cursor's text and place.
+PAUSE_WATCH_JS = """
+window.__rbAtPause = null;
+window.__rbWatched = arguments[0];
+if (!window.__rbPauseWatch) {
+  window.__rbPauseWatch = true;
+  const record = () => {
+    const e = window.__rbWatched;
+    window.__rbAtPause = window.__rbShown(e);
+    window.__rbAtPause.playing = e.rbPlayer.playing();
+  };
+  window.addEventListener('click', (ev) => {
+    if (ev.target.closest && ev.target.closest('.rbp-play')) record();
+  }, true);
+  window.addEventListener('keydown', (ev) => { if (ev.key === ' ') record(); }, true);
+}
+window.__rbShown = (e) => ({
+  slider: parseFloat(e.querySelector('.rbp-slider').value),
+  readouts: ['.rbp-time', '.rbp-spin', '.rbp-sense'].map((s) => e.querySelector(s).textContent),
+  cursor: ['.rbp-cursor', '.rbp-dot'].map((s) => e.querySelector(s).style.transform),
+});
 """
 
 # Waits for two animation frames: whatever the last change asked to be drawn is drawn.
@@ -400,6 +428,7 @@ class Checker:
         time.sleep(0.3)
         self.check(not self.hook(element, "playing()") and self.hook(element, "time()") == paused,
                    f"{where}: the pause button does not stop time")
+        self.pause_holds(element, where, run_id)
         # While the camera stays, a frame redraws only the part where the body and its shadow
         # were and are; the picture then must be the one drawn whole.
         partial, drawn = self.hook(element, "drawCounts()")
@@ -490,6 +519,57 @@ class Checker:
                    f"{where}: a click on the player does not focus it")
         self.keys(element, where, run)
         self.speed_menu(element, where, run)
+
+    def pause_holds(self, element, where, run_id):
+        # Pause stops at what is shown when it is pressed: the time, the slider, the read-outs,
+        # the plot's cursor and the picture stay there, none moves on a frame after (playback
+        # applies a pose a frame before it shows it). Paused with the button, and with space
+        # after a click on the canvas (which focuses the player), three times each at different
+        # moments.
+        play = element.find_element(By.CSS_SELECTOR, ".rbp-play")
+        canvas = element.find_element(By.CSS_SELECTOR, ".rbp-stage canvas")
+        t0, t1 = self.hook(element, "range()")
+        for attempt in range(6):
+            by_key = attempt % 2 == 1
+            how = "space after a click on the canvas" if by_key else "the button"
+            self.hook(element, "setTime(arguments[1])", t0 + 0.1 * (t1 - t0))
+            self.js(PAUSE_WATCH_JS, element)
+            if by_key:
+                self.hook(element, "play()")
+                time.sleep(0.2 + 0.04 * attempt)
+                ActionChains(self.driver).move_to_element(canvas).click().perform()
+                time.sleep(0.1)
+                ActionChains(self.driver).send_keys(Keys.SPACE).perform()
+            else:
+                play.click()
+                time.sleep(0.3 + 0.04 * attempt)
+                play.click()
+            at = self.js("return window.__rbAtPause;")
+            now = self.hook(element, "time()")
+            if not self.check(at and at["playing"] and not self.hook(element, "playing()"),
+                              f"{where}: pausing with {how} was not seen ({at})"):
+                continue
+            self.frames()
+            self.pixels(element, f"{run_id}-pause")
+            time.sleep(0.6)
+            later = self.hook(element, "time()")
+            shown = self.js("return window.__rbShown(arguments[0]);", element)
+            # (The slider holds its value to 15 significant digits.)
+            self.check(abs(now - at["slider"]) < 1e-9 and later == now,
+                       f"{where}: paused with {how} at t = {at['slider']} (the slider), the time is "
+                       f"{now} right after and {later} 0.6 s later")
+            for key in ["slider", "readouts", "cursor"]:
+                self.check(shown[key] == at[key], f"{where}: paused with {how}, the {key} showed "
+                                                  f"{at[key]!r} and 0.6 s later {shown[key]!r}")
+            px = self.pixels(element, f"{run_id}-pause")
+            self.check(px["changed"] == 0, f"{where}: paused with {how}, the picture changed "
+                                           f"{px['changed']} pixels after")
+            # ... and it is the picture of the time paused at.
+            self.hook(element, "renderAll()")
+            px = self.pixels(element, f"{run_id}-pause")
+            self.check(px["changed"] == 0, f"{where}: paused with {how}, the picture is not the one "
+                                           f"of t = {later} ({px['changed']} pixels differ)")
+        self.click_view(element, "oblique")
 
     def speed_menu(self, element, where, run):
         # A speed chosen from the menu with the pointer gives the keys back to the player (they
