@@ -40,16 +40,17 @@ class MapReader {
  public:
   /// `path` is the map's dotted key ("" for the whole file), `line` where it stands (1 for the
   /// whole file).
-  MapReader(const YAML::Node& node, std::string path, int line, Loaded& out)
-      : path_(std::move(path)), line_(line), out_(out) {
+  MapReader(const YAML::Node& node, std::string path, int line, Loaded& out,
+            const std::map<std::string, int>& copied_lines)
+      : path_(std::move(path)), line_(line), out_(out), copied_lines_(copied_lines) {
     if (!node.IsMap())
       throw Failure{line_, path_.empty() ? "scene" : path_, "must be a map of keys (key: value)"};
     const std::vector<const Key*> allowed = keysIn(path_);
     std::set<std::string> seen;
     for (const auto& entry : node) {
       const std::string key = entry.first.as<std::string>();
-      if (!seen.insert(key).second)
-        throw Failure{lineOf(entry.first), join(path_, key), "is given twice"};
+      const int line = lineIn(entry.first, join(path_, key));
+      if (!seen.insert(key).second) throw Failure{line, join(path_, key), "is given twice"};
       if (std::none_of(allowed.begin(), allowed.end(),
                        [&](const Key* known) { return nameIn(known->path) == key; })) {
         std::string names;
@@ -59,18 +60,25 @@ class MapReader {
           words.push_back(nameIn(known->path));
         }
         const std::optional<std::string> nearest = rb::nearestWord(key, words);
-        throw Failure{lineOf(entry.first), join(path_, key),
+        throw Failure{line, join(path_, key),
                       "is not a known key" + (nearest ? "; did you mean " + *nearest + "?" : "") +
                           " (known here: " + names + ")",
                       true};
       }
-      out_.lines[join(path_, key)] = lineOf(entry.first);
+      out_.lines[join(path_, key)] = line;
       present_[key] = entry.second;
-      key_lines_[key] = lineOf(entry.first);
+      key_lines_[key] = line;
     }
   }
 
   bool has(const std::string& key) const { return present_.count(key) > 0; }
+
+  /// A key's line: for a tree copied from a file (a sweep's rows: YAML::Clone keeps no marks)
+  /// where the file had it, else where the parser found it.
+  int lineIn(const YAML::Node& key_node, const std::string& dotted) const {
+    if (auto it = copied_lines_.find(dotted); it != copied_lines_.end()) return it->second;
+    return lineOf(key_node);
+  }
 
   /// Reads a leaf key into the member the table names.
   void read(const std::string& key, const Field& field) {
@@ -122,7 +130,7 @@ class MapReader {
   std::optional<MapReader> child(const std::string& key) {
     auto node = take(key);
     if (!node) return std::nullopt;
-    return MapReader(*node, join(path_, key), key_lines_.at(key), out_);
+    return MapReader(*node, join(path_, key), key_lines_.at(key), out_, copied_lines_);
   }
 
   /// The message names the table's line that would do (scene/keys.cpp), so that it shows the
@@ -166,6 +174,7 @@ class MapReader {
   std::string path_;
   int line_;
   Loaded& out_;
+  const std::map<std::string, int>& copied_lines_;  // see lineIn
   std::map<std::string, YAML::Node> present_;
   std::map<std::string, int> key_lines_;
 };
@@ -322,7 +331,8 @@ rb::Error malformed(const std::string& name, const YAML::Exception& e) {
 }  // namespace
 
 rb::Result<Loaded> loadTree(const YAML::Node& root_node, const std::string& name,
-                            const std::map<std::string, std::string>& places) {
+                            const std::map<std::string, std::string>& places,
+                            const std::map<std::string, int>& lines) {
   Loaded out;
   out.file = name;
   out.overrides = places;
@@ -331,7 +341,7 @@ rb::Result<Loaded> loadTree(const YAML::Node& root_node, const std::string& name
       return rb::Error{"", printable(name) +
                                ":1: the scene is empty; expected keys such as "
                                "body, contact, simulation"};
-    MapReader root(root_node, "", 1, out);
+    MapReader root(root_node, "", 1, out, lines);
     readKeys(root, out);
   } catch (const Failure& f) {
     // A key set from elsewhere (a sweep's axis, --set) is named where it was set.

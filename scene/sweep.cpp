@@ -123,6 +123,7 @@ struct SweepScenes::Impl {
   YAML::Node base;
   std::vector<KeyPath> paths;
   std::map<std::string, std::string> places;  // varied key (without index) → its place
+  std::map<std::string, int> base_lines;      // the base file's keys → their lines
   // yaml-cpp's nodes share reference-counted memory that is not safe to touch from two threads
   // at once: the base tree is copied under this lock, and the copy is the row's own.
   mutable std::mutex mutex;
@@ -140,7 +141,7 @@ struct SweepScenes::Impl {
     }
     for (std::size_t i = 0; i < paths.size(); ++i)
       put(root, paths[i], 0, YAML::Load(sweep.axes[i].values[at[i]]));
-    return loadTree(root, base_name, places);
+    return loadTree(root, base_name, places, base_lines);
   }
 };
 
@@ -158,6 +159,9 @@ rb::Result<SweepScenes> SweepScenes::open(const Sweep& sweep) {
   impl->base_name = sweep.base;
   try {
     impl->base = YAML::LoadFile(sweep.base);
+    // The rows' trees are copies, which keep no lines: an error in a key of the base names the
+    // base's line from these (it named line 1).
+    if (auto loaded = loadTree(impl->base, sweep.base, {})) impl->base_lines = loaded->lines;
     if (sweep.duration) {
       const KeyPath path{{"simulation", "duration"}, std::nullopt};
       put(impl->base, path, 0, YAML::Load(rangeValue(*sweep.duration)));

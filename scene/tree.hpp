@@ -22,7 +22,9 @@ rb::Error malformedYaml(const std::string& name, const std::string& text, const 
 
 /// As loadString, from a parsed tree. `places` maps dotted keys that were set from elsewhere
 /// to where ("sweeps/x.yaml:4"): an error in such a key (or inside it) names that place.
+/// `lines` gives the lines of the keys of a tree copied from a file (the copy has none).
 rb::Result<Loaded> loadTree(const YAML::Node& root, const std::string& name,
-                            const std::map<std::string, std::string>& places);
+                            const std::map<std::string, std::string>& places,
+                            const std::map<std::string, int>& lines = {});
 
 }  // namespace scene

@@ -256,6 +256,27 @@ TEST(Sweep, ABadValueRefusesItsRowOnly) {
   EXPECT_EQ(rows[2][4], "");
 }
 
+// A bad value in the base scene (not varied) refuses the rows naming the base's own line: the
+// rows' trees are copies, which keep no lines, and it was named at the base's line 1.
+TEST(Sweep, ABadValueInTheBaseNamesTheBasesLine) {
+  const fs::path dir = scratch();
+  std::string base = slurp(kBase);
+  const std::size_t at = base.find("  mass: 0.059");
+  ASSERT_NE(at, std::string::npos);
+  base.replace(at, 13, "  mass: -1");
+  const int line = static_cast<int>(std::count(base.begin(), base.begin() + at, '\n')) + 1;
+  std::ofstream(dir / "base.yaml") << base;
+  const fs::path sweep =
+      writeSweep(dir, "base: base.yaml\nvary:\n  initial.spin: [-5]\nduration: 0.1\n");
+  const Outcome r =
+      rattleback(dir, "sweep " + sweep.string() + " -q -o " + (dir / "t.csv").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = readCsv(slurp(dir / "t.csv"));
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[1][2], "refused: " + (dir / "base.yaml").string() + ":" + std::to_string(line) +
+                            ": body.mass must be > 0, not -1");
+}
+
 // An error about the map around the varied key (the grid as a whole, for a spacing typed as
 // 1e-9) is named at the sweep file's line too, not at the base scene's first line.
 TEST(Sweep, AnErrorAboutTheVariedKeysMapNamesTheSweepsLine) {
