@@ -34,6 +34,7 @@ struct Run {
   std::string scene;
   std::vector<scene::KeyValue> values;  ///< put in over the scene file (with_values)
   std::string content;                  ///< the scene file's content as read (scene::Loaded)
+  bool has_file = false;                ///< false for a scene made from text or a dict
   sim::Model model;
   double rate = tasks::kDefaultRate;
   std::vector<sim::Telemetry> samples;
@@ -101,6 +102,7 @@ std::shared_ptr<Run> simulate(const LoadedScene& loaded, double rate, bool check
   run->scene = loaded.value.scene.file;
   run->values = loaded.value.scene.values;
   run->content = loaded.value.scene.content;
+  run->has_file = loaded.has_file;
   run->model = model;
   run->rate = rate;
   const tasks::SimulateResult result =
@@ -238,9 +240,9 @@ PYBIND11_MODULE(_core, m) {
       .def("model", [](const Run& r) { return toPython(tasks::modelJson(r.model)); })
       .def("sidecar",
            [](const Run& r) {
-             return toPython(
-                 tasks::telemetrySidecar({r.scene, r.values, r.content}, r.model, r.rate, r.summary,
-                                         static_cast<std::int64_t>(r.samples.size()), r.check));
+             return toPython(tasks::telemetrySidecar(
+                 {r.scene, r.values, r.content, r.has_file}, r.model, r.rate, r.summary,
+                 static_cast<std::int64_t>(r.samples.size()), r.check));
            })
       .def_readonly("scene", &Run::scene)
       .def_readonly("rate", &Run::rate)
@@ -249,8 +251,8 @@ PYBIND11_MODULE(_core, m) {
         {
           py::gil_scoped_release release;
           const rb::OutputNamedBy naming("to_csv");  // the way out an error line suggests
-          written = tasks::writeTelemetry(path, {r.scene, r.values, r.content}, r.model, r.rate,
-                                          r.summary, r.samples, r.check);
+          written = tasks::writeTelemetry(path, {r.scene, r.values, r.content, r.has_file}, r.model,
+                                          r.rate, r.summary, r.samples, r.check);
           // Listed in the folder's manifest, as the command line lists it (a failure to list
           // loses nothing: the report then places the file by its name).
           if (written)

@@ -18,6 +18,7 @@ namespace pyrb {
 /// A scene loaded, checked and compiled, with its overrides applied.
 struct LoadedScene {
   tasks::LoadedScene value;
+  bool has_file = false;  ///< read from a file (from_file), not made from text or a dict
 };
 
 /// The overrides a Python call may give, named in messages as "argument dt".
@@ -59,8 +60,8 @@ inline void bindScene(py::module_& m) {
   m.def(
       "load",
       [](const std::string& yaml, const std::string& name,
-         const std::vector<std::pair<std::string, std::string>>& values,
-         const py::dict& overrides) {
+         const std::vector<std::pair<std::string, std::string>>& values, const py::dict& overrides,
+         bool has_file) {
         std::vector<scene::KeyValue> kv;
         for (const auto& [key, text] : values) kv.push_back({key, text});
         const tasks::Overrides o = overridesOf(overrides);
@@ -72,9 +73,10 @@ inline void bindScene(py::module_& m) {
         }
         auto applied = tasks::applyOverrides(std::move(loaded).value(), o);
         py::gil_scoped_acquire acquire;
-        return LoadedScene{take(std::move(applied))};
+        return LoadedScene{take(std::move(applied)), has_file};
       },
-      py::arg("yaml"), py::arg("name"), py::arg("values"), py::arg("overrides"));
+      py::arg("yaml"), py::arg("name"), py::arg("values"), py::arg("overrides"),
+      py::arg("has_file"));
 }
 
 }  // namespace pyrb

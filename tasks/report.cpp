@@ -639,6 +639,9 @@ struct RunModel {
 // the run (sceneChangedSince).
 RunModel runModelOf(const nlohmann::json& sidecar, const fs::path& dir) {
   if (field(sidecar, "command") != "simulate") return {};
+  // A scene made from text (Python's from_yaml, from_dict; scene_path null) has no file to replay
+  // the run on: a file of its name here is another scene, and there is nothing to say.
+  if (sidecar.contains("scene_path") && sidecar["scene_path"].is_null()) return {};
   const auto scene_path = sceneOf(sidecar, dir);
   // A scene read from a file when it ran (it has a fingerprint) that is not there now: moved or
   // removed (a run made from a string has none, and nothing to say).

@@ -142,12 +142,17 @@ nlohmann::json telemetrySidecar(const RunScene& scene, const sim::Model& model, 
   j["program"] = "rattleback " RATTLEBACK_VERSION;
   j["command"] = "simulate";
   j["scene"] = scene.file;
-  // Absolute too, so that `report` run from another folder finds the body for its 3D player.
+  // Absolute too, so that `report` run from another folder finds the body for its 3D player;
+  // null for a scene made from text, which has no file (report then draws no player for it).
   std::error_code ec;
   const std::filesystem::path absolute = std::filesystem::absolute(scene.file, ec);
-  j["scene_path"] = ec ? scene.file : absolute.lexically_normal().string();
+  if (!scene.has_file)
+    j["scene_path"] = nullptr;
+  else
+    j["scene_path"] = ec ? scene.file : absolute.lexically_normal().string();
   // The scene's content as it was read for the run, so that `report` can tell when the file has
-  // been edited since and its 3D player would draw another body than the one simulated.
+  // been edited since and its 3D player would draw another body than the one simulated (for a
+  // scene with no file, the text run: the same text read from a file gives the same).
   j["scene_fingerprint"] = fingerprintOf({scene.content});
   // The values put in over the file, in order ({"key", "value": YAML text}): the file and these
   // make the scene as run.

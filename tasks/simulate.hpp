@@ -67,6 +67,9 @@ struct RunScene {
   std::string file;
   std::vector<scene::KeyValue> values;
   std::string content;
+  /// False for a scene made from text (Python's from_yaml, from_dict): `file` is then a name
+  /// only, and the sidecar points to no file (a file of that name is not the scene that ran).
+  bool has_file = true;
 };
 
 /// The sidecar X.csv.json: what the CSV is (program, scene, columns and units, the model) and

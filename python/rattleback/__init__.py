@@ -60,11 +60,15 @@ class Scene:
     line's message does.
     """
 
-    def __init__(self, yaml: str, name: str, values: Sequence[tuple[str, str]] = ()):
+    def __init__(self, yaml: str, name: str, values: Sequence[tuple[str, str]] = (),
+                 _file: bool = False):
         self._yaml = yaml
         self._name = name
         self._values = tuple(values)
-        self._loaded = _core.load(yaml, name, list(self._values), {})
+        # Read from the file `name` (from_file); else `name` only stands for one in messages, and
+        # a run's sidecar points to no file.
+        self._file = _file
+        self._loaded = _core.load(yaml, name, list(self._values), {}, _file)
 
     @classmethod
     @checked
@@ -73,7 +77,7 @@ class Scene:
         here is the installed copy's, as the command line finds it: the shipped scenes load by
         their names from any folder, and are named by the file read."""
         path = _core.find_shipped(os.fspath(path))
-        return cls(_core.read_scene_file(path), path)
+        return cls(_core.read_scene_file(path), path, _file=True)
 
     @classmethod
     @checked
@@ -105,7 +109,7 @@ class Scene:
         "contact.air_drag": 1e-5, "body.dents.at[0]": 0.3}``. A wrong key or value raises
         :class:`SceneError` naming ``with_values`` and the key."""
         added = [(str(k), _yaml_value(v)) for k, v in values.items()]
-        return Scene(self._yaml, self._name, self._values + tuple(added))
+        return Scene(self._yaml, self._name, self._values + tuple(added), self._file)
 
     @property
     def name(self) -> str:
@@ -138,7 +142,7 @@ class Scene:
             overrides["size"] = [int(side) for side in overrides["size"]]
         if not overrides:
             return self._loaded
-        return _core.load(self._yaml, self._name, list(self._values), overrides)
+        return _core.load(self._yaml, self._name, list(self._values), overrides, self._file)
 
     def __repr__(self) -> str:
         extra = f", values={self.values!r}" if self._values else ""

@@ -295,3 +295,25 @@ def test_a_shipped_scene_is_found_from_any_folder_as_the_command_line_finds_it(t
     (elsewhere / "scenes").mkdir()
     (elsewhere / "scenes" / "rattleback.yaml").write_text(Path(shipped).read_text())
     assert rb.Scene.from_file("scenes/rattleback.yaml").name == "scenes/rattleback.yaml"
+
+
+@pytest.mark.parametrize("there", ["kane-levinson.yaml", "rattleback.yaml"])
+def test_a_run_of_a_scene_with_no_file_points_to_none(tmp_path, there):
+    """A run of a scene made from text is of no file: its sidecar named <cwd>/other.yaml, and
+    `report` took whatever file sat there for its scene, drawing that body in the 3D player
+    (the same text) or saying the file "has changed since this run" (another)."""
+    text = Path(scene_path("rattleback.yaml")).read_text()
+    run = rb.simulate(rb.Scene.from_yaml(text, name="other.yaml"), duration=0.5)
+    run.to_csv(tmp_path / "other.csv")
+    sidecar = json.loads((tmp_path / "other.csv.json").read_text())
+    assert sidecar["scene"] == "other.yaml" and sidecar["scene_path"] is None
+    assert run.sidecar() == {**sidecar, "result": run.sidecar()["result"]}
+    # Its fingerprint is of the text run, as a file's is of the file's text.
+    ran = rb.simulate(scene_path("rattleback.yaml"), duration=0.5).sidecar()
+    assert sidecar["scene_fingerprint"] == ran["scene_fingerprint"]
+    (tmp_path / "other.yaml").write_text(Path(scene_path(there)).read_text())
+    report = cli("report", str(tmp_path))
+    assert "other.yaml" not in report.stderr
+    assert not (tmp_path / "other.player.js").exists()
+    page = (tmp_path / "index.html").read_text()
+    assert "rb-player" not in page and "averaged theory" not in page
