@@ -155,6 +155,12 @@ CLAIMS = [
     ("docs/commands.md", "dopri5, tolerance 1e-08, «2000» steps («40» rejected), 8 s simulated",
      [lambda r: r.simulate("rattleback")["steps"],
       lambda r: r.simulate("rattleback")["rejected_steps"]]),
+    ("docs/python.md",
+     "print(pool.map(first_reversal, scenes)) # [«2.3664759726320312», «2.6528510225736284», "
+     "«3.13729750753789»]",
+     [lambda r, spin=spin: float(r.row("spin-drag", initial__spin=spin,
+                                       contact__air_drag=5.9e-6)["first_reversal_s"])
+      for spin in (-5, -4, -3)]),
     ("docs/python.md", "('«ccw»', {'pitch': «6.970009429469335», 'roll': «3.4738980805453132»})",
      [lambda r: r.analyze("rattleback")["preferred"],
       lambda r: r.analyze("rattleback")["frequencies_hz"]["pitch"],

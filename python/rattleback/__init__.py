@@ -144,6 +144,11 @@ class Scene:
             return self._loaded
         return _core.load(self._yaml, self._name, list(self._values), overrides, self._file)
 
+    def __reduce__(self):
+        # Pickled as what it was made of, and compiled again where it is unpickled (a worker
+        # process): the compiled scene is the library's, and tens of ms to make.
+        return (Scene, (self._yaml, self._name, self._values, self._file))
+
     def __repr__(self) -> str:
         extra = f", values={self.values!r}" if self._values else ""
         return f"Scene({self._name!r}{extra})"
@@ -276,6 +281,18 @@ class Run:
         """Writes the command line's exact CSV at ``path`` and its sidecar at
         ``path + ".json"``, each whole or not at all."""
         self._run.to_csv(os.fspath(path))
+
+    def __reduce__(self):
+        raise TypeError("a Run cannot be pickled (its samples are the library's): return "
+                        "run.to_pandas(), run.columns or run.summary from a worker, or write "
+                        "run.to_csv(path) there")
+
+    # A run is read-only (its arrays too): a copy is itself.
+    def __copy__(self) -> "Run":
+        return self
+
+    def __deepcopy__(self, memo) -> "Run":
+        return self
 
     def __repr__(self) -> str:
         first = self.first_reversal

@@ -1,5 +1,6 @@
 """Long calls release the GIL, so runs in threads go side by side and give what each gives
-alone; Ctrl-C raises KeyboardInterrupt promptly and leaves no file behind."""
+alone; scenes go to worker processes; Ctrl-C raises KeyboardInterrupt promptly and leaves no
+file behind."""
 
 import os
 import select
@@ -11,9 +12,11 @@ import time
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 import rattleback as rb
 from conftest import scene_path
+from test_errors import DICT_SCENE
 
 
 def test_two_runs_in_two_threads_give_the_results_of_each_alone():
@@ -101,3 +104,49 @@ def test_ctrl_c_stops_a_run_within_a_fifth_of_a_second(tmp_path):
 def test_ctrl_c_stops_a_video_and_leaves_no_file(tmp_path):
     assert interrupt(tmp_path, "render") < 0.2
     assert list(tmp_path.iterdir()) == []  # neither the video nor its temporary file
+
+
+def _first_reversal(scene):
+    return rb.simulate(scene, duration=3.0).first_reversal
+
+
+def _run(scene):
+    return rb.simulate(scene, duration=0.1)
+
+
+def test_scenes_go_to_worker_processes_and_come_back_the_same(tmp_path):
+    """A Scene pickles as what it was made of (its text, name, values and whether it is a
+    file's), so a multiprocessing.Pool maps over scenes; it raised "cannot pickle
+    'rattleback._core.LoadedScene' object"."""
+    import multiprocessing
+    import pickle
+    base = rb.Scene.from_file(scene_path("rattleback.yaml"))
+    scenes = [base, base.with_values({"initial.spin": 5}),
+              rb.Scene.from_yaml(base.yaml, name="mine.yaml"),
+              rb.Scene.from_dict(DICT_SCENE)]
+    for scene in scenes:
+        back = pickle.loads(pickle.dumps(scene))
+        assert (back.name, back.values, back.yaml) == (scene.name, scene.values, scene.yaml)
+        a, b = rb.simulate(scene, duration=0.2).sidecar(), rb.simulate(back, duration=0.2).sidecar()
+        a["result"].pop("wall_s"), b["result"].pop("wall_s")
+        assert a == b  # the same scene_path (null for a scene with no file) and fingerprint
+    with multiprocessing.get_context("spawn").Pool(2) as pool:
+        assert pool.map(_first_reversal, scenes[:2]) == [_first_reversal(s) for s in scenes[:2]]
+
+
+def test_a_run_says_what_to_return_from_a_worker_instead():
+    # Its samples and model are the library's C++ values; a Pool returning one lost every result
+    # to "MaybeEncodingError: … cannot pickle 'rattleback._core.Run' object".
+    import copy
+    import multiprocessing
+    import pickle
+    run = rb.simulate(scene_path("rattleback.yaml"), duration=0.1)
+    with pytest.raises(TypeError) as caught:
+        pickle.dumps(run)
+    assert str(caught.value) == (
+        "a Run cannot be pickled (its samples are the library's): return run.to_pandas(), "
+        "run.columns or run.summary from a worker, or write run.to_csv(path) there")
+    assert copy.copy(run) is run and copy.deepcopy(run) is run  # read-only, as its arrays are
+    with multiprocessing.get_context("spawn").Pool(1) as pool:
+        with pytest.raises(multiprocessing.pool.MaybeEncodingError, match="return run.to_pandas"):
+            pool.map(_run, [scene_path("rattleback.yaml")])
