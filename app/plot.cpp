@@ -111,9 +111,11 @@ rb::Status checkPlotFolder(const std::string& dir, const std::string& first_figu
 rb::Status checkPlotFile(const std::string& png) {
   std::error_code ec;
   if (fs::is_directory(png, ec)) return rb::Status::fail(png + ": --plot is a folder, not a file");
+  const rb::OutputNamedBy naming("--plot");
+  // gnuplot draws a PNG whatever the name says (a new user's trial: --plot x.jpg).
+  if (auto ok = rb::checkExtension(png, ".png", "PNG", false); !ok) return ok;
   const rb::OutputPlace place = rb::outputPlace(png);
   if (auto refused = refuseDevice(png, place); !refused) return refused;
-  const rb::OutputNamedBy naming("--plot");
   if (auto made = tasks::makeParentFolder(place.target); !made) return made;
   const fs::path dir = fs::absolute(place.target).parent_path();
   if (std::string why = probeWrite(dir); !why.empty())

@@ -19,6 +19,7 @@
 #include "tasks/scene_args.hpp"
 #include "tasks/sweep.hpp"
 #include "tasks/sweep_jobs.hpp"
+#include "util/output_place.hpp"
 
 namespace app {
 
@@ -157,6 +158,10 @@ rb::Status checkOptions(const SweepArgs& args, std::optional<tasks::Shard>& shar
   if (args.jobs < 0 || args.jobs > 1024)
     return rb::Status::fail("--jobs: threads must be 1 … 1024 (0 or none: all cores), not " +
                             std::to_string(args.jobs));
+  if (!args.plot.empty()) {  // checked here too for --emit, whose merge draws it
+    const rb::OutputNamedBy naming("--plot");
+    if (auto ok = rb::checkExtension(args.plot, ".png", "PNG", false); !ok) return ok;
+  }
   if (args.shard.empty()) return {};
   shard = tasks::parseShard(args.shard);
   if (!shard)

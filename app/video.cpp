@@ -167,6 +167,10 @@ int compareCommand(const CompareArgs& args) {
               << args.pixel_fraction << "\n";
     return kBadInput;
   }
+  {
+    const rb::OutputNamedBy naming("--diff");  // refused before the images are read
+    if (auto ok = rb::checkExtension(args.diff, ".png", "PNG", false); !ok) return fail(ok);
+  }
   render::Image a, b;
   for (auto [path, image] : {std::pair{&args.actual, &a}, std::pair{&args.expected, &b}}) {
     if (auto e = render::readPng(*path, *image); !e) {

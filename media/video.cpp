@@ -194,18 +194,6 @@ rb::Status checkEncoderOptions(int crf, const std::string& preset) {
   return rb::Status::fail("--preset: must be one of x264's: " + names + "; not '" + preset + "'");
 }
 
-rb::Status checkExtension(const std::string& output, const std::string& wanted,
-                          const std::string& format, bool base_allowed) {
-  if (output.empty()) return {};
-  std::string ext = fs::path(output).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
-  if (ext == wanted || (base_allowed && ext.empty())) return {};
-  // Named as the caller names the output (-o; render's output in Python).
-  return rb::Status::fail(std::string(rb::output_named_by) + " " + output + ": writes " + format +
-                          "; give a name ending in " + wanted);
-}
-
 std::jthread preloadDriver(render::Backend backend) {
   return std::jthread([backend] { render::preloadBackend(backend); });
 }

@@ -13,6 +13,7 @@
 #include "render/frame.hpp"
 #include "tasks/outcome.hpp"
 #include "tasks/scene_args.hpp"
+#include "util/output_place.hpp"
 #include "util/result.hpp"
 
 namespace media {
@@ -54,8 +55,7 @@ struct VideoResult {
 /// crf within 1 … 51 and a known preset; one line naming the option otherwise.
 rb::Status checkEncoderOptions(int crf, const std::string& preset);
 /// An output name whose extension says another format than the one written is refused.
-rb::Status checkExtension(const std::string& output, const std::string& wanted,
-                          const std::string& format, bool base_allowed);
+using rb::checkExtension;
 /// Loads the OpenGL driver behind `backend` on a thread of its own (about 40 ms with
 /// llvmpipe), while the caller loads its scene.
 std::jthread preloadDriver(render::Backend backend);

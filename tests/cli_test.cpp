@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
+#include <tuple>
 #include <vector>
 
 #include "app/plot.hpp"
@@ -797,6 +798,42 @@ TEST(Cli, OutputFoldersAreMadeOrRefusedInOneLine) {
         << refused.err;
     EXPECT_FALSE(fs::exists(table)) << command;
   }
+}
+
+// Every writer of a PNG refuses a name that says another format, as still -o does (a new user's
+// trial: `compare --diff d.txt` wrote a PNG named d.txt, `sweep --plot x.jpg` one named x.jpg),
+// before any run, nothing written.
+TEST(Cli, EveryPngWriterRefusesANameOfAnotherFormat) {
+  const fs::path dir = emptyDir("formats");
+  const std::string sweep = std::string(RATTLEBACK_SOURCE_DIR) + "/sweeps/spin-drag.yaml";
+  const fs::path table = dir / "t.csv";
+  for (const auto& [command, option, name] :
+       {std::tuple<std::string, std::string, std::string>{
+            "sweep " + sweep + " -q -o " + table.string(), "--plot", "x.jpg"},
+        {"sweep " + sweep + " --emit slurm --shards 2 -o " + table.string(), "--plot", "x.jpg"},
+        {"sweep merge " + table.string() + " " + table.string(), "--plot", "x.svg"},
+        {"bench " + scene("rattleback") + " --duration 0.2 -q -o " + table.string(), "--plot",
+         "x.pdf"}}) {
+    const std::string path = (dir / name).string();
+    const Result r = rattleback(command + " " + option + " " + path);
+    EXPECT_EQ(r.status, 2) << command;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_EQ(r.err, option + " " + path + ": writes PNG; give a name ending in .png\n") << command;
+    EXPECT_FALSE(fs::exists(path)) << command;
+    EXPECT_FALSE(fs::exists(table)) << command;
+    EXPECT_TRUE(r.out.empty()) << command << "\n" << r.out;
+  }
+  // compare's --diff, given two images that differ.
+  render::Image a{4, 4, std::vector<unsigned char>(64, 255)}, b = a;
+  b.rgba[0] = 0;
+  ASSERT_TRUE(render::writePng((dir / "a.png").string(), a).ok());
+  ASSERT_TRUE(render::writePng((dir / "b.png").string(), b).ok());
+  const fs::path diff = dir / "d.txt";
+  const Result r = rattleback("compare " + (dir / "a.png").string() + " " +
+                              (dir / "b.png").string() + " --diff " + diff.string());
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_EQ(r.err, "--diff " + diff.string() + ": writes PNG; give a name ending in .png\n");
+  EXPECT_FALSE(fs::exists(diff));
 }
 
 namespace {

@@ -10,11 +10,15 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <string>
 #include <system_error>
+
+#include "util/result.hpp"
 
 namespace rb {
 
@@ -90,6 +94,21 @@ inline std::string cannotWriteIn(const std::string& path, const std::string& rea
 }
 inline std::string cannotWriteIn(const std::string& path, int error) {
   return cannotWriteIn(path, std::strerror(error ? error : EACCES));
+}
+
+/// An output name whose extension says another format than the one written is refused:
+/// "-o x.avi: writes MP4 video; give a name ending in .mp4", named as the caller names the
+/// output (output_named_by: -o, --plot, --diff; render's output in Python). `base_allowed`: a
+/// name with no extension is taken (render --both's base name).
+inline Status checkExtension(const std::string& output, const std::string& wanted,
+                             const std::string& format, bool base_allowed) {
+  if (output.empty()) return {};
+  std::string ext = std::filesystem::path(output).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  if (ext == wanted || (base_allowed && ext.empty())) return {};
+  return Status::fail(std::string(output_named_by) + " " + output + ": writes " + format +
+                      "; give a name ending in " + wanted);
 }
 
 }  // namespace rb
