@@ -256,12 +256,8 @@ PYBIND11_MODULE(_core, m) {
           // Listed in the folder's manifest, as the command line lists it (a failure to list
           // loses nothing: the report then places the file by its name).
           if (written)
-            (void)tasks::recordOutputs({{path,
-                                         tasks::OutputKind::Telemetry,
-                                         std::filesystem::path(r.scene).stem().string(),
-                                         "",
-                                         {},
-                                         {}}});
+            (void)tasks::recordOutputs(
+                {{path, tasks::OutputKind::Telemetry, stemOf(r.scene, r.has_file), "", {}, {}}});
         }
         if (!written) raise(written.error());
       });

@@ -87,7 +87,7 @@ py::tuple still(const LoadedScene& loaded, double t, bool readouts, bool transpa
   if (still.outcome.ending == tasks::Ending::Stopped)
     raiseStopped(still.outcome, request.scene_name);
   py::dict listed;
-  listed["scene"] = std::filesystem::path(request.scene_name).stem().string();
+  listed["scene"] = stemOf(request.scene_name, loaded.has_file);
   listed["view"] = std::string(rb::nameOf(still.view));
   listed["spin"] = loaded.value.model.initial.spin;
   listed["t"] = t;
@@ -98,7 +98,8 @@ py::list renderVideos(const LoadedScene& loaded, const std::string& output, bool
                       const std::string& preset, const std::string& backend) {
   media::VideoRequest request;
   request.scene_name = loaded.value.scene.file;
-  request.output = output;
+  const std::string stem = stemOf(request.scene_name, loaded.has_file);
+  request.output = output.empty() ? "out/" + stem + ".mp4" : output;
   request.both = both;
   request.crf = crf;
   request.preset = preset;
@@ -114,12 +115,7 @@ py::list renderVideos(const LoadedScene& loaded, const std::string& output, bool
     raiseStopped(result.outcome, request.scene_name);
   std::vector<tasks::OutputEntry> entries;
   for (const media::VideoFile& f : result.files)
-    entries.push_back({f.path,
-                       tasks::OutputKind::Video,
-                       std::filesystem::path(request.scene_name).stem().string(),
-                       f.role,
-                       f.spin,
-                       {}});
+    entries.push_back({f.path, tasks::OutputKind::Video, stem, f.role, f.spin, {}});
   (void)tasks::recordOutputs(entries);  // as the command line lists them
   py::list files;
   for (const media::VideoFile& f : result.files) {

@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,6 +21,14 @@ struct LoadedScene {
   tasks::LoadedScene value;
   bool has_file = false;  ///< read from a file (from_file), not made from text or a dict
 };
+
+/// The stem a scene's outputs are named by (out/<stem>.mp4, the folder's manifest): its file's,
+/// or a name's given for a scene with no file; "scene" for from_dict's "<dict>" and from_yaml's
+/// "<yaml>", which stand for no file (out/<dict>.mp4 is a name a shell takes for redirections).
+inline std::string stemOf(const std::string& name, bool has_file) {
+  const std::string stem = std::filesystem::path(name).stem().string();
+  return !has_file && (stem.empty() || stem.front() == '<') ? "scene" : stem;
+}
 
 /// The overrides a Python call may give, named in messages as "argument dt".
 inline tasks::Overrides overridesOf(const py::dict& kw) {

@@ -424,7 +424,8 @@ def render(scene: SceneLike, output: Union[str, os.PathLike, None] = None, *,
            crf: int = 20, preset: str = "veryfast", backend: str = "auto") -> list[dict]:
     """The scene's run as an MP4 video (H.264), as ``rattleback render`` writes it.
 
-    ``output`` is the .mp4 (default ``out/<scene>.mp4``); with ``both=True`` it is the base of
+    ``output`` is the .mp4 (default ``out/<scene>.mp4``; ``out/scene.mp4`` for a dict or YAML
+    text given no name); with ``both=True`` it is the base of
     ``BASE-preferred.mp4``, ``BASE-reversed.mp4`` and ``BASE-both.mp4``. Returns one dict per
     video: ``path``, ``frames``, ``spin`` and ``first_reversal_s`` of the run it shows.
     """

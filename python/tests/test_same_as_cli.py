@@ -317,3 +317,18 @@ def test_a_run_of_a_scene_with_no_file_points_to_none(tmp_path, there):
     assert not (tmp_path / "other.player.js").exists()
     page = (tmp_path / "index.html").read_text()
     assert "rb-player" not in page and "averaged theory" not in page
+
+
+def test_a_scene_with_no_file_gets_a_default_name_of_a_file(tmp_path, monkeypatch):
+    """A dict's or unnamed text's video was out/<dict>.mp4 (out/<yaml>.mp4): a name in angle
+    brackets, which a shell takes for redirections. Such a scene's outputs are named "scene"."""
+    monkeypatch.chdir(tmp_path)
+    text = Path(scene_path("rattleback.yaml")).read_text()
+    for scene in (rb.Scene.from_yaml(text), rb.Scene.from_yaml(text, name="mine.yaml")):
+        [video] = rb.render(scene, duration=0.2, size=(64, 48), fps=10)
+        assert video["path"] == ("out/mine.mp4" if scene.name == "mine.yaml" else "out/scene.mp4")
+    both = rb.render(rb.Scene.from_yaml(text), both=True, duration=0.2, size=(64, 48), fps=10)
+    assert sorted(f["path"] for f in both) == ["out/scene-both.mp4", "out/scene-preferred.mp4",
+                                               "out/scene-reversed.mp4"]
+    listed = json.loads((tmp_path / "out" / "rattleback-manifest.json").read_text())
+    assert "<yaml>" not in json.dumps(listed)
