@@ -123,11 +123,25 @@ std::string spinWords(double spin) {
   return spin > 0 ? "counter-clockwise" : spin < 0 ? "clockwise" : "no spin";
 }
 
-// Whether a run (simulate's sidecar's result) reversed, and when.
+// Whether a run (simulate's sidecar's result) reversed, and when: every reversal, as the
+// player's n(t) plot counts them (a new user's long run said only its first of 4), the first
+// kReversalsNamed of more. A sidecar without the list gives its first.
 std::string reversalOf(const nlohmann::json& result) {
-  if (field(result, "first_reversal_s").is_number())
-    return "<b>reversed at " + number(field(result, "first_reversal_s"), "%.3f") + " s</b>";
-  return "no reversal in " + number(field(result, "simulated_s"), "%g") + " s";
+  constexpr std::size_t kReversalsNamed = 4;
+  std::vector<std::string> times;
+  const nlohmann::json& all = field(result, "reversals_s");
+  if (all.is_array())
+    for (const nlohmann::json& t : all) times.push_back(number(t, "%.3f"));
+  if (times.empty() && field(result, "first_reversal_s").is_number())
+    times.push_back(number(field(result, "first_reversal_s"), "%.3f"));
+  if (times.empty()) return "no reversal in " + number(field(result, "simulated_s"), "%g") + " s";
+  if (times.size() == 1) return "<b>reversed at " + times[0] + " s</b>";
+  const std::size_t named = std::min(times.size(), kReversalsNamed);
+  std::string text = "<b>reversed " + std::to_string(times.size()) + " times</b>, ";
+  text += named < times.size() ? "the first " + std::to_string(named) + " at " : "at ";
+  for (std::size_t i = 0; i < named; ++i)
+    text += times[i] + (i + 2 < named ? ", " : i + 2 == named ? " and " : " s");
+  return text;
 }
 
 // A mode at rest (analyze's "frequencies_hz"): its frequency, or how fast it grows where it

@@ -1335,6 +1335,44 @@ TEST(Cli, TheReportShowsEveryRunOfAScene) {
   }
 }
 
+// The measured cell gives every reversal of the run, as the player's n(t) plot counts them: a
+// new user's kane-levinson-long said "reversed at 2.807 s" beside a plot of 4 reversals. 33 s
+// of it reverse 3 times (2.807, 17.397, 31.936 s); of more than 4, the cell names the first 4
+// and the count (a sidecar's list made longer by hand: a run of 5 takes 60 s).
+TEST(Report, TheMeasuredCellGivesEveryReversal) {
+  const fs::path dir = emptyDir("reversals");
+  const std::string csv = (dir / "kane-levinson-long.csv").string();
+  ASSERT_EQ(rattleback("simulate " + scene("kane-levinson-long") +
+                       " --duration 33 --rate 20 -q -o " + csv)
+                .status,
+            0);
+  nlohmann::json run = nlohmann::json::parse(std::ifstream(csv + ".json"));
+  const nlohmann::json reversals = run["result"]["reversals_s"];  // (a copy: run is changed)
+  ASSERT_EQ(reversals.size(), 3u) << reversals;
+  auto at = [&](std::size_t i) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3f", reversals[i].get<double>());
+    return std::string(text);
+  };
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  std::string html = readText(dir / "index.html");
+  // The measured cell, to show when it says otherwise.
+  auto cell = [&] { return html.substr(html.find("measured (simulate)</th>"), 700); };
+  const std::string three =
+      "<b>reversed 3 times</b>, at " + at(0) + ", " + at(1) + " and " + at(2) + " s";
+  EXPECT_NE(html.find(three), std::string::npos) << three << "\n" << cell();
+  EXPECT_EQ(html.find("reversed at"), std::string::npos) << cell();
+
+  for (const double t : {40.0, 50.0, 60.0}) run["result"]["reversals_s"].push_back(t);
+  std::ofstream(csv + ".json") << run.dump();
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  html = readText(dir / "index.html");
+  const std::string six = "<b>reversed 6 times</b>, the first 4 at " + at(0) + ", " + at(1) + ", " +
+                          at(2) + " and 40.000 s";
+  EXPECT_NE(html.find(six), std::string::npos) << six << "\n" << cell();
+  EXPECT_EQ(html.find("50.000"), std::string::npos);
+}
+
 // The player draws the body the run simulated, not the scene file as it is now: a new user
 // edited a scene's body after simulating it and `report` replayed the old run on the new body
 // without a word. A scene whose content changed since (its sidecar's scene_fingerprint; in an
