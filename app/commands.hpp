@@ -127,9 +127,9 @@ struct SweepArgs {
   std::string shard;   ///< "I/N": rows I, I+N, … only
   std::string plot;    ///< heatmap PNG of --metric over the first two axes
   std::string metric = "first_reversal_s";
-  std::string emit;     ///< "slurm" | "parallel": print a job script instead of running
-  int shards = 0;       ///< with --emit: how many shards
-  bool resume = false;  ///< continue from the rows an interrupted run kept
+  std::string emit;           ///< "slurm" | "parallel": print a job script instead of running
+  std::optional<int> shards;  ///< with --emit: how many shards (refused without it)
+  bool resume = false;        ///< continue from the rows an interrupted run kept
   bool quiet = false;
 };
 /// Runs every scene of a sweep (the product of its axes) on a pool of threads; one CSV row each.

@@ -158,6 +158,10 @@ rb::Status checkOptions(const SweepArgs& args, std::optional<tasks::Shard>& shar
   if (args.jobs < 0 || args.jobs > 1024)
     return rb::Status::fail("--jobs: threads must be 1 … 1024 (0 or none: all cores), not " +
                             std::to_string(args.jobs));
+  if (args.shards && args.emit.empty())
+    return rb::Status::fail(
+        "--shards: needs --emit (slurm or parallel), whose job script runs the sweep in N "
+        "shards; to run one shard here, give --shard I/N");
   if (!args.plot.empty()) {  // checked here too for --emit, whose merge draws it
     const rb::OutputNamedBy naming("--plot");
     if (auto ok = rb::checkExtension(args.plot, ".png", "PNG", false); !ok) return ok;
@@ -181,7 +185,7 @@ int emitScript(const SweepArgs& args, const scene::Sweep& sweep, const std::stri
                                  args.emit + "'"));
   tasks::JobRequest request;
   request.kind = *kind;
-  request.shards = args.shards;
+  request.shards = args.shards.value_or(0);
   request.program = selfPath();
   request.output = output;
   request.plot = args.plot;

@@ -836,6 +836,22 @@ TEST(Cli, EveryPngWriterRefusesANameOfAnotherFormat) {
   EXPECT_FALSE(fs::exists(diff));
 }
 
+// --shards splits a job script (--emit); without --emit it is refused, not ignored while the
+// whole sweep runs (a new user's trial).
+TEST(Cli, ShardsWithoutEmitIsRefused) {
+  const fs::path table = tempFile("t.csv");
+  for (const char* n : {"3", "0"}) {
+    const Result r =
+        rattleback("sweep " + std::string(RATTLEBACK_SOURCE_DIR) +
+                   "/sweeps/spin-drag.yaml -q --shards " + n + " -o " + table.string());
+    EXPECT_EQ(r.status, 2) << n;
+    EXPECT_EQ(r.err,
+              "--shards: needs --emit (slurm or parallel), whose job script runs the sweep in N "
+              "shards; to run one shard here, give --shard I/N\n");
+    EXPECT_FALSE(fs::exists(table));
+  }
+}
+
 namespace {
 
 // CSV text as rows of fields (no quoting needed for simulate's numbers).
