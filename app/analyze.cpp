@@ -39,7 +39,12 @@ std::string restModeText(const tasks::RestMode& mode) {
   return text;
 }
 
-void printTheory(std::FILE* out, const sim::Model& model, double spin) {
+// `given`: the spin came from --spin; else it is the scene's, or 5 rad/s for a scene not spun.
+void printTheory(std::FILE* out, const sim::Model& model, double spin, bool given) {
+  const bool unspun = !given && model.initial.spin == 0;
+  const char* marker = given    ? "   <- --spin"
+                       : unspun ? "   <- the scene is not spun: at 5 rad/s"
+                                : "   <- the scene's";
   const double unit = model.length_unit;
   const sim::Rest rest = sim::restOf(model);
   std::fprintf(out,
@@ -70,7 +75,7 @@ void printTheory(std::FILE* out, const sim::Model& model, double spin) {
   for (double n : spins) {
     const sim::Linearisation l = sim::linearise(model, n);
     std::fprintf(out, "                 %8.3g %+10.4f %+10.4f%s\n", n, l.roll_growth,
-                 l.pitch_growth, n == spin ? "   <- --spin" : "");
+                 l.pitch_growth, n == spin ? marker : "");
   }
   const sim::Linearisation l = sim::linearise(model, spin);
   std::fprintf(out, "eigenvalues      at n = %g rad/s:", spin);
@@ -94,6 +99,12 @@ void printTheory(std::FILE* out, const sim::Model& model, double spin) {
                  "spun the other way it is predicted to reverse sooner\n",
                  std::string(rb::nameOf(preferred)).c_str(),
                  preferred == sim::Direction::Ccw ? "counter-clockwise" : "clockwise");
+  if (unspun) {
+    std::fprintf(out,
+                 "first reversal   none: the scene is not spun (initial.spin 0; --spin N "
+                 "forecasts one spun N rad/s)\n");
+    return;
+  }
   const sim::ReversalForecast forecast = sim::forecastFirstReversal(model, spin, model.duration);
   if (!forecast.applies) {
     std::fprintf(out, "first reversal   not forecast: the theory needs a body that can stand\n");
@@ -204,13 +215,14 @@ void writeAnalysis(std::FILE* out, const AnalyzeArgs& args, const sim::Model& mo
     std::fprintf(out, "%s\n", tasks::analysisJson(model, spin).dump(2).c_str());
   } else {
     printText(out, args.scene, model);
-    printTheory(out, model, spin);
+    printTheory(out, model, spin, args.spin.has_value());
   }
 }
 
 }  // namespace
 
 int analyzeCommand(const AnalyzeArgs& args) {
+  if (auto ok = tasks::checkAnalysisSpin(args.spin, "--spin"); !ok) return fail(ok);
   auto loaded = loadScene(args.scene, {});
   if (!loaded) return fail(loaded);
   if (args.output.empty() || args.output == "-") {

@@ -315,6 +315,7 @@ PYBIND11_MODULE(_core, m) {
   m.def(
       "analyze",
       [](const LoadedScene& loaded, std::optional<double> spin) {
+        if (auto ok = tasks::checkAnalysisSpin(spin, "argument spin"); !ok) raise(ok.error());
         const sim::Model& model = loaded.value.model;
         return toPython(tasks::analysisJson(model, tasks::analysisSpin(model, spin)));
       },

@@ -6,6 +6,7 @@
 #include "sim/analysis.hpp"
 #include "sim/compile.hpp"
 #include "sim/stability.hpp"
+#include "util/format.hpp"
 
 namespace tasks {
 namespace {
@@ -54,6 +55,12 @@ RestModes restModes(const sim::Linearisation& at_rest) {
 double analysisSpin(const sim::Model& model, const std::optional<double>& spin) {
   if (spin) return *spin;
   return model.initial.spin != 0 ? model.initial.spin : 5.0;
+}
+
+rb::Status checkAnalysisSpin(const std::optional<double>& spin, const std::string& option) {
+  if (spin && !std::isfinite(*spin))
+    return rb::Status::fail(option + ": must be a finite number, not " + rb::show(*spin));
+  return {};
 }
 
 nlohmann::json analysisJson(const sim::Model& model, double spin) {

@@ -10,11 +10,16 @@
 #include "sim/analysis.hpp"
 #include "sim/body.hpp"
 #include "sim/model.hpp"
+#include "util/result.hpp"
 
 namespace tasks {
 
-/// The spin the theory is evaluated at: `spin` when given, else the scene's, else 5 rad/s.
+/// The spin the theory is evaluated at: `spin` when given, else the scene's, else (a scene not
+/// spun, whose theory at 0 says nothing of a direction) 5 rad/s.
 double analysisSpin(const sim::Model& model, const std::optional<double>& spin);
+/// A spin given for the analysis (analyze --spin, Python's spin=) is finite: a NaN printed
+/// numbers of no meaning and a preferred direction. `option` names it in the error.
+rb::Status checkAnalysisSpin(const std::optional<double>& spin, const std::string& option);
 
 /// Where the mass properties came from (body.mass_properties): scene, grid or continuum.
 std::string massSourceText(const sim::Body& body);

@@ -371,6 +371,37 @@ TEST(Cli, AnalyzeJsonWritesNonFiniteAsNull) {
   EXPECT_TRUE(nlohmann::json::parse(e.out)["points"]["total"].is_null());
 }
 
+// analyze --spin takes a finite number: a NaN printed numbers of no meaning (growth rates of
+// 1e267) and a preferred direction, text and JSON disagreeing, with exit 0. A scene not spun
+// is analysed at 5 rad/s for its rates, and said so; it forecasts no reversal (it forecast
+// none "within the run's 8 s spun 5 rad/s", a spin the run never had).
+TEST(Cli, AnalyzeRefusesANonFiniteSpinAndSaysWhenTheSceneIsNotSpun) {
+  for (const char* spin : {"nan", "inf", "-inf"}) {
+    for (const char* json : {"", " --json"}) {
+      const Result r = rattleback("analyze " + scene("rattleback") + " --spin " + spin + json);
+      EXPECT_EQ(r.status, 2) << spin << json;
+      EXPECT_EQ(r.out, "") << spin << json;
+      EXPECT_EQ(r.err, std::string("--spin: must be a finite number, not ") + spin + "\n");
+    }
+  }
+  const fs::path dir = emptyDir("unspun");
+  std::stringstream file;
+  file << std::ifstream(scene("rattleback")).rdbuf();
+  std::string text = file.str();
+  const std::size_t at = text.find("spin: -5.0");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 10, "spin: 0.0");
+  std::ofstream((dir / "unspun.yaml").string()) << text;
+  const Result r = rattleback("analyze " + (dir / "unspun.yaml").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("<- the scene is not spun: at 5 rad/s"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("first reversal   none: the scene is not spun"), std::string::npos) << r.out;
+  const Result given = rattleback("analyze " + (dir / "unspun.yaml").string() + " --spin -5");
+  ASSERT_EQ(given.status, 0) << given.err;
+  EXPECT_NE(given.out.find("<- --spin"), std::string::npos) << given.out;
+  EXPECT_NE(given.out.find("first reversal   forecast at"), std::string::npos) << given.out;
+}
+
 TEST(Cli, AStoppedRunExitsThreeNamesWhenAndWhyAndKeepsTheOldOutput) {
   // The default body spun at −50 rad/s under the rolling model tips onto the edge of its top
   // (see HardCases.FiftyRadiansPerSecond): the run stops there.
