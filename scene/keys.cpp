@@ -173,7 +173,7 @@ const std::vector<Key>& table() {
        .field = FIELD(spec.body.ellipsoid.center),
        .unit = "file units",
        .doc = "the ellipsoid's centre relative to the CM",
-       .check = "finite",
+       .check = "finite; the CM within the ellipsoid: Σ (center / semi_axes)² < 1",
        .sample = "[0, 0, 0.01]"},
       {.path = "body.inertia",
        .field = FIELD(spec.body.inertia),

@@ -67,6 +67,19 @@ std::optional<rb::Error> checkEllipsoid(const BodySpec& b) {
     if (auto e = needPositive("body.ellipsoid.semi_axes", axis)) return e;
   for (double c : b.ellipsoid.center)
     if (auto e = needFinite("body.ellipsoid.center", c)) return e;
+  // The centre of mass of a body within the ellipsoid lies within it: (c/a)² summed below 1.
+  // One outside (a new user's center [0, 0, 0.5] on semi-axes 0.02 high) put the CM under the
+  // floor, and the body "stood" upright with a negative energy and drew nothing.
+  double reach = 0;
+  for (int i = 0; i < 3; ++i)
+    reach += std::pow(b.ellipsoid.center[i] / b.ellipsoid.semi_axes[i], 2);
+  if (!(reach < 1))
+    return rb::Error{"body.ellipsoid.center",
+                     "puts the centre of mass outside the ellipsoid (the sum of (center / "
+                     "semi_axes)² is " +
+                         rb::show(reach) +
+                         ", not below 1): it is the ellipsoid's centre seen from the centre of "
+                         "mass, in file units, e.g. [0, 0, 0.01]"};
   if (auto e = needPositive("body.mass", b.mass)) return e;
   return checkInertia(b.inertia);
 }

@@ -303,6 +303,16 @@ TEST(Ellipsoid, BadBodiesAreRefused) {
             "e.yaml:8: body.grid belongs to shape: paraboloid");
   EXPECT_EQ(error(with("[0.03, 0.20, 0.02], center", "[0.03, 0.20], center")),
             "e.yaml:5: body.ellipsoid.semi_axes must be a list of three numbers");
+  // The centre of mass within the ellipsoid: (0.5 / 0.02)² = 625 and 0.02 / 0.02 (on its
+  // surface) are refused, 0.0199 (just inside) is not.
+  for (const char* outside : {"[0.0, 0.0, 0.5]", "[0.0, 0.0, 0.02]", "[0.03, 0.0, 0.0]"})
+    EXPECT_EQ(error(with("[0.0, 0.0, 0.01]", outside))
+                  .rfind("e.yaml:5: body.ellipsoid.center puts the centre of mass outside the "
+                         "ellipsoid",
+                         0),
+              0u)
+        << outside;
+  EXPECT_EQ(error(with("[0.0, 0.0, 0.01]", "[0.0, 0.0, 0.0199]")), "");
 }
 
 // Against an independent solver in the repository: tests/reference/rolling_reference.py
