@@ -3,9 +3,11 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <tuple>
 
 #include "sim/compile.hpp"
 #include "util/assets.hpp"
+#include "util/format.hpp"
 
 namespace tasks {
 
@@ -39,6 +41,16 @@ rb::Result<LoadedScene> applyOverrides(scene::Loaded scene, const Overrides& o) 
     field = *value;
     scene.overrides[key] = name(option);
   };
+  // A NaN is the scene's "not given" (sim::kUnset): a NaN --dt read as no step at all ("--dt: or
+  // simulation.tolerance is required"). Refused as a scene's non-finite number is, placed as
+  // the fps's error is below.
+  for (const auto& [value, option, key] :
+       {std::tuple{&o.duration, "duration", "simulation.duration"},
+        std::tuple{&o.dt, "dt", "simulation.dt"},
+        std::tuple{&o.tolerance, "tolerance", "simulation.tolerance"}})
+    if (*value && !std::isfinite(**value))
+      return rb::Error{"", name(option) + ": must be a finite number, not " + rb::show(**value),
+                       rb::Error::Where{name(option), 0, key}};
   set(spec.simulation.duration, o.duration, "simulation.duration", "duration");
   if (o.dt && o.tolerance)
     return rb::Error{"", name("dt") + " and " + name("tolerance") +

@@ -883,6 +883,26 @@ TEST(Cli, ShardsWithoutEmitIsRefused) {
   }
 }
 
+// A step, tolerance or duration that is not a finite number is said to be, as --spin's is (a new
+// user's trial: `--dt nan` read "--dt: or simulation.tolerance is required", a NaN being the
+// scene's "not given").
+TEST(Cli, ANonFiniteStepToleranceOrDurationIsSaidToBe) {
+  for (const auto& [command, output] : {std::pair<std::string, std::string>{"simulate", "x.csv"},
+                                        {"render", "x.mp4"},
+                                        {"still", "x.png"}})
+    for (const char* option : {"--dt", "--tolerance", "--duration"})
+      for (const char* value : {"nan", "inf", "-inf"}) {
+        const fs::path out = tempFile(output);
+        const std::string args = command + " " + scene("rattleback") + " " + option + " " + value +
+                                 " -q -o " + out.string();
+        const Result r = rattleback(args);
+        EXPECT_EQ(r.status, 2) << args;
+        EXPECT_EQ(r.err, std::string(option) + ": must be a finite number, not " + value + "\n")
+            << args;
+        EXPECT_FALSE(fs::exists(out)) << args;
+      }
+}
+
 namespace {
 
 // CSV text as rows of fields (no quoting needed for simulate's numbers).

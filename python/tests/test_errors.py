@@ -1,5 +1,6 @@
 """Bad input raises the command line's message, with the file, line and key apart."""
 
+import math
 import os
 import subprocess
 import sys
@@ -87,6 +88,17 @@ def test_a_bad_argument_is_named_as_the_argument():
         rb.simulate(scene_path("rattleback.yaml"), dt=1e-3, tolerance=1e-6)
     with pytest.raises(ValueError, match="rate"):
         rb.simulate(scene_path("rattleback.yaml"), rate=0)
+
+
+@pytest.mark.parametrize("argument", ["dt", "tolerance", "duration"])
+@pytest.mark.parametrize("value, shown", [(math.nan, "nan"), (math.inf, "inf"), (-math.inf, "-inf")])
+def test_a_non_finite_step_tolerance_or_duration_is_said_to_be(argument, value, shown):
+    # A NaN dt read "argument dt: or simulation.tolerance is required" (NaN is the scene's "not
+    # given"); the command line's --dt nan reads the same as this.
+    with pytest.raises(rb.SceneError) as caught:
+        rb.simulate(scene_path("rattleback.yaml"), **{argument: value})
+    assert str(caught.value) == f"argument {argument}: must be a finite number, not {shown}"
+    assert caught.value.key == f"simulation.{argument}"
 
 
 def test_a_stills_time_is_named_as_the_argument():
