@@ -106,7 +106,11 @@ class MapReader {
     auto node = take(key);
     if (!node) return;
     if (!node->IsSequence() || node->size() != N)
-      fail(key, N == 2 ? "must be a list of two numbers" : "must be a list of three numbers");
+      fail(key, std::string(N == 2 ? "must be a list of two numbers"
+                                   : "must be a list of three numbers") +
+                    ", not " +
+                    (node->IsSequence() ? "a list of " + std::to_string(node->size())
+                                        : described(*node)));
     for (std::size_t i = 0; i < N; ++i) {
       if constexpr (std::is_same_v<T, int>)
         value[i] = whole((*node)[i], key);
@@ -153,14 +157,22 @@ class MapReader {
     return it->second;
   }
 
+  // What a value that is not the number it should be is: its text, or what kind of thing
+  // (`mass: ~` or `mass:` with nothing after was called 'a list or map').
+  static std::string described(const YAML::Node& node) {
+    if (node.IsScalar()) return "'" + node.Scalar() + "'";
+    if (node.IsSequence()) return "a list";
+    if (node.IsMap()) return "a map";
+    return "empty (the key has no value)";
+  }
+
   double number(const YAML::Node& node, const std::string& key) const {
     double v = 0;
     // A quoted scalar ("0.5") is a string: its tag is "!" rather than the plain "?".
     if (node.IsScalar() && node.Tag() == "!")
       fail(key, "must be a number, not the quoted string \"" + node.Scalar() + "\"");
     if (!node.IsScalar() || !YAML::convert<double>::decode(node, v))
-      fail(key,
-           "must be a number, not '" + (node.IsScalar() ? node.Scalar() : "a list or map") + "'");
+      fail(key, "must be a number, not " + described(node));
     return v;
   }
 

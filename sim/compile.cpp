@@ -172,7 +172,8 @@ std::optional<rb::Error> checkRest(const SceneSpec& spec) {
   if (auto e = needFinite("initial.spin", spec.initial.spin)) return e;
   for (double tilt : spec.initial.tilt) {
     if (auto e = needFinite("initial.tilt", tilt)) return e;
-    if (std::abs(tilt) > 180) return rb::Error{"initial.tilt", "must lie within ±180 degrees"};
+    if (std::abs(tilt) > 180)
+      return rb::Error{"initial.tilt", "must lie within ±180 degrees, not " + rb::show(tilt)};
   }
   if (auto e = needNonNegative("initial.height", spec.initial.height)) return e;
   if (spec.initial.height > 0 && spec.contact.model == "rolling")  // auto starts sliding

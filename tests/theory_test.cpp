@@ -302,7 +302,7 @@ TEST(Ellipsoid, BadBodiesAreRefused) {
   EXPECT_EQ(error(with("  mass: 1.0", "  mass: 1.0\n  grid: {dx: 1, dy: 1, dz: 1}")),
             "e.yaml:8: body.grid belongs to shape: paraboloid");
   EXPECT_EQ(error(with("[0.03, 0.20, 0.02], center", "[0.03, 0.20], center")),
-            "e.yaml:5: body.ellipsoid.semi_axes must be a list of three numbers");
+            "e.yaml:5: body.ellipsoid.semi_axes must be a list of three numbers, not a list of 2");
   // The centre of mass within the ellipsoid: (0.5 / 0.02)² = 625 and 0.02 / 0.02 (on its
   // surface) are refused, 0.0199 (just inside) is not.
   for (const char* outside : {"[0.0, 0.0, 0.5]", "[0.0, 0.0, 0.02]", "[0.03, 0.0, 0.0]"})
