@@ -2062,6 +2062,19 @@ TEST(Cli, AnOptionWithoutItsValueSaysWhatItTakes) {
 // A still far past any run a video may show (10 million frames) names --t, the option that asked
 // for the run, not line 1 of a file without a video section nor --duration (a new user's trial:
 // "base.yaml:1: video.playback makes more than 10 million frames …"). One line, exit 2, no PNG.
+// A time before 0, or none, reads as other options' errors do, with the value (a new user's trial:
+// "--t must be a time ≥ 0 s").
+TEST(Cli, AStillBeforeZeroNamesTAndItsValue) {
+  const fs::path png = tempFile("early.png");
+  for (const char* t : {"-1", "nan", "inf"}) {
+    const Result r =
+        rattleback("still " + scene("rattleback") + " --t " + t + " -q -o " + png.string());
+    EXPECT_EQ(r.status, 2) << t;
+    EXPECT_EQ(r.err, std::string("--t: must be a time ≥ 0 s, not ") + t + "\n");
+    EXPECT_FALSE(fs::exists(png));
+  }
+}
+
 TEST(Cli, AStillTooLateNamesT) {
   const fs::path png = tempFile("late.png");
   const Result r = rattleback("still " + scene("kane-levinson") + " --t 1e9 -o " + png.string());
