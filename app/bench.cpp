@@ -20,6 +20,7 @@
 #include "app/interrupt.hpp"
 #include "app/plot.hpp"
 #include "tasks/output.hpp"
+#include "util/format.hpp"
 
 namespace app {
 namespace {
@@ -191,9 +192,9 @@ int benchCommand(const BenchArgs& args) {
   for (const tasks::BenchScene& scene : scenes) {
     if (!args.quiet) {
       std::printf(
-          "\n%s: %g s simulated, %d repeats; reference rk4 at 1/16 of each model's "
+          "\n%s: %g s simulated, %s; reference rk4 at 1/16 of each model's "
           "finest step\n",
-          scene.name.c_str(), args.duration, args.repeats);
+          scene.name.c_str(), args.duration, rb::counted(args.repeats, "repeat").c_str());
       printHeader();
     }
     if (!tasks::benchScene(scene, options, rows)) {

@@ -18,6 +18,7 @@
 #include "tasks/check.hpp"
 #include "tasks/output.hpp"
 #include "tasks/scene_args.hpp"
+#include "util/format.hpp"
 
 namespace app {
 namespace {
@@ -45,14 +46,14 @@ void printSummary(std::FILE* out, const SimulateArgs& args, const sim::Model& mo
     std::fprintf(out,
                  "WARNING         the body cannot stand upright (its CM is above a radius of "
                  "curvature at the rest contact; `rattleback analyze` says by how much)\n");
+  const std::string steps = rb::counted(run.steps, "step");
   if (sim::isAdaptive(model.integrator))
-    std::fprintf(out,
-                 "integrator      %s, tolerance %g, %lld steps (%lld rejected), %g s simulated\n",
-                 integrator.c_str(), model.tolerance, static_cast<long long>(run.steps),
+    std::fprintf(out, "integrator      %s, tolerance %g, %s (%lld rejected), %g s simulated\n",
+                 integrator.c_str(), model.tolerance, steps.c_str(),
                  static_cast<long long>(run.rejected), simulated);
   else
-    std::fprintf(out, "integrator      %s, dt %g s, %lld steps (%g s simulated)\n",
-                 integrator.c_str(), model.dt, static_cast<long long>(run.steps), simulated);
+    std::fprintf(out, "integrator      %s, dt %g s, %s (%g s simulated)\n", integrator.c_str(),
+                 model.dt, steps.c_str(), simulated);
   if (run.first_reversal_s) {
     std::fprintf(out, "first reversal  %.4f s (spin %+g rad/s changed sign)\n",
                  *run.first_reversal_s, model.initial.spin);
@@ -72,7 +73,8 @@ void printSummary(std::FILE* out, const SimulateArgs& args, const sim::Model& mo
                    "nothing to rock, no spin reverses; try tilt: [0.5, 0.5])\n");
   }
   if (model.contact.model == sim::ContactModel::Auto) {
-    std::fprintf(out, "contact modes   %d switches", run.switches);
+    std::fprintf(out, "contact modes   %s",
+                 rb::counted(run.switches, "switch", "switches").c_str());
     for (const auto& [t, mode] : run.mode_changes)
       std::fprintf(out, "%s %s at %.4f s", &t == &run.mode_changes.front().first ? ":" : ",",
                    std::string(rb::nameOf(mode)).c_str(), t);
@@ -93,7 +95,7 @@ void printSummary(std::FILE* out, const SimulateArgs& args, const sim::Model& mo
   std::fprintf(out, "wall time       %.3f s: %.4f s per simulated second, %.3f us per step\n",
                run.wall_s, run.wall_s / simulated,
                1e6 * run.wall_s / static_cast<double>(std::max<std::int64_t>(1, run.steps)));
-  std::fprintf(out, "telemetry       %s (%lld rows)\n", csv.c_str(), static_cast<long long>(rows));
+  std::fprintf(out, "telemetry       %s (%s)\n", csv.c_str(), rb::counted(rows, "row").c_str());
 }
 
 // The estimated errors of `run` (simulate --check).
@@ -111,10 +113,12 @@ void printCheck(std::FILE* out, const tasks::RunCheck& check, const sim::RunSumm
                    i + 1, run.reversals[i]);
   }
   if (check.tighter_reversals.size() > run.reversals.size())
-    std::fprintf(out,
-                 "                the tighter run reverses %zu times, this run %zu: the run is "
-                 "not converged\n",
-                 check.tighter_reversals.size(), run.reversals.size());
+    std::fprintf(
+        out,
+        "                the tighter run reverses %s, this run %zu: the run is "
+        "not converged\n",
+        rb::counted(static_cast<long long>(check.tighter_reversals.size()), "time").c_str(),
+        run.reversals.size());
   std::fprintf(out,
                "                n(t): error at most about %.2g rad/s (at t = %.4g s); the "
                "check cost %.2g× the run\n",

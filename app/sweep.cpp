@@ -19,6 +19,7 @@
 #include "tasks/scene_args.hpp"
 #include "tasks/sweep.hpp"
 #include "tasks/sweep_jobs.hpp"
+#include "util/format.hpp"
 #include "util/output_place.hpp"
 
 namespace app {
@@ -225,8 +226,9 @@ rb::Result<Plan> planRows(const SweepArgs& args, const scene::Sweep& sweep,
     // --resume (a journal of a changed sweep is no use to it, and is begun afresh).
     auto kept = tasks::Journal::read(journal, sweep, plan.rows);
     if (kept && !kept->empty())
-      return rb::Error{"", journal + ": holds " + std::to_string(kept->size()) +
-                               " finished runs of an interrupted run of this sweep; give "
+      return rb::Error{"", journal + ": holds " +
+                               rb::counted(static_cast<long long>(kept->size()), "finished run") +
+                               " of an interrupted run of this sweep; give "
                                "--resume to run only the rest, or remove it to start again"};
   }
   for (std::int64_t r : plan.rows)
@@ -263,7 +265,8 @@ bool runRows(const SweepArgs& args, const scene::Sweep& sweep, const scene::Swee
 void printSummary(const SweepArgs& args, const std::optional<tasks::Shard>& shard, const Plan& plan,
                   const tasks::SweepRun& run, const std::string& output) {
   std::map<std::string, int> counts = plan.counts;
-  std::printf("sweep           %s: %zu runs", args.file.c_str(), plan.done.size());
+  std::printf("sweep           %s: %s", args.file.c_str(),
+              rb::counted(static_cast<long long>(plan.done.size()), "run").c_str());
   if (shard)
     std::printf(" (shard %lld of %lld)", static_cast<long long>(shard->index),
                 static_cast<long long>(shard->count));
@@ -348,8 +351,8 @@ int sweepCommand(const SweepArgs& args) {
   tasks::SweepRun run;
   if (!runRows(args, sweep, scenes.value(), plan.value(), journal.value(), metric, run)) {
     std::cerr << args.file << ": interrupted; " << plan->from_journal + run.rows.size() << " of "
-              << plan->rows.size() << " runs kept in " << journal_path
-              << "; the same command with --resume runs the rest\n";
+              << rb::counted(static_cast<long long>(plan->rows.size()), "run") << " kept in "
+              << journal_path << "; the same command with --resume runs the rest\n";
     return interruptedStatus();
   }
   if (auto e = writeOutputs(args, sweep, shard, plan.value(), metric, output.value()); !e)
@@ -395,8 +398,9 @@ int sweepMergeCommand(const SweepMergeArgs& args) {
         {args.plot, tasks::OutputKind::SweepPlot, sceneName(sweep_file), args.metric, {}, {}});
   record(entries);
   if (!args.quiet)
-    std::printf("merged          %lld rows from %zu shards into %s\n",
-                static_cast<long long>(m.rows), args.shards.size(), args.output.c_str());
+    std::printf("merged          %s from %s into %s\n", rb::counted(m.rows, "row").c_str(),
+                rb::counted(static_cast<long long>(args.shards.size()), "shard").c_str(),
+                args.output.c_str());
   return kOk;
 }
 

@@ -14,6 +14,7 @@
 #include "media/video_plan.hpp"
 #include "render/image_io.hpp"
 #include "tasks/output.hpp"
+#include "util/format.hpp"
 
 namespace app {
 namespace {
@@ -45,15 +46,15 @@ int notWritten(const tasks::Outcome& outcome, const std::string& scene, const st
 void printVideos(const media::VideoResult& r) {
   for (const std::string& note : r.notes) std::cerr << "note: " << note << "\n";
   for (const media::VideoFile& f : r.files) {
-    std::printf("%s  (%lld frames", f.path.c_str(), static_cast<long long>(f.frames));
+    std::printf("%s  (%s", f.path.c_str(), rb::counted(f.frames, "frame").c_str());
     if (f.spin && f.first_reversal_s)
       std::printf(", spun %+g rad/s, first reversal at %.3f s", *f.spin, *f.first_reversal_s);
     else if (f.spin)
       std::printf(", spun %+g rad/s, no reversal", *f.spin);
     std::printf(")\n");
   }
-  std::printf("%lld frames in %.2f s: %.1f frames per second end to end\n",
-              static_cast<long long>(r.frames), r.wall_s, r.frames / r.wall_s);
+  std::printf("%s in %.2f s: %.1f frames per second end to end\n",
+              rb::counted(r.frames, "frame").c_str(), r.wall_s, r.frames / r.wall_s);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include "scene/loader.hpp"
 #include "tasks/run_json.hpp"
+#include "util/format.hpp"
 #include "util/output_place.hpp"
 
 namespace tasks {
@@ -53,8 +54,10 @@ std::string slurmScript(const scene::Sweep& sweep, const JobRequest& r, const st
         .append(shellWord(r.metric));
   std::ostringstream s;
   s << "#!/bin/bash\n"
-    << "# " << stem << ": " << sweep.rows() << " runs of rattleback sweep " << sweep_file << "\n"
-    << "# as a Slurm job array of " << n << " tasks, one shard each; the first task also\n"
+    << "# " << stem << ": " << rb::counted(sweep.rows(), "run") << " of rattleback sweep "
+    << sweep_file << "\n"
+    << "# as a Slurm job array of " << rb::counted(r.shards, "task")
+    << ", one shard each; the first task also\n"
     << "# submits the merge, which runs once every task has succeeded (afterok) and writes\n"
     << "# " << out << (r.plot.empty() ? "" : " and its heatmap") << ".\n"
     << "# Submit with: sbatch THIS_FILE\n"
@@ -168,7 +171,7 @@ rb::Result<std::string> jobScript(const scene::Sweep& sweep, const JobRequest& r
     return rb::Error{"", "--emit " + kind + " needs --shards N (N ≥ 1): how many pieces to run"};
   if (r.shards > sweep.rows())
     return rb::Error{"", "--shards: " + std::to_string(r.shards) + " shards for " +
-                             std::to_string(sweep.rows()) + " runs leaves some empty; at most " +
+                             rb::counted(sweep.rows(), "run") + " leaves some empty; at most " +
                              std::to_string(sweep.rows())};
   if (r.kind == JobScript::Parallel && !r.plot.empty())
     return rb::Error{"",

@@ -903,6 +903,47 @@ TEST(Cli, ANonFiniteStepToleranceOrDurationIsSaidToBe) {
       }
 }
 
+// A count of one takes the singular in every summary (a new user's trial: "contact modes   1
+// switches", "1 runs, 0 ok, 1 refused", "1 repeats").
+TEST(Cli, ACountOfOneIsSingular) {
+  const fs::path dir = emptyDir("one");
+  const Result sim =
+      rattleback("simulate " + scene("seed-flip-ccw") +
+                 " --set contact.model=auto --duration 0.5 -o " + (dir / "r.csv").string());
+  ASSERT_EQ(sim.status, 0) << sim.err;
+  EXPECT_NE(sim.out.find("contact modes   1 switch: smooth at"), std::string::npos) << sim.out;
+
+  std::ofstream(dir / "one.yaml") << "base: " << scene("rattleback")
+                                  << "\nvary:\n  contact.friction: [-1]\nduration: 0.1\n";
+  const std::string sweep = "sweep " + (dir / "one.yaml").string();
+  const Result one = rattleback(sweep + " -o " + (dir / "t.csv").string());
+  ASSERT_EQ(one.status, 0) << one.err;
+  EXPECT_NE(one.out.find("one.yaml: 1 run, 0 ok, 1 refused\n"), std::string::npos) << one.out;
+  const Result merged =
+      rattleback("sweep merge " + (dir / "m.csv").string() + " " + (dir / "t.csv").string());
+  ASSERT_EQ(merged.status, 0) << merged.err;
+  EXPECT_NE(merged.out.find("merged          1 row from 1 shard into"), std::string::npos)
+      << merged.out;
+  const Result slurm =
+      rattleback(sweep + " --emit slurm --shards 1 -o " + (dir / "e.csv").string());
+  ASSERT_EQ(slurm.status, 0) << slurm.err;
+  EXPECT_NE(slurm.out.find("# one: 1 run of rattleback sweep"), std::string::npos) << slurm.out;
+  EXPECT_NE(slurm.out.find("# as a Slurm job array of 1 task, one shard each"), std::string::npos)
+      << slurm.out;
+  const Result too_many =
+      rattleback(sweep + " --emit slurm --shards 2 -o " + (dir / "e.csv").string());
+  EXPECT_EQ(too_many.err, "--shards: 2 shards for 1 run leaves some empty; at most 1\n");
+
+  const Result bench =
+      rattleback("bench " + scene("rattleback") +
+                 " --repeats 1 --rungs 1 --duration 0.1 --models rolling --integrators rk4 -o " +
+                 (dir / "b.csv").string() + " --plot " + (dir / "b.png").string());
+  ASSERT_EQ(bench.status, 0) << bench.err;
+  EXPECT_NE(bench.out.find("rattleback.yaml: 0.1 s simulated, 1 repeat; reference"),
+            std::string::npos)
+      << bench.out;
+}
+
 namespace {
 
 // CSV text as rows of fields (no quoting needed for simulate's numbers).
