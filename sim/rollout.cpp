@@ -78,6 +78,13 @@ Rollout::Rollout(Model model, const State& start)
                        stepAdvice(model_));
   check_every_ =
       adaptive_ ? 1 : std::max<std::int64_t>(1, std::llround(kEnergyCheckPeriod / model_.dt));
+  // The start is watched too: a body started on the rim of its top under rolling (a tilt of
+  // 89°) was stopped a step later for a rise of energy, or a NaN, with the advice of a smaller
+  // step, which cannot help.
+  if (model_.contact.model == ContactModel::Rolling) {
+    const Eigen::Matrix3d R = current_.q.normalized().toRotationMatrix();
+    watch(R, angularVelocity(*model_.body, R, current_.L_world));
+  }
 }
 
 Rollout::Rollout(Rollout&&) noexcept = default;

@@ -33,6 +33,31 @@ std::optional<Stop> Watchdog::observe(const StepEnd& end) {
       in_air_since_ = std::numeric_limits<double>::quiet_NaN();
     }
   }
+  // Rolling is a smooth surface rolling on the floor; tipped onto the edge of its flat top the
+  // body pivots on an edge, which that model cannot describe (auto slides instead). Checked
+  // before the energy, which such a state also makes rise (or NaN): a smaller step, which that
+  // message advises, does not help here. A body started there is said to start there.
+  if (end.rim_tilt_deg) {
+    std::ostringstream msg;
+    if (end.step == 0)
+      msg << "the body starts on the edge of its top (tilt " << *end.rim_tilt_deg
+          << " degrees), where rolling on its smooth bottom does not describe it; use "
+             "contact.model smooth or points, or a smaller initial.tilt";
+    else
+      msg << "the body tipped onto the edge of its top (tilt " << *end.rim_tilt_deg
+          << " degrees) at t = " << end.t << " s (step " << end.step
+          << "), where rolling on its smooth bottom no longer describes it; use "
+             "contact.model smooth or points";
+    message_ = msg.str();
+    return Stop{StopReason::OnRim, end.t, end.step};
+  }
+  if (!std::isfinite(end.energy)) {
+    std::ostringstream msg;
+    msg << "the energy became NaN or infinite at t = " << end.t << " s (step " << end.step << "); "
+        << advice_;
+    message_ = msg.str();
+    return Stop{StopReason::NonFinite, end.t, end.step};
+  }
   if (!(end.energy <= bound_)) {
     std::ostringstream msg;
     msg << "the energy rose from " << e0_ << " J to " << end.energy << " J (" << std::showpos
@@ -41,17 +66,6 @@ std::optional<Stop> Watchdog::observe(const StepEnd& end) {
         << " s (step " << end.step << "); " << advice_;
     message_ = msg.str();
     return Stop{StopReason::EnergyGain, end.t, end.step};
-  }
-  // Rolling is a smooth surface rolling on the floor; tipped onto the edge of its flat top the
-  // body pivots on an edge, which that model cannot describe (auto slides instead).
-  if (end.rim_tilt_deg) {
-    std::ostringstream msg;
-    msg << "the body tipped onto the edge of its top (tilt " << *end.rim_tilt_deg
-        << " degrees) at t = " << end.t << " s (step " << end.step
-        << "), where rolling on its smooth bottom no longer describes it; use "
-           "contact.model smooth or points";
-    message_ = msg.str();
-    return Stop{StopReason::OnRim, end.t, end.step};
   }
   return std::nullopt;
 }

@@ -69,11 +69,15 @@ TEST(Watchdog, NaNStopsAndNamesTheQuantity) {
   EXPECT_EQ(dog.message(),
             "the angular momentum became NaN or infinite at t = 0.25 s (step 250); try a smaller "
             "simulation.tolerance");
-  // An energy that is NaN with finite state variables (cannot be compared) stops too.
-  sim::Watchdog nan_energy(0, 1.0, false, "");
+  // An energy that is NaN with finite state variables (cannot be compared) stops too, said to
+  // be NaN (it read "the energy rose from 0.066 J to -nan J (-nan %, …)").
+  sim::Watchdog nan_energy(0, 1.0, false, "try a smaller simulation.dt");
   const auto other = nan_energy.observe(at(0.1, std::numeric_limits<double>::quiet_NaN()));
   ASSERT_TRUE(other);
-  EXPECT_EQ(other->reason, sim::StopReason::EnergyGain);
+  EXPECT_EQ(other->reason, sim::StopReason::NonFinite);
+  EXPECT_EQ(nan_energy.message(),
+            "the energy became NaN or infinite at t = 0.1 s (step 100); try a smaller "
+            "simulation.dt");
 }
 
 TEST(Watchdog, ARollingBodyOnTheRimStops) {
@@ -87,6 +91,24 @@ TEST(Watchdog, ARollingBodyOnTheRimStops) {
   EXPECT_NE(dog.message().find("tipped onto the edge of its top (tilt 72.5 degrees) at t = 1.5 s"),
             std::string::npos)
       << dog.message();
+  // On the rim, the energy's rise that comes of it is not the cause: a smaller step, which
+  // that message advises, cannot help (a new user's body started at a tilt of 89°).
+  sim::Watchdog risen(0, 1.0, false, "try a smaller simulation.dt");
+  sim::StepEnd both = at(0.5, 1.2, std::nullopt);
+  both.rim_tilt_deg = 89;
+  ASSERT_TRUE(risen.observe(both));
+  EXPECT_EQ(risen.message().rfind("the body tipped onto the edge of its top (tilt 89 degrees)", 0),
+            0u)
+      << risen.message();
+  // Started there, it is said to start there.
+  sim::Watchdog start(0, 1.0, false, "");
+  sim::StepEnd first = at(0, 1.0, std::nullopt);
+  first.rim_tilt_deg = 89;
+  ASSERT_TRUE(start.observe(first));
+  EXPECT_EQ(start.message(),
+            "the body starts on the edge of its top (tilt 89 degrees), where rolling on its "
+            "smooth bottom does not describe it; use contact.model smooth or points, or a "
+            "smaller initial.tilt");
 }
 
 // (Times compare to 1e-12 s: the scripted step ends are k · 1e-3, rounded products.)
