@@ -159,6 +159,12 @@ void printText(std::FILE* out, const std::string& scene, const sim::Model& model
                  "properties are the scene's\n",
                  top + bottom, top, bottom);
   std::fprintf(out, "mass properties  %s\n", tasks::massSourceText(*model.body).c_str());
+  // Dents left outside a body made smaller cut nothing: said, or the user sees only that the
+  // body prefers no direction.
+  if (tasks::dentsCutShare(*model.body) == 0.0)
+    std::fprintf(out,
+                 "WARNING: body.dents cut nothing: they lie wholly outside the body, which is "
+                 "the plain paraboloid (move body.dents.at within its top, or remove them)\n");
   std::fprintf(out, "mass             %g kg\n", m.mass);
   const Eigen::Vector3d com = clean(m.com, model.body->surface.footprintHalf().maxCoeff()) / unit;
   std::fprintf(out, "centre of mass   (%.6g, %.6g, %.6g) in the shape's frame\n", com.x(), com.y(),

@@ -5,6 +5,7 @@
 
 #include "sim/analysis.hpp"
 #include "sim/compile.hpp"
+#include "sim/continuum.hpp"
 #include "sim/stability.hpp"
 #include "util/format.hpp"
 
@@ -52,6 +53,18 @@ RestModes restModes(const sim::Linearisation& at_rest) {
   return {mode(at_rest.roll_hz, at_rest.roll_growth), mode(at_rest.pitch_hz, at_rest.pitch_growth)};
 }
 
+std::optional<double> dentsCutShare(const sim::Body& body) {
+  if (!body.dents || body.surface.kind != sim::Surface::Kind::Paraboloid) return std::nullopt;
+  const sim::Paraboloid& shape = body.surface.paraboloid;
+  const double whole = sim::closedFormMoments(shape, std::nullopt)->volume;
+  const std::optional<sim::VolumeMoments> closed = sim::closedFormMoments(shape, body.dents);
+  const double dented =
+      closed ? closed->volume : sim::cubatureMoments(shape, body.dents, 1e-10).volume;
+  // Cubature's error is 1e-10 of the volume's scale: a share below that is none.
+  const double share = 1 - dented / whole;
+  return share < 1e-9 ? 0.0 : share;
+}
+
 double analysisSpin(const sim::Model& model, const std::optional<double>& spin) {
   if (spin) return *spin;
   return model.initial.spin != 0 ? model.initial.spin : 5.0;
@@ -89,6 +102,8 @@ nlohmann::json analysisJson(const sim::Model& model, double spin) {
   j["principal_moments"] = vectorJson(m.principal);
   j["principal_axes"] = matrixJson(m.axes.transpose());
   j["misalignment_deg"] = m.misalignment_deg;
+  const std::optional<double> cut = dentsCutShare(body);
+  j["dents_cut_share"] = cut ? nlohmann::json(*cut) : nlohmann::json(nullptr);
   j["contact"] = {{"omega_rad_s", stability.omega},
                   {"damping_ratio", stability.zeta},
                   {"largest_stable_dt_s", stability.run_step},  // inf → null

@@ -21,6 +21,12 @@ double analysisSpin(const sim::Model& model, const std::optional<double>& spin);
 /// numbers of no meaning and a preferred direction. `option` names it in the error.
 rb::Status checkAnalysisSpin(const std::optional<double>& spin, const std::string& option);
 
+/// The share of the undented paraboloid's volume that the dents cut away (0 … 1), or nothing
+/// for a body without dents (or an ellipsoid). 0: dents placed wholly outside the body (a body
+/// made smaller with its dents left where they were), which cut nothing and so make no
+/// rattleback; analyze says so.
+std::optional<double> dentsCutShare(const sim::Body& body);
+
 /// Where the mass properties came from (body.mass_properties): scene, grid or continuum.
 std::string massSourceText(const sim::Body& body);
 

@@ -402,6 +402,32 @@ TEST(Cli, AnalyzeRefusesANonFiniteSpinAndSaysWhenTheSceneIsNotSpun) {
   EXPECT_NE(given.out.find("first reversal   forecast at"), std::string::npos) << given.out;
 }
 
+// Dents left where they were on a body made smaller cut nothing, and the body prefers no
+// direction; analyze says why (a teacher who shrank the body was told only "preferred none").
+// The default body's dents cut a share of it (the closed form's 14.7 %).
+TEST(Cli, AnalyzeSaysWhenTheDentsCutNothing) {
+  const fs::path dir = emptyDir("dents-outside");
+  std::stringstream file;
+  file << std::ifstream(scene("rattleback")).rdbuf();
+  std::string text = file.str();
+  const std::string shape = "paraboloid: {a: 1.0, p: 0.5, q: 0.0, s: 0.03, top: 0.5}";
+  const std::size_t at = text.find(shape);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, shape.size(), "paraboloid: {a: 0.2, p: 0.5, q: 0, s: 0.03, top: -0.1}");
+  std::ofstream((dir / "small.yaml").string()) << text;
+  const Result small = rattleback("analyze " + (dir / "small.yaml").string());
+  ASSERT_EQ(small.status, 0) << small.err;
+  EXPECT_NE(small.out.find("WARNING: body.dents cut nothing"), std::string::npos) << small.out;
+  const Result json = rattleback("analyze --json " + (dir / "small.yaml").string());
+  EXPECT_EQ(nlohmann::json::parse(json.out)["dents_cut_share"], 0.0);
+  const Result dented = rattleback("analyze " + scene("rattleback"));
+  EXPECT_EQ(dented.out.find("WARNING: body.dents"), std::string::npos);
+  const double share = nlohmann::json::parse(
+      rattleback("analyze --json " + scene("rattleback")).out)["dents_cut_share"];
+  EXPECT_GT(share, 0.1);
+  EXPECT_LT(share, 0.2);
+}
+
 TEST(Cli, AStoppedRunExitsThreeNamesWhenAndWhyAndKeepsTheOldOutput) {
   // The default body spun at −50 rad/s under the rolling model tips onto the edge of its top
   // (see HardCases.FiftyRadiansPerSecond): the run stops there.
