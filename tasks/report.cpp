@@ -23,6 +23,7 @@
 #include "tasks/player_data.hpp"
 #include "tasks/run_json.hpp"
 #include "util/assets.hpp"
+#include "util/format.hpp"
 #include "util/output_place.hpp"
 
 namespace tasks {
@@ -806,7 +807,8 @@ long long sweepRows(const nlohmann::json& meta) {
 void writeSweep(std::ostream& out, const SweepFiles& sweep) {
   const nlohmann::json& shard = field(sweep.meta, "shard");
   out << "<section id=\"sweep-" << escape(sweep.name) << "\"><h2>Sweep: " << escape(sweep.name)
-      << "</h2>\n<p>" << number(field(sweep.meta, "rows"), "%g") << " runs of ";
+      << "</h2>\n<p>" << number(field(sweep.meta, "rows"), "%g")
+      << (field(sweep.meta, "rows") == 1 ? " run of " : " runs of ");
   if (shard.is_object())
     out << "the sweep's " << sweepRows(sweep.meta) << " (shard "
         << number(field(shard, "index"), "%g") << " of " << number(field(shard, "count"), "%g")
@@ -821,7 +823,9 @@ void writeSweep(std::ostream& out, const SweepFiles& sweep) {
   for (std::size_t i = 0; axes.is_array() && i < axes.size(); ++i) {
     const nlohmann::json& values = field(axes[i], "values");
     out << (i ? " × " : "") << "<code>" << escape(stringOr(field(axes[i], "key"), "?"))
-        << "</code> (" << (values.is_array() ? values.size() : 0) << " values)";
+        << "</code> ("
+        << rb::counted(values.is_array() ? static_cast<long long>(values.size()) : 0, "value")
+        << ")";
   }
   out << ": <a href=\"" << url(sweep.csv) << "\">the table (CSV)</a>";
   if (!sweep.parts.empty()) {

@@ -945,6 +945,13 @@ TEST(Cli, ACountOfOneIsSingular) {
   const Result one = rattleback(sweep + " -o " + (dir / "t.csv").string());
   ASSERT_EQ(one.status, 0) << one.err;
   EXPECT_NE(one.out.find("one.yaml: 1 run, 0 ok, 1 refused\n"), std::string::npos) << one.out;
+  // The report's sweep section: one run over an axis of one value.
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  std::stringstream html;
+  html << std::ifstream(dir / "index.html").rdbuf();
+  const std::string page = html.str();
+  EXPECT_NE(page.find("<p>1 run of <code>"), std::string::npos) << page;
+  EXPECT_NE(page.find("<code>contact.friction</code> (1 value)"), std::string::npos) << page;
   const Result merged =
       rattleback("sweep merge " + (dir / "m.csv").string() + " " + (dir / "t.csv").string());
   ASSERT_EQ(merged.status, 0) << merged.err;
