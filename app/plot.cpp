@@ -86,7 +86,8 @@ rb::Status refuseDevice(const std::string& png, const rb::OutputPlace& place) {
 
 }  // namespace
 
-rb::Status checkPlotFolder(const std::string& dir, const std::string& first_figure) {
+rb::Status checkPlotFolder(const std::string& dir, const std::string& first_figure,
+                           tasks::MadeFolders* made) {
   std::error_code ec;
   // sweep, sweep merge and bench take `--plot FILE.png`: a simulate --plot named as an image
   // would otherwise become a folder of that name holding the four figures.
@@ -102,7 +103,7 @@ rb::Status checkPlotFolder(const std::string& dir, const std::string& first_figu
   // Said as every writer says it, of the first figure's file, with --plot's way out.
   const std::string figure = (fs::path(dir) / first_figure).string();
   const rb::OutputNamedBy naming("--plot", "a folder");
-  if (auto made = tasks::makeParentFolder(figure); !made) return made;
+  if (auto ok = tasks::makeParentFolder(figure, made); !ok) return ok;
   if (std::string why = probeWrite(dir); !why.empty())
     return rb::Status::fail(rb::cannotWriteIn(figure, why));
   return {};

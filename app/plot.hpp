@@ -12,6 +12,10 @@
 
 #include "util/result.hpp"
 
+namespace tasks {
+class MadeFolders;
+}
+
 namespace app {
 
 struct Series {
@@ -50,8 +54,9 @@ std::string sweepLabel(const std::string& name);
 
 /// Makes `dir` when missing and checks that a file can be written into it (before a run whose
 /// plots go there); otherwise the error line every writer gives, for `first_figure` (a file
-/// name) in `dir`, with --plot's way out.
-rb::Status checkPlotFolder(const std::string& dir, const std::string& first_figure);
+/// name) in `dir`, with --plot's way out. The folders it made are added to `made`, when given.
+rb::Status checkPlotFolder(const std::string& dir, const std::string& first_figure,
+                           tasks::MadeFolders* made = nullptr);
 /// The same for one PNG: its folder made when missing and a file written into it and removed,
 /// so that an unwritable --plot fails before the run, not after it.
 rb::Status checkPlotFile(const std::string& png);

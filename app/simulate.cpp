@@ -217,6 +217,24 @@ std::vector<tasks::OutputEntry> outputsOf(const SimulateArgs& args, const std::s
   return entries;
 }
 
+namespace {
+
+// --plot naming the table itself would make a folder where the table goes (a new user's trial:
+// `-o a.csv --plot a.csv`).
+rb::Status checkPlotIsNotTheTable(const std::string& plot_dir, const std::string& csv) {
+  if (plot_dir.empty()) return {};
+  std::error_code ec, ec2;
+  const auto plot = std::filesystem::weakly_canonical(std::filesystem::absolute(plot_dir), ec);
+  const auto table = std::filesystem::weakly_canonical(std::filesystem::absolute(csv), ec2);
+  if (ec || ec2 || plot != table) return {};
+  return rb::Status::fail("--plot " + plot_dir + ": is the table's own name (-o " + csv +
+                          "); give the figures a folder of their own (e.g. --plot " +
+                          (std::filesystem::path(plot_dir).parent_path() / "figures").string() +
+                          ")");
+}
+
+}  // namespace
+
 // Why a run wrote nothing, and its exit status.
 int notWritten(const SimulateArgs& args, const tasks::Outcome& outcome) {
   if (outcome.ending == tasks::Ending::Interrupted) {
@@ -243,9 +261,15 @@ int simulateCommand(const SimulateArgs& args) {
   std::string csv = args.output.empty() ? defaultOutput(args.scene) : args.output;
   if (csv == "-") csv = "/dev/stdout";
   const bool to_stdout = isStandardOutput(csv);
+  if (auto ok = checkPlotIsNotTheTable(args.plot_dir, csv); !ok) return fail(ok);
+  // Declared before the writer, so that its temporary files are gone before the folders are
+  // removed.
+  tasks::MadeFolders made;
   if (!args.plot_dir.empty())
-    if (auto plots = checkPlotFolder(args.plot_dir, sceneName(args.scene) + "-energy.png"); !plots)
+    if (auto plots = checkPlotFolder(args.plot_dir, sceneName(args.scene) + "-energy.png", &made);
+        !plots)
       return fail(plots);
+  if (auto ok = tasks::makeParentFolder(csv, &made); !ok) return fail(ok);
   auto writer = tasks::TelemetryWriter::open(csv);
   if (!writer) return fail(writer);
   if (args.verbose) describeModel(model, args.scene);

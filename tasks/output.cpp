@@ -25,12 +25,30 @@ std::array<std::atomic<int>, kMaxTemporaries> temporary_state{};
 
 }  // namespace
 
-rb::Status makeParentFolder(const std::string& path) {
+MadeFolders::~MadeFolders() {
+  for (auto folder = made_.rbegin(); folder != made_.rend(); ++folder) {
+    std::error_code ec;
+    if (fs::is_directory(*folder, ec) && fs::is_empty(*folder, ec) && !ec) fs::remove(*folder, ec);
+  }
+}
+
+rb::Status makeParentFolder(const std::string& path, MadeFolders* made) {
   const fs::path parent = fs::path(path).parent_path();
   if (parent.empty()) return {};
   std::error_code ec;
   if (fs::is_directory(parent, ec)) return {};
+  std::vector<fs::path> missing;  // the folders to be made, deepest first
+  for (fs::path up = parent; !up.empty() && up != up.parent_path(); up = up.parent_path()) {
+    std::error_code e;
+    if (fs::exists(fs::symlink_status(up, e))) break;
+    missing.push_back(up);
+  }
   fs::create_directories(parent, ec);
+  if (made)  // also those made before a deeper one failed
+    for (auto folder = missing.rbegin(); folder != missing.rend(); ++folder) {
+      std::error_code e;
+      if (fs::is_directory(*folder, e)) made->add(folder->string());
+    }
   if (!ec) return {};
   // A file where a folder of the path should be is the cause to name (its own message,
   // "Not a directory", says neither which nor what to do).

@@ -5,16 +5,31 @@
 
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "util/output_place.hpp"
 #include "util/result.hpp"
 
 namespace tasks {
 
+/// The folders a command made for its outputs, removed again when it ends if still empty
+/// (deepest first): a command refused, or a run that stops, leaves no empty folder behind.
+class MadeFolders {
+ public:
+  MadeFolders() = default;
+  MadeFolders(const MadeFolders&) = delete;
+  MadeFolders& operator=(const MadeFolders&) = delete;
+  ~MadeFolders();
+  void add(const std::string& folder) { made_.push_back(folder); }
+
+ private:
+  std::vector<std::string> made_;  ///< in the order made: each after the one holding it
+};
+
 /// Creates the folder `path` will be written into, when missing. The same rule for a default
 /// output (out/…) and one given with -o; an error line naming the folder and the system's
-/// reason when it cannot be made.
-rb::Status makeParentFolder(const std::string& path);
+/// reason when it cannot be made. The folders it made are added to `made`, when given.
+rb::Status makeParentFolder(const std::string& path, MadeFolders* made = nullptr);
 
 /// Removes every temporary file registered and not yet committed; async-signal-safe, for
 /// SIGINT/SIGTERM handlers (see app/interrupt).

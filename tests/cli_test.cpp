@@ -537,6 +537,38 @@ TEST(Cli, SimulatesPlotTakesAFolderNotAnImagesName) {
   EXPECT_TRUE(fs::exists(dir / "old.png" / "rattleback-spin.png"));
 }
 
+// A refused simulate makes no folder: --plot's folder was made before -o was checked, and left
+// behind empty (a new user's trial: `-o a.csv --plot a.csv`, `-o /proc/x.csv --plot figs`);
+// nor does a run that stops leave the folders it made for its output.
+TEST(Cli, ARefusedSimulateLeavesNoFolderBehind) {
+  const fs::path dir = emptyDir("no-folder");
+  const std::string run = "simulate " + scene("rattleback") + " --duration 0.1 -q";
+  const std::string a = (dir / "a.csv").string();
+  const Result same = rattleback(run + " -o " + a + " --plot " + a);
+  EXPECT_EQ(same.status, 2);
+  EXPECT_EQ(same.err, "--plot " + a + ": is the table's own name (-o " + a +
+                          "); give the figures a folder of their own (e.g. --plot " +
+                          (dir / "figures").string() + ")\n");
+  const Result proc =
+      rattleback(run + " -o /proc/x.csv --plot " + (dir / "deep" / "figs").string());
+  EXPECT_EQ(proc.status, 2);
+  EXPECT_EQ(lines(proc.err), 1) << proc.err;
+  EXPECT_EQ(proc.err.rfind("/proc/x.csv: cannot write a file in /proc: ", 0), 0u) << proc.err;
+
+  std::ifstream in(scene("rattleback"));
+  std::stringstream s;
+  s << in.rdbuf();
+  std::string text = s.str();
+  text.replace(text.find("spin: -5.0"), 10, "spin: -50.0");  // stops at t = 0.3 s
+  std::ofstream(dir / "fast.yaml") << text;
+  const Result stopped = rattleback("simulate -q " + (dir / "fast.yaml").string() + " -o " +
+                                    (dir / "made" / "x.csv").string() + " --plot " +
+                                    (dir / "made-figs").string());
+  EXPECT_EQ(stopped.status, 3) << stopped.err;
+  fs::remove(dir / "fast.yaml");
+  EXPECT_TRUE(fs::is_empty(dir)) << fs::directory_iterator(dir)->path();
+}
+
 TEST(Cli, VersionQuietAndVerbose) {
   const Result version = rattleback("--version");
   EXPECT_EQ(version.status, 0);
