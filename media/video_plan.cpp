@@ -33,9 +33,12 @@ rb::Result<VideoPlan> check(const scene::VideoSpec& v, double duration) {
   if (!view)
     return rb::Error{"video.view",
                      "must be " + rb::choices<render::View>() + ", not '" + v.view + "'"};
-  if (!(v.playback > 0) || !std::isfinite(v.playback) || v.playback > 1e6)
-    return rb::Error{"video.playback",
-                     "must be a speed > 0 (1 real time, 0.5 slow motion, 2 twice as fast)"};
+  const std::string speeds =
+      " (1 real time, 0.5 slow motion, 2 twice as fast), not " + show(v.playback);
+  if (!(v.playback > 0))  // and NaN
+    return rb::Error{"video.playback", "must be a speed > 0" + speeds};
+  if (!(v.playback <= 1e6))  // and infinity
+    return rb::Error{"video.playback", "must be a speed of at most " + show(1e6) + speeds};
   VideoPlan plan;
   plan.fps = v.fps;
   plan.width = v.size[0];

@@ -775,6 +775,17 @@ TEST(Cli, OptionErrorsNameTheOptionAndTheWayOut) {
                         Case{"--fps 29.97", "--fps: must be a whole number of frames per second"},
                         Case{"--fps 0", "--fps: must be within 1 … 240, not 0"},
                         Case{"--fps 1e9", "--fps: must be within 1 … 240, not 1e+09"},
+                        // The value given, as other options' errors say it.
+                        Case{"--playback 0",
+                             "--playback: must be a speed > 0 (1 real time, 0.5 slow motion, 2 "
+                             "twice as fast), not 0\n"},
+                        Case{"--playback -1", "--playback: must be a speed > 0 (1 real time, "
+                                              "0.5 slow motion, 2 twice as fast), not -1\n"},
+                        Case{"--playback nan", "--playback: must be a speed > 0 (1 real time, "
+                                               "0.5 slow motion, 2 twice as fast), not nan\n"},
+                        Case{"--playback 1e7", "--playback: must be a speed of at most 1e+06 (1 "
+                                               "real time, 0.5 slow motion, 2 twice as fast), "
+                                               "not 1e+07\n"},
                         // What the option takes, not CLI11's "Could not convert: --dt = abc".
                         Case{"--dt abc", "render: --dt takes a number, not 'abc'"},
                         Case{"--crf 2.5", "render: --crf takes a whole number, not '2.5'"}}) {
@@ -784,6 +795,13 @@ TEST(Cli, OptionErrorsNameTheOptionAndTheWayOut) {
     EXPECT_NE(r.err.find(c.message), std::string::npos) << c.options << ": " << r.err;
     EXPECT_EQ(r.err.find("video."), std::string::npos) << c.options << ": " << r.err;
   }
+  const Result still = rattleback("still " + scene("rattleback") + " --playback 0 -q -o " +
+                                  tempFile("p.png").string());
+  EXPECT_EQ(still.status, 2);
+  EXPECT_EQ(still.err,
+            "--playback: must be a speed > 0 (1 real time, 0.5 slow motion, 2 twice as fast), "
+            "not 0\n");
+  EXPECT_FALSE(fs::exists(scratchDir() / "p.png"));
   // An output name that says another format than the one written is refused, nothing made.
   const fs::path avi = tempFile("x.avi"), jpg = tempFile("s.jpg");
   const Result as_avi =

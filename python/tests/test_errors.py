@@ -269,3 +269,14 @@ def test_an_image_name_of_another_kind_is_refused_as_still_refuses_it(tmp_path):
     theirs = cli("still", scene_path("rattleback.yaml"), "-o", str(tmp_path / "y.jpg"),
                  check=False)
     assert theirs.returncode != 0 and "writes PNG; give a name ending in .png" in theirs.stderr
+
+
+@pytest.mark.parametrize("playback, given", [(0, "0"), (-1, "-1"), (float("nan"), "nan")])
+def test_a_bad_playback_says_the_value_given(tmp_path, playback, given):
+    # It said "must be a speed > 0 (…)" without the value, where other arguments end "not X".
+    scene = rb.Scene.from_file(scene_path("rattleback.yaml"))
+    with pytest.raises(rb.SceneError) as caught:
+        rb.render(scene, tmp_path / "x.mp4", playback=playback, duration=0.1, size=(64, 48))
+    assert str(caught.value) == ("argument playback: must be a speed > 0 (1 real time, "
+                                 "0.5 slow motion, 2 twice as fast), not " + given)
+    assert not (tmp_path / "x.mp4").exists()
