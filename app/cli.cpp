@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <string_view>
 
 #include "app/suggest.hpp"
 #include "media/presets.hpp"
@@ -288,6 +289,13 @@ std::optional<int> Cli::parse(int argc, char** argv) {
     }
     *target = size;
   }
+  // still's --t is also --time: its errors name the one typed (CLI11 does not say which).
+  if (app.got_subcommand("still"))
+    for (int i = 1; i < argc && std::string_view(argv[i]) != "--"; ++i) {
+      const std::string_view arg = argv[i];
+      if (arg == "--time" || arg.starts_with("--time=")) still_args.t_named = "--time";
+      if (arg == "--t" || arg.starts_with("--t=")) still_args.t_named = "--t";
+    }
   return std::nullopt;
 }
 

@@ -79,7 +79,8 @@ struct StillArgs {
   std::string scene;
   std::string output;  ///< .png path; empty: out/<scene>-<view>.png
   Overrides overrides;
-  double t = 0;  ///< s
+  double t = 0;                 ///< s
+  std::string t_named = "--t";  ///< as typed, for its errors: --t or --time
   bool no_readouts = false;
   bool transparent = false;      ///< PNG with alpha: no floor, no background, no read-outs
   std::string backend = "auto";  ///< auto | egl | osmesa

@@ -121,6 +121,7 @@ int stillCommand(const StillArgs& args) {
   media::StillRequest request;
   request.scene_name = args.scene;
   request.t = args.t;
+  request.t_named = args.t_named;
   request.readouts = !args.no_readouts;
   request.transparent = args.transparent;
   request.backend = *backend;

@@ -2197,6 +2197,14 @@ TEST(Cli, AStillBeforeZeroNamesTAndItsValue) {
     EXPECT_EQ(r.err, std::string("--t: must be a time ≥ 0 s, not ") + t + "\n");
     EXPECT_FALSE(fs::exists(png));
   }
+  // Named as typed: --time is --t's other name (a new user's trial: `--time -1` read "--t: …").
+  for (const char* typed : {"--time -1", "--time=-1"}) {
+    const Result r =
+        rattleback("still " + scene("rattleback") + " " + typed + " -q -o " + png.string());
+    EXPECT_EQ(r.status, 2) << typed;
+    EXPECT_EQ(r.err, "--time: must be a time ≥ 0 s, not -1\n") << typed;
+    EXPECT_FALSE(fs::exists(png));
+  }
 }
 
 TEST(Cli, AStillTooLateNamesT) {
