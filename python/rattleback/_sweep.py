@@ -26,7 +26,8 @@ class SweepTable:
     Columns: ``row``, one per varied key (floats, or text for values that are not numbers),
     ``status`` (``ok``, ``stopped`` or ``refused``), ``reason`` (why, for the others),
     ``first_reversal_s``, ``reversals``, ``final_spin``, ``max_tilt_deg``, ``energy_lost``,
-    ``wall_s``. A value a run does not have is NaN.
+    ``wall_s``. A value a run does not have is NaN. The arrays are read-only, as the CSV they
+    stand for is (``.copy()`` gives one to change).
     """
 
     def __init__(self, core_table):
@@ -36,6 +37,11 @@ class SweepTable:
             columns[key] = _numbers_or_text(columns[key])
         columns["status"] = np.array(columns["status"])
         columns["reason"] = np.array(columns["reason"], dtype=object)
+        # Read-only, as a Run's: the columns are the table's record, and to_csv writes the
+        # rows, not the arrays (`s = table["final_spin"]; s *= 2` changed the columns and
+        # to_pandas() but not the CSV).
+        for column in columns.values():
+            column.flags.writeable = False
         self._columns = columns
 
     @property

@@ -260,6 +260,30 @@ def test_a_runs_arrays_are_read_only(tmp_path, default_scene):
     assert run.spin[0] == first
 
 
+def test_a_sweep_tables_arrays_are_read_only(tmp_path):
+    """As a run's: `s = table["final_spin"]; s *= 2` changed the table's columns and
+    to_pandas() but not what to_csv wrote. A copy is the caller's to change."""
+    sweep = tmp_path / "s.yaml"
+    sweep.write_text(f"base: {scene_path('rattleback.yaml')}\nvary:\n"
+                     "  initial.spin: [-5, 5]\nduration: 0.2\n")
+    table = rb.sweep(sweep, jobs=1)
+    first = table["initial.spin"][0]
+    for name, column in table.columns.items():
+        assert not column.flags.writeable, name
+        with pytest.raises(ValueError):
+            column[0] = column[1]
+    s = table["initial.spin"]
+    with pytest.raises(ValueError):
+        s *= 2
+    assert table["initial.spin"][0] == table.columns["initial.spin"][0] == first
+    mine = table["initial.spin"].copy()
+    mine *= 2
+    assert mine[0] == 2 * first
+    pytest.importorskip("pandas")
+    frame = table.to_pandas()
+    frame["initial.spin"] *= 2  # the frame is the caller's
+    assert table["initial.spin"][0] == first
+
 def test_a_shipped_scene_is_found_from_any_folder_as_the_command_line_finds_it(tmp_path,
                                                                               monkeypatch):
     """`rb.simulate("scenes/rattleback.yaml")` from another folder said "cannot open the scene
