@@ -561,9 +561,9 @@ TEST(Cli, ARefusedSimulateLeavesNoFolderBehind) {
   std::string text = s.str();
   text.replace(text.find("spin: -5.0"), 10, "spin: -50.0");  // stops at t = 0.3 s
   std::ofstream(dir / "fast.yaml") << text;
-  const Result stopped = rattleback("simulate -q " + (dir / "fast.yaml").string() + " -o " +
-                                    (dir / "made" / "x.csv").string() + " --plot " +
-                                    (dir / "made-figs").string());
+  const Result stopped =
+      rattleback("simulate -q " + (dir / "fast.yaml").string() + " -o " +
+                 (dir / "made" / "x.csv").string() + " --plot " + (dir / "made-figs").string());
   EXPECT_EQ(stopped.status, 3) << stopped.err;
   fs::remove(dir / "fast.yaml");
   EXPECT_TRUE(fs::is_empty(dir)) << fs::directory_iterator(dir)->path();
@@ -779,13 +779,16 @@ TEST(Cli, OptionErrorsNameTheOptionAndTheWayOut) {
                         Case{"--playback 0",
                              "--playback: must be a speed > 0 (1 real time, 0.5 slow motion, 2 "
                              "twice as fast), not 0\n"},
-                        Case{"--playback -1", "--playback: must be a speed > 0 (1 real time, "
-                                              "0.5 slow motion, 2 twice as fast), not -1\n"},
-                        Case{"--playback nan", "--playback: must be a speed > 0 (1 real time, "
-                                               "0.5 slow motion, 2 twice as fast), not nan\n"},
-                        Case{"--playback 1e7", "--playback: must be a speed of at most 1e+06 (1 "
-                                               "real time, 0.5 slow motion, 2 twice as fast), "
-                                               "not 1e+07\n"},
+                        Case{"--playback -1",
+                             "--playback: must be a speed > 0 (1 real time, "
+                             "0.5 slow motion, 2 twice as fast), not -1\n"},
+                        Case{"--playback nan",
+                             "--playback: must be a speed > 0 (1 real time, "
+                             "0.5 slow motion, 2 twice as fast), not nan\n"},
+                        Case{"--playback 1e7",
+                             "--playback: must be a speed of at most 1e+06 (1 "
+                             "real time, 0.5 slow motion, 2 twice as fast), "
+                             "not 1e+07\n"},
                         // What the option takes, not CLI11's "Could not convert: --dt = abc".
                         Case{"--dt abc", "render: --dt takes a number, not 'abc'"},
                         Case{"--crf 2.5", "render: --crf takes a whole number, not '2.5'"}}) {
