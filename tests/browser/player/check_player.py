@@ -253,6 +253,15 @@ class Checker:
     def frames(self):
         self.driver.execute_async_script(FRAMES_JS)
 
+    def until(self, element, condition, seconds=10):
+        """Waits until the JS `condition` (h: the player's hook) holds, or `seconds` pass."""
+        deadline = time.time() + seconds
+        while time.time() < deadline:
+            if self.js(f"const h = arguments[0].rbPlayer; return !!({condition});", element):
+                return True
+            time.sleep(0.02)
+        return False
+
     def console(self, where):
         for entry in self.driver.get_log("browser"):
             if entry["level"] == "SEVERE":
@@ -424,6 +433,8 @@ class Checker:
         self.check(now > start + 0.3, f"{where}: playing for 1 s moved time from {start} to {now}")
         self.check(self.pixels(element, f"{run_id}-play")["changed"] > 50, f"{where}: playing changed no pixels")
         play.click()
+        # (A click returns before the page has handled it on a loaded machine: wait for it.)
+        self.until(element, "!h.playing()")
         paused = self.hook(element, "time()")
         time.sleep(0.3)
         self.check(not self.hook(element, "playing()") and self.hook(element, "time()") == paused,
@@ -532,18 +543,26 @@ class Checker:
         for attempt in range(6):
             by_key = attempt % 2 == 1
             how = "space after a click on the canvas" if by_key else "the button"
+            self.hook(element, "pause()")
             self.hook(element, "setTime(arguments[1])", t0 + 0.1 * (t1 - t0))
             self.js(PAUSE_WATCH_JS, element)
+            # A click or key returns before the page has handled it on a loaded machine: each
+            # step waits for the player to be seen playing, then paused, and the state at the
+            # press is the one recorded at the press that paused it.
             if by_key:
                 self.hook(element, "play()")
-                time.sleep(0.2 + 0.04 * attempt)
                 ActionChains(self.driver).move_to_element(canvas).click().perform()
-                time.sleep(0.1)
+                self.until(element, "h.playing()")
+                time.sleep(0.2 + 0.04 * attempt)
+                self.js("window.__rbAtPause = null;")
                 ActionChains(self.driver).send_keys(Keys.SPACE).perform()
             else:
                 play.click()
+                self.until(element, "h.playing()")
                 time.sleep(0.3 + 0.04 * attempt)
+                self.js("window.__rbAtPause = null;")
                 play.click()
+            self.until(element, "window.__rbAtPause && !h.playing()")
             at = self.js("return window.__rbAtPause;")
             now = self.hook(element, "time()")
             if not self.check(at and at["playing"] and not self.hook(element, "playing()"),
