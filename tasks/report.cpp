@@ -753,10 +753,13 @@ void writeScene(std::ostream& out, const fs::path& dir, const std::string& name,
   std::optional<nlohmann::json> theory, run;
   if (f.has("-analysis.json")) theory = readJson(dir / f.at("-analysis.json"));
   if (f.has(".csv.json")) run = readJson(dir / f.at(".csv.json"));
-  // No analysis in the folder (a user who ran simulate and render, not analyze --json): the
-  // theory of the run's scene at the run's spin, as analyze --json would write it, so that the
-  // page's predicted column and the videos' measured lines do not go empty.
-  if (!theory && run)
+  // The theory of the run's own scene (its file, the values put in over it) at the run's spin,
+  // as analyze --json would write it, whenever the run's scene can be had: the folder's
+  // analyze --json may be of another body or spin (a student's --set run beside the base
+  // scene's analysis was shown the base's forecast, 2.12 s, beside its own 1.689 s), or there
+  // may be none (a user who ran simulate and render), which left the predicted column empty.
+  // The folder's analysis stands in only for a run whose scene cannot be had.
+  if (run)
     if (const std::optional<sim::Model> model = runModelOf(*run, dir).model) {
       const nlohmann::json& spin = field(field(field(*run, "model"), "initial"), "spin");
       theory = analysisJson(
