@@ -127,10 +127,9 @@ void printCheck(std::FILE* out, const tasks::RunCheck& check, const sim::RunSumm
 
 // The seed's figures (6–8, 12–16) from the telemetry: energy, spin, tilt and CM height, and
 // the normal force, each against time, into DIR/<scene>-<what>.png.
-rb::Status writePlots(const std::string& dir, const std::string& scene,
+rb::Status writePlots(const std::string& dir, const std::string& stem,
                       const std::vector<sim::Telemetry>& samples,
                       const std::vector<double>& reversals) {
-  const std::string stem = std::filesystem::path(scene).stem().string();
   auto series = [&](const char* title, auto value, bool right = false) {
     Series s;
     s.title = title;
@@ -200,6 +199,15 @@ rb::Result<Overrides> overridesOf(const SimulateArgs& args) {
   return o;
 }
 
+// The figures are named after the table they plot (its file's stem: anna.csv's are
+// anna-spin.png, …), so that two runs of one scene into one folder keep each its own (both were
+// <scene>-spin.png, and the second overwrote the first's); a table on standard output, after
+// the scene.
+std::string plotStem(const SimulateArgs& args, const std::string& csv) {
+  if (isStandardOutput(csv)) return sceneName(args.scene);
+  return std::filesystem::path(csv).stem().string();
+}
+
 // The telemetry and the plots, for the manifest.
 std::vector<tasks::OutputEntry> outputsOf(const SimulateArgs& args, const std::string& csv) {
   const std::string scene = sceneName(args.scene);
@@ -208,7 +216,8 @@ std::vector<tasks::OutputEntry> outputsOf(const SimulateArgs& args, const std::s
   if (!args.plot_dir.empty())
     for (const char* what : {"energy", "spin", "tilt", "normal"})
       entries.push_back(
-          {(std::filesystem::path(args.plot_dir) / (scene + "-" + what + ".png")).string(),
+          {(std::filesystem::path(args.plot_dir) / (plotStem(args, csv) + "-" + what + ".png"))
+               .string(),
            tasks::OutputKind::Plot,
            scene,
            what,
@@ -266,7 +275,7 @@ int simulateCommand(const SimulateArgs& args) {
   // removed.
   tasks::MadeFolders made;
   if (!args.plot_dir.empty())
-    if (auto plots = checkPlotFolder(args.plot_dir, sceneName(args.scene) + "-energy.png", &made);
+    if (auto plots = checkPlotFolder(args.plot_dir, plotStem(args, csv) + "-energy.png", &made);
         !plots)
       return fail(plots);
   if (auto ok = tasks::makeParentFolder(csv, &made); !ok) return fail(ok);
@@ -299,7 +308,7 @@ int simulateCommand(const SimulateArgs& args) {
       !e)
     return fail(e);
   if (!args.plot_dir.empty())
-    if (auto e = writePlots(args.plot_dir, args.scene, kept, run.summary.reversals); !e)
+    if (auto e = writePlots(args.plot_dir, plotStem(args, csv), kept, run.summary.reversals); !e)
       return fail(e);
   record(outputsOf(args, csv));
   if (args.quiet) return kOk;
@@ -308,7 +317,7 @@ int simulateCommand(const SimulateArgs& args) {
   if (check) printCheck(report, *check, run.summary);
   if (!args.plot_dir.empty())
     std::fprintf(report, "plots           %s/%s-{energy,spin,tilt,normal}.png\n",
-                 args.plot_dir.c_str(), std::filesystem::path(args.scene).stem().string().c_str());
+                 args.plot_dir.c_str(), plotStem(args, csv).c_str());
   return kOk;
 }
 

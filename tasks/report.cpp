@@ -475,6 +475,11 @@ std::set<std::string> placeListed(const fs::path& dir, Folder& folder) {
     f.by_suffix[".csv"] = *main;
     if (fs::is_regular_file(dir / (*main + ".json"), ec))
       f.by_suffix[".csv.json"] = *main + ".json";
+    // The figures shown are the main run's (simulate names them after its table: anna.csv's
+    // anna-spin.png), not another run's of the same scene listed after it.
+    const std::string stem = fs::path(*main).stem().string();
+    for (const char* suffix : kPlotSuffixes)
+      if (fs::is_regular_file(dir / (stem + suffix), ec)) f.by_suffix[suffix] = stem + suffix;
     for (const std::string& file : files)
       if (file != *main) f.more_runs.push_back(file);
   }

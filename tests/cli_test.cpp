@@ -463,7 +463,7 @@ TEST(Cli, SimulatePlotsTheFourFigures) {
                               tempFile("r.csv").string() + " --plot " + dir.string());
   ASSERT_EQ(r.status, 0) << r.err;
   for (const char* what : {"energy", "spin", "tilt", "normal"}) {
-    const fs::path png = dir / (std::string("rattleback-") + what + ".png");
+    const fs::path png = dir / (std::string("r-") + what + ".png");  // after the table, r.csv
     render::Image image;
     ASSERT_TRUE(render::readPng(png.string(), image).ok()) << png;
     EXPECT_EQ(image.width, 1000);
@@ -491,7 +491,7 @@ TEST(Cli, SimulatePlotsTheFourFigures) {
   EXPECT_EQ(bad.status, 2);
   EXPECT_EQ(lines(bad.err), 1) << bad.err;
   EXPECT_FALSE(fs::exists(csv));
-  EXPECT_NE(bad.err.find("/dev/full/plots/rattleback-energy.png: cannot make its folder "
+  EXPECT_NE(bad.err.find("/dev/full/plots/none-energy.png: cannot make its folder "
                          "/dev/full/plots: /dev/full is a file, not a folder (give --plot "
                          "another path)"),
             std::string::npos)
@@ -502,8 +502,7 @@ TEST(Cli, SimulatePlotsTheFourFigures) {
                                csv.string() + " --plot /proc");
   EXPECT_EQ(ro.status, 2);
   EXPECT_EQ(lines(ro.err), 1) << ro.err;
-  EXPECT_EQ(ro.err.rfind("/proc/rattleback-energy.png: cannot write a file in /proc: ", 0), 0u)
-      << ro.err;
+  EXPECT_EQ(ro.err.rfind("/proc/none-energy.png: cannot write a file in /proc: ", 0), 0u) << ro.err;
   EXPECT_NE(ro.err.find("(give --plot a folder you can write)"), std::string::npos) << ro.err;
   EXPECT_FALSE(fs::exists(csv));
 }
@@ -534,7 +533,29 @@ TEST(Cli, SimulatesPlotTakesAFolderNotAnImagesName) {
       rattleback("simulate " + scene("rattleback") + " --duration 0.1 -q -o " +
                  (dir / "x.csv").string() + " --plot " + (dir / "old.png").string());
   EXPECT_EQ(taken.status, 0) << taken.err;
-  EXPECT_TRUE(fs::exists(dir / "old.png" / "rattleback-spin.png"));
+  EXPECT_TRUE(fs::exists(dir / "old.png" / "x-spin.png"));
+}
+
+// The figures are named after the table they plot: two runs of one scene into one folder (a
+// class's variants with --set) were both drawn as <scene>-spin.png, the second over the first,
+// and the page showed the second's figures under the first's run. Each keeps its own, and the
+// page shows its main run's.
+TEST(Cli, TwoRunsOfOneSceneKeepTheirOwnFigures) {
+  const fs::path dir = emptyDir("two-runs");
+  const std::string run =
+      "simulate " + scene("rattleback") + " --duration 0.5 -q --plot " + dir.string() + " -o ";
+  ASSERT_EQ(rattleback(run + (dir / "anna.csv").string() + " --set body.mass=0.07").status, 0);
+  ASSERT_EQ(rattleback(run + (dir / "ben.csv").string() + " --set body.paraboloid.a=1.3").status,
+            0);
+  for (const char* who : {"anna", "ben"})
+    for (const char* what : {"energy", "spin", "tilt", "normal"})
+      EXPECT_TRUE(fs::exists(dir / (std::string(who) + "-" + what + ".png"))) << who << what;
+  EXPECT_FALSE(fs::exists(dir / "rattleback-spin.png"));
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  std::stringstream page;
+  page << std::ifstream(dir / "index.html").rdbuf();
+  EXPECT_NE(page.str().find("src=\"anna-spin.png\""), std::string::npos);  // the main run's
+  EXPECT_EQ(page.str().find("src=\"ben-spin.png\""), std::string::npos);
 }
 
 // A refused simulate makes no folder: --plot's folder was made before -o was checked, and left
