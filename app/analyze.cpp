@@ -229,7 +229,7 @@ void writeAnalysis(std::FILE* out, const AnalyzeArgs& args, const sim::Model& mo
 
 int analyzeCommand(const AnalyzeArgs& args) {
   if (auto ok = tasks::checkAnalysisSpin(args.spin, "--spin"); !ok) return fail(ok);
-  auto loaded = loadScene(args.scene, {});
+  auto loaded = loadScene(args.scene, args.overrides);
   if (!loaded) return fail(loaded);
   if (args.output.empty() || args.output == "-") {
     writeAnalysis(stdout, args, loaded->model);

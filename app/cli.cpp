@@ -36,6 +36,14 @@ void stepOptions(CLI::App& c, std::optional<double>& dt, std::optional<double>& 
                "tolerance)");
 }
 
+// --set, which simulate, analyze, render and still take alike: a run made with it can be
+// analysed, drawn and filmed with the same values.
+void setOption(CLI::App& c, std::vector<std::string>& entries) {
+  c.add_option("--set", entries,
+               "KEY=VALUE: set a scene key (dotted, e.g. contact.model=smooth or "
+               "body.dents.at[0]=0.8; the value in YAML), before the options above; repeatable");
+}
+
 void defineSimulate(CLI::App& c, Cli& cli) {
   SimulateArgs& s = cli.simulate_args;
   sceneOption(c, s.scene);
@@ -45,9 +53,7 @@ void defineSimulate(CLI::App& c, Cli& cli) {
   c.add_option("--spin", s.spin, "Initial spin, rad/s (overrides the scene)");
   stepOptions(c, s.dt, s.tolerance);
   c.add_option("--integrator", s.integrator, names<sim::Integrator>());
-  c.add_option("--set", s.set,
-               "KEY=VALUE: set a scene key (dotted, e.g. contact.model=smooth or "
-               "body.dents.at[0]=0.8; the value in YAML), before the options above; repeatable");
+  setOption(c, s.set);
   c.add_option("--rate", s.rate,
                "Telemetry samples per simulated second, at exact times (default 500)");
   c.add_option("--plot", s.plot_dir,
@@ -67,6 +73,7 @@ void defineAnalyze(CLI::App& c, Cli& cli) {
   c.add_option(
       "--spin", cli.analyze_args.spin,
       "Spin for the growth rates, eigenvalues and forecast, rad/s (default: the scene's, else 5)");
+  setOption(c, cli.analyze_set);
   // Every other command has -q; a script that gives it to all of them works here too.
   c.add_flag("-q,--quiet", cli.analyze_args.quiet,
              "Nothing but the analysis (analyze prints nothing else: taken as the other commands "
@@ -103,6 +110,7 @@ void defineRender(CLI::App& c, Cli& cli) {
   c.add_option("-o,--output", r.output,
                "Video file (default out/<scene>.mp4; with --both the base name)");
   videoOptions(c, r.overrides, cli.render_size);
+  setOption(c, cli.render_set);
   c.add_option("--crf", r.crf, "x264 quality 1–51, lower is better (default 20)");
   c.add_option("--preset", r.preset, media::presetNames() + " (x264's; default veryfast)");
   backendOption(c, r.backend, r.backend_from,
@@ -122,6 +130,7 @@ void defineStill(CLI::App& c, Cli& cli) {
   c.add_option("-o,--output", st.output, "PNG file (default out/<scene>-<view>.png)");
   c.add_option("--t,--time", st.t, "Simulated time of the frame, s (default 0)");
   videoOptions(c, st.overrides, cli.still_size);
+  setOption(c, cli.still_set);
   c.add_flag("--no-readouts", st.no_readouts, "No time, spin or inset plot");
   c.add_flag("--transparent", st.transparent,
              "PNG with alpha for figures and slides: the body and its shadow over nothing (no "
@@ -279,6 +288,13 @@ std::optional<int> Cli::parse(int argc, char** argv) {
     std::cerr << "rattleback: " << explainParseError(app, argc, argv, e.what()) << "\n";
     return kBadInput;
   }
+  for (auto [entries, target] : {std::pair{&render_set, &render_args.overrides},
+                                 std::pair{&still_set, &still_args.overrides},
+                                 std::pair{&analyze_set, &analyze_args.overrides}})
+    if (auto ok = putSettings(*entries, *target); !ok) {
+      std::cerr << ok.error().text() << "\n";
+      return kBadInput;
+    }
   for (auto [text, target] : {std::pair{&render_size, &render_args.overrides.size},
                               std::pair{&still_size, &still_args.overrides.size}}) {
     if (text->empty()) continue;

@@ -45,7 +45,8 @@ struct Cli {
   SweepArgs sweep_args;
   SweepMergeArgs merge_args;
   std::string render_size, still_size;
-  CLI::App* merge = nullptr;  ///< `sweep merge`
+  std::vector<std::string> render_set, still_set, analyze_set;  ///< --set, put in by parse()
+  CLI::App* merge = nullptr;                                    ///< `sweep merge`
 
   /// Reads argv. Returns the exit status when that ends the program (--help, --version, a
   /// command-line error, already printed); nothing when a command is to run.

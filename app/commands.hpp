@@ -39,6 +39,9 @@ void record(const std::vector<tasks::OutputEntry>& entries);
 /// A scene's (or sweep's) name in the manifest: its file's stem.
 std::string sceneName(const std::string& path);
 
+/// --set's KEY=VALUE entries, split at their first '=', put into `o.values` in order.
+rb::Status putSettings(const std::vector<std::string>& entries, Overrides& o);
+
 struct SimulateArgs {
   std::string scene;
   std::string output;  ///< CSV path; empty: out/<scene name>.csv
@@ -58,6 +61,7 @@ struct AnalyzeArgs {
   std::string output;          ///< a file to write instead of standard output
   std::optional<double> spin;  ///< rad/s for the growth rates; default the scene's (or 5)
   bool quiet = false;          ///< accepted as every command's -q; analyze prints nothing else
+  Overrides overrides;         ///< only `values`: --set
 };
 int analyzeCommand(const AnalyzeArgs& args);
 

@@ -180,10 +180,8 @@ rb::Status writePlots(const std::string& dir, const std::string& stem,
 
 }  // namespace
 
-// The run's overrides as simulate's options give them; "--set" entries split at their first '='.
-rb::Result<Overrides> overridesOf(const SimulateArgs& args) {
-  Overrides o;
-  for (const std::string& entry : args.set) {
+rb::Status putSettings(const std::vector<std::string>& entries, Overrides& o) {
+  for (const std::string& entry : entries) {
     const auto equals = entry.find('=');
     if (equals == std::string::npos || equals == 0)
       return rb::Error{"", "--set: '" + entry +
@@ -191,6 +189,13 @@ rb::Result<Overrides> overridesOf(const SimulateArgs& args) {
                                "--set initial.tilt=[1,0])"};
     o.values.push_back({entry.substr(0, equals), entry.substr(equals + 1)});
   }
+  return {};
+}
+
+// The run's overrides as simulate's options give them.
+rb::Result<Overrides> overridesOf(const SimulateArgs& args) {
+  Overrides o;
+  if (auto ok = putSettings(args.set, o); !ok) return ok.error();
   o.duration = args.duration;
   o.spin = args.spin;
   o.dt = args.dt;
