@@ -101,7 +101,9 @@ AtomicOutput::AtomicOutput(AtomicOutput&& other) noexcept
 rb::Result<AtomicOutput> AtomicOutput::open(const std::string& path) {
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
-  if (fs::is_directory(status)) return rb::Error{"", path + ": is a folder, not a file"};
+  if (fs::is_directory(status))
+    return rb::Error{"", path + ": is a folder, not a file (give " + rb::output_named_by +
+                             " a file's name, e.g. one in that folder)"};
   rb::OutputPlace place = rb::outputPlace(path);
   if (auto made = makeParentFolder(place.target); !made) return made.error();
   const bool in_place = place.temporary.empty();

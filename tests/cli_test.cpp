@@ -536,6 +536,21 @@ TEST(Cli, SimulatesPlotTakesAFolderNotAnImagesName) {
   EXPECT_TRUE(fs::exists(dir / "old.png" / "x-spin.png"));
 }
 
+// -o naming a folder says the way out, as other output errors do (it said only "o: is a
+// folder, not a file"; a new user's trial).
+TEST(Cli, AnOutputThatIsAFolderSaysTheWayOut) {
+  const fs::path dir = emptyDir("output-folder");
+  for (const char* command : {"simulate", "analyze"}) {
+    const Result r =
+        rattleback(std::string(command) + " " + scene("rattleback") + " -q -o " + dir.string());
+    EXPECT_EQ(r.status, 2) << command;
+    EXPECT_EQ(r.err, dir.string() +
+                         ": is a folder, not a file (give -o a file's name, e.g. one "
+                         "in that folder)\n")
+        << command;
+  }
+}
+
 // analyze, still and render take --set as simulate does, so that a run made with it can be
 // analysed, drawn and filmed with the same values (a class's variants made with --set could
 // be simulated, but "render: no option --set" ended the rest). Each gives what the file with
