@@ -267,8 +267,20 @@ int simulateCommand(const SimulateArgs& args) {
   if (!loaded) return fail(loaded);
   const sim::Model& model = loaded->model;
   const double rate = args.rate.value_or(tasks::kDefaultRate);
-  if (auto ok = tasks::checkRate(rate, model.duration); !ok)
+  if (auto ok = tasks::checkRate(rate, model.duration); !ok) {
+    // At the default rate it is the duration that makes too many rows: named where it was set
+    // (a scene's duration: 1e9 was blamed on --rate, which the user never gave).
+    if (!args.rate && model.duration * rate > 1e7)
+      return fail(scene::locate(
+          loaded->scene,
+          rb::Error{"simulation.duration",
+                    rb::show(model.duration) + " s makes " +
+                        rb::show(std::floor(model.duration * rate) + 1) +
+                        " rows of telemetry at the default --rate of " + rb::show(rate) +
+                        " samples a second; at most 1e7 rows (about 3 GB): give a shorter "
+                        "duration, or a lower --rate"}));
     return fail(rb::Status::fail("--" + ok.error().text()));
+  }
   // "-o -" is standard output, as for most tools that write a table. When the table goes to
   // standard output (so also through /dev/stdout or a link to it), the summary goes to standard
   // error, so that the table can be piped on whole.

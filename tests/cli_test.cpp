@@ -536,6 +536,35 @@ TEST(Cli, SimulatesPlotTakesAFolderNotAnImagesName) {
   EXPECT_TRUE(fs::exists(dir / "old.png" / "x-spin.png"));
 }
 
+// Too many rows at the default rate are the duration's doing, named where it was set: a
+// scene's duration of 1e9 s was blamed on --rate, which the user never gave. A rate given is
+// named as itself.
+TEST(Cli, TooManyRowsNameTheDurationUnlessARateWasGiven) {
+  const fs::path dir = emptyDir("huge");
+  std::stringstream file;
+  file << std::ifstream(scene("rattleback")).rdbuf();
+  std::string text = file.str();
+  const std::size_t at = text.find("  duration: 8.0");
+  ASSERT_NE(at, std::string::npos);
+  const int line = static_cast<int>(std::count(text.begin(), text.begin() + at, '\n')) + 1;
+  text.replace(at, 15, "  duration: 1e9");
+  const fs::path yaml = dir / "huge.yaml";
+  std::ofstream(yaml) << text;
+  const std::string csv = (dir / "h.csv").string();
+  const Result r = rattleback("simulate " + yaml.string() + " -q -o " + csv);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err.rfind(yaml.string() + ":" + std::to_string(line) +
+                            ": simulation.duration 1e+09 s makes 5e+11 rows",
+                        0),
+            0u)
+      << r.err;
+  EXPECT_NE(r.err.find("give a shorter duration, or a lower --rate"), std::string::npos);
+  const Result given = rattleback("simulate " + yaml.string() + " --rate 1 -q -o " + csv);
+  EXPECT_EQ(given.status, 2);
+  EXPECT_EQ(given.err.rfind("--rate: 1 Hz over 1e+09 s", 0), 0u) << given.err;
+  EXPECT_FALSE(fs::exists(csv));
+}
+
 // -o naming a folder says the way out, as other output errors do (it said only "o: is a
 // folder, not a file"; a new user's trial).
 TEST(Cli, AnOutputThatIsAFolderSaysTheWayOut) {
