@@ -258,6 +258,18 @@ std::string measuredOf(const nlohmann::json& run) {
   const nlohmann::json& r = field(run, "result");
   const nlohmann::json& spin = field(r, "initial_spin");
   std::ostringstream out;
+  // The values put in over the scene file (--set, with_values), which make this run's body:
+  // a class's variants of one scene each said only the scene's name.
+  const nlohmann::json& values = field(run, "scene_values");
+  if (values.is_array() && !values.empty()) {
+    out << "values put in: ";
+    for (std::size_t i = 0; i < values.size(); ++i)
+      out << (i ? ", " : "") << "<code>"
+          << escape(stringOr(field(values[i], "key"), "?") + " = " +
+                    stringOr(field(values[i], "value"), "?"))
+          << "</code>";
+    out << "<br>";
+  }
   out << "spun " << number(spin, "%+.3g") << " rad/s ("
       << spinWords(spin.is_number() ? spin.get<double>() : 0.0) << ")<br>" << reversalOf(r)
       << "<br>final spin " << number(field(r, "final_spin"), "%+.3f") << " rad/s<br>energy "
