@@ -15,6 +15,7 @@
 #include "app/progress.hpp"
 #include "sim/analysis.hpp"
 #include "sim/rollout.hpp"
+#include "tasks/analysis.hpp"
 #include "tasks/check.hpp"
 #include "tasks/output.hpp"
 #include "tasks/scene_args.hpp"
@@ -46,6 +47,11 @@ void printSummary(std::FILE* out, const SimulateArgs& args, const sim::Model& mo
     std::fprintf(out,
                  "WARNING         the body cannot stand upright (its CM is above a radius of "
                  "curvature at the rest contact; `rattleback analyze` says by how much)\n");
+  // As analyze warns too: dents left outside a body made smaller make no rattleback.
+  if (tasks::dentsCutShare(*model.body) == 0.0)
+    std::fprintf(out,
+                 "WARNING         body.dents cut nothing: they lie wholly outside the body, "
+                 "which is the plain paraboloid\n");
   const std::string steps = rb::counted(run.steps, "step");
   if (sim::isAdaptive(model.integrator))
     std::fprintf(out, "integrator      %s, tolerance %g, %s (%lld rejected), %g s simulated\n",

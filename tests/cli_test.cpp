@@ -420,6 +420,10 @@ TEST(Cli, AnalyzeSaysWhenTheDentsCutNothing) {
   EXPECT_NE(small.out.find("WARNING: body.dents cut nothing"), std::string::npos) << small.out;
   const Result json = rattleback("analyze --json " + (dir / "small.yaml").string());
   EXPECT_EQ(nlohmann::json::parse(json.out)["dents_cut_share"], 0.0);
+  // simulate's summary says so too (it warned only that a body cannot stand).
+  const Result run = rattleback("simulate " + (dir / "small.yaml").string() +
+                                " --duration 0.1 -o " + (dir / "small.csv").string());
+  EXPECT_NE(run.out.find("WARNING         body.dents cut nothing"), std::string::npos) << run.out;
   const Result dented = rattleback("analyze " + scene("rattleback"));
   EXPECT_EQ(dented.out.find("WARNING: body.dents"), std::string::npos);
   const double share = nlohmann::json::parse(
