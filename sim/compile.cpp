@@ -283,8 +283,17 @@ rb::Result<Body> buildBody(const BodySpec& b, double unit, MassSource source, bo
   if (b.dents)
     dents =
         Dents{b.dents->scale, b.dents->at[0] * unit, b.dents->at[1] * unit, b.dents->inset * unit};
-  if (!gridHasTwoLevels(shape, dents, grid))
-    return rb::Error{"body.grid", "is too coarse: the body has fewer than two levels of points"};
+  if (!gridHasTwoLevels(shape, dents, grid)) {
+    // Its sizes, so that a body given in metres in a file of centimetres (0.01 for 1) shows as
+    // the body it is, not as a grid to make finer.
+    const double height = (shape.top - shape.lowestPoint(Eigen::Vector3d(0, 0, -1)).z()) / unit;
+    return rb::Error{"body.grid",
+                     "is too coarse: the body has fewer than two levels of points (it "
+                     "is " +
+                         show(height) + " high against dz " + show(b.grid.dz) +
+                         ", both in units.length, " + show(unit) +
+                         " m: a finer grid, or the body's sizes in those units?)"};
+  }
 
   Body body;
   body.mass = b.mass;

@@ -88,6 +88,11 @@ const BadCase kBadCases[] = {
     // with std::length_error; the int column count overflowed past the check).
     {"dx: 0.52,", "dx: 1e-9,", "6: body.grid makes about"},
     {"dz: 0.2}", "dz: 1e-12}", "6: body.grid makes about"},
+    // Too coarse says the body's height, and the unit: a body given in metres in a file of
+    // centimetres showed only as a grid to make finer (a new user's trial).
+    {"dz: 0.2}", "dz: 50}",
+     "6: body.grid is too coarse: the body has fewer than two levels of points (it is 6 high "
+     "against dz 50, both in units.length, 0.01 m:"},
     {"dx: 0.52, dy: 1.42, dz: 0.2", "dx: 1e-300, dy: 1e-300, dz: 1e-300", "6: body.grid makes"},
     {"{scale: 0.375, ", "{", "5: body.dents.scale is required"},
     {"length: 0.01", "length: 0", "1: units.length must be > 0"},
