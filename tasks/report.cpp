@@ -295,7 +295,15 @@ void writeMoreRuns(std::ostream& out, const fs::path& dir, const SceneFiles& f) 
 void writeAnalysis(std::ostream& out, const SceneFiles& f,
                    const std::optional<nlohmann::json>& theory,
                    const std::optional<nlohmann::json>& run) {
-  if (!theory && !run && !f.has(".csv")) return;
+  // An analysis as text alone (analyze -o NAME.txt, listed in the manifest) is linked, not
+  // dropped: its scene's section was empty.
+  const std::string full_analysis =
+      f.has("-analysis.txt") ? "<a href=\"" + url(f.at("-analysis.txt")) + "\">full analysis</a>"
+                             : "";
+  if (!theory && !run && !f.has(".csv")) {
+    if (!full_analysis.empty()) out << "<p>" << full_analysis << "</p>\n";
+    return;
+  }
   out << "<table><tr><th>predicted (linearised and averaged rolling model)</th><th>measured "
          "(simulate)</th></tr>"
          "<tr><td>";
@@ -319,9 +327,9 @@ void writeAnalysis(std::ostream& out, const SceneFiles& f,
             : field(t, "rest_stable") == false ? "<b>cannot stand upright</b>"
                                                : "upright: –")
         << forecastOf(t);
-    if (f.has("-analysis.txt"))
-      out << "<br><a href=\"" << url(f.at("-analysis.txt")) << "\">full analysis</a>";
+    if (!full_analysis.empty()) out << "<br>";
   }
+  out << full_analysis;
   out << "</td><td>";
   if (run) out << measuredOf(*run);
   if (f.has(".csv"))

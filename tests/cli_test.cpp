@@ -584,6 +584,21 @@ TEST(Cli, AnOutputThatIsAFolderSaysTheWayOut) {
   }
 }
 
+// An analysis written as text under a name of the user's is linked on the page: its scene's
+// section was empty, the file listed in the manifest but nowhere on the page (a new user's
+// trial).
+TEST(Report, AnAnalysisAloneIsLinked) {
+  const fs::path dir = emptyDir("analysis-alone");
+  ASSERT_EQ(
+      rattleback("analyze " + scene("rattleback") + " -o " + (dir / "rim-an.txt").string()).status,
+      0);
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  std::stringstream page;
+  page << std::ifstream(dir / "index.html").rdbuf();
+  EXPECT_NE(page.str().find("<a href=\"rim-an.txt\">full analysis</a>"), std::string::npos)
+      << page.str();
+}
+
 // analyze, still and render take --set as simulate does, so that a run made with it can be
 // analysed, drawn and filmed with the same values (a class's variants made with --set could
 // be simulated, but "render: no option --set" ended the rest). Each gives what the file with
