@@ -850,7 +850,10 @@ class Player {
   step(direction) {
     this.pause();
     const ts = this.run.t;
-    const eps = 1e-9 * Math.max(1, Math.abs(this.tEnd));
+    // A time within a twentieth of a sample interval of a sample counts as that sample: paused
+    // at 1.4999 s, → went to 1.50, the same picture and read-out, and the key seemed dead.
+    const interval = this.n > 1 ? (ts[this.n - 1] - ts[0]) / (this.n - 1) : 0;
+    const eps = Math.max(1e-9 * Math.max(1, Math.abs(this.tEnd)), 0.05 * interval);
     let [i, a] = this.locate(this.time);
     if (this.time >= this.tEnd) { i = this.n - 1; a = 0; }
     let k;

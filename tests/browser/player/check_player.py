@@ -629,17 +629,32 @@ class Checker:
         time.sleep(0.3)
         self.check(self.hook(element, "playing()"), f"{where}: space does not play")
         ActionChains(self.driver).send_keys(Keys.SPACE).perform()
-        self.check(not self.hook(element, "playing()"), f"{where}: space again does not pause")
+        self.check(self.until(element, "!h.playing()"), f"{where}: space again does not pause")
+
+        # (Each key is waited for: on a loaded machine it returns before the page handles it.)
+        def key(k, expect):
+            ActionChains(self.driver).send_keys(k).perform()
+            self.until(element, f"h.time() === {expect!r}", 5)
+            return self.hook(element, "time()")
+
         self.hook(element, "setTime(arguments[1])", between(t, k, 0.4))
-        ActionChains(self.driver).send_keys(Keys.ARROW_RIGHT).perform()
-        got = self.hook(element, "time()")
+        got = key(Keys.ARROW_RIGHT, t[k + 1])
         self.check(got == t[k + 1], f"{where}: → from between samples {k} and {k + 1} went to {got}, not {t[k + 1]}")
-        ActionChains(self.driver).send_keys(Keys.ARROW_RIGHT).perform()
-        got = self.hook(element, "time()")
+        got = key(Keys.ARROW_RIGHT, t[k + 2])
         self.check(got == t[k + 2], f"{where}: → again went to {got}, not {t[k + 2]}")
-        ActionChains(self.driver).send_keys(Keys.ARROW_LEFT).send_keys(Keys.ARROW_LEFT).perform()
-        got = self.hook(element, "time()")
+        key(Keys.ARROW_LEFT, t[k + 1])
+        got = key(Keys.ARROW_LEFT, t[k])
         self.check(got == t[k], f"{where}: ← twice went to {got}, not {t[k]}")
+        # A time a hair before a sample (paused at 1.4999 s) counts as that sample: → goes on
+        # to the next one; it went to 1.50, the same picture and read-out, and seemed dead.
+        self.hook(element, "setTime(arguments[1])", between(t, k, 0.99))
+        got = key(Keys.ARROW_RIGHT, t[k + 2])
+        self.check(got == t[k + 2], f"{where}: → from just before sample {k + 1} went to {got}, "
+                                    f"not on to {t[k + 2]}")
+        self.hook(element, "setTime(arguments[1])", between(t, k, 0.01))
+        got = key(Keys.ARROW_LEFT, t[k - 1])
+        self.check(got == t[k - 1], f"{where}: ← from just after sample {k} went to {got}, "
+                                    f"not back to {t[k - 1]}")
 
     def click_view(self, element, view):
         button = element.find_element(By.CSS_SELECTOR, f".rbp-view-{view}")
