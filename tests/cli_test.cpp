@@ -47,6 +47,14 @@ fs::path emptyDir(const std::string& name) {
   return dir;
 }
 
+// A file's bytes (a scene, a page, a PNG).
+std::string readText(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
 struct Result {
   int status;
   std::string out, err;
@@ -385,9 +393,7 @@ TEST(Cli, AnalyzeRefusesANonFiniteSpinAndSaysWhenTheSceneIsNotSpun) {
     }
   }
   const fs::path dir = emptyDir("unspun");
-  std::stringstream file;
-  file << std::ifstream(scene("rattleback")).rdbuf();
-  std::string text = file.str();
+  std::string text = readText(scene("rattleback"));
   const std::size_t at = text.find("spin: -5.0");
   ASSERT_NE(at, std::string::npos);
   text.replace(at, 10, "spin: 0.0");
@@ -407,9 +413,7 @@ TEST(Cli, AnalyzeRefusesANonFiniteSpinAndSaysWhenTheSceneIsNotSpun) {
 // The default body's dents cut a share of it (the closed form's 14.7 %).
 TEST(Cli, AnalyzeSaysWhenTheDentsCutNothing) {
   const fs::path dir = emptyDir("dents-outside");
-  std::stringstream file;
-  file << std::ifstream(scene("rattleback")).rdbuf();
-  std::string text = file.str();
+  std::string text = readText(scene("rattleback"));
   const std::string shape = "paraboloid: {a: 1.0, p: 0.5, q: 0.0, s: 0.03, top: 0.5}";
   const std::size_t at = text.find(shape);
   ASSERT_NE(at, std::string::npos);
@@ -545,9 +549,7 @@ TEST(Cli, SimulatesPlotTakesAFolderNotAnImagesName) {
 // named as itself.
 TEST(Cli, TooManyRowsNameTheDurationUnlessARateWasGiven) {
   const fs::path dir = emptyDir("huge");
-  std::stringstream file;
-  file << std::ifstream(scene("rattleback")).rdbuf();
-  std::string text = file.str();
+  std::string text = readText(scene("rattleback"));
   const std::size_t at = text.find("  duration: 8.0");
   ASSERT_NE(at, std::string::npos);
   const int line = static_cast<int>(std::count(text.begin(), text.begin() + at, '\n')) + 1;
@@ -593,10 +595,8 @@ TEST(Report, AnAnalysisAloneIsLinked) {
       rattleback("analyze " + scene("rattleback") + " -o " + (dir / "rim-an.txt").string()).status,
       0);
   ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
-  std::stringstream page;
-  page << std::ifstream(dir / "index.html").rdbuf();
-  EXPECT_NE(page.str().find("<a href=\"rim-an.txt\">full analysis</a>"), std::string::npos)
-      << page.str();
+  const std::string page = readText(dir / "index.html");
+  EXPECT_NE(page.find("<a href=\"rim-an.txt\">full analysis</a>"), std::string::npos) << page;
 }
 
 // analyze, still and render take --set as simulate does, so that a run made with it can be
@@ -605,9 +605,7 @@ TEST(Report, AnAnalysisAloneIsLinked) {
 // the values written in gives: the same JSON, the same pixels.
 TEST(Cli, AnalyzeStillAndRenderTakeSet) {
   const fs::path dir = emptyDir("set-everywhere");
-  std::stringstream file;
-  file << std::ifstream(scene("rattleback")).rdbuf();
-  std::string text = file.str();
+  std::string text = readText(scene("rattleback"));
   text.replace(text.find("mass: 0.059"), 11, "mass: 0.05");
   text.replace(text.find("at: [0.73, 4.50]"), 16, "at: [1.0, 4.50]");
   const fs::path written = dir / "rattleback.yaml";  // the same name: the same read-outs
@@ -625,13 +623,8 @@ TEST(Cli, AnalyzeStillAndRenderTakeSet) {
       0);
   ASSERT_EQ(rattleback("still " + written.string() + still + (dir / "file.png").string()).status,
             0);
-  auto bytes = [](const fs::path& path) {
-    std::stringstream in;
-    in << std::ifstream(path, std::ios::binary).rdbuf();
-    return in.str();
-  };
-  EXPECT_EQ(bytes(dir / "set.png"), bytes(dir / "file.png"));
-  EXPECT_GT(bytes(dir / "set.png").size(), 1000u);
+  EXPECT_EQ(readText(dir / "set.png"), readText(dir / "file.png"));
+  EXPECT_GT(readText(dir / "set.png").size(), 1000u);
   const Result video = rattleback("render " + scene("rattleback") + set +
                                   " --duration 0.2 --size 64x48 -q -o " + (dir / "v.mp4").string());
   EXPECT_EQ(video.status, 0) << video.err;
@@ -658,14 +651,12 @@ TEST(Cli, TwoRunsOfOneSceneKeepTheirOwnFigures) {
       EXPECT_TRUE(fs::exists(dir / (std::string(who) + "-" + what + ".png"))) << who << what;
   EXPECT_FALSE(fs::exists(dir / "rattleback-spin.png"));
   ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
-  std::stringstream page;
-  page << std::ifstream(dir / "index.html").rdbuf();
-  EXPECT_NE(page.str().find("src=\"anna-spin.png\""), std::string::npos);  // the main run's
-  EXPECT_EQ(page.str().find("src=\"ben-spin.png\""), std::string::npos);
+  const std::string page = readText(dir / "index.html");
+  EXPECT_NE(page.find("src=\"anna-spin.png\""), std::string::npos);  // the main run's
+  EXPECT_EQ(page.find("src=\"ben-spin.png\""), std::string::npos);
   // Each run says the values that made its body (each said only the scene's name).
-  EXPECT_NE(page.str().find("values put in: <code>body.mass = 0.07</code>"), std::string::npos);
-  EXPECT_NE(page.str().find("values put in: <code>body.paraboloid.a = 1.3</code>"),
-            std::string::npos);
+  EXPECT_NE(page.find("values put in: <code>body.mass = 0.07</code>"), std::string::npos);
+  EXPECT_NE(page.find("values put in: <code>body.paraboloid.a = 1.3</code>"), std::string::npos);
 }
 
 // A refused simulate makes no folder: --plot's folder was made before -o was checked, and left
@@ -1607,17 +1598,6 @@ TEST(Cli, TheReportPlacesOutputsByTheManifest) {
        {"src=\"small.mp4\"", "src=\"larger.mp4\"", "src=\"side-a.png\"", "src=\"side-b.png\""})
     EXPECT_NE(html.find(shown), std::string::npos) << shown;
 }
-
-namespace {
-
-std::string readText(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-}  // namespace
 
 // Every run of a scene is on its page: a new user's two runs (S.csv, then S-ccw.csv spun the
 // other way) and a --check run's S-check.csv showed only the last written, S.csv linked
