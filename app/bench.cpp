@@ -185,7 +185,9 @@ int benchCommand(const BenchArgs& args) {
   // Open the outputs before the long work, so an unwritable path fails at once.
   const std::string csv_path = args.csv.empty() ? "out/bench.csv" : args.csv;
   const std::string png_path = args.plot.empty() ? "out/bench.png" : args.plot;
-  if (auto made = checkPlotFile(png_path); !made) return fail(made);
+  tasks::MadeFolders made;  // a bench refused or stopped leaves no empty folder behind
+  if (auto ok = checkPlotFile(png_path, &made); !ok) return fail(ok);
+  if (auto ok = tasks::makeParentFolder(csv_path, &made); !ok) return fail(ok);
   auto csv = tasks::AtomicOutput::open(csv_path);
   if (!csv) return fail(csv);
   std::vector<tasks::BenchRow> rows;

@@ -109,7 +109,7 @@ rb::Status checkPlotFolder(const std::string& dir, const std::string& first_figu
   return {};
 }
 
-rb::Status checkPlotFile(const std::string& png) {
+rb::Status checkPlotFile(const std::string& png, tasks::MadeFolders* made) {
   std::error_code ec;
   if (fs::is_directory(png, ec)) return rb::Status::fail(png + ": --plot is a folder, not a file");
   const rb::OutputNamedBy naming("--plot");
@@ -117,7 +117,7 @@ rb::Status checkPlotFile(const std::string& png) {
   if (auto ok = rb::checkExtension(png, ".png", "PNG", false); !ok) return ok;
   const rb::OutputPlace place = rb::outputPlace(png);
   if (auto refused = refuseDevice(png, place); !refused) return refused;
-  if (auto made = tasks::makeParentFolder(place.target); !made) return made;
+  if (auto ok = tasks::makeParentFolder(place.target, made); !ok) return ok;
   const fs::path dir = fs::absolute(place.target).parent_path();
   if (std::string why = probeWrite(dir); !why.empty())
     return rb::Status::fail(rb::cannotWriteIn(png, why));

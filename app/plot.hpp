@@ -58,8 +58,9 @@ std::string sweepLabel(const std::string& name);
 rb::Status checkPlotFolder(const std::string& dir, const std::string& first_figure,
                            tasks::MadeFolders* made = nullptr);
 /// The same for one PNG: its folder made when missing and a file written into it and removed,
-/// so that an unwritable --plot fails before the run, not after it.
-rb::Status checkPlotFile(const std::string& png);
+/// so that an unwritable --plot fails before the run, not after it. The folders made are added
+/// to `made`, when given.
+rb::Status checkPlotFile(const std::string& png, tasks::MadeFolders* made = nullptr);
 
 /// Draws the panels stacked top to bottom into one PNG of width × height pixels.
 /// Returns one error line naming `png` on failure; an existing `png` is then left as it was.

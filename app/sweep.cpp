@@ -305,8 +305,10 @@ rb::Status writeOutputs(const SweepArgs& args, const scene::Sweep& sweep,
   return plotTable(args.plot, args.metric, fs::path(args.file).stem().string(), table);
 }
 
-// Where the table goes, checked, with its folder made.
-rb::Result<std::string> outputOf(const SweepArgs& args, const std::optional<tasks::Shard>& shard) {
+// Where the table goes, checked, with its folder made (and the plot's, added to `made`: a sweep
+// refused leaves no empty folder behind).
+rb::Result<std::string> outputOf(const SweepArgs& args, const std::optional<tasks::Shard>& shard,
+                                 tasks::MadeFolders& made) {
   std::string output =
       args.output.empty() ? "out/" + fs::path(args.file).stem().string() + ".csv" : args.output;
   if (auto ok = tasks::checkTableIsAFile(output); !ok) return ok.error();
@@ -318,8 +320,8 @@ rb::Result<std::string> outputOf(const SweepArgs& args, const std::optional<task
   }
   if (shard && args.output.empty()) output = tasks::shardPath(output, *shard);
   if (!args.plot.empty())
-    if (auto ok = checkPlotFile(args.plot); !ok) return ok.error();
-  if (auto made = tasks::makeParentFolder(output); !made) return made.error();
+    if (auto ok = checkPlotFile(args.plot, &made); !ok) return ok.error();
+  if (auto ok = tasks::makeParentFolder(output, &made); !ok) return ok.error();
   return output;
 }
 
@@ -336,7 +338,8 @@ int sweepCommand(const SweepArgs& args) {
   const scene::Sweep& sweep = loaded.value();
   std::optional<tasks::Shard> shard;
   if (auto ok = checkOptions(args, shard); !ok) return fail(ok);
-  auto output = outputOf(args, shard);
+  tasks::MadeFolders made;
+  auto output = outputOf(args, shard, made);
   if (!output) return fail(output);
   if (!args.emit.empty()) return emitScript(args, sweep, output.value());
   auto scenes = scene::SweepScenes::open(sweep);
@@ -376,8 +379,9 @@ int sweepMergeCommand(const SweepMergeArgs& args) {
     return fail(
         rb::Status::fail("sweep merge: give the shard tables to merge (OUT.csv SHARD.csv…)"));
   if (auto ok = tasks::checkTableIsAFile(args.output); !ok) return fail(ok);
+  tasks::MadeFolders made;
   if (!args.plot.empty())
-    if (auto ok = checkPlotFile(args.plot); !ok) return fail(ok);
+    if (auto ok = checkPlotFile(args.plot, &made); !ok) return fail(ok);
   auto merged = tasks::mergeShards(args.shards);
   if (!merged) return fail(merged);
   const tasks::Merged& m = merged.value();

@@ -691,6 +691,27 @@ TEST(Cli, ARefusedSimulateLeavesNoFolderBehind) {
   EXPECT_TRUE(fs::is_empty(dir)) << fs::directory_iterator(dir)->path();
 }
 
+// The same for sweep, sweep merge and bench: --plot's folder was made before the table's place
+// was checked, and left behind empty.
+TEST(Cli, ARefusedSweepOrBenchLeavesNoFolderBehind) {
+  const fs::path dir = emptyDir("no-folder-sweep");
+  std::ofstream(dir / "afile") << "";
+  const std::string table = (dir / "afile" / "t.csv").string();  // its "folder" is a file
+  const std::string sweep = std::string(RATTLEBACK_SOURCE_DIR) + "/sweeps/spin-drag.yaml";
+  const Result swept =
+      rattleback("sweep " + sweep + " -o " + table + " --plot " + (dir / "a" / "p.png").string());
+  EXPECT_EQ(swept.status, 2) << swept.err;
+  const Result merged = rattleback("sweep merge " + table + " " + (dir / "none.csv").string() +
+                                   " --plot " + (dir / "b" / "p.png").string());
+  EXPECT_EQ(merged.status, 2) << merged.err;
+  const Result bench = rattleback("bench --duration 0.1 -q -o " + table + " --plot " +
+                                  (dir / "c" / "d" / "p.png").string());
+  EXPECT_EQ(bench.status, 2) << bench.err;
+  EXPECT_EQ(bench.err.rfind(table + ": cannot make its folder", 0), 0u) << bench.err;
+  fs::remove(dir / "afile");
+  EXPECT_TRUE(fs::is_empty(dir)) << fs::directory_iterator(dir)->path();
+}
+
 TEST(Cli, VersionQuietAndVerbose) {
   const Result version = rattleback("--version");
   EXPECT_EQ(version.status, 0);
