@@ -109,10 +109,11 @@ rb::Status checkPlotFolder(const std::string& dir, const std::string& first_figu
   return {};
 }
 
-rb::Status checkPlotFile(const std::string& png, tasks::MadeFolders* made) {
+rb::Status checkPlotFile(const std::string& png, tasks::MadeFolders* made, const char* option) {
   std::error_code ec;
-  if (fs::is_directory(png, ec)) return rb::Status::fail(png + ": --plot is a folder, not a file");
-  const rb::OutputNamedBy naming("--plot");
+  if (fs::is_directory(png, ec))
+    return rb::Status::fail(png + ": " + option + " is a folder, not a file");
+  const rb::OutputNamedBy naming(option);
   // gnuplot draws a PNG whatever the name says (a new user's trial: --plot x.jpg).
   if (auto ok = rb::checkExtension(png, ".png", "PNG", false); !ok) return ok;
   const rb::OutputPlace place = rb::outputPlace(png);

@@ -59,8 +59,9 @@ rb::Status checkPlotFolder(const std::string& dir, const std::string& first_figu
                            tasks::MadeFolders* made = nullptr);
 /// The same for one PNG: its folder made when missing and a file written into it and removed,
 /// so that an unwritable --plot fails before the run, not after it. The folders made are added
-/// to `made`, when given.
-rb::Status checkPlotFile(const std::string& png, tasks::MadeFolders* made = nullptr);
+/// to `made`, when given. `option` names the PNG in messages (compare's --diff uses it too).
+rb::Status checkPlotFile(const std::string& png, tasks::MadeFolders* made = nullptr,
+                         const char* option = "--plot");
 
 /// Draws the panels stacked top to bottom into one PNG of width × height pixels.
 /// Returns one error line naming `png` on failure; an existing `png` is then left as it was.

@@ -9,6 +9,7 @@
 #include "app/cli.hpp"
 #include "app/commands.hpp"
 #include "app/interrupt.hpp"
+#include "app/plot.hpp"
 #include "app/progress.hpp"
 #include "media/still.hpp"
 #include "media/video_plan.hpp"
@@ -169,10 +170,12 @@ int compareCommand(const CompareArgs& args) {
               << args.pixel_fraction << "\n";
     return kBadInput;
   }
-  {
-    const rb::OutputNamedBy naming("--diff");  // refused before the images are read
-    if (auto ok = rb::checkExtension(args.diff, ".png", "PNG", false); !ok) return fail(ok);
-  }
+  // --diff's place checked (its folder made, as every output's is) before the images are read:
+  // an unwritable one is refused at once, not after the verdict (a CI maintainer's trial:
+  // `--diff diffs/x.png` into a missing folder said "differ" and then exited 2).
+  tasks::MadeFolders made;  // removed again when no diff is written into it
+  if (!args.diff.empty())
+    if (auto ok = checkPlotFile(args.diff, &made, "--diff"); !ok) return fail(ok);
   render::Image a, b;
   for (auto [path, image] : {std::pair{&args.actual, &a}, std::pair{&args.expected, &b}}) {
     if (auto e = render::readPng(*path, *image); !e) {

@@ -231,9 +231,12 @@ rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const Vide
           ? std::vector<std::string>{base + "-preferred.mp4", base + "-reversed.mp4",
                                      base + "-both.mp4"}
           : std::vector<std::string>{request.output.empty() ? base + ".mp4" : request.output};
+  // Declared before the outputs, so that a video refused or stopped removes its temporary files
+  // first and then the folders it made for them, left empty.
+  tasks::MadeFolders made;
   std::vector<std::unique_ptr<Output>> outputs;
   for (std::size_t i = 0; i < provisional.size(); ++i) {
-    if (auto made = tasks::makeParentFolder(provisional[i]); !made) return made.error();
+    if (auto ok = tasks::makeParentFolder(provisional[i], &made); !ok) return ok.error();
     render::EncoderSettings settings;
     settings.width = i == 2 ? 2 * plan.width : plan.width;
     settings.height = plan.height;

@@ -400,6 +400,36 @@ TEST(Compare, SameAndDifferentImages) {
   EXPECT_EQ(rattleback("compare -q " + golden.string() + " " + golden.string()), 0);
 }
 
+// --diff's folder is made as every output's is, and checked before the verdict: into a missing
+// folder compare said "differ" and then exited 2 with no diff (a CI maintainer's trial). A pass,
+// or a refusal, leaves no folder behind; nor does a video that stops.
+TEST(Compare, TheDiffsFolderIsMadeAndLeftOnlyWithADiff) {
+  const fs::path golden = kSource / "tests/golden/seed-above.png";
+  render::Image image;
+  ASSERT_TRUE(render::readPng(golden.string(), image));
+  image.rgba[0] ^= 0x80;
+  const fs::path dir = scratch("stderr.txt").parent_path() / "made";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path changed = dir / "changed.png";
+  ASSERT_TRUE(render::writePng(changed.string(), image));
+  const std::string pair = changed.string() + " " + golden.string();
+  EXPECT_EQ(rattleback("compare " + pair + " --pixels 0 --diff " + (dir / "d/e/diff.png").string()),
+            1);
+  EXPECT_TRUE(fs::exists(dir / "d/e/diff.png"));
+  EXPECT_EQ(rattleback("compare " + pair + " --diff " + (dir / "pass/diff.png").string()), 0);
+  EXPECT_FALSE(fs::exists(dir / "pass"));
+  std::ofstream(dir / "afile") << "";
+  EXPECT_EQ(
+      rattleback("compare " + pair + " --pixels 0 --diff " + (dir / "afile/diff.png").string()), 2);
+  // A video that stops (explicit Euler at 5 ms gains energy) removes the folder made for it.
+  EXPECT_EQ(rattleback("render scenes/rattleback.yaml --set simulation.integrator=euler "
+                       "--set simulation.dt=5e-3 --size 160x90 -o " +
+                       (dir / "v/w/x.mp4").string()),
+            3);
+  EXPECT_FALSE(fs::exists(dir / "v"));
+}
+
 // A PNG's stored values are compared as stored, whatever gAMA/cHRM chunks it carries (ffmpeg
 // writes them into frames it extracts; libpng's simplified reader would convert by them, by up
 // to 11 steps for a gamma of 1/1.8). The chunks are written here through libpng itself.
