@@ -2,8 +2,10 @@
 
 #include <array>
 #include <cstdlib>
+#include <exception>
 #include <filesystem>
 #include <iostream>
+#include <new>
 #include <string_view>
 
 #include "app/suggest.hpp"
@@ -325,6 +327,18 @@ const CommandSpec& Cli::chosen() const {
 int Cli::run() {
   const CommandSpec& spec = chosen();
   return spec.run ? spec.run(*this) : kBadInput;
+}
+
+int runGuarded(Cli& cli) {
+  try {
+    return cli.run();
+  } catch (const std::bad_alloc&) {
+    std::cerr << "rattleback: " << cli.chosen().name << ": out of memory\n";
+  } catch (const std::exception& e) {
+    std::cerr << "rattleback: " << cli.chosen().name << ": internal error: " << e.what()
+              << " (a fault of rattleback's: please report it with the command)\n";
+  }
+  return kMachine;
 }
 
 }  // namespace app

@@ -57,6 +57,10 @@ struct Cli {
   int run();
 };
 
+/// cli.run(), with an exception that escapes a command (memory run out, a fault of ours) said in
+/// one line and exit status kMachine, instead of an abort.
+int runGuarded(Cli& cli);
+
 // The drawing commands' runners: defined in rattleback-render (app/video.cpp), absent (null,
 // weak) in rattleback.
 [[gnu::weak]] int runRender(Cli& cli);

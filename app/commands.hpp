@@ -20,11 +20,12 @@ enum Exit : int {
   kOk = 0,
   kBadInput = 2,  ///< the scene, an option or an output path is unusable; nothing written
   kDiverged = 3,  ///< the run stopped itself (NaN, energy, rim); its partial output was removed
+  kMachine = 4,   ///< the machine failed (rb::Error::machine): no OpenGL, a full disk; nothing kept
   // 130 / 143: interrupted by SIGINT / SIGTERM (app/interrupt.hpp)
 };
 
-/// Prints the error's one line on standard error; returns kBadInput. The one place a command's
-/// bad input is reported.
+/// Prints the error's one line on standard error; returns kBadInput, or kMachine for an error of
+/// the machine. The one place a command's bad input is reported.
 int fail(const rb::Error& error);
 inline int fail(const rb::Status& status) {
   return fail(status.error());

@@ -45,7 +45,7 @@ namespace app {
 
 int fail(const rb::Error& error) {
   std::cerr << error.text() << "\n";
-  return kBadInput;
+  return error.machine ? kMachine : kBadInput;
 }
 
 }  // namespace app

@@ -28,16 +28,16 @@ std::filesystem::path renderProgram() {
 int main(int argc, char** argv) {
   app::Cli cli;
   if (auto status = cli.parse(argc, argv)) return *status;
-  if (!cli.chosen().draws) return cli.run();
+  if (!cli.chosen().draws) return app::runGuarded(cli);
   const std::filesystem::path program = renderProgram();
   if (program.empty()) {
     std::cerr << "rattleback: " << cli.chosen().name
               << " needs rattleback-render, which is neither beside this program nor in "
               << RATTLEBACK_LIBEXEC_RELATIVE << "; reinstall rattleback\n";
-    return app::kBadInput;
+    return app::kMachine;
   }
   ::execv(program.c_str(), argv);
   std::cerr << "rattleback: cannot run " << program.string() << ": " << std::strerror(errno)
             << "\n";
-  return app::kBadInput;
+  return app::kMachine;
 }

@@ -6,5 +6,5 @@
 int main(int argc, char** argv) {
   app::Cli cli;
   if (auto status = cli.parse(argc, argv)) return *status;
-  return cli.run();
+  return app::runGuarded(cli);
 }

@@ -49,7 +49,7 @@ rb::Result<StillResult> renderStill(const tasks::LoadedScene& loaded, const Stil
   if (request.transparent) settings.title.clear();
   const render::BodyPoints points = bodyPointsOf(model);
   auto created = render::Renderer::create(settings, points);
-  if (!created) return rb::Error{"", "still: " + created.error().text()};
+  if (!created) return rb::machineError("still: " + created.error().text());
   result.opengl = created.value()->description();
   render::Renderer& renderer = *created.value();
   // Progress in thousandths of the simulated time of both runs (to t, then the framing's).

@@ -74,7 +74,7 @@ struct Output {
     if (auto picture = spare.tryPop()) return std::move(*picture);
     return {};
   }
-  std::optional<std::string> error;
+  std::optional<rb::Error> error;
   std::jthread thread;
 
   void start() {
@@ -84,7 +84,7 @@ struct Output {
         const rb::OutputNamedBy naming(named);
         auto opened = render::VideoEncoder::open(path, settings);
         if (!opened) {
-          error = opened.error().text();
+          error = opened.error();
           images.close();
           return;
         }
@@ -94,13 +94,13 @@ struct Output {
           auto image = images.pop();
           if (!image) break;
           if (auto added = encoder->add(*image); !added) {
-            error = added.error().text();
+            error = added.error();
             break;
           }
           spare.tryPush(std::move(*image));
         }
       } catch (const std::exception& e) {
-        error = std::string("encoding failed: ") + e.what();
+        error = rb::machineError(std::string("encoding failed: ") + e.what());
       }
       images.close();
     });
@@ -266,7 +266,7 @@ rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const Vide
       const double spin = run.model().initial.spin;
       auto created = render::Renderer::create(
           settingsOf(plan, model.duration, spin, request.scene_name, request.backend), points);
-      if (!created) return rb::Error{"", "render: " + created.error().text()};
+      if (!created) return rb::machineError("render: " + created.error().text());
       if (renderers.empty()) result.opengl = created.value()->description();
       renderers.push_back(std::move(created).value());
     }
@@ -324,7 +324,7 @@ rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const Vide
     try {
       failed = drawFrames();
     } catch (const std::exception& e) {
-      failed = rb::Error{"", std::string("render: ") + e.what()};
+      failed = rb::machineError(std::string("render: ") + e.what());
     }
   }).join();
   if (failed) return *failed;
@@ -339,7 +339,7 @@ rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const Vide
     return result;
   }
   for (const auto& o : outputs)
-    if (o->error) return rb::Error{"", *o->error};
+    if (o->error) return *o->error;
   std::vector<std::string> finals = provisional;
   std::vector<std::string> roles = {"single"};
   if (request.both) {

@@ -53,9 +53,13 @@ inline py::object toPython(const nlohmann::json& j) {
 }
 
 /// Raises rattleback.SceneError (a ValueError) for an error in a scene, with its file, line
-/// and key; ValueError for any other bad input.
+/// and key; ValueError for any other bad input; OSError for an error of the machine.
 [[noreturn]] inline void raise(const rb::Error& error) {
   const std::string message = error.text();
+  if (error.machine) {  // a full disk, no OpenGL: the command line's exit status 4
+    PyErr_SetString(PyExc_OSError, message.c_str());
+    throw py::error_already_set();
+  }
   if (error.where) {
     py::object cls = py::module_::import("rattleback._errors").attr("SceneError");
     py::object line = error.where->line > 0 ? py::object(py::int_(error.where->line)) : py::none();

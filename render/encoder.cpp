@@ -76,8 +76,8 @@ struct VideoEncoder::State {
   rb::Status send() {
     frame->pts = count++;
     if (int r = avcodec_send_frame(codec, frame); r < 0)
-      return rb::Status::fail(error("encoding failed", r));
-    if (auto e = drain()) return rb::Status::fail(*e);
+      return rb::Status::fault(error("encoding failed", r));
+    if (auto e = drain()) return rb::Status::fault(*e);
     return {};
   }
 
@@ -127,9 +127,9 @@ rb::Result<std::unique_ptr<VideoEncoder>> VideoEncoder::open(const std::string& 
     av_log_set_callback(keepLog);
   });
   if (avformat_alloc_output_context2(&s.format, nullptr, "mp4", s.temp.c_str()) < 0)
-    return rb::Error{"", s.error("cannot set up an MP4 file")};
+    return rb::machineError(s.error("cannot set up an MP4 file"));
   const AVCodec* h264 = avcodec_find_encoder_by_name("libx264");
-  if (!h264) return rb::Error{"", s.error("libavcodec has no libx264 encoder")};
+  if (!h264) return rb::machineError(s.error("libavcodec has no libx264 encoder"));
   s.codec = avcodec_alloc_context3(h264);
   AVCodecContext* c = s.codec;
   c->width = settings.width;
@@ -148,7 +148,7 @@ rb::Result<std::unique_ptr<VideoEncoder>> VideoEncoder::open(const std::string& 
   av_opt_set(c->priv_data, "preset", settings.preset.c_str(), 0);
   av_opt_set(c->priv_data, "crf", std::to_string(settings.crf).c_str(), 0);
   if (int r = avcodec_open2(c, h264, nullptr); r < 0)
-    return rb::Error{"", s.error("cannot open libx264", r)};
+    return rb::machineError(s.error("cannot open libx264", r));
 
   s.stream = avformat_new_stream(s.format, nullptr);
   s.stream->time_base = c->time_base;
@@ -162,7 +162,7 @@ rb::Result<std::unique_ptr<VideoEncoder>> VideoEncoder::open(const std::string& 
   av_dict_set(&options, "movflags", "+faststart", 0);
   const int r = avformat_write_header(s.format, &options);
   av_dict_free(&options);
-  if (r < 0) return rb::Error{"", s.error("cannot write the MP4 header", r)};
+  if (r < 0) return rb::machineError(s.error("cannot write the MP4 header", r));
   s.header_written = true;
 
   s.frame = av_frame_alloc();
@@ -174,7 +174,7 @@ rb::Result<std::unique_ptr<VideoEncoder>> VideoEncoder::open(const std::string& 
   s.frame->colorspace = AVCOL_SPC_BT709;
   s.frame->color_range = AVCOL_RANGE_MPEG;
   s.frame->chroma_location = AVCHROMA_LOC_LEFT;
-  if (av_frame_get_buffer(s.frame, 0) < 0) return rb::Error{"", s.error("out of memory")};
+  if (av_frame_get_buffer(s.frame, 0) < 0) return rb::machineError(s.error("out of memory"));
   s.packet = av_packet_alloc();
   return encoder;
 }
@@ -182,8 +182,8 @@ rb::Result<std::unique_ptr<VideoEncoder>> VideoEncoder::open(const std::string& 
 rb::Status VideoEncoder::add(const Image& image) {
   State& s = *state_;
   if (image.width != s.settings.width || image.height != s.settings.height)
-    return rb::Status::fail(s.error("frame size does not match the video"));
-  if (av_frame_make_writable(s.frame) < 0) return rb::Status::fail(s.error("out of memory"));
+    return rb::Status::fault(s.error("frame size does not match the video"));
+  if (av_frame_make_writable(s.frame) < 0) return rb::Status::fault(s.error("out of memory"));
   AVFrame* f = s.frame;
   s.converter.convert(image, {f->data[0], f->data[1], f->data[2], f->linesize[0], f->linesize[1]});
   return s.send();
@@ -193,8 +193,8 @@ rb::Status VideoEncoder::add(const Yuv420Image& picture) {
   State& s = *state_;
   const int w = s.settings.width, h = s.settings.height;
   if (picture.width != w || picture.height != h)
-    return rb::Status::fail(s.error("frame size does not match the video"));
-  if (av_frame_make_writable(s.frame) < 0) return rb::Status::fail(s.error("out of memory"));
+    return rb::Status::fault(s.error("frame size does not match the video"));
+  if (av_frame_make_writable(s.frame) < 0) return rb::Status::fault(s.error("out of memory"));
   AVFrame* f = s.frame;
   av_image_copy_plane(f->data[0], f->linesize[0], picture.y(), w, w, h);
   av_image_copy_plane(f->data[1], f->linesize[1], picture.u(), w / 2, w / 2, h / 2);
@@ -206,16 +206,16 @@ rb::Status VideoEncoder::finish(const std::string& final_path) {
   State& s = *state_;
   if (!final_path.empty()) s.path = final_path;
   if (int r = avcodec_send_frame(s.codec, nullptr); r < 0)
-    return rb::Status::fail(s.error("encoding failed", r));
-  if (auto e = s.drain()) return rb::Status::fail(*e);
+    return rb::Status::fault(s.error("encoding failed", r));
+  if (auto e = s.drain()) return rb::Status::fault(*e);
   if (int r = av_write_trailer(s.format); r < 0)
-    return rb::Status::fail(s.error("writing failed", r));
+    return rb::Status::fault(s.error("writing failed", r));
   if (int r = avio_closep(&s.format->pb); r < 0)
-    return rb::Status::fail(s.error("writing failed", r));
+    return rb::Status::fault(s.error("writing failed", r));
   std::error_code ec;
   std::filesystem::rename(s.temp, rb::outputPlace(s.path).target, ec);
   if (ec)
-    return rb::Status::fail(s.error("cannot move the finished file into place: " + ec.message()));
+    return rb::Status::fault(s.error("cannot move the finished file into place: " + ec.message()));
   s.finished = true;
   return {};
 }

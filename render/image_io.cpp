@@ -64,9 +64,10 @@ rb::Status writePng(const std::string& path, const Image& image) {
   const rb::OutputPlace place = rb::outputPlace(path);
   const bool special = place.temporary.empty();  // written in place
   const std::string temp = special ? place.target : place.temporary;
+  // Every failure after the file was opened is the machine's (a full disk, a size limit).
   auto fail = [&](const std::string& why) -> rb::Status {
     if (!special) std::remove(temp.c_str());
-    return rb::Status::fail(path + ": " + why);
+    return rb::Status::fault(path + ": " + why);
   };
   auto bytes = encodePng(image);
   if (!bytes) return rb::Status::fail(path + ": " + bytes.error().text());

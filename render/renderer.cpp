@@ -52,7 +52,7 @@ Renderer::~Renderer() {
 rb::Result<std::unique_ptr<Renderer>> Renderer::create(const RenderSettings& settings,
                                                        const BodyPoints& body) {
   std::unique_ptr<Renderer> r(new Renderer(settings, body));
-  if (std::string error = r->init(); !error.empty()) return rb::Error{"", error};
+  if (std::string error = r->init(); !error.empty()) return rb::machineError(error);
   return r;
 }
 

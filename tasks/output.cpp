@@ -127,7 +127,7 @@ rb::Status AtomicOutput::commit() {
       unregisterTemporary(temp_);
     }
     done_ = true;
-    return rb::Status::fail(path_ + ": writing failed: " + reason);
+    return rb::Status::fault(path_ + ": writing failed: " + reason);
   }
   if (done_) return {};
   std::error_code ec;
@@ -136,7 +136,7 @@ rb::Status AtomicOutput::commit() {
   unregisterTemporary(temp_);
   if (ec) {
     std::remove(temp_.c_str());
-    return rb::Status::fail(path_ + ": cannot move the finished file into place: " + ec.message());
+    return rb::Status::fault(path_ + ": cannot move the finished file into place: " + ec.message());
   }
   return {};
 }

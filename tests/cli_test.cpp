@@ -221,11 +221,12 @@ TEST(Cli, BenchsProcessRunsTheRungsOwnRun) {
 }
 
 TEST(Cli, UnwritableOutputIsReportedCleanly) {
-  // A folder that cannot be made (its parent is a file) and a device that is full.
-  for (const char* target : {"/dev/null/dir/x.csv", "/dev/full"}) {
+  // A folder that cannot be made (its parent is a file): bad input; a device that is full: the
+  // machine's (Cli.TheMachinesFailuresExitFourNotTwo).
+  for (const auto& [target, status] : {std::pair{"/dev/null/dir/x.csv", 2}, {"/dev/full", 4}}) {
     const Result r =
         rattleback("simulate " + scene("seed-flip-ccw") + " --duration 0.05 -o " + target);
-    EXPECT_EQ(r.status, 2) << target;
+    EXPECT_EQ(r.status, status) << target;
     EXPECT_EQ(lines(r.err), 1) << r.err;
     EXPECT_EQ(r.err.rfind(std::string(target) + ":", 0), 0u) << r.err;
   }
@@ -710,6 +711,26 @@ TEST(Cli, ARefusedSweepOrBenchLeavesNoFolderBehind) {
   EXPECT_EQ(bench.err.rfind(table + ": cannot make its folder", 0), 0u) << bench.err;
   fs::remove(dir / "afile");
   EXPECT_TRUE(fs::is_empty(dir)) << fs::directory_iterator(dir)->path();
+}
+
+// The machine's failures exit 4, apart from bad input's 2, so that a pipeline can tell a broken
+// runner from a broken scene (a CI maintainer's trial: a full disk exited 2, as a misspelt key):
+// /dev/full refuses every write; a file-size limit stops the CSV part-way (SIGXFSZ ignored, as
+// a shell's ulimit leaves it to the program to see EFBIG).
+TEST(Cli, TheMachinesFailuresExitFourNotTwo) {
+  const std::string run = "simulate " + scene("rattleback") + " --duration 1 -q -o ";
+  const Result full = rattleback(run + "/dev/full");
+  EXPECT_EQ(full.status, 4) << full.err;
+  EXPECT_EQ(full.err, "/dev/full: writing failed: No space left on device\n");
+  const fs::path big = tempFile("limited.csv"), err = tempFile("limited.err");
+  const std::string limited = "ulimit -f 20; trap '' XFSZ; " + std::string(RATTLEBACK_BIN) + " " +
+                              run + big.string() + " --rate 10000 2>" + err.string();
+  const int raw = std::system(limited.c_str());
+  EXPECT_EQ(WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, 4);
+  EXPECT_EQ(readText(err), big.string() + ": writing failed: File too large\n");
+  EXPECT_FALSE(fs::exists(big));
+  const Result bad = rattleback(run + "/proc/x.csv");  // a path that cannot be: still input
+  EXPECT_EQ(bad.status, 2) << bad.err;
 }
 
 TEST(Cli, VersionQuietAndVerbose) {

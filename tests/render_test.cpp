@@ -430,6 +430,21 @@ TEST(Compare, TheDiffsFolderIsMadeAndLeftOnlyWithADiff) {
   EXPECT_FALSE(fs::exists(dir / "v"));
 }
 
+// A write the machine cannot finish (here a file-size limit, SIGXFSZ ignored as a shell's
+// ulimit leaves it) exits 4, not bad input's 2, for a still and a video alike; nothing is left.
+TEST(Video, AWriteTheMachineCannotFinishExitsFour) {
+  for (const std::string output : {"limited.png", "limited.mp4"}) {
+    const fs::path path = scratch(output);
+    const std::string command = "cd " + kSource.string() + " && (ulimit -f 4; trap '' XFSZ; " +
+                                RATTLEBACK_BIN + " " +
+                                (output.ends_with(".png") ? "still" : "render --duration 1") +
+                                " scenes/rattleback.yaml -q -o " + path.string() + ") 2>/dev/null";
+    const int raw = std::system(command.c_str());
+    EXPECT_EQ(WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, 4) << output;
+    EXPECT_FALSE(fs::exists(path)) << output;
+  }
+}
+
 // A PNG's stored values are compared as stored, whatever gAMA/cHRM chunks it carries (ffmpeg
 // writes them into frames it extracts; libpng's simplified reader would convert by them, by up
 // to 11 steps for a gamma of 1/1.8). The chunks are written here through libpng itself.

@@ -27,9 +27,21 @@ struct Error {
   /// Other dotted keys whose values the message names ("simulation.duration" for a step
   /// count): when one of them was set by an option, the message names that option.
   std::vector<std::string> involves = {};
+  /// The machine failed, not the input: OpenGL or the video encoder would not start, a write
+  /// failed after its file was opened (a full disk, a file-size limit), memory ran out. The
+  /// command line exits 4 for it instead of 2, so that a pipeline can tell a broken runner from
+  /// a broken scene (docs/commands.md "Exit codes").
+  bool machine = false;
   /// "key message", or the message alone.
   std::string text() const { return key.empty() ? message : key + " " + message; }
 };
+
+/// An Error of the machine (`machine` set), with `message`.
+inline Error machineError(std::string message) {
+  Error e{"", std::move(message)};
+  e.machine = true;
+  return e;
+}
 
 template <typename T>
 class [[nodiscard]] Result {
@@ -56,6 +68,8 @@ class [[nodiscard]] Status {
   Status() = default;
   Status(Error error) : error_(std::move(error)) {}  // NOLINT: implicit by design
   static Status fail(std::string message) { return Error{"", std::move(message)}; }
+  /// The machine failed (Error::machine).
+  static Status fault(std::string message) { return machineError(std::move(message)); }
   bool ok() const { return !error_; }
   explicit operator bool() const { return ok(); }
   const Error& error() const { return *error_; }

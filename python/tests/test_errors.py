@@ -188,6 +188,16 @@ def test_an_unwritable_output_gives_the_way_out_in_pythons_terms(tmp_path):
     assert str(caught.value).endswith("(give save a path in a folder you can write)")
 
 
+def test_a_write_the_machine_cannot_finish_is_an_os_error_not_bad_input():
+    # A full disk (/dev/full refuses every write) is the machine's failure: OSError, as the
+    # command line's exit status 4, not the ValueError of a bad path or scene.
+    run = rb.simulate(rb.Scene.from_dict(DICT_SCENE), duration=0.1)
+    with pytest.raises(OSError) as caught:
+        run.to_csv("/dev/full")
+    assert not isinstance(caught.value, ValueError)
+    assert str(caught.value) == "/dev/full: writing failed: No space left on device"
+
+
 def test_a_package_whose_modules_are_not_built_says_how_to_build_them(tmp_path):
     # The layout right after configuring (or after scripts/run.sh, which builds only the
     # command): the package's Python files without its compiled modules. The import names the
