@@ -2,11 +2,28 @@
 #include "tasks/report.hpp"
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "util/assets.hpp"
 
 namespace app {
+
+namespace {
+
+// The main job as this program's user runs it: the installed script beside the shipped scenes
+// (a CI maintainer's trial: an installed report pointed to scripts/run.sh, which only the
+// source has), else the source tree's.
+std::string mainJob(const std::string& dir) {
+  const std::filesystem::path installed = std::filesystem::path(rb::assetsDir()) / "main-job.sh";
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(installed, ec))
+    return "`bash " + installed.string() + " " + dir + "`";
+  return "`bash scripts/run.sh`";
+}
+
+}  // namespace
 
 int reportCommand(const ReportArgs& args) {
   auto page = tasks::writeReport(args.dir);
@@ -18,8 +35,8 @@ int reportCommand(const ReportArgs& args) {
     std::cerr << args.dir
               << ": no runs, videos, stills or plots here, so the page shows none; make them with "
                  "`rattleback simulate SCENE -o "
-              << args.dir << "/NAME.csv --plot " << args.dir
-              << "` (docs/getting-started.md), or `bash scripts/run.sh` for the main job\n";
+              << args.dir << "/NAME.csv --plot " << args.dir << "` (docs/getting-started.md), or "
+              << mainJob(args.dir) << " for the main job\n";
   std::printf("%s\n", page->path.c_str());
   return kOk;
 }

@@ -77,6 +77,30 @@ if [ -e "$work/prefix/share/rattleback/player/rattleback-player.js" ]; then
     { echo "FAIL: report made no player for an installed scene's run"; exit 1; }
   echo "ok: report replays an installed scene's run from another folder"
 fi
+# The main job is installed beside the shipped scenes (a CI maintainer's trial: an installed user
+# had only scripts/run.sh's name). Run here with a stand-in for the program that records each
+# call (the real runs take half a minute; run.sh runs the same script in the source tree), from a
+# folder with a scenes/ of its own: each call from the installed scenes' folder, naming scenes
+# that are there, each output in OUT, and the page made last.
+job=$(mktemp -d "$work/job.XXXX")
+mkdir -p "$job/scenes" "$job/bin"
+printf '#!/bin/sh\necho "$PWD|$*" >>"%s/calls"\n' "$job" >"$job/bin/rattleback"
+chmod +x "$job/bin/rattleback"
+(cd "$job" && RATTLEBACK=bin/rattleback bash "$work/prefix/share/rattleback/main-job.sh" made >/dev/null) ||
+  { echo "FAIL: the installed main-job.sh failed"; exit 1; }
+share="$work/prefix/share/rattleback"
+while IFS='|' read -r cwd args; do
+  [ "$cwd" = "$share" ] || { echo "FAIL: main-job.sh ran rattleback in $cwd, not $share"; exit 1; }
+  for a in $args; do
+    case "$a" in
+      scenes/*|sweeps/*) [ -f "$share/$a" ] || { echo "FAIL: main-job.sh named $a, not installed"; exit 1; } ;;
+      /*) [ "${a#"$job/made"}" != "$a" ] || { echo "FAIL: main-job.sh wrote $a outside OUT"; exit 1; } ;;
+    esac
+  done
+done <"$job/calls"
+[ "$(tail -n 1 "$job/calls")" = "$share|report $job/made" ] ||
+  { echo "FAIL: main-job.sh did not end with the report: $(tail -n 1 "$job/calls")"; exit 1; }
+echo "ok: the installed main-job.sh runs $(wc -l <"$job/calls") commands on the installed scenes into OUT"
 mv "$work/prefix" "$work/moved"
 render_still "$work/moved"
 python_still "$work/moved"
