@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "tasks/scene_args.hpp"
 
 namespace app {
 
@@ -14,6 +15,14 @@ void record(const std::vector<tasks::OutputEntry>& entries) {
 
 std::string sceneName(const std::string& path) {
   return std::filesystem::path(path).stem().string();
+}
+
+void noteShipped(const std::string& given, bool quiet) {
+  if (quiet) return;
+  const std::string file = tasks::findShipped(given);
+  if (file != given)
+    std::cerr << "note: no " << given << " in this folder; running the shipped one, " << file
+              << "\n";
 }
 
 }  // namespace app

@@ -271,6 +271,7 @@ int simulateCommand(const SimulateArgs& args) {
   if (!overrides) return fail(overrides);
   auto loaded = loadScene(args.scene, overrides.value());
   if (!loaded) return fail(loaded);
+  noteShipped(args.scene, args.quiet);
   const sim::Model& model = loaded->model;
   const double rate = args.rate.value_or(tasks::kDefaultRate);
   if (auto ok = tasks::checkRate(rate, model.duration); !ok) {

@@ -335,6 +335,7 @@ int sweepCommand(const SweepArgs& args) {
                          "sweeps/spin-drag.yaml), or 'sweep merge OUT.csv SHARD…'"));
   auto loaded = scene::loadSweep(tasks::findShipped(args.file));
   if (!loaded) return fail(loaded);
+  noteShipped(args.file, args.quiet);
   const scene::Sweep& sweep = loaded.value();
   std::optional<tasks::Shard> shard;
   if (auto ok = checkOptions(args, shard); !ok) return fail(ok);

@@ -70,6 +70,7 @@ int renderCommand(const RenderArgs& args) {
   std::jthread preload = media::preloadDriver(*backend);
   auto loaded = loadScene(args.scene, args.overrides);
   if (!loaded) return fail(loaded);
+  noteShipped(args.scene, args.quiet);
   if (args.verbose) describeModel(loaded->model, args.scene);
   // A video over ten minutes long is said up front, on or off a terminal (where no progress
   // bar shows): a playback typed 0.001 for 1 made 180,000 frames of a 6 s scene, hundreds of
@@ -119,6 +120,7 @@ int stillCommand(const StillArgs& args) {
   std::jthread preload = media::preloadDriver(*backend);
   auto loaded = loadScene(args.scene, args.overrides);
   if (!loaded) return fail(loaded);
+  noteShipped(args.scene, args.quiet);
   media::StillRequest request;
   request.scene_name = args.scene;
   request.t = args.t;

@@ -65,6 +65,13 @@ echo "ok: the installed --help names $work/prefix/share/doc/rattleback"
     --integrators rk4 -q -o b.csv --plot b.png &&
   test -s r.csv && test -s b.csv) || { echo "FAIL: the installed scenes are not found"; exit 1; }
 echo "ok: the installed scenes are found from another folder"
+# ... and said to be (a CI maintainer's trial: a course's deleted scene of the same name ran the
+# shipped one in silence).
+note=$(cd "$(mktemp -d "$work/elsewhere.XXXX")" &&
+  "$work/prefix/bin/rattleback" simulate scenes/rattleback.yaml --duration 0.1 -o r.csv 2>&1 >/dev/null)
+[ "$note" = "note: no scenes/rattleback.yaml in this folder; running the shipped one, $work/prefix/share/rattleback/scenes/rattleback.yaml" ] ||
+  { echo "FAIL: an installed scene run from another folder is not said to be: '$note'"; exit 1; }
+echo "ok: a shipped scene run in place of a missing one is said to be"
 # A run of an installed scene names the file it ran in its sidecar, so that report replays it in
 # 3D from any folder (a new user's trial: the sidecar named ./scenes/rattleback.yaml, which is
 # not there, and the page had no player and said nothing).
