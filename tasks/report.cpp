@@ -879,6 +879,19 @@ void writeOthers(std::ostream& out, const std::vector<std::string>& others) {
   out << "</div></section>\n";
 }
 
+// Where the page's reader finds the documentation: the installed pages (share/doc/rattleback
+// beside share/rattleback) when this program is installed (a CI maintainer's trial: the page of
+// an installed report pointed to the source's docs/), else the source's.
+std::string documentationWhere() {
+  const fs::path installed = (fs::path(rb::assetsDir()) / "../doc/rattleback").lexically_normal();
+  std::error_code ec;
+  if (fs::is_regular_file(installed / "getting-started.md", ec))
+    return "<code>" + escape(installed.string()) +
+           "/</code> where rattleback is installed (<code>getting-started.md</code> first)";
+  return "<code>docs/</code> in rattleback's source (<code>docs/getting-started.md</code> first; "
+         "<code>bash scripts/docs.sh</code> builds it as a site)";
+}
+
 void writePage(std::ostream& out, const fs::path& dir, const Folder& folder,
                const std::vector<std::string>& players) {
   out << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
@@ -887,8 +900,7 @@ void writePage(std::ostream& out, const fs::path& dir, const Folder& folder,
       << kStyle << "</style></head><body>\n<h1>rattleback: results</h1>\n"
       << "<p>What the runs left in this folder, by scene. Made by rattleback " RATTLEBACK_VERSION
          " (<code>rattleback report</code>). What each figure means: the documentation, "
-         "<code>docs/</code> in rattleback's source (<code>docs/getting-started.md</code> first; "
-         "<code>bash scripts/docs.sh</code> builds it as a site).</p>\n";
+      << documentationWhere() << ".</p>\n";
   // Scenes with videos first, then the rest, each in name order.
   std::vector<std::string> order;
   for (const auto& [name, files] : folder.scenes)

@@ -83,6 +83,10 @@ if [ -e "$work/prefix/share/rattleback/player/rattleback-player.js" ]; then
     test -s out/rattleback.player.js && grep -q 'data-run="rattleback"' out/index.html) ||
     { echo "FAIL: report made no player for an installed scene's run"; exit 1; }
   echo "ok: report replays an installed scene's run from another folder"
+  # The page names the installed documentation, not the source's docs/ (a CI maintainer's trial).
+  grep -q "<code>$work/prefix/share/doc/rattleback/</code> where rattleback is installed" "$rep/out/index.html" ||
+    { echo "FAIL: the installed report's page does not name the installed documentation"; exit 1; }
+  echo "ok: the installed report's page names the installed documentation"
 fi
 # The main job is installed beside the shipped scenes (a CI maintainer's trial: an installed user
 # had only scripts/run.sh's name). Run here with a stand-in for the program that records each
