@@ -15,6 +15,8 @@ import {
   BufferAttribute,
   BufferGeometry,
   Color,
+  Matrix3,
+  Matrix4,
   Mesh,
   OrthographicCamera,
   PerspectiveCamera,
@@ -75,6 +77,7 @@ void main() {
 const POINTS_FRAGMENT = /* glsl */ `
 uniform vec3 lightView;  // unit vector towards the light, view frame
 uniform vec3 halfView;   // halfway between the light and the eye, view frame
+uniform vec3 floorDepth; // the floor plane's depth at window (x, y): dot(floorDepth, (x, y, 1))
 varying vec3 vColor;
 varying float vRadiusPx;
 varying float vEdgePx;
@@ -85,6 +88,11 @@ void main() {
   float rr = dot(p, p);
   float coverage = clamp((1.0 - sqrt(rr)) * vRadiusPx / vEdgePx + 0.5, 0.0, 1.0);
   if (coverage <= 0.0) discard;
+  // Behind the floor (a sphere at the contact reaches below it): hidden, as the floor's depth
+  // would hide it (floorDepth: Player.updateFloorDepth). Not where the floor is nearer than the
+  // near plane (it is not drawn there).
+  float floorZ = dot(floorDepth, vec3(gl_FragCoord.xy, 1.0));
+  if (gl_FragCoord.z > floorZ && floorZ >= 0.0) discard;
   vec3 n = vec3(p, sqrt(max(0.0, 1.0 - rr)));
   float diffuse = max(dot(n, lightView), 0.0);
   float s = max(dot(n, halfView), 0.0);
@@ -395,6 +403,9 @@ class Player {
     this.partialFrames = 0;
     this.drawnFrames = 0;
     this.scratch = new Vector3();
+    this.bufferSize = new Vector2();
+    this.floorMatrix = new Matrix4();
+    this.floorRows = new Matrix3();
     this.axis = new Vector3();
     this.forward = new Vector3();
     this.spinNow = run.spin[0];
@@ -553,6 +564,7 @@ class Player {
         viewportHeight: { value: 720 },
         lightView: { value: new Vector3(0.3, 0.5, 0.81).normalize() },
         halfView: { value: new Vector3(0.3, 0.5, 1.81).normalize() },
+        floorDepth: { value: new Vector3(0, 0, 2) },
       },
       transparent: true,
       depthWrite: true,
@@ -663,7 +675,8 @@ class Player {
     this.width = w;
     this.height = h;
     this.renderer.setSize(w, h, false);
-    this.pointsMaterial.uniforms.viewportHeight.value = this.renderer.getDrawingBufferSize(new Vector2()).y;
+    this.renderer.getDrawingBufferSize(this.bufferSize);
+    this.pointsMaterial.uniforms.viewportHeight.value = this.bufferSize.y;
     if (this.viewName === 'free') {
       // Keep the free camera, fit its projection to the new aspect.
       const aspect = w / h;
@@ -1135,6 +1148,54 @@ class Player {
     }
   }
 
+  // The floor's depth for the points' shader to hide what is below the floor by, so that the
+  // floor is drawn without depth (testing and writing the depth of most of the canvas's pixels
+  // cost SwiftShader about a fifteenth of a follow frame). On a plane the window depth is
+  // affine in the window's x and y: from clip = M (x, y, 0, 1) with M = projection × view,
+  // (cx, cy, cw) = K (x, y, 1) and cz = l (x, y, 1), so cz / cw = l K⁻¹ (x_ndc, y_ndc, 1). Where
+  // that does not hold the floor keeps its depth as before (floorDepth then hides nothing): the
+  // camera below the floor (it is not drawn from there) or in its plane, or the body not wholly
+  // over the floor's mesh (beyond it there is no floor to hide anything).
+  updateFloorDepth() {
+    const u = this.floorMaterial.uniforms;
+    const camera = this.camera;
+    const forward = camera.getWorldDirection(this.forward);
+    const above = camera.isOrthographicCamera ? forward.z < -1e-6 : camera.position.z > 0;
+    const body = this.points.position;
+    const reach = this.body.reach;
+    let over;
+    if (this.floorMaterial.defines.FOG) {
+      const d = u.depthDirection.value;
+      const along = (body.x - u.center.value.x) * d.x + (body.y - u.center.value.y) * d.y;
+      over = along + reach < u.fogFar.value;
+    } else {
+      const r = Math.hypot(body.x - u.center.value.x, body.y - u.center.value.y);
+      over = r + reach < u.fadeFar.value * Math.cos(Math.PI / FADE_SIDES);
+    }
+    const matrix = this.floorMatrix.multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse);
+    const m = matrix.elements;
+    // (column-major: row r of M is m[r], m[4 + r], m[8 + r], m[12 + r])
+    const k = this.floorRows.set(m[0], m[4], m[12], m[1], m[5], m[13], m[3], m[7], m[15]);
+    const det = k.determinant();
+    const depth = this.pointsMaterial.uniforms.floorDepth.value;
+    const analytic = above && over && Math.abs(det) > 1e-12;
+    if (analytic) {
+      const inv = k.invert().elements; // column-major
+      const l = [m[2], m[6], m[14]];
+      const c = [0, 1, 2].map((j) => l[0] * inv[3 * j] + l[1] * inv[3 * j + 1] +
+                                     l[2] * inv[3 * j + 2]);
+      // window: x_ndc = 2 x / W - 1, y_ndc = 2 y / H - 1, depth = (z_ndc + 1) / 2
+      const W = this.bufferSize.x, H = this.bufferSize.y;
+      depth.set(c[0] / W, c[1] / H, 0.5 * (1 + c[2] - c[0] - c[1]));
+    } else {
+      depth.set(0, 0, 2);
+    }
+    for (const material of [this.floorMaterial]) {
+      material.depthTest = !analytic;
+      material.depthWrite = !analytic;
+    }
+  }
+
   // Draws the picture. Software WebGL pays for every pixel drawn, and the floor alone covers
   // most of the canvas: while the camera stays (playing or stepping in a fixed view) only the
   // part where the body and its shadow were and now are changes, so only that part is cleared
@@ -1143,6 +1204,7 @@ class Player {
     const started = performance.now();
     this.updateFloorFade();
     this.camera.updateMatrixWorld();
+    this.updateFloorDepth();
     const rect = this.changedRect();
     const renderer = this.renderer;
     if (rect) {
