@@ -111,8 +111,13 @@ void main() {
 // or rows across the view from fogNear to fogFar. The mode is a define (its own program, not a
 // branch that runs both sides). The shadow (SHADOW) is drawn only in a quad around the body,
 // over the floor, with the same formula computed per pixel and the shadow; outside the
-// shadow's ellipse the quad's pixels are the floor's.
+// shadow's ellipse the quad's pixels are the floor's. Where neither fade nor fog has begun (the
+// disc inside fadeNear, the rows before fogNear: NEAR, the first part of each mesh) the floor
+// is the checker alone, without the varyings that carry them (on SwiftShader a varying costs
+// each pixel about as much as the checker's arithmetic). The checker's position reaches the
+// fragments in checker periods (two squares), so that the pixels do not divide by the square.
 const FLOOR_VERTEX = /* glsl */ `
+uniform float tile;            // checker square, m
 uniform vec2 center;           // where the floor fades from, m
 uniform float fadeNear;
 uniform float fadeFar;
@@ -120,7 +125,7 @@ uniform vec2 depthDirection;   // orthographic views along the floor: away from 
 uniform float fogNear;
 uniform float fogFar;
 uniform float reach;           // FOG: the band's half width and how far it reaches back, m
-varying vec2 vXY;
+varying vec2 vPeriods;         // position on the floor in checker periods (two squares)
 varying float vFade;
 varying float vFog;
 void main() {
@@ -141,7 +146,7 @@ void main() {
   vec4 world = vec4(center + r * vec2(cos(position.x), sin(position.x)), 0.0, 1.0);
   vFade = smoothstep(fadeNear, fadeFar, r);
 #endif
-  vXY = world.xy;
+  vPeriods = world.xy * (0.5 / tile);
   gl_Position = projectionMatrix * viewMatrix * world;
 }`;
 
@@ -158,20 +163,28 @@ uniform vec2 shadowCenter;
 uniform vec2 shadowAxis;       // the body's long axis on the floor
 uniform vec2 shadowHalf;       // half extents across and along it, m
 uniform float shadowStrength;
-varying vec2 vXY;
+varying vec2 vPeriods;
 varying float vFade;
 varying float vFog;
 void main() {
-  vec2 p = vXY / tile;
-  vec2 w = fwidth(p) + 1e-4;
-  vec2 i = 2.0 * (abs(fract((p - 0.5 * w) * 0.5) - 0.5) - abs(fract((p + 0.5 * w) * 0.5) - 0.5)) / w;
-  float checker = 0.5 - 0.5 * i.x * i.y;
-#if defined(SHADOW) && defined(FOG)
-  float depth = dot(vXY - center, depthDirection);
+  // The square wave of each axis box-filtered over the pixel's footprint w (in periods): the
+  // difference of its integral, a triangle wave, across the footprint, over w.
+  vec2 q = vPeriods;
+  vec2 w = fwidth(q) + 0.5e-4;
+  vec2 h = 0.5 * w;
+  vec2 i = abs(fract(q - h) - 0.5) - abs(fract(q + h) - 0.5);
+  float checker = 0.5 - 0.5 * i.x * i.y / (w.x * w.y);
+#if defined(SHADOW)
+  vec2 xy = q * (2.0 * tile);  // m
+#endif
+#if defined(NEAR)
+  float fade = 0.0;
+#elif defined(SHADOW) && defined(FOG)
+  float depth = dot(xy - center, depthDirection);
   checker = mix(checker, 0.5, smoothstep(fogNear, mix(fogNear, fogFar, 0.5), depth));
   float fade = smoothstep(fogNear, fogFar, depth);
 #elif defined(SHADOW)
-  float fade = smoothstep(fadeNear, fadeFar, length(vXY - center));
+  float fade = smoothstep(fadeNear, fadeFar, length(xy - center));
 #elif defined(FOG)
   checker = mix(checker, 0.5, vFog);
   float fade = vFade;
@@ -180,11 +193,15 @@ void main() {
 #endif
   vec3 color = mix(vec3(0.80, 0.80, 0.78), vec3(0.66, 0.67, 0.66), checker);
 #ifdef SHADOW
-  vec2 d = vXY - shadowCenter;
+  vec2 d = xy - shadowCenter;
   vec2 local = vec2(dot(d, vec2(shadowAxis.y, -shadowAxis.x)), dot(d, shadowAxis));
   color *= 1.0 - shadowStrength * (1.0 - smoothstep(0.55, 1.15, length(local / shadowHalf)));
 #endif
+#ifdef NEAR
+  gl_FragColor = vec4(color, 1.0);
+#else
   gl_FragColor = vec4(mix(color, background, fade), 1.0);
+#endif
 }`;
 
 // The shadow's reach: it fades out at 1.15 of the footprint's half extents (FLOOR_FRAGMENT);
@@ -315,7 +332,8 @@ function bodyGeometry(run) {
 // The floor's meshes, in the parameters FLOOR_VERTEX places them by. Rings: the centre and
 // FADE_RINGS + 1 rings from fadeNear to fadeFar, FADE_SIDES around (the polygon's chords fall
 // short of the circle by 0.2 %); rows: one nearest the camera and FOG_ROWS + 1 from fogNear to
-// fogFar, each two vertices across.
+// fogFar, each two vertices across. Each mesh has two groups: up to where the fade or fog
+// begins (the disc inside the first ring, the rows up to fogNear: drawn NEAR) and beyond.
 const FADE_SIDES = 48;
 const FADE_RINGS = 10;
 const FOG_ROWS = 16;
@@ -328,6 +346,7 @@ function fadeRings() {
   const index = [];
   const at = (k, j) => 1 + k * FADE_SIDES + (j % FADE_SIDES);
   for (let j = 0; j < FADE_SIDES; j++) index.push(0, at(0, j), at(0, j + 1));
+  const near = index.length;
   for (let k = 0; k < FADE_RINGS; k++) {
     for (let j = 0; j < FADE_SIDES; j++) {
       index.push(at(k, j), at(k + 1, j), at(k + 1, j + 1), at(k, j), at(k + 1, j + 1), at(k, j + 1));
@@ -336,6 +355,8 @@ function fadeRings() {
   const geometry = new BufferGeometry();
   geometry.setAttribute('position', new BufferAttribute(new Float32Array(position), 3));
   geometry.setIndex(index);
+  geometry.addGroup(0, near, 0);
+  geometry.addGroup(near, index.length - near, 1);
   return geometry;
 }
 
@@ -350,6 +371,8 @@ function fogRows() {
   const geometry = new BufferGeometry();
   geometry.setAttribute('position', new BufferAttribute(new Float32Array(position), 3));
   geometry.setIndex(index);
+  geometry.addGroup(0, 6, 0);
+  geometry.addGroup(6, index.length - 6, 1);
   return geometry;
 }
 
@@ -609,7 +632,14 @@ class Player {
       uniforms: floorUniforms,
       defines: {},
     });
-    this.floor = new Mesh(this.floorGeometries.fade, this.floorMaterial);
+    // (where the fade or fog has not begun: the same, NEAR)
+    this.floorNearMaterial = new ShaderMaterial({
+      vertexShader: FLOOR_VERTEX,
+      fragmentShader: FLOOR_FRAGMENT,
+      uniforms: floorUniforms,
+      defines: { NEAR: 1 },
+    });
+    this.floor = new Mesh(this.floorGeometries.fade, [this.floorNearMaterial, this.floorMaterial]);
     this.floor.frustumCulled = false; // placed by its shader
     this.floor.renderOrder = -2;
     this.scene.add(this.floor);
@@ -1140,7 +1170,7 @@ class Player {
     }
     // The floor's programs follow the mode (three keeps both once compiled).
     if (!!this.floorMaterial.defines.FOG !== level) {
-      for (const m of [this.floorMaterial, this.shadowMaterial]) {
+      for (const m of [this.floorMaterial, this.floorNearMaterial, this.shadowMaterial]) {
         if (level) m.defines.FOG = 1; else delete m.defines.FOG;
         m.needsUpdate = true;
       }
@@ -1190,7 +1220,7 @@ class Player {
     } else {
       depth.set(0, 0, 2);
     }
-    for (const material of [this.floorMaterial]) {
+    for (const material of [this.floorMaterial, this.floorNearMaterial]) {
       material.depthTest = !analytic;
       material.depthWrite = !analytic;
     }
