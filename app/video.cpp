@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <thread>
 
@@ -176,8 +177,18 @@ int compareCommand(const CompareArgs& args) {
   // an unwritable one is refused at once, not after the verdict (a CI maintainer's trial:
   // `--diff diffs/x.png` into a missing folder said "differ" and then exited 2).
   tasks::MadeFolders made;  // removed again when no diff is written into it
-  if (!args.diff.empty())
+  if (!args.diff.empty()) {
+    // The diff written over one of the images compared would destroy it (`compare new.png
+    // golden.png --diff golden.png`: the golden became a magenta diff).
+    for (const auto& [image, role] : {std::pair{&args.actual, "the image compared"},
+                                      std::pair{&args.expected, "the expected image"}}) {
+      std::error_code ec;
+      if (std::filesystem::equivalent(args.diff, *image, ec))
+        return fail(rb::Status::fail("--diff " + args.diff + ": is " + role + " (" + *image +
+                                     "); give the diff a name of its own"));
+    }
     if (auto ok = checkPlotFile(args.diff, &made, "--diff"); !ok) return fail(ok);
+  }
   render::Image a, b;
   for (auto [path, image] : {std::pair{&args.actual, &a}, std::pair{&args.expected, &b}}) {
     if (auto e = render::readPng(*path, *image); !e) {
@@ -214,6 +225,15 @@ int compareCommand(const CompareArgs& args) {
       return kBadInput;
     }
     if (!args.quiet) std::printf("diff image: %s\n", args.diff.c_str());
+  }
+  // The same: a diff left at --diff by an earlier comparison that differed is removed, so that
+  // it does not stand beside this pass (a CI maintainer's trial: a reused workspace published
+  // the stale diff with the passing run).
+  std::error_code ec;
+  if (same && !args.diff.empty() && std::filesystem::is_regular_file(args.diff, ec)) {
+    std::filesystem::remove(args.diff, ec);
+    if (!args.quiet && !ec)
+      std::printf("removed %s, the diff image of an earlier comparison\n", args.diff.c_str());
   }
   return same ? 0 : 1;
 }

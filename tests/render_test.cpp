@@ -411,14 +411,26 @@ TEST(Compare, TheDiffsFolderIsMadeAndLeftOnlyWithADiff) {
   const fs::path dir = scratch("stderr.txt").parent_path() / "made";
   fs::remove_all(dir);
   fs::create_directories(dir);
-  const fs::path changed = dir / "changed.png";
+  const fs::path changed = dir / "changed.png", expected = dir / "golden.png";
   ASSERT_TRUE(render::writePng(changed.string(), image));
-  const std::string pair = changed.string() + " " + golden.string();
+  fs::copy_file(golden, expected);  // a copy: a mutant must not write over the source's golden
+  const std::string pair = changed.string() + " " + expected.string();
   EXPECT_EQ(rattleback("compare " + pair + " --pixels 0 --diff " + (dir / "d/e/diff.png").string()),
             1);
   EXPECT_TRUE(fs::exists(dir / "d/e/diff.png"));
   EXPECT_EQ(rattleback("compare " + pair + " --diff " + (dir / "pass/diff.png").string()), 0);
   EXPECT_FALSE(fs::exists(dir / "pass"));
+  // A pass removes the diff an earlier comparison left at that name: it would stand beside the
+  // pass as if this one had differed.
+  EXPECT_EQ(rattleback("compare " + pair + " --diff " + (dir / "d/e/diff.png").string()), 0);
+  EXPECT_FALSE(fs::exists(dir / "d/e/diff.png"));
+  // A diff over one of the images compared is refused, and the image kept.
+  EXPECT_EQ(rattleback("compare " + pair + " --pixels 0 --diff " + expected.string()), 2);
+  EXPECT_EQ(rattleback("compare " + pair + " --pixels 0 --diff " + changed.string()), 2);
+  EXPECT_EQ(fs::file_size(expected), fs::file_size(golden));
+  render::Image kept;
+  ASSERT_TRUE(render::readPng(changed.string(), kept));
+  EXPECT_EQ(kept.rgba, image.rgba);
   std::ofstream(dir / "afile") << "";
   EXPECT_EQ(
       rattleback("compare " + pair + " --pixels 0 --diff " + (dir / "afile/diff.png").string()), 2);
