@@ -49,16 +49,15 @@ const UP = new Vector3(0, 0, 1);
 
 // The body's points as sphere impostors: one GL point per sphere, sized to its projected radius
 // (perspective and orthographic alike), shaded from the sprite's coordinates; a ported subset
-// of the renderer's points.vert / points.frag.
+// of the renderer's points.vert / points.frag. What is the same over a sprite reaches its
+// pixels in one vec4 varying (SwiftShader sets up and interpolates each varying for every point
+// and pixel: four cost the points 5–8 % more).
 const POINTS_VERTEX = /* glsl */ `
 attribute float kind;          // 0 top (red), 1 bottom (blue)
 uniform float radius;          // sphere radius, m
 uniform float spacing;         // distance between neighbouring points, m
 uniform float viewportHeight;  // drawing buffer pixels
-varying vec3 vColor;
-varying float vRadiusPx;
-varying float vEdgePx;
-varying float vSpriteRadii;
+varying vec4 vSprite;          // kind; sprite / sphere radius; sphere radius / edge; highlight
 void main() {
   vec4 view = modelViewMatrix * vec4(position, 1.0);
   gl_Position = projectionMatrix * view;
@@ -67,30 +66,26 @@ void main() {
   // Spheres of a pixel or two grow towards their neighbours so the surface reads as one.
   float radiusPx = max(radius * pxPerM, min(0.6 * spacing * pxPerM, 2.0));
   float radiusM = radiusPx / pxPerM;
-  vRadiusPx = max(radiusPx, 0.75);
-  vEdgePx = clamp(vRadiusPx - 1.5, 0.05, 1.0);
-  float halfPx = vRadiusPx + 0.5 * vEdgePx;
+  float spherePx = max(radiusPx, 0.75);
+  float edgePx = clamp(spherePx - 1.5, 0.05, 1.0);
+  float halfPx = spherePx + 0.5 * edgePx;
   gl_PointSize = 2.0 * halfPx;
-  vSpriteRadii = halfPx / vRadiusPx;
+  vSprite = vec4(kind, halfPx / spherePx, spherePx / edgePx, 0.3 * smoothstep(1.5, 2.5, spherePx));
   // The sprite's depth is the sphere's nearest point.
   vec4 front = projectionMatrix * vec4(view.xy, view.z + radiusM, 1.0);
   gl_Position.z = front.z / front.w * gl_Position.w;
-  vColor = kind < 0.5 ? vec3(0.86, 0.13, 0.10) : vec3(0.13, 0.32, 0.88);
 }`;
 
 const POINTS_FRAGMENT = /* glsl */ `
 uniform vec3 lightView;  // unit vector towards the light, view frame
 uniform vec3 halfView;   // halfway between the light and the eye, view frame
 uniform vec3 floorDepth; // the floor plane's depth at window (x, y): dot(floorDepth, (x, y, 1))
-varying vec3 vColor;
-varying float vRadiusPx;
-varying float vEdgePx;
-varying float vSpriteRadii;
+varying vec4 vSprite;
 void main() {
-  vec2 p = (gl_PointCoord * 2.0 - 1.0) * vSpriteRadii;
+  vec2 p = (gl_PointCoord * 2.0 - 1.0) * vSprite.y;
   p.y = -p.y;  // gl_PointCoord runs down the screen
   float rr = dot(p, p);
-  float coverage = clamp((1.0 - sqrt(rr)) * vRadiusPx / vEdgePx + 0.5, 0.0, 1.0);
+  float coverage = clamp((1.0 - sqrt(rr)) * vSprite.z + 0.5, 0.0, 1.0);
   if (coverage <= 0.0) discard;
   // Behind the floor (a sphere at the contact reaches below it): hidden, as the floor's depth
   // would hide it (floorDepth: Player.updateFloorDepth). Not where the floor is nearer than the
@@ -101,8 +96,8 @@ void main() {
   float diffuse = max(dot(n, lightView), 0.0);
   float s = max(dot(n, halfView), 0.0);
   s *= s; s *= s; s *= s; s *= s; s *= s;  // s^32
-  float highlight = s * smoothstep(1.5, 2.5, vRadiusPx);
-  gl_FragColor = vec4(vColor * (0.35 + 0.65 * diffuse) + vec3(0.3) * highlight, coverage);
+  vec3 color = vSprite.x < 0.5 ? vec3(0.86, 0.13, 0.10) : vec3(0.13, 0.32, 0.88);
+  gl_FragColor = vec4(color * (0.35 + 0.65 * diffuse) + vec3(s * vSprite.w), coverage);
 }`;
 
 // The floor: a box-filtered checker fading into the background, with a soft contact shadow
