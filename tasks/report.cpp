@@ -280,12 +280,29 @@ std::string measuredOf(const nlohmann::json& run) {
 }
 
 // The scene's other runs (SceneFiles::more_runs), each a row: its CSV and what it measured.
+// Runs are grouped by their scene file's stem: a run of another file of the same name (a
+// course's week1/top.yaml and week2/top.yaml into one folder) says which file it ran, where
+// the main run's sidecar names another (a CI maintainer's trial: it read as a variant of the
+// main run's scene).
 void writeMoreRuns(std::ostream& out, const fs::path& dir, const SceneFiles& f) {
   if (f.more_runs.empty()) return;
+  std::string main_file, main_named;  // its path, and its name as given
+  if (f.has(".csv"))
+    if (const auto main = readJson(dir / (f.at(".csv") + ".json"))) {
+      main_file = stringOr(field(*main, "scene_path"), "");
+      main_named = stringOr(field(*main, "scene"), main_file);
+    }
   out << "<h3>Other runs</h3><table><tr><th>telemetry</th><th>measured (simulate)</th></tr>\n";
   for (const std::string& csv : f.more_runs) {
     const std::optional<nlohmann::json> run = readJson(dir / (csv + ".json"));
-    out << "<tr><td><a href=\"" << url(csv) << "\">" << escape(csv) << "</a></td><td>"
+    std::string file_note;
+    if (run && !main_file.empty()) {
+      const std::string file = stringOr(field(*run, "scene_path"), "");
+      if (!file.empty() && file != main_file)
+        file_note = "<b>another file</b>: <code>" + escape(stringOr(field(*run, "scene"), file)) +
+                    "</code> (the main run's: <code>" + escape(main_named) + "</code>)<br>";
+    }
+    out << "<tr><td><a href=\"" << url(csv) << "\">" << escape(csv) << "</a></td><td>" << file_note
         << (run ? measuredOf(*run) : "–") << "</td></tr>\n";
   }
   out << "</table>\n";

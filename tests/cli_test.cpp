@@ -1720,6 +1720,32 @@ TEST(Report, TheMeasuredCellGivesEveryReversal) {
   EXPECT_EQ(html.find("50.000"), std::string::npos);
 }
 
+// Runs are grouped by their scene's file name: a run of another file of the same name says which
+// file it ran (a CI maintainer's trial: week2/top.yaml's run read as a variant of week1's).
+TEST(Report, ARunOfAnotherFileOfTheSameNameSaysWhichFile) {
+  const fs::path dir = emptyDir("same-name");
+  fs::create_directories(dir / "week1");
+  fs::create_directories(dir / "week2");
+  fs::copy_file(scene("rattleback"), dir / "week1" / "top.yaml");
+  fs::copy_file(scene("rattleback"), dir / "week2" / "top.yaml");
+  for (const char* week : {"week1", "week2"})
+    ASSERT_EQ(rattleback("simulate " + (dir / week / "top.yaml").string() +
+                         " --duration 0.2 -q -o " + (dir / "out" / week).string() + ".csv")
+                  .status,
+              0);
+  ASSERT_EQ(rattleback("simulate " + (dir / "week1" / "top.yaml").string() +
+                       " --duration 0.2 --spin 3 -q -o " + (dir / "out" / "again.csv").string())
+                .status,
+            0);
+  ASSERT_EQ(rattleback("report " + (dir / "out").string() + " -q").status, 0);
+  const std::string html = readText(dir / "out" / "index.html");
+  const std::string note = "<b>another file</b>: <code>" + (dir / "week2" / "top.yaml").string() +
+                           "</code> (the main run's: <code>" +
+                           (dir / "week1" / "top.yaml").string() + "</code>)";
+  EXPECT_NE(html.find(note), std::string::npos) << html.substr(html.find("Other runs"), 900);
+  EXPECT_EQ(html.find("another file"), html.rfind("another file"));  // not for the same file's
+}
+
 // The player draws the body the run simulated, not the scene file as it is now: a new user
 // edited a scene's body after simulating it and `report` replayed the old run on the new body
 // without a word. A scene whose content changed since (its sidecar's scene_fingerprint; in an
