@@ -441,6 +441,7 @@ class Player {
     this.bodyDrawnAt = null; // where the body and its shadow were in the last frame drawn
     this.redrawAll = true; // the next frame is drawn whole
     this.alwaysAll = false; // every frame is drawn whole (to compare, measure)
+    this.shortcuts = true; // floor without depth, shadow alone, where they may be (to compare)
     this.partialFrames = 0;
     this.drawnFrames = 0;
     this.scratch = new Vector3();
@@ -1239,7 +1240,7 @@ class Player {
     const k = this.floorRows.set(m[0], m[4], m[12], m[1], m[5], m[13], m[3], m[7], m[15]);
     const det = k.determinant();
     const depth = this.pointsMaterial.uniforms.floorDepth.value;
-    const analytic = above && over && Math.abs(det) > 1e-12;
+    const analytic = this.shortcuts && above && over && Math.abs(det) > 1e-12;
     if (analytic) {
       const inv = k.invert().elements; // column-major
       const l = [m[2], m[6], m[14]];
@@ -1265,7 +1266,7 @@ class Player {
     const center = u.shadowCenter.value, axis = u.shadowAxis.value, half = u.shadowHalf.value;
     const fog = !!this.floorMaterial.defines.FOG;
     const d = u.depthDirection.value;
-    let near = true;
+    let near = this.shortcuts;
     for (let c = 0; c < 4; c++) {
       const across = (c & 1 ? SHADOW_REACH : -SHADOW_REACH) * half.x;
       const along = (c & 2 ? SHADOW_REACH : -SHADOW_REACH) * half.y;
@@ -1505,6 +1506,10 @@ class Player {
       renderAll() { self.redrawAll = true; self.render(); },
       // Every frame drawn whole (true) or only its changed part (false, the default).
       setDrawAll(on) { self.alwaysAll = !!on; self.redrawAll = true; self.dirty = true; },
+      // The floor drawn without depth, its depth taken by the points' shader, and the contact
+      // shadow alone multiplying the floor, where they may be (true, the default), or never
+      // (false: the floor's depth and the floor's formula with the shadow, to compare with).
+      setShortcuts(on) { self.shortcuts = !!on; self.redrawAll = true; self.dirty = true; },
       // [frames drawn in part, frames drawn] since the player was built.
       drawCounts: () => [self.partialFrames, self.drawnFrames],
       // The forecast first reversal marked on the n(t) plot (s), or null; and where its line

@@ -28,6 +28,9 @@ and, for every .rb-player on it:
     oblique, above, front and side directions from the framing centre, above with +y to the
     right and +x down the screen, follow moving with the body across its long axis; a drag
     makes the view free;
+  - in every view the picture drawn with the player's shortcuts (the floor without depth, the
+    contact shadow alone over it) is the one drawn without them, but for at most 30 pixels more
+    than 3 levels apart, and in follow both are taken;
   - the keys, with the player focused: space plays and pauses, the arrows step one sample.
 DIR/single.html (one player; the keys work unfocused) and DIR/missing.html (a player with no
 run data at all: a note, no error) are checked too when there.
@@ -189,6 +192,51 @@ const result = {t: best[0], angle: Math.atan2(a.y, a.x) * 180 / Math.PI, centre:
 h.setTime(before[0]);
 h.setView(before[1]);
 return result;
+"""
+
+# The picture the player draws with its shortcuts (the floor without depth, the points' shader
+# hiding what is below it by the floor plane's depth; the contact shadow alone multiplying the
+# floor) against the one drawn without them (the floor's depth, the floor's formula with the
+# shadow), in each view at the given times: the pixels more than 3 levels apart, the largest
+# difference, and which shortcuts were taken.
+SHORTCUTS_JS = """
+const element = arguments[0], views = arguments[1], times = arguments[2];
+const p = window.RattlebackPlayer.players.find((q) => q.container === element);
+const h = element.rbPlayer;
+const before = [h.time(), h.view()];
+const read = () => {
+  h.renderAll();
+  const c = document.createElement('canvas');
+  c.width = p.canvas.width; c.height = p.canvas.height;
+  const g = c.getContext('2d');
+  g.drawImage(p.canvas, 0, 0);
+  return g.getImageData(0, 0, c.width, c.height).data;
+};
+const out = [];
+for (const view of views) {
+  for (const t of times) {
+    h.setTime(t);
+    h.setView(view);
+    h.setShortcuts(true);
+    const fast = read();
+    const taken = {floorWithoutDepth: !p.floorMaterial.depthTest,
+                   shadowAlone: p.shadow.material === p.shadowOverMaterial};
+    h.setShortcuts(false);
+    const plain = read();
+    h.setShortcuts(true);
+    let apart = 0, worst = 0;
+    for (let i = 0; i < fast.length; i += 4) {
+      const d = Math.max(Math.abs(fast[i] - plain[i]), Math.abs(fast[i + 1] - plain[i + 1]),
+                         Math.abs(fast[i + 2] - plain[i + 2]));
+      if (d > 3) apart++;
+      if (d > worst) worst = d;
+    }
+    out.push({view, t, apart, worst, ...taken});
+  }
+}
+h.setTime(before[0]);
+h.setView(before[1]);
+return out;
 """
 
 FRAMES_JS = "const done = arguments[arguments.length - 1]; requestAnimationFrame(() => requestAnimationFrame(() => done(true)));"
@@ -511,6 +559,19 @@ class Checker:
                            f"{where}: the follow camera does not move with the body")
                 self.check(abs(follow[0][1] - follow[1][1]) < 0.01 * follow[0][1],
                            f"{where}: the follow camera's distance changes ({follow})")
+        # The shortcuts (the floor without depth, the shadow alone) draw the picture drawn
+        # without them: a row of a sphere at the contact may differ, where its depth ties the
+        # floor's, and the shadow by a level or two (the floor is rounded before it is darkened).
+        # In follow both are taken.
+        shortcut_times = [times[0], times[-1]]
+        for r in self.js(SHORTCUTS_JS, element, VIEWS, shortcut_times):
+            self.check(r["apart"] <= 30, f"{where}: in the {r['view']} view at t = {r['t']:.3f} s the picture "
+                       f"drawn with the shortcuts differs from the one without in {r['apart']} pixels by more "
+                       f"than 3 levels (at most {r['worst']}; floor without depth {r['floorWithoutDepth']}, "
+                       f"shadow alone {r['shadowAlone']})")
+            if r["view"] == "follow":
+                self.check(r["floorWithoutDepth"] and r["shadowAlone"],
+                           f"{where}: in follow at t = {r['t']:.3f} s a shortcut was not taken ({r})")
         # A drag makes the view free and moves the camera.
         self.click_view(element, "oblique")
         before = self.hook(element, "cameraPosition()")
