@@ -49,8 +49,9 @@ struct Panel {
 bool logarithmicAxis(const std::vector<double>& values);
 
 /// A sweep plot's label for a varied key or a result column: the name with its unit,
-/// "initial.spin [rad/s]" (the schema's unit; none for lengths in file units or a count).
-std::string sweepLabel(const std::string& name);
+/// "initial.spin [rad/s]" (the schema's unit; none for a count). A length in file units takes
+/// the base scene's unit, `length_unit` m ("body.dents.at[0] [cm]" at 0.01), none when 0.
+std::string sweepLabel(const std::string& name, double length_unit = 0);
 
 /// Makes `dir` when missing and checks that a file can be written into it (before a run whose
 /// plots go there); otherwise the error line every writer gives, for `first_figure` (a file

@@ -28,9 +28,17 @@ namespace app {
 // label theirs ("spin n [rad/s]"). A scene key's unit is the schema's; lengths in the file's
 // unit ("file units") and dimensionless values go bare (a new user's trial: the sweep's plots
 // said "initial.spin" and "first_reversal_s" with no units).
-std::string sweepLabel(const std::string& name) {
+std::string sweepLabel(const std::string& name, double length_unit) {
   const std::string unit = tasks::sweepColumnUnit(name);
-  return unit.empty() || unit == "file units" ? name : name + " [" + unit + "]";
+  if (unit == "file units") {
+    // The dents sweep's heatmap said "body.dents.at[0]" with no unit (a teacher's trial).
+    if (!(length_unit > 0)) return name;
+    for (const auto& [metres, symbol] :
+         {std::pair{1.0, "m"}, {0.1, "dm"}, {0.01, "cm"}, {0.001, "mm"}, {0.0254, "in"}})
+      if (length_unit == metres) return name + " [" + symbol + "]";
+    return name + " [" + rb::show(length_unit) + " m]";
+  }
+  return unit.empty() ? name : name + " [" + unit + "]";
 }
 
 namespace {
@@ -72,6 +80,7 @@ struct Table {
   std::vector<std::string> keys;
   std::vector<std::vector<std::string>> axis_values;  // [axis][value]
   std::vector<double> values;  // the metric of each row in row order; NaN where none
+  double length_unit = 0;      // m per file length unit of the base scene; 0: not known
 };
 
 // The metric of a row: only a run that reached its end has a value to show.
@@ -116,7 +125,7 @@ rb::Status plotTable(const std::string& png, const std::string& metric, const st
   if (axes == 1) {
     Panel panel;
     panel.title = metric;
-    panel.x_label = sweepLabel(table.keys[0]);
+    panel.x_label = sweepLabel(table.keys[0], table.length_unit);
     panel.y_label = sweepLabel(metric);
     Series series;
     series.title = metric;
@@ -131,8 +140,8 @@ rb::Status plotTable(const std::string& png, const std::string& metric, const st
   }
   Heatmap map;
   map.title = title + ": " + metric + (fixed.empty() ? "" : " (" + fixed + ")");
-  map.x_label = sweepLabel(table.keys[0]);
-  map.y_label = sweepLabel(table.keys[1]);
+  map.x_label = sweepLabel(table.keys[0], table.length_unit);
+  map.y_label = sweepLabel(table.keys[1], table.length_unit);
   map.value_label = sweepLabel(metric);
   map.x_values = table.axis_values[0];
   map.y_values = table.axis_values[1];
@@ -295,7 +304,7 @@ rb::Status writeOutputs(const SweepArgs& args, const scene::Sweep& sweep,
     return e;
   tasks::Journal::remove(tasks::Journal::pathOf(output));
   if (args.plot.empty()) return {};
-  Table table{keys, {}, {}};
+  Table table{keys, {}, {}, sweep.length_unit};
   for (const auto& axis : sweep.axes) table.axis_values.push_back(axis.values);
   for (const auto& [r, line] : plan.done) {
     const auto it = metric.find(r);
@@ -389,7 +398,9 @@ int sweepMergeCommand(const SweepMergeArgs& args) {
   if (auto e = tasks::writeSweepTable(args.output, m.keys, m.lines, m.sidecar); !e) return fail(e);
   const std::string sweep_file = m.sidecar.value("sweep", "sweep");
   if (!args.plot.empty()) {
-    Table table{m.keys, m.axis_values, {}};
+    const nlohmann::json& unit =
+        m.sidecar.contains("length_unit_m") ? m.sidecar["length_unit_m"] : nlohmann::json();
+    Table table{m.keys, m.axis_values, {}, unit.is_number() ? unit.get<double>() : 0.0};
     for (const std::string& line : m.lines)
       table.values.push_back(metricOf(line, m.keys.size(), args.metric));
     const std::string title = fs::path(sweep_file).stem().string();

@@ -226,6 +226,7 @@ rb::Result<Sweep> loadSweep(const std::string& path) {
     sweep.base = base.lexically_normal().string();
     auto loaded_base = loadFile(sweep.base);
     if (!loaded_base) throw SweepFailure{at(base_key) + ": base: " + loaded_base.error().text()};
+    sweep.length_unit = loaded_base->spec.units.length;
     if (has_duration) {
       const double d = number(duration, at(duration_key) + ":", "duration");
       if (!(d > 0)) throw SweepFailure{at(duration_key) + ": duration must be above 0 s"};

@@ -37,6 +37,7 @@ struct Sweep {
   std::string base_as_written;  ///< the base scene's path as the sweep file writes it
   std::vector<SweepAxis> axes;
   std::optional<double> duration;  ///< s; overrides simulation.duration
+  double length_unit = 1;          ///< m per length unit of the base scene (units.length)
 
   /// The number of runs: the product of the axes' sizes.
   std::int64_t rows() const;

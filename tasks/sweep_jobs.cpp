@@ -311,6 +311,9 @@ nlohmann::json sweepSidecar(const scene::Sweep& sweep, const std::optional<Shard
                                             {"sweep_rows", sweep.rows()}}
                            : nlohmann::json(nullptr);
   sidecar["axes"] = sweepAxesJson(sweep);
+  // What a key in "file units" is in metres (the base scene's units.length): the plot's labels
+  // say "[cm]" from it.
+  sidecar["length_unit_m"] = sweep.length_unit;
   return sidecar;
 }
 

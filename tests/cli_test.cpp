@@ -1331,8 +1331,13 @@ TEST(Plot, SweepAxesAreLabelledWithTheirUnits) {
   EXPECT_EQ(app::sweepLabel("body.mass"), "body.mass [kg]");
   EXPECT_EQ(app::sweepLabel("first_reversal_s"), "first_reversal_s [s]");
   EXPECT_EQ(app::sweepLabel("max_tilt_deg"), "max_tilt_deg [deg]");
-  EXPECT_EQ(app::sweepLabel("body.dents.at[0]"), "body.dents.at[0]");  // file units
+  EXPECT_EQ(app::sweepLabel("body.dents.at[0]"), "body.dents.at[0]");  // file units, unknown
   EXPECT_EQ(app::sweepLabel("reversals"), "reversals");                // a count
+  // A length in file units in the base scene's unit (the dents heatmap said no unit).
+  EXPECT_EQ(app::sweepLabel("body.dents.at[0]", 0.01), "body.dents.at[0] [cm]");
+  EXPECT_EQ(app::sweepLabel("body.paraboloid.a", 1), "body.paraboloid.a [m]");
+  EXPECT_EQ(app::sweepLabel("body.paraboloid.a", 0.002), "body.paraboloid.a [0.002 m]");
+  EXPECT_EQ(app::sweepLabel("initial.spin", 0.01), "initial.spin [rad/s]");
 }
 
 // The sweep heatmap's script: numbers' minus signs as U+2212 (DejaVu's hyphen, turned by 30°,

@@ -149,6 +149,12 @@ TEST(Sweep, TheTableIsTheSameForOneOrTwoThreadsAndForMergedShards) {
   EXPECT_EQ(rows[2][2], "0.4");
   EXPECT_EQ(rows[3][1], "5");
   for (std::size_t i = 1; i < rows.size(); ++i) EXPECT_EQ(rows[i][0], std::to_string(i - 1));
+  // The base scene's length unit (units.length: 0.01, centimetres) in the sidecar, also the
+  // merged table's, for the plots' labels ("body.dents.at[0] [cm]").
+  for (const char* table : {"j1.csv", "merged.csv"})
+    EXPECT_EQ(nlohmann::json::parse(slurp(dir / (std::string(table) + ".json")))["length_unit_m"],
+              0.01)
+        << table;
 }
 
 // Each row against `simulate` of the same scene written out by hand: the reversal times, the
