@@ -3,13 +3,30 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 
 namespace app {
+
+namespace {
+
+// A bar redrawn in place, on a terminal that can show one: not TERM=dumb (Emacs' shells, CI
+// runners that give a job a pseudo-terminal: a CI maintainer's trial found only -q, which drops
+// the summary too, silenced it) and not with NO_PROGRESS set.
+bool terminalTakesABar() {
+  if (!::isatty(STDERR_FILENO)) return false;
+  const char* term = std::getenv("TERM");
+  if (term && std::strcmp(term, "dumb") == 0) return false;
+  const char* off = std::getenv("NO_PROGRESS");
+  return !(off && *off);
+}
+
+}  // namespace
 
 Progress::Progress(std::string label, std::int64_t total, bool enabled)
     : label_(std::move(label)),
       total_(total),
-      enabled_(enabled && ::isatty(STDERR_FILENO)),
+      enabled_(enabled && terminalTakesABar()),
       start_(std::chrono::steady_clock::now()) {}
 
 void Progress::update(std::int64_t done) {

@@ -733,6 +733,29 @@ TEST(Cli, TheMachinesFailuresExitFourNotTwo) {
   EXPECT_EQ(bad.status, 2) << bad.err;
 }
 
+// The progress bar shows on a terminal (script(1) gives the command one), and not where the
+// terminal cannot redraw a line (TERM=dumb) or NO_PROGRESS is set: a CI runner that gives its jobs
+// a terminal had only -q, which drops the summary too (a CI maintainer's trial).
+TEST(Cli, TheProgressBarShowsOnATerminalUnlessTurnedOff) {
+  const std::string csv = tempFile("bar.csv").string();
+  auto onTerminal = [&](const std::string& env) {
+    const fs::path out = tempFile("terminal.txt");
+    const std::string command = "script -qec \"env " + env + " " + RATTLEBACK_BIN + " simulate " +
+                                scene("rattleback") + " --duration 3 --rate 1000 -o " + csv +
+                                "\" /dev/null >" + out.string() + " 2>&1 </dev/null";
+    EXPECT_EQ(std::system(command.c_str()), 0) << command;
+    return readText(out);
+  };
+  const std::string shown = onTerminal("TERM=xterm NO_PROGRESS=");
+  EXPECT_NE(shown.find("ETA"), std::string::npos) << shown;
+  EXPECT_NE(shown.find("first reversal"), std::string::npos) << shown;  // the summary
+  for (const std::string env : {"TERM=dumb", "TERM=xterm NO_PROGRESS=1"}) {
+    const std::string quiet = onTerminal(env);
+    EXPECT_EQ(quiet.find("ETA"), std::string::npos) << env << "\n" << quiet;
+    EXPECT_NE(quiet.find("first reversal"), std::string::npos) << env << "\n" << quiet;
+  }
+}
+
 TEST(Cli, VersionQuietAndVerbose) {
   const Result version = rattleback("--version");
   EXPECT_EQ(version.status, 0);
