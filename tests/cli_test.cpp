@@ -705,8 +705,8 @@ TEST(Cli, ARefusedSweepOrBenchLeavesNoFolderBehind) {
   const Result merged = rattleback("sweep merge " + table + " " + (dir / "none.csv").string() +
                                    " --plot " + (dir / "b" / "p.png").string());
   EXPECT_EQ(merged.status, 2) << merged.err;
-  const Result bench = rattleback("bench --duration 0.1 -q -o " + table + " --plot " +
-                                  (dir / "c" / "d" / "p.png").string());
+  const Result bench = rattleback("bench " + scene("rattleback") + " --duration 0.1 -q -o " +
+                                  table + " --plot " + (dir / "c" / "d" / "p.png").string());
   EXPECT_EQ(bench.status, 2) << bench.err;
   EXPECT_EQ(bench.err.rfind(table + ": cannot make its folder", 0), 0u) << bench.err;
   fs::remove(dir / "afile");
