@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -30,17 +31,89 @@ namespace {
 
 /// A finished run: its samples, summary and settings, kept in C++ so that to_csv writes the
 /// command line's exact text.
+// A finished run: its samples, and its sidecar, made with it (the scene as read, the model, what
+// the run found, the check), from which its result, model and check are read and which to_csv
+// writes. So a run pickles as these four, exactly, and a worker process can return one.
 struct Run {
   std::string scene;
-  std::vector<scene::KeyValue> values;  ///< put in over the scene file (with_values)
-  std::string content;                  ///< the scene file's content as read (scene::Loaded)
-  bool has_file = false;                ///< false for a scene made from text or a dict
-  sim::Model model;
   double rate = tasks::kDefaultRate;
   std::vector<sim::Telemetry> samples;
-  sim::RunSummary summary;
-  nlohmann::json check;  ///< checkJson, or null without check=True
+  nlohmann::json sidecar;  ///< telemetrySidecar: its "check" null without check=True
 };
+
+// A sample's fields as 23 doubles (the count and the mode as whole numbers, exact), for pickling.
+constexpr std::size_t kSampleFields = 23;
+
+void packSample(const sim::Telemetry& s, double* out) {
+  const double fields[kSampleFields] = {s.t,
+                                        s.spin,
+                                        s.kinetic,
+                                        s.potential,
+                                        s.elastic,
+                                        s.energy,
+                                        s.tilt_deg,
+                                        s.x_world.x(),
+                                        s.x_world.y(),
+                                        s.x_world.z(),
+                                        s.orientation.w(),
+                                        s.orientation.x(),
+                                        s.orientation.y(),
+                                        s.orientation.z(),
+                                        s.w_world.x(),
+                                        s.w_world.y(),
+                                        s.w_world.z(),
+                                        s.L_world.x(),
+                                        s.L_world.y(),
+                                        s.L_world.z(),
+                                        static_cast<double>(s.contacts),
+                                        static_cast<double>(static_cast<int>(s.mode)),
+                                        s.normal_force};
+  std::copy(fields, fields + kSampleFields, out);
+}
+
+sim::Telemetry unpackSample(const double* f) {
+  sim::Telemetry s;
+  s.t = f[0], s.spin = f[1], s.kinetic = f[2], s.potential = f[3], s.elastic = f[4];
+  s.energy = f[5], s.tilt_deg = f[6];
+  s.x_world = {f[7], f[8], f[9]};
+  s.orientation = Eigen::Quaterniond(f[10], f[11], f[12], f[13]);
+  s.w_world = {f[14], f[15], f[16]};
+  s.L_world = {f[17], f[18], f[19]};
+  s.contacts = static_cast<int>(f[20]);
+  s.mode = static_cast<sim::ContactModel>(static_cast<int>(f[21]));
+  s.normal_force = f[22];
+  return s;
+}
+
+// Pickled as (scene, rate, sidecar as JSON text, samples as bytes of doubles); the version first,
+// so that a pickle of another layout is refused rather than misread.
+constexpr int kRunPickleVersion = 1;
+
+py::tuple runState(const Run& r) {
+  std::vector<double> packed(r.samples.size() * kSampleFields);
+  for (std::size_t i = 0; i < r.samples.size(); ++i)
+    packSample(r.samples[i], packed.data() + i * kSampleFields);
+  return py::make_tuple(
+      kRunPickleVersion, r.scene, r.rate, r.sidecar.dump(),
+      py::bytes(reinterpret_cast<const char*>(packed.data()), packed.size() * sizeof(double)));
+}
+
+std::shared_ptr<Run> runOfState(const py::tuple& state) {
+  if (state.size() != 5 || state[0].cast<int>() != kRunPickleVersion)
+    throw py::value_error("not a pickled rattleback Run of this version");
+  auto run = std::make_shared<Run>();
+  run->scene = state[1].cast<std::string>();
+  run->rate = state[2].cast<double>();
+  run->sidecar = nlohmann::json::parse(state[3].cast<std::string>());
+  const std::string bytes = state[4].cast<std::string>();
+  if (bytes.size() % (kSampleFields * sizeof(double)) != 0)
+    throw py::value_error("not a pickled rattleback Run of this version");
+  std::vector<double> packed(bytes.size() / sizeof(double));
+  std::memcpy(packed.data(), bytes.data(), bytes.size());
+  for (std::size_t i = 0; i < packed.size(); i += kSampleFields)
+    run->samples.push_back(unpackSample(packed.data() + i));
+  return run;
+}
 
 // Made read-only: a column is the run's record, and to_csv writes the samples, not the arrays
 // (`s = run.spin; s *= 2` changed run.spin and to_pandas() but not the CSV). The flag is set on
@@ -100,10 +173,6 @@ std::shared_ptr<Run> simulate(const LoadedScene& loaded, double rate, bool check
   if (auto ok = tasks::checkRate(rate, model.duration); !ok) raise(ok.error());
   auto run = std::make_shared<Run>();
   run->scene = loaded.value.scene.file;
-  run->values = loaded.value.scene.values;
-  run->content = loaded.value.scene.content;
-  run->has_file = loaded.has_file;
-  run->model = model;
   run->rate = rate;
   const tasks::SimulateResult result =
       interruptibleHere([&](const std::function<bool()>& cancelled) {
@@ -113,7 +182,6 @@ std::shared_ptr<Run> simulate(const LoadedScene& loaded, double rate, bool check
         options.each = [&](const sim::Telemetry& s) { run->samples.push_back(s); };
         return tasks::simulate(model, options);
       });
-  run->summary = result.summary;
   if (result.outcome.ending == tasks::Ending::Stopped) {
     py::object cls = py::module_::import("rattleback._errors").attr("RunStopped");
     py::object e = cls(run->scene + ": the run stopped: " + result.outcome.message,
@@ -122,14 +190,18 @@ std::shared_ptr<Run> simulate(const LoadedScene& loaded, double rate, bool check
     PyErr_SetObject(cls.ptr(), e.ptr());
     throw py::error_already_set();
   }
+  nlohmann::json checked_json;
   if (check) {
     std::vector<double> spins;
     for (const sim::Telemetry& s : run->samples) spins.push_back(s.spin);
     const auto checked = interruptibleHere([&](const std::function<bool()>& cancelled) {
-      return tasks::checkRun(model, rate, run->summary, spins, cancelled);
+      return tasks::checkRun(model, rate, result.summary, spins, cancelled);
     });
-    if (checked) run->check = tasks::checkJson(*checked);
+    if (checked) checked_json = tasks::checkJson(*checked);
   }
+  run->sidecar = tasks::telemetrySidecar(
+      {run->scene, loaded.value.scene.values, loaded.value.scene.content, loaded.has_file}, model,
+      rate, result.summary, static_cast<std::int64_t>(run->samples.size()), checked_json);
   return run;
 }
 
@@ -235,15 +307,15 @@ PYBIND11_MODULE(_core, m) {
 
   py::class_<Run, std::shared_ptr<Run>>(m, "Run")
       .def("columns", &columns)
-      .def("result", [](const Run& r) { return toPython(tasks::runJson(r.summary)); })
-      .def("check", [](const Run& r) { return toPython(r.check); })
-      .def("model", [](const Run& r) { return toPython(tasks::modelJson(r.model)); })
-      .def("sidecar",
+      .def("result", [](const Run& r) { return toPython(r.sidecar.at("result")); })
+      .def("check",
            [](const Run& r) {
-             return toPython(tasks::telemetrySidecar(
-                 {r.scene, r.values, r.content, r.has_file}, r.model, r.rate, r.summary,
-                 static_cast<std::int64_t>(r.samples.size()), r.check));
+             return toPython(r.sidecar.contains("check") ? r.sidecar["check"] : nullptr);
            })
+      .def("model", [](const Run& r) { return toPython(r.sidecar.at("model")); })
+      .def("sidecar", [](const Run& r) { return toPython(r.sidecar); })
+      .def(py::pickle([](const Run& r) { return runState(r); },
+                      [](const py::tuple& state) { return runOfState(state); }))
       .def_readonly("scene", &Run::scene)
       .def_readonly("rate", &Run::rate)
       .def("to_csv", [](const Run& r, const std::string& path) {
@@ -251,13 +323,16 @@ PYBIND11_MODULE(_core, m) {
         {
           py::gil_scoped_release release;
           const rb::OutputNamedBy naming("to_csv");  // the way out an error line suggests
-          written = tasks::writeTelemetry(path, {r.scene, r.values, r.content, r.has_file}, r.model,
-                                          r.rate, r.summary, r.samples, r.check);
+          written = tasks::writeTelemetry(path, r.samples, r.sidecar);
           // Listed in the folder's manifest, as the command line lists it (a failure to list
           // loses nothing: the report then places the file by its name).
           if (written)
-            (void)tasks::recordOutputs(
-                {{path, tasks::OutputKind::Telemetry, stemOf(r.scene, r.has_file), "", {}, {}}});
+            (void)tasks::recordOutputs({{path,
+                                         tasks::OutputKind::Telemetry,
+                                         stemOf(r.scene, !r.sidecar.at("scene_path").is_null()),
+                                         "",
+                                         {},
+                                         {}}});
         }
         if (!written) raise(written.error());
       });
@@ -286,7 +361,8 @@ PYBIND11_MODULE(_core, m) {
                                   q.y(), q.z(), s.spin});
         }
         player.poses = tasks::thinPoses(player.poses);
-        player.reversals = run.summary.reversals;
+        for (const auto& t : run.sidecar.at("result").at("reversals_s"))
+          player.reversals.push_back(t.get<double>());
         return tasks::playerScript(player);
       },
       py::arg("scene"), py::arg("run"), py::arg("id"));

@@ -219,10 +219,14 @@ void TelemetryWriter::writeFormatted(std::size_t keep) {
 
 rb::Status TelemetryWriter::commit(const RunScene& scene, const sim::Model& model, double rate,
                                    const sim::RunSummary& run, const nlohmann::json& check) {
+  handOff();  // rows_ counts the rows still pending too
+  return commit(meta_ ? telemetrySidecar(scene, model, rate, run, rows_, check) : nullptr);
+}
+
+rb::Status TelemetryWriter::commit(const nlohmann::json& sidecar) {
   handOff();
   writeFormatted(0);
-  if (meta_)
-    meta_->stream() << telemetrySidecar(scene, model, rate, run, rows_, check).dump(2) << "\n";
+  if (meta_) meta_->stream() << sidecar.dump(2) << "\n";
   if (auto e = csv_.commit(); !e) return e;
   return meta_ ? meta_->commit() : rb::Status();
 }
@@ -234,6 +238,14 @@ rb::Status writeTelemetry(const std::string& path, const RunScene& scene, const 
   if (!writer) return writer.error();
   writer->rows(samples);
   return writer->commit(scene, model, rate, run, check);
+}
+
+rb::Status writeTelemetry(const std::string& path, const std::vector<sim::Telemetry>& samples,
+                          const nlohmann::json& sidecar) {
+  auto writer = TelemetryWriter::open(path);
+  if (!writer) return writer.error();
+  writer->rows(samples);
+  return writer->commit(sidecar);
 }
 
 }  // namespace tasks

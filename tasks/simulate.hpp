@@ -92,6 +92,8 @@ class TelemetryWriter {
   /// `check`: the sidecar's "check" (checkJson), or null.
   rb::Status commit(const RunScene& scene, const sim::Model& model, double rate,
                     const sim::RunSummary& run, const nlohmann::json& check = nullptr);
+  /// The same with the sidecar made already (telemetrySidecar, its rows these rows).
+  rb::Status commit(const nlohmann::json& sidecar);
 
  private:
   TelemetryWriter(AtomicOutput csv, std::optional<AtomicOutput> meta)
@@ -116,5 +118,8 @@ rb::Status writeTelemetry(const std::string& path, const RunScene& scene, const 
                           double rate, const sim::RunSummary& run,
                           const std::vector<sim::Telemetry>& samples,
                           const nlohmann::json& check = nullptr);
+/// The same with the sidecar made already (telemetrySidecar with rows = samples.size()).
+rb::Status writeTelemetry(const std::string& path, const std::vector<sim::Telemetry>& samples,
+                          const nlohmann::json& sidecar);
 
 }  // namespace tasks

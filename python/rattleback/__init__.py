@@ -283,9 +283,9 @@ class Run:
         self._run.to_csv(os.fspath(path))
 
     def __reduce__(self):
-        raise TypeError("a Run cannot be pickled (its samples are the library's): return "
-                        "run.to_pandas(), run.columns or run.summary from a worker, or write "
-                        "run.to_csv(path) there")
+        # Pickled as its samples and sidecar, exactly (every column, result, model and check,
+        # and the same to_csv): a multiprocessing.Pool's worker, or joblib's cache, returns one.
+        return (Run, (self._run,))
 
     # A run is read-only (its arrays too): a copy is itself.
     def __copy__(self) -> "Run":

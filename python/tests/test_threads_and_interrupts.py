@@ -134,19 +134,42 @@ def test_scenes_go_to_worker_processes_and_come_back_the_same(tmp_path):
         assert pool.map(_first_reversal, scenes[:2]) == [_first_reversal(s) for s in scenes[:2]]
 
 
-def test_a_run_says_what_to_return_from_a_worker_instead():
-    # Its samples and model are the library's C++ values; a Pool returning one lost every result
-    # to "MaybeEncodingError: … cannot pickle 'rattleback._core.Run' object".
+def _same_runs(a, b, tmp_path):
+    """Every column bit for bit (dtype too), the sidecar, and to_csv's two files byte for byte."""
+    assert list(a.columns) == list(b.columns)
+    for name in a.columns:
+        assert a[name].dtype == b[name].dtype and np.array_equal(a[name], b[name]), name
+        assert not b[name].flags.writeable, name
+    assert a.sidecar() == b.sidecar() and a.check == b.check and a.scene == b.scene
+    a.to_csv(tmp_path / "a.csv")
+    b.to_csv(tmp_path / "b.csv")
+    for suffix in ("", ".json"):
+        assert (tmp_path / ("a.csv" + suffix)).read_bytes() == \
+            (tmp_path / ("b.csv" + suffix)).read_bytes(), suffix
+
+
+def test_a_run_pickles_exactly_and_comes_back_from_a_worker(tmp_path):
+    # A Pool returning a run lost every result to "MaybeEncodingError: … cannot pickle
+    # 'rattleback._core.Run' object"; then a TypeError said what to return instead. A run now
+    # pickles as its samples and sidecar: the same columns, result, model, check and CSV.
     import copy
     import multiprocessing
     import pickle
-    run = rb.simulate(scene_path("rattleback.yaml"), duration=0.1)
-    with pytest.raises(TypeError) as caught:
-        pickle.dumps(run)
-    assert str(caught.value) == (
-        "a Run cannot be pickled (its samples are the library's): return run.to_pandas(), "
-        "run.columns or run.summary from a worker, or write run.to_csv(path) there")
+    run = rb.simulate(scene_path("rattleback.yaml"), duration=0.5, check=True)
+    assert run.check is not None
+    back = pickle.loads(pickle.dumps(run))
+    _same_runs(run, back, tmp_path)
+    # A scene from a dict (no file: scene_path null) and one stopped by auto's switches alike.
+    mixed = rb.simulate(rb.Scene.from_dict(DICT_SCENE), duration=0.3)
+    _same_runs(mixed, pickle.loads(pickle.dumps(mixed)), tmp_path)
     assert copy.copy(run) is run and copy.deepcopy(run) is run  # read-only, as its arrays are
     with multiprocessing.get_context("spawn").Pool(1) as pool:
-        with pytest.raises(multiprocessing.pool.MaybeEncodingError, match="return run.to_pandas"):
-            pool.map(_run, [scene_path("rattleback.yaml")])
+        [worker] = pool.map(_run, [scene_path("rattleback.yaml")])
+    here = _run(scene_path("rattleback.yaml"))
+    a, b = here.sidecar(), worker.sidecar()
+    a["result"].pop("wall_s"), b["result"].pop("wall_s")
+    assert a == b
+    assert all(np.array_equal(here[c], worker[c]) for c in here.columns)
+    # A pickle of another layout is refused, not misread.
+    with pytest.raises(ValueError, match="not a pickled rattleback Run"):
+        rb._core.Run.__new__(rb._core.Run).__setstate__((0, "x", 1.0, "{}", b""))
