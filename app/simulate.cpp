@@ -98,6 +98,12 @@ void printSummary(std::FILE* out, const SimulateArgs& args, const sim::Model& mo
                  "--dt, or --tolerance with dopri5)\n");
   std::fprintf(out, "final spin      %+.4f rad/s, tilt %.2f deg\n", run.last.spin,
                run.last.tilt_deg);
+  if (run.floor_pulled_s)
+    std::fprintf(out,
+                 "WARNING         from %.4g s the floor had to pull the body down (normal force "
+                 "below 0): rolling holds it to the floor, where a real body would lift off; "
+                 "contact.model: auto lets it\n",
+                 *run.floor_pulled_s);
   std::fprintf(out, "wall time       %.3f s: %.4f s per simulated second, %.3f us per step\n",
                run.wall_s, run.wall_s / simulated,
                1e6 * run.wall_s / static_cast<double>(std::max<std::int64_t>(1, run.steps)));

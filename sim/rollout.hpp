@@ -49,6 +49,11 @@ struct RunSummary {
   /// contact.model auto: how many times the model changed, and when to which.
   int switches = 0;
   std::vector<std::pair<double, ContactModel>> mode_changes;
+  /// contact.model rolling: the first time sampled at which the constraint needed the floor to
+  /// pull the body down (normal force below 0, where a real body lifts off; rolling holds it to
+  /// the floor regardless, docs/physics.md P4.5). Set by the sampler (tasks::simulate), from the
+  /// samples' normal force, which they compute anyway: not looked for between samples.
+  std::optional<double> floor_pulled_s;
 };
 
 class Rollout {

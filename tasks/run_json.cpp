@@ -62,6 +62,7 @@ nlohmann::json runJson(const sim::RunSummary& run) {
   for (const auto& [t, mode] : run.mode_changes)
     changes.push_back({{"t", t}, {"to", std::string(rb::nameOf(mode))}});
   j["mode_changes"] = changes;
+  j["floor_pulled_s"] = run.floor_pulled_s ? nlohmann::json(*run.floor_pulled_s) : nullptr;
   j["wall_s"] = run.wall_s;
   return j;
 }

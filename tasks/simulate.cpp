@@ -123,14 +123,18 @@ rb::Status checkRate(double rate, double duration) {
 SimulateResult simulate(const sim::Model& model, const SimulateOptions& options) {
   SimulateResult result;
   sim::Rollout rollout(model);
+  std::optional<double> pulled;
+  const bool rolling = model.contact.model == sim::ContactModel::Rolling;
   for (double t : sim::sampleTimes(model.duration, options.rate)) {
     if (options.cancelled && options.cancelled()) rollout.requestStop();
     if (!rollout.advanceTo(t)) break;
     const sim::Telemetry sample = rollout.sampleAt(t);
+    if (rolling && !pulled && sample.normal_force < 0) pulled = sample.t;
     if (options.each) options.each(sample);
     ++result.rows;
   }
   result.summary = rollout.summary();
+  result.summary.floor_pulled_s = pulled;
   result.outcome = outcomeOf(result.summary);
   return result;
 }

@@ -756,6 +756,27 @@ TEST(Cli, TheProgressBarShowsOnATerminalUnlessTurnedOff) {
   }
 }
 
+// Rolling holds the body to the floor whatever force that takes (docs/physics.md P4.5); where the
+// floor had to pull (N < 0) a real body lifts off. At gravity 0 nothing presses the body onto
+// the floor, and the constraint makes a tilted spun body's CM accelerate downwards from the start
+// (N = M a_z < 0 at t = 0: the first sample): the result names it and the summary warns. The
+// default run, N > 0 throughout: null.
+TEST(Cli, ARollingRunWhereTheFloorPullsIsSaidToBe) {
+  const std::string csv = tempFile("pulled.csv").string();
+  const Result pulled =
+      rattleback("simulate " + scene("rattleback") + " --set gravity=0 --duration 0.5 -o " + csv);
+  ASSERT_EQ(pulled.status, 0) << pulled.err;
+  EXPECT_NE(pulled.out.find("WARNING         from 0 s the floor had to pull the body down"),
+            std::string::npos)
+      << pulled.out;
+  const nlohmann::json result = nlohmann::json::parse(readText(csv + ".json"))["result"];
+  EXPECT_EQ(result["floor_pulled_s"], 0.0);
+  const Result held = rattleback("simulate " + scene("rattleback") + " --duration 1 -o " + csv);
+  ASSERT_EQ(held.status, 0) << held.err;
+  EXPECT_EQ(held.out.find("WARNING"), std::string::npos) << held.out;
+  EXPECT_TRUE(nlohmann::json::parse(readText(csv + ".json"))["result"]["floor_pulled_s"].is_null());
+}
+
 TEST(Cli, VersionQuietAndVerbose) {
   const Result version = rattleback("--version");
   EXPECT_EQ(version.status, 0);
