@@ -22,8 +22,13 @@ void ReversalDetector::step(double t0, double n0, double t1, double n1, double l
   if (crossing_ && *crossing_ - last_flight < kSettleTime) crossing_.reset();
   if (crossing_ && crossing_reached_ && n1 * reference_sign_ > threshold_) crossing_.reset();
   if (crossing_ && n1 * reference_sign_ < -threshold_) crossing_reached_ = true;
-  // At the run's end a crossing that has reached the threshold counts: nothing undid it.
-  if (crossing_ && crossing_reached_ && (t1 - *crossing_ >= kHoldTime || at_end)) {
+  // It counts once n is beyond the threshold the new way kHoldTime or more after the crossing:
+  // beyond it then, not merely not back (a spin braked to rest that overshot past the threshold
+  // and died out at zero was counted: a physicist's trial). A crossing within kHoldTime of the
+  // run's end counts there, its hold cut short: nothing undid it.
+  const bool held = crossing_ && t1 - *crossing_ >= kHoldTime;
+  if (crossing_ && crossing_reached_ &&
+      ((held && n1 * reference_sign_ < -threshold_) || (at_end && !held))) {
     reversals_.push_back(*crossing_);
     crossing_.reset();
     reference_sign_ = -reference_sign_;

@@ -13,8 +13,9 @@ class ReversalDetector {
  public:
   /// A crossing counts once n has gone on to reach this fraction of the initial |n| the new way.
   static constexpr double kFraction = 0.01;
-  /// …and kept the new sign this long, s (a body rocking through tens of degrees swings n
-  /// through zero and back within a rocking period: 0.14–0.29 s for the default body).
+  /// …and is beyond that fraction the new way again this long or more after the crossing, s,
+  /// not having gone back beyond it the old way (a body rocking through tens of degrees swings
+  /// n through zero and back within a rocking period: 0.14–0.29 s for the default body).
   static constexpr double kHoldTime = 0.2;
   /// …and not within this long of a flight, s (a dropped body wobbles through n = 0 while it
   /// bounces: about 0.6 s from 5 cm at 30°).
@@ -27,7 +28,7 @@ class ReversalDetector {
   /// of the zero crossing within the step (on the integrator's interpolant); it is called only
   /// when n changes sign against the reference. `last_flight` is the last time the body was in
   /// the air, s; `at_end` says the step reached the run's end, where a crossing that has reached
-  /// kFraction counts without the hold.
+  /// kFraction within kHoldTime of it counts without the rest of the hold.
   void step(double t0, double n0, double t1, double n1, double last_flight, bool at_end,
             const std::function<double()>& locate);
 

@@ -66,6 +66,17 @@ TEST(Reversals, ASpinThatDiesOutAndDithersIsNone) {
   EXPECT_TRUE(r.empty());
 }
 
+TEST(Reversals, ASpinBrakedToRestThatOvershootsIsNone) {
+  // A flat-bottomed body's points brake the spin to rest; n overshoots past 1 % (to +0.093, 1.9 %
+  // of 5) for a tenth of a second and dies out at zero (a physicist's trial, contact.model
+  // points on a coarse grid: counted at 0.39 s). n never holds the new side: none, at the end
+  // of the run either.
+  const auto braked =
+      through({{0, -5}, {0.39, 0}, {0.42, 0.093}, {0.484, -8e-7}, {1.0, 0}, {3, 0}});
+  EXPECT_TRUE(reversalsOf({braked}, -5).empty());
+  EXPECT_TRUE(reversalsOf({braked, 0.6}, -5).empty());
+}
+
 TEST(Reversals, WigglesAfterTheThresholdKeepTheCrossing) {
   // Across at 1.0 s, up to +0.1 (reached), back to +0.01 and up again: one reversal at 1.0 s.
   const auto r = reversalsOf(
