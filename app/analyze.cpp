@@ -182,7 +182,7 @@ void printText(std::FILE* out, const std::string& scene, const sim::Model& model
     std::fprintf(out, "                 [% .6f  % .6f  % .6f]\n", m.axes(i, 0), m.axes(i, 1),
                  m.axes(i, 2));
   std::fprintf(out,
-               "misalignment     %+.4f deg (least-inertia axis from the long axis, "
+               "misalignment     %+.4f deg (least-inertia axis from the bottom's long axis, "
                "counter-clockwise seen from above)\n",
                m.misalignment_deg);
   if (model.contact.model == sim::ContactModel::Rolling)

@@ -22,6 +22,12 @@ int zLevels(const Paraboloid& shape, double dz) {
 
 }  // namespace
 
+double Paraboloid::longAxisAngle() const {
+  // [A, B; B, C] = H has its larger curvature along ½ atan2(2B, A − C) from x; the long axis is
+  // across it.
+  return 0.5 * std::atan2(2 * q / (a * a), p / a - s / a) + M_PI / 2;
+}
+
 Paraboloid::Paraboloid(double a_, double p_, double q_, double s_, double top_)
     : a(a_),
       p(p_),
@@ -264,6 +270,14 @@ void principalAxes(MassProperties& m) {
   m.misalignment_deg =
       (long_in_x ? std::atan2(least.y(), least.x()) : std::atan2(-least.x(), least.y())) * 180.0 /
       M_PI;
+}
+
+double misalignmentDeg(const MassProperties& m, double long_axis_rad) {
+  const Eigen::Vector3d least = m.axes.col(0);
+  // An axis is a line: the difference of two of them is folded into (−90°, 90°].
+  double d = std::remainder(std::atan2(least.y(), least.x()) - long_axis_rad, M_PI);
+  if (d <= -M_PI / 2) d += M_PI;
+  return d * 180.0 / M_PI;
 }
 
 }  // namespace sim

@@ -30,6 +30,10 @@ struct Paraboloid {
   double bottom(double x, double y) const { return xx_ * x * x + xy_ * x * y + yy_ * y * y - a; }
   /// Half-widths of the top rim ellipse along x and y, m.
   Eigen::Vector2d rimHalfWidths() const;
+  /// The bottom's long axis (its principal curvature axis of the smaller curvature, the larger
+  /// radius): its angle from x, counter-clockwise seen from above, radians. π/2 (y) when q = 0
+  /// and s < p; q turns it.
+  double longAxisAngle() const;
   /// The point of the bottom surface lowest along `down` (a unit vector in the geometric
   /// frame, down.z < 0): where the outward normal (f_x, f_y, −1) is parallel to `down`, i.e.
   /// H (x, y) = −(down_x, down_y)/down_z with H the Hessian [p/a, q/a²; q/a², s/a]. Metres.
@@ -157,5 +161,10 @@ MassProperties gridMassProperties(const Paraboloid& shape, const std::optional<D
 
 /// Principal moments, axes and misalignment angle of an inertia tensor (kg m²).
 void principalAxes(MassProperties& m);
+
+/// The misalignment (docs/physics.md P1.6) against a long axis at `long_axis_rad` from x
+/// (counter-clockwise): the angle from it to the horizontal projection of the least-inertia
+/// axis, counter-clockwise about z, degrees in (−90, 90].
+double misalignmentDeg(const MassProperties& m, double long_axis_rad);
 
 }  // namespace sim

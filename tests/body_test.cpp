@@ -120,6 +120,25 @@ TEST(MassProperties, MisalignmentOfTheDefaultBodyAndItsMirror) {
   EXPECT_NEAR(mirrored, -angle, 1e-9);
 }
 
+// The misalignment is measured from the bottom's long curvature axis, which the skew q turns
+// (P1.6): a skewed body without dents is a symmetric cap turned, its inertia axes on its
+// curvature axes, misaligned by nothing (a physicist's trial: q 0.05 read +6.0° from y, while
+// its growth rates were 0 and no run reversed).
+TEST(MassProperties, TheMisalignmentIsFromTheBottomsCurvatureAxes) {
+  sim::SceneSpec spec = parse(kStableScene);
+  spec.body.mass_properties = "continuum";  // the cap's own axes (the grid's are x and y)
+  spec.body.paraboloid.q = 0.05;
+  spec.body.dents.reset();
+  const sim::MassProperties m = build(spec).body->mass_properties;
+  EXPECT_NEAR(m.misalignment_deg, 0, 1e-9);
+  // The least-inertia axis is turned from y all the same, by ½ atan2(2q/a², (p − s)/a): 6.0°.
+  const auto& b = spec.body.paraboloid;
+  const double turn = 0.5 * std::atan2(2 * b.q / (b.a * b.a), (b.p - b.s) / b.a);
+  EXPECT_GT(std::abs(turn), 0.1);
+  const Eigen::Vector3d least = m.axes.col(0);
+  EXPECT_NEAR(std::atan2(-least.x(), least.y()), turn, 1e-9);
+}
+
 namespace {
 
 // The grid by its definition, point by point (seed appendix): column (i + ½)dx, (j + ½)dy holds
