@@ -88,6 +88,11 @@ std::string explainOptionError(const CLI::App& cli, int argc, char** argv,
     if (const CLI::Option* option = command->get_option_no_throw(what.substr(0, at)))
       return path + ": " + what.substr(0, at) + " takes " + takes(*option) + " (" + gist(*option) +
              "), none given (see rattleback " + path + " --help)";
+  // CLI11 says "--dt: At Most 1 required but received 2" for an option given twice.
+  const std::string twice = ": At Most 1 required but received ";
+  if (const std::size_t at = what.find(twice); at != std::string::npos)
+    return path + ": " + what.substr(0, at) + " given " + what.substr(at + twice.size()) +
+           " times; give it once (see rattleback " + path + " --help)";
   return what + " (see rattleback " + path + " --help)";
 }
 

@@ -270,7 +270,8 @@ const std::vector<Key>& table() {
        .doc = "the method: `euler`, `symplectic` and `rk4` take `dt`, `dopri5` takes `tolerance`",
        .sample = "rk4",
        .choices = namesOf<sim::Integrator>,
-       .default_note = "`symplectic` with `dt`, `dopri5` with `tolerance`"},
+       .default_note = "with `dt`: `rk4` for `rolling` and `auto`, `symplectic` for `smooth` and "
+                       "`points`; `dopri5` with `tolerance`"},
       {.path = "simulation.dt",
        .field = FIELD(spec.simulation.dt),
        .unit = "s",
