@@ -89,11 +89,21 @@ void printTheory(std::FILE* out, const sim::Model& model, double spin, bool give
     std::fprintf(out,
                  "preferred        none: the body cannot stand (it has no rocking about upright "
                  "for a direction of spin to favour)\n");
-  else if (preferred == sim::Direction::None)
-    std::fprintf(out,
-                 "preferred        none (the rocking grows alike both ways, or neither way: "
-                 "no direction is predicted to reverse rather than the other)\n");
-  else
+  else if (preferred == sim::Direction::None) {
+    // Which of the two: a body with no misalignment grows alike both ways at any spin; a slow
+    // spin (drag damps the rocking) may see it die out both ways, though faster spins favour
+    // one (a physicist's trial: at --spin 0 "none" read as the body's, where 5 rad/s gives ccw).
+    const sim::Direction faster = sim::preferredDirection(model, std::max(5.0, std::abs(spin)));
+    if (faster == sim::Direction::None)
+      std::fprintf(out,
+                   "preferred        none (the rocking grows alike both ways, or neither way: "
+                   "no direction is predicted to reverse rather than the other)\n");
+    else
+      std::fprintf(out,
+                   "preferred        none at %g rad/s (the rocking dies out spun either way: "
+                   "neither is predicted to reverse at this spin); at 5 rad/s: %s\n",
+                   std::abs(spin), std::string(rb::nameOf(faster)).c_str());
+  } else
     std::fprintf(out,
                  "preferred        %s (%s seen from above): its rocking grows more slowly; "
                  "spun the other way it is predicted to reverse sooner\n",

@@ -790,6 +790,22 @@ TEST(Cli, ForwardEulersEnergyStopNamesAnotherIntegrator) {
       << euler.err;
 }
 
+// At a spin too slow for the rocking to grow (drag damps it) no direction is preferred, which is
+// the spin's as well as the body's: said so, with the direction at 5 rad/s (a physicist's trial:
+// --spin 0's "none" read as the body's, where the first-order rates and 5 rad/s give ccw).
+TEST(Cli, AnalyzeAtASlowSpinSaysThePreferredDirectionAtAFasterOne) {
+  const Result slow = rattleback("analyze " + scene("rattleback") + " --spin 0");
+  ASSERT_EQ(slow.status, 0) << slow.err;
+  EXPECT_NE(slow.out.find("preferred        none at 0 rad/s (the rocking dies out spun either "
+                          "way: neither is predicted to reverse at this spin); at 5 rad/s: ccw\n"),
+            std::string::npos)
+      << slow.out;
+  const Result usual = rattleback("analyze " + scene("rattleback") + " --spin 5");
+  EXPECT_NE(usual.out.find("preferred        ccw (counter-clockwise seen from above)"),
+            std::string::npos)
+      << usual.out;
+}
+
 TEST(Cli, VersionQuietAndVerbose) {
   const Result version = rattleback("--version");
   EXPECT_EQ(version.status, 0);
