@@ -141,6 +141,19 @@ window.__rbShown = (e) => ({
 });
 """
 
+# The player's picture as drawn now, all of it (renderAll), as RGBA bytes: for the scripts below,
+# which have the player as p and its hook as h.
+READ_JS = """
+const read = () => {
+  h.renderAll();
+  const c = document.createElement('canvas');
+  c.width = p.canvas.width; c.height = p.canvas.height;
+  const g = c.getContext('2d');
+  g.drawImage(p.canvas, 0, 0);
+  return g.getImageData(0, 0, c.width, c.height).data;
+};
+"""
+
 # Waits for two animation frames: whatever the last change asked to be drawn is drawn.
 # The contact shadow, from above with the body hidden, at the sample where the body's long axis
 # is nearest 45° to the world axes: how much darker the floor is with the shadow than without
@@ -164,15 +177,7 @@ for (let k = 0; k < p.n; k += Math.max(1, Math.floor(p.n / 200))) {
 h.setTime(best[0]);
 h.setView('above');
 p.points.visible = false;
-const read = () => {
-  h.renderAll();
-  const c = document.createElement('canvas');
-  c.width = p.canvas.width; c.height = p.canvas.height;
-  const g = c.getContext('2d');
-  g.drawImage(p.canvas, 0, 0);
-  return g.getImageData(0, 0, c.width, c.height).data;
-};
-const strength = u.shadowStrength.value;
+""" + READ_JS + """const strength = u.shadowStrength.value;
 const on = read();
 u.shadowStrength.value = 0;
 const off = read();
@@ -204,15 +209,7 @@ const element = arguments[0], views = arguments[1], times = arguments[2];
 const p = window.RattlebackPlayer.players.find((q) => q.container === element);
 const h = element.rbPlayer;
 const before = [h.time(), h.view()];
-const read = () => {
-  h.renderAll();
-  const c = document.createElement('canvas');
-  c.width = p.canvas.width; c.height = p.canvas.height;
-  const g = c.getContext('2d');
-  g.drawImage(p.canvas, 0, 0);
-  return g.getImageData(0, 0, c.width, c.height).data;
-};
-const out = [];
+""" + READ_JS + """const out = [];
 for (const view of views) {
   for (const t of times) {
     h.setTime(t);
