@@ -115,6 +115,12 @@ void printTheory(std::FILE* out, const sim::Model& model, double spin, bool give
                  "forecasts one spun N rad/s)\n");
     return;
   }
+  // --spin 0: nothing to reverse (it read "outside the averaged theory's range ... = inf": a
+  // student's trial).
+  if (spin == 0) {
+    std::fprintf(out, "first reversal   none: not spun (--spin 0), there is no spin to reverse\n");
+    return;
+  }
   const sim::ReversalForecast forecast = sim::forecastFirstReversal(model, spin, model.duration);
   if (!forecast.applies) {
     std::fprintf(out, "first reversal   not forecast: the theory needs a body that can stand\n");

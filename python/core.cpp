@@ -183,10 +183,20 @@ std::shared_ptr<Run> simulate(const LoadedScene& loaded, double rate, bool check
         return tasks::simulate(model, options);
       });
   if (result.outcome.ending == tasks::Ending::Stopped) {
+    // The run as far as it went goes with the exception; the message names the values put in
+    // (a student's Pool over spins: which of three runs of long.yaml had stopped was not said).
+    run->sidecar = tasks::telemetrySidecar(
+        {run->scene, loaded.value.scene.values, loaded.value.scene.content, loaded.has_file}, model,
+        rate, result.summary, static_cast<std::int64_t>(run->samples.size()), nullptr);
+    std::string named = run->scene;
+    for (std::size_t i = 0; i < loaded.value.scene.values.size(); ++i)
+      named += (i ? ", " : " (") + loaded.value.scene.values[i].key + " = " +
+               loaded.value.scene.values[i].yaml +
+               (i + 1 == loaded.value.scene.values.size() ? ")" : "");
     py::object cls = py::module_::import("rattleback._errors").attr("RunStopped");
-    py::object e = cls(run->scene + ": the run stopped: " + result.outcome.message,
+    py::object e = cls(named + ": the run stopped: " + result.outcome.message,
                        std::string(rb::nameOf(result.outcome.stop->reason)), result.outcome.stop->t,
-                       result.outcome.stop->step);
+                       result.outcome.stop->step, py::cast(run));
     PyErr_SetObject(cls.ptr(), e.ptr());
     throw py::error_already_set();
   }

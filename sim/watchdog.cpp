@@ -42,12 +42,13 @@ std::optional<Stop> Watchdog::observe(const StepEnd& end) {
     if (end.step == 0)
       msg << "the body starts on the edge of its top (tilt " << *end.rim_tilt_deg
           << " degrees), where rolling on its smooth bottom does not describe it; use "
-             "contact.model smooth or points, or a smaller initial.tilt";
+             "contact.model auto, smooth or points (with a contact.stiffness, e.g. 2.0e4 N/m), "
+             "or a smaller initial.tilt";
     else
       msg << "the body tipped onto the edge of its top (tilt " << *end.rim_tilt_deg
           << " degrees) at t = " << end.t << " s (step " << end.step
           << "), where rolling on its smooth bottom no longer describes it; use "
-             "contact.model smooth or points";
+             "contact.model auto, smooth or points (with a contact.stiffness, e.g. 2.0e4 N/m)";
     message_ = msg.str();
     return Stop{StopReason::OnRim, end.t, end.step};
   }

@@ -800,6 +800,11 @@ TEST(Cli, AnalyzeAtASlowSpinSaysThePreferredDirectionAtAFasterOne) {
                           "way: neither is predicted to reverse at this spin); at 5 rad/s: ccw\n"),
             std::string::npos)
       << slow.out;
+  // Nor is a reversal "outside the averaged theory's range (… = inf)" there: nothing is spun.
+  EXPECT_NE(slow.out.find("first reversal   none: not spun (--spin 0), there is no spin to "
+                          "reverse\n"),
+            std::string::npos)
+      << slow.out;
   const Result usual = rattleback("analyze " + scene("rattleback") + " --spin 5");
   EXPECT_NE(usual.out.find("preferred        ccw (counter-clockwise seen from above)"),
             std::string::npos)

@@ -107,8 +107,8 @@ TEST(Watchdog, ARollingBodyOnTheRimStops) {
   ASSERT_TRUE(start.observe(first));
   EXPECT_EQ(start.message(),
             "the body starts on the edge of its top (tilt 89 degrees), where rolling on its "
-            "smooth bottom does not describe it; use contact.model smooth or points, or a "
-            "smaller initial.tilt");
+            "smooth bottom does not describe it; use contact.model auto, smooth or points (with a "
+            "contact.stiffness, e.g. 2.0e4 N/m), or a smaller initial.tilt");
 }
 
 // (Times compare to 1e-12 s: the scripted step ends are k · 1e-3, rounded products.)

@@ -326,7 +326,14 @@ def simulate(scene: SceneLike, *, rate: float = _core.default_rate,
     """
     loaded = _scene(scene)._load(duration=duration, spin=spin, dt=dt, tolerance=tolerance,
                                  integrator=integrator)
-    return Run(_core.simulate(loaded, float(rate), bool(check)))
+    try:
+        return Run(_core.simulate(loaded, float(rate), bool(check)))
+    except RunStopped as stopped:
+        # The run as far as it went, as a Run (a student's trial: a body that tipped over left
+        # nothing to plot of the 2.2 s before).
+        if isinstance(stopped.run, _core.Run):
+            stopped.run = Run(stopped.run)
+        raise
 
 
 @checked

@@ -26,10 +26,14 @@ class RunStopped(RuntimeError):
         reason: ``"non_finite"``, ``"energy_gain"`` or ``"on_rim"``.
         t: the simulated time it stopped at, s.
         step: the step it stopped at.
+        run: the :class:`Run` as far as it went (its samples up to the stop, its ``result``
+            with ``status`` ``"stopped"``), to plot what led there; ``None`` where there is
+            none.
     """
 
-    def __init__(self, message, reason=None, t=None, step=None):
+    def __init__(self, message, reason=None, t=None, step=None, run=None):
         super().__init__(message)
         self.reason = reason
         self.t = t
         self.step = step
+        self.run = run

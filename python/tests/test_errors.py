@@ -126,6 +126,28 @@ def test_a_run_that_stops_itself_raises_run_stopped():
     assert 0 < caught.value.t < 8
 
 
+def test_a_stopped_run_names_its_values_and_carries_the_run_as_far_as_it_went():
+    # A student's Pool over spins: one run tipped over, and the error named only the file, with
+    # nothing to plot of the 0.9 s before. The message names the values put in; .run is the Run
+    # up to the stop, its result "stopped", its samples those of an unstopped run's start.
+    import pickle
+    scene = rb.Scene.from_file(scene_path("rattleback.yaml")).with_values({"initial.spin": -20})
+    with pytest.raises(rb.RunStopped) as caught:
+        rb.simulate(scene)
+    stopped = caught.value
+    assert str(stopped).startswith(scene_path("rattleback.yaml") + " (initial.spin = -20): "
+                                   "the run stopped: the body tipped onto the edge of its top")
+    assert "use contact.model auto, smooth or points" in str(stopped)
+    assert stopped.reason == "on_rim" and isinstance(stopped.run, rb.Run)
+    assert stopped.run.result["status"] == "stopped"
+    assert stopped.run.t[-1] <= stopped.t < stopped.run.t[-1] + 1 / stopped.run.rate
+    start = rb.simulate(scene, duration=0.5)
+    n = len(start)
+    assert np.array_equal(stopped.run.spin[:n], start.spin)  # the same run, as far as both go
+    back = pickle.loads(pickle.dumps(stopped))  # from a Pool's worker
+    assert back.reason == "on_rim" and np.array_equal(back.run.spin, stopped.run.spin)
+
+
 def test_a_bad_video_argument_is_a_scene_error_naming_the_argument():
     scene = rb.Scene.from_file(scene_path("rattleback.yaml"))
     with pytest.raises(rb.SceneError) as caught:
