@@ -29,8 +29,6 @@ namespace py = pybind11;
 namespace pyrb {
 namespace {
 
-/// A finished run: its samples, summary and settings, kept in C++ so that to_csv writes the
-/// command line's exact text.
 // A finished run: its samples, and its sidecar, made with it (the scene as read, the model, what
 // the run found, the check), from which its result, model and check are read and which to_csv
 // writes. So a run pickles as these four, exactly, and a worker process can return one.
@@ -182,12 +180,12 @@ std::shared_ptr<Run> simulate(const LoadedScene& loaded, double rate, bool check
         options.each = [&](const sim::Telemetry& s) { run->samples.push_back(s); };
         return tasks::simulate(model, options);
       });
+  run->sidecar = tasks::telemetrySidecar(
+      {run->scene, loaded.value.scene.values, loaded.value.scene.content, loaded.has_file}, model,
+      rate, result.summary, static_cast<std::int64_t>(run->samples.size()), nullptr);
   if (result.outcome.ending == tasks::Ending::Stopped) {
     // The run as far as it went goes with the exception; the message names the values put in
     // (a student's Pool over spins: which of three runs of long.yaml had stopped was not said).
-    run->sidecar = tasks::telemetrySidecar(
-        {run->scene, loaded.value.scene.values, loaded.value.scene.content, loaded.has_file}, model,
-        rate, result.summary, static_cast<std::int64_t>(run->samples.size()), nullptr);
     std::string named = run->scene;
     for (std::size_t i = 0; i < loaded.value.scene.values.size(); ++i)
       named += (i ? ", " : " (") + loaded.value.scene.values[i].key + " = " +
@@ -200,18 +198,15 @@ std::shared_ptr<Run> simulate(const LoadedScene& loaded, double rate, bool check
     PyErr_SetObject(cls.ptr(), e.ptr());
     throw py::error_already_set();
   }
-  nlohmann::json checked_json;
   if (check) {
     std::vector<double> spins;
     for (const sim::Telemetry& s : run->samples) spins.push_back(s.spin);
     const auto checked = interruptibleHere([&](const std::function<bool()>& cancelled) {
       return tasks::checkRun(model, rate, result.summary, spins, cancelled);
     });
-    if (checked) checked_json = tasks::checkJson(*checked);
+    // Where telemetrySidecar puts a check (last, as the command line's sidecar has it).
+    if (checked) run->sidecar["check"] = tasks::checkJson(*checked);
   }
-  run->sidecar = tasks::telemetrySidecar(
-      {run->scene, loaded.value.scene.values, loaded.value.scene.content, loaded.has_file}, model,
-      rate, result.summary, static_cast<std::int64_t>(run->samples.size()), checked_json);
   return run;
 }
 
