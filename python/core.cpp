@@ -5,6 +5,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstring>
 #include <filesystem>
@@ -39,47 +40,46 @@ struct Run {
   nlohmann::json sidecar;  ///< telemetrySidecar: its "check" null without check=True
 };
 
-// A sample's fields as 23 doubles (the count and the mode as whole numbers, exact), for pickling.
-constexpr std::size_t kSampleFields = 23;
+// A sample's doubles, in the order they are pickled: one list for packing and unpacking alike.
+constexpr std::size_t kSampleDoubles = 21;
+std::array<double*, kSampleDoubles> doublesOf(sim::Telemetry& s) {
+  return {&s.t,
+          &s.spin,
+          &s.kinetic,
+          &s.potential,
+          &s.elastic,
+          &s.energy,
+          &s.tilt_deg,
+          &s.x_world.x(),
+          &s.x_world.y(),
+          &s.x_world.z(),
+          &s.orientation.w(),
+          &s.orientation.x(),
+          &s.orientation.y(),
+          &s.orientation.z(),
+          &s.w_world.x(),
+          &s.w_world.y(),
+          &s.w_world.z(),
+          &s.L_world.x(),
+          &s.L_world.y(),
+          &s.L_world.z(),
+          &s.normal_force};
+}
 
-void packSample(const sim::Telemetry& s, double* out) {
-  const double fields[kSampleFields] = {s.t,
-                                        s.spin,
-                                        s.kinetic,
-                                        s.potential,
-                                        s.elastic,
-                                        s.energy,
-                                        s.tilt_deg,
-                                        s.x_world.x(),
-                                        s.x_world.y(),
-                                        s.x_world.z(),
-                                        s.orientation.w(),
-                                        s.orientation.x(),
-                                        s.orientation.y(),
-                                        s.orientation.z(),
-                                        s.w_world.x(),
-                                        s.w_world.y(),
-                                        s.w_world.z(),
-                                        s.L_world.x(),
-                                        s.L_world.y(),
-                                        s.L_world.z(),
-                                        static_cast<double>(s.contacts),
-                                        static_cast<double>(static_cast<int>(s.mode)),
-                                        s.normal_force};
-  std::copy(fields, fields + kSampleFields, out);
+// A sample as 23 doubles: its doubles, then the count and the mode as whole numbers (exact).
+constexpr std::size_t kSampleFields = kSampleDoubles + 2;
+
+void packSample(sim::Telemetry s, double* out) {
+  for (double* field : doublesOf(s)) *out++ = *field;
+  *out++ = s.contacts;
+  *out = static_cast<int>(s.mode);
 }
 
 sim::Telemetry unpackSample(const double* f) {
   sim::Telemetry s;
-  s.t = f[0], s.spin = f[1], s.kinetic = f[2], s.potential = f[3], s.elastic = f[4];
-  s.energy = f[5], s.tilt_deg = f[6];
-  s.x_world = {f[7], f[8], f[9]};
-  s.orientation = Eigen::Quaterniond(f[10], f[11], f[12], f[13]);
-  s.w_world = {f[14], f[15], f[16]};
-  s.L_world = {f[17], f[18], f[19]};
-  s.contacts = static_cast<int>(f[20]);
-  s.mode = static_cast<sim::ContactModel>(static_cast<int>(f[21]));
-  s.normal_force = f[22];
+  for (double* field : doublesOf(s)) *field = *f++;
+  s.contacts = static_cast<int>(f[0]);
+  s.mode = static_cast<sim::ContactModel>(static_cast<int>(f[1]));
   return s;
 }
 
