@@ -85,6 +85,15 @@ class OsMesaContext final : public GlContext {
     backend_ = Backend::OsMesa;
     const OsMesaLibrary& lib = osMesa();
     if (!lib.error.empty()) return lib.error;
+    // OSMesa (Mesa 22.3) has only the software drivers; named any other driver by GALLIUM_DRIVER
+    // it crashes in OSMesaCreateContextAttribs (measured: zink, swrast, virpipe, a misspelt
+    // name), and the command would end in a segmentation fault with nothing said.
+    if (const char* driver = std::getenv("GALLIUM_DRIVER"); driver && *driver &&
+                                                            std::strcmp(driver, "llvmpipe") != 0 &&
+                                                            std::strcmp(driver, "softpipe") != 0)
+      return std::string("GALLIUM_DRIVER=") + driver +
+             " is not one of OSMesa's drivers (llvmpipe, softpipe), and Mesa would crash: unset "
+             "GALLIUM_DRIVER or set it to llvmpipe";
     const int attributes[] = {OSMESA_FORMAT,
                               OSMESA_RGBA,
                               OSMESA_DEPTH_BITS,

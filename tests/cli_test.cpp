@@ -1638,6 +1638,28 @@ TEST(Cli, ABadBackendNamesWhereItCameFrom) {
   EXPECT_FALSE(fs::exists(png));
 }
 
+// OSMesa has only Mesa's software drivers: GALLIUM_DRIVER naming another (a typo, or a hardware
+// one meant for EGL) made Mesa crash inside OSMesaCreateContextAttribs, and the command end in a
+// segmentation fault with nothing said (a CI maintainer's trial). It is the machine's setting:
+// exit 4, one line naming the variable and the way out, and nothing written.
+TEST(Cli, AGalliumDriverOsMesaLacksIsNamedNotCrashedOn) {
+  const char* before = std::getenv("GALLIUM_DRIVER");
+  const std::string kept = before ? before : "";
+  ::setenv("GALLIUM_DRIVER", "bogus", 1);
+  const fs::path png = tempFile("gallium.png");
+  const Result osmesa =
+      rattleback("still " + scene("rattleback") + " --backend osmesa -o " + png.string());
+  if (before)
+    ::setenv("GALLIUM_DRIVER", kept.c_str(), 1);
+  else
+    ::unsetenv("GALLIUM_DRIVER");
+  EXPECT_EQ(osmesa.status, 4) << osmesa.err;
+  EXPECT_NE(osmesa.err.find("GALLIUM_DRIVER=bogus"), std::string::npos) << osmesa.err;
+  EXPECT_NE(osmesa.err.find("set it to llvmpipe"), std::string::npos) << osmesa.err;
+  EXPECT_EQ(lines(osmesa.err), 1) << osmesa.err;
+  EXPECT_FALSE(fs::exists(png));
+}
+
 // A dented body's mass properties come from cubature. The body is the same turned half a turn
 // about its vertical axis ((x, y, z) → (-x, -y, z)), so its products xz and yz vanish; cubature
 // gives them as 1e-19 of the moments, and analyze shows them as the 0 they are, while the one
