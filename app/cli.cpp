@@ -151,6 +151,10 @@ void defineCompare(CLI::App& c, Cli& cli) {
                "Largest difference per channel (0–255) that still counts as equal (default 2)");
   c.add_option("--pixels", a.pixel_fraction,
                "Fraction of pixels allowed beyond the tolerance (default 0.002)");
+  c.add_option("--square", a.square,
+               "Differing whatever --pixels allows: a square of this many pixels a side that all "
+               "differ beyond the tolerance (a changed thing, not scattered edges; default 4, 0 "
+               "off)");
   c.add_option("--diff", a.diff, "Write a diff image here when they differ");
   c.add_flag("-q,--quiet", a.quiet,
              "Print nothing: the exit status says same (0) or different (1)");

@@ -124,8 +124,9 @@ struct CompareArgs {
   std::string actual, expected;
   int channel_tolerance = 2;      ///< 0–255 per channel
   double pixel_fraction = 0.002;  ///< of the pixels may differ beyond it
-  std::string diff;               ///< where to write a diff image when they differ
-  bool quiet = false;             ///< no verdict line: the exit status says it
+  int square = 4;      ///< a square of this side all beyond it differs whatever the fraction; 0 off
+  std::string diff;    ///< where to write a diff image when they differ
+  bool quiet = false;  ///< no verdict line: the exit status says it
 };
 /// Exit 0 when the images match within the tolerance, 1 when they differ.
 int compareCommand(const CompareArgs& args);

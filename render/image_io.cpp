@@ -136,20 +136,34 @@ Comparison compareImages(const Image& a, const Image& b, int channel_tolerance) 
   c.pixels = static_cast<long long>(a.width) * a.height;
   c.box[0] = a.width;
   c.box[1] = a.height;
+  // side[x]: the largest square of differing pixels whose bottom-right corner is (x, y), kept
+  // for this row and the one above (the square at (x, y) is one more than the smallest of those
+  // at its left, above and above-left).
+  std::vector<int> above(static_cast<std::size_t>(a.width) + 1, 0), side(above.size(), 0);
   for (int y = 0; y < a.height; ++y) {
     for (int x = 0; x < a.width; ++x) {
       const std::size_t i = (static_cast<std::size_t>(y) * a.width + x) * 4;
       int delta = 0;
       for (int k = 0; k < 4; ++k) delta = std::max(delta, std::abs(a.rgba[i + k] - b.rgba[i + k]));
       c.max_channel_delta = std::max(c.max_channel_delta, delta);
+      int& here = side[static_cast<std::size_t>(x) + 1];
+      here = 0;
       if (delta > channel_tolerance) {
         ++c.differing;
         c.box[0] = std::min(c.box[0], x);
         c.box[1] = std::min(c.box[1], y);
         c.box[2] = std::max(c.box[2], x);
         c.box[3] = std::max(c.box[3], y);
+        here = 1 + std::min({side[static_cast<std::size_t>(x)], above[static_cast<std::size_t>(x)],
+                             above[static_cast<std::size_t>(x) + 1]});
+        if (here > c.square) {
+          c.square = here;
+          c.square_at[0] = x - here + 1;
+          c.square_at[1] = y - here + 1;
+        }
       }
     }
+    std::swap(above, side);
   }
   return c;
 }

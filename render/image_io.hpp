@@ -29,6 +29,11 @@ struct Comparison {
   double fraction() const { return pixels ? static_cast<double>(differing) / pixels : 1.0; }
   /// Bounding box of the differing pixels (x0, y0, x1, y1), when any.
   int box[4] = {0, 0, 0, 0};
+  /// The side of the largest square of pixels that all differ, and its top-left corner: a
+  /// changed thing of some size, where scattered edge pixels (another CPU's rasteriser) make
+  /// lines one or two pixels wide.
+  int square = 0;
+  int square_at[2] = {0, 0};
 };
 
 Comparison compareImages(const Image& a, const Image& b, int channel_tolerance);

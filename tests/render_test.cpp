@@ -354,6 +354,46 @@ TEST(Video, FailureLeavesAnExistingFileAlone) {
   EXPECT_EQ(rattleback("still scenes/seed-flip-ccw.yaml -o /dev/null/x.png"), 2);
 }
 
+// A small thing changed whole differs, though it is a fraction of the pixels --pixels allows
+// (a CI maintainer's trial: a 40×40 patch of a 1280×720 frame is 0.17 %, within the default
+// 0.2 %); scattered changes of as many pixels, lines one pixel wide as another CPU's rasteriser
+// makes on edges, still pass. compareImages measures the largest square of differing pixels.
+TEST(Compare, ASmallThingChangedWholeDiffers) {
+  const fs::path golden = kSource / "tests/golden/seed-above.png";
+  render::Image image, lines, patch;
+  ASSERT_TRUE(render::readPng(golden.string(), image));
+  lines = patch = image;
+  const auto flip = [](render::Image& im, int x, int y) {
+    im.rgba[(static_cast<std::size_t>(y) * im.width + x) * 4] ^= 0x80;
+  };
+  // 1-pixel diagonal lines, every 8th diagonal: 1/8 of the pixels, no two in a row or column.
+  for (int y = 0; y < lines.height; ++y)
+    for (int x = 0; x < lines.width; ++x)
+      if ((x + y) % 8 == 0) flip(lines, x, y);
+  for (int y = 30; y < 34; ++y)  // a 4×4 square: 16 of 57600 pixels (0.03 %)
+    for (int x = 50; x < 54; ++x) flip(patch, x, y);
+  const render::Comparison scattered = render::compareImages(lines, image, 2);
+  EXPECT_EQ(scattered.square, 1);
+  const render::Comparison whole = render::compareImages(patch, image, 2);
+  EXPECT_EQ(whole.differing, 16);
+  EXPECT_EQ(whole.square, 4);
+  EXPECT_EQ(whole.square_at[0], 50);
+  EXPECT_EQ(whole.square_at[1], 30);
+  const fs::path a = scratch("lines.png"), b = scratch("patch.png"), said = scratch("said.txt");
+  ASSERT_TRUE(render::writePng(a.string(), lines));
+  ASSERT_TRUE(render::writePng(b.string(), patch));
+  EXPECT_EQ(rattleback("compare " + a.string() + " " + golden.string() + " --pixels 0.2"), 0);
+  const std::string command = "cd " + kSource.string() + " && " + RATTLEBACK_BIN + " compare " +
+                              b.string() + " " + golden.string() + " >" + said.string();
+  EXPECT_EQ(WEXITSTATUS(std::system(command.c_str())), 1);
+  std::ifstream in(said);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_NE(line.find("largest square of them 4x4 at x 50, y 30 (--square 4)"), std::string::npos)
+      << line;
+  EXPECT_EQ(rattleback("compare " + b.string() + " " + golden.string() + " --square 5"), 0);
+}
+
 // `compare` is the snapshot check users can call: 0 when equal within the tolerance, 1 when
 // not, with a diff image.
 TEST(Compare, SameAndDifferentImages) {
@@ -369,9 +409,14 @@ TEST(Compare, SameAndDifferentImages) {
                        diff.string()),
             1);
   EXPECT_TRUE(fs::exists(diff));
-  // Within a looser allowance (5% of pixels) the same pair passes.
-  EXPECT_EQ(rattleback("compare " + changed.string() + " " + golden.string() + " --pixels 0.05"),
+  // Within a looser allowance (5% of pixels) the same pair passes only without the square
+  // check: the 40×40 square changed whole is a changed thing, whatever its fraction.
+  EXPECT_EQ(rattleback("compare " + changed.string() + " " + golden.string() +
+                       " --pixels 0.05 --square 0"),
             0);
+  EXPECT_EQ(rattleback("compare " + changed.string() + " " + golden.string() + " --pixels 0.05"),
+            1);
+  EXPECT_EQ(rattleback("compare " + changed.string() + " " + golden.string() + " --square -1"), 2);
   // Options out of range are bad input, not a silent pass.
   EXPECT_EQ(rattleback("compare " + changed.string() + " " + golden.string() + " --tolerance 300"),
             2);
