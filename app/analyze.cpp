@@ -16,6 +16,7 @@
 #include "tasks/analysis.hpp"
 #include "tasks/output.hpp"
 #include "tasks/scene_args.hpp"
+#include "util/assets.hpp"
 
 namespace app {
 namespace {
@@ -126,7 +127,8 @@ void printTheory(std::FILE* out, const sim::Model& model, double spin, bool give
     std::fprintf(out, "first reversal   not forecast: the theory needs a body that can stand\n");
     return;
   }
-  const char* where = "docs/physics.md P8.5";
+  const std::string where_page = rb::docPage("physics.md") + " P8.5";
+  const char* where = where_page.c_str();
   if (forecast.tilt_energy == 0) {
     std::fprintf(out,
                  "first reversal   none forecast: with no tilt nothing starts the rocking (%s)\n",

@@ -13,6 +13,7 @@
 #include "render/frame.hpp"
 #include "sim/model.hpp"
 #include "tasks/sweep.hpp"
+#include "util/assets.hpp"
 
 namespace app {
 namespace {
@@ -254,14 +255,8 @@ namespace {
 // program run from its build tree points to the source's docs/.
 std::string documentation() {
   const char* more = " rattleback COMMAND --help for a command's options.";
-  std::error_code error;
-  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
-  if (!error) {
-    const std::filesystem::path docs =
-        (self.parent_path() / RATTLEBACK_DOCS_RELATIVE).lexically_normal();
-    if (std::filesystem::is_regular_file(docs / "getting-started.md", error))
-      return "Documentation: " + docs.string() + "/ (getting-started.md first)." + more;
-  }
+  if (const std::string docs = rb::docsDir(); !docs.empty())
+    return "Documentation: " + docs + "/ (getting-started.md first)." + more;
   return std::string(
              "Documentation: docs/ in the source (docs/getting-started.md first; bash "
              "scripts/docs.sh builds it as a site into site/).") +

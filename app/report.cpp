@@ -35,8 +35,9 @@ int reportCommand(const ReportArgs& args) {
     std::cerr << args.dir
               << ": no runs, videos, stills or plots here, so the page shows none; make them with "
                  "`rattleback simulate SCENE -o "
-              << args.dir << "/NAME.csv --plot " << args.dir << "` (docs/getting-started.md), or "
-              << mainJob(args.dir) << " for the main job\n";
+              << args.dir << "/NAME.csv --plot " << args.dir << "` ("
+              << rb::docPage("getting-started.md") << "), or " << mainJob(args.dir)
+              << " for the main job\n";
   std::printf("%s\n", page->path.c_str());
   return kOk;
 }

@@ -6,6 +6,7 @@
 
 #include "render/frame.hpp"  // the name table of video.view (header only: no render library)
 #include "sim/model.hpp"
+#include "util/assets.hpp"
 
 namespace scene {
 namespace {
@@ -438,7 +439,8 @@ bool requiredIn(const Key& key, const sim::SceneSpec& spec) {
 
 std::string requiredMessage(const Key& key) {
   if (key.example.empty()) return "is required";
-  return "is required, e.g. " + std::string(key.example) + " (docs/scenes.md has a complete scene)";
+  return "is required, e.g. " + std::string(key.example) + " (" + rb::docPage("scenes.md") +
+         " has a complete scene)";
 }
 
 bool belongsTo(const Key& key, const sim::BodySpec& body) {

@@ -900,10 +900,9 @@ void writeOthers(std::ostream& out, const std::vector<std::string>& others) {
 // beside share/rattleback) when this program is installed (a CI maintainer's trial: the page of
 // an installed report pointed to the source's docs/), else the source's.
 std::string documentationWhere() {
-  const fs::path installed = (fs::path(rb::assetsDir()) / "../doc/rattleback").lexically_normal();
-  std::error_code ec;
-  if (fs::is_regular_file(installed / "getting-started.md", ec))
-    return "<code>" + escape(installed.string()) +
+  const std::string installed = rb::docsDir();
+  if (!installed.empty())
+    return "<code>" + escape(installed) +
            "/</code> where rattleback is installed (<code>getting-started.md</code> first)";
   return "<code>docs/</code> in rattleback's source (<code>docs/getting-started.md</code> first; "
          "<code>bash scripts/docs.sh</code> builds it as a site)";

@@ -57,6 +57,13 @@ help=$("$work/prefix/bin/rattleback" --help)
 grep -q "^Documentation: $work/prefix/share/doc/rattleback/ (getting-started.md first)" <<<"$help" ||
   { echo "FAIL: the installed --help does not name the installed documentation: ${help##*$'\n'}"; exit 1; }
 echo "ok: the installed --help names $work/prefix/share/doc/rattleback"
+# Its messages cite the installed pages too, not the source's docs/ (a CI maintainer's trial).
+printf 'body:\n  shape: ellipsoid\ncontact: {model: rolling}\nsimulation: {duration: 1, dt: 0.001}\n' \
+  >"$work/no-mass.yaml"
+said=$("$work/prefix/bin/rattleback" simulate "$work/no-mass.yaml" -q -o "$work/no-mass.csv" 2>&1 || true)
+grep -qF "($work/prefix/share/doc/rattleback/scenes.md has a complete scene)" <<<"$said" ||
+  { echo "FAIL: the installed program's message does not cite the installed docs: $said"; exit 1; }
+echo "ok: an installed message cites $work/prefix/share/doc/rattleback/scenes.md"
 # The shipped scenes and sweeps are installed, and found by their relative names from any folder
 # (issue 26: plain `bench` and `still scenes/rattleback.yaml` failed outside the source tree).
 (cd "$(mktemp -d "$work/elsewhere.XXXX")" &&

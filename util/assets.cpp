@@ -32,4 +32,18 @@ std::string assetsDir() {
   return (dir / RATTLEBACK_ASSETS_RELATIVE).lexically_normal().string();
 }
 
+std::string docsDir() {
+  const std::filesystem::path installed =
+      (std::filesystem::path(assetsDir()) / "../doc/rattleback").lexically_normal();
+  std::error_code error;
+  return std::filesystem::is_regular_file(installed / "getting-started.md", error)
+             ? installed.string()
+             : std::string();
+}
+
+std::string docPage(const std::string& page) {
+  const std::string installed = docsDir();
+  return installed.empty() ? "docs/" + page : installed + "/" + page;
+}
+
 }  // namespace rb

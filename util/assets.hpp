@@ -12,4 +12,12 @@ namespace rb {
 /// Python package <build>/python/rattleback or <prefix>/lib/python3/dist-packages/rattleback.
 std::string assetsDir();
 
+/// The installed documentation, <assets>/../doc/rattleback (share/doc/rattleback beside
+/// share/rattleback), when it is there; empty in a build tree, whose docs are the source's docs/.
+std::string docsDir();
+
+/// A page of the documentation as a message cites it: the installed file's path when installed
+/// (a user of an installed program has no docs/ folder), else "docs/PAGE" (the source's).
+std::string docPage(const std::string& page);
+
 }  // namespace rb
