@@ -733,6 +733,7 @@ class Player {
       w = Math.max(16, Math.round(this.stage.clientWidth || 640));
       h = Math.max(9, Math.round(this.stage.clientHeight || (w * 9) / 16));
     }
+    this.updateSampling(w, h);
     if (w === this.width && h === this.height) return;
     this.width = w;
     this.height = h;
@@ -753,6 +754,27 @@ class Player {
       this.placeCamera();
     }
     this.dirty = true;
+  }
+
+  // How the compositor samples the canvas onto the page: nearest (image-rendering: pixelated)
+  // where the drawing buffer is one to one with the device pixels the canvas covers, else as
+  // usual (filtered). Chromium compositing on the CPU draws a WebGL canvas upside down (its rows
+  // are read back bottom first), and Skia samples a flipped image with a bilinear filter unless
+  // told nearest: the same picture one to one, for 2–3 ms more of the GPU process's CPU a frame.
+  // A box of fractional CSS pixels (the stage's 16:9 of its column's width) is within a device
+  // pixel of the buffer: nearest there shows every pixel as drawn but for a row or column
+  // dropped or doubled at most, where a filter would smear them all by the fraction. Scaled
+  // further (a device pixel ratio above the 2 the buffer is held to), filtered.
+  updateSampling(w, h) {
+    const dpr = window.devicePixelRatio || 1;
+    let exact = this.renderer.getPixelRatio() === dpr;
+    if (exact) {
+      const box = this.canvas.getBoundingClientRect();
+      const bw = Math.floor(w * dpr), bh = Math.floor(h * dpr); // the buffer, as three sizes it
+      exact = Math.abs(box.width * dpr - bw) < 1 && Math.abs(box.height * dpr - bh) < 1;
+    }
+    const rendering = exact ? 'pixelated' : '';
+    if (this.canvas.style.imageRendering !== rendering) this.canvas.style.imageRendering = rendering;
   }
 
   // --- views: as the renderer places them (render/camera.cpp) -------------------------------
