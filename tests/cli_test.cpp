@@ -13,6 +13,7 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <regex>
 #include <sstream>
 #include <tuple>
@@ -56,7 +57,7 @@ std::string readText(const fs::path& path) {
 }
 
 struct Result {
-  int status;
+  int status = -1;
   std::string out, err;
 };
 
@@ -1618,18 +1619,35 @@ TEST(Cli, ReportCaptionsSayWhatIsPredictedAndWhatWasMeasured) {
 
 // A backend from the environment that is not one is named as the environment's, not as an
 // option the user never typed; --backend given on the line is named as itself.
+// An environment variable set for the commands a test runs, and put back as it was after.
+class ScopedEnv {
+ public:
+  ScopedEnv(const char* name, const char* value) : name_(name) {
+    if (const char* before = std::getenv(name)) before_ = before;
+    ::setenv(name, value, 1);
+  }
+  ~ScopedEnv() {
+    if (before_)
+      ::setenv(name_, before_->c_str(), 1);
+    else
+      ::unsetenv(name_);
+  }
+  ScopedEnv(const ScopedEnv&) = delete;
+  ScopedEnv& operator=(const ScopedEnv&) = delete;
+
+ private:
+  const char* name_;
+  std::optional<std::string> before_;
+};
+
 TEST(Cli, ABadBackendNamesWhereItCameFrom) {
-  const char* before = std::getenv("RATTLEBACK_BACKEND");
-  const std::string kept = before ? before : "";
-  ::setenv("RATTLEBACK_BACKEND", "bogus", 1);
   const fs::path png = tempFile("x.png");
-  const Result env = rattleback("still " + scene("rattleback") + " -o " + png.string());
-  const Result option =
-      rattleback("still " + scene("rattleback") + " --backend nope -o " + png.string());
-  if (before)
-    ::setenv("RATTLEBACK_BACKEND", kept.c_str(), 1);
-  else
-    ::unsetenv("RATTLEBACK_BACKEND");
+  Result env, option;
+  {
+    const ScopedEnv backend("RATTLEBACK_BACKEND", "bogus");
+    env = rattleback("still " + scene("rattleback") + " -o " + png.string());
+    option = rattleback("still " + scene("rattleback") + " --backend nope -o " + png.string());
+  }
   EXPECT_EQ(env.status, 2);
   EXPECT_EQ(env.err.rfind("RATTLEBACK_BACKEND", 0), 0u) << env.err;
   EXPECT_EQ(lines(env.err), 1);
@@ -1643,16 +1661,12 @@ TEST(Cli, ABadBackendNamesWhereItCameFrom) {
 // segmentation fault with nothing said (a CI maintainer's trial). It is the machine's setting:
 // exit 4, one line naming the variable and the way out, and nothing written.
 TEST(Cli, AGalliumDriverOsMesaLacksIsNamedNotCrashedOn) {
-  const char* before = std::getenv("GALLIUM_DRIVER");
-  const std::string kept = before ? before : "";
-  ::setenv("GALLIUM_DRIVER", "bogus", 1);
   const fs::path png = tempFile("gallium.png");
-  const Result osmesa =
-      rattleback("still " + scene("rattleback") + " --backend osmesa -o " + png.string());
-  if (before)
-    ::setenv("GALLIUM_DRIVER", kept.c_str(), 1);
-  else
-    ::unsetenv("GALLIUM_DRIVER");
+  Result osmesa;
+  {
+    const ScopedEnv driver("GALLIUM_DRIVER", "bogus");
+    osmesa = rattleback("still " + scene("rattleback") + " --backend osmesa -o " + png.string());
+  }
   EXPECT_EQ(osmesa.status, 4) << osmesa.err;
   EXPECT_NE(osmesa.err.find("GALLIUM_DRIVER=bogus"), std::string::npos) << osmesa.err;
   EXPECT_NE(osmesa.err.find("set it to llvmpipe"), std::string::npos) << osmesa.err;
