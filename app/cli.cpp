@@ -1,6 +1,7 @@
 #include "app/cli.hpp"
 
 #include <array>
+#include <csignal>
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
@@ -329,6 +330,11 @@ int Cli::run() {
 }
 
 int runGuarded(Cli& cli) {
+  // A write beyond the shell's file-size limit (ulimit -f) fails with "File too large" and is
+  // handled as every failed write is (exit 4, its temporary file removed, an existing output
+  // kept), instead of SIGXFSZ ending the process with its part files left behind (a teacher's
+  // trial: exit 153 and a .NAME.part-PID beside the video). Python ignores it likewise.
+  std::signal(SIGXFSZ, SIG_IGN);
   try {
     return cli.run();
   } catch (const std::bad_alloc&) {

@@ -716,20 +716,30 @@ TEST(Cli, ARefusedSweepOrBenchLeavesNoFolderBehind) {
 
 // The machine's failures exit 4, apart from bad input's 2, so that a pipeline can tell a broken
 // runner from a broken scene (a CI maintainer's trial: a full disk exited 2, as a misspelt key):
-// /dev/full refuses every write; a file-size limit stops the CSV part-way (SIGXFSZ ignored, as
-// a shell's ulimit leaves it to the program to see EFBIG).
+// /dev/full refuses every write; a file-size limit stops the CSV part-way (the program ignores
+// SIGXFSZ, which would otherwise end it with its part file left behind: a teacher's trial, exit
+// 153), and nothing is left in the folder.
 TEST(Cli, TheMachinesFailuresExitFourNotTwo) {
   const std::string run = "simulate " + scene("rattleback") + " --duration 1 -q -o ";
   const Result full = rattleback(run + "/dev/full");
   EXPECT_EQ(full.status, 4) << full.err;
   EXPECT_EQ(full.err, "/dev/full: writing failed: No space left on device\n");
-  const fs::path big = tempFile("limited.csv"), err = tempFile("limited.err");
-  const std::string limited = "ulimit -f 20; trap '' XFSZ; " + std::string(RATTLEBACK_BIN) + " " +
-                              run + big.string() + " --rate 10000 2>" + err.string();
+  const fs::path limits = emptyDir("limits");
+  const fs::path big = limits / "limited.csv", err = tempFile("limited.err");
+  const std::string limited = "ulimit -f 20; " + std::string(RATTLEBACK_BIN) + " " + run +
+                              big.string() + " --rate 10000 2>" + err.string();
   const int raw = std::system(limited.c_str());
   EXPECT_EQ(WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, 4);
   EXPECT_EQ(readText(err), big.string() + ": writing failed: File too large\n");
   EXPECT_FALSE(fs::exists(big));
+  // The same for the drawing program (a still of the default size is some 100 kB).
+  const fs::path png = limits / "limited.png";
+  const std::string still = "ulimit -f 20; " + std::string(RATTLEBACK_BIN) + " still " +
+                            scene("rattleback") + " -q -o " + png.string() + " 2>" + err.string();
+  const int drawn = std::system(still.c_str());
+  EXPECT_EQ(WIFEXITED(drawn) ? WEXITSTATUS(drawn) : -1, 4) << readText(err);
+  EXPECT_FALSE(fs::exists(png));
+  EXPECT_TRUE(fs::is_empty(limits)) << fs::directory_iterator(limits)->path();
   const Result bad = rattleback(run + "/proc/x.csv");  // a path that cannot be: still input
   EXPECT_EQ(bad.status, 2) << bad.err;
 }
