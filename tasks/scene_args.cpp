@@ -51,6 +51,23 @@ rb::Result<LoadedScene> applyOverrides(scene::Loaded scene, const Overrides& o) 
     if (*value && !std::isfinite(**value))
       return rb::Error{"", name(option) + ": must be a finite number, not " + rb::show(**value),
                        rb::Error::Where{name(option), 0, key}};
+  // An option and a --set entry for the same key: the option won, and the report page listed
+  // the entry among the values put in beside the option's value ("initial.spin = -4", "spun -3
+  // rad/s"; a teacher's trial). One command gives each key once.
+  for (const auto& [given, key, option] :
+       {std::tuple{bool(o.duration), "simulation.duration", "duration"},
+        std::tuple{bool(o.dt), "simulation.dt", "dt"},
+        std::tuple{bool(o.tolerance), "simulation.tolerance", "tolerance"},
+        std::tuple{bool(o.integrator), "simulation.integrator", "integrator"},
+        std::tuple{bool(o.spin), "initial.spin", "spin"},
+        std::tuple{bool(o.playback), "video.playback", "playback"},
+        std::tuple{bool(o.view), "video.view", "view"},
+        std::tuple{bool(o.size), "video.size", "size"},
+        std::tuple{bool(o.fps), "video.fps", "fps"}})
+    for (const scene::KeyValue& kv : o.values)
+      if (given && kv.key == key)
+        return rb::Error{"", name(option) + " and " + name("set") + " " + kv.key +
+                                 " set the same key: give one of them"};
   set(spec.simulation.duration, o.duration, "simulation.duration", "duration");
   if (o.dt && o.tolerance)
     return rb::Error{"", name("dt") + " and " + name("tolerance") +

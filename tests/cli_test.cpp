@@ -2520,7 +2520,13 @@ TEST(Cli, SetAndDurationErrorsNameTheEntryAndKey) {
        "makes more than 1e11 steps: shorten the run or lengthen the step\n"},
       {"--duration 1e9",
        "--duration: simulation.dt 0.0001 s over simulation.duration 1e+09 s makes more than "
-       "1e11 steps: shorten the run or lengthen the step\n"}};
+       "1e11 steps: shorten the run or lengthen the step\n"},
+      // An option and --set for one key: the option won, and the report listed both (a
+      // teacher's trial).
+      {"--spin -3 --set initial.spin=-4",
+       "--spin and --set initial.spin set the same key: give one of them\n"},
+      {"--set simulation.dt=2e-4 --dt 1e-4",
+       "--dt and --set simulation.dt set the same key: give one of them\n"}};
   for (const auto& [args, expected] : cases) {
     const fs::path csv = tempFile("set-error.csv");
     const Result r = rattleback("simulate " + scene("kane-levinson") + " " + args + " -o " +
