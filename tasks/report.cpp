@@ -274,8 +274,15 @@ std::string measuredOf(const nlohmann::json& run) {
       << spinWords(spin.is_number() ? spin.get<double>() : 0.0) << ")<br>" << reversalOf(r)
       << "<br>final spin " << number(field(r, "final_spin"), "%+.3f") << " rad/s<br>energy "
       << number(field(field(r, "energy_j"), "initial"), "%.4g") << " J → "
-      << number(field(field(r, "energy_j"), "final"), "%.4g") << " J"
-      << checkOf(field(run, "check"));
+      << number(field(field(r, "energy_j"), "final"), "%.4g") << " J";
+  // What simulate's summary warned of, where the page is read without it (a teacher's trial:
+  // a step too large showed as "no reversal in 5 s" with nothing said).
+  const nlohmann::json& warnings = field(r, "warnings");
+  if (warnings.is_array())
+    for (const nlohmann::json& w : warnings)
+      out << "<br><span class=\"warning\">⚠ " << escape(stringOr(field(w, "text"), "?"))
+          << "</span>";
+  out << checkOf(field(run, "check"));
   return out.str();
 }
 
@@ -417,6 +424,7 @@ video,img{max-width:100%;height:auto;background:#eee}figure{margin:0 0 1em}
 .grid figure{margin:0}figcaption{font-size:.9em;color:#444}
 table{border-collapse:collapse;margin:1em 0}
 td,th{border:1px solid #ccc;padding:.4em .8em;vertical-align:top;text-align:left}
+.warning{color:#9a3412;font-weight:bold}
 )";
 
 // The files of a folder, placed: by scene, the sweeps, and the rest.

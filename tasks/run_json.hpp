@@ -18,6 +18,18 @@ nlohmann::json modelJson(const sim::Model& model);
 /// stopped when it did.
 nlohmann::json runJson(const sim::RunSummary& run);
 
+/// What a run's reader should be told beside its numbers: `code` names it for programs
+/// ("cannot_stand", "dents_cut_nothing", "upright_start", "energy_error", "floor_pulled"),
+/// `text` says it for people. simulate's summary prints them, the sidecar's result lists them
+/// ("warnings"), and the report page shows them beside the run (a teacher's trial: the page
+/// showed "no reversal in 5 s" for a run whose step was too large, which only the terminal said).
+struct RunWarning {
+  std::string code;
+  std::string text;
+};
+std::vector<RunWarning> runWarnings(const sim::Model& model, const sim::RunSummary& run);
+nlohmann::json warningsJson(const std::vector<RunWarning>& warnings);
+
 /// FNV-1a (64 bits) of the texts in turn, as 16 hex digits: a fingerprint of content.
 std::string fingerprintOf(const std::vector<std::string>& texts);
 /// The fingerprint of a scene file's content (scene::yamlContent: comments and layout do not

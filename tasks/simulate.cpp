@@ -168,6 +168,7 @@ nlohmann::json telemetrySidecar(const RunScene& scene, const sim::Model& model, 
   j["rate_hz"] = rate;
   j["model"] = modelJson(model);
   j["result"] = runJson(run);
+  j["result"]["warnings"] = warningsJson(runWarnings(model, run));
   if (!check.is_null()) j["check"] = check;
   return j;
 }

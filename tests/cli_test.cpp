@@ -317,9 +317,25 @@ TEST(Cli, ACoarseStepInAModelThatKeepsEnergyIsPointedOut) {
   const Result coarse = rattleback(run + " --dt 0.005");
   ASSERT_EQ(coarse.status, 0) << coarse.err;
   EXPECT_NE(coarse.out.find("the step is too large for this run"), std::string::npos) << coarse.out;
+  // The sidecar lists it, and the report page shows it beside the run (a teacher's trial: the
+  // page said "no reversal in 5 s" of such a run, and nothing else).
+  const fs::path csv = scratchDir() / "kl.csv";
+  const nlohmann::json warned = nlohmann::json::parse(readText(csv.string() + ".json"));
+  ASSERT_EQ(warned["result"]["warnings"].size(), 1u) << warned["result"];
+  EXPECT_EQ(warned["result"]["warnings"][0]["code"], "energy_error");
+  const fs::path dir = emptyDir("warned");
+  fs::copy_file(csv, dir / "kl.csv");
+  fs::copy_file(csv.string() + ".json", dir / "kl.csv.json");
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  EXPECT_NE(readText(dir / "index.html")
+                .find("<span class=\"warning\">⚠ this model keeps the energy exactly: the change "
+                      "is the integrator's error, and the step is too large for this run"),
+            std::string::npos);
   const Result fine = rattleback(run);
   ASSERT_EQ(fine.status, 0) << fine.err;
   EXPECT_EQ(fine.out.find("too large"), std::string::npos) << fine.out;
+  const nlohmann::json quiet = nlohmann::json::parse(readText(csv.string() + ".json"));
+  EXPECT_EQ(quiet["result"]["warnings"], nlohmann::json::array());
 }
 
 // A step that cannot resolve the body's own rocking is refused where the body rolls, as one
