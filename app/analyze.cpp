@@ -15,6 +15,7 @@
 #include "sim/switching.hpp"
 #include "tasks/analysis.hpp"
 #include "tasks/output.hpp"
+#include "tasks/run_json.hpp"
 #include "tasks/scene_args.hpp"
 #include "util/assets.hpp"
 
@@ -271,7 +272,8 @@ int analyzeCommand(const AnalyzeArgs& args) {
            sceneName(args.scene),
            args.json ? "json" : "text",
            {},
-           {}}});
+           {},
+           tasks::madeFrom(loaded->scene)}});
   return kOk;
 }
 

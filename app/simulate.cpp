@@ -208,10 +208,11 @@ std::string plotStem(const SimulateArgs& args, const std::string& csv) {
 }
 
 // The telemetry and the plots, for the manifest.
-std::vector<tasks::OutputEntry> outputsOf(const SimulateArgs& args, const std::string& csv) {
+std::vector<tasks::OutputEntry> outputsOf(const SimulateArgs& args, const std::string& csv,
+                                          const std::string& made_from) {
   const std::string scene = sceneName(args.scene);
   std::vector<tasks::OutputEntry> entries = {
-      {csv, tasks::OutputKind::Telemetry, scene, "", {}, {}}};
+      {csv, tasks::OutputKind::Telemetry, scene, "", {}, {}, made_from}};
   if (!args.plot_dir.empty())
     for (const char* what : {"energy", "spin", "tilt", "normal"})
       entries.push_back(
@@ -221,7 +222,8 @@ std::vector<tasks::OutputEntry> outputsOf(const SimulateArgs& args, const std::s
            scene,
            what,
            {},
-           {}});
+           {},
+           made_from});
   return entries;
 }
 
@@ -322,7 +324,7 @@ int simulateCommand(const SimulateArgs& args) {
   if (!args.plot_dir.empty())
     if (auto e = writePlots(args.plot_dir, plotStem(args, csv), kept, run.summary.reversals); !e)
       return fail(e);
-  record(outputsOf(args, csv));
+  record(outputsOf(args, csv, tasks::madeFrom(loaded->scene)));
   if (args.quiet) return kOk;
   std::FILE* report = to_stdout ? stderr : stdout;
   printSummary(report, args, model, run.summary, to_stdout ? "standard output" : csv, run.rows);

@@ -16,6 +16,7 @@
 #include "media/video_plan.hpp"
 #include "render/image_io.hpp"
 #include "tasks/output.hpp"
+#include "tasks/run_json.hpp"
 #include "util/format.hpp"
 
 namespace app {
@@ -106,8 +107,13 @@ int renderCommand(const RenderArgs& args) {
     return notWritten(result.outcome, args.scene, "video");
   std::vector<tasks::OutputEntry> entries;
   for (const media::VideoFile& f : result.files)
-    entries.push_back(
-        {f.path, tasks::OutputKind::Video, sceneName(args.scene), f.role, f.spin, {}});
+    entries.push_back({f.path,
+                       tasks::OutputKind::Video,
+                       sceneName(args.scene),
+                       f.role,
+                       f.spin,
+                       {},
+                       tasks::madeFrom(loaded->scene)});
   record(entries);
   if (!args.quiet) printVideos(result);
   return kOk;
@@ -146,8 +152,9 @@ int stillCommand(const StillArgs& args) {
                                : args.output;
   if (auto made = tasks::makeParentFolder(path); !made) return fail(made);
   if (auto e = render::writePng(path, still.image); !e) return fail(e);
-  record({{path, tasks::OutputKind::Still, sceneName(args.scene),
-           std::string(rb::nameOf(still.view)), loaded->model.initial.spin, args.t}});
+  record(
+      {{path, tasks::OutputKind::Still, sceneName(args.scene), std::string(rb::nameOf(still.view)),
+        loaded->model.initial.spin, args.t, tasks::madeFrom(loaded->scene)}});
   if (!args.quiet) std::printf("%s\n", path.c_str());
   return kOk;
 }

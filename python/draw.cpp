@@ -15,6 +15,7 @@
 #include "render/image_io.hpp"
 #include "tasks/manifest.hpp"
 #include "tasks/output.hpp"
+#include "tasks/run_json.hpp"
 
 namespace py = pybind11;
 
@@ -91,6 +92,7 @@ py::tuple still(const LoadedScene& loaded, double t, bool readouts, bool transpa
   listed["view"] = std::string(rb::nameOf(still.view));
   listed["spin"] = loaded.value.model.initial.spin;
   listed["t"] = t;
+  listed["made_from"] = tasks::madeFrom(loaded.value.scene);
   return py::make_tuple(arrayOf(still.image, transparent), listed);
 }
 
@@ -115,7 +117,13 @@ py::list renderVideos(const LoadedScene& loaded, const std::string& output, bool
     raiseStopped(result.outcome, request.scene_name);
   std::vector<tasks::OutputEntry> entries;
   for (const media::VideoFile& f : result.files)
-    entries.push_back({f.path, tasks::OutputKind::Video, stem, f.role, f.spin, {}});
+    entries.push_back({f.path,
+                       tasks::OutputKind::Video,
+                       stem,
+                       f.role,
+                       f.spin,
+                       {},
+                       tasks::madeFrom(loaded.value.scene)});
   (void)tasks::recordOutputs(entries);  // as the command line lists them
   py::list files;
   for (const media::VideoFile& f : result.files) {
@@ -171,7 +179,8 @@ PYBIND11_MODULE(_draw, m) {
           (void)tasks::recordOutputs(
               {{path, tasks::OutputKind::Still, (*still)["scene"].cast<std::string>(),
                 (*still)["view"].cast<std::string>(), (*still)["spin"].cast<double>(),
-                (*still)["t"].cast<double>()}});
+                (*still)["t"].cast<double>(),
+                still->contains("made_from") ? (*still)["made_from"].cast<std::string>() : ""}});
       },
       py::arg("path"), py::arg("array"), py::arg("still") = py::none());
   py::list presets;

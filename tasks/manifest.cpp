@@ -25,6 +25,7 @@ nlohmann::json toJson(const OutputEntry& e) {
   j["role"] = e.role;
   j["spin"] = e.spin ? nlohmann::json(*e.spin) : nlohmann::json(nullptr);
   j["t"] = e.t ? nlohmann::json(*e.t) : nlohmann::json(nullptr);
+  if (!e.made_from.empty()) j["made_from"] = e.made_from;
   return j;
 }
 
@@ -39,6 +40,8 @@ std::optional<OutputEntry> fromJson(const nlohmann::json& j) {
   e.role = j.value("role", "");
   if (j.contains("spin") && j["spin"].is_number()) e.spin = j["spin"].get<double>();
   if (j.contains("t") && j["t"].is_number()) e.t = j["t"].get<double>();
+  if (j.contains("made_from") && j["made_from"].is_string())
+    e.made_from = j["made_from"].get<std::string>();
   return e;
 }
 

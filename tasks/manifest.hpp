@@ -35,6 +35,10 @@ struct OutputEntry {
   std::string role;
   std::optional<double> spin;  ///< rad/s, of the run shown (videos, stills)
   std::optional<double> t;     ///< s, of a still
+  /// The scene it was made from (tasks::madeFrom: its content and the values put in), so that
+  /// the report can tell a video or figure of an earlier version of the scene from one of the
+  /// run it shows; "" when not known.
+  std::string made_from = {};
 };
 
 inline constexpr const char* kManifestName = "rattleback-manifest.json";

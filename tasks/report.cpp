@@ -85,6 +85,8 @@ struct SceneFiles {
   std::vector<std::string> more_runs;
   // Stills' captions from the manifest (file name → "oblique view, t = 1 s, spun −4 rad/s").
   std::map<std::string, std::string> captions;
+  // The scene each file was made from, as the manifest says (tasks::madeFrom), where it says.
+  std::map<std::string, std::string> made_from;
   bool has(const std::string& suffix) const { return by_suffix.count(suffix) > 0; }
   const std::string& at(const std::string& suffix) const { return by_suffix.at(suffix); }
 };
@@ -482,6 +484,7 @@ std::set<std::string> placeListed(const fs::path& dir, Folder& folder) {
   for (const OutputEntry& e : entries) {
     if (!fs::is_regular_file(dir / e.file, ec)) continue;  // since removed
     if (e.kind == OutputKind::Still) folder.scenes[e.scene].captions[e.file] = stillCaption(e);
+    if (!e.made_from.empty()) folder.scenes[e.scene].made_from[e.file] = e.made_from;
     if (e.kind == OutputKind::Telemetry) {
       runs[e.scene].push_back(e.file);
       placed.insert(e.file);
@@ -797,6 +800,32 @@ bool copyPlayerBundle(const fs::path& dir) {
   return out->commit().ok();
 }
 
+// The videos, stills, figures and analyses shown for a scene that were made from another
+// version of it than its run (the file edited since, or other values put in), named above
+// them: a teacher edited a scene and ran simulate again, and the page showed the old videos
+// and stills beside the new run's numbers, with nothing said.
+void writeOtherVersions(std::ostream& out, const SceneFiles& f,
+                        const std::optional<nlohmann::json>& run) {
+  const std::string run_made_from = run ? madeFrom(*run) : "";
+  if (run_made_from.empty()) return;
+  std::set<std::string> shown(f.more_videos.begin(), f.more_videos.end());
+  shown.insert(f.more_stills.begin(), f.more_stills.end());
+  for (const auto& [suffix, file] : f.by_suffix)
+    if (suffix != ".csv" && suffix != ".csv.json") shown.insert(file);
+  std::vector<std::string> other;
+  for (const std::string& file : shown)
+    if (const auto it = f.made_from.find(file);
+        it != f.made_from.end() && it->second != run_made_from)
+      other.push_back(file);
+  if (other.empty()) return;
+  out << "<p class=\"warning\">⚠ Made from another version of this scene than the run measured "
+         "here (its file edited since, or other values put in), so their pictures and numbers "
+         "may not match the run's: ";
+  for (std::size_t i = 0; i < other.size(); ++i)
+    out << (i ? ", " : "") << "<code>" << escape(other[i]) << "</code>";
+  out << ". Make them again from the scene as it is now.</p>\n";
+}
+
 void writeScene(std::ostream& out, const fs::path& dir, const std::string& name,
                 const SceneFiles& f, bool player) {
   out << "<section id=\"" << escape(name) << "\"><h2>" << escape(name) << "</h2>\n";
@@ -816,6 +845,7 @@ void writeScene(std::ostream& out, const fs::path& dir, const std::string& name,
           *model, analysisSpin(
                       *model, spin.is_number() ? std::optional(spin.get<double>()) : std::nullopt));
     }
+  writeOtherVersions(out, f, run);
   writeVideos(out, f, theory, run);
   if (player) {
     // The averaged theory's forecast first reversal, for the player's n(t) plot

@@ -125,6 +125,38 @@ std::string fingerprintOf(const std::vector<std::string>& texts) {
   return hex;
 }
 
+namespace {
+
+std::string madeFromParts(const std::string& content_fingerprint,
+                          const std::vector<std::pair<std::string, std::string>>& values) {
+  std::vector<std::string> parts = {content_fingerprint};
+  for (const auto& [key, yaml] : values) parts.insert(parts.end(), {"\n", key, "=", yaml});
+  return fingerprintOf(parts);
+}
+
+}  // namespace
+
+std::string madeFrom(const scene::Loaded& scene) {
+  std::vector<std::pair<std::string, std::string>> values;
+  for (const scene::KeyValue& kv : scene.values) values.emplace_back(kv.key, kv.yaml);
+  return madeFromParts(fingerprintOf({scene.content}), values);
+}
+
+std::string madeFrom(const nlohmann::json& sidecar) {
+  if (!sidecar.is_object()) return "";
+  const auto content = sidecar.find("scene_fingerprint");
+  if (content == sidecar.end() || !content->is_string()) return "";
+  std::vector<std::pair<std::string, std::string>> values;
+  if (const auto list = sidecar.find("scene_values"); list != sidecar.end() && list->is_array())
+    for (const nlohmann::json& kv : *list) {
+      if (!kv.is_object() || !kv.contains("key") || !kv.contains("value") ||
+          !kv["key"].is_string() || !kv["value"].is_string())
+        return "";
+      values.emplace_back(kv["key"].get<std::string>(), kv["value"].get<std::string>());
+    }
+  return madeFromParts(content->get<std::string>(), values);
+}
+
 std::string sceneFingerprint(const std::string& path) {
   const auto text = scene::readSceneFile(path);
   return text ? fingerprintOf({scene::yamlContent(text.value())}) : "";  // as Loaded::content

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/loader.hpp"
 #include "sim/model.hpp"
 #include "sim/rollout.hpp"
 
@@ -32,6 +33,12 @@ nlohmann::json warningsJson(const std::vector<RunWarning>& warnings);
 
 /// FNV-1a (64 bits) of the texts in turn, as 16 hex digits: a fingerprint of content.
 std::string fingerprintOf(const std::vector<std::string>& texts);
+/// Which scene an output was made from, as a fingerprint: the scene's content as read and the
+/// values put in over it (--set, with_values), in order. The same from a run's sidecar
+/// (scene_fingerprint, scene_values), or "" when it lacks them.
+std::string madeFrom(const scene::Loaded& scene);
+std::string madeFrom(const nlohmann::json& sidecar);
+
 /// The fingerprint of a scene file's content (scene::yamlContent: comments and layout do not
 /// count), or "" when the file cannot be read.
 std::string sceneFingerprint(const std::string& path);

@@ -1955,6 +1955,59 @@ TEST(Report, AnEditedSceneGetsNoPlayer) {
   }
 }
 
+// Stills and figures made from another version of the scene than the run shown are named
+// above them (a teacher edited a scene, simulated it again, and the page showed the old still
+// and video beside the new numbers with nothing said); those of the same version are not, nor
+// are a still and a run that differ only in options that do not change the scene (--t, the
+// run's --duration).
+TEST(Report, PicturesOfAnotherVersionOfTheSceneAreNamed) {
+  const fs::path dir = emptyDir("versions");
+  const fs::path yaml = dir / "mine.yaml";
+  fs::copy_file(scene("rattleback"), yaml);
+  const std::string out = (dir / "o").string();
+  const std::string page = out + "/index.html";
+  ASSERT_EQ(
+      rattleback("still " + yaml.string() + " --t 1 -q -o " + out + "/mine-oblique.png").status, 0);
+  ASSERT_EQ(rattleback("simulate " + yaml.string() + " --duration 0.5 -q -o " + out +
+                       "/mine.csv --plot " + out)
+                .status,
+            0);
+  ASSERT_EQ(rattleback("report " + out + " -q").status, 0);
+  EXPECT_EQ(readText(page).find("Made from another version"), std::string::npos);
+  // The file edited, the run made again without its figures: the still and the old figures
+  // are of the earlier version.
+  std::string text = readText(yaml);
+  text.replace(text.find("s: 0.03"), 7, "s: 0.02");
+  std::ofstream(yaml) << text;
+  ASSERT_EQ(
+      rattleback("simulate " + yaml.string() + " --duration 0.5 -q -o " + out + "/mine.csv").status,
+      0);
+  ASSERT_EQ(rattleback("report " + out + " -q").status, 0);
+  std::string html = readText(page);
+  const auto note = html.find("<p class=\"warning\">⚠ Made from another version of this scene");
+  ASSERT_NE(note, std::string::npos);
+  const std::string said = html.substr(note, html.find("</p>", note) - note);
+  EXPECT_NE(said.find("<code>mine-oblique.png</code>"), std::string::npos) << said;
+  EXPECT_NE(said.find("<code>mine-spin.png</code>"), std::string::npos) << said;
+  // Drawn again from the edited file, the still is of the run's version; a value put in makes
+  // another.
+  ASSERT_EQ(rattleback("still " + yaml.string() + " -q -o " + out + "/mine-oblique.png").status, 0);
+  ASSERT_EQ(rattleback("simulate " + yaml.string() + " --duration 0.5 -q -o " + out +
+                       "/mine.csv --plot " + out)
+                .status,
+            0);
+  ASSERT_EQ(rattleback("report " + out + " -q").status, 0);
+  EXPECT_EQ(readText(page).find("Made from another version"), std::string::npos);
+  ASSERT_EQ(rattleback("simulate " + yaml.string() + " --duration 0.5 -q -o " + out +
+                       "/mine.csv --plot " + out + " --set body.mass=0.07")
+                .status,
+            0);
+  ASSERT_EQ(rattleback("report " + out + " -q").status, 0);
+  html = readText(page);
+  EXPECT_NE(html.find("Made from another version"), std::string::npos);
+  EXPECT_NE(html.find("<code>mine-oblique.png</code>. Make them again"), std::string::npos);
+}
+
 // Why a run gets no player is said as it is: a scene edited into one that no longer loads has
 // changed (it had been passed over in silence), and a scene as it ran that this rattleback no
 // longer loads says so with its error, not that it has changed (here the sidecar's values put
