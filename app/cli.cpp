@@ -139,7 +139,7 @@ void defineStill(CLI::App& c, Cli& cli) {
   c.add_option("--t,--time", st.t, "Simulated time of the frame, s (default 0)");
   videoOptions(c, st.overrides, cli.still_size);
   setOption(c, cli.still_set);
-  c.add_flag("--no-readouts", st.no_readouts, "No time, spin or inset plot");
+  c.add_flag("--no-readouts", st.no_readouts, "No time, spin, inset plot or floor scale");
   c.add_flag("--transparent", st.transparent,
              "PNG with alpha for figures and slides: the body and its shadow over nothing (no "
              "floor, background or read-outs)");

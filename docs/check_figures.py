@@ -95,7 +95,7 @@ CLAIMS = [
       lambda r: r.analyze("rattleback")["frequencies_hz"]["pitch"]]),
     ("README.md", "# first reversal «2.3665» s",
      [lambda r: r.simulate("rattleback")["first_reversal_s"]]),
-    ("docs/index.md", "spun clockwise at 5 rad/s; at «2.37» s it stops rocking and spins back",
+    ("docs/index.md", "its rocking grows, passes zero at «2.37» s, and it spins back",
      [lambda r: r.simulate("rattleback")["first_reversal_s"]]),
     ("docs/commands.md", "first reversal «2.3665» s (spin -5 rad/s changed sign)",
      [lambda r: r.simulate("rattleback")["first_reversal_s"]]),

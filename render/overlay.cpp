@@ -156,6 +156,29 @@ int insetTop(int image_height) {
   return image_height - insetHeight(image_height) - insetMargin(image_height);
 }
 
+std::string lengthText(double metres) {
+  char text[32];
+  // Squares are 1, 2 or 5 × 10ⁿ m in float (0.01f is 0.0099999998): %g's six digits drop the
+  // float's last bits, and the unit is chosen with as much room.
+  const double m = metres * (1 + 1e-6);
+  if (m >= 1)
+    std::snprintf(text, sizeof text, "%g m", metres);
+  else if (m >= 0.01)
+    std::snprintf(text, sizeof text, "%g cm", metres * 100);
+  else
+    std::snprintf(text, sizeof text, "%g mm", metres * 1000);
+  return text;
+}
+
+void drawScaleLabel(Image& image, Overlay& font, const std::string& text) {
+  const int pad = font.lineHeight() / 2;
+  const int margin = insetMargin(image.height);
+  const int w = font.width(text) + 2 * pad, h = font.lineHeight() + 2 * pad;
+  const int x0 = margin, y1 = image.height - margin;
+  fillRect(image, x0, y1 - h, x0 + w, y1, {255, 255, 255, 200});
+  font.text(image, x0 + pad, y1 - pad - font.lineHeight() / 4, text, {40, 40, 40, 255});
+}
+
 void drawSpinInset(Image& image, Overlay& font, std::span<const std::array<float, 2>> history,
                    double duration, double range) {
   char label[64];

@@ -48,6 +48,12 @@ void drawLine(Image& image, float x0, float y0, float x1, float y1, float width,
 /// The top row of the inset in a frame of this height (it sits in the bottom-right corner).
 int insetTop(int image_height);
 
+/// A length as a caption gives it: "2 cm", "5 mm", "1 m" (the unit that makes it at least 1).
+std::string lengthText(double metres);
+
+/// One line in a box at the bottom left, level with the inset's bottom (the floor's scale).
+void drawScaleLabel(Image& image, Overlay& font, const std::string& text);
+
 /// The inset: n(t) so far against a fixed time axis [0, duration] and spin axis ±range.
 void drawSpinInset(Image& image, Overlay& font, std::span<const std::array<float, 2>> history,
                    double duration, double range);

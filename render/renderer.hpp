@@ -19,6 +19,11 @@ namespace render {
 /// Frames with a side shorter than this carry no title, read-outs or inset, pixels.
 inline constexpr int kSmallestSideForReadouts = 180;
 
+/// The floor's checker square, m, for a body of these half extents (m): 1, 2 or 5 × 10ⁿ, about
+/// a fifth of its half length; four times that where the floor is seen at 10° (front, side:
+/// `fogged`), whose squares would otherwise show as stripes.
+float floorSquare(const Eigen::Vector3f& half_extent, bool fogged);
+
 class Renderer {
  public:
   /// A renderer owns an OpenGL context, made current (and put back) around each of its calls,

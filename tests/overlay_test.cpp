@@ -4,6 +4,8 @@
 // read-outs draw — those where a still and the same still with --no-readouts differ — must
 // each match the golden within one step per channel (text and lines are drawn on the CPU, the
 // same on any machine but for that step).
+#include "render/overlay.hpp"
+
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -16,6 +18,7 @@
 #include <vector>
 
 #include "render/image_io.hpp"
+#include "render/renderer.hpp"
 #include "render_support.hpp"
 
 namespace fs = std::filesystem;
@@ -159,5 +162,44 @@ TEST(Overlay, ReadoutsFitPortraitAndLandscapeFrames) {
       }
     EXPECT_GT(drawn, 100) << size << ": no read-outs drawn";
     EXPECT_EQ(on_edge, 0) << size << ": read-outs reach the edge of the frame";
+  }
+}
+
+// The floor's scale is said in the unit that makes it a whole number of at least 1 (the squares
+// are 1, 2 or 5 × 10ⁿ m, held in float: 0.01f is 0.0099999998, which read "10 mm").
+TEST(Overlay, TheFloorsScaleIsSaidInItsUnit) {
+  EXPECT_EQ(render::lengthText(0.01f), "1 cm");
+  EXPECT_EQ(render::lengthText(0.02f), "2 cm");
+  EXPECT_EQ(render::lengthText(0.05f), "5 cm");
+  EXPECT_EQ(render::lengthText(0.5f), "50 cm");
+  EXPECT_EQ(render::lengthText(0.005f), "5 mm");
+  EXPECT_EQ(render::lengthText(0.001f), "1 mm");
+  EXPECT_EQ(render::lengthText(1.0f), "1 m");
+  EXPECT_EQ(render::lengthText(2.0f), "2 m");
+}
+
+// A longer body is drawn as large as the default one (each view frames its body), so the floor's
+// scale is what tells them apart (a teacher's trial: bodies of 20, 24.5 and 40 cm were all
+// 262 pixels long): the square follows the body's size in steps of 1, 2, 5, and every still with
+// read-outs says it, in a box in the bottom-left corner.
+TEST(Overlay, AStillSaysItsFloorsScale) {
+  // A fifth of the half length rounded down to 1, 2 or 5 × 10ⁿ m: 9.6 cm gives 1 cm squares,
+  // 28.8 cm 5 cm, and front and side four times deeper.
+  EXPECT_FLOAT_EQ(render::floorSquare({0.096f, 0.03f, 0.02f}, false), 0.01f);
+  EXPECT_FLOAT_EQ(render::floorSquare({0.288f, 0.09f, 0.06f}, false), 0.05f);
+  EXPECT_FLOAT_EQ(render::floorSquare({0.288f, 0.09f, 0.06f}, true), 0.2f);
+  EXPECT_FLOAT_EQ(render::floorSquare({0.03f, 0.2f, 0.02f}, false), 0.02f);  // along y
+  for (const char* view : {"oblique", "above", "front", "side", "follow"}) {
+    Twins t;
+    ASSERT_TRUE(
+        twins(std::string("still scenes/rattleback.yaml --size 640x360 --view ") + view, t));
+    long corner = 0, all = 0;
+    for (int y = 0; y < t.with.height; ++y)
+      for (int x = 0; x < t.with.width; ++x) {
+        const bool drawn = t.drawn[static_cast<std::size_t>(y) * t.with.width + x];
+        all += drawn;
+        corner += drawn && y >= t.with.height * 3 / 4 && x < t.with.width / 3;
+      }
+    EXPECT_GT(corner, 1000) << view << " of " << all;
   }
 }
