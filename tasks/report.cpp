@@ -995,9 +995,12 @@ std::string urlPath(const std::string& name) {
 rb::Result<ReportPage> writeReport(const std::string& folder_path) {
   const fs::path dir = folder_path;
   std::error_code ec;
+  // A name that is not there is said as such ("not a folder" read as if it were a file; a
+  // teacher's trial).
   if (!fs::is_directory(dir, ec))
-    return rb::Error{
-        "", folder_path + ": not a folder (give the folder the runs wrote into, e.g. out)"};
+    return rb::Error{"", folder_path +
+                             (fs::exists(dir, ec) ? ": not a folder" : ": no such folder") +
+                             " (give the folder the runs wrote into, e.g. out)"};
   // `report` takes a folder, not -o: the way out of a folder it cannot write in says so.
   const rb::OutputNamedBy naming("rattleback report", "a folder");
   Folder folder;

@@ -600,17 +600,38 @@ TEST(Cli, TooManyRowsNameTheDurationUnlessARateWasGiven) {
 
 // -o naming a folder says the way out, as other output errors do (it said only "o: is a
 // folder, not a file"; a new user's trial).
+// A still or a video into a folder with the format's name is refused so too, before the work:
+// it was drawn, then failed to be moved into place with exit 4 (a teacher's trial).
 TEST(Cli, AnOutputThatIsAFolderSaysTheWayOut) {
   const fs::path dir = emptyDir("output-folder");
-  for (const char* command : {"simulate", "analyze"}) {
+  for (const auto& [command, folder] : {std::pair{"simulate", dir},
+                                        {"analyze", dir},
+                                        {"still", dir / "x.png"},
+                                        {"render --duration 0.1", dir / "x.mp4"}}) {
+    fs::create_directories(folder);
     const Result r =
-        rattleback(std::string(command) + " " + scene("rattleback") + " -q -o " + dir.string());
+        rattleback(std::string(command) + " " + scene("rattleback") + " -q -o " + folder.string());
     EXPECT_EQ(r.status, 2) << command;
-    EXPECT_EQ(r.err, dir.string() +
+    EXPECT_EQ(r.err, folder.string() +
                          ": is a folder, not a file (give -o a file's name, e.g. one "
                          "in that folder)\n")
         << command;
   }
+}
+
+// report of a name that is not there says so, and of a file, that it is not a folder (both
+// read "not a folder"; a teacher's trial).
+TEST(Report, AMissingFolderIsSaidToBeMissing) {
+  const fs::path dir = emptyDir("report-missing");
+  std::ofstream(dir / "afile") << "x";
+  const Result missing = rattleback("report " + (dir / "nonexist").string());
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_EQ(missing.err, (dir / "nonexist").string() +
+                             ": no such folder (give the folder the runs wrote into, e.g. out)\n");
+  const Result file = rattleback("report " + (dir / "afile").string());
+  EXPECT_EQ(file.status, 2);
+  EXPECT_EQ(file.err, (dir / "afile").string() +
+                          ": not a folder (give the folder the runs wrote into, e.g. out)\n");
 }
 
 // An analysis written as text under a name of the user's is linked on the page: its scene's

@@ -103,6 +103,13 @@ inline std::string cannotWriteIn(const std::string& path, int error) {
 inline Status checkExtension(const std::string& output, const std::string& wanted,
                              const std::string& format, bool base_allowed) {
   if (output.empty()) return {};
+  // A folder of that name is refused here, before the work, as the tables' writer refuses it
+  // (a still into a folder named x.png was drawn, then failed to be moved into place: exit 4
+  // after the work, for a mistake in the input; a teacher's trial).
+  std::error_code ec;
+  if (std::filesystem::is_directory(output, ec))
+    return Status::fail(output + ": is a folder, not a file (give " + output_named_by +
+                        " a file's name, e.g. one in that folder)");
   std::string ext = std::filesystem::path(output).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return std::tolower(c); });
