@@ -311,8 +311,24 @@ void writeMoreRuns(std::ostream& out, const fs::path& dir, const SceneFiles& f) 
         file_note = "<b>another file</b>: <code>" + escape(stringOr(field(*run, "scene"), file)) +
                     "</code> (the main run's: <code>" + escape(main_named) + "</code>)<br>";
     }
+    // Its own figures (simulate --plot names them after its table), where they are: the spin's
+    // shown, the others linked (a teacher's trial: a run spun the other way was a row of text,
+    // its four figures listed in the manifest and nowhere on the page).
+    std::string thumb, links;
+    std::error_code ec;
+    const std::string stem = fs::path(csv).stem().string();
+    for (const std::string suffix : kPlotSuffixes) {
+      const std::string png = stem + suffix;
+      if (!fs::is_regular_file(dir / png, ec)) continue;
+      if (suffix == "-spin.png")
+        thumb = "<br><img class=\"thumb\" src=\"" + url(png) + "\" alt=\"" +
+                escape(stem + ": spin n against time") + "\">";
+      links += std::string(links.empty() ? "figures: " : ", ") + "<a href=\"" + url(png) + "\">" +
+               escape(suffix.substr(1, suffix.size() - 5)) + "</a>";
+    }
+    const std::string figures = thumb + (links.empty() ? "" : "<br>" + links);
     out << "<tr><td><a href=\"" << url(csv) << "\">" << escape(csv) << "</a></td><td>" << file_note
-        << (run ? measuredOf(*run) : "–") << "</td></tr>\n";
+        << (run ? measuredOf(*run) : "–") << figures << "</td></tr>\n";
   }
   out << "</table>\n";
 }
@@ -427,6 +443,7 @@ video,img{max-width:100%;height:auto;background:#eee}figure{margin:0 0 1em}
 table{border-collapse:collapse;margin:1em 0}
 td,th{border:1px solid #ccc;padding:.4em .8em;vertical-align:top;text-align:left}
 .warning{color:#9a3412;font-weight:bold}
+img.thumb{display:block;width:360px;margin:.4em 0}
 )";
 
 // The files of a folder, placed: by scene, the sweeps, and the rest.

@@ -619,6 +619,29 @@ TEST(Cli, AnOutputThatIsAFolderSaysTheWayOut) {
   }
 }
 
+// Another run of a scene shows its own spin figure and links the rest (a teacher's trial: a run
+// spun the other way was a row of text; its figures were in the manifest and nowhere on the
+// page).
+TEST(Report, AnotherRunShowsItsFigures) {
+  const fs::path dir = emptyDir("other-figures");
+  const std::string base = "simulate " + scene("rattleback") + " --duration 0.5 -q --plot " +
+                           dir.string() + " -o " + dir.string();
+  ASSERT_EQ(rattleback(base + "/rattleback.csv").status, 0);
+  ASSERT_EQ(rattleback(base + "/rattleback-ccw.csv --spin 5").status, 0);
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  const std::string html = readText(dir / "index.html");
+  const auto row = html.find("<tr><td><a href=\"rattleback-ccw.csv\">");
+  ASSERT_NE(row, std::string::npos);
+  const std::string cell = html.substr(row, html.find("</tr>", row) - row);
+  EXPECT_NE(cell.find("<img class=\"thumb\" src=\"rattleback-ccw-spin.png\""), std::string::npos)
+      << cell;
+  for (const char* what : {"spin", "energy", "tilt", "normal"})
+    EXPECT_NE(
+        cell.find(std::string("<a href=\"rattleback-ccw-") + what + ".png\">" + what + "</a>"),
+        std::string::npos)
+        << what << ": " << cell;
+}
+
 // report of a name that is not there says so, and of a file, that it is not a folder (both
 // read "not a folder"; a teacher's trial).
 TEST(Report, AMissingFolderIsSaidToBeMissing) {
