@@ -185,6 +185,12 @@ void printText(std::FILE* out, const std::string& scene, const sim::Model& model
                  "WARNING: body.dents cut nothing: they lie wholly outside the body, which is "
                  "the plain paraboloid (move body.dents.at within its top, or remove them)\n");
   std::fprintf(out, "mass             %g kg\n", m.mass);
+  // Its size (a teacher's trial: nothing said how long a body the paraboloid's numbers make),
+  // and a mass no material gives it (59 for 0.059 kg; lengths in cm read as m).
+  std::fprintf(out, "size             %s (length × width × height: the box that holds it)\n",
+               tasks::sizeText(tasks::bodySize(*model.body), unit).c_str());
+  if (const auto implausible = tasks::implausibleMass(*model.body, unit))
+    std::fprintf(out, "WARNING: %s\n", implausible->c_str());
   const Eigen::Vector3d com = clean(m.com, model.body->surface.footprintHalf().maxCoeff()) / unit;
   std::fprintf(out, "centre of mass   (%.6g, %.6g, %.6g) in the shape's frame\n", com.x(), com.y(),
                com.z());

@@ -51,6 +51,7 @@ void printSummary(std::FILE* out, const SimulateArgs& args, const sim::Model& mo
   };
   said("cannot_stand", "WARNING         %s\n");
   said("dents_cut_nothing", "WARNING         %s\n");
+  said("implausible_mass", "WARNING         %s\n");
   const std::string steps = rb::counted(run.steps, "step");
   if (sim::isAdaptive(model.integrator))
     std::fprintf(out, "integrator      %s, tolerance %g, %s (%lld rejected), %g s simulated\n",

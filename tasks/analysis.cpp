@@ -44,6 +44,49 @@ std::string massSourceText(const sim::Body& body) {
   return body.mass_by_cubature ? "continuum (cubature)" : "continuum (closed form)";
 }
 
+Eigen::Vector3d bodySize(const sim::Body& body) {
+  const Eigen::Vector3d box = body.surface.boxHigh() - body.surface.boxLow();
+  return {std::max(box.x(), box.y()), std::min(box.x(), box.y()), box.z()};
+}
+
+std::string sizeText(const Eigen::Vector3d& size_m, double length_unit) {
+  const char* unit = length_unit == 1       ? "m"
+                     : length_unit == 0.01  ? "cm"
+                     : length_unit == 0.001 ? "mm"
+                                            : nullptr;
+  char text[160];
+  const Eigen::Vector3d s = size_m / length_unit;
+  if (unit)
+    std::snprintf(text, sizeof text, "%.3g × %.3g × %.3g %s", s.x(), s.y(), s.z(), unit);
+  else
+    std::snprintf(text, sizeof text, "%.3g × %.3g × %.3g (× %g m)", s.x(), s.y(), s.z(),
+                  length_unit);
+  return text;
+}
+
+std::optional<std::string> implausibleMass(const sim::Body& body, double length_unit) {
+  const Eigen::Vector3d size = bodySize(body);
+  const double box = size.prod();
+  if (!(box > 0) || !(body.mass > 0)) return std::nullopt;
+  const double least = body.mass / box;  // kg/m³: the body fills at most its box
+  char text[400];
+  if (least > 23000) {
+    std::snprintf(text, sizeof text,
+                  "body.mass %g kg in a body of %s is at least %.2g kg/m³, denser than any solid "
+                  "(osmium: 22,590 kg/m³): body.mass is in kg (59 g is 0.059)",
+                  body.mass, sizeText(size, length_unit).c_str(), least);
+    return text;
+  }
+  if (10 * least < 1.2) {
+    std::snprintf(text, sizeof text,
+                  "body.mass %g kg in a body of %s is lighter than air: lengths are in metres "
+                  "unless units: says otherwise (units: {length: 0.01} reads them in cm)",
+                  body.mass, sizeText(size, length_unit).c_str());
+    return text;
+  }
+  return std::nullopt;
+}
+
 RestModes restModes(const sim::Linearisation& at_rest) {
   const double zero = 1e-6 * 2 * M_PI * std::max(at_rest.roll_hz, at_rest.pitch_hz);
   auto mode = [&](double hz, double growth) {
@@ -97,6 +140,9 @@ nlohmann::json analysisJson(const sim::Model& model, double spin) {
   j["mass_properties"] = massSourceText(body);
   j["length_unit_m"] = model.length_unit;
   j["mass"] = m.mass;
+  j["size_m"] = vectorJson(bodySize(body));  // length, width, height
+  const std::optional<std::string> implausible = implausibleMass(body, model.length_unit);
+  j["implausible_mass"] = implausible ? nlohmann::json(*implausible) : nlohmann::json(nullptr);
   j["com"] = vectorJson(clean(m.com, size));
   j["inertia"] = matrixJson(m.inertia);
   j["principal_moments"] = vectorJson(m.principal);

@@ -30,6 +30,18 @@ std::optional<double> dentsCutShare(const sim::Body& body);
 /// Where the mass properties came from (body.mass_properties): scene, grid or continuum.
 std::string massSourceText(const sim::Body& body);
 
+/// The body's size: the box that holds it, length (the longer horizontal side), width, height,
+/// m.
+Eigen::Vector3d bodySize(const sim::Body& body);
+/// The size as people read it, in the file's unit: "20 × 6.06 × 2.55 cm".
+std::string sizeText(const Eigen::Vector3d& size_m, double length_unit);
+/// A mass that no material gives a body of this size, said with the likely slip (a mass typed
+/// in grams, lengths in centimetres read as metres for want of `units:`), or nothing. The
+/// body fills at most its box, so mass / box volume is the least its density can be: above
+/// 23,000 kg/m³ it is denser than any solid (osmium, 22,590 kg/m³); a body that fills even a
+/// tenth of its box and is lighter than air (1.2 kg/m³) cannot stand on a floor.
+std::optional<std::string> implausibleMass(const sim::Body& body, double length_unit);
+
 /// A rocking mode of the body upright at rest: its frequency, or none where it grows without
 /// rocking (a body that cannot stand topples along it), and its growth rate, 1/s.
 struct RestMode {

@@ -78,6 +78,9 @@ std::vector<RunWarning> runWarnings(const sim::Model& model, const sim::RunSumma
     w.push_back({"cannot_stand",
                  "the body cannot stand upright (its CM is above a radius of curvature at the rest "
                  "contact; `rattleback analyze` says by how much)"});
+  // A mass no material gives a body of this size: a slip of units, as analyze warns.
+  if (const auto implausible = implausibleMass(*model.body, model.length_unit))
+    w.push_back({"implausible_mass", *implausible});
   // As analyze warns too: dents left outside a body made smaller make no rattleback.
   if (dentsCutShare(*model.body) == 0.0)
     w.push_back({"dents_cut_nothing",

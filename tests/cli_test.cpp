@@ -390,6 +390,58 @@ TEST(Cli, AnalyzeJsonHasTheSeedCounts) {
   EXPECT_FALSE(j["rest_stable"].get<bool>());  // SPEC: the seed's body cannot stand
 }
 
+// analyze says the body's size (a teacher's trial: nothing said how long a body the
+// paraboloid's numbers make). Eq. P1.1 with q = 0 at the top z = top: y = ±√(2a(top + a)/s),
+// x = ±√(2a(top + a)/p), and the height top + a; the default body (cm: a 1, p 0.5, s 0.03,
+// top 0.5) is 20 × 2√6 × 1.5 cm.
+TEST(Cli, AnalyzeSaysTheBodysSize) {
+  const Result r = rattleback("analyze " + scene("rattleback") + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json size = nlohmann::json::parse(r.out)["size_m"];
+  ASSERT_EQ(size.size(), 3u);
+  EXPECT_NEAR(size[0].get<double>(), 0.20, 1e-12);
+  EXPECT_NEAR(size[1].get<double>(), 0.02 * std::sqrt(6.0), 1e-12);
+  EXPECT_NEAR(size[2].get<double>(), 0.015, 1e-12);
+  const Result text = rattleback("analyze " + scene("rattleback"));
+  EXPECT_NE(text.out.find("size             20 × 4.9 × 1.5 cm (length × width × height"),
+            std::string::npos)
+      << text.out;
+}
+
+// A mass no material gives a body of its size is said, with the likely slip, by analyze and
+// simulate (and in the sidecar's warnings): grams typed as kilograms (59 for 0.059: at least
+// 4e5 kg/m³, where osmium is 22,590), or lengths in cm read as metres for want of units:
+// (a 20 m body of 59 g, lighter than air). The shipped scenes draw no such warning.
+TEST(Cli, AMassNoMaterialGivesIsSaid) {
+  const Result grams = rattleback("analyze " + scene("rattleback") + " --set body.mass=59");
+  ASSERT_EQ(grams.status, 0) << grams.err;
+  EXPECT_NE(grams.out.find("WARNING: body.mass 59 kg in a body of 20 × 4.9 × 1.5 cm is at least "
+                           "4e+05 kg/m³, denser than any solid"),
+            std::string::npos)
+      << grams.out;
+  const fs::path metres = tempFile("no-units.yaml");
+  std::string text = readText(scene("rattleback"));
+  text.replace(text.find("units: {length: 0.01}"), 21, "");
+  std::ofstream(metres) << text;
+  const Result air = rattleback("analyze " + metres.string());
+  EXPECT_NE(air.out.find("body.mass 0.059 kg in a body of 20 × 4.9 × 1.5 m is lighter than air"),
+            std::string::npos)
+      << air.out;
+  const fs::path csv = tempFile("grams.csv");
+  const Result run = rattleback("simulate " + scene("rattleback") +
+                                " --set body.mass=59 --duration 0.1 -o " + csv.string());
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("WARNING         body.mass 59 kg"), std::string::npos) << run.out;
+  const nlohmann::json sidecar = nlohmann::json::parse(readText(csv.string() + ".json"));
+  EXPECT_EQ(sidecar["result"]["warnings"][0]["code"], "implausible_mass");
+  for (const char* shipped :
+       {"rattleback", "kane-levinson", "kane-levinson-long", "seed-flip-ccw", "seed-flip-cw"}) {
+    const Result fine = rattleback("analyze " + scene(shipped));
+    EXPECT_EQ(fine.out.find("denser than any solid"), std::string::npos) << shipped;
+    EXPECT_EQ(fine.out.find("lighter than air"), std::string::npos) << shipped;
+  }
+}
+
 // The rolling model has no contact spring, so its largest stable step is infinite: JSON has
 // no infinity, and it is written as null (this was `inf`, which no JSON reader accepts). The
 // default body is predicted to prefer counter-clockwise (SPEC: clockwise reverses).
