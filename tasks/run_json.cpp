@@ -7,6 +7,7 @@
 
 #include "scene/loader.hpp"
 #include "sim/analysis.hpp"
+#include "sim/reversals.hpp"
 #include "tasks/analysis.hpp"
 #include "tasks/outcome.hpp"
 
@@ -93,6 +94,27 @@ std::vector<RunWarning> runWarnings(const sim::Model& model, const sim::RunSumma
     w.push_back({"upright_start",
                  "it started exactly upright, initial.tilt [0, 0]: with nothing to rock, no spin "
                  "reverses; try tilt: [0.5, 0.5]"});
+  // A spin that ended the other way with no reversal counted reads as a contradiction (a
+  // teacher's trial: "first reversal none" for n from −3 to +0.017 rad/s, and for a dropped
+  // body from −5 to +5.26): why none was counted (docs/physics.md P7).
+  if (!run.first_reversal_s && run.first.spin != 0 && run.last.spin * run.first.spin < 0) {
+    const double threshold = sim::ReversalDetector::kFraction * std::abs(run.first.spin);
+    char text[400];
+    if (std::abs(run.last.spin) <= threshold)
+      std::snprintf(text, sizeof text,
+                    "n ended the other way (%+.3g rad/s, from %+.3g) but is not a reversal yet: "
+                    "it must reach 1 %% of the initial spin (%.2g rad/s) the new way; run "
+                    "longer to see",
+                    run.last.spin, run.first.spin, threshold);
+    else
+      std::snprintf(text, sizeof text,
+                    "n ended the other way (%+.3g rad/s, from %+.3g) but no crossing counted as a "
+                    "reversal: one in the air or within %g s of a bounce counts as none, and one "
+                    "that n takes back within %g s (docs/physics.md P7)",
+                    run.last.spin, run.first.spin, sim::ReversalDetector::kSettleTime,
+                    sim::ReversalDetector::kHoldTime);
+    w.push_back({"sign_changed_uncounted", text});
+  }
   // Beyond 0.1 % the reversal time is off too (2.19 s against 1.844 s at dt 0.02, where the
   // energy fell by 9.9 %); rk4 at the shipped steps keeps it within 1e-8.
   const double change = (run.last.energy - run.first.energy) / std::abs(run.first.energy);

@@ -390,6 +390,23 @@ TEST(Cli, AnalyzeJsonHasTheSeedCounts) {
   EXPECT_FALSE(j["rest_stable"].get<bool>());  // SPEC: the seed's body cannot stand
 }
 
+// A spin that ended the other way with no reversal counted says why (a teacher's trial: "first
+// reversal none" for n from −3 to +0.017 rad/s read as a contradiction): here n has crossed at
+// 3.137 s and is at +0.0144 at 3.14 s, short of 1 % of 3 rad/s.
+TEST(Cli, ASpinEndedTheOtherWayWithoutAReversalSaysWhy) {
+  const fs::path csv = tempFile("short.csv");
+  const Result r = rattleback("simulate " + scene("rattleback") +
+                              " --set initial.spin=-3 --duration 3.14 -o " + csv.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("first reversal  none in 3.14 s\n                (n ended the other way "
+                       "(+0.0144 rad/s, from -3) but is not a reversal yet: it must reach 1 % of "
+                       "the initial spin (0.03 rad/s) the new way; run longer to see)"),
+            std::string::npos)
+      << r.out;
+  const nlohmann::json sidecar = nlohmann::json::parse(readText(csv.string() + ".json"));
+  EXPECT_EQ(sidecar["result"]["warnings"][0]["code"], "sign_changed_uncounted");
+}
+
 // analyze says the body's size (a teacher's trial: nothing said how long a body the
 // paraboloid's numbers make). Eq. P1.1 with q = 0 at the top z = top: y = ±√(2a(top + a)/s),
 // x = ±√(2a(top + a)/p), and the height top + a; the default body (cm: a 1, p 0.5, s 0.03,
