@@ -50,7 +50,8 @@ render_still "$work/prefix"
 python_still "$work/prefix"
 # The documentation is installed, and the installed --help names where (it named "docs/ in the
 # source", which an installed user does not have).
-for f in share/doc/rattleback/getting-started.md share/doc/rattleback/images/rattleback-oblique.png; do
+for f in share/doc/rattleback/getting-started.md share/doc/rattleback/images/rattleback-oblique.png \
+         share/doc/rattleback/examples/tour.ipynb; do
   [ -e "$work/prefix/$f" ] || { echo "FAIL: the install lacks $f"; exit 1; }
 done
 help=$("$work/prefix/bin/rattleback" --help)
