@@ -758,9 +758,10 @@ class Player {
 
   // How the compositor samples the canvas onto the page: nearest (image-rendering: pixelated)
   // where the drawing buffer is one to one with the device pixels the canvas covers, else as
-  // usual (filtered). Chromium compositing on the CPU draws a WebGL canvas upside down (its rows
-  // are read back bottom first), and Skia samples a flipped image with a bilinear filter unless
-  // told nearest: the same picture one to one, for 2–3 ms more of the GPU process's CPU a frame.
+  // usual (filtered). Chromium compositing on the CPU draws a WebGL canvas through a transform
+  // (most likely a flip: its rows are read back bottom first), and Skia samples it with a
+  // bilinear filter even one to one at a whole pixel unless told nearest: the same picture, for
+  // 2–3 ms more of the GPU process's CPU a follow frame (docs/speed.md, eighth session).
   // A box of fractional CSS pixels (the stage's 16:9 of its column's width) is within a device
   // pixel of the buffer: nearest there shows every pixel as drawn but for a row or column
   // dropped or doubled at most, where a filter would smear them all by the fraction. Scaled
