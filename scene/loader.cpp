@@ -62,13 +62,34 @@ class MapReader {
         const std::optional<std::string> nearest = rb::nearestWord(key, words);
         throw Failure{line, join(path_, key),
                       "is not a known key" + (nearest ? "; did you mean " + *nearest + "?" : "") +
-                          " (known here: " + names + ")",
+                          misplaced(key, entry.first) + " (known here: " + names + ")",
                       true};
       }
       out_.lines[join(path_, key)] = line;
       present_[key] = entry.second;
       key_lines_[key] = line;
     }
+  }
+
+  // What an unknown key more likely is (a teacher's trial): a number or nothing where a key
+  // stands is a comma inside a value ({dt: 1,0e-4} is dt: 1 and a key 0e-4; [-5,,] an empty
+  // entry), and a key of another map given here is named with its place (spin: at the top
+  // level is initial.spin).
+  std::string misplaced(const std::string& key, const YAML::Node& key_node) const {
+    double number = 0;
+    if (key_node.IsNull() || key == "null" || key == "~")
+      return ": an empty entry, as two commas in a row make";
+    if (YAML::convert<double>::decode(key_node, number))
+      return ": a number where a key stands, as a decimal comma makes ({dt: 1,0e-4} is dt: 1 "
+             "and a key 0e-4; write 1.0e-4)";
+    std::string elsewhere;
+    for (const Key& known : keys())
+      if (nameIn(known.path) == key && parentOf(known.path) != path_)
+        elsewhere += (elsewhere.empty() ? "" : " or ") + std::string(known.path);
+    return elsewhere.empty()
+               ? ""
+               : "; it is " + elsewhere + " (under " +
+                     std::string(parentOf(elsewhere.substr(0, elsewhere.find(' ')))) + ":)";
   }
 
   bool has(const std::string& key) const { return present_.count(key) > 0; }
@@ -110,7 +131,13 @@ class MapReader {
                                    : "must be a list of three numbers") +
                     ", not " +
                     (node->IsSequence() ? "a list of " + std::to_string(node->size())
-                                        : described(*node)));
+                                        : described(*node)) +
+                    // [0.5 0.5] is a list of one word: the commas are missing (a teacher's
+                    // trial).
+                    (node->IsSequence() && node->size() == 1 && (*node)[0].IsScalar() &&
+                             (*node)[0].Scalar().find(' ') != std::string::npos
+                         ? " ('" + (*node)[0].Scalar() + "': separate the numbers with commas)"
+                         : ""));
     for (std::size_t i = 0; i < N; ++i) {
       if constexpr (std::is_same_v<T, int>)
         value[i] = whole((*node)[i], key);
@@ -166,13 +193,32 @@ class MapReader {
     return "empty (the key has no value)";
   }
 
+  // A number written with a unit ("59 g"): the number alone, in the key's unit, which the
+  // table's example gives ("mass: 0.059 (kg)"; a teacher's trial).
+  std::string unitHint(const YAML::Node& node, const std::string& key) const {
+    if (!node.IsScalar()) return "";
+    const std::string text = node.Scalar();
+    double v = 0;
+    const auto space = text.find(' ');
+    if (space == std::string::npos ||
+        !YAML::convert<double>::decode(YAML::Node(text.substr(0, space)), v))
+      return "";
+    const Key* known = findKey(join(path_, key));
+    if (!known || known->unit.empty()) return " (write the number alone)";
+    // Lengths are in the file's unit (units.length), the rest in SI.
+    const std::string unit(known->unit);
+    return " (write the number alone, in " +
+           (unit == "file units" ? std::string("the file's length unit, units.length") : unit) +
+           ")";
+  }
+
   double number(const YAML::Node& node, const std::string& key) const {
     double v = 0;
     // A quoted scalar ("0.5") is a string: its tag is "!" rather than the plain "?".
     if (node.IsScalar() && node.Tag() == "!")
       fail(key, "must be a number, not the quoted string \"" + node.Scalar() + "\"");
     if (!node.IsScalar() || !YAML::convert<double>::decode(node, v))
-      fail(key, "must be a number, not " + described(node));
+      fail(key, "must be a number, not " + described(node) + unitHint(node, key));
     return v;
   }
 
@@ -328,6 +374,13 @@ rb::Error malformedYaml(const std::string& name, const std::string& text,
     }
     start = end + 1;
   }
+  // yaml-cpp's words for a key off its column or a line without its colon say neither (a
+  // teacher's trial: "end of map not found"): the usual causes, where the parser noticed.
+  if (message == e.msg && (e.msg.find("end of map not found") != std::string::npos ||
+                           e.msg.find("illegal map value") != std::string::npos))
+    message +=
+        " (at or just above this line: a key indented unlike its neighbours, or a key "
+        "without its colon, key: value)";
   rb::Error error{"",
                   printable(name + ":" + std::to_string(line) + ": malformed YAML: " + message)};
   error.where = rb::Error::Where{name, line, ""};

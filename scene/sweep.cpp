@@ -41,8 +41,14 @@ std::string rangeValue(double v) {
 
 double number(const YAML::Node& node, const std::string& where, const std::string& what) {
   double v = 0;
-  if (!node.IsDefined() || !node.IsScalar() || node.Tag() == "!" ||
-      !YAML::convert<double>::decode(node, v) || !std::isfinite(v))
+  // Missing is said as missing ({from: -5, to: 5} said "count must be a number"; a teacher's
+  // trial), with what the range needs.
+  if (!node.IsDefined())
+    throw SweepFailure{where + " " + what +
+                       " is required: a range is {from: A, to: B, count: N} (count: how many "
+                       "values, ends included)"};
+  if (!node.IsScalar() || node.Tag() == "!" || !YAML::convert<double>::decode(node, v) ||
+      !std::isfinite(v))
     throw SweepFailure{where + " " + what + " must be a number"};
   return v;
 }

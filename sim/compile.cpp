@@ -10,6 +10,7 @@
 #include "sim/initial.hpp"
 #include "sim/stability.hpp"
 #include "util/format.hpp"
+#include "util/nearest.hpp"
 
 namespace sim {
 namespace {
@@ -21,6 +22,15 @@ std::optional<rb::Error> needFinite(const std::string& key, double v) {
   if (std::isfinite(v)) return std::nullopt;
   return rb::Error{key, "must be a finite number, not " + show(v)};
 }
+// A word that is none of its key's choices, with the nearest when it is a typo of one ("must
+// be points, smooth, rolling or auto, not 'roling'; did you mean rolling?": a teacher's trial).
+template <typename E>
+rb::Error wrongWord(const char* key, const std::string& given) {
+  const std::optional<std::string> nearest = rb::nearestWord(given, rb::namesOf<E>());
+  return rb::Error{key, "must be " + rb::choices<E>() + ", not '" + given + "'" +
+                            (nearest ? "; did you mean " + *nearest + "?" : "")};
+}
+
 std::optional<rb::Error> needPositive(const std::string& key, double v) {
   if (std::isfinite(v) && v > 0) return std::nullopt;
   return rb::Error{key, "must be > 0, not " + show(v)};
@@ -99,23 +109,20 @@ std::optional<rb::Error> checkBody(const BodySpec& b) {
   if (auto e = needPositive("body.grid.dy", b.grid.dy)) return e;
   if (auto e = needPositive("body.grid.dz", b.grid.dz)) return e;
   if (!b.mass_properties.empty() && !rb::parseName<MassSource>(b.mass_properties))
-    return rb::Error{"body.mass_properties",
-                     "must be " + rb::choices<MassSource>() + ", not '" + b.mass_properties + "'"};
+    return wrongWord<MassSource>("body.mass_properties", b.mass_properties);
   if (auto e = needPositive("body.mass", b.mass)) return e;
   return std::nullopt;
 }
 
 std::optional<rb::Error> checkContact(const ContactSpec& c) {
   if (!rb::parseName<ContactModel>(c.model))
-    return rb::Error{"contact.model",
-                     "must be " + rb::choices<ContactModel>() + ", not '" + c.model + "'"};
+    return wrongWord<ContactModel>("contact.model", c.model);
   if (c.model != "rolling")
     if (auto e = needPositive("contact.stiffness", c.stiffness)) return e;
   if (auto e = needNonNegative("contact.damping", c.damping)) return e;
   if (auto e = needNonNegative("contact.friction", c.friction)) return e;
   if (!rb::parseName<FrictionLaw>(c.friction_law))
-    return rb::Error{"contact.friction_law",
-                     "must be " + rb::choices<FrictionLaw>() + ", not '" + c.friction_law + "'"};
+    return wrongWord<FrictionLaw>("contact.friction_law", c.friction_law);
   if (auto e = needPositive("contact.slip_velocity", c.slip_velocity)) return e;
   if (auto e = needNonNegative("contact.air_drag", c.air_drag)) return e;
   return std::nullopt;
@@ -140,8 +147,7 @@ std::optional<rb::Error> checkSimulation(const SimulationSpec& sim) {
           "must lie within 1e-14 … 0.1 (rounding and sense), not " + show(sim.tolerance)};
   }
   if (!sim.integrator.empty() && !rb::parseName<Integrator>(sim.integrator))
-    return rb::Error{"simulation.integrator",
-                     "must be " + rb::choices<Integrator>() + ", not '" + sim.integrator + "'"};
+    return wrongWord<Integrator>("simulation.integrator", sim.integrator);
   const Integrator integrator = !sim.integrator.empty() ? *rb::parseName<Integrator>(sim.integrator)
                                 : has_dt                ? Integrator::Symplectic
                                                         : Integrator::Dopri5;

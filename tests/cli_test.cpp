@@ -793,7 +793,13 @@ TEST(Cli, TwoRunsOfOneSceneKeepTheirOwnFigures) {
   ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
   const std::string page = readText(dir / "index.html");
   EXPECT_NE(page.find("src=\"anna-spin.png\""), std::string::npos);  // the main run's
-  EXPECT_EQ(page.find("src=\"ben-spin.png\""), std::string::npos);
+  // ben's figure is shown once, in its own row under Other runs, not among the main run's.
+  const auto ben = page.find("src=\"ben-spin.png\"");
+  ASSERT_NE(ben, std::string::npos);
+  EXPECT_EQ(page.find("src=\"ben-spin.png\"", ben + 1), std::string::npos);
+  EXPECT_EQ(page.rfind("<img class=\"thumb\" ", ben),
+            ben - std::string("<img class=\"thumb\" ").size());
+  EXPECT_LT(page.find("<h3>Other runs</h3>"), ben);
   // Each run says the values that made its body (each said only the scene's name).
   EXPECT_NE(page.find("values put in: <code>body.mass = 0.07</code>"), std::string::npos);
   EXPECT_NE(page.find("values put in: <code>body.paraboloid.a = 1.3</code>"), std::string::npos);

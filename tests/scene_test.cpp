@@ -38,6 +38,25 @@ struct BadCase {
 
 const BadCase kBadCases[] = {
     {"mass: 0.5", "mass: -1", "7: body.mass must be > 0"},
+    // What people type, said with the likely slip (a teacher's trial).
+    {"model: points,", "model: pionts,",
+     "8: contact.model must be points, smooth, rolling or auto, not 'pionts'; did you mean "
+     "points?"},
+    {"mass: 0.5", "mass: 500 g",
+     "7: body.mass must be a number, not '500 g' (write the number alone, in kg)"},
+    {"top: 2}", "top: 2 cm}",
+     "4: body.paraboloid.top must be a number, not '2 cm' (write the number alone, in the "
+     "file's length unit, units.length)"},
+    {"tilt: [0.0, 0.0]", "tilt: [0.0 0.0]",
+     "9: initial.tilt must be a list of two numbers, not a list of 1 ('0.0 0.0': separate the "
+     "numbers with commas)"},
+    {"dt: 1.0e-5", "dt: 1,0e-5",
+     "10: simulation.0e-5 is not a known key: a number where a key stands, as a decimal comma "
+     "makes"},
+    {"spin: 0.0,", "spin: 0.0,,",
+     "9: initial.null is not a known key: an empty entry, as two commas in a row make"},
+    {"", "spin: 3\n",
+     "12: spin is not a known key; it is initial.spin (under initial:) (known here: units,"},
     {"  mass: 0.5\n", "  mass: 0.5\n  mass_properties: exact\n",
      "8: body.mass_properties must be continuum or grid, not 'exact'"},
     {"shape: paraboloid", "shape: ellipsoid\n  mass_properties: grid",
@@ -238,6 +257,17 @@ TEST(BadScenes, MalformedYamlNamesTheLine) {
   const std::string indented =
       errorFor("units: {length: 0.01}\nbody:\n  shape: paraboloid\n   mass: 1\n");
   EXPECT_EQ(indented.rfind("inline.yaml:4: malformed YAML", 0), 0u) << indented;
+  // yaml-cpp's words ("end of map not found", "illegal map value") get the usual causes (a
+  // teacher's trial): a key indented unlike its neighbours, or one without its colon.
+  for (const std::string& text :
+       {std::string("units: {length: 0.01}\nbody:\n  shape: paraboloid\n mass: 1\n"),
+        std::string("units: {length: 0.01}\nbody:\n  shape paraboloid\n  mass: 1\n")}) {
+    const std::string said = errorFor(text);
+    EXPECT_NE(said.find("(at or just above this line: a key indented unlike its neighbours, or a "
+                        "key without its colon, key: value)"),
+              std::string::npos)
+        << said;
+  }
   // A tab in the indentation is named as such (yaml-cpp says "illegal map value" there).
   const std::string tabbed = errorFor("units: {length: 0.01}\nbody:\n\tshape: paraboloid\n");
   EXPECT_EQ(tabbed.rfind("inline.yaml:3: malformed YAML: a tab in this line's indentation", 0), 0u)

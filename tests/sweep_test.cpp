@@ -216,6 +216,9 @@ TEST(Sweep, ErrorsInTheSweepFileNameFileLineAndKey) {
       // line 1, and every row was refused with exit 0).
       {"base: BASE\nvary:\n  intial.spin: [1, 2]\n",
        "sweep.yaml:3: intial is not a known key; did you mean initial?"},
+      // A missing count is said to be missing (it read "count must be a number").
+      {"base: BASE\nvary:\n  initial.spin: {from: -5, to: 5}\n",
+       "sweep.yaml:3: initial.spin count is required: a range is {from: A, to: B, count: N}"},
       {"base: BASE\nvary:\n  initial.spin: {from: 1, to: 2, count: 0}\n",
        "sweep.yaml:3: initial.spin count must be a whole number from 1 to 1e6"},
       {"base: BASE\nvary:\n  initial.spin: {from: 1, to: 2, count: 3, scale: cubic}\n",

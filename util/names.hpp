@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 namespace rb {
 
@@ -26,6 +27,14 @@ std::optional<E> parseName(std::string_view name) {
   for (const auto& [v, n] : NameTable<E>::entries)
     if (n == name) return v;
   return std::nullopt;
+}
+
+/// The names, in the table's order.
+template <typename E>
+std::vector<std::string_view> namesOf() {
+  std::vector<std::string_view> out;
+  for (const auto& entry : NameTable<E>::entries) out.push_back(entry.second);
+  return out;
 }
 
 /// "a, b or c": the names, for messages.
