@@ -211,8 +211,11 @@ def test_a_saved_still_is_listed_as_the_command_lines_still(tmp_path, default_sc
         "64x48", "-q", "-o", str(tmp_path / "cli.png"))
     outputs = json.loads((tmp_path / "rattleback-manifest.json").read_text())["outputs"]
     by_file = {entry.pop("file"): entry for entry in outputs}
+    # made_from: the scene drawn (its content and values), the same from both.
+    assert len(by_file["py.png"]["made_from"]) == 16
     assert by_file["py.png"] == by_file["cli.png"] == {
-        "kind": "still", "scene": "rattleback", "role": "above", "spin": -4.0, "t": 0.5}
+        "kind": "still", "scene": "rattleback", "role": "above", "spin": -4.0, "t": 0.5,
+        "made_from": by_file["cli.png"]["made_from"]}
     # An image made from an array is no still of a scene: saved, it is not listed.
     rb.Image(np.zeros((48, 64, 3), np.uint8)).save(tmp_path / "drawn.png")
     outputs = json.loads((tmp_path / "rattleback-manifest.json").read_text())["outputs"]
