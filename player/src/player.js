@@ -255,6 +255,12 @@ const STYLE = `
 .rbp-cursor{width:1.5px}
 .rbp-dot{width:6px;height:6px;border-radius:50%}
 .rbp-help{font-size:12px;color:#666;margin-top:6px}
+.rbp-reversal:disabled{opacity:.45;cursor:default}
+.rbp:fullscreen{background:#fff;margin:0;padding:16px;box-sizing:border-box;overflow:auto;align-items:flex-start;flex-wrap:nowrap}
+.rbp:fullscreen .rbp-main{flex:1 1 auto;min-width:0}
+.rbp:fullscreen .rbp-stage{width:min(100%,calc((100vh - 120px) * 16 / 9))}
+.rbp:fullscreen .rbp-side{flex:0 0 300px}
+.rbp:fullscreen .rbp-read{font-size:20px}
 .rbp-missing{padding:10px 12px;border:1px dashed #c9a0a0;border-radius:4px;color:#7a2e2e;background:#fbf4f4;font:14px system-ui,sans-serif;margin:8px 0}
 `;
 
@@ -494,6 +500,15 @@ class Player {
     this.backButton = button('◀|', 'Step back one sample (←)', () => this.step(-1), 'rbp-back');
     this.playButton = button('▶ Play', 'Play / pause (space)', () => this.toggle(), 'rbp-play');
     this.forwardButton = button('|▶', 'Step forward one sample (→)', () => this.step(1), 'rbp-forward');
+    // To the moment the spin passes zero, the picture a lesson stops at (a teacher's trial:
+    // found by stepping with the arrows, or by a click on the plot that lands near it).
+    const reversals = this.run.reversals || [];
+    this.reversalButton = button('⟲ Reversal', reversals.length ? 'Go to the next reversal, where the spin passes zero (R)' : 'No reversal in this run',
+                                 () => this.gotoReversal(), 'rbp-reversal');
+    this.reversalButton.disabled = reversals.length === 0;
+    // Full screen, for a projector: the picture and its read-outs as large as the screen allows.
+    // (Words, not a symbol: the page's fonts may lack the full-screen glyph, drawn as a box.)
+    this.fullButton = button('Full screen', 'Full screen (F; Esc leaves it)', () => this.toggleFullScreen(), 'rbp-full');
     this.slider = el('input', 'rbp-slider');
     this.slider.type = 'range';
     this.slider.min = String(this.t0);
@@ -521,8 +536,8 @@ class Player {
       this.setSpeed(parseFloat(this.speedSelect.value));
       if (!this.speedKeyed) this.root.focus({ preventScroll: true });
     });
-    bar.append(this.backButton, this.playButton, this.forwardButton, this.slider,
-               el('span', 'rbp-label', 'speed'), this.speedSelect);
+    bar.append(this.backButton, this.playButton, this.forwardButton, this.reversalButton, this.slider,
+               el('span', 'rbp-label', 'speed'), this.speedSelect, this.fullButton);
     main.appendChild(bar);
 
     const views = el('div', 'rbp-views');
@@ -545,7 +560,10 @@ class Player {
     this.readTime = el('div', 'rbp-read rbp-time');
     this.readSpin = el('div', 'rbp-read rbp-spin');
     this.readSense = el('div', 'rbp-read rbp-sense');
-    side.append(this.readTime, this.readSpin, this.readSense);
+    // The floor's checker square (the renderer's rule: it follows the body's size, so bodies are
+    // compared by their squares; four times deeper in the front and side views).
+    this.readScale = el('div', 'rbp-read rbp-scale');
+    side.append(this.readTime, this.readSpin, this.readSense, this.readScale);
     // The plot is drawn once; the cursor on it is two elements moved over it (no redrawing).
     const plotBox = el('div', 'rbp-plotbox');
     this.plot = el('canvas', 'rbp-plot');
@@ -556,10 +574,11 @@ class Player {
     side.appendChild(plotBox);
     const nrev = (this.run.reversals || []).length;
     side.appendChild(el('div', 'rbp-help',
-      `${nrev} reversal${nrev === 1 ? '' : 's'} (orange)` +
+      (nrev ? `${nrev} reversal${nrev === 1 ? '' : 's'} (orange)` : 'No reversal in this run') +
       (this.forecast ? ', the averaged theory\'s forecast of the first (violet)' : '') +
       '. Drag: orbit, right-drag: pan, wheel: zoom. ' +
-      'Keys: space play/pause, ← → step one sample (' + formatStep(this.run.t) + ').'));
+      'Keys: space play/pause, ← → step one sample (' + formatStep(this.run.t) + '), ' +
+      'Home / End the start / end, R the next reversal, F full screen.'));
     root.append(main, side);
     c.appendChild(root);
     this.root = root;
@@ -701,6 +720,13 @@ class Player {
       controls.enabled = false;
       controls.enableDamping = false;
       controls.zoomToCursor = false;
+      // Never under the floor, nor inside the body or so far off that it vanishes (a teacher's
+      // trial: orbit went below the floor, zoom into the body or out until nothing showed).
+      controls.maxPolarAngle = 88 * DEG;
+      if (camera.isPerspectiveCamera) {
+        controls.minDistance = 1.2 * this.body.reach;
+        controls.maxDistance = 40 * this.framing.radius;
+      }
       let interacting = false;
       controls.addEventListener('start', () => { interacting = true; });
       controls.addEventListener('end', () => { interacting = false; });
@@ -992,6 +1018,30 @@ class Player {
     if (this.playing) this.pause(); else this.play();
   }
 
+  // Paused at the next reversal after the time shown (a hair after one counts as at it), or the
+  // first after the last.
+  gotoReversal() {
+    const reversals = this.run.reversals || [];
+    if (!reversals.length) return;
+    this.pause();
+    const eps = 1e-9 * Math.max(1, Math.abs(this.tEnd));
+    const next = reversals.find((r) => r > this.time + eps);
+    this.setTime(Math.min(this.tEnd, Math.max(this.t0, next === undefined ? reversals[0] : next)), false);
+  }
+
+  toEnd(end) {
+    this.pause();
+    this.setTime(end ? this.tEnd : this.t0, false);
+  }
+
+  toggleFullScreen() {
+    if (document.fullscreenElement) {
+      if (document.exitFullscreen) document.exitFullscreen();
+    } else if (this.root.requestFullscreen) {
+      this.root.requestFullscreen().catch(() => {});
+    }
+  }
+
   setSpeed(s) {
     if (!(s > 0)) return;
     this.speed = s;
@@ -1189,6 +1239,12 @@ class Player {
       this.step(-1);
     } else if (e.key === 'ArrowRight') {
       this.step(1);
+    } else if (e.key === 'Home' || e.key === 'End') {
+      this.toEnd(e.key === 'End');
+    } else if (e.key === 'r' || e.key === 'R') {
+      this.gotoReversal();
+    } else if (e.key === 'f' || e.key === 'F') {
+      this.toggleFullScreen();
     } else {
       return false;
     }
@@ -1215,10 +1271,12 @@ class Player {
       u.fogFar.value = far;
       u.fogNear.value = Math.min(this.framing.radius, 0.5 * far);
       u.tile.value = 4 * this.tile; // squares 4× deeper show as bands, not stripes
+      this.show(this.readScale, `floor squares ${lengthText(4 * this.tile)}`);
     } else {
       u.fogFar.value = 0;
       u.fogNear.value = 0;
       u.tile.value = this.tile;
+      this.show(this.readScale, `floor squares ${lengthText(this.tile)}`);
       const reachOut = this.camera.isOrthographicCamera ? this.camera.top / this.camera.zoom : 0;
       u.fadeNear.value = Math.max(3 * this.size, 1.5 * reachOut);
       u.fadeFar.value = Math.max(12 * this.size, 6 * reachOut);
@@ -1482,6 +1540,7 @@ class Player {
       position: () => self.points.position.toArray(),
       spin: () => self.spinNow,
       cameraPosition: () => self.camera.position.toArray(),
+      cameraTarget: () => self.activeControls().target.toArray(),
       // Where world point p (m) shows on the canvas: CSS pixels from its top left corner.
       project(p) {
         const v = new Vector3(p[0], p[1], p[2]).project(self.camera);
@@ -1541,6 +1600,16 @@ class Player {
       forecastX: () => (self.forecast ? Math.round(self.plotLayout().x(self.forecast.time)) * self.plotLayout().dpr : null),
     };
   }
+}
+
+// A length as the renderer's read-out gives it (render/overlay.cpp lengthText): "2 cm", "5 mm",
+// "1 m", the unit that makes it at least 1.
+function lengthText(metres) {
+  const m = metres * (1 + 1e-6);
+  const fmt = (v) => String(Number(v.toPrecision(6)));
+  if (m >= 1) return `${fmt(metres)} m`;
+  if (m >= 0.01) return `${fmt(metres * 100)} cm`;
+  return `${fmt(metres * 1000)} mm`;
 }
 
 function formatStep(t) {

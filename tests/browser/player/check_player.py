@@ -46,6 +46,7 @@ import csv
 import json
 import math
 import pathlib
+import re
 import shutil
 import sys
 import tempfile
@@ -588,6 +589,7 @@ class Checker:
                    f"{where}: a click on the player does not focus it")
         self.keys(element, where, run)
         self.speed_menu(element, where, run)
+        self.teacher_controls(element, where, run)
 
     def pause_holds(self, element, where, run_id):
         # Pause stops at what is shown when it is pressed: the time, the slider, the read-outs,
@@ -713,6 +715,69 @@ class Checker:
         got = key(Keys.ARROW_LEFT, t[k - 1])
         self.check(got == t[k - 1], f"{where}: ← from just after sample {k} went to {got}, "
                                     f"not back to {t[k - 1]}")
+
+    def teacher_controls(self, element, where, run):
+        # What a lesson needs (a teacher's trial): the moment the spin passes zero at a button
+        # or R, the start and end at Home and End, the floor's scale beside the picture, an
+        # orbit that stays above the floor, full screen.
+        reversals = run.get("reversals") or []
+        button = element.find_element(By.CSS_SELECTOR, ".rbp-reversal")
+        t0, t1 = self.hook(element, "range()")
+        if reversals:
+            self.hook(element, "setTime(arguments[1])", t0)
+            button.click()
+            self.check(self.until(element, f"h.time() === {reversals[0]!r}"),
+                       f"{where}: the reversal button went to {self.hook(element, 'time()')}, "
+                       f"not the first reversal {reversals[0]}")
+            self.check(not self.hook(element, "playing()"), f"{where}: the reversal button left it playing")
+            shown = element.find_element(By.CSS_SELECTOR, ".rbp-spin").text
+            self.check("0.0" in shown, f"{where}: at the reversal the spin read-out says {shown!r}")
+            element.find_element(By.CSS_SELECTOR, ".rbp-title").click()
+            ActionChains(self.driver).send_keys("r").perform()
+            expect = reversals[1] if len(reversals) > 1 else reversals[0]
+            self.check(self.until(element, f"h.time() === {expect!r}", 5),
+                       f"{where}: R went to {self.hook(element, 'time()')}, not {expect}")
+        else:
+            self.check(not button.is_enabled(), f"{where}: a run without reversals has the reversal button on")
+        element.find_element(By.CSS_SELECTOR, ".rbp-title").click()
+        ActionChains(self.driver).send_keys(Keys.END).perform()
+        self.check(self.until(element, f"h.time() === {t1!r}", 5), f"{where}: End went to {self.hook(element, 'time()')}")
+        ActionChains(self.driver).send_keys(Keys.HOME).perform()
+        self.check(self.until(element, f"h.time() === {t0!r}", 5), f"{where}: Home went to {self.hook(element, 'time()')}")
+        help_text = element.find_element(By.CSS_SELECTOR, ".rbp-help").text
+        said = f"{len(reversals)} reversal" if reversals else "No reversal in this run"
+        self.check(said in help_text, f"{where}: the help says {help_text!r}, not {said!r}")
+        # The scale: a length, four times deeper in the side view.
+        self.click_view(element, "oblique")
+        oblique = element.find_element(By.CSS_SELECTOR, ".rbp-scale").text
+        self.click_view(element, "side")
+        side = element.find_element(By.CSS_SELECTOR, ".rbp-scale").text
+        pattern = re.compile(r"^floor squares (\d+(?:\.\d+)?) (mm|cm|m)$")
+        a, b = pattern.match(oblique), pattern.match(side)
+        unit = {"mm": 1e-3, "cm": 1e-2, "m": 1.0}
+        self.check(bool(a and b) and abs(float(b[1]) * unit[b[2]] - 4 * float(a[1]) * unit[a[2]]) < 1e-9,
+                   f"{where}: the floor's scale reads {oblique!r} in oblique and {side!r} in side")
+        # A long drag down orbits towards the floor and stops above it.
+        self.click_view(element, "oblique")
+        canvas = element.find_element(By.CSS_SELECTOR, ".rbp-stage canvas")
+        # (Up the canvas is down towards the floor: a drag of its whole height turns the camera
+        # by a full turn, so two-fifths of it twice is far past the horizon.)
+        h = canvas.size["height"]
+        ActionChains(self.driver).move_to_element_with_offset(canvas, 0, int(0.45 * h)) \
+            .click_and_hold().move_by_offset(0, -int(0.4 * h)).move_by_offset(0, -int(0.4 * h)) \
+            .release().perform()
+        eye, target = self.hook(element, "cameraPosition()"), self.hook(element, "cameraTarget()")
+        self.check(eye[2] > target[2] and eye[2] > 0, f"{where}: an orbit down took the camera to "
+                                                       f"{eye}, below the floor or the target {target}")
+        self.click_view(element, "oblique")
+        # Full screen: the player fills the screen and F (or the button) leaves it.
+        self.js("arguments[0].querySelector('.rbp-full').click();", element)
+        time.sleep(0.5)
+        is_full = self.js("return document.fullscreenElement === arguments[0].querySelector('.rbp');", element)
+        self.check(is_full, f"{where}: the full-screen button did not fill the screen")
+        if is_full:
+            self.js("document.exitFullscreen();")
+            time.sleep(0.3)
 
     def click_view(self, element, view):
         button = element.find_element(By.CSS_SELECTOR, f".rbp-view-{view}")
