@@ -10,6 +10,7 @@
 #include "sim/reversals.hpp"
 #include "tasks/analysis.hpp"
 #include "tasks/outcome.hpp"
+#include "util/assets.hpp"
 
 namespace tasks {
 
@@ -99,7 +100,7 @@ std::vector<RunWarning> runWarnings(const sim::Model& model, const sim::RunSumma
   // body from −5 to +5.26): why none was counted (docs/physics.md P7).
   if (!run.first_reversal_s && run.first.spin != 0 && run.last.spin * run.first.spin < 0) {
     const double threshold = sim::ReversalDetector::kFraction * std::abs(run.first.spin);
-    char text[400];
+    char text[600];
     if (std::abs(run.last.spin) <= threshold)
       std::snprintf(text, sizeof text,
                     "n ended the other way (%+.3g rad/s, from %+.3g) but is not a reversal yet: "
@@ -110,9 +111,9 @@ std::vector<RunWarning> runWarnings(const sim::Model& model, const sim::RunSumma
       std::snprintf(text, sizeof text,
                     "n ended the other way (%+.3g rad/s, from %+.3g) but no crossing counted as a "
                     "reversal: one in the air or within %g s of a bounce counts as none, and one "
-                    "that n takes back within %g s (docs/physics.md P7)",
+                    "that n takes back within %g s (%s P7)",
                     run.last.spin, run.first.spin, sim::ReversalDetector::kSettleTime,
-                    sim::ReversalDetector::kHoldTime);
+                    sim::ReversalDetector::kHoldTime, rb::docPage("physics.md").c_str());
     w.push_back({"sign_changed_uncounted", text});
   }
   // Beyond 0.1 % the reversal time is off too (2.19 s against 1.844 s at dt 0.02, where the
