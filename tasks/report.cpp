@@ -840,7 +840,7 @@ void writeOtherVersions(std::ostream& out, const SceneFiles& f,
          "may not match the run's: ";
   for (std::size_t i = 0; i < other.size(); ++i)
     out << (i ? ", " : "") << "<code>" << escape(other[i]) << "</code>";
-  out << ". Make them again from the scene as it is now.</p>\n";
+  out << ". Make them again from the scene and values the run used.</p>\n";
 }
 
 void writeScene(std::ostream& out, const fs::path& dir, const std::string& name,
