@@ -1,6 +1,7 @@
 #include "app/plot.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -17,6 +18,7 @@
 #include <optional>
 #include <sstream>
 
+#include "app/interrupt.hpp"
 #include "tasks/output.hpp"
 
 extern char** environ;
@@ -43,7 +45,13 @@ std::string firstLine(const fs::path& file) {
   return last;
 }
 
-// Runs `gnuplot script` with stderr into `log`; the exit status, or −1 when gnuplot is missing.
+// runGnuplot's outcomes besides an exit status.
+constexpr int kGnuplotMissing = -1;
+constexpr int kGnuplotInterrupted = -2;
+
+// Runs `gnuplot script` with stderr into `log`; the exit status, 128 + the signal that ended it,
+// kGnuplotMissing, or kGnuplotInterrupted (Ctrl-C or SIGTERM to this program: gnuplot is ended
+// too, not waited for; a teacher's trial waited ten minutes for a long run's figures).
 int runGnuplot(const fs::path& script, const fs::path& log) {
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
@@ -53,14 +61,41 @@ int runGnuplot(const fs::path& script, const fs::path& log) {
   posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
   const std::string script_path = script.string();
   char* argv[] = {const_cast<char*>("gnuplot"), const_cast<char*>(script_path.c_str()), nullptr};
+  // This program ignores SIGXFSZ (a write beyond a file-size limit is an error it reports);
+  // gnuplot ignores write errors, so it gets the signal's default back: a PNG cut short by the
+  // limit ends gnuplot, rather than standing as a finished figure (a teacher's trial).
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  sigset_t defaults;
+  sigemptyset(&defaults);
+  sigaddset(&defaults, SIGXFSZ);
+  posix_spawnattr_setsigdefault(&attributes, &defaults);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF);
   pid_t pid;
-  const int spawned = posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
+  const int spawned = posix_spawnp(&pid, "gnuplot", &actions, &attributes, argv, environ);
   posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) return -1;
+  posix_spawnattr_destroy(&attributes);
+  if (spawned != 0) return kGnuplotMissing;
   int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+  bool interrupted = false;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+    if (interruptSignal() != 0 && !interrupted) {
+      ::kill(pid, SIGTERM);
+      interrupted = true;
+    }
+  if (interrupted || interruptSignal() != 0) return kGnuplotInterrupted;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+// Whether the file is a whole PNG: it ends with the IEND chunk (its type, then its CRC).
+bool wholePng(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  const std::streamoff size = in.tellg();
+  if (!in || size < 12) return false;
+  char tail[8];
+  in.seekg(size - 8);
+  in.read(tail, 8);
+  return in && std::string(tail, 4) == "IEND";
 }
 
 }  // namespace
@@ -155,13 +190,33 @@ rb::Status drawWithGnuplot(const std::string& png, Write write) {
   script.close();
   if (!script) return rb::Status::fail(png + ": cannot write the plot script");
   const int status = runGnuplot(work / "plot.gp", work / "gnuplot.log");
-  if (status == -1) {
+  if (status == kGnuplotMissing) {
     fs::remove(temp_png, ec);
-    return rb::Status::fail(png + ": cannot run gnuplot (install it: apt-get install gnuplot-nox)");
+    return rb::Status::fault(png +
+                             ": cannot run gnuplot (install it: apt-get install gnuplot-nox)");
+  }
+  if (status == kGnuplotInterrupted) {
+    fs::remove(temp_png, ec);
+    return rb::Status::fault(png + ": interrupted while drawing");
+  }
+  // Ended by a signal, or a PNG cut short: the machine's (a file-size limit, a full disk), said
+  // as such; an error of gnuplot's own, its last line.
+  if (status > 128) {
+    fs::remove(temp_png, ec);
+    return rb::Status::fault(png + ": gnuplot was ended by " +
+                             (status - 128 == SIGXFSZ ? std::string("the file-size limit")
+                                                      : "signal " + std::to_string(status - 128)) +
+                             "; nothing written");
   }
   if (status != 0 || !fs::exists(temp_png, ec) || fs::file_size(temp_png, ec) == 0) {
     fs::remove(temp_png, ec);
     return rb::Status::fail(png + ": gnuplot failed: " + firstLine(work / "gnuplot.log"));
+  }
+  if (!wholePng(temp_png)) {
+    fs::remove(temp_png, ec);
+    return rb::Status::fault(png +
+                             ": gnuplot wrote an incomplete PNG (a full disk, or a "
+                             "file-size limit?); nothing written");
   }
   fs::rename(temp_png, place.target, ec);
   if (ec) {

@@ -324,8 +324,16 @@ int simulateCommand(const SimulateArgs& args) {
       !e)
     return fail(e);
   if (!args.plot_dir.empty())
-    if (auto e = writePlots(args.plot_dir, plotStem(args, csv), kept, run.summary.reversals); !e)
+    if (auto e = writePlots(args.plot_dir, plotStem(args, csv), kept, run.summary.reversals); !e) {
+      // Ctrl-C while the figures are drawn: the table stands, the figures not drawn go unsaid
+      // as a failure (it exited 2 with "gnuplot failed: "; a teacher's trial).
+      if (interruptSignal() != 0) {
+        if (!args.quiet)
+          std::cerr << "interrupted while drawing the figures; " << csv << " is written\n";
+        return interruptedStatus();
+      }
       return fail(e);
+    }
   record(outputsOf(args, csv, tasks::madeFrom(loaded->scene)));
   if (args.quiet) return kOk;
   std::FILE* report = to_stdout ? stderr : stdout;

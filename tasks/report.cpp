@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -776,8 +777,9 @@ RunModel runModelOf(const nlohmann::json& sidecar, const fs::path& dir) {
 }
 
 // DIR/<id>.player.js for a scene with telemetry: its poses, reversals and drawn points; false
-// (the page then has no player for it) when the CSV, its sidecar or its scene cannot be read.
-bool writePlayerData(const fs::path& dir, const std::string& id, const SceneFiles& f) {
+// (the page then has no player for it) when the CSV, its sidecar or its scene cannot be read;
+// an error when the file cannot be written.
+rb::Result<bool> writePlayerData(const fs::path& dir, const std::string& id, const SceneFiles& f) {
   if (!f.has(".csv") || !f.has(".csv.json")) return false;
   const std::optional<nlohmann::json> sidecar = readJson(dir / f.at(".csv.json"));
   if (!sidecar || field(*sidecar, "command") != "simulate") return false;
@@ -802,19 +804,26 @@ bool writePlayerData(const fs::path& dir, const std::string& id, const SceneFile
     for (const auto& r : reversals)
       if (r.is_number()) run.reversals.push_back(r.get<double>());
   auto out = AtomicOutput::open((dir / (id + ".player.js")).string());
-  if (!out) return false;
+  if (!out) return out.error();
   out->stream() << playerScript(run);
-  return out->commit().ok();
+  if (auto e = out->commit(); !e) return e.error();
+  return true;
 }
 
-// The bundle copied beside the page; false when the build made none (no node and npm).
-bool copyPlayerBundle(const fs::path& dir) {
+// The bundle copied beside the page; false when the build made none (no node and npm), an
+// error when it cannot be written (a full disk, a file-size limit: the page was written without
+// its players, and nothing said; a teacher's trial).
+rb::Result<bool> copyPlayerBundle(const fs::path& dir) {
   std::ifstream in(fs::path(rb::assetsDir()) / "player" / kPlayerBundle, std::ios::binary);
   if (!in) return false;
   auto out = AtomicOutput::open((dir / kPlayerBundle).string());
-  if (!out) return false;
-  out->stream() << in.rdbuf();
-  return out->commit().ok();
+  if (!out) return out.error();
+  // Read whole, then written: `<< rdbuf()` stops quietly at a failed write once it has written
+  // anything (no failbit), and a bundle cut at a file-size limit stood as whole.
+  const std::string bundle((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  out->stream().write(bundle.data(), static_cast<std::streamsize>(bundle.size()));
+  if (auto e = out->commit(); !e) return e.error();
+  return true;
 }
 
 // The videos, stills, figures and analyses shown for a scene that were made from another
@@ -1024,9 +1033,14 @@ rb::Result<ReportPage> writeReport(const std::string& folder_path) {
   placeByName(dir, placeListed(dir, folder), folder);
   separateSweeps(dir, folder);
   std::vector<std::string> players;
-  if (copyPlayerBundle(dir)) {
-    for (const auto& [name, files] : folder.scenes)
-      if (writePlayerData(dir, name, files)) players.push_back(name);
+  const rb::Result<bool> bundle = copyPlayerBundle(dir);
+  if (!bundle) return bundle.error();
+  if (bundle.value()) {
+    for (const auto& [name, files] : folder.scenes) {
+      const rb::Result<bool> data = writePlayerData(dir, name, files);
+      if (!data) return data.error();
+      if (data.value()) players.push_back(name);
+    }
     if (players.empty()) fs::remove(dir / kPlayerBundle, ec);  // nothing to play
   }
   const std::string path = (dir / "index.html").string();
