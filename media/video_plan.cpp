@@ -86,9 +86,14 @@ std::string describeSpin(double spin) {
 
 // The title of a run's frames, the same in its video and its stills: the scene and the spin.
 render::RenderSettings settingsOf(const VideoPlan& plan, double duration, double spin,
-                                  const std::string& scene, render::Backend backend) {
-  const std::string title =
-      std::filesystem::path(scene).stem().string() + ": spun " + describeSpin(spin);
+                                  const std::string& scene,
+                                  const std::vector<scene::KeyValue>& values,
+                                  render::Backend backend) {
+  // The values put in name the variant: a class's bodies made with --set all read "mine: spun
+  // −5 rad/s" (a teacher's trial). The renderer shortens a title too long for the frame.
+  std::string title = std::filesystem::path(scene).stem().string() + ": spun " + describeSpin(spin);
+  for (const scene::KeyValue& kv : values)
+    title += (&kv == &values.front() ? "; " : ", ") + kv.key + " = " + kv.yaml;
   render::RenderSettings s;
   s.backend = backend;
   s.width = plan.width;

@@ -31,8 +31,11 @@ struct VideoPlan {
 rb::Result<VideoPlan> planVideo(const scene::Loaded& scene, double duration);
 
 /// The renderer's settings for one run's frames: the plan's size and view, titled with the
-/// scene's name and the spin (the same in its video and its stills).
+/// scene's name, the values put in over its file (--set, with_values) and the spin (the same in
+/// its video and its stills).
 render::RenderSettings settingsOf(const VideoPlan& plan, double duration, double spin,
-                                  const std::string& scene, render::Backend backend);
+                                  const std::string& scene,
+                                  const std::vector<scene::KeyValue>& values,
+                                  render::Backend backend);
 
 }  // namespace media

@@ -376,8 +376,23 @@ void Renderer::drawReadouts(const FrameInput& frame, Image& out) {
   if (!readoutsShown()) return;
   const ReadoutLayout layout = readoutLayout();
   const int x = layout.x;
-  if (!settings_.title.empty())
-    font_.text(out, x, layout.title, settings_.title, {30, 30, 30, 255});
+  if (!settings_.title.empty()) {
+    // A title wider than the frame (a variant's values, a long name) is cut, and says so with
+    // an ellipsis, rather than run off the edge.
+    std::string title = settings_.title;
+    const int room = settings_.width - 2 * x;
+    if (font_.width(title) > room) {
+      while (!title.empty() && font_.width(title + "…") > room) {
+        unsigned char last = 0;  // one UTF-8 character off the end: its continuation bytes, then
+        do {                     // its first
+          last = static_cast<unsigned char>(title.back());
+          title.pop_back();
+        } while (!title.empty() && (last & 0xC0) == 0x80);
+      }
+      title += "…";
+    }
+    font_.text(out, x, layout.title, title, {30, 30, 30, 255});
+  }
   if (!settings_.readouts) return;
   char time[32], spin_text[96];
   // A spin that rounds to zero is shown as +0.00, not -0.00.

@@ -149,7 +149,12 @@ TEST(Overlay, SmallFramesCarryNoReadouts) {
 }
 
 TEST(Overlay, ReadoutsFitPortraitAndLandscapeFrames) {
-  for (const char* size : {"640x360", "360x640", "200x600"}) {
+  // The values put in over the file lengthen the title (a variant is named by them); a title
+  // too long for the frame is cut with an ellipsis.
+  const std::string values =
+      " --set body.paraboloid.s=0.02 --set body.mass=0.07 --set contact.air_drag=0";
+  for (const std::string& size : std::vector<std::string>{"640x360", "360x640", "200x600",
+                                                          "360x640" + values, "200x600" + values}) {
     Twins t;
     ASSERT_TRUE(twins(std::string("still scenes/rattleback.yaml --t 2 --size ") + size, t));
     const int width = t.with.width, height = t.with.height;
@@ -163,6 +168,33 @@ TEST(Overlay, ReadoutsFitPortraitAndLandscapeFrames) {
     EXPECT_GT(drawn, 100) << size << ": no read-outs drawn";
     EXPECT_EQ(on_edge, 0) << size << ": read-outs reach the edge of the frame";
   }
+}
+
+// A variant's title names the values put in over its file (a teacher's trial: a class's bodies
+// made with --set all read "mine: spun -5 rad/s"): the title runs further right than the same
+// scene's without them.
+TEST(Overlay, AVariantsTitleNamesItsValues) {
+  // The rightmost text pixel (dark: the text is (30, 30, 30), the floor and sky far lighter) in
+  // the title's rows: its baseline is two lines down (a line is a 36th of the height), the
+  // read-outs' a line and a half below it. (The title is drawn with --no-readouts too, so it
+  // is not among the pixels Twins finds the read-outs drew.)
+  auto titleEnd = [](const std::string& args) {
+    const fs::path png = scratch("title.png");
+    EXPECT_EQ(rattleback(args + " -o " + png.string()), 0) << args;
+    render::Image image;
+    EXPECT_TRUE(render::readPng(png.string(), image).ok());
+    int right = -1;
+    for (int y = 0; y < image.height / 18; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        const unsigned char* p = &image.rgba[(static_cast<std::size_t>(y) * image.width + x) * 4];
+        if (p[0] < 80 && p[1] < 80 && p[2] < 80) right = std::max(right, x);
+      }
+    return right;
+  };
+  const int plain = titleEnd("still scenes/rattleback.yaml --size 1280x720");
+  const int variant = titleEnd("still scenes/rattleback.yaml --size 1280x720 --set body.mass=0.07");
+  EXPECT_GT(plain, 200);
+  EXPECT_GT(variant, plain + 100);
 }
 
 // The floor's scale is said in the unit that makes it a whole number of at least 1 (the squares
