@@ -212,13 +212,25 @@ class MapReader {
            ")";
   }
 
+  // A decimal comma (0,059): the number with a point (a teacher's trial).
+  static std::string commaHint(const YAML::Node& node) {
+    if (!node.IsScalar()) return "";
+    std::string text = node.Scalar();
+    const auto comma = text.find(',');
+    if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos) return "";
+    text[comma] = '.';
+    double v = 0;
+    if (!YAML::convert<double>::decode(YAML::Node(text), v)) return "";
+    return " (a decimal comma: write " + text + ")";
+  }
+
   double number(const YAML::Node& node, const std::string& key) const {
     double v = 0;
     // A quoted scalar ("0.5") is a string: its tag is "!" rather than the plain "?".
     if (node.IsScalar() && node.Tag() == "!")
       fail(key, "must be a number, not the quoted string \"" + node.Scalar() + "\"");
     if (!node.IsScalar() || !YAML::convert<double>::decode(node, v))
-      fail(key, "must be a number, not " + described(node) + unitHint(node, key));
+      fail(key, "must be a number, not " + described(node) + unitHint(node, key) + commaHint(node));
     return v;
   }
 

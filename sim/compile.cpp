@@ -96,8 +96,12 @@ std::optional<rb::Error> checkEllipsoid(const BodySpec& b) {
 
 std::optional<rb::Error> checkBody(const BodySpec& b) {
   if (b.shape == "ellipsoid") return checkEllipsoid(b);
-  if (b.shape != "paraboloid")
-    return rb::Error{"body.shape", "must be paraboloid or ellipsoid, not '" + b.shape + "'"};
+  if (b.shape != "paraboloid") {
+    const std::vector<std::string_view> shapes = {"paraboloid", "ellipsoid"};
+    const std::optional<std::string> nearest = rb::nearestWord(b.shape, shapes);
+    return rb::Error{"body.shape", "must be paraboloid or ellipsoid, not '" + b.shape + "'" +
+                                       (nearest ? "; did you mean " + *nearest + "?" : "")};
+  }
   if (auto e = checkParaboloid(b.paraboloid)) return e;
   if (b.dents) {
     if (auto e = needPositive("body.dents.scale", b.dents->scale)) return e;

@@ -42,6 +42,10 @@ const BadCase kBadCases[] = {
     {"model: points,", "model: pionts,",
      "8: contact.model must be points, smooth, rolling or auto, not 'pionts'; did you mean "
      "points?"},
+    {"shape: paraboloid", "shape: parabolid",
+     "3: body.shape must be paraboloid or ellipsoid, not 'parabolid'; did you mean paraboloid?"},
+    {"mass: 0.5", "mass: 0,5",
+     "7: body.mass must be a number, not '0,5' (a decimal comma: write 0.5)"},
     {"mass: 0.5", "mass: 500 g",
      "7: body.mass must be a number, not '500 g' (write the number alone, in kg)"},
     {"top: 2}", "top: 2 cm}",
