@@ -779,7 +779,8 @@ RunModel runModelOf(const nlohmann::json& sidecar, const fs::path& dir) {
 // DIR/<id>.player.js for a scene with telemetry: its poses, reversals and drawn points; false
 // (the page then has no player for it) when the CSV, its sidecar or its scene cannot be read;
 // an error when the file cannot be written.
-rb::Result<bool> writePlayerData(const fs::path& dir, const std::string& id, const SceneFiles& f) {
+rb::Result<bool> writePlayerData(const fs::path& dir, const std::string& id, const SceneFiles& f,
+                                 std::vector<std::string>& notes) {
   if (!f.has(".csv") || !f.has(".csv.json")) return false;
   const std::optional<nlohmann::json> sidecar = readJson(dir / f.at(".csv.json"));
   if (!sidecar || field(*sidecar, "command") != "simulate") return false;
@@ -787,7 +788,7 @@ rb::Result<bool> writePlayerData(const fs::path& dir, const std::string& id, con
   const std::optional<sim::Model>& model = found.model;
   if (!model) {
     if (!found.why.empty())
-      std::cerr << (dir / f.at(".csv")).string() << ": " << found.scene << " " << found.why << "\n";
+      notes.push_back((dir / f.at(".csv")).string() + ": " + found.scene + " " + found.why);
     // The data an earlier report wrote for this run would replay it on another body.
     std::error_code ec;
     fs::remove(dir / (id + ".player.js"), ec);
@@ -1032,23 +1033,26 @@ rb::Result<ReportPage> writeReport(const std::string& folder_path) {
   Folder folder;
   placeByName(dir, placeListed(dir, folder), folder);
   separateSweeps(dir, folder);
-  std::vector<std::string> players;
+  // The page's place first: a folder where no file can be made is said as the page's (the
+  // player's files would otherwise be the first to fail).
+  const std::string path = (dir / "index.html").string();
+  auto opened = AtomicOutput::open(path);
+  if (!opened) return opened.error();
+  std::vector<std::string> players, notes;
   const rb::Result<bool> bundle = copyPlayerBundle(dir);
   if (!bundle) return bundle.error();
   if (bundle.value()) {
     for (const auto& [name, files] : folder.scenes) {
-      const rb::Result<bool> data = writePlayerData(dir, name, files);
+      const rb::Result<bool> data = writePlayerData(dir, name, files, notes);
       if (!data) return data.error();
       if (data.value()) players.push_back(name);
     }
     if (players.empty()) fs::remove(dir / kPlayerBundle, ec);  // nothing to play
   }
-  const std::string path = (dir / "index.html").string();
-  auto opened = AtomicOutput::open(path);
-  if (!opened) return opened.error();
   writePage(opened->stream(), dir, folder, players);
   if (auto e = opened->commit(); !e) return e.error();
-  return ReportPage{path, folder.scenes.empty() && folder.sweeps.empty() && folder.others.empty()};
+  return ReportPage{path, folder.scenes.empty() && folder.sweeps.empty() && folder.others.empty(),
+                    notes};
 }
 
 }  // namespace tasks

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "util/result.hpp"
 
@@ -14,6 +15,9 @@ namespace tasks {
 struct ReportPage {
   std::string path;    ///< DIR/index.html
   bool empty = false;  ///< DIR held no runs, videos, stills, plots or tables to show
+  /// What the page leaves out and why, one line each ("…/x.csv: scenes/x.yaml has changed since
+  /// this run was simulated: no 3D player for it …"), for the front end to say (not with -q).
+  std::vector<std::string> notes;
 };
 
 /// Writes DIR/index.html (whole or not at all).
