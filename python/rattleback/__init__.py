@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import json
 import os
+import warnings
 from typing import Any, Mapping, Optional, Sequence, Union
 
 import numpy as np
@@ -31,10 +32,11 @@ except ImportError:  # the package's files laid out (at configure time), its mod
         "`bash scripts/build.sh rattleback_python` (scripts/run.sh builds only the command)"
     ) from None
 from ._args import checked, refuse
-from ._errors import RunStopped, SceneError
+from ._errors import RunStopped, RunWarning, SceneError
 
 __all__ = [
-    "Scene", "Run", "Image", "SceneError", "RunStopped", "simulate", "analyze", "still",
+    "Scene", "Run", "Image", "SceneError", "RunStopped", "RunWarning", "simulate", "analyze",
+    "still",
     "render", "sweep", "SweepTable", "__version__",
 ]
 
@@ -327,13 +329,19 @@ def simulate(scene: SceneLike, *, rate: float = _core.default_rate,
     loaded = _scene(scene)._load(duration=duration, spin=spin, dt=dt, tolerance=tolerance,
                                  integrator=integrator)
     try:
-        return Run(_core.simulate(loaded, float(rate), bool(check)))
+        run = Run(_core.simulate(loaded, float(rate), bool(check)))
     except RunStopped as stopped:
         # The run as far as it went, as a Run (a student's trial: a body that tipped over left
         # nothing to plot of the 2.2 s before).
         if isinstance(stopped.run, _core.Run):
             stopped.run = Run(stopped.run)
         raise
+    # What the command line's summary warns of, where a notebook shows it (a teacher's trial:
+    # a mass typed in grams ran in silence, its warning only in run.result["warnings"]).
+    for warning in run.result.get("warnings") or []:
+        warnings.warn(RunWarning(f"{run.scene}: {warning['text']}", warning.get("code")),
+                      stacklevel=3)
+    return run
 
 
 @checked

@@ -19,6 +19,21 @@ class SceneError(ValueError):
         self.key = key
 
 
+class RunWarning(UserWarning):
+    """What ``rattleback simulate``'s summary warns of, issued by :func:`simulate` with
+    :func:`warnings.warn` (a notebook shows it under the cell): the step too large for a model
+    that keeps the energy, a mass no material gives the body, a spin that ended the other way
+    with no reversal counted, …. Each is also in ``run.result["warnings"]`` as ``{code, text}``.
+
+    Attributes:
+        code: ``"energy_error"``, ``"implausible_mass"``, ``"sign_changed_uncounted"``, ….
+    """
+
+    def __init__(self, message, code=None):
+        super().__init__(message)
+        self.code = code
+
+
 class RunStopped(RuntimeError):
     """A run that stopped by itself before its end (the command line's exit status 3).
 

@@ -312,3 +312,17 @@ def test_a_bad_playback_says_the_value_given(tmp_path, playback, given):
     assert str(caught.value) == ("argument playback: must be a speed > 0 (1 real time, "
                                  "0.5 slow motion, 2 twice as fast), not " + given)
     assert not (tmp_path / "x.mp4").exists()
+
+
+def test_a_runs_warnings_are_python_warnings(recwarn):
+    """What simulate's summary warns of is a RunWarning in Python, pointing at the caller's line
+    (a teacher's trial: a mass typed in grams ran in silence in a notebook); a run without one
+    warns of nothing."""
+    rb.simulate(scene_path("rattleback.yaml"), duration=0.2)
+    assert not [w for w in recwarn if issubclass(w.category, rb.RunWarning)]
+    grams = rb.Scene.from_file(scene_path("rattleback.yaml")).with_values({"body.mass": 59})
+    with pytest.warns(rb.RunWarning, match="denser than any solid") as caught:
+        run = rb.simulate(grams, duration=0.2)
+    assert caught[0].message.code == "implausible_mass"
+    assert caught[0].filename == __file__
+    assert run.result["warnings"][0]["code"] == "implausible_mass"
