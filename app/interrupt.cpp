@@ -45,6 +45,9 @@ namespace app {
 
 int fail(const rb::Error& error) {
   std::cerr << error.text() << "\n";
+  // A failure of something Ctrl-C stopped (gnuplot ended mid-figure: "interrupted while
+  // drawing") is the interruption's: 130 or 143, as a pipeline expects of Ctrl-C.
+  if (interruptSignal() != 0) return interruptedStatus();
   return error.machine ? kMachine : kBadInput;
 }
 
