@@ -193,8 +193,8 @@ class MapReader {
     return "empty (the key has no value)";
   }
 
-  // A number written with a unit ("59 g"): the number alone, in the key's unit, which the
-  // table's example gives ("mass: 0.059 (kg)"; a teacher's trial).
+  // A number written with a unit ("59 g"): the number alone, in the key's unit as the table
+  // gives it (body.mass: kg; a teacher's trial).
   std::string unitHint(const YAML::Node& node, const std::string& key) const {
     if (!node.IsScalar()) return "";
     const std::string text = node.Scalar();
