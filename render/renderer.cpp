@@ -66,6 +66,7 @@ std::string Renderer::init() {
   // each. (A 64th of the width made a 480-wide portrait frame's text 8 px high.)
   const int text_px = std::min(settings_.height / 36, settings_.width / 40);
   if (std::string e = font_.load(std::max(8, text_px)); !e.empty()) return e;
+  title_ = fittedTitle();
   CurrentContext current(*context_);
   if (!current.ok()) return "cannot make the OpenGL context current";
   const GlApi& gl = context_->api();
@@ -96,6 +97,11 @@ std::string Renderer::init() {
   low_ = low;
   high_ = high;
   half_extent_ = 0.5f * (high - low) + Eigen::Vector3f::Constant(body_.radius);
+  // The floor's scale, made once: the square follows the body's size, so without it a longer
+  // body drawn to fill the frame looked no longer (a teacher's trial: bodies of 20, 24.5 and
+  // 40 cm were all 262 pixels long, on squares of 1, 2 and 2 cm).
+  const bool fogged = settings_.view == View::Front || settings_.view == View::Side;
+  scale_label_ = "floor squares " + lengthText(floorSquare(half_extent_, fogged));
   middle_height_ = 0.5f * (high.z() + low.z());
   gl.glGenVertexArrays(1, &points_vao_);
   gl.glBindVertexArray(points_vao_);
@@ -352,6 +358,22 @@ float floorSquare(const Eigen::Vector3f& half_extent, bool fogged) {
   return fogged ? 4 * tile : tile;
 }
 
+// The title as drawn, made once: a title wider than the frame (a variant's values, a long name)
+// is cut, and says so with an ellipsis, rather than run off the edge.
+std::string Renderer::fittedTitle() {
+  std::string title = settings_.title;
+  const int room = settings_.width - 2 * readoutLayout().x;
+  if (title.empty() || font_.width(title) <= room) return title;
+  while (!title.empty() && font_.width(title + "…") > room) {
+    unsigned char last = 0;  // one UTF-8 character off the end: its continuation bytes, then
+    do {                     // its first
+      last = static_cast<unsigned char>(title.back());
+      title.pop_back();
+    } while (!title.empty() && (last & 0xC0) == 0x80);
+  }
+  return title + "…";
+}
+
 bool Renderer::readoutsShown() const {
   // Below 180 pixels a side the text and the inset would cover the body (a 100×100 frame is
   // almost all body): such frames carry none.
@@ -376,23 +398,7 @@ void Renderer::drawReadouts(const FrameInput& frame, Image& out) {
   if (!readoutsShown()) return;
   const ReadoutLayout layout = readoutLayout();
   const int x = layout.x;
-  if (!settings_.title.empty()) {
-    // A title wider than the frame (a variant's values, a long name) is cut, and says so with
-    // an ellipsis, rather than run off the edge.
-    std::string title = settings_.title;
-    const int room = settings_.width - 2 * x;
-    if (font_.width(title) > room) {
-      while (!title.empty() && font_.width(title + "…") > room) {
-        unsigned char last = 0;  // one UTF-8 character off the end: its continuation bytes, then
-        do {                     // its first
-          last = static_cast<unsigned char>(title.back());
-          title.pop_back();
-        } while (!title.empty() && (last & 0xC0) == 0x80);
-      }
-      title += "…";
-    }
-    font_.text(out, x, layout.title, title, {30, 30, 30, 255});
-  }
+  if (!title_.empty()) font_.text(out, x, layout.title, title_, {30, 30, 30, 255});
   if (!settings_.readouts) return;
   char time[32], spin_text[96];
   // A spin that rounds to zero is shown as +0.00, not -0.00.
@@ -410,11 +416,7 @@ void Renderer::drawReadouts(const FrameInput& frame, Image& out) {
     font_.text(out, x, layout.second, spin_text, {30, 30, 30, 255});
   }
   drawSpinInset(out, font_, frame.history, settings_.duration, settings_.spin_range);
-  // The floor's scale: the square follows the body's size, so without it a longer body drawn
-  // to fill the frame looked no longer (a teacher's trial: bodies of 20, 24.5 and 40 cm were
-  // all 262 pixels long, on squares of 1, 2 and 2 cm).
-  const bool fogged = settings_.view == View::Front || settings_.view == View::Side;
-  drawScaleLabel(out, font_, "floor squares " + lengthText(floorSquare(half_extent_, fogged)));
+  drawScaleLabel(out, font_, scale_label_);
 }
 
 void Renderer::draw(const FrameInput& frame, Image& out) {

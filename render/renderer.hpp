@@ -83,6 +83,7 @@ class Renderer {
     int x, title, first, second, band;  ///< band: pixels from the top the text takes at most
   };
   ReadoutLayout readoutLayout() const;
+  std::string fittedTitle();
 
   RenderSettings settings_;
   BodyPoints body_;
@@ -104,6 +105,8 @@ class Renderer {
   std::optional<PixelRect> dirty_;
   Eigen::Vector3f low_, high_;   ///< the sphere centres' box, body frame, m
   Eigen::Vector3f half_extent_;  ///< body half extents, m
+  std::string title_;            ///< settings_.title as drawn, cut to the frame (fittedTitle)
+  std::string scale_label_;      ///< "floor squares 1 cm"
   float middle_height_ = 0;      ///< height of the body's middle above its CM, m
   float radius_ = 0;             ///< the largest distance of a drawn point from the CM, m
 };

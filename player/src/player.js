@@ -648,6 +648,11 @@ class Player {
     const raw = size / 5;
     const decade = Math.pow(10, Math.floor(Math.log10(raw)));
     this.tile = raw / decade < 2 ? decade : raw / decade < 5 ? 2 * decade : 5 * decade;
+    // The read-out of the square, seen level (front, side: four times deeper) or not; made once.
+    this.scaleText = {
+      level: `floor squares ${lengthText(4 * this.tile)}`,
+      other: `floor squares ${lengthText(this.tile)}`,
+    };
     this.size = size;
     const floorUniforms = {
       tile: { value: this.tile },
@@ -1271,12 +1276,12 @@ class Player {
       u.fogFar.value = far;
       u.fogNear.value = Math.min(this.framing.radius, 0.5 * far);
       u.tile.value = 4 * this.tile; // squares 4× deeper show as bands, not stripes
-      this.show(this.readScale, `floor squares ${lengthText(4 * this.tile)}`);
+      this.show(this.readScale, this.scaleText.level);
     } else {
       u.fogFar.value = 0;
       u.fogNear.value = 0;
       u.tile.value = this.tile;
-      this.show(this.readScale, `floor squares ${lengthText(this.tile)}`);
+      this.show(this.readScale, this.scaleText.other);
       const reachOut = this.camera.isOrthographicCamera ? this.camera.top / this.camera.zoom : 0;
       u.fadeNear.value = Math.max(3 * this.size, 1.5 * reachOut);
       u.fadeFar.value = Math.max(12 * this.size, 6 * reachOut);
