@@ -256,7 +256,7 @@ int analyzeCommand(const AnalyzeArgs& args) {
   if (auto ok = tasks::checkAnalysisSpin(args.spin, "--spin"); !ok) return fail(ok);
   auto loaded = loadScene(args.scene, args.overrides);
   if (!loaded) return fail(loaded);
-  noteShipped(args.scene, args.quiet);
+  noteShipped(args.scene);
   if (args.output.empty() || args.output == "-") {
     writeAnalysis(stdout, args, loaded->model);
     return kOk;

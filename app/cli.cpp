@@ -81,6 +81,8 @@ void defineAnalyze(CLI::App& c, Cli& cli) {
   c.add_option(
       "--spin", cli.analyze_args.spin,
       "Spin for the growth rates, eigenvalues and forecast, rad/s (default: the scene's, else 5)");
+  c.add_option("--duration", cli.analyze_args.overrides.duration,
+               "How far the forecast looks, s (default: the scene's simulation.duration)");
   setOption(c, cli.analyze_set);
   // Every other command has -q; a script that gives it to all of them works here too.
   c.add_flag("-q,--quiet", cli.analyze_args.quiet,
@@ -103,6 +105,9 @@ void backendOption(CLI::App& c, std::string& backend, std::string& from, const c
 void videoOptions(CLI::App& c, Overrides& o, std::string& size) {
   c.add_option("--view", o.view, names<render::View>());
   c.add_option("--size", size, "Frame size WxH, e.g. 1280x720");
+  c.add_option("--frame", o.frame,
+               "Frame every view for a body this long, in the scene's length unit (default: "
+               "the body's own); bodies drawn with the same --frame are drawn at one scale");
   c.add_option("--fps", o.fps,
                "Frames per second, a whole number 1–240 (default: the scene's video.fps, or 30)");
   c.add_option("--duration", o.duration, "Simulated time, s (the inset's time axis)");

@@ -39,10 +39,10 @@ int fail(const rb::Result<T>& result) {
 void record(const std::vector<tasks::OutputEntry>& entries);
 /// A scene's (or sweep's) name in the manifest: its file's stem.
 std::string sceneName(const std::string& path);
-/// Says on standard error (unless quiet) when `given` is not in this folder and the shipped copy
+/// Says on standard error (with -q too) when `given` is not in this folder and the shipped copy
 /// of that name runs instead (tasks::findShipped): a deleted or misnamed scene of the user's
 /// would otherwise run the shipped one in silence.
-void noteShipped(const std::string& given, bool quiet);
+void noteShipped(const std::string& given);
 
 /// --set's KEY=VALUE entries, split at their first '=', put into `o.values` in order.
 rb::Status putSettings(const std::vector<std::string>& entries, Overrides& o);
@@ -66,7 +66,7 @@ struct AnalyzeArgs {
   std::string output;          ///< a file to write instead of standard output
   std::optional<double> spin;  ///< rad/s for the growth rates; default the scene's (or 5)
   bool quiet = false;          ///< accepted as every command's -q; analyze prints nothing else
-  Overrides overrides;         ///< only `values`: --set
+  Overrides overrides;         ///< --set's values, and --duration (the forecast's reach)
 };
 int analyzeCommand(const AnalyzeArgs& args);
 

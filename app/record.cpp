@@ -17,12 +17,13 @@ std::string sceneName(const std::string& path) {
   return std::filesystem::path(path).stem().string();
 }
 
-void noteShipped(const std::string& given, bool quiet) {
-  if (quiet) return;
+// Said with -q too: the run is of another file than the one named (a CI maintainer's trial: a
+// pipeline's deleted scene of a shipped one's name ran the shipped one with nothing said).
+void noteShipped(const std::string& given) {
   const std::string file = tasks::findShipped(given);
   if (file != given)
     std::cerr << "note: no " << given << " in this folder; running the shipped one, " << file
-              << "\n";
+              << " (./" << given << " names this folder's only)\n";
 }
 
 }  // namespace app

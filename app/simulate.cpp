@@ -88,6 +88,7 @@ void printSummary(std::FILE* out, const SimulateArgs& args, const sim::Model& mo
   std::fprintf(out, "final spin      %+.4f rad/s, tilt %.2f deg\n", run.last.spin,
                run.last.tilt_deg);
   said("floor_pulled", "WARNING         %s\n");
+  said("friction_exceeded", "WARNING         %s\n");
   std::fprintf(out, "wall time       %.3f s: %.4f s per simulated second, %.3f us per step\n",
                run.wall_s, run.wall_s / simulated,
                1e6 * run.wall_s / static_cast<double>(std::max<std::int64_t>(1, run.steps)));
@@ -263,7 +264,7 @@ int simulateCommand(const SimulateArgs& args) {
   if (!overrides) return fail(overrides);
   auto loaded = loadScene(args.scene, overrides.value());
   if (!loaded) return fail(loaded);
-  noteShipped(args.scene, args.quiet);
+  noteShipped(args.scene);
   const sim::Model& model = loaded->model;
   const double rate = args.rate.value_or(tasks::kDefaultRate);
   if (auto ok = tasks::checkRate(rate, model.duration); !ok) {

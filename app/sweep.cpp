@@ -344,7 +344,7 @@ int sweepCommand(const SweepArgs& args) {
                          "sweeps/spin-drag.yaml), or 'sweep merge OUT.csv SHARD…'"));
   auto loaded = scene::loadSweep(tasks::findShipped(args.file));
   if (!loaded) return fail(loaded);
-  noteShipped(args.file, args.quiet);
+  noteShipped(args.file);
   const scene::Sweep& sweep = loaded.value();
   std::optional<tasks::Shard> shard;
   if (auto ok = checkOptions(args, shard); !ok) return fail(ok);
@@ -354,6 +354,9 @@ int sweepCommand(const SweepArgs& args) {
   if (!args.emit.empty()) return emitScript(args, sweep, output.value());
   auto scenes = scene::SweepScenes::open(sweep);
   if (!scenes) return fail(scenes);
+  if (!args.quiet)
+    for (const std::string& note : tasks::sweepNotes(sweep, scenes.value()))
+      std::cerr << "note: " << note << "\n";
   auto plan = planRows(args, sweep, shard, output.value());
   if (!plan) return fail(plan);
   const std::string journal_path = tasks::Journal::pathOf(output.value());

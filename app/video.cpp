@@ -48,6 +48,7 @@ int notWritten(const tasks::Outcome& outcome, const std::string& scene, const st
 
 void printVideos(const media::VideoResult& r) {
   for (const std::string& note : r.notes) std::cerr << "note: " << note << "\n";
+  if (r.leaves) std::cerr << "warning: " << *r.leaves << "\n";
   for (const media::VideoFile& f : r.files) {
     std::printf("%s  (%s", f.path.c_str(), rb::counted(f.frames, "frame").c_str());
     if (f.spin && f.first_reversal_s)
@@ -72,12 +73,12 @@ int renderCommand(const RenderArgs& args) {
   std::jthread preload = media::preloadDriver(*backend);
   auto loaded = loadScene(args.scene, args.overrides);
   if (!loaded) return fail(loaded);
-  noteShipped(args.scene, args.quiet);
+  noteShipped(args.scene);
   if (args.verbose) describeModel(loaded->model, args.scene);
   // A video over ten minutes long is said up front, on or off a terminal (where no progress
   // bar shows): a playback typed 0.001 for 1 made 180,000 frames of a 6 s scene, hundreds of
   // megabytes, with nothing said for as long as it ran (a new user's trial).
-  if (const auto plan = media::planVideo(loaded->scene, loaded->model.duration);
+  if (const auto plan = media::planVideo(loaded->scene, loaded->model, loaded->model.duration);
       plan && !args.quiet && plan->frames > 600LL * plan->fps)
     std::cerr << args.scene << ": " << plan->frames << " frames, "
               << std::lround(static_cast<double>(plan->frames) / plan->fps / 60.0)
@@ -127,7 +128,7 @@ int stillCommand(const StillArgs& args) {
   std::jthread preload = media::preloadDriver(*backend);
   auto loaded = loadScene(args.scene, args.overrides);
   if (!loaded) return fail(loaded);
-  noteShipped(args.scene, args.quiet);
+  noteShipped(args.scene);
   media::StillRequest request;
   request.scene_name = args.scene;
   request.t = args.t;
@@ -155,7 +156,10 @@ int stillCommand(const StillArgs& args) {
   record(
       {{path, tasks::OutputKind::Still, sceneName(args.scene), std::string(rb::nameOf(still.view)),
         loaded->model.initial.spin, args.t, tasks::madeFrom(loaded->scene)}});
-  if (!args.quiet) std::printf("%s\n", path.c_str());
+  if (!args.quiet) {
+    if (still.leaves) std::cerr << "warning: " << *still.leaves << "\n";
+    std::printf("%s\n", path.c_str());
+  }
   return kOk;
 }
 

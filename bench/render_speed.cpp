@@ -72,7 +72,7 @@ int main(int argc, char** argv) {
         return 2;
       }
       const sim::Model& model = loaded->model;
-      auto planned = media::planVideo(loaded->scene, model.duration);
+      auto planned = media::planVideo(loaded->scene, model, model.duration);
       if (!planned) {
         std::fprintf(stderr, "%s\n", planned.error().text().c_str());
         return 2;

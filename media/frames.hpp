@@ -2,6 +2,8 @@
 #pragma once
 
 #include <functional>
+#include <optional>
+#include <string>
 
 #include "render/frame.hpp"
 #include "sim/model.hpp"
@@ -15,16 +17,32 @@ render::FrameInput frameOf(const sim::Telemetry& t);
 
 /// What the fixed views keep in frame over a run: a sphere around the centre of mass at the
 /// start that holds every drawn point in any orientation, with a quarter more for the body's
-/// wander as it rocks and rolls.
-render::Framing framingOf(const sim::Telemetry& start, const render::BodyPoints& points);
+/// wander as it rocks and rolls. `frame` (m, video.frame; 0 for none) frames a body that long
+/// instead, whatever this one's length: bodies drawn with the same frame are drawn at one scale.
+render::Framing framingOf(const sim::Telemetry& start, const render::BodyPoints& points,
+                          float frame = 0);
+
+/// A run's framing, and whether the body goes out of it (only where a frame was asked for: the
+/// body's own framing holds it).
+struct RunFraming {
+  render::Framing framing;
+  bool body_leaves = false;
+  float needs = 0;  ///< m: the length of frame that would hold the body over the run
+};
 
 /// The same for a whole run, known before a frame is drawn: where the centre of mass wanders
 /// further than that quarter (a body sliding on a slippery floor), the sphere holds the path of
 /// the body over the run instead (issue 26: a body spun −50 rad/s on friction 0.02 slid 10 cm,
-/// off the frame of the fixed views). Runs `model` to its end, sampling every 10 ms, or until
-/// `cancelled` (when given) says to stop; `reached` (when given) hears each sample's time.
-render::Framing framingOfRun(const sim::Model& model, const render::BodyPoints& points,
-                             const std::function<bool()>& cancelled = {},
-                             const std::function<void(double)>& reached = {});
+/// off the frame of the fixed views); with a `frame`, the sphere keeps its size and is centred
+/// on the path. Runs `model` to its end, sampling every 10 ms, or until `cancelled` (when
+/// given) says to stop; `reached` (when given) hears each sample's time.
+RunFraming framingOfRun(const sim::Model& model, const render::BodyPoints& points, float frame,
+                        const std::function<bool()>& cancelled = {},
+                        const std::function<void(double)>& reached = {});
+
+/// What a still or video says where the body goes out of the frame asked for (video.frame,
+/// `frame` in the file's unit), in `view`: the length of frame that holds it, in the file's unit.
+std::optional<std::string> leavesNote(const RunFraming& framing, const render::BodyPoints& points,
+                                      render::View view, float frame, double length_unit);
 
 }  // namespace media

@@ -19,11 +19,11 @@ rb::Result<StillResult> renderStill(const tasks::LoadedScene& loaded, const Stil
   sim::Model model = loaded.model;
   // A still may show a time past the scene's duration: the run then goes on to it.
   model.duration = std::max(model.duration, request.t);
-  auto planned = planVideo(loaded.scene, model.duration);
+  auto planned = planVideo(loaded.scene, model, model.duration);
   // The scene's own run plans, the run on to t does not (past the longest run its video may
   // show, 10 million frames): --t is named, not the file's video section nor --duration.
   if (!planned && request.t > loaded.model.duration &&
-      planVideo(loaded.scene, loaded.model.duration)) {
+      planVideo(loaded.scene, loaded.model, loaded.model.duration)) {
     const scene::VideoSpec& video = loaded.scene.video;
     return rb::Error{"", request.t_named + ": " + rb::show(request.t) +
                              " s is past the longest run a video of this scene may show (10 "
@@ -80,10 +80,14 @@ rb::Result<StillResult> renderStill(const tasks::LoadedScene& loaded, const Stil
   const sim::Telemetry sample = run.sampleAt(request.t);
   render::FrameInput frame = frameOf(sample);
   // The video's framing: of the run to the scene's end (or to t, when past it).
-  frame.framing =
-      framingOfRun(model, points, request.cancelled, [&](double t) { report(request.t + t); });
+  const RunFraming framing =
+      framingOfRun(model, points, static_cast<float>(plan.frame), request.cancelled,
+                   [&](double t) { report(request.t + t); });
   // Stopped while framing: the framing is of part of the run, so no still.
   if (request.cancelled && request.cancelled()) return stopped();
+  frame.framing = framing.framing;
+  result.leaves =
+      leavesNote(framing, points, plan.view, static_cast<float>(plan.frame), model.length_unit);
   frame.history = history.with(sample);
   renderer.draw(frame, result.image);
   result.outcome.t = request.t;

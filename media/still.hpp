@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "render/frame.hpp"
@@ -32,6 +33,8 @@ struct StillResult {
   tasks::Outcome outcome;
   std::string opengl;  ///< the OpenGL in use
   render::View view = render::View::Oblique;
+  /// Where the body goes out of the frame asked for (video.frame): what to say (leavesNote).
+  std::optional<std::string> leaves;
 };
 
 /// Draws the scene's run at request.t with the scene's (or overridden) video settings.

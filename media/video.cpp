@@ -203,7 +203,7 @@ rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const Vide
   if (auto ok = checkExtension(request.output, ".mp4", "MP4 video", request.both); !ok)
     return ok.error();
   const sim::Model& model = loaded.model;
-  auto planned = planVideo(loaded.scene, model.duration);
+  auto planned = planVideo(loaded.scene, model, model.duration);
   if (!planned) return planned.error();
   const VideoPlan& plan = planned.value();
   if (request.both && model.initial.spin == 0)
@@ -259,7 +259,12 @@ rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const Vide
     std::vector<render::Framing> framings;
     std::vector<SpinHistory> histories;
     for (const sim::Rollout& run : runs) {
-      framings.push_back(framingOfRun(run.model(), points, request.cancelled));
+      const RunFraming framing =
+          framingOfRun(run.model(), points, static_cast<float>(plan.frame), request.cancelled);
+      framings.push_back(framing.framing);
+      if (!result.leaves)  // (the first run's, with --both: one line is enough)
+        result.leaves = leavesNote(framing, points, plan.view, static_cast<float>(plan.frame),
+                                   model.length_unit);
       histories.emplace_back(model.duration, plan.width);
     }
     for (const sim::Rollout& run : runs) {

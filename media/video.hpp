@@ -50,6 +50,8 @@ struct VideoResult {
   std::string opengl;            ///< the OpenGL in use
   /// Where a run disagrees with the predicted preferred direction (with `both`).
   std::vector<std::string> notes;
+  /// Where the body goes out of the frame asked for (video.frame): what to say (leavesNote).
+  std::optional<std::string> leaves;
 };
 
 /// crf within 1 … 51 and a known preset; one line naming the option otherwise.

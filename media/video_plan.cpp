@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "tasks/analysis.hpp"
 #include "util/format.hpp"
 
 namespace media {
@@ -13,7 +14,7 @@ namespace {
 
 using rb::show;
 
-rb::Result<VideoPlan> check(const scene::VideoSpec& v, double duration) {
+rb::Result<VideoPlan> check(const scene::VideoSpec& v, const sim::Model& model, double duration) {
   if (v.fps < 1 || v.fps > kMaxFps)
     return rb::Error{"video.fps", "must be within 1 … " + std::to_string(kMaxFps) + ", not " +
                                       std::to_string(v.fps)};
@@ -40,6 +41,22 @@ rb::Result<VideoPlan> check(const scene::VideoSpec& v, double duration) {
   if (!(v.playback <= 1e6))  // and infinity
     return rb::Error{"video.playback", "must be a speed of at most " + show(1e6) + speeds};
   VideoPlan plan;
+  if (!std::isnan(v.frame)) {  // given: a length of body, in the file's unit
+    const double unit = model.length_unit;
+    const double length = tasks::bodySize(*model.body).x();  // m
+    char body[32];
+    std::snprintf(body, sizeof body, "%.3g", length / unit);
+    const std::string way = ": the body is " + std::string(body) + " long in the file's unit (" +
+                            (unit == 1 ? std::string("m") : show(unit) + " m, units.length") + ")";
+    if (!(v.frame > 0) || !std::isfinite(v.frame))
+      return rb::Error{"video.frame", "must be a length > 0, not " + show(v.frame) + way};
+    // Beyond 50 times the body is a few pixels long; within a tenth of it, the picture shows
+    // part of a point or two: a slip of unit (a file in cm given metres, or the other way).
+    if (v.frame * unit > 50 * length || v.frame * unit < 0.1 * length)
+      return rb::Error{"video.frame", "must be within 1/10 … 50 times the body's length, not " +
+                                          show(v.frame) + way};
+    plan.frame = v.frame * unit;
+  }
   plan.fps = v.fps;
   plan.width = v.size[0];
   plan.height = v.size[1];
@@ -58,8 +75,9 @@ rb::Result<VideoPlan> check(const scene::VideoSpec& v, double duration) {
 
 }  // namespace
 
-rb::Result<VideoPlan> planVideo(const scene::Loaded& scene, double duration) {
-  auto plan = check(scene.video, duration);
+rb::Result<VideoPlan> planVideo(const scene::Loaded& scene, const sim::Model& model,
+                                double duration) {
+  auto plan = check(scene.video, model, duration);
   if (!plan) {
     rb::Error error = plan.error();
     // Too many frames because --duration asked for a long run: that option is named.
@@ -102,6 +120,7 @@ render::RenderSettings settingsOf(const VideoPlan& plan, double duration, double
   s.title = title;
   s.duration = duration;
   s.spin_range = std::max(1.0, 1.1 * std::abs(spin));
+  s.frame = static_cast<float>(plan.frame);
   return s;
 }
 

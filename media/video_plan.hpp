@@ -20,15 +20,18 @@ struct VideoPlan {
   render::View view = render::View::Oblique;
   double playback = 1;      ///< simulated seconds per second of video
   std::int64_t frames = 0;  ///< round(duration / playback · fps), at least 1
+  /// The length of body the views are framed for, m; 0: the body's own (video.frame).
+  double frame = 0;
 
   /// Simulated time shown by frame k, s.
   double frameTime(std::int64_t k) const { return static_cast<double>(k) * playback / fps; }
 };
 
-/// Checks the video section (fps 1 … 240, even sizes 16 … 8192, a known view, playback > 0)
-/// for a run of `duration` simulated seconds; an error is one line naming file, line and key
-/// (or the option that set it).
-rb::Result<VideoPlan> planVideo(const scene::Loaded& scene, double duration);
+/// Checks the video section (fps 1 … 240, even sizes 16 … 8192, a known view, playback > 0, a
+/// frame for a body within 1/10 … 50 times `model`'s length) for a run of `duration` simulated
+/// seconds; an error is one line naming file, line and key (or the option that set it).
+rb::Result<VideoPlan> planVideo(const scene::Loaded& scene, const sim::Model& model,
+                                double duration);
 
 /// The renderer's settings for one run's frames: the plan's size and view, titled with the
 /// scene's name, the values put in over its file (--set, with_values) and the spin (the same in

@@ -78,6 +78,34 @@ T take(rb::Result<T> result) {
   return std::move(result).value();
 }
 
+/// Whether this is Python's main thread, the only one signals reach (the GIL held). Elsewhere
+/// (a worker of a ThreadPoolExecutor, a daemon thread) a run never takes the GIL to look for
+/// them: PyErr_CheckSignals would find none there, and a daemon thread that takes the GIL
+/// after the interpreter began to exit is ended by CPython in the middle of our code
+/// (std::terminate: a researcher's trial, exit 134 when a script ended with a run going on).
+inline bool onMainThread() {
+  const py::module_ threading = py::module_::import("threading");
+  const py::object main = threading.attr("main_thread")().attr("ident");
+  return main.equal(threading.attr("get_ident")());
+}
+
+/// The GIL released for a run, and taken back after, unless the interpreter is exiting: then
+/// this thread (a daemon thread still running at exit) waits for the process to end, as
+/// CPython's own daemon threads do, rather than be ended inside a destructor.
+class GilReleased {
+ public:
+  GilReleased() : state_(PyEval_SaveThread()) {}
+  ~GilReleased() {
+    while (_Py_IsFinalizing()) std::this_thread::sleep_for(std::chrono::seconds(1));
+    PyEval_RestoreThread(state_);
+  }
+  GilReleased(const GilReleased&) = delete;
+  GilReleased& operator=(const GilReleased&) = delete;
+
+ private:
+  PyThreadState* state_;
+};
+
 /// Runs `work(cancelled)` on this thread with the GIL released, for work that asks
 /// `cancelled()` on the calling thread (a run's samples, a sweep's pool's wait): there, at most
 /// every 20 ms, it takes the GIL and checks for signals (PyErr_CheckSignals acts on the main
@@ -90,10 +118,11 @@ auto interruptibleHere(Work&& work) {
   bool signalled = false;
   PyObject *type = nullptr, *value = nullptr, *trace = nullptr;
   const std::thread::id caller = std::this_thread::get_id();
+  const bool main = onMainThread();
   auto last = std::chrono::steady_clock::now();
   const std::function<bool()> cancelled = [&] {
     if (stop.load(std::memory_order_relaxed)) return true;
-    if (std::this_thread::get_id() != caller) return false;
+    if (!main || std::this_thread::get_id() != caller) return false;
     const auto now = std::chrono::steady_clock::now();
     if (now - last < std::chrono::milliseconds(20)) return false;
     last = now;
@@ -108,7 +137,7 @@ auto interruptibleHere(Work&& work) {
   using R = decltype(work(cancelled));
   std::optional<R> result;
   {
-    py::gil_scoped_release release;
+    GilReleased release;
     result.emplace(work(cancelled));
   }
   if (signalled) {
@@ -133,8 +162,9 @@ auto interruptible(Work&& work) {
   std::mutex mutex;
   std::condition_variable finished;
   bool done = false;
+  const bool main = onMainThread();
   {
-    py::gil_scoped_release release;
+    GilReleased release;
     std::thread worker([&] {
       try {
         result.emplace(work(cancelled));
@@ -147,7 +177,10 @@ auto interruptible(Work&& work) {
     });
     // Wakes when the work ends, or every 20 ms to look for a signal.
     std::unique_lock lock(mutex);
-    while (!finished.wait_for(lock, std::chrono::milliseconds(20), [&] { return done; })) {
+    // (Off the main thread no signal comes: the work is waited for.)
+    while (!finished.wait_for(lock, std::chrono::milliseconds(main ? 20 : 1000),
+                              [&] { return done; })) {
+      if (!main) continue;
       lock.unlock();
       bool signalled = false;
       PyObject *type = nullptr, *value = nullptr, *trace = nullptr;

@@ -214,6 +214,7 @@ std::shared_ptr<Run> simulate(const LoadedScene& loaded, double rate, bool check
 struct SweepTable {
   scene::Sweep sweep;
   std::vector<tasks::SweepRow> rows;
+  std::vector<std::string> notes;  ///< tasks::sweepNotes: warned of by rattleback.sweep
 };
 
 std::shared_ptr<SweepTable> sweep(const std::string& path, int jobs) {
@@ -223,6 +224,7 @@ std::shared_ptr<SweepTable> sweep(const std::string& path, int jobs) {
   auto table = std::make_shared<SweepTable>();
   table->sweep = take(scene::loadSweep(tasks::findShipped(path)));
   auto scenes = take(scene::SweepScenes::open(table->sweep));
+  table->notes = tasks::sweepNotes(table->sweep, scenes);
   std::vector<std::int64_t> rows;
   for (std::int64_t r = 0; r < table->sweep.rows(); ++r) rows.push_back(r);
   tasks::SweepRun run = interruptibleHere([&](const std::function<bool()>& cancelled) {
@@ -281,7 +283,7 @@ void sweepToCsv(const SweepTable& t, const std::string& path) {
   const nlohmann::json sidecar = tasks::sweepSidecar(t.sweep, std::nullopt);
   rb::Status written;
   {
-    py::gil_scoped_release release;
+    GilReleased release;
     const rb::OutputNamedBy naming("to_csv");  // the way out an error line suggests
     written = tasks::writeSweepTable(path, keys, lines, sidecar);
     if (written)
@@ -326,7 +328,7 @@ PYBIND11_MODULE(_core, m) {
       .def("to_csv", [](const Run& r, const std::string& path) {
         rb::Status written;
         {
-          py::gil_scoped_release release;
+          GilReleased release;
           const rb::OutputNamedBy naming("to_csv");  // the way out an error line suggests
           written = tasks::writeTelemetry(path, r.samples, r.sidecar);
           // Listed in the folder's manifest, as the command line lists it (a failure to list
@@ -346,6 +348,7 @@ PYBIND11_MODULE(_core, m) {
       .def("columns", &sweepColumns)
       .def("to_csv", &sweepToCsv, py::arg("path"))
       .def_property_readonly("file", [](const SweepTable& t) { return t.sweep.file; })
+      .def_property_readonly("notes", [](const SweepTable& t) { return t.notes; })
       .def_property_readonly("base", [](const SweepTable& t) { return t.sweep.base; })
       .def_property_readonly("keys", [](const SweepTable& t) {
         std::vector<std::string> keys;
@@ -360,6 +363,7 @@ PYBIND11_MODULE(_core, m) {
         player.id = id;
         player.title = id;
         player.points = tasks::drawnPointsOf(loaded.value.model);
+        player.frame = tasks::playerFrame(loaded.value.scene, loaded.value.model);
         for (const sim::Telemetry& s : run.samples) {
           const Eigen::Quaterniond q = tasks::attitude(s);
           player.poses.push_back({s.t, s.x_world.x(), s.x_world.y(), s.x_world.z(), q.w(), q.x(),
@@ -376,7 +380,7 @@ PYBIND11_MODULE(_core, m) {
   m.def(
       "_native_seconds",
       [](const LoadedScene& loaded, double rate, int repeats) {
-        py::gil_scoped_release release;
+        GilReleased release;
         std::vector<double> times;
         for (int i = 0; i < repeats; ++i) {
           std::vector<sim::Telemetry> samples;

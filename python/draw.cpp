@@ -93,11 +93,13 @@ py::tuple still(const LoadedScene& loaded, double t, bool readouts, bool transpa
   listed["spin"] = loaded.value.model.initial.spin;
   listed["t"] = t;
   listed["made_from"] = tasks::madeFrom(loaded.value.scene);
-  return py::make_tuple(arrayOf(still.image, transparent), listed);
+  // (What the command line warns of, for the caller to warn of as a RunWarning.)
+  const py::object leaves = still.leaves ? py::object(py::str(*still.leaves)) : py::none();
+  return py::make_tuple(arrayOf(still.image, transparent), listed, leaves);
 }
 
-py::list renderVideos(const LoadedScene& loaded, const std::string& output, bool both, int crf,
-                      const std::string& preset, const std::string& backend) {
+py::tuple renderVideos(const LoadedScene& loaded, const std::string& output, bool both, int crf,
+                       const std::string& preset, const std::string& backend) {
   media::VideoRequest request;
   request.scene_name = loaded.value.scene.file;
   const std::string stem = stemOf(request.scene_name, loaded.has_file);
@@ -136,7 +138,8 @@ py::list renderVideos(const LoadedScene& loaded, const std::string& output, bool
         f.first_reversal_s ? py::object(py::float_(*f.first_reversal_s)) : py::object(py::none());
     files.append(d);
   }
-  return files;
+  const py::object leaves = result.leaves ? py::object(py::str(*result.leaves)) : py::none();
+  return py::make_tuple(files, leaves);
 }
 
 }  // namespace

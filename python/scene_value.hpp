@@ -43,6 +43,7 @@ inline tasks::Overrides overridesOf(const py::dict& kw) {
   number("playback", o.playback);
   number("spin", o.spin);
   number("fps", o.fps);
+  number("frame", o.frame);
   if (kw.contains("integrator") && !kw["integrator"].is_none())
     o.integrator = kw["integrator"].cast<std::string>();
   if (kw.contains("view") && !kw["view"].is_none()) o.view = kw["view"].cast<std::string>();
@@ -74,7 +75,7 @@ inline void bindScene(py::module_& m) {
         std::vector<scene::KeyValue> kv;
         for (const auto& [key, text] : values) kv.push_back({key, text});
         const tasks::Overrides o = overridesOf(overrides);
-        py::gil_scoped_release release;  // compiling a body takes tens of ms
+        GilReleased release;  // compiling a body takes tens of ms
         auto loaded = scene::loadWithValues(yaml, name, kv, "with_values");
         if (!loaded) {
           py::gil_scoped_acquire acquire;

@@ -67,6 +67,10 @@ struct RenderSettings {
   bool transparent = false;  ///< no floor and no background: alpha 0 but the body and its shadow
   double duration = 1;       ///< s, the inset's time axis
   double spin_range = 1;     ///< rad/s, the inset's ± spin axis
+  /// m: the length of body every view is framed for, and the floor's squares chosen by; 0: the
+  /// body's own (each body fills the picture). The fixed views' sphere is the frame's
+  /// (Framing, media/frames.cpp); this is the follow view's and the floor's.
+  float frame = 0;
   /// Every sphere's fragments at their true depth, also where the spheres are small enough to
   /// be drawn as discs (under 4 px in radius; tests compare the two).
   bool exact_sphere_depth = false;

@@ -174,8 +174,16 @@ std::string openEglDisplay(EGLDisplay& display, std::string& platform) {
   if (extensions.find("EGL_MESA_platform_surfaceless") == std::string::npos)
     return "EGL has neither a GPU device nor the surfaceless platform";
   display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-  if (display == EGL_NO_DISPLAY || !eglInitialize(display, nullptr, nullptr))
-    return "EGL cannot initialise the surfaceless platform (error 0x" + eglHex(eglGetError()) + ")";
+  if (display == EGL_NO_DISPLAY || !eglInitialize(display, nullptr, nullptr)) {
+    std::string why =
+        "EGL cannot initialise the surfaceless platform (error 0x" + eglHex(eglGetError()) + ")";
+    // Mesa takes its driver from GALLIUM_DRIVER: one it cannot start here (zink without
+    // Vulkan) is the likely cause (a CI maintainer's trial: the message did not name it).
+    if (const char* driver = std::getenv("GALLIUM_DRIVER"); driver && *driver)
+      why += std::string(" with GALLIUM_DRIVER=") + driver +
+             ": unset GALLIUM_DRIVER or set it to llvmpipe";
+    return why;
+  }
   platform = "surfaceless";
   return "";
 }

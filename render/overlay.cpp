@@ -30,6 +30,11 @@ std::string Overlay::load(int pixels) {
   if (FT_Init_FreeType(&face_->library)) return "cannot start FreeType";
   const std::string list = assetsDir() + "/fonts.txt";
   std::ifstream in(list);
+  // No list at all: the assets folder is not where it was looked for (a RATTLEBACK_ASSETS set
+  // wrong said "install fonts-dejavu-core", which would not help; a CI maintainer's trial).
+  if (!in)
+    return list + ": cannot read the font list (set RATTLEBACK_ASSETS to the assets folder, " +
+           "share/rattleback where rattleback is installed, or unset it)";
   std::string path;
   while (std::getline(in, path)) {
     if (path.empty() || path[0] == '#') continue;

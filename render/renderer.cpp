@@ -97,11 +97,15 @@ std::string Renderer::init() {
   low_ = low;
   high_ = high;
   half_extent_ = 0.5f * (high - low) + Eigen::Vector3f::Constant(body_.radius);
+  // What the picture is scaled by: the body's own size, or the frame asked for (half a body
+  // of that length: the floor's squares and fade, and the follow camera's distance).
+  scale_half_ = settings_.frame > 0 ? 0.5f * settings_.frame : half_extent_.maxCoeff();
+  follow_radius_ = settings_.frame > 0 ? 0.5f * settings_.frame : radius_;
   // The floor's scale, made once: the square follows the body's size, so without it a longer
   // body drawn to fill the frame looked no longer (a teacher's trial: bodies of 20, 24.5 and
   // 40 cm were all 262 pixels long, on squares of 1, 2 and 2 cm).
   const bool fogged = settings_.view == View::Front || settings_.view == View::Side;
-  scale_label_ = "floor squares " + lengthText(floorSquare(half_extent_, fogged));
+  scale_label_ = "floor squares " + lengthText(floorSquare(scaleExtent(), fogged));
   middle_height_ = 0.5f * (high.z() + low.z());
   gl.glGenVertexArrays(1, &points_vao_);
   gl.glBindVertexArray(points_vao_);
@@ -115,7 +119,7 @@ std::string Renderer::init() {
   gl.glEnableVertexAttribArray(1);
 
   // Floor: a quad far larger than the body; the shader fades it out with distance.
-  const float r = 40 * half_extent_.maxCoeff();
+  const float r = 40 * scale_half_;
   const float quad[] = {-r, -r, r, -r, -r, r, r, r};
   gl.glGenVertexArrays(1, &floor_vao_);
   gl.glBindVertexArray(floor_vao_);
@@ -156,8 +160,8 @@ void Renderer::setBlending() {
 
 void Renderer::useFloorProgram(GLuint program, const Camera& camera, const FrameInput& frame,
                                const Eigen::Vector2f& center, bool shadow) {
-  const float size = half_extent_.maxCoeff();
-  const float tile = floorSquare(half_extent_, camera.fog_far > 0);
+  const float size = scale_half_;
+  const float tile = floorSquare(scaleExtent(), camera.fog_far > 0);
   const Eigen::Vector2f axis = longAxisOnFloor(frame);
   const Eigen::Vector2f position = frame.position_world.head<2>().cast<float>();
 
@@ -425,7 +429,7 @@ void Renderer::draw(const FrameInput& frame, Image& out) {
   const float aspect = static_cast<float>(settings_.width) / settings_.height;
   const bool follow = settings_.view == View::Follow;
   const Eigen::Vector2f heading = longAxisOnFloor(frame);
-  Camera camera = follow ? chaseCamera(middle, heading, radius_, aspect)
+  Camera camera = follow ? chaseCamera(middle, heading, follow_radius_, aspect)
                          : fixedCamera(settings_.view, frame.framing, half_extent_.z(), aspect);
   // In a frame narrower than 3:2 the body reaches the corners where the title and read-outs
   // (top left) and the inset (bottom right) go; seen from above it spans the height. The scene

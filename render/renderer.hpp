@@ -109,6 +109,11 @@ class Renderer {
   std::string scale_label_;      ///< "floor squares 1 cm"
   float middle_height_ = 0;      ///< height of the body's middle above its CM, m
   float radius_ = 0;             ///< the largest distance of a drawn point from the CM, m
+  /// Half the length the picture is scaled by (settings_.frame, or the body's own), m: the
+  /// floor's squares and fade.
+  float scale_half_ = 0;
+  float follow_radius_ = 0;  ///< what the follow camera keeps in frame, m
+  Eigen::Vector3f scaleExtent() const { return Eigen::Vector3f::Constant(scale_half_); }
 };
 
 }  // namespace render

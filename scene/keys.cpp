@@ -324,6 +324,14 @@ const std::vector<Key>& table() {
        .doc = "speed as players mean it: 0.5 = slow motion, 2 = twice as fast",
        .check = "> 0; at most 1e7 frames in all",
        .sample = "0.5"},
+      {.path = "video.frame",
+       .field = FIELD(video.frame),
+       .unit = "file units",
+       .doc = "every view framed for a body this long: give bodies to be compared the same "
+              "value and they are drawn at one scale, on the same floor squares",
+       .check = "> 0; within 1/10 … 50 times the body's length",
+       .sample = "10",
+       .default_note = "the body's own length: each body fills the picture"},
   };
   return rows;
 }

@@ -26,6 +26,10 @@ struct VideoSpec {
   /// Playback speed as players mean it: simulated seconds per second of video (0.5 = slow
   /// motion, 2 = twice as fast).
   double playback = 1.0;
+  /// The length of body every view is framed for, in the file's length unit; unset (NaN): the
+  /// body's own, so that each body fills the picture. Bodies drawn with the same value are
+  /// drawn at one scale, on the same floor squares.
+  double frame = sim::kUnset;
 };
 
 /// A value for a dotted scene key ("initial.spin", "body.dents.at[1]"), as YAML flow text

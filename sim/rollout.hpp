@@ -54,6 +54,12 @@ struct RunSummary {
   /// the floor regardless, docs/physics.md P4.5). Set by the sampler (tasks::simulate), from the
   /// samples' normal force, which they compute anyway: not looked for between samples.
   std::optional<double> floor_pulled_s;
+  /// contact.model rolling: the first time sampled at which the constraint needed more friction
+  /// than the floor gives (|F_t| > μN with N > 0, where a real body slips), and the most it
+  /// needed, max |F_t|/N over the samples with N > 0 (NaN when none). Set by the sampler, as
+  /// floor_pulled_s is.
+  std::optional<double> friction_exceeded_s;
+  double friction_needed = std::numeric_limits<double>::quiet_NaN();
 };
 
 class Rollout {

@@ -24,6 +24,7 @@ Telemetry telemetryOf(const Model& model, const State& s) {
   out.L_world = s.L_world;
   out.contacts = contact.contacts;
   out.normal_force = contact.normal_force;
+  out.friction_force = contact.force_world.head<2>().norm();
   out.mode = model.contact.model;
   return out;
 }

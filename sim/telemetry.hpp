@@ -22,6 +22,9 @@ struct Telemetry {
   int contacts = 0;                                   ///< points below the floor
   ContactModel mode = ContactModel::Points;  ///< the contact model integrated (auto: its mode)
   double normal_force = 0;                   ///< N
+  /// N: the floor's force along the floor, |F_t| (not a CSV column: under rolling the runs'
+  /// check of μN, tasks::simulate).
+  double friction_force = 0;
 };
 
 Telemetry telemetryOf(const Model& model, const State& s);

@@ -71,10 +71,16 @@ std::optional<std::string> implausibleMass(const sim::Body& body, double length_
   const double least = body.mass / box;  // kg/m³: the body fills at most its box
   char text[400];
   if (least > 23000) {
+    // With a unit of its own the lengths may be the slip: mm written for cm (a researcher's
+    // trial: units.length 0.001 for a body measured in cm was blamed on the mass alone).
+    const std::string unit = length_unit < 0.01 ? ", or the lengths are larger than units.length " +
+                                                      rb::show(length_unit) +
+                                                      " m makes them (0.01 reads them in cm)"
+                                                : "";
     std::snprintf(text, sizeof text,
                   "body.mass %g kg in a body of %s is at least %.2g kg/m³, denser than any solid "
-                  "(osmium: 22,590 kg/m³): body.mass is in kg (59 g is 0.059)",
-                  body.mass, sizeText(size, length_unit).c_str(), least);
+                  "(osmium: 22,590 kg/m³): body.mass is in kg (59 g is 0.059)%s",
+                  body.mass, sizeText(size, length_unit).c_str(), least, unit.c_str());
     return text;
   }
   if (10 * least < 1.2) {

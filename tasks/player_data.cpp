@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include "tasks/analysis.hpp"
+
 namespace tasks {
 namespace {
 
@@ -34,6 +36,13 @@ std::vector<Pose> thinPoses(const std::vector<Pose>& poses) {
   return out;
 }
 
+double playerFrame(const scene::Loaded& scene, const sim::Model& model) {
+  if (!(scene.video.frame > 0) || !std::isfinite(scene.video.frame)) return 0;
+  const double frame = scene.video.frame * model.length_unit;
+  const double length = bodySize(*model.body).x();
+  return frame <= 50 * length && frame >= 0.1 * length ? frame : 0;
+}
+
 std::string playerScript(const PlayerRun& run) {
   std::string data = "{";
   data += "\"id\":" + nlohmann::json(run.id).dump() + ",";
@@ -44,7 +53,8 @@ std::string playerScript(const PlayerRun& run) {
   appendArray(data, "bottom", 3 * p.bottom.size(), 6,
               [&](std::size_t i) { return p.bottom[i / 3][i % 3]; });
   char text[160];
-  std::snprintf(text, sizeof text, "\"radius\":%.6g,\"reach\":%.6g,", p.radius, reachOf(p));
+  std::snprintf(text, sizeof text, "\"radius\":%.6g,\"reach\":%.6g,\"frame\":%.6g,", p.radius,
+                reachOf(p), run.frame);
   data += text;
   const auto& q = run.poses;
   // Times to the µs over runs up to 1000 s; positions to 0.1 µm; the quaternion to 1e-9.

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "scene/loader.hpp"
+#include "sim/model.hpp"
 #include "tasks/drawn_points.hpp"
 
 namespace tasks {
@@ -33,7 +35,14 @@ struct PlayerRun {
   DrawnPoints points;
   std::vector<Pose> poses;        ///< in time order
   std::vector<double> reversals;  ///< s
+  /// m: the length of body the views are framed for (the scene's video.frame), as stills and
+  /// videos frame it; 0: the body's own.
+  double frame = 0;
 };
+
+/// A scene's video.frame in metres, as the player takes it: 0 where it is not given, or where
+/// it is not within 1/10 … 50 times the body's length (which `still` and `render` refuse).
+double playerFrame(const scene::Loaded& scene, const sim::Model& model);
 
 /// Every k-th pose so that at most kPlayerRate remain per simulated second, and the last.
 std::vector<Pose> thinPoses(const std::vector<Pose>& poses);

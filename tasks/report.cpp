@@ -718,6 +718,7 @@ struct RunModel {
   std::optional<sim::Model> model;
   std::string scene;  ///< the scene file's path, where one was found
   std::string why;
+  double frame = 0;  ///< m: the scene's video.frame for the player (playerFrame)
 };
 
 // The model of the scene a telemetry sidecar names, with the values the run put in over it
@@ -772,6 +773,7 @@ RunModel runModelOf(const nlohmann::json& sidecar, const fs::path& dir) {
     out.why = changed;
     return out;
   }
+  out.frame = playerFrame(loaded.value(), model.value());
   out.model = std::move(model).value();
   return out;
 }
@@ -798,6 +800,7 @@ rb::Result<bool> writePlayerData(const fs::path& dir, const std::string& id, con
   run.id = id;
   run.title = id;
   run.points = drawnPointsOf(*model);
+  run.frame = found.frame;
   run.poses = thinPoses(posesOf(dir / f.at(".csv")));
   if (run.poses.size() < 2) return false;
   const nlohmann::json& reversals = field(field(*sidecar, "result"), "reversals_s");

@@ -68,6 +68,10 @@ nlohmann::json runJson(const sim::RunSummary& run) {
     changes.push_back({{"t", t}, {"to", std::string(rb::nameOf(mode))}});
   j["mode_changes"] = changes;
   j["floor_pulled_s"] = run.floor_pulled_s ? nlohmann::json(*run.floor_pulled_s) : nullptr;
+  j["friction_exceeded_s"] =
+      run.friction_exceeded_s ? nlohmann::json(*run.friction_exceeded_s) : nullptr;
+  j["friction_needed"] =
+      std::isfinite(run.friction_needed) ? nlohmann::json(run.friction_needed) : nullptr;
   j["wall_s"] = run.wall_s;
   return j;
 }
@@ -132,6 +136,15 @@ std::vector<RunWarning> runWarnings(const sim::Model& model, const sim::RunSumma
                   "contact.model: auto lets it",
                   *run.floor_pulled_s);
     w.push_back({"floor_pulled", text});
+  }
+  if (run.friction_exceeded_s) {
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "from %.4g s rolling needed more friction than contact.friction %g gives (up "
+                  "to %.2g of the normal force): rolling holds the contact point still whatever "
+                  "that takes, where a real body would slip; contact.model: auto lets it",
+                  *run.friction_exceeded_s, model.contact.friction, run.friction_needed);
+    w.push_back({"friction_exceeded", text});
   }
   return w;
 }

@@ -14,6 +14,7 @@ namespace tasks {
 
 struct Overrides {
   std::optional<double> duration, dt, tolerance, playback, spin;
+  std::optional<double> frame;  ///< video.frame, in the scene's length unit
   std::optional<std::string> integrator, view;
   std::optional<std::array<int, 2>> size;
   std::optional<double> fps;  ///< checked to be whole: a scene's video.fps is an integer
@@ -32,7 +33,8 @@ struct LoadedScene {
 
 /// Where a scene or sweep file is: `path` itself, or, for a relative path that is not here, the
 /// installed copy under the assets folder (share/rattleback/scenes, …/sweeps), so that
-/// `rattleback still scenes/rattleback.yaml` and bench's defaults work from any folder.
+/// `rattleback still scenes/rattleback.yaml` and bench's defaults work from any folder. A path
+/// that starts with ./ or ../ is this folder's only.
 std::string findShipped(const std::string& path);
 
 /// The compiled scene, or the one line to print.

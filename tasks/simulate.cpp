@@ -123,18 +123,27 @@ rb::Status checkRate(double rate, double duration) {
 SimulateResult simulate(const sim::Model& model, const SimulateOptions& options) {
   SimulateResult result;
   sim::Rollout rollout(model);
-  std::optional<double> pulled;
+  std::optional<double> pulled, slipped;
+  double needed = std::numeric_limits<double>::quiet_NaN();
   const bool rolling = model.contact.model == sim::ContactModel::Rolling;
   for (double t : sim::sampleTimes(model.duration, options.rate)) {
     if (options.cancelled && options.cancelled()) rollout.requestStop();
     if (!rollout.advanceTo(t)) break;
     const sim::Telemetry sample = rollout.sampleAt(t);
+    // What rolling's constraint asks of the floor, which it gives whatever it is (P4.5).
     if (rolling && !pulled && sample.normal_force < 0) pulled = sample.t;
+    if (rolling && sample.normal_force > 0) {
+      const double ratio = sample.friction_force / sample.normal_force;
+      if (!(ratio <= needed)) needed = ratio;  // (and the first: NaN)
+      if (!slipped && ratio > model.contact.friction) slipped = sample.t;
+    }
     if (options.each) options.each(sample);
     ++result.rows;
   }
   result.summary = rollout.summary();
   result.summary.floor_pulled_s = pulled;
+  result.summary.friction_exceeded_s = slipped;
+  result.summary.friction_needed = needed;
   result.outcome = outcomeOf(result.summary);
   return result;
 }

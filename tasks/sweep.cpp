@@ -13,6 +13,7 @@
 #include "sim/compile.hpp"
 #include "sim/rollout.hpp"
 #include "tasks/output.hpp"
+#include "util/assets.hpp"
 
 namespace tasks {
 namespace {
@@ -116,6 +117,28 @@ std::optional<SweepRow> runRow(const scene::Sweep& sweep, const scene::SweepScen
 }
 
 }  // namespace
+
+std::vector<std::string> sweepNotes(const scene::Sweep& sweep, const scene::SweepScenes& scenes) {
+  std::vector<std::string> notes;
+  for (const scene::SweepAxis& axis : sweep.axes)
+    if (axis.key == "contact.model") return notes;
+  const auto first = scenes.scene(0);
+  if (!first || first->spec.contact.model != "rolling") return notes;
+  const std::string physics = rb::docPage("physics.md");
+  for (const scene::SweepAxis& axis : sweep.axes) {
+    if (axis.key == "contact.friction")
+      notes.push_back(axis.place + ": " + axis.key +
+                      " does not change a rolling run, which never slips (" + physics +
+                      " P4.5): the rows along it are alike. contact.model: auto lets the body "
+                      "slip; a rolling run's sidecar gives the friction it needed "
+                      "(friction_needed)");
+    else if (axis.key.starts_with("contact.") && axis.key != "contact.air_drag")
+      notes.push_back(axis.place + ": " + axis.key + " is not used by a rolling run (" + physics +
+                      " P4.5): the rows along it are alike; contact.model: auto uses it where "
+                      "the body slides");
+  }
+  return notes;
+}
 
 std::span<const Column> sweepResultColumns() {
   return kResults;

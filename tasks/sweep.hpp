@@ -45,6 +45,12 @@ struct SweepRow {
 };
 
 /// The result columns after the axes' (name and unit), in the table's order.
+/// What a sweep should know before it runs: an axis whose key the rows' contact model does not
+/// use (contact.friction, stiffness, … under rolling) gives the same row all along it (a
+/// researcher's trial: a friction × spin heatmap under rolling was flat, with nothing said).
+/// One line each; none when the contact model is itself an axis.
+std::vector<std::string> sweepNotes(const scene::Sweep& sweep, const scene::SweepScenes& scenes);
+
 std::span<const Column> sweepResultColumns();
 /// The unit of a sweep table's column: a varied key's from the schema (lengths "file units"),
 /// a result column's from sweepResultColumns(); "" for none (the sidecar and the plots').

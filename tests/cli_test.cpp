@@ -437,6 +437,14 @@ TEST(Cli, AMassNoMaterialGivesIsSaid) {
                            "4e+05 kg/m³, denser than any solid"),
             std::string::npos)
       << grams.out;
+  EXPECT_EQ(grams.out.find("units.length"), std::string::npos) << grams.out;  // cm: not the slip
+  // Lengths in cm written with units of mm: the unit is named beside the mass (a researcher's
+  // trial: the mass alone was blamed).
+  const Result mm = rattleback("analyze " + scene("rattleback") + " --set units.length=0.001");
+  EXPECT_NE(mm.out.find("body.mass is in kg (59 g is 0.059), or the lengths are larger than "
+                        "units.length 0.001 m makes them (0.01 reads them in cm)"),
+            std::string::npos)
+      << mm.out;
   const fs::path metres = tempFile("no-units.yaml");
   std::string text = readText(scene("rattleback"));
   text.replace(text.find("units: {length: 0.01}"), 21, "");
@@ -1208,6 +1216,15 @@ TEST(Cli, OptionErrorsNameTheOptionAndTheWayOut) {
                              "--playback: must be a speed of at most 1e+06 (1 "
                              "real time, 0.5 slow motion, 2 twice as fast), "
                              "not 1e+07\n"},
+                        // A frame is a length in the file's unit (the default scene's cm):
+                        // metres typed for cm, or cm for metres, are 1/100 or 100 times it.
+                        Case{"--frame 4000",
+                             "--frame: must be within 1/10 … 50 times the body's length, not "
+                             "4000: the body is 20 long in the file's unit (0.01 m, "
+                             "units.length)\n"},
+                        Case{"--frame 0.4", "not 0.4: the body is 20 long"},
+                        Case{"--frame -1", "--frame: must be a length > 0, not -1: the body"},
+                        Case{"--frame nan", "--frame: must be a finite number, not nan\n"},
                         // What the option takes, not CLI11's "Could not convert: --dt = abc".
                         Case{"--dt abc", "render: --dt takes a number, not 'abc'"},
                         Case{"--crf 2.5", "render: --crf takes a whole number, not '2.5'"}}) {
@@ -1467,6 +1484,57 @@ std::vector<std::vector<std::string>> csvRows(const std::string& text) {
 }
 
 }  // namespace
+
+// Rolling holds the contact point still whatever friction that takes (docs/physics.md P4.5).
+// The floor's force along the floor is M times the CM's horizontal acceleration (gravity is
+// vertical, the air's drag a torque) and its normal force M (z'' + g): the friction a rolling run
+// needs, |F_t|/N, read from the CSV's positions alone by second differences, is the result's
+// friction_needed (1 %: the differences' truncation at 4 kHz is about 1e-4 of N, measured). The
+// default body spun −5 rad/s needs about 0.22 (physics.md): μ = 0.5 holds it and nothing is said;
+// at μ = 0.1 the summary warns, from the first sample that needed more.
+TEST(Cli, ARollingRunThatNeedsMoreFrictionThanTheFloorGivesIsSaidToBe) {
+  const std::string csv = tempFile("friction.csv").string();
+  const std::string run = "simulate " + scene("rattleback") + " --duration 3 --rate 4000 -o " + csv;
+  const Result held = rattleback(run);
+  ASSERT_EQ(held.status, 0) << held.err;
+  EXPECT_EQ(held.out.find("WARNING"), std::string::npos) << held.out;
+  const std::vector<std::vector<std::string>> rows = csvRows(readText(csv));
+  const std::vector<std::string>& header = rows.front();
+  auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  const std::size_t x = column("x"), y = column("y"), z = column("z");
+  ASSERT_LT(z, header.size());
+  const double h = 1.0 / 4000, g = 9.81;
+  std::vector<double> ratio(rows.size(), 0.0);  // by row; 0 at the ends
+  for (std::size_t i = 2; i + 1 < rows.size(); ++i) {
+    auto second = [&](std::size_t c) {
+      return (std::stod(rows[i + 1][c]) - 2 * std::stod(rows[i][c]) + std::stod(rows[i - 1][c])) /
+             (h * h);
+    };
+    ratio[i] = std::hypot(second(x), second(y)) / (second(z) + g);
+  }
+  const nlohmann::json result = nlohmann::json::parse(readText(csv + ".json"))["result"];
+  const double needed = result["friction_needed"].get<double>();
+  EXPECT_NEAR(needed, *std::max_element(ratio.begin(), ratio.end()), 0.01 * needed);
+  EXPECT_GT(needed, 0.15);
+  EXPECT_LT(needed, 0.3);
+  EXPECT_TRUE(result["friction_exceeded_s"].is_null());
+
+  const Result slips = rattleback(run + " --set contact.friction=0.1");
+  ASSERT_EQ(slips.status, 0) << slips.err;
+  EXPECT_NE(slips.out.find("WARNING         from "), std::string::npos) << slips.out;
+  EXPECT_NE(slips.out.find("rolling needed more friction than contact.friction 0.1 gives"),
+            std::string::npos)
+      << slips.out;
+  const nlohmann::json slipped = nlohmann::json::parse(readText(csv + ".json"))["result"];
+  const double from = slipped["friction_exceeded_s"].get<double>();
+  const auto at = static_cast<std::size_t>(std::lround(from / h)) + 1;  // (row 0 is the header)
+  ASSERT_LT(at, ratio.size());
+  EXPECT_GT(ratio[at], 0.1 * 0.99) << from;
+  for (std::size_t i = 2; i < at; ++i) EXPECT_LT(ratio[i], 0.1 * 1.01) << i;
+  EXPECT_EQ(slipped["warnings"].back()["code"], "friction_exceeded");
+}
 
 // What a user reads in the telemetry: samples at exactly k/rate, the initial spin of the scene
 // as n = ω·ẑ (spin about the body axis tilted 0.5° about x and y: n = −5 cos² 0.5°), the total
@@ -1847,6 +1915,38 @@ TEST(Cli, AGalliumDriverOsMesaLacksIsNamedNotCrashedOn) {
   EXPECT_NE(osmesa.err.find("GALLIUM_DRIVER=bogus"), std::string::npos) << osmesa.err;
   EXPECT_NE(osmesa.err.find("set it to llvmpipe"), std::string::npos) << osmesa.err;
   EXPECT_EQ(lines(osmesa.err), 1) << osmesa.err;
+  EXPECT_FALSE(fs::exists(png));
+  // EGL's surfaceless platform with a driver Mesa cannot start there: its error names the
+  // variable too (a CI maintainer's trial: zink's failure read only "error 0x3001"). Mesa's own
+  // lines may come before it.
+  Result egl;
+  {
+    const ScopedEnv driver("GALLIUM_DRIVER", "bogus");
+    egl = rattleback("still " + scene("rattleback") + " --backend egl -o " + png.string());
+  }
+  EXPECT_EQ(egl.status, 4) << egl.err;
+  if (egl.err.find("surfaceless") != std::string::npos)  // (a GPU's device platform needs none)
+    EXPECT_NE(egl.err.find("with GALLIUM_DRIVER=bogus: unset GALLIUM_DRIVER or set it to "
+                           "llvmpipe"),
+              std::string::npos)
+        << egl.err;
+  EXPECT_FALSE(fs::exists(png));
+}
+
+// The assets folder is found beside the program, or where RATTLEBACK_ASSETS says. Set wrong, the
+// first asset missing is named with the variable (a CI maintainer's trial: "no usable font
+// listed … (install fonts-dejavu-core)", which would not help), exit 4 and nothing written.
+TEST(Cli, AWrongAssetsFolderIsNamedWithItsVariable) {
+  const fs::path png = tempFile("assets.png");
+  Result r;
+  {
+    const ScopedEnv assets("RATTLEBACK_ASSETS", "/nonexistent");
+    r = rattleback("still " + scene("rattleback") + " -q -o " + png.string());
+  }
+  EXPECT_EQ(r.status, 4) << r.err;
+  EXPECT_NE(r.err.find("RATTLEBACK_ASSETS"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("fonts-dejavu"), std::string::npos) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
   EXPECT_FALSE(fs::exists(png));
 }
 
@@ -2799,6 +2899,44 @@ TEST(Cli, AStillBeforeZeroNamesTAndItsValue) {
     EXPECT_EQ(r.err, "--time: must be a time ≥ 0 s, not -1\n") << typed;
     EXPECT_FALSE(fs::exists(png));
   }
+}
+
+// A frame shorter than the body asks for part of it (allowed: a close-up), and the picture
+// says so, with the length that holds it: the body's reach from its middle (10 cm of the
+// default's 20, less the drawn points' inset from the edge) over the 1.1 × half the frame the
+// follow view holds (camera.cpp): 17–19 cm. The length said is the boundary: a frame a little
+// longer says nothing, one a little shorter warns. A frame of the body's own length says
+// nothing.
+TEST(Cli, AStillWithTooShortAFrameSaysTheBodyLeavesIt) {
+  const fs::path png = tempFile("close.png");
+  const std::string still = "still " + scene("rattleback") + " --size 320x180 -o " + png.string();
+  const std::string warning = "warning: the body goes out of the picture: video.frame ";
+  for (const char* view : {"oblique", "follow"}) {
+    const Result close = rattleback(still + " --frame 10 --view " + view);
+    EXPECT_EQ(close.status, 0) << close.err;
+    EXPECT_TRUE(fs::exists(png));
+    const std::string says =
+        std::string("10 is less than this run needs in the ") + view + " view (";
+    const std::size_t at = close.err.find(says);
+    ASSERT_EQ(close.err.rfind(warning, 0), 0u) << close.err;
+    ASSERT_NE(at, std::string::npos) << close.err;
+    EXPECT_EQ(lines(close.err), 1) << close.err;
+    const double needs = std::stod(close.err.substr(at + says.size()));
+    if (std::string(view) == "follow") {
+      EXPECT_GT(needs, 17);
+      EXPECT_LT(needs, 19);
+    }
+    EXPECT_EQ(rattleback(still + " --frame " + std::to_string(needs + 0.1) + " --view " + view).err,
+              "")
+        << view;
+    EXPECT_EQ(rattleback(still + " --frame " + std::to_string(needs - 0.2) + " --view " + view)
+                  .err.rfind(warning, 0),
+              0u)
+        << view;
+  }
+  const Result whole = rattleback(still + " --frame 20");
+  EXPECT_EQ(whole.status, 0);
+  EXPECT_EQ(whole.err, "");
 }
 
 TEST(Cli, AStillTooLateNamesT) {

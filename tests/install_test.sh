@@ -77,9 +77,21 @@ echo "ok: the installed scenes are found from another folder"
 # shipped one in silence).
 note=$(cd "$(mktemp -d "$work/elsewhere.XXXX")" &&
   "$work/prefix/bin/rattleback" simulate scenes/rattleback.yaml --duration 0.1 -o r.csv 2>&1 >/dev/null)
-[ "$note" = "note: no scenes/rattleback.yaml in this folder; running the shipped one, $work/prefix/share/rattleback/scenes/rattleback.yaml" ] ||
+[ "$note" = "note: no scenes/rattleback.yaml in this folder; running the shipped one, $work/prefix/share/rattleback/scenes/rattleback.yaml (./scenes/rattleback.yaml names this folder's only)" ] ||
   { echo "FAIL: an installed scene run from another folder is not said to be: '$note'"; exit 1; }
 echo "ok: a shipped scene run in place of a missing one is said to be"
+# ... with -q too, and never for ./ (a CI maintainer's trial: a pipeline's deleted scene of a
+# shipped one's name ran the shipped one in silence under -q).
+quiet=$(cd "$(mktemp -d "$work/elsewhere.XXXX")" &&
+  "$work/prefix/bin/rattleback" simulate scenes/rattleback.yaml --duration 0.1 -q -o r.csv 2>&1 >/dev/null)
+[ "$quiet" = "$note" ] || { echo "FAIL: -q hides that the shipped scene ran: '$quiet'"; exit 1; }
+status=0
+here=$(cd "$(mktemp -d "$work/elsewhere.XXXX")" &&
+  "$work/prefix/bin/rattleback" simulate ./scenes/rattleback.yaml --duration 0.1 -q -o r.csv 2>&1) ||
+  status=$?
+[ "$status" = 2 ] && [ "$here" = "./scenes/rattleback.yaml: cannot open the scene file: No such file or directory" ] ||
+  { echo "FAIL: ./scenes/rattleback.yaml ran another folder's scene ($status): '$here'"; exit 1; }
+echo "ok: -q says it too, and ./ names this folder's scene only"
 # A run of an installed scene names the file it ran in its sidecar, so that report replays it in
 # 3D from any folder (a new user's trial: the sidecar named ./scenes/rattleback.yaml, which is
 # not there, and the page had no player and said nothing).

@@ -140,6 +140,47 @@ TEST(Snapshots, SmallFramesDrawTheBodySolid) {
   EXPECT_LT(holes, between / 10);
 }
 
+// Each view frames its body, so a body twice as long was drawn as long as the other (a
+// teacher's trial). video.frame (--frame) frames a body of that length instead: the default
+// body (20 cm) and the same body in units twice as large (40 cm), both framed for 60 cm from
+// above, are drawn in the ratio of their lengths. The lengths are measured as the body's
+// pixels across the frame (from above +y, the long axis at t = 0, runs to the right); each
+// end is uncertain by a sphere's edge, a pixel or two of the 100-odd: 4 %. Without --frame
+// both fill the frame alike (the ratio is 1 within the same 4 %), which is what the test
+// tells apart.
+TEST(Snapshots, OneFrameDrawsBodiesAtOneScale) {
+  auto widthOf = [](const std::string& options) {
+    const fs::path png = scratch("scale.png");
+    EXPECT_EQ(rattleback("still scenes/rattleback.yaml --view above --no-readouts --size 640x360 "
+                         "-q " +
+                         options + " -o " + png.string()),
+              0)
+        << options;
+    render::Image image;
+    EXPECT_TRUE(render::readPng(png.string(), image)) << options;
+    int first = image.width, last = -1;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        const unsigned char* p = &image.rgba[(static_cast<std::size_t>(y) * image.width + x) * 4];
+        if ((p[0] > p[1] + 60 && p[0] > p[2] + 60) || (p[2] > p[0] + 60 && p[2] > p[1] + 40)) {
+          first = std::min(first, x);
+          last = std::max(last, x);
+        }
+      }
+    return last - first + 1;
+  };
+  // --frame is in the file's unit: 60 cm is 60 in the first, 30 (of 2 cm) in the second.
+  const int short_framed = widthOf("--frame 60");
+  const int long_framed = widthOf("--frame 30 --set units.length=0.02");
+  ASSERT_GT(short_framed, 50);
+  EXPECT_NEAR(static_cast<double>(long_framed) / short_framed, 2.0, 0.08)
+      << short_framed << " and " << long_framed << " px";
+  const int short_own = widthOf("");
+  const int long_own = widthOf("--set units.length=0.02");
+  EXPECT_NEAR(static_cast<double>(long_own) / short_own, 1.0, 0.04)
+      << short_own << " and " << long_own << " px";
+}
+
 // Front and side look along the floor from 10° above (orthographic, like the seed's
 // figures): the floor fades into the background by depth, so the frame shows a horizon —
 // sky above, floor below — and its squares are deep enough not to read as stripes.

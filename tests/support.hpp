@@ -79,7 +79,7 @@ inline std::string errorFor(const std::string& yaml) {
   if (!loaded) return loaded.error().text();
   auto model = scene::loadModel(loaded.value());
   if (!model) return model.error().text();
-  auto plan = media::planVideo(loaded.value(), model->duration);
+  auto plan = media::planVideo(loaded.value(), model.value(), model->duration);
   if (!plan) return plan.error().text();
   return "";
 }

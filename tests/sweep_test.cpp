@@ -265,6 +265,40 @@ TEST(Sweep, ABadValueRefusesItsRowOnly) {
   EXPECT_EQ(rows[2][4], "");
 }
 
+// A rolling run never slips: an axis of contact.friction under it gives the same row all along
+// (a researcher's trial: a flat friction × spin heatmap with nothing said). The sweep says so
+// before it runs, naming the axis's line, and not with -q; where the contact model is itself
+// varied, or the key is one rolling uses (air_drag), nothing is said.
+TEST(Sweep, AnAxisRollingDoesNotUseIsSaidToBe) {
+  const fs::path dir = scratch();
+  const std::string table = " -o " + (dir / "t.csv").string();
+  const fs::path friction = writeSweep(
+      dir, "base: " + kBase +
+               "\nvary:\n  contact.friction: [0.1, 0.5]\n  initial.spin: [-5]\nduration: 0.2\n");
+  const Outcome said = rattleback(dir, "sweep " + friction.string() + table);
+  ASSERT_EQ(said.status, 0) << said.err;
+  EXPECT_EQ(said.err.rfind("note: " + friction.string() +
+                               ":3: contact.friction does not change a rolling run, which never "
+                               "slips (",
+                           0),
+            0u)
+      << said.err;
+  const auto rows = readCsv(slurp(dir / "t.csv"));
+  ASSERT_EQ(rows.size(), 3u);
+  ASSERT_EQ(rows[0][6], "final_spin");
+  EXPECT_EQ(rows[1][6], rows[2][6]);  // the same final spin to the bit: what the note says
+  EXPECT_EQ(rattleback(dir, "sweep " + friction.string() + " -q" + table).err, "");
+  for (const std::string& vary : {"  contact.air_drag: [0.0, 1.0e-5]\n",
+                                  "  contact.friction: [0.1, 0.5]\n"
+                                  "  contact.model: [rolling]\n"}) {
+    const fs::path quiet =
+        writeSweep(dir, "base: " + kBase + "\nvary:\n" + vary + "duration: 0.2\n");
+    const Outcome none = rattleback(dir, "sweep " + quiet.string() + table);
+    ASSERT_EQ(none.status, 0) << none.err;
+    EXPECT_EQ(none.err, "") << vary;
+  }
+}
+
 // A bad value in the base scene (not varied) refuses the rows naming the base's own line: the
 // rows' trees are copies, which keep no lines, and it was named at the base's line 1.
 TEST(Sweep, ABadValueInTheBaseNamesTheBasesLine) {

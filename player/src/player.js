@@ -344,6 +344,9 @@ function bodyGeometry(run) {
     radius: r,
     spacing,
     reach: run.reach > 0 ? +run.reach : reach,
+    // The length of body the views are framed for (the scene's video.frame), as in its stills
+    // and videos: bodies given the same are drawn at one scale; 0: the body's own.
+    frame: run.frame > 0 ? +run.frame : 0,
     halfExtent,
     // The box holding every drawn sphere, body frame (for the part of the picture to redraw).
     low: low.map((v) => v - r),
@@ -614,7 +617,7 @@ class Player {
     this.body = body;
     this.framing = {
       center: new Vector3(run.x[0], run.y[0], run.z[0]),
-      radius: 1.25 * body.reach,
+      radius: 1.25 * (body.frame > 0 ? 0.5 * body.frame : body.reach),
     };
     this.pointsMaterial = new ShaderMaterial({
       vertexShader: POINTS_VERTEX,
@@ -640,7 +643,7 @@ class Player {
       x0 = Math.min(x0, run.x[i]); x1 = Math.max(x1, run.x[i]);
       y0 = Math.min(y0, run.y[i]); y1 = Math.max(y1, run.y[i]);
     }
-    const size = Math.max(...body.halfExtent);
+    const size = body.frame > 0 ? 0.5 * body.frame : Math.max(...body.halfExtent);
     const margin = 14 * size + 20 * this.framing.radius;
     // FOG's band reaches as far as the floor did when it was a plane over this rectangle.
     const reach = Math.hypot(x1 - x0 + 2 * margin, y1 - y0 + 2 * margin);
@@ -907,7 +910,8 @@ class Player {
     if (norm > 1e-6) { hx /= norm; hy /= norm; } else { hx = 0; hy = 1; }
     const middle = this.points.position.clone();
     middle.z += this.body.middleHeight;
-    const distance = (1.1 * this.body.reach) / Math.sin(narrow / 2);
+    const framed = this.body.frame > 0 ? 0.5 * this.body.frame : this.body.reach;
+    const distance = (1.1 * framed) / Math.sin(narrow / 2);
     const direction = new Vector3(-hy * Math.cos(elevation), hx * Math.cos(elevation), Math.sin(elevation));
     const p = this.perspective;
     p.fov = 30;

@@ -345,11 +345,13 @@ def simulate(scene: SceneLike, *, rate: float = _core.default_rate,
 
 
 @checked
-def analyze(scene: SceneLike, *, spin: Optional[float] = None) -> dict:
+def analyze(scene: SceneLike, *, spin: Optional[float] = None,
+            duration: Optional[float] = None) -> dict:
     """Mass properties, rest, contact limits, the linearised theory and the preferred
     direction: the dict ``rattleback analyze --json`` prints. ``spin`` (rad/s) is where the
-    growth rates are evaluated (default: the scene's spin, else 5)."""
-    return _core.analyze(_scene(scene)._loaded, spin)
+    growth rates are evaluated (default: the scene's spin, else 5); ``duration`` (s) is how far
+    the forecast looks (default: the scene's)."""
+    return _core.analyze(_scene(scene)._load(duration=duration), spin)
 
 
 def _image_array(array: Any) -> np.ndarray:
@@ -414,21 +416,34 @@ class Image:
 @checked
 def still(scene: SceneLike, t: float = 0.0, *, view: Optional[str] = None,
           size: Optional[tuple[int, int]] = None, spin: Optional[float] = None,
-          readouts: bool = True, transparent: bool = False, backend: str = "auto") -> Image:
+          frame: Optional[float] = None, readouts: bool = True, transparent: bool = False,
+          backend: str = "auto") -> Image:
     """The scene's run drawn at time ``t`` (s), as ``rattleback still`` draws it.
 
     Args:
         view: ``oblique``, ``above``, ``front``, ``side`` or ``follow`` (default the scene's).
         size: (width, height) in pixels, even (default the scene's, else 1280×720).
         spin: initial spin, rad/s.
+        frame: every view framed for a body this long, in the scene's length unit (default
+            the body's own): bodies drawn with the same ``frame`` are drawn at one scale. A
+            body that goes out of the picture is warned of (:class:`RunWarning`, code
+            ``"body_leaves_frame"``).
         readouts: the title, read-outs and spin inset.
         transparent: an RGBA image with no floor or background.
         backend: ``auto``, ``egl`` or ``osmesa``.
     """
     from . import _draw
-    loaded = _scene(scene)._load(view=view, size=size, spin=spin)
-    array, listed = _draw.still(loaded, float(t), bool(readouts), bool(transparent), backend)
+    loaded = _scene(scene)._load(view=view, size=size, spin=spin, frame=frame)
+    array, listed, leaves = _draw.still(loaded, float(t), bool(readouts), bool(transparent),
+                                        backend)
+    _warn_leaves(loaded, leaves)
     return Image(array, listed)
+
+
+def _warn_leaves(loaded, leaves: Optional[str]) -> None:
+    # What the command line warns of when the body goes out of the frame asked for.
+    if leaves:
+        warnings.warn(RunWarning(f"{loaded.file}: {leaves}", "body_leaves_frame"), stacklevel=4)
 
 
 @checked
@@ -436,19 +451,23 @@ def render(scene: SceneLike, output: Union[str, os.PathLike, None] = None, *,
            both: bool = False, fps: Optional[int] = None, size: Optional[tuple[int, int]] = None,
            view: Optional[str] = None, playback: Optional[float] = None,
            duration: Optional[float] = None, spin: Optional[float] = None,
-           crf: int = 20, preset: str = "veryfast", backend: str = "auto") -> list[dict]:
+           frame: Optional[float] = None, crf: int = 20, preset: str = "veryfast",
+           backend: str = "auto") -> list[dict]:
     """The scene's run as an MP4 video (H.264), as ``rattleback render`` writes it.
 
     ``output`` is the .mp4 (default ``out/<scene>.mp4``; ``out/scene.mp4`` for a dict or YAML
     text given no name); with ``both=True`` it is the base of
     ``BASE-preferred.mp4``, ``BASE-reversed.mp4`` and ``BASE-both.mp4``. Returns one dict per
     video: ``path``, ``frames``, ``spin`` and ``first_reversal_s`` of the run it shows.
+    ``frame`` is :func:`still`'s.
     """
     from . import _draw
     loaded = _scene(scene)._load(fps=fps, size=size, view=view, playback=playback,
-                                 duration=duration, spin=spin)
-    return _draw.render(loaded, "" if output is None else os.fspath(output), both, int(crf),
-                        preset, backend)
+                                 duration=duration, spin=spin, frame=frame)
+    files, leaves = _draw.render(loaded, "" if output is None else os.fspath(output), both,
+                                 int(crf), preset, backend)
+    _warn_leaves(loaded, leaves)
+    return files
 
 
 from ._sweep import SweepTable, sweep  # noqa: E402

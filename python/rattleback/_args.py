@@ -26,12 +26,16 @@ def _number(value: Any) -> bool:
         return True
     # A bool is an int to Python, but True as a spin (1 rad/s) or a step is a flag given to the
     # wrong argument far more often than a number; the scene file refuses `spin: true` too.
+    if isinstance(value, np.ndarray) and value.ndim == 0:  # a 0-d array, as NumPy's sums give
+        return value.dtype.kind in "fiu"
     return isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_))
 
 
 def _whole(value: Any) -> bool:
     if type(value) is int:
         return True
+    if isinstance(value, np.ndarray) and value.ndim == 0:
+        return value.dtype.kind in "iu"
     return isinstance(value, numbers.Integral) and not isinstance(value, (bool, np.bool_))
 
 
@@ -91,6 +95,7 @@ _TAKES: dict[str, tuple[Callable[[Any], bool], str]] = {
     "tolerance": (_number, _NUMBER),
     "t": (_number, f"{_NUMBER} (s)"),
     "playback": (_number, f"{_NUMBER} (times real time)"),
+    "frame": (_number, f"{_NUMBER} (a length, in the scene's unit)"),
     # A number, not a whole one: fps=29.97 is refused by the library as the other video
     # arguments' values are, with a SceneError naming video.fps.
     "fps": (_number, f"{_NUMBER} (frames per second)"),

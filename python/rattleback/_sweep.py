@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 import os
+import warnings
 from typing import Union
 
 import numpy as np
 
 from . import _core
 from ._args import checked
+from ._errors import RunWarning
 
 
 def _numbers_or_text(values: list) -> np.ndarray:
@@ -79,6 +81,12 @@ def sweep(path: Union[str, os.PathLike], *, jobs: int = 0) -> SweepTable:
     """Runs every scene of the sweep file at ``path`` (docs/scenes.md "Sweep files": a base scene and axes
     of values) on ``jobs`` threads (0: all cores), as ``rattleback sweep`` does.
 
-    Raises ValueError for a sweep file that cannot be used; KeyboardInterrupt on Ctrl-C.
+    Raises ValueError for a sweep file that cannot be used; KeyboardInterrupt on Ctrl-C. An
+    axis the runs do not use (``contact.friction`` under ``rolling``: the rows along it are
+    alike) is warned of, as ``rattleback sweep`` notes it (:class:`RunWarning`, code
+    ``"axis_unused"``).
     """
-    return SweepTable(_core.sweep(os.fspath(path), int(jobs)))
+    table = _core.sweep(os.fspath(path), int(jobs))
+    for note in table.notes:
+        warnings.warn(RunWarning(note, "axis_unused"), stacklevel=3)
+    return SweepTable(table)

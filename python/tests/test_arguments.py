@@ -91,6 +91,14 @@ def test_numbers_are_ints_floats_and_numpy_scalars(scene):
     assert (image.width, image.height) == (64, 48)
     assert rb.still(scene, 0, size=np.array([64, 48])).width == 64
     assert rb.still(scene, 0, size=[64, 48]).width == 64
+    # A 0-d array (what np.sum and friends give) is a number too, as with_values takes it (a
+    # researcher's trial: simulate(spin=np.array(-4.0)) raised TypeError); not a 1-element one.
+    assert rb.simulate(scene, spin=np.array(-4.0)).spin[0] == base.spin[0]
+    assert rb.simulate(scene, rate=np.array(50), duration=0.2).t.size == 11
+    refused(lambda: rb.simulate(scene, spin=np.array([-4.0])),
+            "argument spin: takes a number (rad/s), not array([-4.]) (ndarray)")
+    refused(lambda: rb.render(scene, crf=np.array(2.5)),
+            "argument crf: takes a whole number, not array(2.5) (ndarray)")
 
 
 def test_a_wrong_value_of_the_right_type_is_still_a_scene_error(scene):

@@ -140,6 +140,23 @@ def test_a_still_is_the_command_lines_png(tmp_path, default_scene):
     assert clear.array[0, 0, 3] == 0  # no background where there is no body
 
 
+def test_a_frame_is_the_command_lines_and_says_when_the_body_leaves_it(tmp_path, default_scene,
+                                                                      recwarn):
+    """frame= is --frame: the same picture; a frame too short for the body warns of it, as the
+    command line does, pointing at the caller's line."""
+    image = rb.still(default_scene, 1.0, size=(320, 180), frame=60)
+    image.save(tmp_path / "py.png")
+    cli("still", default_scene, "--t", "1", "--size", "320x180", "--frame", "60", "-q", "-o",
+        str(tmp_path / "cli.png"))
+    assert (tmp_path / "py.png").read_bytes() == (tmp_path / "cli.png").read_bytes()
+    assert not [w for w in recwarn if issubclass(w.category, rb.RunWarning)]
+    assert image.array.tobytes() != rb.still(default_scene, 1.0, size=(320, 180)).array.tobytes()
+    with pytest.warns(rb.RunWarning, match="the body goes out of the picture") as caught:
+        rb.still(default_scene, 1.0, size=(160, 96), frame=10)
+    assert caught[0].message.code == "body_leaves_frame"
+    assert caught[0].filename == __file__
+
+
 def test_render_writes_the_videos_the_command_line_names(tmp_path, default_scene):
     files = rb.render(default_scene, tmp_path / "v", both=True, duration=1.0, size=(160, 96),
                       fps=10)
@@ -168,6 +185,46 @@ def test_a_sweep_has_the_command_lines_rows(tmp_path):
     assert rows(tmp_path / "py.csv") == rows(tmp_path / "cli.csv")
     assert list(table["initial.spin"]) == [-5.0, -5.0, 5.0, 5.0]
     assert len(table.to_pandas()) == 4
+
+
+def test_a_sweep_of_a_key_rolling_does_not_use_warns_as_the_command_line_notes(tmp_path):
+    sweep = tmp_path / "f.yaml"
+    sweep.write_text(f"base: {scene_path('rattleback.yaml')}\nvary:\n"
+                     "  contact.friction: [0.1, 0.5]\nduration: 0.2\n")
+    with pytest.warns(rb.RunWarning, match="contact.friction does not change a rolling run") as w:
+        table = rb.sweep(sweep, jobs=1)
+    assert w[0].message.code == "axis_unused"
+    assert w[0].filename == __file__
+    note = cli("sweep", str(sweep), "-o", str(tmp_path / "f.csv")).stderr
+    assert note == f"note: {w[0].message}\n"
+    assert table["final_spin"][0] == table["final_spin"][1]
+
+
+SLOW_BODY = """units: {length: 0.01}
+body:
+  shape: paraboloid
+  paraboloid: {a: 1.0, p: 0.5, q: 0.0, s: 0.12, top: 0.5}
+  dents: {scale: 0.5, at: [0.8, 2.0]}
+  grid: {dx: 0.05, dy: 0.05, dz: 0.05}
+  mass: 0.03
+contact: {model: rolling}
+gravity: 9.81
+initial: {spin: -1.0, tilt: [0.5, 0.5]}
+simulation: {tolerance: 1.0e-8, duration: 8.0}
+"""
+
+
+def test_analyze_looks_as_far_as_its_duration(tmp_path):
+    """A researcher's 10 cm body spun -1 rad/s is forecast to reverse after its scene's 8 s:
+    none within them, one within 60 (a researcher's trial had to edit the scene to see it)."""
+    scene = tmp_path / "slow.yaml"
+    scene.write_text(SLOW_BODY)
+    near = rb.analyze(scene)["predicted_first_reversal"]
+    far = rb.analyze(scene, duration=60)["predicted_first_reversal"]
+    assert near["time_s"] is None
+    assert 8 < far["time_s"] < 60
+    out = cli("analyze", str(scene), "--duration", "60", "--json").stdout
+    assert json.loads(out)["predicted_first_reversal"]["time_s"] == far["time_s"]
 
 
 def test_the_attitude_quaternion_is_unit_and_gives_the_tilt(default_scene):

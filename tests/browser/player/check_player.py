@@ -33,7 +33,8 @@ and, for every .rb-player on it:
     than 3 levels apart, and in follow both are taken;
   - the keys, with the player focused: space plays and pauses, the arrows step one sample.
 DIR/single.html (one player; the keys work unfocused) and DIR/missing.html (a player with no
-run data at all: a note, no error) are checked too when there.
+run data at all: a note, no error) are checked too when there, and DIR/framed.html (the default
+body framed for twice its length, video.frame: drawn half as long as on single.html).
 Then the frame time at a 1280 × 720 canvas is measured and printed (frameMs() while playing,
 and benchmark(): frames drawn and read back one after another), and with --screenshots the
 first run's player is saved at its first reversal from the oblique and side views
@@ -817,6 +818,33 @@ class Checker:
         self.keys(element, "single.html (unfocused)", run)
         self.console("single.html")
 
+    def framed(self):
+        # A scene's video.frame frames the player's views for a body that long, as its stills
+        # (render_test.cpp's OneFrameDrawsBodiesAtOneScale): the default body (20 cm) framed for
+        # 40 cm is drawn half as long from above as framed for itself, and the floor's squares
+        # follow the frame (2 cm, against 1 cm). Lengths are the red and blue pixels' extent
+        # across the canvas (+y, the long axis at t = 0, to the right): each end is uncertain by
+        # a sphere's edge, a pixel or two of the hundreds: 5 %.
+        widths, labels = {}, {}
+        for name in ("single.html", "framed.html"):
+            self.open(name)
+            element = self.element(0)
+            self.hook(element, "setView('above')")
+            self.hook(element, "setTime(0)")
+            self.frames()
+            box = self.pixels(element)["box"]
+            widths[name] = box[2] - box[0]
+            labels[name] = self.js("return arguments[0].querySelector('.rbp-scale').textContent;",
+                                   element)
+            self.console(name)
+        ratio = widths["framed.html"] / widths["single.html"]
+        self.check(abs(ratio - 0.5) < 0.05 * 0.5, f"framed.html: framed for 40 cm the 20 cm body is "
+                   f"{widths['framed.html']:.0f} px long from above, {ratio:.3f} of its "
+                   f"{widths['single.html']:.0f} px framed for itself, not half")
+        self.check("2 cm" in labels["framed.html"] and "1 cm" in labels["single.html"],
+                   f"the floor's squares read {labels['single.html']!r} and {labels['framed.html']!r}, "
+                   "not 1 and 2 cm")
+
     def measure(self, screenshots, size):
         self.open("single.html" if (self.folder / "single.html").exists() else "index.html")
         element = self.element(0)
@@ -888,6 +916,8 @@ def main():
             checker.check(state and not state[0][1], "missing.html: a player was built with no data")
         if (folder / "single.html").exists():
             checker.single()
+        if (folder / "framed.html").exists():
+            checker.framed()
         checker.measure(args.screenshots, size)
     except Exception as e:  # a check that could not run is a failure, not a crash
         checker.check(False, f"the check stopped: {type(e).__name__}: {e}")

@@ -6,6 +6,7 @@
                      forecast applies, Kane & Levinson's is outside the theory's range)
   DIR/single.html    the default scene's player alone (keys work without focusing it)
   DIR/missing.html   one player whose run is missing, and no run data at all
+  DIR/framed.html    the default scene's player with video.frame 40 (cm), twice the body
   DIR/ID.player.js   each run's data (the C++ side's player_script, through the Python package)
   DIR/ID.csv         each run's telemetry, full rate (to check the player against)
   DIR/rattleback-player.js   the bundle (player/build.sh, or --bundle FILE copied)
@@ -90,6 +91,14 @@ def main():
         [f"{run_id}.player.js" for run_id, _ in RUNS]))
     (out / "single.html").write_text(page(
         "Rattleback player: one run", [player_div("rattleback", "Default scene")], ["rattleback.player.js"]))
+    # The default scene framed for a body twice its length (video.frame 40 cm): drawn half as
+    # long as on single.html (check_player's framed()).
+    framed = rb.Scene.from_file(str(REPO / "scenes/rattleback.yaml")).with_values({"video.frame": 40})
+    run = rb.simulate(framed, duration=1)
+    (out / "framed.player.js").write_text(rb._core.player_script(framed._loaded, run._run, "framed"))
+    (out / "framed.html").write_text(page(
+        "Rattleback player: framed for 40 cm", [player_div("framed", "Framed for 40 cm")],
+        ["framed.player.js"]))
     (out / "missing.html").write_text(page(
         "Rattleback player: no run data", [player_div(MISSING, "A run whose data is missing")], []))
     print(f"wrote {out / 'index.html'}")
