@@ -50,9 +50,7 @@ rb::Result<VideoPlan> check(const scene::VideoSpec& v, const sim::Model& model, 
                             (unit == 1 ? std::string("m") : show(unit) + " m, units.length") + ")";
     if (!(v.frame > 0) || !std::isfinite(v.frame))
       return rb::Error{"video.frame", "must be a length > 0, not " + show(v.frame) + way};
-    // Beyond 50 times the body is a few pixels long; within a tenth of it, the picture shows
-    // part of a point or two: a slip of unit (a file in cm given metres, or the other way).
-    if (v.frame * unit > 50 * length || v.frame * unit < 0.1 * length)
+    if (!tasks::frameFits(v.frame * unit, *model.body))
       return rb::Error{"video.frame", "must be within 1/10 … 50 times the body's length, not " +
                                           show(v.frame) + way};
     plan.frame = v.frame * unit;

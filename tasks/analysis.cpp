@@ -49,6 +49,11 @@ Eigen::Vector3d bodySize(const sim::Body& body) {
   return {std::max(box.x(), box.y()), std::min(box.x(), box.y()), box.z()};
 }
 
+bool frameFits(double frame_m, const sim::Body& body) {
+  const double length = bodySize(body).x();
+  return frame_m <= 50 * length && frame_m >= 0.1 * length;
+}
+
 std::string sizeText(const Eigen::Vector3d& size_m, double length_unit) {
   const char* unit = length_unit == 1       ? "m"
                      : length_unit == 0.01  ? "cm"

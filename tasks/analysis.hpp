@@ -33,6 +33,11 @@ std::string massSourceText(const sim::Body& body);
 /// The body's size: the box that holds it, length (the longer horizontal side), width, height,
 /// m.
 Eigen::Vector3d bodySize(const sim::Body& body);
+/// Whether a frame of `frame_m` metres (video.frame) frames `body` sensibly: within 1/10 … 50
+/// times its length. Beyond 50 times the body is a few pixels long; within a tenth of it the
+/// picture shows part of a point or two: either is a slip of unit (a file in cm given metres,
+/// or the other way), which `still` and `render` refuse and the player ignores.
+bool frameFits(double frame_m, const sim::Body& body);
 /// The size as people read it, in the file's unit: "20 × 6.06 × 2.55 cm".
 std::string sizeText(const Eigen::Vector3d& size_m, double length_unit);
 /// A mass that no material gives a body of this size, said with the likely slip (a mass typed

@@ -39,8 +39,7 @@ std::vector<Pose> thinPoses(const std::vector<Pose>& poses) {
 double playerFrame(const scene::Loaded& scene, const sim::Model& model) {
   if (!(scene.video.frame > 0) || !std::isfinite(scene.video.frame)) return 0;
   const double frame = scene.video.frame * model.length_unit;
-  const double length = bodySize(*model.body).x();
-  return frame <= 50 * length && frame >= 0.1 * length ? frame : 0;
+  return frameFits(frame, *model.body) ? frame : 0;
 }
 
 std::string playerScript(const PlayerRun& run) {
