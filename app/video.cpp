@@ -16,6 +16,7 @@
 #include "media/video_plan.hpp"
 #include "render/image_io.hpp"
 #include "tasks/output.hpp"
+#include "tasks/player_data.hpp"
 #include "tasks/run_json.hpp"
 #include "util/format.hpp"
 
@@ -114,7 +115,8 @@ int renderCommand(const RenderArgs& args) {
                        f.role,
                        f.spin,
                        {},
-                       tasks::madeFrom(loaded->scene)});
+                       tasks::madeFrom(loaded->scene),
+                       tasks::listedFrame(loaded->scene, loaded->model)});
   record(entries);
   if (!args.quiet) printVideos(result);
   return kOk;
@@ -153,9 +155,9 @@ int stillCommand(const StillArgs& args) {
                                : args.output;
   if (auto made = tasks::makeParentFolder(path); !made) return fail(made);
   if (auto e = render::writePng(path, still.image); !e) return fail(e);
-  record(
-      {{path, tasks::OutputKind::Still, sceneName(args.scene), std::string(rb::nameOf(still.view)),
-        loaded->model.initial.spin, args.t, tasks::madeFrom(loaded->scene)}});
+  record({{path, tasks::OutputKind::Still, sceneName(args.scene),
+           std::string(rb::nameOf(still.view)), loaded->model.initial.spin, args.t,
+           tasks::madeFrom(loaded->scene), tasks::listedFrame(loaded->scene, loaded->model)}});
   if (!args.quiet) {
     if (still.leaves) std::cerr << "warning: " << *still.leaves << "\n";
     std::printf("%s\n", path.c_str());

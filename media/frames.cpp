@@ -77,7 +77,8 @@ RunFraming framingOfRun(const sim::Model& model, const render::BodyPoints& point
 }
 
 std::optional<std::string> leavesNote(const RunFraming& framing, const render::BodyPoints& points,
-                                      render::View view, float frame, double length_unit) {
+                                      render::View view, float frame, double length_unit,
+                                      const std::string& named) {
   if (frame <= 0) return std::nullopt;
   // The follow view keeps 1.1 times half the frame about the body's middle (camera.cpp), the
   // body moving with it.
@@ -88,9 +89,9 @@ std::optional<std::string> leavesNote(const RunFraming& framing, const render::B
   const double needs = (follow ? 2 * reach / 1.1f : framing.needs) / length_unit;
   char text[300];
   std::snprintf(text, sizeof text,
-                "the body goes out of the picture: video.frame %.3g is less than this run needs "
-                "in the %s view (%.3g, in the file's unit)",
-                frame / length_unit, std::string(rb::nameOf(view)).c_str(), needs);
+                "the body goes out of the picture: %s %.3g is less than this run needs in the %s "
+                "view (%.3g, in the file's unit)",
+                named.c_str(), frame / length_unit, std::string(rb::nameOf(view)).c_str(), needs);
   return text;
 }
 

@@ -42,7 +42,9 @@ RunFraming framingOfRun(const sim::Model& model, const render::BodyPoints& point
 
 /// What a still or video says where the body goes out of the frame asked for (video.frame,
 /// `frame` in the file's unit), in `view`: the length of frame that holds it, in the file's unit.
+/// `named` is the frame as given: "video.frame", or the option that set it ("--frame").
 std::optional<std::string> leavesNote(const RunFraming& framing, const render::BodyPoints& points,
-                                      render::View view, float frame, double length_unit);
+                                      render::View view, float frame, double length_unit,
+                                      const std::string& named);
 
 }  // namespace media

@@ -86,8 +86,8 @@ rb::Result<StillResult> renderStill(const tasks::LoadedScene& loaded, const Stil
   // Stopped while framing: the framing is of part of the run, so no still.
   if (request.cancelled && request.cancelled()) return stopped();
   frame.framing = framing.framing;
-  result.leaves =
-      leavesNote(framing, points, plan.view, static_cast<float>(plan.frame), model.length_unit);
+  result.leaves = leavesNote(framing, points, plan.view, static_cast<float>(plan.frame),
+                             model.length_unit, frameNamed(loaded.scene));
   frame.history = history.with(sample);
   renderer.draw(frame, result.image);
   result.outcome.t = request.t;

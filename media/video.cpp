@@ -264,7 +264,7 @@ rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const Vide
       framings.push_back(framing.framing);
       if (!result.leaves)  // (the first run's, with --both: one line is enough)
         result.leaves = leavesNote(framing, points, plan.view, static_cast<float>(plan.frame),
-                                   model.length_unit);
+                                   model.length_unit, frameNamed(loaded.scene));
       histories.emplace_back(model.duration, plan.width);
     }
     for (const sim::Rollout& run : runs) {

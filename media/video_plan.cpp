@@ -87,6 +87,14 @@ rb::Result<VideoPlan> planVideo(const scene::Loaded& scene, const sim::Model& mo
   return plan;
 }
 
+std::string frameNamed(const scene::Loaded& scene) {
+  // (--set and with_values name the key themselves: "--set video.frame=10".)
+  const auto option = scene.overrides.find("video.frame");
+  return option == scene.overrides.end() || option->second.find("video.frame") != std::string::npos
+             ? "video.frame"
+             : option->second;
+}
+
 namespace {
 
 std::string describeSpin(double spin) {

@@ -33,6 +33,10 @@ struct VideoPlan {
 rb::Result<VideoPlan> planVideo(const scene::Loaded& scene, const sim::Model& model,
                                 double duration);
 
+/// video.frame as the user gave it: the key, or the option that set it ("--frame", "argument
+/// frame").
+std::string frameNamed(const scene::Loaded& scene);
+
 /// The renderer's settings for one run's frames: the plan's size and view, titled with the
 /// scene's name, the values put in over its file (--set, with_values) and the spin (the same in
 /// its video and its stills).

@@ -15,6 +15,7 @@
 #include "render/image_io.hpp"
 #include "tasks/manifest.hpp"
 #include "tasks/output.hpp"
+#include "tasks/player_data.hpp"
 #include "tasks/run_json.hpp"
 
 namespace py = pybind11;
@@ -93,6 +94,8 @@ py::tuple still(const LoadedScene& loaded, double t, bool readouts, bool transpa
   listed["spin"] = loaded.value.model.initial.spin;
   listed["t"] = t;
   listed["made_from"] = tasks::madeFrom(loaded.value.scene);
+  const std::optional<double> frame = tasks::listedFrame(loaded.value.scene, loaded.value.model);
+  listed["frame_m"] = frame ? py::object(py::float_(*frame)) : py::object(py::none());
   // (What the command line warns of, for the caller to warn of as a RunWarning.)
   const py::object leaves = still.leaves ? py::object(py::str(*still.leaves)) : py::none();
   return py::make_tuple(arrayOf(still.image, transparent), listed, leaves);
@@ -125,7 +128,8 @@ py::tuple renderVideos(const LoadedScene& loaded, const std::string& output, boo
                        f.role,
                        f.spin,
                        {},
-                       tasks::madeFrom(loaded.value.scene)});
+                       tasks::madeFrom(loaded.value.scene),
+                       tasks::listedFrame(loaded.value.scene, loaded.value.model)});
   (void)tasks::recordOutputs(entries);  // as the command line lists them
   py::list files;
   for (const media::VideoFile& f : result.files) {
@@ -183,7 +187,10 @@ PYBIND11_MODULE(_draw, m) {
               {{path, tasks::OutputKind::Still, (*still)["scene"].cast<std::string>(),
                 (*still)["view"].cast<std::string>(), (*still)["spin"].cast<double>(),
                 (*still)["t"].cast<double>(),
-                still->contains("made_from") ? (*still)["made_from"].cast<std::string>() : ""}});
+                still->contains("made_from") ? (*still)["made_from"].cast<std::string>() : "",
+                still->contains("frame_m") && !(*still)["frame_m"].is_none()
+                    ? std::optional<double>((*still)["frame_m"].cast<double>())
+                    : std::nullopt}});
       },
       py::arg("path"), py::arg("array"), py::arg("still") = py::none());
   py::list presets;

@@ -26,6 +26,7 @@ nlohmann::json toJson(const OutputEntry& e) {
   j["spin"] = e.spin ? nlohmann::json(*e.spin) : nlohmann::json(nullptr);
   j["t"] = e.t ? nlohmann::json(*e.t) : nlohmann::json(nullptr);
   if (!e.made_from.empty()) j["made_from"] = e.made_from;
+  if (e.frame_m) j["frame_m"] = *e.frame_m;
   return j;
 }
 
@@ -42,6 +43,7 @@ std::optional<OutputEntry> fromJson(const nlohmann::json& j) {
   if (j.contains("t") && j["t"].is_number()) e.t = j["t"].get<double>();
   if (j.contains("made_from") && j["made_from"].is_string())
     e.made_from = j["made_from"].get<std::string>();
+  if (j.contains("frame_m") && j["frame_m"].is_number()) e.frame_m = j["frame_m"].get<double>();
   return e;
 }
 

@@ -39,6 +39,9 @@ struct OutputEntry {
   /// the report can tell a video or figure of an earlier version of the scene from one of the
   /// run it shows; "" when not known.
   std::string made_from = {};
+  /// m: the length of body a still or video was framed for (video.frame, --frame); none where
+  /// it was framed for its own. The report's player of the scene frames its views the same.
+  std::optional<double> frame_m = {};
 };
 
 inline constexpr const char* kManifestName = "rattleback-manifest.json";

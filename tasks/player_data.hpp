@@ -8,6 +8,7 @@
 // spin n (rad/s), at most kPlayerRate samples per simulated second.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,10 +18,15 @@
 
 namespace tasks {
 
-/// Poses per simulated second the player gets: at 100 Hz the body's fastest rocking (the
-/// default body's pitch, 7 Hz) has 14 poses a period, and slerp between them is within 2.5 %
-/// of its amplitude; an 8 s run's poses take about 80 kB.
+/// The fewest poses per simulated second the player gets (thinPoses gives it more where the
+/// run needs them): 14 a period of the default body's pitch (7 Hz).
 constexpr double kPlayerRate = 100;
+/// How closely the player's replay (slerp of the attitude, a cubic of the spin between poses,
+/// player/src/player.js) must follow every sample of the run's telemetry that thinPoses drops:
+/// the attitude within 0.1° (half a pixel at the tip of a 20 cm body 560 px long, from above),
+/// the spin within 0.005 rad/s (half the read-out's last digit).
+constexpr double kPlayerAttitudeDeg = 0.1;
+constexpr double kPlayerSpin = 0.005;
 
 struct Pose {
   double t = 0;                           ///< s
@@ -43,8 +49,16 @@ struct PlayerRun {
 /// A scene's video.frame in metres, as the player takes it: 0 where it is not given, or where
 /// it is not within 1/10 … 50 times the body's length (which `still` and `render` refuse).
 double playerFrame(const scene::Loaded& scene, const sim::Model& model);
+/// The same as the manifest lists it for a still or video (OutputEntry::frame_m): none for 0.
+inline std::optional<double> listedFrame(const scene::Loaded& scene, const sim::Model& model) {
+  const double frame = playerFrame(scene, model);
+  return frame > 0 ? std::optional<double>(frame) : std::nullopt;
+}
 
-/// Every k-th pose so that at most kPlayerRate remain per simulated second, and the last.
+/// Every k-th pose, and the last: the largest k that leaves at least kPlayerRate poses a second
+/// and replays every pose dropped within kPlayerAttitudeDeg and kPlayerSpin. (At 100 a second
+/// Kane & Levinson's body, whose n swings with its 17 Hz pitch, was replayed 0.8° and 0.5 rad/s
+/// off, and read +0.04 rad/s at its reversal: all of its 500 a second are kept.)
 std::vector<Pose> thinPoses(const std::vector<Pose>& poses);
 
 /// The script's text.

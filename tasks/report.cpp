@@ -782,6 +782,7 @@ RunModel runModelOf(const nlohmann::json& sidecar, const fs::path& dir) {
 // (the page then has no player for it) when the CSV, its sidecar or its scene cannot be read;
 // an error when the file cannot be written.
 rb::Result<bool> writePlayerData(const fs::path& dir, const std::string& id, const SceneFiles& f,
+                                 std::optional<double> drawn_frame,
                                  std::vector<std::string>& notes) {
   if (!f.has(".csv") || !f.has(".csv.json")) return false;
   const std::optional<nlohmann::json> sidecar = readJson(dir / f.at(".csv.json"));
@@ -800,7 +801,8 @@ rb::Result<bool> writePlayerData(const fs::path& dir, const std::string& id, con
   run.id = id;
   run.title = id;
   run.points = drawnPointsOf(*model);
-  run.frame = found.frame;
+  // Framed as the scene's videos and stills were drawn (--frame), else as its video.frame says.
+  run.frame = drawn_frame.value_or(found.frame);
   run.poses = thinPoses(posesOf(dir / f.at(".csv")));
   if (run.poses.size() < 2) return false;
   const nlohmann::json& reversals = field(field(*sidecar, "result"), "reversals_s");
@@ -1045,8 +1047,17 @@ rb::Result<ReportPage> writeReport(const std::string& folder_path) {
   const rb::Result<bool> bundle = copyPlayerBundle(dir);
   if (!bundle) return bundle.error();
   if (bundle.value()) {
+    // The frame each scene's videos (else stills) were drawn at, where one was asked for (a
+    // teacher's trial: videos drawn with --frame at one scale beside players that each filled
+    // their picture with their own body).
+    std::map<std::string, std::optional<double>> drawn;
+    for (const OutputKind kind : {OutputKind::Video, OutputKind::Still})
+      for (const OutputEntry& e : readManifest(dir.string()))
+        if (e.kind == kind && e.frame_m && !drawn.count(e.scene)) drawn[e.scene] = e.frame_m;
     for (const auto& [name, files] : folder.scenes) {
-      const rb::Result<bool> data = writePlayerData(dir, name, files, notes);
+      const auto frame = drawn.find(name);
+      const rb::Result<bool> data = writePlayerData(
+          dir, name, files, frame == drawn.end() ? std::nullopt : frame->second, notes);
       if (!data) return data.error();
       if (data.value()) players.push_back(name);
     }

@@ -2077,6 +2077,43 @@ TEST(Cli, TheReportShowsEveryRunOfAScene) {
   }
 }
 
+// The report's player frames its views as the scene's videos and stills were drawn: --frame is
+// listed with them in the manifest (frame_m, m), and the player's data carries it (a teacher's
+// trial: stills and videos at one scale beside players that each filled the picture with their
+// own body). A scene's video.frame does the same without --frame; with neither, 0 (the body's
+// own). The player's framing from it is checked in Chromium (check_player.py: framed()).
+TEST(Report, ThePlayerIsFramedAsTheScenesPicturesWere) {
+  const fs::path dir = emptyDir("framed");
+  const std::string s = scene("rattleback");
+  auto in = [&](const char* name) { return (dir / name).string(); };
+  ASSERT_EQ(rattleback("simulate " + s + " --duration 0.3 -q -o " + in("rattleback.csv")).status,
+            0);
+  auto frameOf = [&]() -> std::string {
+    if (rattleback("report " + dir.string() + " -q").status != 0) return "report failed";
+    if (!fs::exists(dir / "rattleback.player.js")) return "no player";  // (no bundle built)
+    const std::string data = readText(dir / "rattleback.player.js");
+    const std::size_t at = data.find("\"frame\":");
+    return at == std::string::npos ? "none" : data.substr(at + 8, data.find(',', at) - at - 8);
+  };
+  const std::string own = frameOf();
+  if (own == "no player") GTEST_SKIP() << "no player bundle in this build";
+  EXPECT_EQ(own, "0");
+  ASSERT_EQ(
+      rattleback("still " + s + " --frame 40 --size 320x180 -q -o " + in("rattleback-oblique.png"))
+          .status,
+      0);
+  for (const auto& entry :
+       nlohmann::json::parse(readText(dir / "rattleback-manifest.json"))["outputs"])
+    if (entry["file"] == "rattleback-oblique.png") EXPECT_EQ(entry["frame_m"], 0.4) << entry;
+  EXPECT_EQ(frameOf(), "0.4");  // 40 in the scene's cm
+  // A video drawn at another frame takes precedence over the still.
+  ASSERT_EQ(rattleback("render " + s + " --frame 60 --duration 0.2 --size 160x96 -q -o " +
+                       in("rattleback.mp4"))
+                .status,
+            0);
+  EXPECT_EQ(frameOf(), "0.6");
+}
+
 // The measured cell gives every reversal of the run, as the player's n(t) plot counts them: a
 // new user's kane-levinson-long said "reversed at 2.807 s" beside a plot of 4 reversals. 33 s
 // of it reverse 3 times (2.807, 17.397, 31.936 s); of more than 4, the cell names the first 4
@@ -2910,7 +2947,7 @@ TEST(Cli, AStillBeforeZeroNamesTAndItsValue) {
 TEST(Cli, AStillWithTooShortAFrameSaysTheBodyLeavesIt) {
   const fs::path png = tempFile("close.png");
   const std::string still = "still " + scene("rattleback") + " --size 320x180 -o " + png.string();
-  const std::string warning = "warning: the body goes out of the picture: video.frame ";
+  const std::string warning = "warning: the body goes out of the picture: --frame ";
   for (const char* view : {"oblique", "follow"}) {
     const Result close = rattleback(still + " --frame 10 --view " + view);
     EXPECT_EQ(close.status, 0) << close.err;
