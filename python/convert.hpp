@@ -93,10 +93,18 @@ inline bool onMainThread() {
 /// this thread (a daemon thread still running at exit) waits for the process to end, as
 /// CPython's own daemon threads do, rather than be ended inside a destructor.
 class GilReleased {
+  static bool finalizing() {
+#if PY_VERSION_HEX >= 0x030D0000
+    return Py_IsFinalizing();  // public from Python 3.13
+#else
+    return _Py_IsFinalizing();
+#endif
+  }
+
  public:
   GilReleased() : state_(PyEval_SaveThread()) {}
   ~GilReleased() {
-    while (_Py_IsFinalizing()) std::this_thread::sleep_for(std::chrono::seconds(1));
+    while (finalizing()) std::this_thread::sleep_for(std::chrono::seconds(1));
     PyEval_RestoreThread(state_);
   }
   GilReleased(const GilReleased&) = delete;
