@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -380,6 +381,17 @@ int sweepCommand(const SweepArgs& args) {
         {args.plot, tasks::OutputKind::SweepPlot, sceneName(args.file), args.metric, {}, {}});
   record(entries);
   if (!args.quiet) printSummary(args, shard, plan.value(), run, output.value());
+  // Not one run made: the sweep's values are the input at fault (a teacher's trial: four rows
+  // refused for a missing contact.stiffness, and exit 0). The table says why, row by row.
+  if (!plan->done.empty() && plan->counts["refused"] == static_cast<int>(plan->done.size())) {
+    const auto first = std::find_if(run.rows.begin(), run.rows.end(), [](const auto& row) {
+      return row.status == tasks::RowStatus::Refused;
+    });
+    std::cerr << args.file << ": every run was refused"
+              << (first == run.rows.end() ? std::string() : "; the first: " + first->reason)
+              << "\n";
+    return kBadInput;
+  }
   return kOk;
 }
 

@@ -90,6 +90,7 @@ rb::Result<StillResult> renderStill(const tasks::LoadedScene& loaded, const Stil
                              model.length_unit, frameNamed(loaded.scene));
   frame.history = history.with(sample);
   renderer.draw(frame, result.image);
+  result.image.drawn_by = renderer.rasteriser();
   result.outcome.t = request.t;
   return result;
 }

@@ -94,6 +94,7 @@ py::tuple still(const LoadedScene& loaded, double t, bool readouts, bool transpa
   listed["spin"] = loaded.value.model.initial.spin;
   listed["t"] = t;
   listed["made_from"] = tasks::madeFrom(loaded.value.scene);
+  listed["drawn_by"] = still.image.drawn_by;  // (its PNG's Software, as the command line's)
   const std::optional<double> frame = tasks::listedFrame(loaded.value.scene, loaded.value.model);
   listed["frame_m"] = frame ? py::object(py::float_(*frame)) : py::object(py::none());
   // (What the command line warns of, for the caller to warn of as a RunWarning.)
@@ -160,12 +161,15 @@ PYBIND11_MODULE(_draw, m) {
         py::arg("crf"), py::arg("preset"), py::arg("backend"));
   m.def(
       "encode_png",
-      [](const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>& a) {
-        auto bytes = render::encodePng(imageOf(a));
+      [](const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>& a,
+         const std::string& drawn_by) {
+        render::Image image = imageOf(a);
+        image.drawn_by = drawn_by;
+        auto bytes = render::encodePng(image);
         if (!bytes) raise(bytes.error());
         return py::bytes(reinterpret_cast<const char*>(bytes->data()), bytes->size());
       },
-      py::arg("array"));
+      py::arg("array"), py::arg("drawn_by") = "");
   m.def(
       "write_png",
       [](const std::string& path,
@@ -178,7 +182,10 @@ PYBIND11_MODULE(_draw, m) {
         }
         const rb::OutputNamedBy naming("save");  // Image.save: the way out an error suggests
         if (auto e = tasks::makeParentFolder(path); !e) raise(e.error());
-        if (auto e = render::writePng(path, imageOf(a)); !e) raise(e.error());
+        render::Image image = imageOf(a);
+        if (still && still->contains("drawn_by"))
+          image.drawn_by = (*still)["drawn_by"].cast<std::string>();
+        if (auto e = render::writePng(path, image); !e) raise(e.error());
         // A still of a scene is listed in the folder's manifest, so that the report shows it
         // under Stills with its view, time and spin (a failure to list loses nothing: the
         // report then places the file by its name). An image made from an array is not.

@@ -80,6 +80,10 @@ struct RenderSettings {
 struct Image {
   int width = 0, height = 0;
   std::vector<unsigned char> rgba;
+  /// The OpenGL that drew it (GlContext::rasteriser; "" when not known), kept in a PNG as its
+  /// tEXt "Software": a golden holds for the rasteriser that drew it, and compare says so
+  /// when two images that differ were drawn by different ones.
+  std::string drawn_by;
 };
 
 }  // namespace render

@@ -303,6 +303,7 @@ std::string GlContext::createFramebuffer(int width, int height) {
     return std::string(s ? s : "?");
   };
   description_ = text(GL_VENDOR) + " " + text(GL_RENDERER) + ", OpenGL " + text(GL_VERSION);
+  rasteriser_ = description_;
   if (!makeFramebuffer(gl, width, height, frame_)) return "the framebuffer object is incomplete";
   gl.glViewport(0, 0, width, height);
   return "";

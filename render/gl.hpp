@@ -70,6 +70,10 @@ class GlContext {
   Backend backend() const { return backend_; }
   /// "EGL (surfaceless): Mesa/X.org llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 …"
   const std::string& description() const { return description_; }
+  /// The OpenGL alone, whichever backend reaches it: "Mesa/X.org llvmpipe (LLVM 15.0.6, 256
+  /// bits), OpenGL 4.5 (Core Profile) Mesa 22.3.6" (what draws the pixels: EGL's and OSMesa's
+  /// llvmpipe draw the same).
+  const std::string& rasteriser() const { return rasteriser_; }
   /// The FBO that frames are drawn into and read from.
   GLuint framebuffer() const { return frame_.fbo; }
   /// Reads the FBO's pixels as they lie, bottom row of the window first: the renderer draws
@@ -89,7 +93,7 @@ class GlContext {
 
   GlApi api_;
   Backend backend_ = Backend::Auto;
-  std::string description_;
+  std::string description_, rasteriser_;
   Framebuffer frame_;
   int width_ = 0, height_ = 0;
 };

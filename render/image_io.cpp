@@ -27,6 +27,8 @@ struct File {
 
 rb::Result<std::vector<unsigned char>> encodePng(const Image& image) {
   std::vector<unsigned char> bytes;
+  std::string software = image.drawn_by;  // (before setjmp, as everything with a destructor)
+  png_text text{};
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   if (!info) {
@@ -51,6 +53,13 @@ rb::Result<std::vector<unsigned char>> encodePng(const Image& image) {
   png_set_IHDR(png, info, image.width, image.height, 8,
                opaque ? PNG_COLOR_TYPE_RGB : PNG_COLOR_TYPE_RGB_ALPHA, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  // What drew it, as PNG's own keyword says it (no date: the same picture, the same bytes).
+  if (!software.empty()) {
+    text.compression = PNG_TEXT_COMPRESSION_NONE;
+    text.key = const_cast<char*>("Software");
+    text.text = software.data();
+    png_set_text(png, info, &text, 1);
+  }
   png_write_info(png, info);
   if (opaque) png_set_filler(png, 0, PNG_FILLER_AFTER);  // rows stay RGBA; the A is dropped
   for (int y = 0; y < image.height; ++y)
@@ -110,6 +119,12 @@ rb::Status readPng(const std::string& path, Image& image) {
   png_init_io(png, file.f);
   png_set_sig_bytes(png, 8);
   png_read_info(png, info);
+  png_textp text = nullptr;
+  int texts = 0;
+  image.drawn_by.clear();
+  png_get_text(png, info, &text, &texts);
+  for (int i = 0; i < texts; ++i)
+    if (std::strcmp(text[i].key, "Software") == 0 && text[i].text) image.drawn_by = text[i].text;
   // Any PNG as 8-bit RGBA: palettes and grey expanded, 16 bits scaled, opaque alpha added.
   png_set_expand(png);
   png_set_scale_16(png);

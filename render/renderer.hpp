@@ -34,6 +34,7 @@ class Renderer {
 
   /// The backend and the GL vendor, renderer and version (for --verbose).
   const std::string& description() const { return context_->description(); }
+  const std::string& rasteriser() const { return context_->rasteriser(); }
 
   /// Draws one frame into `out` (resized to the settings' size), read-outs included, from the
   /// frame's values and the renderer's fixed setup only.

@@ -1432,7 +1432,7 @@ TEST(Cli, ACountOfOneIsSingular) {
                                   << "\nvary:\n  contact.friction: [-1]\nduration: 0.1\n";
   const std::string sweep = "sweep " + (dir / "one.yaml").string();
   const Result one = rattleback(sweep + " -o " + (dir / "t.csv").string());
-  ASSERT_EQ(one.status, 0) << one.err;
+  ASSERT_EQ(one.status, 2) << one.err;  // its every run refused, the table written
   EXPECT_NE(one.out.find("one.yaml: 1 run, 0 ok, 1 refused\n"), std::string::npos) << one.out;
   // The report's sweep section: one run over an axis of one value.
   ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
@@ -1922,6 +1922,12 @@ TEST(Cli, AGalliumDriverOsMesaLacksIsNamedNotCrashedOn) {
   Result egl;
   {
     const ScopedEnv driver("GALLIUM_DRIVER", "bogus");
+    // (Under the sanitizers: Mesa's DRI driver, loaded and unloaded again by the failed
+    // initialisation, leaves 12 kB behind in a module LeakSanitizer can no longer name, so no
+    // suppression matches it; it is not ours.)
+    const char* lsan = std::getenv("LSAN_OPTIONS");
+    const ScopedEnv leaks("LSAN_OPTIONS",
+                          (std::string(lsan ? lsan : "") + ":detect_leaks=0").c_str());
     egl = rattleback("still " + scene("rattleback") + " --backend egl -o " + png.string());
   }
   EXPECT_EQ(egl.status, 4) << egl.err;

@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -299,6 +300,26 @@ TEST(Sweep, AnAxisRollingDoesNotUseIsSaidToBe) {
   }
 }
 
+// A sweep whose every run is refused made nothing: its values are the input at fault, exit 2
+// with the first reason (a teacher's trial: contact.model: [auto] without a stiffness refused
+// all four rows, and the command exited 0). The table is written, each row with its reason; one
+// refused row among good ones is the table's business, exit 0 (ABadValueRefusesItsRowOnly).
+TEST(Sweep, ASweepWhoseEveryRunIsRefusedExitsTwo) {
+  const fs::path dir = scratch();
+  const fs::path sweep = writeSweep(
+      dir, "base: " + kBase + "\nvary:\n  contact.air_drag: [-1.0, -2.0]\nduration: 0.1\n");
+  const Outcome r =
+      rattleback(dir, "sweep " + sweep.string() + " -q -o " + (dir / "t.csv").string());
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.err.rfind(sweep.string() + ": every run was refused; the first: " + sweep.string() +
+                            ":3: contact.air_drag",
+                        0),
+            0u)
+      << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(readCsv(slurp(dir / "t.csv")).size(), 3u);
+}
+
 // A bad value in the base scene (not varied) refuses the rows naming the base's own line: the
 // rows' trees are copies, which keep no lines, and it was named at the base's line 1.
 TEST(Sweep, ABadValueInTheBaseNamesTheBasesLine) {
@@ -313,7 +334,7 @@ TEST(Sweep, ABadValueInTheBaseNamesTheBasesLine) {
       writeSweep(dir, "base: base.yaml\nvary:\n  initial.spin: [-5]\nduration: 0.1\n");
   const Outcome r =
       rattleback(dir, "sweep " + sweep.string() + " -q -o " + (dir / "t.csv").string());
-  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_EQ(r.status, 2) << r.err;  // (its one run refused: ASweepWhoseEveryRunIsRefusedExitsTwo)
   const auto rows = readCsv(slurp(dir / "t.csv"));
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(rows[1][2], "refused: " + (dir / "base.yaml").string() + ":" + std::to_string(line) +

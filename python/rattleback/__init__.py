@@ -395,7 +395,7 @@ class Image:
     def png(self) -> bytes:
         """The image as PNG bytes (libpng, as the command line writes them)."""
         from . import _draw
-        return _draw.encode_png(self.array)
+        return _draw.encode_png(self.array, (self._still or {}).get("drawn_by", ""))
 
     def _repr_png_(self) -> bytes:
         return self.png()
