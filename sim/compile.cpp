@@ -293,6 +293,13 @@ rb::Result<Body> buildBody(const BodySpec& b, double unit, MassSource source, bo
   if (b.dents)
     dents =
         Dents{b.dents->scale, b.dents->at[0] * unit, b.dents->at[1] * unit, b.dents->inset * unit};
+  // Dents that leave a sliver (a scale typed 100 for 0.45): the body is found without them
+  // (a teacher's trial: the message asked for a finer grid).
+  if (dents && !gridHasTwoLevels(shape, dents, grid) && gridHasTwoLevels(shape, std::nullopt, grid))
+    return rb::Error{"body.dents.scale",
+                     "cuts the body away: with the dents the grid finds fewer than two levels of "
+                     "points, without them the body is there; a smaller scale (the default "
+                     "body's is 0.45), or dents placed further out"};
   if (!gridHasTwoLevels(shape, dents, grid)) {
     // Its sizes, so that a body given in metres in a file of centimetres (0.01 for 1) shows as
     // the body it is, not as a grid to make finer.

@@ -118,6 +118,11 @@ const BadCase kBadCases[] = {
      "against dz 50, both in units.length, 0.01 m:"},
     {"dx: 0.52, dy: 1.42, dz: 0.2", "dx: 1e-300, dy: 1e-300, dz: 1e-300", "6: body.grid makes"},
     {"{scale: 0.375, ", "{", "5: body.dents.scale is required"},
+    // Dents that cut the body away are named as such, not as a grid to make finer (a teacher's
+    // trial: scale 100).
+    {"{scale: 0.375, ", "{scale: 100, ",
+     "5: body.dents.scale cuts the body away: with the dents the grid finds fewer than two "
+     "levels of points, without them the body is there"},
     {"length: 0.01", "length: 0", "1: units.length must be > 0"},
     {"tilt: [0.0, 0.0]", "tilt: 5", "9: initial.tilt must be a list of two numbers"},
     {"tilt: [0.0, 0.0]", "tilt: [181, 0]", "9: initial.tilt must lie within ±180 degrees, not 181"},

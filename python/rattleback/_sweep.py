@@ -84,9 +84,15 @@ def sweep(path: Union[str, os.PathLike], *, jobs: int = 0) -> SweepTable:
     Raises ValueError for a sweep file that cannot be used; KeyboardInterrupt on Ctrl-C. An
     axis the runs do not use (``contact.friction`` under ``rolling``: the rows along it are
     alike) is warned of, as ``rattleback sweep`` notes it (:class:`RunWarning`, code
-    ``"axis_unused"``).
+    ``"axis_unused"``), and so is a sweep whose every run was refused (code
+    ``"all_refused"``: ``rattleback sweep`` exits 2), with the first reason.
     """
     table = _core.sweep(os.fspath(path), int(jobs))
     for note in table.notes:
         warnings.warn(RunWarning(note, "axis_unused"), stacklevel=3)
-    return SweepTable(table)
+    result = SweepTable(table)
+    status = result["status"]
+    if len(status) and bool(np.all(status == "refused")):
+        warnings.warn(RunWarning(f"{table.file}: every run was refused; the first: "
+                                 f"{result['reason'][0]}", "all_refused"), stacklevel=3)
+    return result

@@ -214,6 +214,19 @@ simulation: {tolerance: 1.0e-8, duration: 8.0}
 """
 
 
+def test_a_sweep_whose_every_run_is_refused_warns_as_the_command_line_exits_two(tmp_path):
+    sweep = tmp_path / "r.yaml"
+    sweep.write_text(f"base: {scene_path('rattleback.yaml')}\nvary:\n"
+                     "  contact.air_drag: [-1.0, -2.0]\nduration: 0.1\n")
+    with pytest.warns(rb.RunWarning, match="every run was refused; the first: ") as caught:
+        table = rb.sweep(sweep, jobs=1)
+    assert caught[-1].message.code == "all_refused"
+    assert list(table["status"]) == ["refused", "refused"]
+    done = cli("sweep", str(sweep), "-q", "-o", str(tmp_path / "r.csv"), check=False)
+    assert done.returncode == 2
+    assert done.stderr == f"{caught[-1].message}\n"
+
+
 def test_analyze_looks_as_far_as_its_duration(tmp_path):
     """A researcher's 10 cm body spun -1 rad/s is forecast to reverse after its scene's 8 s:
     none within them, one within 60 (a researcher's trial had to edit the scene to see it)."""
