@@ -1051,8 +1051,9 @@ rb::Result<ReportPage> writeReport(const std::string& folder_path) {
     // teacher's trial: videos drawn with --frame at one scale beside players that each filled
     // their picture with their own body).
     std::map<std::string, std::optional<double>> drawn;
+    const std::vector<OutputEntry> listed = readManifest(dir.string());
     for (const OutputKind kind : {OutputKind::Video, OutputKind::Still})
-      for (const OutputEntry& e : readManifest(dir.string()))
+      for (const OutputEntry& e : listed)
         if (e.kind == kind && e.frame_m && !drawn.count(e.scene)) drawn[e.scene] = e.frame_m;
     for (const auto& [name, files] : folder.scenes) {
       const auto frame = drawn.find(name);
