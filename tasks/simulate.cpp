@@ -89,13 +89,11 @@ char* formatRow(char* line, const sim::Telemetry& s) {
   return at;
 }
 
-// A chunk of rows as text.
-std::string formatRows(std::span<const sim::Telemetry> rows) {
-  std::string text(rows.size() * kRowChars, '\0');
-  char* at = text.data();
+// A chunk of rows as text at `out` (room for kRowChars a row); returns its length.
+std::size_t formatRows(std::span<const sim::Telemetry> rows, char* out) {
+  char* at = out;
   for (const sim::Telemetry& s : rows) at = formatRow(at, s);
-  text.resize(static_cast<std::size_t>(at - text.data()));
-  return text;
+  return static_cast<std::size_t>(at - out);
 }
 
 }  // namespace
@@ -202,11 +200,26 @@ void TelemetryWriter::row(const sim::Telemetry& sample) {
   if (pending_.size() >= kChunkRows) handOff();
 }
 
+std::unique_ptr<char[]> TelemetryWriter::takeText() {
+  if (spareText_.empty()) return std::unique_ptr<char[]>(new char[kChunkRows * kRowChars]);
+  std::unique_ptr<char[]> text = std::move(spareText_.back());
+  spareText_.pop_back();
+  return text;
+}
+
 void TelemetryWriter::handOff() {
   if (pending_.empty()) return;
   formatting_.push_back(
-      std::async(std::launch::async, [rows = std::move(pending_)] { return formatRows(rows); }));
+      std::async(std::launch::async, [rows = std::move(pending_), text = takeText()]() mutable {
+        const std::size_t size = formatRows(rows, text.get());
+        rows.clear();
+        return Formatted{std::move(text), size, std::move(rows)};
+      }));
   pending_ = {};
+  if (!spareRows_.empty()) {
+    pending_ = std::move(spareRows_.back());
+    spareRows_.pop_back();
+  }
   pending_.reserve(kChunkRows);
   writeFormatted(kChunksInFlight);
 }
@@ -217,7 +230,10 @@ void TelemetryWriter::rows(std::span<const sim::Telemetry> samples) {
   // is written before this returns), not copied into chunks of the writer's own first.
   for (std::size_t at = 0; at < samples.size(); at += kChunkRows) {
     const auto part = samples.subspan(at, std::min(kChunkRows, samples.size() - at));
-    formatting_.push_back(std::async(std::launch::async, [part] { return formatRows(part); }));
+    formatting_.push_back(std::async(std::launch::async, [part, text = takeText()]() mutable {
+      const std::size_t size = formatRows(part, text.get());
+      return Formatted{std::move(text), size, {}};
+    }));
     writeFormatted(kChunksInFlight);
   }
   writeFormatted(0);
@@ -226,8 +242,11 @@ void TelemetryWriter::rows(std::span<const sim::Telemetry> samples) {
 
 void TelemetryWriter::writeFormatted(std::size_t keep) {
   while (formatting_.size() > keep) {
-    csv_.stream() << formatting_.front().get();
+    Formatted chunk = formatting_.front().get();
     formatting_.pop_front();
+    csv_.stream().write(chunk.text.get(), static_cast<std::streamsize>(chunk.size));
+    spareText_.push_back(std::move(chunk.text));
+    if (chunk.rows.capacity() > 0) spareRows_.push_back(std::move(chunk.rows));
   }
 }
 

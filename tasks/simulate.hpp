@@ -8,6 +8,7 @@
 #include <functional>
 #include <future>
 #include <iosfwd>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <span>
@@ -103,13 +104,25 @@ class TelemetryWriter {
   // was half of a 10 kHz run).
   static constexpr std::size_t kChunkRows = 4096;
   static constexpr std::size_t kChunksInFlight = 2;
+  // A chunk as text, and the buffers it was made with, kept for the chunks after it: fresh
+  // megabytes for each chunk were mapped and unmapped by the allocator, whose page faults and
+  // unmapping kept the formatting threads from running side by side (docs/speed.md "A shortest
+  // formatter that is kept (2026-11-27, tenth session; issue 27)").
+  struct Formatted {
+    std::unique_ptr<char[]> text;
+    std::size_t size = 0;
+    std::vector<sim::Telemetry> rows;  // the pending rows' buffer (none for rows handed over)
+  };
   void handOff();
   void writeFormatted(std::size_t keep);
+  std::unique_ptr<char[]> takeText();
   AtomicOutput csv_;
   std::optional<AtomicOutput> meta_;
   std::int64_t rows_ = 0;
   std::vector<sim::Telemetry> pending_;
-  std::deque<std::future<std::string>> formatting_;
+  std::deque<std::future<Formatted>> formatting_;
+  std::vector<std::unique_ptr<char[]>> spareText_;
+  std::vector<std::vector<sim::Telemetry>> spareRows_;
 };
 
 /// Writes the samples as CSV at `path` and the sidecar at `path`.json, each whole or not at all

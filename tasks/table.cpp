@@ -3,6 +3,8 @@
 #include <charconv>
 #include <cmath>
 
+#include "tasks/shortest.hpp"
+
 namespace tasks {
 
 std::string csvField(const std::string& text) {
@@ -30,10 +32,10 @@ nlohmann::json columnsJson(std::span<const Column> columns) {
 
 char* writeNumber(char* at, double value) {
   if (!std::isfinite(value)) return at;
-  // General: fixed when the exponent is from −4 up to the digits' count, else scientific, as
-  // %g chooses (the plain format would write a large whole number with all of its digits, not
-  // the shortest). + 0.0: −0 becomes 0.
-  return std::to_chars(at, at + kNumberChars, value + 0.0, std::chars_format::general).ptr;
+  // General: fixed when the first digit's exponent is from −4 to 5, else scientific, as %g
+  // with its precision 6 chooses (the plain format would write a large whole number with all of
+  // its digits, not the shortest). + 0.0: −0 becomes 0.
+  return writeShortest(at, value + 0.0);
 }
 
 std::string number(std::optional<double> value) {

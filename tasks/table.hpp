@@ -32,8 +32,8 @@ nlohmann::json columnsJson(std::span<const Column> columns);
 /// ("-2.2250738585072014e-308").
 inline constexpr std::size_t kNumberChars = 32;
 
-/// Writes the shortest text that reads back as exactly `value` (std::to_chars: Ryu's algorithm
-/// in libstdc++, no locale, no allocation), never "-0", at `at`; returns its end. A
+/// Writes the shortest text that reads back as exactly `value` (writeShortest: std::to_chars's
+/// text, faster; no locale, no allocation), never "-0", at `at`; returns its end. A
 /// non-finite value writes nothing (what CSV readers take as missing). JSON (nlohmann's dump)
 /// writes the same shortest round-trip digits, so a number reads the same in every output.
 char* writeNumber(char* at, double value);
