@@ -6,7 +6,7 @@
 #include <cstring>
 
 // The shortest decimal that reads back as the same double, written as std::to_chars(…,
-// chars_format::general) writes it, in about two thirds of its time (issue 27: the 10 kHz CSV's
+// chars_format::general) writes it, in about three fifths of its time (issue 27: the 10 kHz CSV's
 // two million numbers; docs/speed.md "A shortest formatter that is kept (2026-11-27, tenth
 // session; issue 27)").
 //
@@ -15,7 +15,8 @@
 // to v is between 1 and 10 units wide; the one multiple of 10 in it, if any, gives the shortest
 // digits, else the nearer of the two integers around v·10^−k that lie in it. The scaled values
 // are computed with 10^−k rounded up to 126 bits and the product rounded to odd, which the paper
-// shows is exact enough for every comparison made. The digits are turned into characters eight
+// shows is exact enough for every comparison made, once products that are exactly whole are
+// seen to (roundOdd). The digits are turned into characters eight
 // at a time in the bytes of one 64-bit word.
 namespace tasks {
 namespace {
@@ -23,8 +24,9 @@ namespace {
 using u64 = std::uint64_t;
 using u128 = unsigned __int128;
 
-// ⌊log10(2^e)⌋ and ⌊log10(3/4·2^e)⌋ for |e| ≤ 1650, and ⌊log2(10^e)⌋ for |e| ≤ 1233, by the
-// fixed-point logarithms the paper gives (its §9, checked there over those ranges).
+// ⌊log10(2^e)⌋, ⌊log10(3/4·2^e)⌋ and ⌊log2(10^e)⌋ by fixed-point logarithms (log10 2 and
+// log10 4/3 times 2^41, log2 10 times 2^38, rounded), right for every exponent a double has: the
+// tests write every power of two and its neighbours, whose digits a wrong k would change.
 constexpr int floorLog10Pow2(int e) {
   return static_cast<int>((static_cast<std::int64_t>(e) * 661971961083) >> 41);
 }
@@ -135,10 +137,10 @@ inline u64 roundOdd(u64 ghi, u64 glo, u64 x, int k) {
   const u128 low = static_cast<u128>(glo) * x;
   const u128 high = static_cast<u128>(ghi) * x + static_cast<u64>(low >> 64);
   const u64 whole = static_cast<u64>(high >> 64);
-  if (static_cast<u64>(high) == 0 && static_cast<u64>(low) == 0) return whole;
-  if (k >= 1 && k <= 23 && x % kFives[k] == 0) [[unlikely]]
-    return whole;  // exact: the excess was all there was below
-  return whole | 1;
+  u64 cut = (static_cast<u64>(high) | static_cast<u64>(low)) != 0;
+  if (static_cast<unsigned>(k - 1) < 23u && x % kFives[k] == 0) [[unlikely]]
+    cut = 0;  // exact: the excess was all there was below
+  return whole | cut;
 }
 
 // Eight digits of x < 10^8 as characters, the first in the lowest byte.
@@ -150,76 +152,20 @@ inline u64 eightDigits(u64 x) {
   return q | ((v - 10 * q) << 8);                   // eight digits, 0–9 a byte
 }
 
-}  // namespace
+// e±XX (two digits at least), as %g writes it.
+char* writeExponent(char* at, int exponent) {
+  const int e = exponent < 0 ? -exponent : exponent;
+  at[0] = 'e';
+  at[1] = exponent < 0 ? '-' : '+';
+  at += 2;
+  if (e >= 100) *at++ = static_cast<char>('0' + e / 100);
+  at[0] = static_cast<char>('0' + e / 10 % 10);
+  at[1] = static_cast<char>('0' + e % 10);
+  return at + 2;
+}
 
-char* writeShortest(char* at, double value) {
-  const u64 bits = std::bit_cast<u64>(value);
-  if (bits >> 63) *at++ = '-';
-  const u64 fraction = bits & ((u64{1} << 52) - 1);
-  const int biased = static_cast<int>((bits >> 52) & 0x7FF);
-  if (biased == 0 && fraction == 0) {
-    *at = '0';
-    return at + 1;
-  }
-  u64 c;
-  int q;
-  if (biased) {
-    c = fraction | (u64{1} << 52);
-    q = biased - 1075;
-  } else {
-    c = fraction;
-    q = -1074;
-  }
-
-  u64 digits;  // the decimal d with value = d·10^k
-  int k;
-  if (q <= 0 && q > -53 && (c & ((u64{1} << -q) - 1)) == 0) {
-    // A whole number below 2^53: itself, as no decimal as short is within half an ulp of it.
-    digits = c >> -q;
-    k = 0;
-  } else {
-    const bool even = (c & 1) == 0;
-    const u64 cb = c << 2;
-    const u64 cbr = cb + 2;
-    u64 cbl;
-    if (fraction != 0 || biased <= 1) {
-      cbl = cb - 2;
-      k = floorLog10Pow2(q);
-    } else {  // the lower neighbour is nearer, at a quarter of the ulp above
-      cbl = cb - 1;
-      k = floorLog10ThreeQuartersPow2(q);
-    }
-    const int h = q + floorLog2Pow10(-k) + 3;  // 3 … 6
-    const u64 ghi = kScales.hi[k - kMinK], glo = kScales.lo[k - kMinK];
-    const u64 vb = roundOdd(ghi, glo, cb << h, k);
-    const u64 vbl = roundOdd(ghi, glo, cbl << h, k);
-    const u64 vbr = roundOdd(ghi, glo, cbr << h, k);
-    const u64 out = even ? 0 : 1;  // an odd c's interval leaves out its ends
-    const u64 s = vb >> 2;
-    bool done = false;
-    if (s >= 10) {
-      const u64 sp10 = s / 10 * 10;
-      const u64 tp10 = sp10 + 10;
-      const bool upin = vbl + out <= sp10 << 2;
-      const bool wpin = (tp10 << 2) + out <= vbr;
-      if (upin != wpin) {
-        digits = upin ? sp10 : tp10;
-        done = true;
-      }
-    }
-    if (!done) {
-      const u64 t = s + 1;
-      const bool uin = vbl + out <= s << 2;
-      const bool win = (t << 2) + out <= vbr;
-      if (uin != win) {
-        digits = uin ? s : t;
-      } else {
-        const std::int64_t cmp = static_cast<std::int64_t>(vb - (s + t) * 2);
-        digits = cmp < 0 || (cmp == 0 && (s & 1) == 0) ? s : t;
-      }
-    }
-  }
-
+// Fewer than 16 digits (whole numbers, subnormals): through a buffer of the 17 digits.
+[[gnu::noinline]] char* writeFewDigits(char* at, u64 digits, int k) {
   // digits < 10^17 (or a whole number < 2^53 < 10^16): 17 characters, leading zeros included.
   const u64 upper = digits / 100000000;
   const u64 first = upper / 100000000;  // 0 … 9
@@ -258,21 +204,7 @@ char* writeShortest(char* at, double value) {
       std::memcpy(at, d + 1, 16);
       at += count - 1;
     }
-    *at++ = 'e';
-    int e = exponent;
-    if (e < 0) {
-      *at++ = '-';
-      e = -e;
-    } else {
-      *at++ = '+';
-    }
-    if (e >= 100) {
-      *at++ = static_cast<char>('0' + e / 100);
-      e %= 100;
-    }
-    *at++ = static_cast<char>('0' + e / 10);
-    *at++ = static_cast<char>('0' + e % 10);
-    return at;
+    return writeExponent(at, exponent);
   }
   if (exponent < 0) {  // 0.000ddd
     std::memcpy(at, "0.0000", 6);
@@ -292,6 +224,123 @@ char* writeShortest(char* at, double value) {
   *at++ = '.';
   std::memcpy(at, d + exponent + 1, 16);
   return at + (count - exponent - 1);
+}
+
+// The shortest decimal d·10^k in the interval of reals that round to c·2^q (c ≥ 1, not a whole
+// number below 2^53), and of those the nearest. Without branches on the digits: which case
+// applies is as good as random from one number to the next.
+struct Decimal {
+  u64 digits;
+  int k;
+};
+inline Decimal shortest(u64 c, int q, bool nearerBelow) {
+  const u64 cb = c << 2;
+  const u64 cbr = cb + 2;
+  u64 cbl;
+  int k;
+  if (!nearerBelow) {
+    cbl = cb - 2;
+    k = floorLog10Pow2(q);
+  } else {  // c = 2^52: the lower neighbour is nearer, at a quarter of the ulp below
+    cbl = cb - 1;
+    k = floorLog10ThreeQuartersPow2(q);
+  }
+  const int h = q + floorLog2Pow10(-k) + 3;  // 3 … 6
+  const u64 ghi = kScales.hi[k - kMinK], glo = kScales.lo[k - kMinK];
+  const u64 vb = roundOdd(ghi, glo, cb << h, k);
+  const u64 vbl = roundOdd(ghi, glo, cbl << h, k);
+  const u64 vbr = roundOdd(ghi, glo, cbr << h, k);
+  const u64 out = c & 1;  // an odd c's interval leaves out its ends
+  // The one multiple of 10 in the interval, if there is one: the shortest.
+  const u64 s = vb >> 2;
+  const u64 sp10 = s / 10 * 10;
+  const u64 tp10 = sp10 + 10;
+  const bool upin = vbl + out <= sp10 << 2;
+  const bool wpin = (tp10 << 2) + out <= vbr;
+  const bool ten = (s >= 10) & (upin != wpin);
+  const u64 tens = upin ? sp10 : tp10;
+  // Else s or s + 1, whichever lies in it, or the nearer (an even s on a tie).
+  const u64 t = s + 1;
+  const bool uin = vbl + out <= s << 2;
+  const bool win = (t << 2) + out <= vbr;
+  const std::int64_t cmp = static_cast<std::int64_t>(vb - (s + t) * 2);
+  const bool nearerS = (cmp < 0) | ((cmp == 0) & ((s & 1) == 0));
+  const u64 units = t - (uin & (!win | nearerS));
+  return {units ^ ((units ^ tens) & (u64{0} - ten)), k};
+}
+
+}  // namespace
+
+char* writeShortest(char* at, double value) {
+  const u64 bits = std::bit_cast<u64>(value);
+  *at = '-';
+  at += bits >> 63;
+  const u64 fraction = bits & ((u64{1} << 52) - 1);
+  const int biased = static_cast<int>((bits >> 52) & 0x7FF);
+  if (biased == 0 && fraction == 0) {
+    *at = '0';
+    return at + 1;
+  }
+  const u64 c = biased ? fraction | (u64{1} << 52) : fraction;
+  const int q = biased ? biased - 1075 : -1074;
+  u64 digits;  // value = digits·10^k
+  int k;
+  if (q <= 0 && q > -53 && (c & ((u64{1} << -q) - 1)) == 0) {
+    // A whole number below 2^53: itself, as no decimal as short is within half an ulp of it.
+    digits = c >> -q;
+    k = 0;
+  } else {
+    const Decimal d = shortest(c, q, fraction == 0 && biased > 1);
+    digits = d.digits;
+    k = d.k;
+  }
+
+  if (digits < 1000000000000000) [[unlikely]]
+    return writeFewDigits(at, digits, k);
+  // 16 or 17 digits (every value not a whole number below 2^53, and not subnormal): as
+  // characters in three words, the first digit in the lowest byte, and stored straight into the
+  // output at the places the form wants (not copied out of a buffer just stored, whose loads
+  // would wait for those stores).
+  const u64 upper = digits / 100000000;
+  const u64 first = digits / 10000000000000000;  // 0 … 9
+  const u64 middle = eightDigits(upper - first * 100000000);
+  const u64 last = eightDigits(digits - upper * 100000000);
+  const int trailing = last     ? std::countl_zero(last) / 8
+                       : middle ? 8 + std::countl_zero(middle) / 8
+                                : 16;
+  const bool seventeen = first != 0;
+  const int count = 16 + seventeen - trailing;
+  k += trailing;
+  const int exponent = k + count - 1;  // of the first digit
+  const u64 zeros = 0x3030303030303030;
+  const u64 m = middle | zeros, l = last | zeros;
+  const u64 w0 = seventeen ? ('0' + first) | (m << 8) : m;
+  const u64 w1 = seventeen ? (m >> 56) | (l << 8) : l;
+  const u64 w2 = seventeen ? l >> 56 : 0;
+  const auto put = [](char* to, u64 word) { std::memcpy(to, &word, 8); };
+  if (exponent < -4 || exponent >= 6) [[unlikely]] {  // scientific, as %g with its precision 6
+    at[0] = static_cast<char>(w0);
+    at[1] = '.';
+    put(at + 2, (w0 >> 8) | (w1 << 56));
+    put(at + 10, (w1 >> 8) | (w2 << 56));
+    at += count + (count > 1);
+    return writeExponent(at, exponent);
+  }
+  if (exponent < 0) {             // 0.000ddd
+    put(at, 0x3030303030302E30);  // "0.000000"
+    at += 1 - exponent;
+    put(at, w0);
+    put(at + 8, w1);
+    at[16] = static_cast<char>(w2);
+    return at + count;
+  }
+  // ddd.ddd: the point after the units (p ≤ 6 digits; more follow, as this is no whole number)
+  const int p = exponent + 1;
+  put(at, w0);
+  at[p] = '.';
+  put(at + p + 1, (w0 >> 8 * p) | (w1 << (64 - 8 * p)));
+  put(at + p + 9, (w1 >> 8 * p) | (w2 << (64 - 8 * p)));
+  return at + count + 1;
 }
 
 }  // namespace tasks

@@ -103,7 +103,7 @@ class TelemetryWriter {
   // handed over at once, several chunks at a time), and written in order (issue 27: formatting
   // was half of a 10 kHz run).
   static constexpr std::size_t kChunkRows = 4096;
-  static constexpr std::size_t kChunksInFlight = 2;
+  static constexpr std::size_t kChunksInFlight = 4;
   // A chunk as text, and the buffers it was made with, kept for the chunks after it: fresh
   // megabytes for each chunk were mapped and unmapped by the allocator, whose page faults and
   // unmapping kept the formatting threads from running side by side (docs/speed.md "A shortest
