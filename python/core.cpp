@@ -217,12 +217,15 @@ struct SweepTable {
   std::vector<std::string> notes;  ///< tasks::sweepNotes: warned of by rattleback.sweep
 };
 
-std::shared_ptr<SweepTable> sweep(const std::string& path, int jobs) {
+void checkJobs(int jobs) {
   if (jobs < 0 || jobs > 1024)
     throw py::value_error("argument jobs: threads must be 1 … 1024 (0: all cores), not " +
                           std::to_string(jobs));
+}
+
+std::shared_ptr<SweepTable> runSweepTable(scene::Sweep sweep, int jobs) {
   auto table = std::make_shared<SweepTable>();
-  table->sweep = take(scene::loadSweep(tasks::findShipped(path)));
+  table->sweep = std::move(sweep);
   auto scenes = take(scene::SweepScenes::open(table->sweep));
   table->notes = tasks::sweepNotes(table->sweep, scenes);
   std::vector<std::int64_t> rows;
@@ -235,6 +238,25 @@ std::shared_ptr<SweepTable> sweep(const std::string& path, int jobs) {
   });
   table->rows = std::move(run.rows);
   return table;
+}
+
+std::shared_ptr<SweepTable> sweep(const std::string& path, int jobs) {
+  checkJobs(jobs);
+  return runSweepTable(take(scene::loadSweep(tasks::findShipped(path))), jobs);
+}
+
+// A sweep made in Python: `vary` (and `duration`) as a sweep file's YAML, over a scene's text
+// and values; messages name "argument vary"; the table is named `name`.
+std::shared_ptr<SweepTable> sweepOf(const std::string& vary, const std::string& name,
+                                    const std::string& base_yaml, const std::string& base_name,
+                                    const std::vector<std::pair<std::string, std::string>>& values,
+                                    int jobs) {
+  checkJobs(jobs);
+  scene::SweepBase base{base_yaml, base_name, {}};
+  for (const auto& [key, yaml] : values) base.values.push_back({key, yaml});
+  scene::Sweep made = take(scene::loadSweepText(vary, "argument vary", base));
+  made.file = name;
+  return runSweepTable(std::move(made), jobs);
 }
 
 // An optional number as a float, NaN when absent.
@@ -356,6 +378,8 @@ PYBIND11_MODULE(_core, m) {
         return keys;
       });
   m.def("sweep", &sweep, py::arg("path"), py::arg("jobs"));
+  m.def("sweep_of", &sweepOf, py::arg("vary"), py::arg("name"), py::arg("base_yaml"),
+        py::arg("base_name"), py::arg("values"), py::arg("jobs"));
   m.def(
       "player_script",
       [](const LoadedScene& loaded, const Run& run, const std::string& id) {

@@ -319,7 +319,10 @@ rb::Error located(const std::string& file, int line, const std::string& key,
 // alone ("--fps: must be …"), else with the key: "--set body.mass=-3: body.mass must be > 0",
 // "with_values: body.mass …", a sweep's line.
 rb::Error setBy(const std::string& place, const std::string& set_key, const rb::Error& error) {
-  const bool option = place.rfind("--", 0) == 0 || place.rfind("argument ", 0) == 0;
+  // An option or argument of one key is named alone ("--spin: must be …"); Python's sweep
+  // argument vary sets many, so it is named with the key, as a sweep file's line is.
+  const bool option =
+      place.rfind("--", 0) == 0 || (place.rfind("argument ", 0) == 0 && place != "argument vary");
   const bool alone = option && place.find('=') == std::string::npos && error.key == set_key;
   rb::Error e{"", printable(place + ": " + (alone ? "" : error.key + " ") + error.message)};
   e.where = rb::Error::Where{place, 0, error.key};

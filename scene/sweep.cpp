@@ -164,10 +164,16 @@ rb::Result<SweepScenes> SweepScenes::open(const Sweep& sweep) {
   impl->sweep = sweep;
   impl->base_name = sweep.base;
   try {
-    impl->base = YAML::LoadFile(sweep.base);
+    impl->base = YAML::Load(sweep.base_text);
+    if (!impl->base.IsDefined() || impl->base.IsNull())
+      impl->base = YAML::Node(YAML::NodeType::Map);
     // The rows' trees are copies, which keep no lines: an error in a key of the base names the
     // base's line from these (it named line 1).
     if (auto loaded = loadTree(impl->base, sweep.base, {})) impl->base_lines = loaded->lines;
+    for (const KeyValue& kv : sweep.base_values) {
+      put(impl->base, *splitKey(kv.key), 0, YAML::Load(kv.yaml));
+      impl->places[withoutIndex(kv.key)] = "with_values";
+    }
     if (sweep.duration) {
       const KeyPath path{{"simulation", "duration"}, std::nullopt};
       put(impl->base, path, 0, YAML::Load(rangeValue(*sweep.duration)));
@@ -183,66 +189,81 @@ rb::Result<SweepScenes> SweepScenes::open(const Sweep& sweep) {
   return SweepScenes(std::move(impl));
 }
 
-rb::Result<Sweep> loadSweep(const std::string& path) {
+namespace {
+
+// A sweep's keys from its text: the base from `base:` (a file, relative to the sweep file's
+// folder) or, for a sweep made without a file, from `given`; `lines`: whether messages name the
+// text's lines (a file's) or the name alone (Python's argument).
+rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, bool lines,
+                             const SweepBase* given) {
   namespace fs = std::filesystem;
   Sweep sweep;
   sweep.file = path;
-  std::error_code ec;
-  if (fs::is_directory(path, ec))
-    return rb::Error{"", path +
-                             ": is a folder, not a sweep file (give a .yaml file, e.g. "
-                             "sweeps/spin-drag.yaml)"};
-  if (!fs::exists(path, ec)) return rb::Error{"", path + ": no such sweep file"};
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return rb::Error{"", path + ": cannot open the sweep file"};
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   YAML::Node root;
   try {
     root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
     return malformedYaml(path, text, e);
   }
-  auto at = [&](const YAML::Node& node) { return path + ":" + std::to_string(lineOf(node)); };
+  auto at = [&](const YAML::Node& node) {
+    return lines ? path + ":" + std::to_string(lineOf(node)) : path;
+  };
+  const std::string top = lines ? path + ":1" : path;
   try {
     if (!root.IsMap())
-      throw SweepFailure{path + ":1: a sweep is a map with the keys base, vary and duration"};
+      throw SweepFailure{top + ": a sweep is a map with the keys base, vary and duration"};
     // (A default-constructed YAML::Node is a defined null, so presence is kept apart.)
     YAML::Node base_key, vary_key, duration_key;
     YAML::Node base_node, vary, duration;
     bool has_base = false, has_vary = false, has_duration = false;
     for (const auto& entry : root) {
       const std::string key = entry.first.as<std::string>();
-      if (key == "base")
+      if (key == "base" && !given)
         base_key = entry.first, base_node = entry.second, has_base = true;
       else if (key == "vary")
         vary_key = entry.first, vary = entry.second, has_vary = true;
       else if (key == "duration")
         duration_key = entry.first, duration = entry.second, has_duration = true;
       else
-        throw SweepFailure{at(entry.first) + ": " + key +
-                           " is not a key of a sweep (known: base, vary, duration)"};
+        throw SweepFailure{at(entry.first) + ": " + key + " is not a key of a sweep (known: " +
+                           (given ? "vary, duration" : "base, vary, duration") + ")"};
     }
-    if (!has_base)
-      throw SweepFailure{path + ":1: base is required: the scene file the runs start from"};
-    if (!base_node.IsScalar() || base_node.Scalar().empty())
-      throw SweepFailure{at(base_key) + ": base must be the path of a scene file"};
-    sweep.base_as_written = base_node.Scalar();
-    fs::path base = base_node.Scalar();
-    if (base.is_relative()) base = fs::path(path).parent_path() / base;
-    sweep.base = base.lexically_normal().string();
-    auto loaded_base = loadFile(sweep.base);
-    if (!loaded_base) throw SweepFailure{at(base_key) + ": base: " + loaded_base.error().text()};
-    sweep.length_unit = loaded_base->spec.units.length;
+    if (given) {
+      sweep.base = sweep.base_as_written = given->name;
+      sweep.base_text = given->yaml;
+      sweep.base_values = given->values;
+      auto loaded_base = loadWithValues(given->yaml, given->name, given->values, "with_values");
+      if (!loaded_base) throw SweepFailure{loaded_base.error().text()};
+      sweep.length_unit = loaded_base->spec.units.length;
+    } else {
+      if (!has_base)
+        throw SweepFailure{top + ": base is required: the scene file the runs start from"};
+      if (!base_node.IsScalar() || base_node.Scalar().empty())
+        throw SweepFailure{at(base_key) + ": base must be the path of a scene file"};
+      sweep.base_as_written = base_node.Scalar();
+      fs::path base = base_node.Scalar();
+      if (base.is_relative()) base = fs::path(path).parent_path() / base;
+      sweep.base = base.lexically_normal().string();
+      auto base_text = readSceneFile(sweep.base);
+      if (!base_text) throw SweepFailure{at(base_key) + ": base: " + base_text.error().text()};
+      sweep.base_text = base_text.value();
+      auto loaded_base = loadString(sweep.base_text, sweep.base);
+      if (!loaded_base) throw SweepFailure{at(base_key) + ": base: " + loaded_base.error().text()};
+      sweep.length_unit = loaded_base->spec.units.length;
+    }
     if (has_duration) {
       const double d = number(duration, at(duration_key) + ":", "duration");
       if (!(d > 0)) throw SweepFailure{at(duration_key) + ": duration must be above 0 s"};
       sweep.duration = d;
     }
     if (!has_vary || !vary.IsMap() || vary.size() == 0)
-      throw SweepFailure{(has_vary ? at(vary_key) : path + ":1") +
+      throw SweepFailure{(has_vary ? at(vary_key) : top) +
                          ": vary must map scene keys to their values, e.g. initial.spin: [-5, 5]"};
 
-    YAML::Node base_tree = YAML::LoadFile(sweep.base);
+    YAML::Node base_tree = YAML::Load(sweep.base_text);
+    if (!base_tree.IsDefined() || base_tree.IsNull()) base_tree = YAML::Node(YAML::NodeType::Map);
+    for (const KeyValue& kv : sweep.base_values)
+      put(base_tree, *splitKey(kv.key), 0, YAML::Load(kv.yaml));
     std::set<std::string> keys;
     double runs = 1;
     for (const auto& entry : vary) {
@@ -297,9 +318,29 @@ rb::Result<Sweep> loadSweep(const std::string& path) {
     return rb::Error{"", f.message};
   } catch (const YAML::Exception& e) {
     const int line = e.mark.is_null() ? 1 : e.mark.line + 1;
-    return rb::Error{"", path + ":" + std::to_string(line) + ": " + e.msg};
+    return rb::Error{"", (lines ? path + ":" + std::to_string(line) : path) + ": " + e.msg};
   }
   return sweep;
+}
+
+}  // namespace
+
+rb::Result<Sweep> loadSweep(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    return rb::Error{"", path +
+                             ": is a folder, not a sweep file (give a .yaml file, e.g. "
+                             "sweeps/spin-drag.yaml)"};
+  if (!std::filesystem::exists(path, ec)) return rb::Error{"", path + ": no such sweep file"};
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return rb::Error{"", path + ": cannot open the sweep file"};
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return parseSweep(text, path, true, nullptr);
+}
+
+rb::Result<Sweep> loadSweepText(const std::string& yaml, const std::string& name,
+                                const SweepBase& base) {
+  return parseSweep(yaml, name, false, &base);
 }
 
 }  // namespace scene

@@ -36,6 +36,10 @@ struct Sweep {
   std::string base;  ///< the base scene's path (resolved against the sweep file's folder)
   std::string base_as_written;  ///< the base scene's path as the sweep file writes it
   std::vector<SweepAxis> axes;
+  /// The base scene's text as read, and values put in over it (Python's Scene.with_values): the
+  /// scene every row starts from.
+  std::string base_text;
+  std::vector<KeyValue> base_values;
   std::optional<double> duration;  ///< s; overrides simulation.duration
   double length_unit = 1;          ///< m per length unit of the base scene (units.length)
 
@@ -52,6 +56,19 @@ struct Sweep {
 /// (which must be a scene key), and each range. A value that makes one scene invalid is not an
 /// error here: that run is refused when it is built.
 rb::Result<Sweep> loadSweep(const std::string& path);
+
+/// The base of a sweep made without a sweep file (Python's sweep(scene, vary=…)): a scene's text,
+/// its name (its file's path, or what stands for it in messages) and values put in over it.
+struct SweepBase {
+  std::string yaml;
+  std::string name;
+  std::vector<KeyValue> values;
+};
+
+/// A sweep written as YAML text with the keys vary and duration (no base: `base` is it), as a
+/// sweep file's; `name` stands for the text in messages, which name no line.
+rb::Result<Sweep> loadSweepText(const std::string& yaml, const std::string& name,
+                                const SweepBase& base);
 
 /// The scenes of a sweep: the base parsed once, then for each row a copy with one value of
 /// each axis put in. Safe to use from several threads.

@@ -116,6 +116,9 @@ _TAKES: dict[str, tuple[Callable[[Any], bool], str]] = {
     "text": (_text, "YAML text"),
     "values": (lambda v: isinstance(v, Mapping),
                "a dict of dotted keys and values, e.g. {'initial.spin': -5}"),
+    "source": (_scene, "a sweep file's path, or with vary a Scene, a scene's path or a dict"),
+    "vary": (lambda v: isinstance(v, Mapping),
+             "a dict of dotted keys and their values, e.g. {'initial.spin': [-5, 5]}"),
 }
 
 
@@ -141,6 +144,16 @@ def _check(name: str, value: Any) -> None:
         # render(output="") wrote its default name as if none had been given.
         way_out = "a file name, or None for the default" if name == "output" else "a file name"
         raise ValueError(f"argument {name}: '' names no file; give {way_out}")
+    if name == "vary":  # each key's values: a list (or array) of them, or a range's dict
+        for key, v in value.items():
+            if not isinstance(key, str):
+                raise TypeError(f"argument vary: takes dotted keys as text, not {_shown(key)}")
+            if isinstance(v, Mapping):
+                continue
+            if isinstance(v, (str, bytes)) or not isinstance(v, (list, tuple, range, np.ndarray)) \
+                    or not all(_scene_value(x) for x in v):
+                raise TypeError(f"argument vary: {key} takes a list of values or a range "
+                                f"{{'from': A, 'to': B, 'count': N}}, not {_shown(v)}")
     if name == "values":  # and each value, named by its key
         for key, v in value.items():
             if not isinstance(key, str):

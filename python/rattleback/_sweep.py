@@ -2,13 +2,16 @@
 
 from __future__ import annotations
 
+import json
+import math
 import os
 import warnings
-from typing import Union
+from pathlib import Path
+from typing import Any, Mapping, Optional, Union
 
 import numpy as np
 
-from . import _core
+from . import Scene, _core, _scene, _yaml_value_default
 from ._args import checked
 from ._errors import RunWarning
 
@@ -76,18 +79,55 @@ class SweepTable:
         return f"<SweepTable {self._table.file}: {len(self)} runs, {ok} ok>"
 
 
-@checked
-def sweep(path: Union[str, os.PathLike], *, jobs: int = 0) -> SweepTable:
-    """Runs every scene of the sweep file at ``path`` (docs/scenes.md "Sweep files": a base scene and axes
-    of values) on ``jobs`` threads (0: all cores), as ``rattleback sweep`` does.
+def _values(values: Any) -> Any:
+    """An axis's values as the sweep file's YAML (as JSON) takes them: a list, or a range."""
+    if isinstance(values, Mapping):
+        return dict(values)
+    if isinstance(values, np.ndarray):
+        return values.tolist()
+    return list(values)
 
-    Raises ValueError for a sweep file that cannot be used; KeyboardInterrupt on Ctrl-C. An
-    axis the runs do not use (``contact.friction`` under ``rolling``: the rows along it are
-    alike) is warned of, as ``rattleback sweep`` notes it (:class:`RunWarning`, code
-    ``"axis_unused"``), and so is a sweep whose every run was refused (code
-    ``"all_refused"``: ``rattleback sweep`` exits 2), with the first reason.
+
+@checked
+def sweep(source: Union[str, os.PathLike, Scene, Mapping[str, Any]],
+          vary: Optional[Mapping[str, Any]] = None, *, duration: Optional[float] = None,
+          jobs: int = 0, name: Optional[str] = None) -> SweepTable:
+    """Runs every scene of a sweep on ``jobs`` threads (0: all cores), as ``rattleback sweep``
+    does: the sweep file at ``source`` (docs/scenes.md "Sweep files": a base scene and axes of
+    values), or, with ``vary``, the scene ``source`` (a Scene, a scene's path or a dict) with
+    ``vary`` as a sweep file's ``vary:`` (each dotted key's values: a list or array, or a range
+    ``{"from": A, "to": B, "count": N}`` with ``"scale": "log"`` if wanted), ``duration`` as its
+    ``duration:`` (s, every run's), and ``name`` the table's (default: the scene file's name
+    and ``-sweep``).
+
+    Raises ValueError for a sweep that cannot be used (an error in ``vary`` is named
+    ``argument vary`` and the key); KeyboardInterrupt on Ctrl-C. An axis the runs do not use
+    (``contact.friction`` under ``rolling``: the rows along it are alike) is warned of, as
+    ``rattleback sweep`` notes it (:class:`RunWarning`, code ``"axis_unused"``), and so is a
+    sweep whose every run was refused (code ``"all_refused"``: ``rattleback sweep`` exits 2),
+    with the first reason.
     """
-    table = _core.sweep(os.fspath(path), int(jobs))
+    if vary is None:
+        if not isinstance(source, (str, os.PathLike)):
+            raise TypeError("argument vary: a scene is swept along the values given as vary, "
+                            "e.g. vary={'initial.spin': [-5, 5]}; without it, source is a "
+                            "sweep file's path")
+        for given, value in (("duration", duration), ("name", name)):
+            if value is not None:
+                raise TypeError(f"argument {given}: goes with vary (a sweep file sets its own"
+                                + (": duration:)" if given == "duration" else ")"))
+        table = _core.sweep(os.fspath(source), int(jobs))
+    else:
+        base = _scene(source)
+        spec: dict[str, Any] = {"vary": {key: _values(v) for key, v in vary.items()}}
+        if duration is not None:
+            if not (math.isfinite(float(duration)) and float(duration) > 0):
+                raise ValueError(f"argument duration: must be above 0 s, not {duration}")
+            spec["duration"] = float(duration)
+        if name is None:
+            name = (Path(base._name).stem if base._file else "scene") + "-sweep"
+        table = _core.sweep_of(json.dumps(spec, default=_yaml_value_default), name, base._yaml,
+                               base._name, list(base._values), int(jobs))
     for note in table.notes:
         warnings.warn(RunWarning(note, "axis_unused"), stacklevel=3)
     result = SweepTable(table)

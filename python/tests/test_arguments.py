@@ -59,6 +59,17 @@ def test_every_public_function_checks_its_arguments(scene, tmp_path):
             "argument jobs: takes a whole number, not '2' (str)")
     refused(lambda: rb.simulate(5),
             "argument scene: takes a Scene, a path or a dict, not 5 (int)")
+    refused(lambda: rb.sweep(scene, {"initial.spin": 5}),
+            "argument vary: initial.spin takes a list of values or a range "
+            "{'from': A, 'to': B, 'count': N}, not 5 (int)")
+    refused(lambda: rb.sweep(scene, "initial.spin=5"),
+            "argument vary: takes a dict of dotted keys and their values, e.g. "
+            "{'initial.spin': [-5, 5]}, not 'initial.spin=5' (str)")
+    refused(lambda: rb.sweep(scene),
+            "argument vary: a scene is swept along the values given as vary, e.g. "
+            "vary={'initial.spin': [-5, 5]}; without it, source is a sweep file's path")
+    refused(lambda: rb.sweep("sweeps/spin-drag.yaml", duration=3),
+            "argument duration: goes with vary (a sweep file sets its own: duration:)")
     refused(lambda: scene.with_values("initial.spin=5"),
             "argument values: takes a dict of dotted keys and values, e.g. "
             "{'initial.spin': -5}, not 'initial.spin=5' (str)")

@@ -326,3 +326,27 @@ def test_a_runs_warnings_are_python_warnings(recwarn):
     assert caught[0].message.code == "implausible_mass"
     assert caught[0].filename == __file__
     assert run.result["warnings"][0]["code"] == "implausible_mass"
+
+
+def test_a_sweep_made_in_python_names_argument_vary_and_the_key():
+    base = scene_path("rattleback.yaml")
+    for vary, message in [
+        ({"initial.spn": [1, 2]},
+         "argument vary: initial.spn is not a known key; did you mean spin? "
+         "(known here: spin, tilt, height)"),
+        ({"initial.spin": []}, "argument vary: initial.spin has no values"),
+        ({"video.fps": [30]},
+         "argument vary: video.fps: a sweep only simulates; video keys do not change a run"),
+        ({"body.dents.at[5]": [1]},
+         "argument vary: body.dents.at[5]: the base scene has no list body.dents.at with an "
+         "element 5"),
+    ]:
+        with pytest.raises(ValueError) as caught:
+            rb.sweep(base, vary, jobs=1)
+        assert str(caught.value) == message
+    with pytest.raises(ValueError, match=r"^argument duration: must be above 0 s, not -1$"):
+        rb.sweep(base, {"initial.spin": [1]}, duration=-1)
+    # A value no scene can take refuses its row, named as the argument's (a file's names its line).
+    table = rb.sweep(base, {"body.mass": [-1, 0.059]}, duration=0.1, jobs=1)
+    assert list(table["status"]) == ["refused", "ok"]
+    assert table["reason"][0] == "argument vary: body.mass must be > 0, not -1"

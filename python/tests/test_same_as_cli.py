@@ -187,6 +187,41 @@ def test_a_sweep_has_the_command_lines_rows(tmp_path):
     assert len(table.to_pandas()) == 4
 
 
+def test_a_sweep_made_in_python_has_the_sweep_files_rows(tmp_path):
+    sweep = tmp_path / "s.yaml"
+    sweep.write_text(f"base: {scene_path('rattleback.yaml')}\nvary:\n"
+                     "  initial.spin: {from: -6, to: -2, count: 3}\n"
+                     "  contact.air_drag: [0.0, 5.9e-5]\nduration: 3\n")
+    cli("sweep", str(sweep), "-q", "-o", str(tmp_path / "cli.csv"))
+    table = rb.sweep(scene_path("rattleback.yaml"),
+                     {"initial.spin": {"from": -6, "to": -2, "count": 3},
+                      "contact.air_drag": np.array([0.0, 5.9e-5])}, duration=3, jobs=2)
+    table.to_csv(tmp_path / "py.csv")
+
+    def rows(path):
+        with open(path, newline="") as f:
+            # The axes' values as numbers: Python writes 5.9e-5 as JSON does, 5.9e-05.
+            return [{k: float(v) if k in ("initial.spin", "contact.air_drag") else v
+                     for k, v in r.items() if k != "wall_s"} for r in csv.DictReader(f)]
+
+    assert rows(tmp_path / "py.csv") == rows(tmp_path / "cli.csv")
+    assert repr(table) == "<SweepTable rattleback-sweep: 6 runs, 6 ok>"
+    side = json.loads((tmp_path / "py.csv.json").read_text())
+    assert side["sweep"] == "rattleback-sweep" and side["base"] == scene_path("rattleback.yaml")
+
+
+def test_a_sweep_of_a_scene_with_values_starts_from_those_values():
+    changed = rb.Scene.from_file(scene_path("rattleback.yaml")).with_values({"initial.spin": -4})
+    table = rb.sweep(changed, {"contact.air_drag": [0.0, 5.9e-5]}, duration=2, jobs=1)
+    # The same runs with the value as an axis of one value: the base's value went into each row.
+    axis = rb.sweep(scene_path("rattleback.yaml"),
+                    {"initial.spin": [-4], "contact.air_drag": [0.0, 5.9e-5]}, duration=2, jobs=1)
+    assert list(table["final_spin"]) == list(axis["final_spin"])
+    plain = rb.sweep(scene_path("rattleback.yaml"), {"contact.air_drag": [0.0]}, duration=2,
+                     jobs=1)
+    assert plain["final_spin"][0] != table["final_spin"][0]  # -5 rad/s, not -4
+
+
 def test_a_sweep_of_a_key_rolling_does_not_use_warns_as_the_command_line_notes(tmp_path):
     sweep = tmp_path / "f.yaml"
     sweep.write_text(f"base: {scene_path('rattleback.yaml')}\nvary:\n"
