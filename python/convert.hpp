@@ -118,10 +118,11 @@ class GilReleased {
 /// `cancelled()` on the calling thread (a run's samples, a sweep's pool's wait): there, at most
 /// every 20 ms, it takes the GIL and checks for signals (PyErr_CheckSignals acts on the main
 /// thread only). On Ctrl-C `cancelled()` turns true; once the work has returned (its temporary
-/// files removed) KeyboardInterrupt is raised here. No thread is made: a short call costs
-/// nothing more than the GIL's release.
-template <typename Work>
-auto interruptibleHere(Work&& work) {
+/// files removed) KeyboardInterrupt is raised here, with what the work returned handed to
+/// `keep` (a sweep's finished rows: the exception's attribute `table`). No thread is made: a
+/// short call costs nothing more than the GIL's release.
+template <typename Work, typename Keep>
+auto interruptibleHere(Work&& work, Keep&& keep) {
   std::atomic<bool> stop{false};
   bool signalled = false;
   PyObject *type = nullptr, *value = nullptr, *trace = nullptr;
@@ -149,10 +150,17 @@ auto interruptibleHere(Work&& work) {
     result.emplace(work(cancelled));
   }
   if (signalled) {
+    PyErr_NormalizeException(&type, &value, &trace);
+    if (value) keep(py::handle(value), std::move(*result));
     PyErr_Restore(type, value, trace);
     throw py::error_already_set();
   }
   return std::move(*result);
+}
+
+template <typename Work>
+auto interruptibleHere(Work&& work) {
+  return interruptibleHere(std::forward<Work>(work), [](py::handle, auto&&) {});
 }
 
 /// Runs `work(cancelled)` on a thread of its own with the GIL released, while this thread

@@ -230,12 +230,23 @@ std::shared_ptr<SweepTable> runSweepTable(scene::Sweep sweep, int jobs) {
   table->notes = tasks::sweepNotes(table->sweep, scenes);
   std::vector<std::int64_t> rows;
   for (std::int64_t r = 0; r < table->sweep.rows(); ++r) rows.push_back(r);
-  tasks::SweepRun run = interruptibleHere([&](const std::function<bool()>& cancelled) {
-    tasks::SweepOptions options;
-    options.jobs = jobs;
-    options.cancelled = cancelled;
-    return tasks::runSweep(table->sweep, scenes, rows, options);
-  });
+  // Ctrl-C keeps the rows finished by then, as the exception's `table` (the command line keeps
+  // them in its journal for --resume).
+  const auto keep = [&](py::handle interrupt, tasks::SweepRun&& stopped) {
+    auto kept = std::make_shared<SweepTable>();
+    kept->sweep = table->sweep;
+    kept->notes = table->notes;
+    kept->rows = std::move(stopped.rows);
+    (void)PyObject_SetAttrString(interrupt.ptr(), "table", py::cast(kept).ptr());
+  };
+  tasks::SweepRun run = interruptibleHere(
+      [&](const std::function<bool()>& cancelled) {
+        tasks::SweepOptions options;
+        options.jobs = jobs;
+        options.cancelled = cancelled;
+        return tasks::runSweep(table->sweep, scenes, rows, options);
+      },
+      keep);
   table->rows = std::move(run.rows);
   return table;
 }

@@ -101,7 +101,8 @@ def sweep(source: Union[str, os.PathLike, Scene, Mapping[str, Any]],
     and ``-sweep``).
 
     Raises ValueError for a sweep that cannot be used (an error in ``vary`` is named
-    ``argument vary`` and the key); KeyboardInterrupt on Ctrl-C. An axis the runs do not use
+    ``argument vary`` and the key); KeyboardInterrupt on Ctrl-C, whose ``table`` is a
+    SweepTable of the rows finished by then (the others not run). An axis the runs do not use
     (``contact.friction`` under ``rolling``: the rows along it are alike) is warned of, as
     ``rattleback sweep`` notes it (:class:`RunWarning`, code ``"axis_unused"``), and so is a
     sweep whose every run was refused (code ``"all_refused"``: ``rattleback sweep`` exits 2),
@@ -116,7 +117,7 @@ def sweep(source: Union[str, os.PathLike, Scene, Mapping[str, Any]],
             if value is not None:
                 raise TypeError(f"argument {given}: goes with vary (a sweep file sets its own"
                                 + (": duration:)" if given == "duration" else ")"))
-        table = _core.sweep(os.fspath(source), int(jobs))
+        run = lambda: _core.sweep(os.fspath(source), int(jobs))  # noqa: E731
     else:
         base = _scene(source)
         spec: dict[str, Any] = {"vary": {key: _values(v) for key, v in vary.items()}}
@@ -126,8 +127,16 @@ def sweep(source: Union[str, os.PathLike, Scene, Mapping[str, Any]],
             spec["duration"] = float(duration)
         if name is None:
             name = (Path(base._name).stem if base._file else "scene") + "-sweep"
-        table = _core.sweep_of(json.dumps(spec, default=_yaml_value_default), name, base._yaml,
-                               base._name, list(base._values), int(jobs))
+        text = json.dumps(spec, default=_yaml_value_default)
+        run = lambda: _core.sweep_of(text, name, base._yaml, base._name,  # noqa: E731
+                                     list(base._values), int(jobs))
+    try:
+        table = run()
+    except KeyboardInterrupt as interrupt:
+        # The rows finished before Ctrl-C, kept: `except KeyboardInterrupt as e: e.table`.
+        if hasattr(interrupt, "table"):
+            interrupt.table = SweepTable(interrupt.table)
+        raise
     for note in table.notes:
         warnings.warn(RunWarning(note, "axis_unused"), stacklevel=3)
     result = SweepTable(table)

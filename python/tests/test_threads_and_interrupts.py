@@ -120,6 +120,40 @@ def test_ctrl_c_stops_a_video_and_leaves_no_file(tmp_path):
     assert quickest(tmp_path, "render") < 0.2
 
 
+SWEEP_CHILD = r"""
+import sys
+import rattleback as rb
+print("started", flush=True)
+try:
+    rb.sweep(sys.argv[1], {"initial.spin": {"from": -10, "to": -1, "count": 40000}}, jobs=2)
+except KeyboardInterrupt as e:
+    t = e.table
+    print(len(t), list(t["row"]) == sorted(set(t["row"])), set(t["status"]),
+          list(t["initial.spin"][:2]), flush=True)
+    sys.exit(42)
+sys.exit(0)
+"""
+
+
+def test_ctrl_c_in_a_sweep_keeps_the_rows_finished(tmp_path):
+    child = subprocess.Popen([sys.executable, "-c", SWEEP_CHILD, scene_path("rattleback.yaml")],
+                             stdout=subprocess.PIPE, text=True, env=os.environ.copy())
+    ready, _, _ = select.select([child.stdout], [], [], 30)
+    assert ready and child.stdout.readline().strip() == "started", "the child could not start"
+    time.sleep(1.5)  # 40,000 runs take about 30 s on two cores
+    child.send_signal(signal.SIGINT)
+    try:
+        out, _ = child.communicate(timeout=30)
+    finally:
+        child.kill()
+        child.wait()
+    assert child.returncode == 42, "no KeyboardInterrupt"
+    count, ordered, statuses, first = out.strip().split(" ", 3)
+    assert 0 < int(count) < 40000
+    assert ordered == "True" and statuses == "{'ok'}"
+    assert first == "[-10.0, -9.99977499437]"  # the sweep's first rows, with their values
+
+
 def _first_reversal(scene):
     return rb.simulate(scene, duration=3.0).first_reversal
 
