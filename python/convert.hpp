@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <condition_variable>
 #include <functional>
@@ -128,12 +129,19 @@ auto interruptibleHere(Work&& work, Keep&& keep) {
   PyObject *type = nullptr, *value = nullptr, *trace = nullptr;
   const std::thread::id caller = std::this_thread::get_id();
   const bool main = onMainThread();
-  auto last = std::chrono::steady_clock::now();
+  // The coarse clock (a few ms fine, a few ns to read): asked before every sample, the fine
+  // one's clock_gettime was 8 % of a 10 kHz run's time.
+  const auto coarseMs = [] {
+    timespec now{};
+    clock_gettime(CLOCK_MONOTONIC_COARSE, &now);
+    return static_cast<std::int64_t>(now.tv_sec) * 1000 + now.tv_nsec / 1000000;
+  };
+  std::int64_t last = coarseMs();
   const std::function<bool()> cancelled = [&] {
     if (stop.load(std::memory_order_relaxed)) return true;
     if (!main || std::this_thread::get_id() != caller) return false;
-    const auto now = std::chrono::steady_clock::now();
-    if (now - last < std::chrono::milliseconds(20)) return false;
+    const std::int64_t now = coarseMs();
+    if (now - last < 20) return false;
     last = now;
     py::gil_scoped_acquire acquire;
     if (PyErr_CheckSignals() != 0) {

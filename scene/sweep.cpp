@@ -24,6 +24,11 @@ struct SweepFailure {
 };
 
 std::string flowText(const YAML::Node& node) {
+  // A quoted number stays quoted, so that its row is refused as a scene refuses it (initial.spin
+  // "-4": "must be a number, not the quoted string"), not run as the number.
+  double number = 0;
+  if (node.IsScalar() && node.Tag() == "!" && YAML::convert<double>::decode(node, number))
+    return "\"" + node.Scalar() + "\"";
   if (node.IsScalar()) return node.Scalar();
   YAML::Emitter out;
   out.SetSeqFormat(YAML::Flow);
@@ -65,7 +70,8 @@ std::vector<std::string> rangeValues(const YAML::Node& spec, const std::string& 
   const double to = number(spec["to"], where, "to");
   const double count_value = number(spec["count"], where, "count");
   if (count_value != std::floor(count_value) || count_value < 1 || count_value > 1e6)
-    throw SweepFailure{where + " count must be a whole number from 1 to 1e6"};
+    throw SweepFailure{where + " count must be a whole number from 1 to 1e6, not " +
+                       rangeValue(count_value)};
   const auto count = static_cast<int>(count_value);
   std::string scale = "linear";
   if (spec["scale"]) {

@@ -13,7 +13,7 @@ import numpy as np
 
 from . import Scene, _core, _scene, _yaml_value_default
 from ._args import checked
-from ._errors import RunWarning
+from ._errors import RunWarning, SceneError
 
 
 def _numbers_or_text(values: list) -> np.ndarray:
@@ -54,6 +54,11 @@ class SweepTable:
         return dict(self._columns)
 
     @property
+    def interrupted(self) -> bool:
+        """True for the rows finished before Ctrl-C (``KeyboardInterrupt.table``)."""
+        return bool(self._table.interrupted)
+
+    @property
     def keys(self) -> list[str]:
         """The varied keys, in the sweep file's order."""
         return list(self._table.keys)
@@ -76,7 +81,18 @@ class SweepTable:
 
     def __repr__(self) -> str:
         ok = int(np.sum(self._columns["status"] == "ok"))
-        return f"<SweepTable {self._table.file}: {len(self)} runs, {ok} ok>"
+        part = ", interrupted" if self._table.interrupted else ""
+        return f"<SweepTable {self._table.file}: {len(self)} runs, {ok} ok{part}>"
+
+
+def _value(value: Any) -> Any:
+    """A value as the table will show it: a whole float as the whole number (NumPy's linspace
+    gives -10.0, which the table wrote "-10.0" where a sweep file's -10 is "-10")."""
+    if isinstance(value, np.generic):
+        value = value.item()
+    if type(value) is float and value.is_integer() and abs(value) < 1e15:
+        return int(value)
+    return value
 
 
 def _values(values: Any) -> Any:
@@ -84,8 +100,8 @@ def _values(values: Any) -> Any:
     if isinstance(values, Mapping):
         return dict(values)
     if isinstance(values, np.ndarray):
-        return values.tolist()
-    return list(values)
+        values = values.tolist()
+    return [_value(v) for v in values]
 
 
 @checked
@@ -102,7 +118,8 @@ def sweep(source: Union[str, os.PathLike, Scene, Mapping[str, Any]],
 
     Raises ValueError for a sweep that cannot be used (an error in ``vary`` is named
     ``argument vary`` and the key); KeyboardInterrupt on Ctrl-C, whose ``table`` is a
-    SweepTable of the rows finished by then (the others not run). An axis the runs do not use
+    SweepTable of the rows finished by then (the others not run; its ``interrupted`` is True,
+    and its ``to_csv`` sidecar says so). An axis the runs do not use
     (``contact.friction`` under ``rolling``: the rows along it are alike) is warned of, as
     ``rattleback sweep`` notes it (:class:`RunWarning`, code ``"axis_unused"``), and so is a
     sweep whose every run was refused (code ``"all_refused"``: ``rattleback sweep`` exits 2),
@@ -123,7 +140,9 @@ def sweep(source: Union[str, os.PathLike, Scene, Mapping[str, Any]],
         spec: dict[str, Any] = {"vary": {key: _values(v) for key, v in vary.items()}}
         if duration is not None:
             if not (math.isfinite(float(duration)) and float(duration) > 0):
-                raise ValueError(f"argument duration: must be above 0 s, not {duration}")
+                # As simulate's: a SceneError naming the key the argument sets.
+                raise SceneError(f"argument duration: must be > 0, not {duration}",
+                                 "argument duration", None, "simulation.duration")
             spec["duration"] = float(duration)
         if name is None:
             name = (Path(base._name).stem if base._file else "scene") + "-sweep"

@@ -344,8 +344,14 @@ def test_a_sweep_made_in_python_names_argument_vary_and_the_key():
         with pytest.raises(ValueError) as caught:
             rb.sweep(base, vary, jobs=1)
         assert str(caught.value) == message
-    with pytest.raises(ValueError, match=r"^argument duration: must be above 0 s, not -1$"):
+    with pytest.raises(rb.SceneError, match=r"^argument duration: must be > 0, not -1$") as e:
         rb.sweep(base, {"initial.spin": [1]}, duration=-1)
+    assert e.value.key == "simulation.duration"  # as simulate's
+    # A quoted number refuses its row, as a scene refuses it (it ran as the number).
+    table = rb.sweep(base, {"initial.spin": [-5, "-4"]}, duration=0.1, jobs=1)
+    assert list(table["status"]) == ["ok", "refused"]
+    assert table["reason"][1] == ('argument vary: initial.spin must be a number, not the quoted '
+                                  'string "-4"')
     # A value no scene can take refuses its row, named as the argument's (a file's names its line).
     table = rb.sweep(base, {"body.mass": [-1, 0.059]}, duration=0.1, jobs=1)
     assert list(table["status"]) == ["refused", "ok"]

@@ -210,6 +210,15 @@ def test_a_sweep_made_in_python_has_the_sweep_files_rows(tmp_path):
     assert side["sweep"] == "rattleback-sweep" and side["base"] == scene_path("rattleback.yaml")
 
 
+def test_a_swept_array_of_whole_numbers_is_written_as_a_sweep_files(tmp_path):
+    # np.linspace gives -6.0, which the table wrote "-6.0" where the file's -6 is "-6".
+    table = rb.sweep(scene_path("rattleback.yaml"), {"initial.spin": np.linspace(-6, -5, 3)},
+                     duration=0.1, jobs=1)
+    table.to_csv(tmp_path / "w.csv")
+    with open(tmp_path / "w.csv", newline="") as f:
+        assert [r["initial.spin"] for r in csv.DictReader(f)] == ["-6", "-5.5", "-5"]
+
+
 def test_a_sweep_of_a_scene_with_values_starts_from_those_values():
     changed = rb.Scene.from_file(scene_path("rattleback.yaml")).with_values({"initial.spin": -4})
     table = rb.sweep(changed, {"contact.air_drag": [0.0, 5.9e-5]}, duration=2, jobs=1)

@@ -2,6 +2,7 @@
 alone; scenes go to worker processes; Ctrl-C raises KeyboardInterrupt promptly and leaves no
 file behind."""
 
+import json
 import os
 import select
 import signal
@@ -128,6 +129,7 @@ try:
     rb.sweep(sys.argv[1], {"initial.spin": {"from": -10, "to": -1, "count": 40000}}, jobs=2)
 except KeyboardInterrupt as e:
     t = e.table
+    t.to_csv(sys.argv[2])
     print(len(t), list(t["row"]) == sorted(set(t["row"])), set(t["status"]),
           list(t["initial.spin"][:2]), flush=True)
     sys.exit(42)
@@ -136,7 +138,9 @@ sys.exit(0)
 
 
 def test_ctrl_c_in_a_sweep_keeps_the_rows_finished(tmp_path):
-    child = subprocess.Popen([sys.executable, "-c", SWEEP_CHILD, scene_path("rattleback.yaml")],
+    kept = tmp_path / "kept.csv"
+    child = subprocess.Popen([sys.executable, "-c", SWEEP_CHILD, scene_path("rattleback.yaml"),
+                              str(kept)],
                              stdout=subprocess.PIPE, text=True, env=os.environ.copy())
     ready, _, _ = select.select([child.stdout], [], [], 30)
     assert ready and child.stdout.readline().strip() == "started", "the child could not start"
@@ -152,6 +156,10 @@ def test_ctrl_c_in_a_sweep_keeps_the_rows_finished(tmp_path):
     assert 0 < int(count) < 40000
     assert ordered == "True" and statuses == "{'ok'}"
     assert first == "[-10.0, -9.99977499437]"  # the sweep's first rows, with their values
+    # Written, the table says it is a part, and counts its own rows (it claimed all 40,000).
+    side = json.loads((tmp_path / "kept.csv.json").read_text())
+    assert side["rows"] == int(count) == len(kept.read_text().splitlines()) - 1
+    assert side["interrupted"] == {"rows_run": int(count), "sweep_rows": 40000}
 
 
 def _first_reversal(scene):
