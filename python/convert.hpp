@@ -6,9 +6,9 @@
 
 #include <atomic>
 #include <chrono>
-#include <ctime>
 #include <cmath>
 #include <condition_variable>
+#include <ctime>
 #include <functional>
 #include <mutex>
 #include <nlohmann/json.hpp>
