@@ -76,9 +76,11 @@ sys.exit(0)
 """
 
 
-def interrupt(tmp_path: Path, what: str) -> float:
-    child = subprocess.Popen([sys.executable, "-c", CHILD, str(tmp_path), what,
-                              scene_path("kane-levinson.yaml")],
+def ctrl_c(script: str, args: list, after: float) -> tuple[str, float]:
+    """Runs `script` in a child Python that prints "started", sends it SIGINT `after` seconds
+    later, and returns what it printed next and when the signal was sent; the child must exit
+    42 (its KeyboardInterrupt caught)."""
+    child = subprocess.Popen([sys.executable, "-c", script, *args],
                              stdout=subprocess.PIPE, text=True, env=os.environ.copy())
     # The child says it has started (or dies: then there is nothing to wait for).
     ready, _, _ = select.select([child.stdout], [], [], 30)
@@ -86,16 +88,21 @@ def interrupt(tmp_path: Path, what: str) -> float:
         child.kill()
         raise AssertionError("the child never started")
     assert child.stdout.readline().strip() == "started", "the child could not start"
-    time.sleep(1.0)  # well into the run
+    time.sleep(after)
     sent = time.monotonic()
     child.send_signal(signal.SIGINT)
     try:
-        out, _ = child.communicate(timeout=20)
+        out, _ = child.communicate(timeout=30)
     finally:
         child.kill()
         child.wait()
     assert child.returncode == 42, "no KeyboardInterrupt"
-    return float(out.strip()) - sent
+    return out.strip(), sent
+
+
+def interrupt(tmp_path: Path, what: str) -> float:
+    out, sent = ctrl_c(CHILD, [str(tmp_path), what, scene_path("kane-levinson.yaml")], 1.0)
+    return float(out) - sent
 
 
 def quickest(tmp_path: Path, what: str) -> float:
@@ -139,20 +146,9 @@ sys.exit(0)
 
 def test_ctrl_c_in_a_sweep_keeps_the_rows_finished(tmp_path):
     kept = tmp_path / "kept.csv"
-    child = subprocess.Popen([sys.executable, "-c", SWEEP_CHILD, scene_path("rattleback.yaml"),
-                              str(kept)],
-                             stdout=subprocess.PIPE, text=True, env=os.environ.copy())
-    ready, _, _ = select.select([child.stdout], [], [], 30)
-    assert ready and child.stdout.readline().strip() == "started", "the child could not start"
-    time.sleep(1.5)  # 40,000 runs take about 30 s on two cores
-    child.send_signal(signal.SIGINT)
-    try:
-        out, _ = child.communicate(timeout=30)
-    finally:
-        child.kill()
-        child.wait()
-    assert child.returncode == 42, "no KeyboardInterrupt"
-    count, ordered, statuses, first = out.strip().split(" ", 3)
+    # 40,000 runs take about 30 s on two cores: 1.5 s is well into them.
+    out, _ = ctrl_c(SWEEP_CHILD, [scene_path("rattleback.yaml"), str(kept)], 1.5)
+    count, ordered, statuses, first = out.split(" ", 3)
     assert 0 < int(count) < 40000
     assert ordered == "True" and statuses == "{'ok'}"
     assert first == "[-10.0, -9.99977499437]"  # the sweep's first rows, with their values
