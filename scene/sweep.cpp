@@ -314,6 +314,13 @@ rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, b
       if (!loaded && loaded.error().message.find("is not a known key") != std::string::npos &&
           loaded.error().message.rfind(axis.place + ":", 0) == 0)
         throw SweepFailure{loaded.error().message};
+      // A list in the base swept with single numbers refuses every row ("must be a list of
+      // two numbers, not '0.5'"; a researcher's trial): said once, with the two ways to sweep it.
+      const YAML::Node listed = key_path->index ? YAML::Node() : find(base_tree, *key_path);
+      if (!loaded && listed.IsSequence() && YAML::Load(axis.values.front()).IsScalar())
+        throw SweepFailure{where + " is a list (the base scene's is " + flowText(listed) +
+                           "): give lists as its values, e.g. [" + flowText(listed) +
+                           "], or vary one element, as " + axis.key + "[0]"};
       runs *= static_cast<double>(axis.values.size());
       if (runs > static_cast<double>(kMaxRows))
         throw SweepFailure{where + ": the axes so far make " + rangeValue(runs) +

@@ -337,6 +337,9 @@ def test_a_sweep_made_in_python_names_argument_vary_and_the_key():
         ({"initial.spin": []}, "argument vary: initial.spin has no values"),
         ({"video.fps": [30]},
          "argument vary: video.fps: a sweep only simulates; video keys do not change a run"),
+        ({"initial.tilt": [0.5, 1.0]},
+         "argument vary: initial.tilt is a list (the base scene's is [0.5, 0.5]): give lists as "
+         "its values, e.g. [[0.5, 0.5]], or vary one element, as initial.tilt[0]"),
         ({"body.dents.at[5]": [1]},
          "argument vary: body.dents.at[5]: the base scene has no list body.dents.at with an "
          "element 5"),
