@@ -240,20 +240,54 @@ void checkJobs(int jobs) {
                           std::to_string(jobs));
 }
 
-std::shared_ptr<SweepTable> runSweepTable(scene::Sweep sweep, int jobs) {
+// Whether two sweeps run the same scenes: the same base, values, axes and duration.
+bool sameSweep(const scene::Sweep& a, const scene::Sweep& b) {
+  if (a.base_text != b.base_text || a.duration != b.duration ||
+      a.base_values.size() != b.base_values.size() || a.axes.size() != b.axes.size())
+    return false;
+  for (std::size_t i = 0; i < a.base_values.size(); ++i)
+    if (a.base_values[i].key != b.base_values[i].key ||
+        a.base_values[i].yaml != b.base_values[i].yaml)
+      return false;
+  for (std::size_t i = 0; i < a.axes.size(); ++i)
+    if (a.axes[i].key != b.axes[i].key || a.axes[i].values != b.axes[i].values) return false;
+  return true;
+}
+
+// `done` and `more` as one table in the sweep's order.
+std::vector<tasks::SweepRow> together(std::vector<tasks::SweepRow> done,
+                                      std::vector<tasks::SweepRow> more) {
+  done.insert(done.end(), std::make_move_iterator(more.begin()),
+              std::make_move_iterator(more.end()));
+  std::sort(done.begin(), done.end(),
+            [](const tasks::SweepRow& x, const tasks::SweepRow& y) { return x.row < y.row; });
+  return done;
+}
+
+// Runs the sweep's rows (those not in `resume`, a table of it kept from Ctrl-C, whose rows
+// the table then holds too).
+std::shared_ptr<SweepTable> runSweepTable(scene::Sweep sweep, int jobs,
+                                          const std::shared_ptr<SweepTable>& resume) {
   auto table = std::make_shared<SweepTable>();
   table->sweep = std::move(sweep);
+  if (resume && !sameSweep(resume->sweep, table->sweep))
+    throw py::value_error("argument resume: a table of another sweep (" + resume->sweep.file +
+                          "): its base, values, axes or duration differ from these");
   auto scenes = take(scene::SweepScenes::open(table->sweep));
   table->notes = tasks::sweepNotes(table->sweep, scenes);
+  std::vector<tasks::SweepRow> done = resume ? resume->rows : std::vector<tasks::SweepRow>{};
+  std::vector<bool> ran(static_cast<std::size_t>(table->sweep.rows()), false);
+  for (const tasks::SweepRow& r : done) ran[static_cast<std::size_t>(r.row)] = true;
   std::vector<std::int64_t> rows;
-  for (std::int64_t r = 0; r < table->sweep.rows(); ++r) rows.push_back(r);
+  for (std::int64_t r = 0; r < table->sweep.rows(); ++r)
+    if (!ran[static_cast<std::size_t>(r)]) rows.push_back(r);
   // Ctrl-C keeps the rows finished by then, as the exception's `table` (the command line keeps
   // them in its journal for --resume).
   const auto keep = [&](py::handle interrupt, tasks::SweepRun&& stopped) {
     auto kept = std::make_shared<SweepTable>();
     kept->sweep = table->sweep;
     kept->notes = table->notes;
-    kept->rows = std::move(stopped.rows);
+    kept->rows = together(done, std::move(stopped.rows));
     kept->interrupted = true;
     (void)PyObject_SetAttrString(interrupt.ptr(), "table", py::cast(kept).ptr());
   };
@@ -265,13 +299,14 @@ std::shared_ptr<SweepTable> runSweepTable(scene::Sweep sweep, int jobs) {
         return tasks::runSweep(table->sweep, scenes, rows, options);
       },
       keep);
-  table->rows = std::move(run.rows);
+  table->rows = together(std::move(done), std::move(run.rows));
   return table;
 }
 
-std::shared_ptr<SweepTable> sweep(const std::string& path, int jobs) {
+std::shared_ptr<SweepTable> sweep(const std::string& path, int jobs,
+                                  const std::shared_ptr<SweepTable>& resume) {
   checkJobs(jobs);
-  return runSweepTable(take(scene::loadSweep(tasks::findShipped(path))), jobs);
+  return runSweepTable(take(scene::loadSweep(tasks::findShipped(path))), jobs, resume);
 }
 
 // A sweep made in Python: `vary` (and `duration`) as a sweep file's YAML, over a scene's text
@@ -279,13 +314,13 @@ std::shared_ptr<SweepTable> sweep(const std::string& path, int jobs) {
 std::shared_ptr<SweepTable> sweepOf(const std::string& vary, const std::string& name,
                                     const std::string& base_yaml, const std::string& base_name,
                                     const std::vector<std::pair<std::string, std::string>>& values,
-                                    int jobs) {
+                                    int jobs, const std::shared_ptr<SweepTable>& resume) {
   checkJobs(jobs);
   scene::SweepBase base{base_yaml, base_name, {}};
   for (const auto& [key, yaml] : values) base.values.push_back({key, yaml});
   scene::Sweep made = take(scene::loadSweepText(vary, "argument vary", base));
   made.file = name;
-  return runSweepTable(std::move(made), jobs);
+  return runSweepTable(std::move(made), jobs, resume);
 }
 
 // An optional number as a float, NaN when absent.
@@ -413,9 +448,9 @@ PYBIND11_MODULE(_core, m) {
         for (const auto& axis : t.sweep.axes) keys.push_back(axis.key);
         return keys;
       });
-  m.def("sweep", &sweep, py::arg("path"), py::arg("jobs"));
+  m.def("sweep", &sweep, py::arg("path"), py::arg("jobs"), py::arg("resume") = nullptr);
   m.def("sweep_of", &sweepOf, py::arg("vary"), py::arg("name"), py::arg("base_yaml"),
-        py::arg("base_name"), py::arg("values"), py::arg("jobs"));
+        py::arg("base_name"), py::arg("values"), py::arg("jobs"), py::arg("resume") = nullptr);
   m.def(
       "player_script",
       [](const LoadedScene& loaded, const Run& run, const std::string& id) {

@@ -117,6 +117,8 @@ _TAKES: dict[str, tuple[Callable[[Any], bool], str]] = {
     "values": (lambda v: isinstance(v, Mapping),
                "a dict of dotted keys and values, e.g. {'initial.spin': -5}"),
     "source": (_scene, "a sweep file's path, or with vary a Scene, a scene's path or a dict"),
+    "resume": (lambda v: type(v).__name__ == "SweepTable" and hasattr(v, "interrupted"),
+               "a SweepTable (a KeyboardInterrupt's table)"),
     "vary": (lambda v: isinstance(v, Mapping),
              "a dict of dotted keys and their values, e.g. {'initial.spin': [-5, 5]}"),
 }

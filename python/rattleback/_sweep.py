@@ -107,14 +107,16 @@ def _values(values: Any) -> Any:
 @checked
 def sweep(source: Union[str, os.PathLike, Scene, Mapping[str, Any]],
           vary: Optional[Mapping[str, Any]] = None, *, duration: Optional[float] = None,
-          jobs: int = 0, name: Optional[str] = None) -> SweepTable:
+          jobs: int = 0, name: Optional[str] = None,
+          resume: Optional[SweepTable] = None) -> SweepTable:
     """Runs every scene of a sweep on ``jobs`` threads (0: all cores), as ``rattleback sweep``
     does: the sweep file at ``source`` (docs/scenes.md "Sweep files": a base scene and axes of
     values), or, with ``vary``, the scene ``source`` (a Scene, a scene's path or a dict) with
     ``vary`` as a sweep file's ``vary:`` (each dotted key's values: a list or array, or a range
     ``{"from": A, "to": B, "count": N}`` with ``"scale": "log"`` if wanted), ``duration`` as its
     ``duration:`` (s, every run's), and ``name`` the table's (default: the scene file's name
-    and ``-sweep``).
+    and ``-sweep``). ``resume``: a table of the same sweep kept from Ctrl-C (its rows are not
+    run again, and the table returned holds them too), as ``rattleback sweep --resume`` does.
 
     Raises ValueError for a sweep that cannot be used (an error in ``vary`` is named
     ``argument vary`` and the key); KeyboardInterrupt on Ctrl-C, whose ``table`` is a
@@ -125,6 +127,7 @@ def sweep(source: Union[str, os.PathLike, Scene, Mapping[str, Any]],
     sweep whose every run was refused (code ``"all_refused"``: ``rattleback sweep`` exits 2),
     with the first reason.
     """
+    kept = resume._table if resume is not None else None
     if vary is None:
         if not isinstance(source, (str, os.PathLike)):
             raise TypeError("argument vary: a scene is swept along the values given as vary, "
@@ -134,7 +137,7 @@ def sweep(source: Union[str, os.PathLike, Scene, Mapping[str, Any]],
             if value is not None:
                 raise TypeError(f"argument {given}: goes with vary (a sweep file sets its own"
                                 + (": duration:)" if given == "duration" else ")"))
-        run = lambda: _core.sweep(os.fspath(source), int(jobs))  # noqa: E731
+        run = lambda: _core.sweep(os.fspath(source), int(jobs), kept)  # noqa: E731
     else:
         base = _scene(source)
         spec: dict[str, Any] = {"vary": {key: _values(v) for key, v in vary.items()}}
@@ -148,7 +151,7 @@ def sweep(source: Union[str, os.PathLike, Scene, Mapping[str, Any]],
             name = (Path(base._name).stem if base._file else "scene") + "-sweep"
         text = json.dumps(spec, default=_yaml_value_default)
         run = lambda: _core.sweep_of(text, name, base._yaml, base._name,  # noqa: E731
-                                     list(base._values), int(jobs))
+                                     list(base._values), int(jobs), kept)
     try:
         table = run()
     except KeyboardInterrupt as interrupt:

@@ -158,6 +158,33 @@ def test_ctrl_c_in_a_sweep_keeps_the_rows_finished(tmp_path):
     assert side["interrupted"] == {"rows_run": int(count), "sweep_rows": 40000}
 
 
+RESUME_CHILD = r"""
+import sys
+import numpy as np
+import rattleback as rb
+vary = {"initial.spin": {"from": -10, "to": -1, "count": 2000}}
+print("started", flush=True)
+try:
+    rb.sweep(sys.argv[1], vary, jobs=2)
+except KeyboardInterrupt as e:
+    part = e.table
+whole = rb.sweep(sys.argv[1], vary, jobs=2, resume=part)
+fresh = rb.sweep(sys.argv[1], vary, jobs=2)
+same = all(np.array_equal(whole[c], fresh[c], equal_nan=whole[c].dtype.kind == "f")
+           for c in fresh.columns if c != "wall_s")
+print(len(part), len(whole), whole.interrupted, same, flush=True)
+sys.exit(42)
+"""
+
+
+def test_a_sweep_resumed_after_ctrl_c_is_the_whole_sweep():
+    # 2,000 runs of 8 s take over a second on two cores: 0.3 s is well into them.
+    out, _ = ctrl_c(RESUME_CHILD, [scene_path("rattleback.yaml")], 0.3)
+    part, whole, interrupted, same = out.split()
+    assert 0 < int(part) < 2000 and int(whole) == 2000
+    assert interrupted == "False" and same == "True"
+
+
 def _first_reversal(scene):
     return rb.simulate(scene, duration=3.0).first_reversal
 
