@@ -104,10 +104,9 @@ class TelemetryWriter {
   // was half of a 10 kHz run).
   static constexpr std::size_t kChunkRows = 4096;
   static constexpr std::size_t kChunksInFlight = 4;
-  // A chunk as text, and the buffers it was made with, kept for the chunks after it: fresh
-  // megabytes for each chunk were mapped and unmapped by the allocator, whose page faults and
-  // unmapping kept the formatting threads from running side by side (docs/speed.md "A shortest
-  // formatter that is kept (2026-11-27, tenth session; issue 27)").
+  // A chunk as text, and the buffers it was made with, kept for the chunks after it (a chunk's
+  // 3 MB had been allocated and zero-filled afresh each time: 3 % of to_csv's time; docs/speed.md
+  // "A shortest formatter that is kept (2026-11-27, tenth session; issue 27)").
   struct Formatted {
     std::unique_ptr<char[]> text;
     std::size_t size = 0;
