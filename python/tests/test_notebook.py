@@ -18,7 +18,8 @@ def test_the_tour_runs_and_shows_its_plot_and_still(tmp_path):
     outputs = [o for cell in nb.cells if cell.cell_type == "code" for o in cell.outputs]
     assert not [o for o in outputs if o.output_type == "error"]
     pngs = [o for o in outputs if "image/png" in o.get("data", {})]
-    assert len(pngs) >= 2  # the n(t) plot and the still
+    assert len(pngs) >= 3  # the n(t) plot, the sweep's and the still
     text = "".join(o.get("text", "") for o in outputs if o.output_type == "stream")
     assert "first reversal at 2.36" in text
+    assert "<SweepTable rattleback-sweep: 45 runs, 45 ok>" in text
     assert (tmp_path / "out" / "tour.mp4").stat().st_size > 10_000
