@@ -329,8 +329,8 @@ int simulateCommand(const SimulateArgs& args) {
       // Ctrl-C while the figures are drawn: the table stands, the figures not drawn go unsaid
       // as a failure (it exited 2 with "gnuplot failed: "; a teacher's trial).
       if (interruptSignal() != 0) {
-        if (!args.quiet)
-          std::cerr << "interrupted while drawing the figures; " << csv << " is written\n";
+        // Said with -q too, as every command's interruption is (it said nothing).
+        std::cerr << "interrupted while drawing the figures; " << csv << " is written\n";
         return interruptedStatus();
       }
       return fail(e);

@@ -292,6 +292,13 @@ void printSummary(const SweepArgs& args, const std::optional<tasks::Shard>& shar
               plan.todo.empty() ? 0.0 : static_cast<double>(plan.todo.size()) / run.wall_s);
   std::printf("table           %s\n", output.c_str());
   if (!args.plot.empty()) std::printf("plot            %s\n", args.plot.c_str());
+  // Why, where some were refused: a refused cell of the heatmap looks like "no reversal".
+  const auto first = std::find_if(run.rows.begin(), run.rows.end(), [](const auto& row) {
+    return row.status == tasks::RowStatus::Refused;
+  });
+  if (first != run.rows.end() && counts["refused"] < static_cast<int>(plan.done.size()))
+    std::printf("refused         row %lld: %s\n", static_cast<long long>(first->row),
+                first->reason.c_str());
 }
 
 // The table, its sidecar and its heatmap, once every row is done.

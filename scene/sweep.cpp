@@ -24,11 +24,6 @@ struct SweepFailure {
 };
 
 std::string flowText(const YAML::Node& node) {
-  // A quoted number stays quoted, so that its row is refused as a scene refuses it (initial.spin
-  // "-4": "must be a number, not the quoted string"), not run as the number.
-  double number = 0;
-  if (node.IsScalar() && node.Tag() == "!" && YAML::convert<double>::decode(node, number))
-    return "\"" + node.Scalar() + "\"";
   if (node.IsScalar()) return node.Scalar();
   YAML::Emitter out;
   out.SetSeqFormat(YAML::Flow);
@@ -52,6 +47,9 @@ double number(const YAML::Node& node, const std::string& where, const std::strin
     throw SweepFailure{where + " " + what +
                        " is required: a range is {from: A, to: B, count: N} (count: how many "
                        "values, ends included)"};
+  if (node.IsScalar() && node.Tag() == "!" && YAML::convert<double>::decode(node, v))
+    throw SweepFailure{where + " " + what + " must be a number, not the quoted string \"" +
+                       node.Scalar() + "\""};
   if (!node.IsScalar() || node.Tag() == "!" || !YAML::convert<double>::decode(node, v) ||
       !std::isfinite(v))
     throw SweepFailure{where + " " + what + " must be a number"};
@@ -251,10 +249,16 @@ rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, b
       if (base.is_relative()) base = fs::path(path).parent_path() / base;
       sweep.base = base.lexically_normal().string();
       auto base_text = readSceneFile(sweep.base);
-      if (!base_text) throw SweepFailure{at(base_key) + ": base: " + base_text.error().text()};
+      // Named as typed too, where the folder's path changed it ("../top.yaml" is top.yaml here).
+      const std::string base_named = sweep.base == sweep.base_as_written
+                                         ? std::string("base: ")
+                                         : "base " + sweep.base_as_written + ": ";
+      if (!base_text)
+        throw SweepFailure{at(base_key) + ": " + base_named + base_text.error().text()};
       sweep.base_text = base_text.value();
       auto loaded_base = loadString(sweep.base_text, sweep.base);
-      if (!loaded_base) throw SweepFailure{at(base_key) + ": base: " + loaded_base.error().text()};
+      if (!loaded_base)
+        throw SweepFailure{at(base_key) + ": " + base_named + loaded_base.error().text()};
       sweep.length_unit = loaded_base->spec.units.length;
     }
     if (has_duration) {
@@ -292,11 +296,22 @@ rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, b
       const YAML::Node spec = entry.second;
       if (spec.IsSequence()) {
         if (spec.size() == 0) throw SweepFailure{where + " has no values"};
-        for (const auto& value : spec) axis.values.push_back(flowText(value));
+        for (const auto& value : spec) {
+          // A quoted number is always a slip (a scene refuses it, and a refused row showed as
+          // "no reversal" on the heatmap; a teacher's trial): said before anything runs.
+          double number = 0;
+          if (value.IsScalar() && value.Tag() == "!" &&
+              YAML::convert<double>::decode(value, number))
+            throw SweepFailure{where + " has the quoted string \"" + value.Scalar() +
+                               "\": write the number without quotes (" + value.Scalar() + ")"};
+          axis.values.push_back(flowText(value));
+        }
       } else if (spec.IsMap()) {
         axis.values = rangeValues(spec, where);
       } else {
-        throw SweepFailure{where + " must be a list of values or a range {from, to, count}"};
+        throw SweepFailure{where +
+                           " must be a list of values or a range {from, to, count}, e.g. [" +
+                           (spec.IsScalar() ? spec.Scalar() : std::string("-5, 5")) + "]"};
       }
       // An element of a list needs the list in the base scene.
       if (key_path->index) {

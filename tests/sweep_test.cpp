@@ -225,8 +225,16 @@ TEST(Sweep, ErrorsInTheSweepFileNameFileLineAndKey) {
       {"base: BASE\nvary:\n  initial.spin: {from: 1, to: 2, count: 3, scale: cubic}\n",
        "sweep.yaml:3: initial.spin scale must be linear or log, not 'cubic'"},
       {"base: BASE\nvary:\n  initial.spin: 5\n",
-       "sweep.yaml:3: initial.spin must be a list of values or a range {from, to, count}"},
-      {"base: nowhere.yaml\nvary:\n  initial.spin: [1]\n", "sweep.yaml:1: base: "},
+       "sweep.yaml:3: initial.spin must be a list of values or a range {from, to, count}, e.g. "
+       "[5]"},
+      // The base as typed, and where it was looked for from the sweep file's folder.
+      {"base: nowhere.yaml\nvary:\n  initial.spin: [1]\n", "sweep.yaml:1: base nowhere.yaml: /"},
+      // A quoted number is a slip: said before anything runs (its row was refused, exit 0).
+      {"base: BASE\nvary:\n  initial.spin: [\"-4\", -2]\n",
+       "sweep.yaml:3: initial.spin has the quoted string \"-4\": write the number without quotes "
+       "(-4)"},
+      {"base: BASE\nvary:\n  initial.spin: {from: \"-4\", to: 2, count: 3}\n",
+       "sweep.yaml:3: initial.spin from must be a number, not the quoted string \"-4\""},
       {"base: BASE\nvary:\n  initial.spin: [1]\nduraton: 3\n",
        "sweep.yaml:4: duraton is not a key of a sweep"},
       {"base: BASE\nvary:\n  body.dents.at[2]: [1]\n",
@@ -318,6 +326,20 @@ TEST(Sweep, ASweepWhoseEveryRunIsRefusedExitsTwo) {
       << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_EQ(readCsv(slurp(dir / "t.csv")).size(), 3u);
+}
+
+// Where some runs are refused, the summary says why (the first), not only how many: a refused
+// cell of the heatmap looks like "no reversal" (a teacher's trial).
+TEST(Sweep, TheSummaryNamesTheFirstRefusal) {
+  const fs::path dir = scratch();
+  const fs::path sweep = writeSweep(
+      dir, "base: " + kBase + "\nvary:\n  contact.air_drag: [0.0, -1.0]\nduration: 0.1\n");
+  const Outcome r = rattleback(dir, "sweep " + sweep.string() + " -o " + (dir / "t.csv").string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("2 runs, 1 ok, 1 refused"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("refused         row 1: " + sweep.string() + ":3: contact.air_drag must be"),
+            std::string::npos)
+      << r.out;
 }
 
 // A bad value in the base scene (not varied) refuses the rows naming the base's own line: the

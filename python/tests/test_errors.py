@@ -350,11 +350,12 @@ def test_a_sweep_made_in_python_names_argument_vary_and_the_key():
     with pytest.raises(rb.SceneError, match=r"^argument duration: must be > 0, not -1$") as e:
         rb.sweep(base, {"initial.spin": [1]}, duration=-1)
     assert e.value.key == "simulation.duration"  # as simulate's
-    # A quoted number refuses its row, as a scene refuses it (it ran as the number).
-    table = rb.sweep(base, {"initial.spin": [-5, "-4"]}, duration=0.1, jobs=1)
-    assert list(table["status"]) == ["ok", "refused"]
-    assert table["reason"][1] == ('argument vary: initial.spin must be a number, not the quoted '
-                                  'string "-4"')
+    # A quoted number is refused before anything runs, as a scene refuses it (it ran as the
+    # number; then its row was refused, which a heatmap shows as "no reversal").
+    with pytest.raises(ValueError) as caught:
+        rb.sweep(base, {"initial.spin": [-5, "-4"]}, duration=0.1, jobs=1)
+    assert str(caught.value) == ('argument vary: initial.spin has the quoted string "-4": write '
+                                 'the number without quotes (-4)')
     # A value no scene can take refuses its row, named as the argument's (a file's names its line).
     table = rb.sweep(base, {"body.mass": [-1, 0.059]}, duration=0.1, jobs=1)
     assert list(table["status"]) == ["refused", "ok"]
