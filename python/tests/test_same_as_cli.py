@@ -170,10 +170,16 @@ def test_render_writes_the_videos_the_command_line_names(tmp_path, default_scene
     assert spun == {-5.0, 5.0}
 
 
+def default_sweep(path, axes, duration):
+    """A sweep file at `path` of the default scene along `axes` (its vary: lines)."""
+    path.write_text(f"base: {scene_path('rattleback.yaml')}\nvary:\n"
+                    + "".join(f"  {axis}\n" for axis in axes) + f"duration: {duration}\n")
+    return path
+
+
 def test_a_sweep_has_the_command_lines_rows(tmp_path):
-    sweep = tmp_path / "s.yaml"
-    sweep.write_text(f"base: {scene_path('rattleback.yaml')}\nvary:\n"
-                     "  initial.spin: [-5, 5]\n  contact.air_drag: [0.0, 5.9e-5]\nduration: 3\n")
+    sweep = default_sweep(tmp_path / "s.yaml",
+                          ["initial.spin: [-5, 5]", "contact.air_drag: [0.0, 5.9e-5]"], 3)
     table = rb.sweep(sweep, jobs=2)
     table.to_csv(tmp_path / "py.csv")
     cli("sweep", str(sweep), "-q", "-o", str(tmp_path / "cli.csv"))
@@ -188,10 +194,8 @@ def test_a_sweep_has_the_command_lines_rows(tmp_path):
 
 
 def test_a_sweep_made_in_python_has_the_sweep_files_rows(tmp_path):
-    sweep = tmp_path / "s.yaml"
-    sweep.write_text(f"base: {scene_path('rattleback.yaml')}\nvary:\n"
-                     "  initial.spin: {from: -6, to: -2, count: 3}\n"
-                     "  contact.air_drag: [0.0, 5.9e-5]\nduration: 3\n")
+    sweep = default_sweep(tmp_path / "s.yaml", ["initial.spin: {from: -6, to: -2, count: 3}",
+                                                "contact.air_drag: [0.0, 5.9e-5]"], 3)
     cli("sweep", str(sweep), "-q", "-o", str(tmp_path / "cli.csv"))
     table = rb.sweep(scene_path("rattleback.yaml"),
                      {"initial.spin": {"from": -6, "to": -2, "count": 3},
@@ -232,9 +236,7 @@ def test_a_sweep_of_a_scene_with_values_starts_from_those_values():
 
 
 def test_a_sweep_of_a_key_rolling_does_not_use_warns_as_the_command_line_notes(tmp_path):
-    sweep = tmp_path / "f.yaml"
-    sweep.write_text(f"base: {scene_path('rattleback.yaml')}\nvary:\n"
-                     "  contact.friction: [0.1, 0.5]\nduration: 0.2\n")
+    sweep = default_sweep(tmp_path / "f.yaml", ["contact.friction: [0.1, 0.5]"], 0.2)
     with pytest.warns(rb.RunWarning, match="contact.friction does not change a rolling run") as w:
         table = rb.sweep(sweep, jobs=1)
     assert w[0].message.code == "axis_unused"
@@ -259,9 +261,7 @@ simulation: {tolerance: 1.0e-8, duration: 8.0}
 
 
 def test_a_sweep_whose_every_run_is_refused_warns_as_the_command_line_exits_two(tmp_path):
-    sweep = tmp_path / "r.yaml"
-    sweep.write_text(f"base: {scene_path('rattleback.yaml')}\nvary:\n"
-                     "  contact.air_drag: [-1.0, -2.0]\nduration: 0.1\n")
+    sweep = default_sweep(tmp_path / "r.yaml", ["contact.air_drag: [-1.0, -2.0]"], 0.1)
     with pytest.warns(rb.RunWarning, match="every run was refused; the first: ") as caught:
         table = rb.sweep(sweep, jobs=1)
     assert caught[-1].message.code == "all_refused"
@@ -380,9 +380,7 @@ def test_a_runs_arrays_are_read_only(tmp_path, default_scene):
 def test_a_sweep_tables_arrays_are_read_only(tmp_path):
     """As a run's: `s = table["final_spin"]; s *= 2` changed the table's columns and
     to_pandas() but not what to_csv wrote. A copy is the caller's to change."""
-    sweep = tmp_path / "s.yaml"
-    sweep.write_text(f"base: {scene_path('rattleback.yaml')}\nvary:\n"
-                     "  initial.spin: [-5, 5]\nduration: 0.2\n")
+    sweep = default_sweep(tmp_path / "s.yaml", ["initial.spin: [-5, 5]"], 0.2)
     table = rb.sweep(sweep, jobs=1)
     first = table["initial.spin"][0]
     for name, column in table.columns.items():
