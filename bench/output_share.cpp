@@ -5,10 +5,13 @@
 //             formatted on other threads while the run goes on), to a new file
 //   kept      the samples kept (Python's simulate), then written at once (Python's to_csv), to a
 //             new file and over the file just written
+//   numbers   the CSV's numbers alone, one at a time into one buffer, by std::to_chars and by
+//             our writeShortest (tasks/shortest.cpp): nanoseconds a number, best of the rounds
 // Prints medians and the shares of writing; asserts nothing. Never part of the test run.
 //
 // Usage: rattleback_output_bench [ROUNDS] [FOLDER]
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -18,6 +21,7 @@
 #include <vector>
 
 #include "tasks/scene_args.hpp"
+#include "tasks/shortest.hpp"
 #include "tasks/simulate.hpp"
 
 namespace {
@@ -58,6 +62,7 @@ int main(int argc, char** argv) {
 
   std::vector<double> alone, going, kept, written, over;
   std::int64_t rows = 0;
+  std::vector<sim::Telemetry> samples;
   for (int round = 0; round < rounds; ++round) {
     alone.push_back(seconds([&] {
       tasks::SimulateOptions options;
@@ -74,7 +79,7 @@ int main(int argc, char** argv) {
       const tasks::SimulateResult run = tasks::simulate(model, options);
       if (!writer->commit(scene, model, kRate, run.summary)) std::abort();
     }));
-    std::vector<sim::Telemetry> samples;
+    samples = {};  // as Python's simulate starts, with no room made
     tasks::SimulateResult run;
     kept.push_back(seconds([&] {
       tasks::SimulateOptions options;
@@ -102,6 +107,38 @@ int main(int argc, char** argv) {
               100 * w / (k + w));
   std::printf("  then written over it           %6.1f ms: %.0f %% of the whole\n", v * 1e3,
               100 * v / (k + v));
+
+  // The numbers the CSV has (its 20 columns of doubles), formatted alone.
+  std::vector<double> numbers;
+  for (const sim::Telemetry& s : samples) {
+    const Eigen::Quaterniond q = tasks::attitude(s);
+    for (double x : {s.t, s.spin, s.energy, s.kinetic, s.potential, s.elastic, s.tilt_deg,
+                     s.x_world.x(), s.x_world.y(), s.x_world.z(), s.w_world.x(), s.w_world.y(),
+                     s.w_world.z(), s.L_world.z(), s.normal_force, q.w(), q.x(), q.y(), q.z()})
+      numbers.push_back(x);
+  }
+  std::vector<char> text(numbers.size() * 33);
+  std::size_t theirs = 0, ours = 0;
+  std::vector<double> std_ns, our_ns;
+  for (int round = 0; round < std::max(rounds, 5); ++round) {
+    std_ns.push_back(seconds([&] {
+      char* at = text.data();
+      for (double x : numbers) at = std::to_chars(at, at + 32, x, std::chars_format::general).ptr;
+      theirs = static_cast<std::size_t>(at - text.data());
+    }));
+    our_ns.push_back(seconds([&] {
+      char* at = text.data();
+      for (double x : numbers) at = tasks::writeShortest(at, x);
+      ours = static_cast<std::size_t>(at - text.data());
+    }));
+  }
+  if (theirs != ours) std::abort();  // the same text, so the same length
+  const double best_std = *std::min_element(std_ns.begin(), std_ns.end()) / numbers.size() * 1e9;
+  const double best_ours = *std::min_element(our_ns.begin(), our_ns.end()) / numbers.size() * 1e9;
+  std::printf(
+      "  its %zu numbers alone, best of %zu: std::to_chars %.1f ns a number, ours %.1f ns "
+      "(%.2fx)\n",
+      numbers.size(), std_ns.size(), best_std, best_ours, best_std / best_ours);
   fresh();
   return 0;
 }

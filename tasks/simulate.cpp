@@ -3,9 +3,13 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <condition_variable>
 #include <cstdio>
+#include <deque>
 #include <filesystem>
+#include <mutex>
 #include <ostream>
+#include <thread>
 
 #include "tasks/output.hpp"
 #include "tasks/run_json.hpp"
@@ -180,6 +184,144 @@ nlohmann::json telemetrySidecar(const RunScene& scene, const sim::Model& model, 
   return j;
 }
 
+// The chunks of a CSV on their way to the file. Each chunk is formatted by whichever thread
+// takes it first (the pipeline's workers; the caller's thread when it waits for them), and the
+// front chunk, once formatted, is written by whichever is free, so that the file is written in
+// order while later chunks are still being formatted. The caller's thread hands chunks over and
+// goes on with its run: on two cores the run keeps one and formatting and writing the other, and
+// both share the rest once the run is over (docs/speed.md "Writing beside the run (2026-11-27,
+// eleventh session; issue 27)").
+class TelemetryWriter::Pipeline {
+ public:
+  Pipeline(AtomicOutput csv, unsigned workers) : csv_(std::move(csv)) {
+    for (unsigned i = 0; i < workers; ++i) workers_.emplace_back([this] { work(); });
+  }
+  ~Pipeline() {
+    {
+      std::lock_guard lock(mutex_);
+      leaving_ = true;  // an abandoned file: what is left unformatted stays so
+    }
+    changed_.notify_all();
+    for (std::thread& worker : workers_) worker.join();
+  }
+
+  /// Queues `rows` (the writer's own, kept in `own`, or the caller's, which must outlive their
+  /// writing), and then helps until at most `inFlight` chunks are unwritten.
+  void push(std::vector<sim::Telemetry> own, std::span<const sim::Telemetry> rows) {
+    std::unique_lock lock(mutex_);
+    Chunk& chunk = chunks_.emplace_back();
+    chunk.own = std::move(own);
+    chunk.rows = chunk.own.empty() ? rows : std::span<const sim::Telemetry>(chunk.own);
+    if (spareText_.empty()) {
+      chunk.text.reset(new char[kChunkRows * kRowChars]);
+    } else {
+      chunk.text = std::move(spareText_.back());
+      spareText_.pop_back();
+    }
+    changed_.notify_one();
+    helpUntil(lock, inFlight());
+  }
+
+  /// Helps until every chunk is written; then the file has all the rows queued.
+  void drain() {
+    std::unique_lock lock(mutex_);
+    helpUntil(lock, 0);
+  }
+
+  /// A buffer for the writer's next chunk of rows (one a written chunk had).
+  std::vector<sim::Telemetry> spareRows() {
+    std::lock_guard lock(mutex_);
+    if (spareRows_.empty()) return {};
+    std::vector<sim::Telemetry> rows = std::move(spareRows_.back());
+    spareRows_.pop_back();
+    return rows;
+  }
+
+  /// Once drained: puts the file in place (the error of a failed write, as its writer saw it).
+  rb::Status commit() {
+    if (writeErrno_ != 0) errno = writeErrno_;
+    return csv_.commit();
+  }
+  std::ostream& stream() { return csv_.stream(); }
+
+ private:
+  struct Chunk {
+    std::vector<sim::Telemetry> own;
+    std::span<const sim::Telemetry> rows;
+    std::unique_ptr<char[]> text;
+    std::size_t size = 0;
+    enum class State { queued, formatting, formatted } state = State::queued;
+  };
+
+  // Chunks unwritten before the caller's thread stops its own work to help: enough that the
+  // workers always have one to take, few enough that memory stays bounded (a chunk holds 4096
+  // samples, about 1 MB, and its text, about 2 MB).
+  std::size_t inFlight() const { return 2 * workers_.size() + 2; }
+
+  // One piece of work, if there is one: the front chunk written, or a queued chunk formatted.
+  // Called and returns with `lock` held; works with it released.
+  bool step(std::unique_lock<std::mutex>& lock) {
+    if (!writing_ && !chunks_.empty() && chunks_.front().state == Chunk::State::formatted) {
+      writing_ = true;
+      Chunk& chunk = chunks_.front();  // (a deque's elements stay put as others come and go)
+      lock.unlock();
+      std::ostream& out = csv_.stream();
+      out.write(chunk.text.get(), static_cast<std::streamsize>(chunk.size));
+      const int failed = out ? 0 : errno;
+      lock.lock();
+      if (failed != 0 && writeErrno_ == 0) writeErrno_ = failed;
+      spareText_.push_back(std::move(chunk.text));
+      if (chunk.own.capacity() > 0) {
+        chunk.own.clear();
+        spareRows_.push_back(std::move(chunk.own));
+      }
+      chunks_.pop_front();
+      writing_ = false;
+      changed_.notify_all();
+      return true;
+    }
+    for (Chunk& chunk : chunks_) {
+      if (chunk.state != Chunk::State::queued) continue;
+      chunk.state = Chunk::State::formatting;
+      lock.unlock();
+      chunk.size = formatRows(chunk.rows, chunk.text.get());
+      lock.lock();
+      chunk.state = Chunk::State::formatted;
+      changed_.notify_all();
+      return true;
+    }
+    return false;
+  }
+
+  void helpUntil(std::unique_lock<std::mutex>& lock, std::size_t unwritten) {
+    while (chunks_.size() > unwritten)
+      if (!step(lock)) changed_.wait(lock);
+  }
+
+  void work() {
+    std::unique_lock lock(mutex_);
+    while (!leaving_)
+      if (!step(lock)) changed_.wait(lock);
+  }
+
+  AtomicOutput csv_;
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<Chunk> chunks_;  // in the file's order: the front is written next
+  bool writing_ = false;
+  bool leaving_ = false;
+  int writeErrno_ = 0;
+  std::vector<std::unique_ptr<char[]>> spareText_;
+  std::vector<std::vector<sim::Telemetry>> spareRows_;
+  std::vector<std::thread> workers_;  // last: they start once the rest is made
+};
+
+TelemetryWriter::TelemetryWriter(std::unique_ptr<Pipeline> pipeline,
+                                 std::optional<AtomicOutput> meta)
+    : pipeline_(std::move(pipeline)), meta_(std::move(meta)) {}
+TelemetryWriter::TelemetryWriter(TelemetryWriter&&) noexcept = default;
+TelemetryWriter::~TelemetryWriter() = default;
+
 rb::Result<TelemetryWriter> TelemetryWriter::open(const std::string& path) {
   if (auto made = makeParentFolder(path); !made) return made.error();
   auto csv = AtomicOutput::open(path);
@@ -191,76 +333,47 @@ rb::Result<TelemetryWriter> TelemetryWriter::open(const std::string& path) {
     meta.emplace(std::move(opened).value());
   }
   csv->stream() << telemetryHeader();
-  return TelemetryWriter(std::move(csv).value(), std::move(meta));
+  // All cores but the run's (one at least; more than a few chunks at once gain nothing).
+  const unsigned cores = std::max(2u, std::thread::hardware_concurrency());
+  auto pipeline = std::make_unique<Pipeline>(std::move(csv).value(), std::min(cores - 1, 7u));
+  return TelemetryWriter(std::move(pipeline), std::move(meta));
 }
 
 void TelemetryWriter::row(const sim::Telemetry& sample) {
+  if (pending_.capacity() == 0) {
+    pending_ = pipeline_->spareRows();
+    pending_.reserve(kChunkRows);
+  }
   pending_.push_back(sample);
   ++rows_;
   if (pending_.size() >= kChunkRows) handOff();
 }
 
-std::unique_ptr<char[]> TelemetryWriter::takeText() {
-  if (spareText_.empty()) return std::unique_ptr<char[]>(new char[kChunkRows * kRowChars]);
-  std::unique_ptr<char[]> text = std::move(spareText_.back());
-  spareText_.pop_back();
-  return text;
-}
-
 void TelemetryWriter::handOff() {
   if (pending_.empty()) return;
-  formatting_.push_back(
-      std::async(std::launch::async, [rows = std::move(pending_), text = takeText()]() mutable {
-        const std::size_t size = formatRows(rows, text.get());
-        rows.clear();
-        return Formatted{std::move(text), size, std::move(rows)};
-      }));
+  pipeline_->push(std::move(pending_), {});
   pending_ = {};
-  if (!spareRows_.empty()) {
-    pending_ = std::move(spareRows_.back());
-    spareRows_.pop_back();
-  }
-  pending_.reserve(kChunkRows);
-  writeFormatted(kChunksInFlight);
 }
 
 void TelemetryWriter::rows(std::span<const sim::Telemetry> samples) {
   handOff();
-  // Chunks formatted straight from the caller's samples (they outlive the writes: each chunk
-  // is written before this returns), not copied into chunks of the writer's own first.
-  for (std::size_t at = 0; at < samples.size(); at += kChunkRows) {
-    const auto part = samples.subspan(at, std::min(kChunkRows, samples.size() - at));
-    formatting_.push_back(std::async(std::launch::async, [part, text = takeText()]() mutable {
-      const std::size_t size = formatRows(part, text.get());
-      return Formatted{std::move(text), size, {}};
-    }));
-    writeFormatted(kChunksInFlight);
-  }
-  writeFormatted(0);
+  // Chunks formatted straight from the caller's samples, not copied into the writer's own first.
+  for (std::size_t at = 0; at < samples.size(); at += kChunkRows)
+    pipeline_->push({}, samples.subspan(at, std::min(kChunkRows, samples.size() - at)));
+  pipeline_->drain();
   rows_ += static_cast<std::int64_t>(samples.size());
-}
-
-void TelemetryWriter::writeFormatted(std::size_t keep) {
-  while (formatting_.size() > keep) {
-    Formatted chunk = formatting_.front().get();
-    formatting_.pop_front();
-    csv_.stream().write(chunk.text.get(), static_cast<std::streamsize>(chunk.size));
-    spareText_.push_back(std::move(chunk.text));
-    if (chunk.rows.capacity() > 0) spareRows_.push_back(std::move(chunk.rows));
-  }
 }
 
 rb::Status TelemetryWriter::commit(const RunScene& scene, const sim::Model& model, double rate,
                                    const sim::RunSummary& run, const nlohmann::json& check) {
-  handOff();  // rows_ counts the rows still pending too
   return commit(meta_ ? telemetrySidecar(scene, model, rate, run, rows_, check) : nullptr);
 }
 
 rb::Status TelemetryWriter::commit(const nlohmann::json& sidecar) {
   handOff();
-  writeFormatted(0);
+  pipeline_->drain();
   if (meta_) meta_->stream() << sidecar.dump(2) << "\n";
-  if (auto e = csv_.commit(); !e) return e;
+  if (auto e = pipeline_->commit(); !e) return e;
   return meta_ ? meta_->commit() : rb::Status();
 }
 

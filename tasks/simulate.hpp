@@ -4,9 +4,7 @@
 #pragma once
 
 #include <cstdint>
-#include <deque>
 #include <functional>
-#include <future>
 #include <iosfwd>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -84,9 +82,11 @@ nlohmann::json telemetrySidecar(const RunScene& scene, const sim::Model& model, 
 class TelemetryWriter {
  public:
   static rb::Result<TelemetryWriter> open(const std::string& path);
-  TelemetryWriter(TelemetryWriter&&) noexcept = default;
+  TelemetryWriter(TelemetryWriter&&) noexcept;
+  ~TelemetryWriter();
   void row(const sim::Telemetry& sample);
-  /// Rows handed over at once (a finished run's samples), formatted in parallel chunks.
+  /// Rows handed over at once (a finished run's samples), formatted in parallel chunks; written
+  /// before this returns.
   void rows(std::span<const sim::Telemetry> samples);
   std::int64_t rows() const { return rows_; }
   /// Writes the sidecar and puts both files in place.
@@ -97,31 +97,17 @@ class TelemetryWriter {
   rb::Status commit(const nlohmann::json& sidecar);
 
  private:
-  TelemetryWriter(AtomicOutput csv, std::optional<AtomicOutput> meta)
-      : csv_(std::move(csv)), meta_(std::move(meta)) {}
-  // Rows are formatted in chunks on threads of their own while the run goes on (or, for rows
-  // handed over at once, several chunks at a time), and written in order (issue 27: formatting
-  // was half of a 10 kHz run).
+  // Rows are formatted in chunks by threads of the writer's own while the run goes on, and
+  // written in order by whichever of them has the next chunk; the run's thread lends a hand only
+  // when they fall behind, and at the end (issue 27: formatting was half of a 10 kHz run).
+  class Pipeline;
   static constexpr std::size_t kChunkRows = 4096;
-  static constexpr std::size_t kChunksInFlight = 4;
-  // A chunk as text, and the buffers it was made with, kept for the chunks after it (a chunk's
-  // 3 MB had been allocated and zero-filled afresh each time: 3 % of to_csv's time; docs/speed.md
-  // "A shortest formatter that is kept (2026-11-27, tenth session; issue 27)").
-  struct Formatted {
-    std::unique_ptr<char[]> text;
-    std::size_t size = 0;
-    std::vector<sim::Telemetry> rows;  // the pending rows' buffer (none for rows handed over)
-  };
+  TelemetryWriter(std::unique_ptr<Pipeline> pipeline, std::optional<AtomicOutput> meta);
   void handOff();
-  void writeFormatted(std::size_t keep);
-  std::unique_ptr<char[]> takeText();
-  AtomicOutput csv_;
+  std::unique_ptr<Pipeline> pipeline_;
   std::optional<AtomicOutput> meta_;
   std::int64_t rows_ = 0;
   std::vector<sim::Telemetry> pending_;
-  std::deque<std::future<Formatted>> formatting_;
-  std::vector<std::unique_ptr<char[]>> spareText_;
-  std::vector<std::vector<sim::Telemetry>> spareRows_;
 };
 
 /// Writes the samples as CSV at `path` and the sidecar at `path`.json, each whole or not at all
