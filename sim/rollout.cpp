@@ -98,22 +98,21 @@ Rollout& Rollout::operator=(Rollout&&) noexcept = default;
 Rollout::~Rollout() = default;
 
 bool Rollout::advanceTo(double t) {
-  const auto start = std::chrono::steady_clock::now();
-  while (!stopped() && current_.t < t && !sameTime(current_.t, t)) {
-    if (stop_.stop_requested() || external_.stop_requested()) {
-      summary_.stop_requested = true;
-      break;
+  // Sampled faster than it steps (10 kHz against rk4's 2 kHz), most calls take no step: they
+  // read no clock and count nothing (two clock reads and an acos a call were a fifth of a
+  // 10 kHz run; docs/speed.md "Writing beside the run (2026-11-27, eleventh session; issue 27)").
+  if (!stopped() && current_.t < t && !sameTime(current_.t, t)) {
+    const auto start = std::chrono::steady_clock::now();
+    while (!stopped() && current_.t < t && !sameTime(current_.t, t)) {
+      if (stop_.stop_requested() || external_.stop_requested()) {
+        summary_.stop_requested = true;
+        break;
+      }
+      stepOnce();
     }
-    stepOnce();
-  }
-  summary_.wall_s +=
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  summary_.steps = current_.step;
-  summary_.max_tilt_deg = std::max(summary_.max_tilt_deg,
-                                   std::acos(std::clamp(min_cos_tilt_, -1.0, 1.0)) * 180.0 / M_PI);
-  if (adaptive_) {
-    summary_.evaluations = evaluations_before_ + adaptive_->evaluations();
-    summary_.rejected = rejected_before_ + adaptive_->rejected(current_.step - stepper_start_);
+    summary_.wall_s +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    countSteps();
   }
   const bool reached = !stopped() || current_.t >= t || sameTime(current_.t, t);
   reached_ = reached ? std::min(t, current_.t) : current_.t;
@@ -270,7 +269,18 @@ Telemetry Rollout::sampleAt(double t) const {
   return telemetryOf(modeAt(t), stateAt(t));
 }
 
+void Rollout::countSteps() const {
+  summary_.steps = current_.step;
+  summary_.max_tilt_deg = std::max(summary_.max_tilt_deg,
+                                   std::acos(std::clamp(min_cos_tilt_, -1.0, 1.0)) * 180.0 / M_PI);
+  if (adaptive_) {
+    summary_.evaluations = evaluations_before_ + adaptive_->evaluations();
+    summary_.rejected = rejected_before_ + adaptive_->rejected(current_.step - stepper_start_);
+  }
+}
+
 const RunSummary& Rollout::summary() const {
+  countSteps();
   if (!last_filled_) {
     summary_.last = sampleAt(reached_);
     last_filled_ = true;

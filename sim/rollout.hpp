@@ -125,6 +125,7 @@ class Rollout {
   /// The mode a time of the last step was integrated in: under auto, the one before a switch
   /// inside the step for times before it (issue 26), else the active one.
   const Model& modeAt(double t) const;
+  void countSteps() const;  ///< the summary's steps, tilt and evaluations, as they are now
 
   Model model_;   ///< the run as compiled
   Model active_;  ///< the model being integrated: model_, or under auto its rolling or smooth mode

@@ -1,6 +1,7 @@
 #include "tasks/simulate.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <charconv>
 #include <cmath>
 #include <condition_variable>
@@ -78,10 +79,19 @@ char* formatRow(char* line, const sim::Telemetry& s) {
     at = writeNumber(at, value);
     *at++ = ',';
   };
-  for (double v :
-       {s.t, s.spin, s.energy, s.kinetic, s.potential, s.elastic, s.tilt_deg, s.x_world.x(),
-        s.x_world.y(), s.x_world.z(), s.w_world.x(), s.w_world.y(), s.w_world.z(), s.L_world.z()})
+  put(s.t);
+  const char* spin = at;
+  put(s.spin);
+  const std::size_t spin_chars = static_cast<std::size_t>(at - spin);
+  for (double v : {s.energy, s.kinetic, s.potential, s.elastic, s.tilt_deg, s.x_world.x(),
+                   s.x_world.y(), s.x_world.z(), s.w_world.x(), s.w_world.y()})
     put(v);
+  // wz is the spin n = ω·ẑ (sim::telemetryOf): its text again, not formatted twice.
+  if (std::bit_cast<std::uint64_t>(s.w_world.z()) == std::bit_cast<std::uint64_t>(s.spin))
+    at = std::copy_n(spin, spin_chars, at);
+  else
+    put(s.w_world.z());
+  put(s.L_world.z());
   at = std::to_chars(at, at + kNumberChars, s.contacts).ptr;
   *at++ = ',';
   put(s.normal_force);
@@ -191,10 +201,15 @@ nlohmann::json telemetrySidecar(const RunScene& scene, const sim::Model& model, 
 // goes on with its run: on two cores the run keeps one and formatting and writing the other, and
 // both share the rest once the run is over (docs/speed.md "Writing beside the run (2026-11-27,
 // eleventh session; issue 27)").
+constexpr unsigned kMaxWorkers = 7;  // more than a few chunks at once gain nothing
+
 class TelemetryWriter::Pipeline {
  public:
-  Pipeline(AtomicOutput csv, unsigned workers) : csv_(std::move(csv)) {
-    for (unsigned i = 0; i < workers; ++i) workers_.emplace_back([this] { work(); });
+  Pipeline(AtomicOutput csv, unsigned workers) : csv_(std::move(csv)), workerCount_(workers) {
+    // The workers take buffers back without allocating (a thread's first allocation makes it an
+    // arena of its own: 0.1 ms).
+    spareText_.reserve(2 * kMaxWorkers + 4);
+    spareRows_.reserve(2 * kMaxWorkers + 4);
   }
   ~Pipeline() {
     {
@@ -209,15 +224,22 @@ class TelemetryWriter::Pipeline {
   /// writing), and then helps until at most `inFlight` chunks are unwritten.
   void push(std::vector<sim::Telemetry> own, std::span<const sim::Telemetry> rows) {
     std::unique_lock lock(mutex_);
-    Chunk& chunk = chunks_.emplace_back();
-    chunk.own = std::move(own);
-    chunk.rows = chunk.own.empty() ? rows : std::span<const sim::Telemetry>(chunk.own);
+    std::unique_ptr<char[]> text;  // made before the chunk is queued, where a worker would see it
     if (spareText_.empty()) {
-      chunk.text.reset(new char[kChunkRows * kRowChars]);
+      text.reset(new char[kChunkRows * kRowChars]);
     } else {
-      chunk.text = std::move(spareText_.back());
+      text = std::move(spareText_.back());
       spareText_.pop_back();
     }
+    Chunk& chunk = chunks_.emplace_back();
+    chunk.text = std::move(text);
+    chunk.own = std::move(own);
+    chunk.rows = chunk.own.empty() ? rows : std::span<const sim::Telemetry>(chunk.own);
+    // The workers start with a second chunk: a run of fewer rows is formatted by its own thread
+    // at the end, with no thread started for it (starting one cost a short run's start-up a
+    // fifth; bench/targets.py's start-up line).
+    if (workers_.empty() && chunks_.size() + written_ >= 2)
+      for (unsigned i = 0; i < workerCount_; ++i) workers_.emplace_back([this] { work(); });
     changed_.notify_one();
     helpUntil(lock, inFlight());
   }
@@ -256,7 +278,7 @@ class TelemetryWriter::Pipeline {
   // Chunks unwritten before the caller's thread stops its own work to help: enough that the
   // workers always have one to take, few enough that memory stays bounded (a chunk holds 4096
   // samples, about 1 MB, and its text, about 2 MB).
-  std::size_t inFlight() const { return 2 * workers_.size() + 2; }
+  std::size_t inFlight() const { return 2 * workerCount_ + 2; }
 
   // One piece of work, if there is one: the front chunk written, or a queued chunk formatted.
   // Called and returns with `lock` held; works with it released.
@@ -276,6 +298,7 @@ class TelemetryWriter::Pipeline {
         spareRows_.push_back(std::move(chunk.own));
       }
       chunks_.pop_front();
+      ++written_;
       writing_ = false;
       changed_.notify_all();
       return true;
@@ -308,8 +331,10 @@ class TelemetryWriter::Pipeline {
   std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<Chunk> chunks_;  // in the file's order: the front is written next
+  std::size_t written_ = 0;   // chunks
   bool writing_ = false;
   bool leaving_ = false;
+  unsigned workerCount_;
   int writeErrno_ = 0;
   std::vector<std::unique_ptr<char[]>> spareText_;
   std::vector<std::vector<sim::Telemetry>> spareRows_;
@@ -333,9 +358,10 @@ rb::Result<TelemetryWriter> TelemetryWriter::open(const std::string& path) {
     meta.emplace(std::move(opened).value());
   }
   csv->stream() << telemetryHeader();
-  // All cores but the run's (one at least; more than a few chunks at once gain nothing).
+  // All cores but the run's (one at least).
   const unsigned cores = std::max(2u, std::thread::hardware_concurrency());
-  auto pipeline = std::make_unique<Pipeline>(std::move(csv).value(), std::min(cores - 1, 7u));
+  auto pipeline =
+      std::make_unique<Pipeline>(std::move(csv).value(), std::min(cores - 1, kMaxWorkers));
   return TelemetryWriter(std::move(pipeline), std::move(meta));
 }
 
