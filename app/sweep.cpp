@@ -368,8 +368,8 @@ int sweepCommand(const SweepArgs& args) {
   auto plan = planRows(args, sweep, shard, output.value());
   if (!plan) return fail(plan);
   const std::string journal_path = tasks::Journal::pathOf(output.value());
-  auto journal = tasks::Journal::open(journal_path, tasks::sweepHeader(axisKeys(sweep)), plan->done,
-                                      tasks::sweepFingerprint(sweep));
+  auto journal = tasks::Journal::open(output.value(), tasks::sweepHeader(axisKeys(sweep)),
+                                      plan->done, tasks::sweepFingerprint(sweep));
   if (!journal) return fail(journal);
   std::map<std::int64_t, double> metric;
   tasks::SweepRun run;

@@ -55,9 +55,10 @@ class Journal {
   /// this sweep's.
   static rb::Result<std::map<std::int64_t, std::string>> read(
       const std::string& path, const scene::Sweep& sweep, const std::vector<std::int64_t>& rows);
-  /// Starts the journal afresh with `kept` (from a resumed journal), and beside it
-  /// (PATH.json) the fingerprint of the sweep it belongs to.
-  static rb::Result<Journal> open(const std::string& path, const std::string& header,
+  /// Starts the journal of the table `output` (pathOf) afresh with `kept` (from a resumed
+  /// journal), and beside it (.json) the fingerprint of the sweep it belongs to. An error names
+  /// the table, which is what -o gave (the journal is the program's own).
+  static rb::Result<Journal> open(const std::string& output, const std::string& header,
                                   const std::map<std::int64_t, std::string>& kept,
                                   const std::string& fingerprint);
   /// Removes the journal and its fingerprint (the table is in place).

@@ -468,14 +468,13 @@ TEST(Sweep, ResumeRefusesAJournalOfAChangedSweep) {
   const fs::path dir = scratch();
   const fs::path sweep = writeSweep(dir, smallSweep());
   const fs::path table = dir / "t.csv";
-  const std::string journal = table.string() + ".partial";
   auto interrupted = [&] {  // a journal as an interrupted run leaves it: header and one row
     ASSERT_EQ(rattleback(dir, "sweep " + sweep.string() + " -q -o " + table.string()).status, 0);
     std::ifstream in(table);
     std::string header, row;
     std::getline(in, header);
     std::getline(in, row);
-    tasks::Journal::open(journal, header, {{0, row}},
+    tasks::Journal::open(table.string(), header, {{0, row}},
                          tasks::sweepFingerprint(scene::loadSweep(sweep.string()).value()))
         .value()
         .close();
