@@ -42,6 +42,7 @@ const BACKGROUND = [0.93, 0.94, 0.96]; // the renderer's kBackground (sRGB)
 const VIEWS = ['oblique', 'above', 'front', 'side', 'follow'];
 const SPEEDS = [0.1, 0.25, 0.5, 1, 2, 4];
 const FORECAST_COLOR = '#7a3fd0'; // the forecast first reversal on the n(t) plot (violet)
+const FORECAST_LABEL_HEIGHT = 12; // px at the plot's top: its label, 9 px type from 2 px down
 const UP = new Vector3(0, 0, 1);
 
 // ---------------------------------------------------------------------------------------------
@@ -252,7 +253,7 @@ const STYLE = `
 .rbp-plotbox{position:relative;width:272px;margin-top:6px}
 .rbp-plot{display:block;width:270px;height:130px;border:1px solid #c9ccd4;border-radius:3px;background:#fff;cursor:crosshair}
 .rbp-cursor,.rbp-dot{position:absolute;left:0;top:0;background:#d0211a;pointer-events:none;will-change:transform}
-.rbp-cursor{width:1.5px}
+.rbp-cursor{width:1.5px;opacity:.6}
 .rbp-dot{width:6px;height:6px;border-radius:50%}
 .rbp-help{font-size:12px;color:#666;margin-top:6px}
 .rbp-reversal:disabled{opacity:.45;cursor:default}
@@ -1140,8 +1141,11 @@ class Player {
     const y = Math.round(10 * (1 + L.y(this.spinNow))) / 10;
     if (x === this.cursorX && y === this.cursorY) return;
     if (this.cursorX === undefined) {
-      this.cursorLine.style.top = `${1 + L.box.top}px`;
-      this.cursorLine.style.height = `${L.box.bottom - L.box.top}px`;
+      // Below the forecast's label, which it would cover near the reversal (a teacher's trial);
+      // see-through, so that the reversal's orange line under it stays orange.
+      const top = L.box.top + (this.forecast ? FORECAST_LABEL_HEIGHT : 0);
+      this.cursorLine.style.top = `${1 + top}px`;
+      this.cursorLine.style.height = `${L.box.bottom - top}px`;
     }
     this.cursorX = x;
     this.cursorY = y;

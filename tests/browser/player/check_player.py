@@ -108,14 +108,18 @@ PLOT_JS = """
 const element = arguments[0], x = arguments[1];
 const c = element.querySelector('.rbp-plot');
 const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
-let all = 0, column = 0;
+let all = 0, column = 0, labelBottom = -1;
 for (let i = 0, p = 0; i < d.length; i += 4, p++) {
   const r = d[i], g = d[i + 1], b = d[i + 2];
   if (!(b > 120 && b > r + 40 && r > g + 25)) continue;  // violet, not the grey, orange or red
   all++;
   if (x !== null && Math.abs(p % c.width - x) <= 1) column++;
+  else labelBottom = Math.max(labelBottom, Math.floor(p / c.width));
 }
-return {all, column, height: c.height};
+// the cursor line's top, in the canvas's device pixels (its box starts at the canvas's border)
+const line = element.querySelector('.rbp-cursor');
+const cursorTop = (parseFloat(line.style.top) - 1) * c.width / c.clientWidth;
+return {all, column, height: c.height, labelBottom, cursorTop};
 """
 
 # What a player shows at the moment pause is pressed, recorded by listeners on the window that
@@ -405,6 +409,11 @@ class Checker:
                        f"in its column of the n(t) plot ({plot['height']} tall)")
             self.check(plot["all"] > plot["column"] + 20,
                        f"{where}: the forecast line has no label ({plot['all'] - plot['column']} violet pixels beside it)")
+            # the cursor's line runs below the label: near the reversal it covered it (a
+            # teacher's trial)
+            self.check(plot["cursorTop"] > plot["labelBottom"],
+                       f"{where}: the plot's cursor starts at device row {plot['cursorTop']:.0f}, over "
+                       f"the forecast's label (down to row {plot['labelBottom']})")
 
         # Colours where the body is, from the side at the start: red top and blue bottom.
         self.hook(element, "setTime(arguments[1])", t[0])
