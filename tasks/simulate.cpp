@@ -264,7 +264,6 @@ class TelemetryWriter::Pipeline {
     if (writeErrno_ != 0) errno = writeErrno_;
     return csv_.commit();
   }
-  std::ostream& stream() { return csv_.stream(); }
 
  private:
   struct Chunk {
@@ -277,7 +276,7 @@ class TelemetryWriter::Pipeline {
 
   // Chunks unwritten before the caller's thread stops its own work to help: enough that the
   // workers always have one to take, few enough that memory stays bounded (a chunk holds 4096
-  // samples, about 1 MB, and its text, about 2 MB).
+  // samples, 0.8 MB, and room for their text, 3 MB).
   std::size_t inFlight() const { return 2 * workerCount_ + 2; }
 
   // One piece of work, if there is one: the front chunk written, or a queued chunk formatted.
