@@ -197,7 +197,8 @@ void defineMerge(CLI::App& c, Cli& cli) {
   SweepMergeArgs& m = cli.merge_args;
   c.add_option("output", m.output, "Merged CSV table")->required();
   c.add_option("shards", m.shards, "The shards' CSV tables")->required();
-  c.add_option("--plot", m.plot, "Heatmap (PNG) of --metric over the first two axes");
+  c.add_option("--plot", m.plot,
+               "Heatmap (PNG) of --metric over the first two axes of more than one value");
   c.add_option("--metric", m.metric,
                "Column to plot: " + tasks::sweepMetricNames() + " (default first_reversal_s)");
   c.add_flag("-q,--quiet", m.quiet, "No summary");
@@ -210,7 +211,8 @@ void defineSweep(CLI::App& c, Cli& cli) {
                "CSV table (default out/<sweep>.csv; with --shard out/<sweep>.shard-I-of-N.csv)");
   c.add_option("-j,--jobs", w.jobs, "Threads (default: all cores)");
   c.add_option("--shard", w.shard, "I/N: run only rows I, I+N, I+2N, … (merge the shards after)");
-  c.add_option("--plot", w.plot, "Heatmap (PNG) of --metric over the first two axes");
+  c.add_option("--plot", w.plot,
+               "Heatmap (PNG) of --metric over the first two axes of more than one value");
   c.add_option("--metric", w.metric,
                "Column to plot: " + tasks::sweepMetricNames() + " (default first_reversal_s)");
   c.add_option("--emit", w.emit,

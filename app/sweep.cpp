@@ -111,8 +111,10 @@ double metricOf(const std::string& line, std::size_t axes, const std::string& me
   return std::strtod((*fields)[column].c_str(), nullptr);
 }
 
-// Draws `metric` over the first two axes (further axes at their first value; one axis: a line
-// plot).
+// Draws `metric` over the first two axes of more than one value (a heatmap), or the one such
+// axis (a line plot); every other axis at its first value, said in the title. An axis of one
+// value drawn as a heatmap's side had given gnuplot an image one cell tall, which it left grey:
+// "no reversal" where every run reversed (a researcher's trial).
 rb::Status plotTable(const std::string& png, const std::string& metric, const std::string& title,
                      const Table& table) {
   const std::size_t axes = table.keys.size();
@@ -120,35 +122,46 @@ rb::Status plotTable(const std::string& png, const std::string& metric, const st
   std::vector<std::int64_t> stride(axes, 1);
   for (std::size_t i = axes; i-- > 1;)
     stride[i - 1] = stride[i] * static_cast<std::int64_t>(table.axis_values[i].size());
+  std::vector<std::size_t> drawn;
+  for (std::size_t i = 0; i < axes && drawn.size() < 2; ++i)
+    if (table.axis_values[i].size() > 1) drawn.push_back(i);
+  if (drawn.empty()) drawn.push_back(0);  // one run: a point
   std::string fixed;
-  for (std::size_t i = 2; i < axes; ++i)
-    fixed += (fixed.empty() ? "" : ", ") + table.keys[i] + " = " + table.axis_values[i][0];
-  if (axes == 1) {
+  for (std::size_t i = 0; i < axes; ++i)
+    if (std::find(drawn.begin(), drawn.end(), i) == drawn.end())
+      fixed += (fixed.empty() ? "" : ", ") + table.keys[i] + " = " + table.axis_values[i][0];
+  const std::string named = metric + (fixed.empty() ? "" : " (" + fixed + ")");
+  const auto at = [&](std::size_t axis, std::size_t i) {
+    return static_cast<std::size_t>(static_cast<std::int64_t>(i) * stride[axis]);
+  };
+  if (drawn.size() == 1) {
+    const std::size_t x = drawn[0];
     Panel panel;
-    panel.title = metric;
-    panel.x_label = sweepLabel(table.keys[0], table.length_unit);
+    panel.title = named;
+    panel.x_label = sweepLabel(table.keys[x], table.length_unit);
     panel.y_label = sweepLabel(metric);
     Series series;
     series.title = metric;
     std::vector<double> xs;
-    for (std::size_t i = 0; i < table.values.size(); ++i) {
-      xs.push_back(std::strtod(table.axis_values[0][i].c_str(), nullptr));
-      series.points.emplace_back(xs.back(), table.values[i]);
+    for (std::size_t i = 0; i < table.axis_values[x].size(); ++i) {
+      xs.push_back(std::strtod(table.axis_values[x][i].c_str(), nullptr));
+      series.points.emplace_back(xs.back(), table.values[at(x, i)]);
     }
     panel.log_x = logarithmicAxis(xs);
     panel.series.push_back(series);
-    return plotPng(png, title + ": " + metric, {panel}, 900, 500);
+    return plotPng(png, title + ": " + named, {panel}, 900, 500);
   }
+  const std::size_t x = drawn[0], y = drawn[1];
   Heatmap map;
-  map.title = title + ": " + metric + (fixed.empty() ? "" : " (" + fixed + ")");
-  map.x_label = sweepLabel(table.keys[0], table.length_unit);
-  map.y_label = sweepLabel(table.keys[1], table.length_unit);
+  map.title = title + ": " + named;
+  map.x_label = sweepLabel(table.keys[x], table.length_unit);
+  map.y_label = sweepLabel(table.keys[y], table.length_unit);
   map.value_label = sweepLabel(metric);
-  map.x_values = table.axis_values[0];
-  map.y_values = table.axis_values[1];
-  for (std::size_t i0 = 0; i0 < map.x_values.size(); ++i0)
-    for (std::size_t i1 = 0; i1 < map.y_values.size(); ++i1)
-      map.values.push_back(table.values[static_cast<std::size_t>(i0 * stride[0] + i1 * stride[1])]);
+  map.x_values = table.axis_values[x];
+  map.y_values = table.axis_values[y];
+  for (std::size_t ix = 0; ix < map.x_values.size(); ++ix)
+    for (std::size_t iy = 0; iy < map.y_values.size(); ++iy)
+      map.values.push_back(table.values[at(x, ix) + at(y, iy)]);
   map.note = "grey: no value (" +
              std::string(metric == "first_reversal_s" ? "no reversal, or " : "") +
              "run stopped or refused)";

@@ -1663,6 +1663,40 @@ TEST(Plot, SweepAxesAreLabelledWithTheirUnits) {
   EXPECT_EQ(app::sweepLabel("initial.spin", 0.01), "initial.spin [rad/s]");
 }
 
+// An axis of one value (a parameter held fixed, as air drag 0 here) is not a side of the picture:
+// drawn so, gnuplot left the image one cell tall grey, "no value (no reversal …)" where every
+// run reversed (a researcher's trial). The sweep is drawn over its other axis, the curve in
+// gnuplot's first colour (dark violet) across the plot, and none of the picture is the heatmap's
+// grey for no value (#c8c8c8), whichever order the axes come in.
+TEST(Plot, AnAxisOfOneValueIsNotDrawnAsASideOfGrey) {
+  const fs::path dir = scratchDir() / "one-value";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string spin = "  initial.spin: [-5, -4, -3]\n", drag = "  contact.air_drag: [0.0]\n";
+  for (const std::string& axes : {spin + drag, drag + spin}) {
+    const fs::path sweep = dir / "one.yaml", png = dir / "one.png";
+    std::ofstream(sweep) << "base: " << scene("rattleback") << "\nduration: 4\nvary:\n" << axes;
+    const Result r = rattleback("sweep " + sweep.string() + " -q -o " + (dir / "one.csv").string() +
+                                " --plot " + png.string());
+    ASSERT_EQ(r.status, 0) << r.err;
+    render::Image image;
+    ASSERT_TRUE(render::readPng(png.string(), image).ok()) << png;
+    int columns = 0;
+    std::size_t grey = 0;
+    for (int x = 0; x < image.width; ++x) {
+      bool violet = false;
+      for (int y = 0; y < image.height; ++y) {
+        const unsigned char* p = &image.rgba[4 * (static_cast<std::size_t>(y) * image.width + x)];
+        violet = violet || (p[0] - p[1] > 60 && p[2] - p[1] > 60);
+        grey += p[0] == 0xc8 && p[1] == 0xc8 && p[2] == 0xc8;
+      }
+      columns += violet;
+    }
+    EXPECT_GT(columns, 400) << axes << ": no curve across the plot";
+    EXPECT_LT(grey, image.rgba.size() / 4 / 100) << axes << ": grey, as for no value";
+  }
+}
+
 // The sweep heatmap's script: numbers' minus signs as U+2212 (DejaVu's hyphen, turned by 30°,
 // read as "`6"), x labels level when they fit, turned only when they would not, and the note
 // on its own line under the axis title (it sat beside it, running to the edge).
