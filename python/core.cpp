@@ -418,21 +418,22 @@ PYBIND11_MODULE(_core, m) {
       .def_readonly("scene", &Run::scene)
       .def_readonly("rate", &Run::rate)
       .def("to_csv", [](const Run& r, const std::string& path) {
-        rb::Status written;
-        {
-          GilReleased release;
+        // Ctrl-C stops the writing, puts nothing in place and raises KeyboardInterrupt (it
+        // finished, replaced the file there and then raised it: a researcher's trial).
+        const rb::Status written = interruptibleHere([&](const std::function<bool()>& cancelled) {
           const rb::OutputNamedBy naming("to_csv");  // the way out an error line suggests
-          written = tasks::writeTelemetry(path, r.samples, r.sidecar);
-          // Listed in the folder's manifest, as the command line lists it (a failure to list
-          // loses nothing: the report then places the file by its name).
-          if (written)
+          rb::Status status = tasks::writeTelemetry(path, r.samples, r.sidecar, cancelled);
+          // Listed in the folder's manifest, as the command line lists it (a failure to
+          // list loses nothing: the report then places the file by its name).
+          if (status)
             (void)tasks::recordOutputs({{path,
                                          tasks::OutputKind::Telemetry,
                                          stemOf(r.scene, !r.sidecar.at("scene_path").is_null()),
                                          "",
                                          {},
                                          {}}});
-        }
+          return status;
+        });
         if (!written) raise(written.error());
       });
 

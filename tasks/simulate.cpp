@@ -380,13 +380,20 @@ void TelemetryWriter::handOff() {
   pending_ = {};
 }
 
-void TelemetryWriter::rows(std::span<const sim::Telemetry> samples) {
+bool TelemetryWriter::rows(std::span<const sim::Telemetry> samples,
+                           const std::function<bool()>& cancelled) {
   handOff();
   // Chunks formatted straight from the caller's samples, not copied into the writer's own first.
-  for (std::size_t at = 0; at < samples.size(); at += kChunkRows)
+  for (std::size_t at = 0; at < samples.size(); at += kChunkRows) {
+    if (cancelled && cancelled()) {
+      pipeline_->drain();  // the chunks queued read the caller's samples: done before returning
+      return false;
+    }
     pipeline_->push({}, samples.subspan(at, std::min(kChunkRows, samples.size() - at)));
+  }
   pipeline_->drain();
   rows_ += static_cast<std::int64_t>(samples.size());
+  return true;
 }
 
 rb::Status TelemetryWriter::commit(const RunScene& scene, const sim::Model& model, double rate,
@@ -412,10 +419,12 @@ rb::Status writeTelemetry(const std::string& path, const RunScene& scene, const 
 }
 
 rb::Status writeTelemetry(const std::string& path, const std::vector<sim::Telemetry>& samples,
-                          const nlohmann::json& sidecar) {
+                          const nlohmann::json& sidecar, const std::function<bool()>& cancelled) {
   auto writer = TelemetryWriter::open(path);
   if (!writer) return writer.error();
-  writer->rows(samples);
+  // (Stopped, the writer's files are removed as it goes: the files there before stay.)
+  if (!writer->rows(samples, cancelled) || (cancelled && cancelled()))
+    return rb::Status::fail(path + ": interrupted");
   return writer->commit(sidecar);
 }
 

@@ -86,8 +86,9 @@ class TelemetryWriter {
   ~TelemetryWriter();
   void row(const sim::Telemetry& sample);
   /// Rows handed over at once (a finished run's samples), formatted in parallel chunks; written
-  /// before this returns.
-  void rows(std::span<const sim::Telemetry> samples);
+  /// before this returns. `cancelled` (may be empty) is asked between chunks: true stops there,
+  /// and false is returned (the file is then to be dropped, not committed).
+  bool rows(std::span<const sim::Telemetry> samples, const std::function<bool()>& cancelled = {});
   std::int64_t rows() const { return rows_; }
   /// Writes the sidecar and puts both files in place.
   /// `check`: the sidecar's "check" (checkJson), or null.
@@ -117,7 +118,10 @@ rb::Status writeTelemetry(const std::string& path, const RunScene& scene, const 
                           const std::vector<sim::Telemetry>& samples,
                           const nlohmann::json& check = nullptr);
 /// The same with the sidecar made already (telemetrySidecar with rows = samples.size()).
+/// `cancelled` (may be empty) is asked as the rows are written: true stops, and neither file is
+/// put in place (what was there stays) — Python's to_csv on Ctrl-C.
 rb::Status writeTelemetry(const std::string& path, const std::vector<sim::Telemetry>& samples,
-                          const nlohmann::json& sidecar);
+                          const nlohmann::json& sidecar,
+                          const std::function<bool()>& cancelled = {});
 
 }  // namespace tasks

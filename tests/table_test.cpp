@@ -203,6 +203,46 @@ TEST(Numbers, AChunkedCsvIsTheRowsInOrder) {
   std::filesystem::remove(path + ".json");
 }
 
+// Python's to_csv on Ctrl-C: the writing stops between chunks, nothing is put in place, and the
+// file that was there stays as it was, its sidecar too (it had finished, replaced the file and
+// only then raised KeyboardInterrupt: a researcher's trial).
+TEST(Numbers, AWriteStoppedPutsNothingInPlace) {
+  using namespace testing_support;
+  sim::SceneSpec spec = parse(kStableScene);
+  spec.simulation.duration = 0.1;
+  const sim::Model model = build(spec);
+  const Recorded run = record(model, 1e-5);  // 10,001 rows: three chunks and a rest
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "rattleback-stopped-write";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "t.csv").string();
+  std::ofstream(path) << "the file there before\n";
+  std::ofstream(path + ".json") << "{}\n";
+  const nlohmann::json sidecar =
+      tasks::telemetrySidecar({"s.yaml", {}}, model, 1e5, run.summary, 10001);
+  int asked = 0;
+  const rb::Status stopped =
+      tasks::writeTelemetry(path, run.samples, sidecar, [&] { return ++asked > 1; });
+  EXPECT_FALSE(stopped);
+  EXPECT_EQ(asked, 2);  // asked before each chunk, and stopped at the second
+  std::stringstream csv, json;
+  csv << std::ifstream(path).rdbuf();
+  json << std::ifstream(path + ".json").rdbuf();
+  EXPECT_EQ(csv.str(), "the file there before\n");
+  EXPECT_EQ(json.str(), "{}\n");
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 2);  // no part files
+  // Never asked to stop: the whole table.
+  ASSERT_TRUE(tasks::writeTelemetry(path, run.samples, sidecar, [] { return false; }));
+  std::ostringstream expected;
+  expected << tasks::telemetryHeader();
+  for (const sim::Telemetry& s : run.samples) tasks::writeTelemetryRow(expected, s);
+  std::stringstream written;
+  written << std::ifstream(path).rdbuf();
+  EXPECT_TRUE(written.str() == expected.str());
+  std::filesystem::remove_all(dir);
+}
+
 // Rows handed over one at a time, as `simulate` writes while it runs: the writer's threads format
 // chunks while more come, and write them in order (40,004 rows: ten chunks, more than are let
 // wait at once, so that the caller's thread helps too).

@@ -128,6 +128,47 @@ def test_ctrl_c_stops_a_video_and_leaves_no_file(tmp_path):
     assert quickest(tmp_path, "render") < 0.2
 
 
+TO_CSV_CHILD = r"""
+import sys, time
+import rattleback as rb
+run = rb.simulate(sys.argv[2], duration=10, rate=10000)  # 100,001 rows, 37 MB of CSV
+print("started", flush=True)
+try:
+    run.to_csv(sys.argv[1])
+except KeyboardInterrupt:
+    sys.exit(42)
+sys.exit(0)
+"""
+
+
+def test_ctrl_c_in_to_csv_stops_the_writing(tmp_path):
+    """Ctrl-C while a large run is written stops the writing and raises KeyboardInterrupt (it
+    had written the whole file, put it in place over what was there, and only then raised it:
+    a researcher's trial). The run is written into a pipe that this test reads, so that the
+    signal surely comes while it is written: 1 MB read, the signal sent, then the rest read
+    (after a pause, so that the writer waits on the pipe as a slow disk would make it)."""
+    fifo = tmp_path / "t.csv"
+    os.mkfifo(fifo)
+    child = subprocess.Popen([sys.executable, "-c", TO_CSV_CHILD, str(fifo),
+                              scene_path("rattleback.yaml")],
+                             stdout=subprocess.PIPE, text=True, env=os.environ.copy())
+    try:
+        ready, _, _ = select.select([child.stdout], [], [], 30)
+        assert ready and child.stdout.readline().strip() == "started", "the child could not start"
+        with open(fifo, "rb") as pipe:
+            got = len(pipe.read(1 << 20))
+            child.send_signal(signal.SIGINT)
+            time.sleep(0.1)
+            while piece := pipe.read(1 << 20):
+                got += len(piece)
+        child.wait(timeout=30)
+    finally:
+        child.kill()
+        child.wait()
+    assert child.returncode == 42, "no KeyboardInterrupt"
+    assert got < 36_974_573 // 2  # the whole table is 36,974,573 bytes
+
+
 SWEEP_CHILD = r"""
 import sys
 import rattleback as rb
