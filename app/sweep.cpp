@@ -387,6 +387,12 @@ int sweepCommand(const SweepArgs& args) {
   std::map<std::int64_t, double> metric;
   tasks::SweepRun run;
   if (!runRows(args, sweep, scenes.value(), plan.value(), journal.value(), metric, run)) {
+    if (plan->from_journal + run.rows.size() == 0) {  // a journal of its header alone is no use
+      journal->close();
+      tasks::Journal::remove(journal_path);
+      std::cerr << args.file << ": interrupted before any run finished; nothing kept\n";
+      return interruptedStatus();
+    }
     std::cerr << args.file << ": interrupted; " << plan->from_journal + run.rows.size() << " of "
               << rb::counted(static_cast<long long>(plan->rows.size()), "run") << " kept in "
               << journal_path << "; the same command with --resume runs the rest\n";

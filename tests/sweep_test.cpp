@@ -461,6 +461,37 @@ TEST(Sweep, AnInterruptKeepsTheFinishedRowsAndResumeCompletesThem) {
   EXPECT_EQ(withoutWall(slurp(table)), withoutWall(slurp(dir / "whole.csv")));
 }
 
+// Ctrl-C before any run has finished leaves no journal (one of its header alone was left behind,
+// with "0 of 2 runs kept" and --resume offered: a researcher's trial).
+TEST(Sweep, AnInterruptBeforeAnyRunFinishedLeavesNoJournal) {
+  const fs::path dir = scratch();
+  const fs::path sweep =
+      writeSweep(dir, "base: " + kBase + "\nvary:\n  initial.spin: [-5, -4]\nduration: 100000\n");
+  const fs::path table = dir / "t.csv", journal = table.string() + ".partial";
+  const std::string command =
+      std::string(RATTLEBACK_BIN) + " sweep " + sweep.string() + " -j 1 -o " + table.string();
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    execl("/bin/sh", "sh", "-c", ("exec " + command + " 2>" + (dir / "stderr").string()).c_str(),
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  for (int i = 0; i < 400 && !fs::exists(journal); ++i)  // the runs have begun
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  EXPECT_TRUE(fs::exists(journal));
+  kill(pid, SIGINT);  // (each run of 1e5 s takes minutes)
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  EXPECT_EQ(slurp(dir / "stderr"),
+            sweep.string() + ": interrupted before any run finished; nothing kept\n");
+  EXPECT_FALSE(fs::exists(journal));
+  EXPECT_FALSE(fs::exists(journal.string() + ".json"));
+  EXPECT_FALSE(fs::exists(table));
+}
+
 // --resume refuses a journal begun for another content of the sweep or its base scene: a changed
 // duration or mass leaves every row's axis values as they were, and the resumed table mixed two
 // sweeps' rows (a new user's first try: 16 rows of 25 s runs beside 4 of 6 s, exit 0).
