@@ -302,7 +302,12 @@ nlohmann::json sweepSidecar(const scene::Sweep& sweep, const std::optional<Shard
   sidecar["program"] = "rattleback " RATTLEBACK_VERSION;
   sidecar["command"] = "sweep";
   sidecar["sweep"] = sweep.file;
-  sidecar["base"] = sweep.base;
+  // Absolute, as a run's scene_path is (it was relative to the folder the sweep ran from, which
+  // the sidecar does not say: a researcher's trial); a base with no file (Python's) as named.
+  std::error_code ec;
+  const bool file = !sweep.base.empty() && fs::is_regular_file(sweep.base, ec);
+  const fs::path absolute = file ? fs::absolute(sweep.base, ec) : fs::path();
+  sidecar["base"] = file && !ec ? absolute.lexically_normal().string() : sweep.base;
   sidecar["base_as_written"] = sweep.base_as_written;
   // The rows of this table: a shard's own (rows I, I + N, … of the sweep's), as `rows` of a
   // run's sidecar counts the rows of its CSV; the sweep's are the product of the axes' sizes.

@@ -566,6 +566,22 @@ TEST(Sweep, TheMergeRefusesAMissingOrRepeatedRow) {
   EXPECT_FALSE(fs::exists(dir / "out.csv.partial"));
 }
 
+// The sidecar's base is the base scene's absolute path, wherever the sweep ran from, beside the
+// path as the sweep file writes it (it was relative to the folder the sweep ran from, which the
+// sidecar does not say: "../mine.yaml", a researcher's trial).
+TEST(Sweep, TheSidecarsBaseIsAbsolute) {
+  const fs::path dir = fs::weakly_canonical(scratch());
+  fs::copy_file(kBase, dir / "mine.yaml", fs::copy_options::overwrite_existing);
+  writeSweep(dir, "base: mine.yaml\nvary:\n  initial.spin: [-5]\nduration: 0.1\n");
+  fs::create_directories(dir / "sub");
+  const std::string command =
+      "cd " + (dir / "sub").string() + " && " + RATTLEBACK_BIN + " sweep ../sweep.yaml -q -o t.csv";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  const nlohmann::json meta = nlohmann::json::parse(slurp(dir / "sub" / "t.csv.json"));
+  EXPECT_EQ(meta.value("base", ""), (dir / "mine.yaml").string());
+  EXPECT_EQ(meta.value("base_as_written", ""), "mine.yaml");
+}
+
 // The merge lists its table and plot in the folder's manifest as an in-process sweep does, and
 // the report shows the merged sweep once, its shards as its parts (each shard had been a
 // "Sweep:" section of its own saying it held all the sweep's runs). A shard's sidecar counts
