@@ -441,6 +441,7 @@ h1{margin-bottom:0}section{border-top:1px solid #ccc;margin-top:1.5em}
 video,img{max-width:100%;height:auto;background:#eee}figure{margin:0 0 1em}
 .grid{display:grid;grid-template-columns:repeat(auto-fill,minmax(300px,1fr));gap:.7em}
 .grid figure{margin:0}figcaption{font-size:.9em;color:#444}
+.grid.wide{grid-template-columns:repeat(auto-fill,minmax(min(100%,620px),1fr))}
 table{border-collapse:collapse;margin:1em 0}
 td,th{border:1px solid #ccc;padding:.4em .8em;vertical-align:top;text-align:left}
 .warning{color:#9a3412;font-weight:bold}
@@ -949,7 +950,9 @@ void writeSweep(std::ostream& out, const SweepFiles& sweep) {
     for (const std::string& part : sweep.parts)
       out << " <a href=\"" << url(part) << "\">" << escape(part) << "</a>";
   }
-  out << "</p><div class=\"grid\">\n";
+  // Heatmaps wider than the stills' grid (900 px drawn: at 300 their labels could not be read;
+  // a researcher's trial).
+  out << "</p><div class=\"grid wide\">\n";
   for (const std::string& image : sweep.images) writeFigure(out, image, "");
   out << "</div></section>\n";
 }
