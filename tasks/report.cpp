@@ -273,8 +273,15 @@ std::string measuredOf(const nlohmann::json& run) {
           << "</code>";
     out << "<br>";
   }
+  // How long, and how often sampled: runs of one scene told apart by these said the same (a
+  // researcher's 10 s run at 10 kHz beside the 8 s one; a researcher's trial).
+  const nlohmann::json& simulated = field(r, "simulated_s");
+  const nlohmann::json& rate = field(run, "rate_hz");
   out << "spun " << number(spin, "%+.3g") << " rad/s ("
-      << spinWords(spin.is_number() ? spin.get<double>() : 0.0) << ")<br>" << reversalOf(r)
+      << spinWords(spin.is_number() ? spin.get<double>() : 0.0) << ")"
+      << (simulated.is_number() ? ", " + number(simulated, "%.4g") + " s" : std::string())
+      << (rate.is_number() ? " at " + number(rate, "%.4g") + " samples/s" : std::string())
+      << "<br>" << reversalOf(r)
       << "<br>final spin " << number(field(r, "final_spin"), "%+.3f") << " rad/s<br>energy "
       << number(field(field(r, "energy_j"), "initial"), "%.4g") << " J → "
       << number(field(field(r, "energy_j"), "final"), "%.4g") << " J";

@@ -2105,8 +2105,10 @@ TEST(Cli, TheReportShowsEveryRunOfAScene) {
   ASSERT_NE(spun, std::string::npos);
   EXPECT_EQ(html.compare(spun, 9, "spun -5 r"), 0) << html.substr(spun, 80);
   // Each other run with its own measured line: its spin and how long it ran.
-  for (const char* line : {"spun +4 rad/s", "no reversal in 0.4 s", "spun -3 rad/s",
-                           "no reversal in 0.2 s", "estimated error"})
+  // (and how long and how often sampled: runs told apart by these said the same)
+  for (const char* line :
+       {"spun +4 rad/s (counter-clockwise), 0.4 s at 500 samples/s", "no reversal in 0.4 s",
+        "spun -3 rad/s (clockwise), 0.2 s at 500", "no reversal in 0.2 s", "estimated error"})
     EXPECT_NE(html.find(line), std::string::npos) << line;
   // The player replays the main run: spun −5 rad/s (its first pose, a step in: −4.99…).
   if (fs::exists(dir / "rattleback.player.js")) {
