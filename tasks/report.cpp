@@ -280,10 +280,9 @@ std::string measuredOf(const nlohmann::json& run) {
   out << "spun " << number(spin, "%+.3g") << " rad/s ("
       << spinWords(spin.is_number() ? spin.get<double>() : 0.0) << ")"
       << (simulated.is_number() ? ", " + number(simulated, "%.4g") + " s" : std::string())
-      << (rate.is_number() ? " at " + number(rate, "%.4g") + " samples/s" : std::string())
-      << "<br>" << reversalOf(r)
-      << "<br>final spin " << number(field(r, "final_spin"), "%+.3f") << " rad/s<br>energy "
-      << number(field(field(r, "energy_j"), "initial"), "%.4g") << " J → "
+      << (rate.is_number() ? " at " + number(rate, "%.4g") + " samples/s" : std::string()) << "<br>"
+      << reversalOf(r) << "<br>final spin " << number(field(r, "final_spin"), "%+.3f")
+      << " rad/s<br>energy " << number(field(field(r, "energy_j"), "initial"), "%.4g") << " J → "
       << number(field(field(r, "energy_j"), "final"), "%.4g") << " J";
   // What simulate's summary warned of, where the page is read without it (a teacher's trial:
   // a step too large showed as "no reversal in 5 s" with nothing said).
