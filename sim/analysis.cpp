@@ -277,12 +277,26 @@ ReversalForecast forecastFirstReversal(const Model& model, double spin, double h
   const Eigen::VectorXcd start = Eigen::Vector4cd(u0.x(), u0.y(), 0, 0);
   const Eigen::VectorXcd c = V.partialPivLu().solve(start);
   const Eigen::Matrix2d K = tiltStiffness(model);
+  // Each mode's energy goes with the growth rate of the same mode (k below, from linearise): the
+  // modes named as linearise names them, by frequency, the lower pair roll where at rest it
+  // rocks more about the long axis (modePairs). Named each by its own eigenvector's roll excess,
+  // both went to roll once deep dents turned the principal axes: dents.scale 0.65 forecast no
+  // reversal where the run reversed at 0.70 s (a teacher's trial).
+  const bool low_is_roll = modePairs(asRolling(model), 0).low_is_roll;
+  std::vector<std::pair<double, double>> oscillations;  // (frequency, energy)
   for (int i = 0; i < 4; ++i) {
     if (solver.eigenvalues()(i).imag() <= 0) continue;  // one of each conjugate pair
     const Eigen::Vector2cd a = 2.0 * c(i) * V.col(i).head<2>();
-    const double energy = 0.5 * (a.adjoint() * K * a).real()(0, 0);
-    (rollExcess(V.col(i)) > 0 ? modes.roll.energy : modes.pitch.energy) += energy;
+    oscillations.emplace_back(solver.eigenvalues()(i).imag(),
+                              0.5 * (a.adjoint() * K * a).real()(0, 0));
   }
+  if (oscillations.size() != 2) {  // (a stable rest has two: defensive)
+    out.applies = false;
+    return out;
+  }
+  std::sort(oscillations.begin(), oscillations.end());
+  (low_is_roll ? modes.roll : modes.pitch).energy = oscillations[0].second;
+  (low_is_roll ? modes.pitch : modes.roll).energy = oscillations[1].second;
   out.tilt_energy = 0.5 * u0.head<2>().dot(K * u0.head<2>());
   out.energy_ratio =
       2 * (modes.roll.energy + modes.pitch.energy) / (modes.inertia * modes.spin * modes.spin);

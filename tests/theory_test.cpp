@@ -545,6 +545,28 @@ TEST(Forecast, TheTiltsEnergyIsSharedBetweenTheModes) {
   }
 }
 
+// Deeper dents turn the principal axes further from the body's (misalignment 2° at the default
+// 0.45, 9° at 0.7): each mode's share of the tilt's energy must still go with that mode's own
+// growth rate. Named each by its own eigenvector, both shares went to roll from a scale of 0.65
+// on, and no reversal was forecast where the run reversed at 0.70 s (a teacher's trial). Both
+// shares stay, add up to the tilt's energy, and the forecast stays within P8.5's band beyond
+// n²ρ/g = 0.15 (here 0.85): early by at most 17 % (measured 11–15 %).
+TEST(Forecast, DeepDentsKeepEachModesShareWithItsOwnGrowth) {
+  for (double scale : {0.45, 0.6, 0.65, 0.8}) {
+    sim::SceneSpec spec = parse(kRolling);
+    spec.body.dents->scale = scale;
+    SCOPED_TRACE("dents.scale " + std::to_string(scale));
+    const sim::ReversalForecast f = sim::forecastFirstReversal(build(spec), -5, 10);
+    EXPECT_GT(f.modes.roll.energy, 0);
+    EXPECT_GT(f.modes.pitch.energy, 0);
+    EXPECT_NEAR((f.modes.roll.energy + f.modes.pitch.energy) / f.tilt_energy, 1.0, 1e-6);
+    const Forecast run = forecastAndRun(spec, -5, 0.5, 1e-3);
+    const double early = (run.measured - run.predicted) / run.measured;
+    EXPECT_GT(early, 0) << run.predicted << " s against " << run.measured << " s";
+    EXPECT_LT(early, 0.17) << run.predicted << " s against " << run.measured << " s";
+  }
+}
+
 // One mode without drag has a closed form, n = −N tanh(k N (t − t_r)) (P8.5); the integration
 // must agree to its own error (Runge–Kutta h⁴ at h = 1/100 of the rate's time: 1e-8, and the
 // cubic's zero), and a decaying mode, or drag alone, never reverses.
