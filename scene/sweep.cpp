@@ -294,6 +294,14 @@ rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, b
       axis.body = key_path->parts.front() == "body" || key_path->parts.front() == "units" ||
                   axis.key == "contact.model";
       const YAML::Node spec = entry.second;
+      // The base scene's value, where it is a number: a word swept in its place ("5 rad/s", a
+      // unit written in; a teacher's trial) is a slip too.
+      YAML::Node in_base = find(base_tree, *key_path);
+      if (key_path->index && in_base.IsSequence() && in_base.size() > *key_path->index)
+        in_base = in_base[*key_path->index];
+      double base_number = 0;
+      const bool numeric =
+          in_base.IsScalar() && YAML::convert<double>::decode(in_base, base_number);
       if (spec.IsSequence()) {
         if (spec.size() == 0) throw SweepFailure{where + " has no values"};
         for (const auto& value : spec) {
@@ -304,6 +312,16 @@ rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, b
               YAML::convert<double>::decode(value, number))
             throw SweepFailure{where + " has the quoted string \"" + value.Scalar() +
                                "\": write the number without quotes (" + value.Scalar() + ")"};
+          // Said before anything runs, in the scene's words (with the key's unit), where a row
+          // was refused and its heatmap cell left grey, as "no reversal".
+          if (numeric && value.IsScalar() && !YAML::convert<double>::decode(value, number)) {
+            YAML::Node probe = YAML::Clone(base_tree);
+            put(probe, *key_path, 0, value);
+            const auto refused =
+                loadTree(probe, sweep.base, {{withoutIndex(axis.key), axis.place}});
+            if (!refused && refused.error().message.rfind(axis.place + ":", 0) == 0)
+              throw SweepFailure{refused.error().message};
+          }
           axis.values.push_back(flowText(value));
         }
       } else if (spec.IsMap()) {

@@ -235,6 +235,11 @@ TEST(Sweep, ErrorsInTheSweepFileNameFileLineAndKey) {
        "(-4)"},
       {"base: BASE\nvary:\n  initial.spin: {from: \"-4\", to: 2, count: 3}\n",
        "sweep.yaml:3: initial.spin from must be a number, not the quoted string \"-4\""},
+      // So is a word where the base scene has a number (a unit written in: its row was
+      // refused, exit 0, its cell grey; a teacher's trial), in the scene's own words.
+      {"base: BASE\nvary:\n  initial.spin: [5 rad/s, 4]\n",
+       "sweep.yaml:3: initial.spin must be a number, not '5 rad/s' (write the number alone, in "
+       "rad/s)"},
       {"base: BASE\nvary:\n  initial.spin: [1]\nduraton: 3\n",
        "sweep.yaml:4: duraton is not a key of a sweep"},
       {"base: BASE\nvary:\n  body.dents.at[2]: [1]\n",

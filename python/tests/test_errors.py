@@ -356,6 +356,11 @@ def test_a_sweep_made_in_python_names_argument_vary_and_the_key():
         rb.sweep(base, {"initial.spin": [-5, "-4"]}, duration=0.1, jobs=1)
     assert str(caught.value) == ('argument vary: initial.spin has the quoted string "-4": write '
                                  'the number without quotes (-4)')
+    # So is a word where the base has a number (a unit written in), in the scene's words.
+    with pytest.raises(ValueError) as caught:
+        rb.sweep(base, {"initial.spin": ["5 rad/s", 4]}, duration=0.1, jobs=1)
+    assert str(caught.value) == ('argument vary: initial.spin must be a number, not the quoted '
+                                 'string "5 rad/s"')
     # A value no scene can take refuses its row, named as the argument's (a file's names its line).
     table = rb.sweep(base, {"body.mass": [-1, 0.059]}, duration=0.1, jobs=1)
     assert list(table["status"]) == ["refused", "ok"]
