@@ -266,6 +266,13 @@ void writePanel(std::ostream& script, const Panel& panel, bool titled, const fs:
   script << (panel.y_from_zero ? "set yrange [0:*]\n" : "set autoscale y\n");
   if (!panel.y2_label.empty())
     script << "set y2label " << quoted(panel.y2_label) << "\nset y2tics\nset ytics nomirror\n";
+  if (panel.x_range)
+    script << "set xrange [" << panel.x_range->first << ":" << panel.x_range->second << "]\n";
+  else
+    script << "set autoscale x\n";
+  if (!panel.note.empty())
+    script << "set bmargin 5\nset label 90 " << quoted(panel.note)
+           << " at screen 0.5, character 1 center\n";
   std::vector<std::string> clauses;
   for (const Series& series : panel.series) {
     const fs::path data = work / ("series" + std::to_string(file_index++) + ".dat");
@@ -273,7 +280,7 @@ void writePanel(std::ostream& script, const Panel& panel, bool titled, const fs:
   }
   if (clauses.empty()) {
     script << "unset logscale\nset label 1 'no data' at graph 0.5, graph 0.5 center\n"
-           << "plot [0:1][0:1] NaN notitle\nunset label 1\n";
+           << "plot [0:1][0:1] NaN notitle\nunset label 1\nunset label 90\n";
     return;
   }
   // Each mark's label right of its line, or left of one in the last fifth of the data's x
@@ -297,6 +304,7 @@ void writePanel(std::ostream& script, const Panel& panel, bool titled, const fs:
   for (std::size_t i = 0; i < clauses.size(); ++i) script << (i ? ", \\\n     " : "") << clauses[i];
   script << "\n";
   if (!panel.marks.empty()) script << "unset arrow\nunset label\n";
+  if (!panel.note.empty()) script << "unset label 90\nunset bmargin\n";
 }
 
 bool logarithmicAxis(const std::vector<double>& values) {

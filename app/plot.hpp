@@ -39,6 +39,10 @@ struct Panel {
   bool log_x = false, log_y = false;
   bool lines_only = false;   ///< no point markers (time series)
   bool y_from_zero = false;  ///< a quantity never negative (a tilt): its axis starts at 0
+  /// The x axis's span when it is not the data's (a sweep's axis, where some values have no
+  /// point); absent: the data's.
+  std::optional<std::pair<double, double>> x_range;
+  std::string note;  ///< a line under the panel (what a missing point means); "": none
   std::vector<Series> series;
 };
 

@@ -148,6 +148,15 @@ rb::Status plotTable(const std::string& png, const std::string& metric, const st
       series.points.emplace_back(xs.back(), table.values[at(x, i)]);
     }
     panel.log_x = logarithmicAxis(xs);
+    // Every value of the axis spanned, and a missing point said (the runs that did not reverse
+    // vanished from the axis: a teacher's trial, spins −8 … 8 drawn as −8 … −1).
+    const auto [lo, hi] = std::minmax_element(xs.begin(), xs.end());
+    if (*lo < *hi) panel.x_range = std::pair{*lo, *hi};
+    if (std::any_of(series.points.begin(), series.points.end(),
+                    [](const auto& p) { return !std::isfinite(p.second); }))
+      panel.note = "no point: no value (" +
+                   std::string(metric == "first_reversal_s" ? "no reversal, or " : "") +
+                   "run stopped or refused)";
     panel.series.push_back(series);
     return plotPng(png, title + ": " + named, {panel}, 900, 500);
   }

@@ -1697,6 +1697,36 @@ TEST(Plot, AnAxisOfOneValueIsNotDrawnAsASideOfGrey) {
   }
 }
 
+// A line plot spans its axis's values, those without a point too (spins −6 … 6 where only the
+// clockwise ones reverse were drawn over −6 … −4 alone, the others gone without a word; a
+// teacher's trial). The curve, in gnuplot's first colour, then covers the left sixth of the
+// plot (−6 to −4 of −6 … 6, and the legend's sample: 149 of 900 columns) where it had covered
+// all of it (669).
+TEST(Plot, ALinePlotSpansItsAxisWhereRunsDidNotReverse) {
+  const fs::path dir = scratchDir() / "spans";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path sweep = dir / "s.yaml", png = dir / "s.png";
+  std::ofstream(sweep) << "base: " << scene("rattleback")
+                       << "\nduration: 4\nvary:\n  initial.spin: [-6, -4, 4, 6]\n";
+  const Result r = rattleback("sweep " + sweep.string() + " -q -o " + (dir / "s.csv").string() +
+                              " --plot " + png.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  render::Image image;
+  ASSERT_TRUE(render::readPng(png.string(), image).ok()) << png;
+  int columns = 0;
+  for (int x = 0; x < image.width; ++x)
+    for (int y = 0; y < image.height; ++y) {
+      const unsigned char* p = &image.rgba[4 * (static_cast<std::size_t>(y) * image.width + x)];
+      if (p[0] - p[1] > 60 && p[2] - p[1] > 60) {
+        ++columns;
+        break;
+      }
+    }
+  EXPECT_GT(columns, 60) << "no curve";
+  EXPECT_LT(columns, 250) << "the curve spans the plot: the axis is the points'";
+}
+
 // The sweep heatmap's script: numbers' minus signs as U+2212 (DejaVu's hyphen, turned by 30°,
 // read as "`6"), x labels level when they fit, turned only when they would not, and the note
 // on its own line under the axis title (it sat beside it, running to the edge).
