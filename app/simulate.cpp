@@ -329,6 +329,9 @@ int simulateCommand(const SimulateArgs& args) {
       // Ctrl-C while the figures are drawn: the table stands, the figures not drawn go unsaid
       // as a failure (it exited 2 with "gnuplot failed: "; a teacher's trial).
       if (interruptSignal() != 0) {
+        // Listed in the folder's manifest as written (it was not: the report then placed it by
+        // its name alone; a teacher's trial).
+        record({outputsOf(args, csv, tasks::madeFrom(loaded->scene)).front()});
         // Said with -q too, as every command's interruption is (it said nothing).
         std::cerr << "interrupted while drawing the figures; " << csv << " is written\n";
         return interruptedStatus();
