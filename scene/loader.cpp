@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -193,15 +194,19 @@ class MapReader {
     return "empty (the key has no value)";
   }
 
-  // A number written with a unit ("59 g"): the number alone, in the key's unit as the table
-  // gives it (body.mass: kg; a teacher's trial).
+  // A number written with a unit ("59 g", or "5rad/s" with no space: a teacher's trial): the
+  // number alone, in the key's unit as the table gives it (body.mass: kg; a teacher's trial).
   std::string unitHint(const YAML::Node& node, const std::string& key) const {
     if (!node.IsScalar()) return "";
     const std::string text = node.Scalar();
     double v = 0;
-    const auto space = text.find(' ');
-    if (space == std::string::npos ||
-        !YAML::convert<double>::decode(YAML::Node(text.substr(0, space)), v))
+    const char* const begin = text.data();
+    const auto [end, ec] = std::from_chars(begin, begin + text.size(), v);
+    const std::size_t at = static_cast<std::size_t>(end - begin);
+    const std::size_t word = text.find_first_not_of(' ', at);
+    if (ec != std::errc() || at == 0 || word == std::string::npos ||
+        !(std::isalpha(static_cast<unsigned char>(text[word])) || text[word] == '%' ||
+          static_cast<unsigned char>(text[word]) >= 0x80))  // a letter, %, or ° and the like
       return "";
     const Key* known = findKey(join(path_, key));
     if (!known || known->unit.empty()) return " (write the number alone)";

@@ -48,6 +48,9 @@ const BadCase kBadCases[] = {
      "7: body.mass must be a number, not '0,5' (a decimal comma: write 0.5)"},
     {"mass: 0.5", "mass: 500 g",
      "7: body.mass must be a number, not '500 g' (write the number alone, in kg)"},
+    // With no space too (a teacher's trial: "5rad/s" had no hint).
+    {"spin: 0.0", "spin: 5rad/s",
+     "9: initial.spin must be a number, not '5rad/s' (write the number alone, in rad/s)"},
     {"top: 2}", "top: 2 cm}",
      "4: body.paraboloid.top must be a number, not '2 cm' (write the number alone, in the "
      "file's length unit, units.length)"},
