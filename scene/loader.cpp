@@ -3,9 +3,9 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cctype>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -517,7 +517,23 @@ rb::Result<std::string> readSceneFile(const std::string& path) {
   if (std::filesystem::is_directory(path, ec))
     return fail("is a folder, not a scene file (give a .yaml file, e.g. scenes/rattleback.yaml)");
   std::ifstream in(path, std::ios::binary);
-  if (!in) return fail(std::string("cannot open the scene file: ") + std::strerror(errno));
+  if (!in) {
+    const int error = errno;
+    // A file of a near name beside it: "did you mean base.yaml?" (a teacher typed base.yml).
+    std::string near;
+    if (error == ENOENT) {
+      const std::filesystem::path named(path);
+      const std::filesystem::path folder = named.has_parent_path() ? named.parent_path() : ".";
+      std::vector<std::string> files;
+      for (auto it = std::filesystem::directory_iterator(folder, ec);
+           !ec && it != std::filesystem::directory_iterator() && files.size() < 1000;
+           it.increment(ec))
+        if (it->is_regular_file(ec)) files.push_back(it->path().filename().string());
+      if (const auto nearest = rb::nearestWord(named.filename().string(), files))
+        near = "; did you mean " + printable((named.parent_path() / *nearest).string()) + "?";
+    }
+    return fail(std::string("cannot open the scene file: ") + std::strerror(error) + near);
+  }
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) return fail(std::string("cannot read the scene file: ") + std::strerror(errno));

@@ -307,6 +307,14 @@ TEST(BadScenes, AMissingFileIsNamedWithTheSystemsReason) {
   ASSERT_FALSE(loaded.ok());
   EXPECT_EQ(loaded.error().text(),
             "/nonexistent/scene.yaml: cannot open the scene file: No such file or directory");
+  // A file of a near name beside it is offered (a teacher typed base.yml for base.yaml); none
+  // where nothing is near.
+  const std::string scenes = RATTLEBACK_SOURCE_DIR "/scenes/";
+  EXPECT_EQ(scene::loadFile(scenes + "rattleback.yml").error().text(),
+            scenes + "rattleback.yml: cannot open the scene file: No such file or directory; did " +
+                "you mean " + scenes + "rattleback.yaml?");
+  EXPECT_EQ(scene::loadFile(scenes + "spinning-top.yaml").error().text(),
+            scenes + "spinning-top.yaml: cannot open the scene file: No such file or directory");
 }
 
 TEST(BadScenes, AFolderIsNamedAsAFolder) {
