@@ -88,6 +88,8 @@ struct SceneFiles {
   std::map<std::string, std::string> captions;
   // The scene each file was made from, as the manifest says (tasks::madeFrom), where it says.
   std::map<std::string, std::string> made_from;
+  // Each video's spin, rad/s, as the manifest says, where it says.
+  std::map<std::string, double> video_spins;
   bool has(const std::string& suffix) const { return by_suffix.count(suffix) > 0; }
   const std::string& at(const std::string& suffix) const { return by_suffix.at(suffix); }
 };
@@ -229,15 +231,25 @@ void writeVideos(std::ostream& out, const SceneFiles& f,
   auto measured = [&](bool preferred) {
     return ccw_preferred ? measuredAs(run, preferred == *ccw_preferred) : std::string();
   };
+  // Which way and how fast a video was spun, as the manifest says: " (clockwise, −5 rad/s)".
+  auto spun = [&](const std::string& file) -> std::string {
+    const auto spin = f.video_spins.find(file);
+    if (spin == f.video_spins.end() || spin->second == 0) return "";
+    char value[32];
+    std::snprintf(value, sizeof value, "%+.3g", spin->second);
+    return std::string(" (") + (spin->second > 0 ? "counter-clockwise" : "clockwise") + ", " +
+           value + " rad/s)";
+  };
   if (f.has("-reversed.mp4") || f.has("-preferred.mp4")) {
     out << "<div class=\"pair\">\n";
     if (f.has("-reversed.mp4"))
       video(f.at("-reversed.mp4"), "-reversed.png",
-            "Spun the <b>reversing</b> way: the theory predicts it rocks, stops and spins back" +
-                measured(false));
+            "Spun the <b>reversing</b> way" + spun(f.at("-reversed.mp4")) +
+                ": the theory predicts it rocks, stops and spins back" + measured(false));
     if (f.has("-preferred.mp4"))
       video(f.at("-preferred.mp4"), "-preferred.png",
-            "Spun the <b>preferred</b> way: the theory predicts it keeps turning" + measured(true));
+            "Spun the <b>preferred</b> way" + spun(f.at("-preferred.mp4")) +
+                ": the theory predicts it keeps turning" + measured(true));
     out << "</div>\n";
   }
   // A body with no preferred direction: its videos are named by their spins.
@@ -250,7 +262,24 @@ void writeVideos(std::ostream& out, const SceneFiles& f,
                   "</b>: the theory prefers neither direction" + measuredAs(run, ccw));
     out << "</div>\n";
   }
-  if (f.has(".mp4")) video(f.at(".mp4"), "-single.png", "The scene as rendered");
+  // A video alone: its spin, which way, what the theory predicts that way and what a run spun
+  // so measured ("The scene as rendered" said none of these; a teacher's trial).
+  if (f.has(".mp4")) {
+    const auto spin = f.video_spins.find(f.at(".mp4"));
+    std::string caption = "The scene as rendered";
+    if (spin != f.video_spins.end() && spin->second != 0) {
+      const bool ccw = spin->second > 0;
+      char value[32];
+      std::snprintf(value, sizeof value, "%+.3g", spin->second);
+      caption = std::string("Spun <b>") + (ccw ? "counter-clockwise" : "clockwise") + "</b> (" +
+                value + " rad/s)";
+      if (ccw_preferred)
+        caption += ccw == *ccw_preferred ? ": the theory predicts it keeps turning"
+                                         : ": the theory predicts it rocks, stops and spins back";
+      caption += measuredAs(run, ccw);
+    }
+    video(f.at(".mp4"), "-single.png", caption);
+  }
   if (f.has("-both.mp4"))
     out << "<p><a href=\"" << url(f.at("-both.mp4"))
         << "\">Both side by side in one video</a></p>\n";
@@ -509,6 +538,7 @@ std::set<std::string> placeListed(const fs::path& dir, Folder& folder) {
   for (const OutputEntry& e : entries) {
     if (!fs::is_regular_file(dir / e.file, ec)) continue;  // since removed
     if (e.kind == OutputKind::Still) folder.scenes[e.scene].captions[e.file] = stillCaption(e);
+    if (e.kind == OutputKind::Video && e.spin) folder.scenes[e.scene].video_spins[e.file] = *e.spin;
     if (!e.made_from.empty()) folder.scenes[e.scene].made_from[e.file] = e.made_from;
     if (e.kind == OutputKind::Telemetry) {
       runs[e.scene].push_back(e.file);

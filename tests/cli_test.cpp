@@ -1950,13 +1950,46 @@ TEST(Cli, ReportCaptionsSayWhatIsPredictedAndWhatWasMeasured) {
   EXPECT_EQ(said[0].find("measured"), std::string::npos) << said[0];
   EXPECT_NE(said[1].find("no reversal in 1 s"), std::string::npos) << said[1];
 
+  // The pair's captions give each video's spin as the manifest lists it, and a video alone is
+  // captioned as the pair's are, by its spin ("The scene as rendered" said neither which way
+  // nor what happened; a teacher's trial).
+  std::ofstream(dir / "rattleback.mp4");
+  nlohmann::json manifest = nlohmann::json::parse(std::ifstream(dir / "rattleback-manifest.json"));
+  for (const auto& [file, role, spin] : {std::tuple{"rattleback.mp4", "single", -5.0},
+                                         {"rattleback-reversed.mp4", "reversed", -5.0},
+                                         {"rattleback-preferred.mp4", "preferred", 5.0}})
+    manifest["outputs"].push_back({{"file", file},
+                                   {"kind", "video"},
+                                   {"role", role},
+                                   {"scene", "rattleback"},
+                                   {"spin", spin},
+                                   {"t", nullptr}});
+  std::ofstream(dir / "rattleback-manifest.json") << manifest.dump(1);
+  ASSERT_EQ(
+      rattleback("simulate " + scene("rattleback") + " --spin -5 --duration 3 -q -o " + csv).status,
+      0);
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  said = captions(page);
+  ASSERT_EQ(said.size(), 3u);
+  EXPECT_NE(said[0].find("Spun the <b>reversing</b> way (clockwise, -5 rad/s): the theory"),
+            std::string::npos)
+      << said[0];
+  EXPECT_NE(said[1].find("Spun the <b>preferred</b> way (counter-clockwise, +5 rad/s): the"),
+            std::string::npos)
+      << said[1];
+  EXPECT_NE(said[2].find("Spun <b>clockwise</b> (-5 rad/s): the theory predicts it rocks, stops "
+                         "and spins back<br>measured (<code>simulate</code>, -5 rad/s): <b>" +
+                         std::string(reversal)),
+            std::string::npos)
+      << said[2];
+
   // Files the report did not write, of the wrong shape: a page with "–" where a number would
   // be, not an abort (an array as the sidecar, a number as the preferred direction).
   std::ofstream(csv + ".json") << "[1]";
   std::ofstream(dir / "rattleback-analysis.json") << R"({"preferred": 3, "growth_rates": 1})";
   const Result odd = rattleback("report " + dir.string() + " -q");
   EXPECT_EQ(odd.status, 0) << odd.err;
-  EXPECT_EQ(captions(page).size(), 2u);
+  EXPECT_EQ(captions(page).size(), 3u);
 }
 
 // A backend from the environment that is not one is named as the environment's, not as an
