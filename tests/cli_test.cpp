@@ -630,6 +630,15 @@ TEST(Cli, SimulatePlotsTheFourFigures) {
       }
     }
     EXPECT_GT(columns, 500) << png << ": no curve across the plot";
+    // Rolling has no floor springs: the energy figure has no fourth line (gnuplot's fourth
+    // colour, orange #e69f00) of elastic energy, all zeros (a teacher's trial).
+    if (std::string(what) == "energy") {
+      std::size_t orange = 0;
+      for (std::size_t i = 0; i + 3 < image.rgba.size(); i += 4)
+        orange += std::abs(image.rgba[i] - 0xe6) < 20 && std::abs(image.rgba[i + 1] - 0x9f) < 20 &&
+                  image.rgba[i + 2] < 40;
+      EXPECT_EQ(orange, 0u) << png << ": a line of elastic energy under rolling";
+    }
   }
   // A --plot folder that cannot be made: one line, exit 2, and no telemetry either.
   const fs::path csv = tempFile("none.csv");
