@@ -569,6 +569,38 @@ TEST(Cli, AStoppedRunExitsThreeNamesWhenAndWhyAndKeepsTheOldOutput) {
   EXPECT_FALSE(fs::exists(scratchDir() / "fast.mp4"));
 }
 
+namespace {
+
+// The columns of a figure holding gnuplot's first colour, dark violet #9400d3 (r and b well
+// above g): how far across it the first series is drawn.
+int violetColumns(const render::Image& image) {
+  int columns = 0;
+  for (int x = 0; x < image.width; ++x)
+    for (int y = 0; y < image.height; ++y) {
+      const unsigned char* p = &image.rgba[4 * (static_cast<std::size_t>(y) * image.width + x)];
+      if (p[0] - p[1] > 60 && p[2] - p[1] > 60) {
+        ++columns;
+        break;
+      }
+    }
+  return columns;
+}
+
+// `sweep` of the default scene for 4 s along `axes` (the lines of its vary:) with --plot into
+// `dir`: the figure.
+render::Image sweepFigure(const fs::path& dir, const std::string& axes) {
+  const fs::path sweep = dir / "s.yaml", png = dir / "s.png";
+  std::ofstream(sweep) << "base: " << scene("rattleback") << "\nduration: 4\nvary:\n" << axes;
+  const Result r = rattleback("sweep " + sweep.string() + " -q -o " + (dir / "s.csv").string() +
+                              " --plot " + png.string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  render::Image image;
+  EXPECT_TRUE(render::readPng(png.string(), image).ok()) << png;
+  return image;
+}
+
+}  // namespace
+
 // Ctrl-C while the figures are drawn keeps the table, which was written before them: it is said
 // (with -q too), the exit status is 130, and the table is in the folder's manifest (it was not:
 // the report then placed it by its name alone; a teacher's trial). The signal is sent as soon as
@@ -619,17 +651,7 @@ TEST(Cli, SimulatePlotsTheFourFigures) {
     // columns that hold violet pixels (r and b well above g). The curve runs across the plot
     // area (measured 690–891 of 1000 columns); the legend's sample line alone is ~40, and axes
     // without a curve have none.
-    int columns = 0;
-    for (int x = 0; x < image.width; ++x) {
-      for (int y = 0; y < image.height; ++y) {
-        const unsigned char* p = &image.rgba[4 * (static_cast<std::size_t>(y) * image.width + x)];
-        if (p[0] - p[1] > 60 && p[2] - p[1] > 60) {
-          ++columns;
-          break;
-        }
-      }
-    }
-    EXPECT_GT(columns, 500) << png << ": no curve across the plot";
+    EXPECT_GT(violetColumns(image), 500) << png << ": no curve across the plot";
     // Rolling has no floor springs: the energy figure has no fourth line (gnuplot's fourth
     // colour, orange #e69f00) of elastic energy, all zeros (a teacher's trial).
     if (std::string(what) == "energy") {
@@ -1717,25 +1739,11 @@ TEST(Plot, AnAxisOfOneValueIsNotDrawnAsASideOfGrey) {
   fs::create_directories(dir);
   const std::string spin = "  initial.spin: [-5, -4, -3]\n", drag = "  contact.air_drag: [0.0]\n";
   for (const std::string& axes : {spin + drag, drag + spin}) {
-    const fs::path sweep = dir / "one.yaml", png = dir / "one.png";
-    std::ofstream(sweep) << "base: " << scene("rattleback") << "\nduration: 4\nvary:\n" << axes;
-    const Result r = rattleback("sweep " + sweep.string() + " -q -o " + (dir / "one.csv").string() +
-                                " --plot " + png.string());
-    ASSERT_EQ(r.status, 0) << r.err;
-    render::Image image;
-    ASSERT_TRUE(render::readPng(png.string(), image).ok()) << png;
-    int columns = 0;
+    const render::Image image = sweepFigure(dir, axes);
     std::size_t grey = 0;
-    for (int x = 0; x < image.width; ++x) {
-      bool violet = false;
-      for (int y = 0; y < image.height; ++y) {
-        const unsigned char* p = &image.rgba[4 * (static_cast<std::size_t>(y) * image.width + x)];
-        violet = violet || (p[0] - p[1] > 60 && p[2] - p[1] > 60);
-        grey += p[0] == 0xc8 && p[1] == 0xc8 && p[2] == 0xc8;
-      }
-      columns += violet;
-    }
-    EXPECT_GT(columns, 400) << axes << ": no curve across the plot";
+    for (std::size_t i = 0; i + 3 < image.rgba.size(); i += 4)
+      grey += image.rgba[i] == 0xc8 && image.rgba[i + 1] == 0xc8 && image.rgba[i + 2] == 0xc8;
+    EXPECT_GT(violetColumns(image), 400) << axes << ": no curve across the plot";
     EXPECT_LT(grey, image.rgba.size() / 4 / 100) << axes << ": grey, as for no value";
   }
 }
@@ -1749,23 +1757,7 @@ TEST(Plot, ALinePlotSpansItsAxisWhereRunsDidNotReverse) {
   const fs::path dir = scratchDir() / "spans";
   fs::remove_all(dir);
   fs::create_directories(dir);
-  const fs::path sweep = dir / "s.yaml", png = dir / "s.png";
-  std::ofstream(sweep) << "base: " << scene("rattleback")
-                       << "\nduration: 4\nvary:\n  initial.spin: [-6, -4, 4, 6]\n";
-  const Result r = rattleback("sweep " + sweep.string() + " -q -o " + (dir / "s.csv").string() +
-                              " --plot " + png.string());
-  ASSERT_EQ(r.status, 0) << r.err;
-  render::Image image;
-  ASSERT_TRUE(render::readPng(png.string(), image).ok()) << png;
-  int columns = 0;
-  for (int x = 0; x < image.width; ++x)
-    for (int y = 0; y < image.height; ++y) {
-      const unsigned char* p = &image.rgba[4 * (static_cast<std::size_t>(y) * image.width + x)];
-      if (p[0] - p[1] > 60 && p[2] - p[1] > 60) {
-        ++columns;
-        break;
-      }
-    }
+  const int columns = violetColumns(sweepFigure(dir, "  initial.spin: [-6, -4, 4, 6]\n"));
   EXPECT_GT(columns, 60) << "no curve";
   EXPECT_LT(columns, 250) << "the curve spans the plot: the axis is the points'";
 }

@@ -55,6 +55,18 @@ Outcome rattleback(const fs::path& dir, const std::string& args) {
 
 const std::string kBase = std::string(RATTLEBACK_SOURCE_DIR) + "/scenes/rattleback.yaml";
 
+// Starts `command` in a process of its own, its standard error into `err`; its pid (−1 when
+// fork failed), for the signal a test sends it.
+pid_t startInBackground(const std::string& command, const fs::path& err) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    execl("/bin/sh", "sh", "-c", ("exec " + command + " 2>" + err.string()).c_str(),
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  return pid;
+}
+
 fs::path writeSweep(const fs::path& dir, const std::string& text) {
   const fs::path path = dir / "sweep.yaml";
   std::ofstream(path) << text;
@@ -415,13 +427,8 @@ TEST(Sweep, AnInterruptKeepsTheFinishedRowsAndResumeCompletesThem) {
   const fs::path table = dir / "t.csv";
   const std::string command =
       std::string(RATTLEBACK_BIN) + " sweep " + sweep.string() + " -q -j 1 -o " + table.string();
-  const pid_t pid = fork();
+  const pid_t pid = startInBackground(command, dir / "stderr");
   ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    execl("/bin/sh", "sh", "-c", ("exec " + command + " 2>" + (dir / "stderr").string()).c_str(),
-          static_cast<char*>(nullptr));
-    _exit(127);
-  }
   // Wait until some rows are in the journal, then interrupt.
   const fs::path journal = table.string() + ".partial";
   for (int i = 0; i < 400; ++i) {
@@ -475,13 +482,8 @@ TEST(Sweep, AnInterruptBeforeAnyRunFinishedLeavesNoJournal) {
   const fs::path table = dir / "t.csv", journal = table.string() + ".partial";
   const std::string command =
       std::string(RATTLEBACK_BIN) + " sweep " + sweep.string() + " -j 1 -o " + table.string();
-  const pid_t pid = fork();
+  const pid_t pid = startInBackground(command, dir / "stderr");
   ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    execl("/bin/sh", "sh", "-c", ("exec " + command + " 2>" + (dir / "stderr").string()).c_str(),
-          static_cast<char*>(nullptr));
-    _exit(127);
-  }
   for (int i = 0; i < 400 && !fs::exists(journal); ++i)  // the runs have begun
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   EXPECT_TRUE(fs::exists(journal));

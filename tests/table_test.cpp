@@ -178,15 +178,31 @@ TEST(Numbers, TelemetryRowsAreTheSamplesExactly) {
   }
 }
 
+// A stable scene's 0.1 s sampled at 100 kHz: 10,001 rows, three chunks of 4,096 and a rest.
+static std::pair<sim::Model, testing_support::Recorded> tenThousandRows() {
+  using namespace testing_support;
+  sim::SceneSpec spec = parse(kStableScene);
+  spec.simulation.duration = 0.1;
+  sim::Model model = build(spec);
+  Recorded run = record(model, 1e-5);
+  return {std::move(model), std::move(run)};
+}
+
+// The file at `path` holds `expected` byte for byte; then it and its sidecar are removed.
+static void expectTheFileHolds(const std::string& path, const std::string& expected) {
+  std::stringstream written;
+  written << std::ifstream(path).rdbuf();
+  EXPECT_TRUE(written.str() == expected);  // (not EXPECT_EQ: 3 MB of text on a failure)
+  EXPECT_EQ(written.str().size(), expected.size());
+  std::filesystem::remove(path);
+  std::filesystem::remove(path + ".json");
+}
+
 // The CSV is formatted in chunks of rows on threads of their own and written in order: the
 // file is the header and every row as writeTelemetryRow writes it, in time order, across chunk
 // boundaries (10,001 rows: three chunks of 4,096 and a rest).
 TEST(Numbers, AChunkedCsvIsTheRowsInOrder) {
-  using namespace testing_support;
-  sim::SceneSpec spec = parse(kStableScene);
-  spec.simulation.duration = 0.1;
-  const sim::Model model = build(spec);
-  const Recorded run = record(model, 1e-5);
+  const auto [model, run] = tenThousandRows();
   ASSERT_EQ(run.samples.size(), 10001u);
   const std::string path =
       (std::filesystem::temp_directory_path() / "rattleback-chunked.csv").string();
@@ -194,24 +210,14 @@ TEST(Numbers, AChunkedCsvIsTheRowsInOrder) {
   std::ostringstream expected;
   expected << tasks::telemetryHeader();
   for (const sim::Telemetry& s : run.samples) tasks::writeTelemetryRow(expected, s);
-  std::ifstream in(path);
-  std::stringstream written;
-  written << in.rdbuf();
-  EXPECT_TRUE(written.str() == expected.str());
-  EXPECT_EQ(written.str().size(), expected.str().size());
-  std::filesystem::remove(path);
-  std::filesystem::remove(path + ".json");
+  expectTheFileHolds(path, expected.str());
 }
 
 // Python's to_csv on Ctrl-C: the writing stops between chunks, nothing is put in place, and the
 // file that was there stays as it was, its sidecar too (it had finished, replaced the file and
 // only then raised KeyboardInterrupt: a researcher's trial).
 TEST(Numbers, AWriteStoppedPutsNothingInPlace) {
-  using namespace testing_support;
-  sim::SceneSpec spec = parse(kStableScene);
-  spec.simulation.duration = 0.1;
-  const sim::Model model = build(spec);
-  const Recorded run = record(model, 1e-5);  // 10,001 rows: three chunks and a rest
+  const auto [model, run] = tenThousandRows();
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / "rattleback-stopped-write";
   std::filesystem::remove_all(dir);
@@ -237,9 +243,7 @@ TEST(Numbers, AWriteStoppedPutsNothingInPlace) {
   std::ostringstream expected;
   expected << tasks::telemetryHeader();
   for (const sim::Telemetry& s : run.samples) tasks::writeTelemetryRow(expected, s);
-  std::stringstream written;
-  written << std::ifstream(path).rdbuf();
-  EXPECT_TRUE(written.str() == expected.str());
+  expectTheFileHolds(path, expected.str());
   std::filesystem::remove_all(dir);
 }
 
@@ -247,11 +251,7 @@ TEST(Numbers, AWriteStoppedPutsNothingInPlace) {
 // chunks while more come, and write them in order (40,004 rows: ten chunks, more than are let
 // wait at once, so that the caller's thread helps too).
 TEST(Numbers, ACsvWrittenAsTheRunGoesIsTheRowsInOrder) {
-  using namespace testing_support;
-  sim::SceneSpec spec = parse(kStableScene);
-  spec.simulation.duration = 0.1;
-  const sim::Model model = build(spec);
-  const Recorded run = record(model, 1e-5);
+  const auto [model, run] = tenThousandRows();
   const std::string path =
       (std::filesystem::temp_directory_path() / "rattleback-as-it-goes.csv").string();
   auto writer = tasks::TelemetryWriter::open(path);
@@ -265,11 +265,5 @@ TEST(Numbers, ACsvWrittenAsTheRunGoesIsTheRowsInOrder) {
     }
   ASSERT_EQ(writer->rows(), 40004);
   ASSERT_TRUE(writer->commit({"s.yaml", {}}, model, 1e5, run.summary));
-  std::ifstream in(path);
-  std::stringstream written;
-  written << in.rdbuf();
-  EXPECT_TRUE(written.str() == expected.str());
-  EXPECT_EQ(written.str().size(), expected.str().size());
-  std::filesystem::remove(path);
-  std::filesystem::remove(path + ".json");
+  expectTheFileHolds(path, expected.str());
 }
