@@ -280,7 +280,7 @@ void writePanel(std::ostream& script, const Panel& panel, bool titled, const fs:
   }
   if (clauses.empty()) {
     script << "unset logscale\nset label 1 'no data' at graph 0.5, graph 0.5 center\n"
-           << "plot [0:1][0:1] NaN notitle\nunset label 1\nunset label 90\n";
+           << "plot [0:1][0:1] NaN notitle\nunset label 1\nunset label 90\nunset bmargin\n";
     return;
   }
   // Each mark's label right of its line, or left of one in the last fifth of the data's x
