@@ -232,13 +232,16 @@ void writeVideos(std::ostream& out, const SceneFiles& f,
     return ccw_preferred ? measuredAs(run, preferred == *ccw_preferred) : std::string();
   };
   // Which way and how fast a video was spun, as the manifest says: " (clockwise, −5 rad/s)".
-  auto spun = [&](const std::string& file) -> std::string {
+  // A video's spin as the manifest lists it: none where it does not (or says 0).
+  auto spinOf = [&](const std::string& file) -> std::optional<double> {
     const auto spin = f.video_spins.find(file);
-    if (spin == f.video_spins.end() || spin->second == 0) return "";
-    char value[32];
-    std::snprintf(value, sizeof value, "%+.3g", spin->second);
-    return std::string(" (") + (spin->second > 0 ? "counter-clockwise" : "clockwise") + ", " +
-           value + " rad/s)";
+    if (spin == f.video_spins.end() || spin->second == 0) return std::nullopt;
+    return spin->second;
+  };
+  auto rads = [](double spin) { return number(spin, "%+.3g") + " rad/s"; };
+  auto spun = [&](const std::string& file) {
+    const auto spin = spinOf(file);
+    return spin ? " (" + spinWords(*spin) + ", " + rads(*spin) + ")" : std::string();
   };
   if (f.has("-reversed.mp4") || f.has("-preferred.mp4")) {
     out << "<div class=\"pair\">\n";
@@ -265,14 +268,10 @@ void writeVideos(std::ostream& out, const SceneFiles& f,
   // A video alone: its spin, which way, what the theory predicts that way and what a run spun
   // so measured ("The scene as rendered" said none of these; a teacher's trial).
   if (f.has(".mp4")) {
-    const auto spin = f.video_spins.find(f.at(".mp4"));
     std::string caption = "The scene as rendered";
-    if (spin != f.video_spins.end() && spin->second != 0) {
-      const bool ccw = spin->second > 0;
-      char value[32];
-      std::snprintf(value, sizeof value, "%+.3g", spin->second);
-      caption = std::string("Spun <b>") + (ccw ? "counter-clockwise" : "clockwise") + "</b> (" +
-                value + " rad/s)";
+    if (const auto spin = spinOf(f.at(".mp4"))) {
+      const bool ccw = *spin > 0;
+      caption = "Spun <b>" + spinWords(*spin) + "</b> (" + rads(*spin) + ")";
       if (ccw_preferred)
         caption += ccw == *ccw_preferred ? ": the theory predicts it keeps turning"
                                          : ": the theory predicts it rocks, stops and spins back";

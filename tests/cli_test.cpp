@@ -1924,17 +1924,21 @@ TEST(Cli, ReportCaptionsSayWhatIsPredictedAndWhatWasMeasured) {
   std::ofstream(dir / "rattleback-preferred.mp4");
   const std::string csv = (dir / "rattleback.csv").string();
   const std::string page = (dir / "index.html").string();
+  // simulate spun so, then the report: its videos' captions.
+  const auto runAndReport = [&](const std::string& spin_and_duration) {
+    EXPECT_EQ(
+        rattleback("simulate " + scene("rattleback") + spin_and_duration + " -q -o " + csv).status,
+        0);
+    EXPECT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+    return captions(page);
+  };
 
-  ASSERT_EQ(
-      rattleback("simulate " + scene("rattleback") + " --spin -5 --duration 3 -q -o " + csv).status,
-      0);
+  auto said = runAndReport(" --spin -5 --duration 3");
   const nlohmann::json run = nlohmann::json::parse(std::ifstream(csv + ".json"));
   ASSERT_TRUE(run["result"]["first_reversal_s"].is_number());
   char reversal[32];
   std::snprintf(reversal, sizeof reversal, "reversed at %.3f s",
                 run["result"]["first_reversal_s"].get<double>());
-  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
-  auto said = captions(page);
   ASSERT_EQ(said.size(), 2u);
   EXPECT_NE(said[0].find("reversing"), std::string::npos) << said[0];
   EXPECT_NE(said[0].find("predicts it rocks, stops and spins back"), std::string::npos);
@@ -1942,11 +1946,7 @@ TEST(Cli, ReportCaptionsSayWhatIsPredictedAndWhatWasMeasured) {
   EXPECT_NE(said[1].find("predicts it keeps turning"), std::string::npos) << said[1];
   EXPECT_EQ(said[1].find("measured"), std::string::npos) << said[1];
 
-  ASSERT_EQ(
-      rattleback("simulate " + scene("rattleback") + " --spin 5 --duration 1 -q -o " + csv).status,
-      0);
-  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
-  said = captions(page);
+  said = runAndReport(" --spin 5 --duration 1");
   ASSERT_EQ(said.size(), 2u);
   EXPECT_EQ(said[0].find("measured"), std::string::npos) << said[0];
   EXPECT_NE(said[1].find("no reversal in 1 s"), std::string::npos) << said[1];
@@ -1966,11 +1966,7 @@ TEST(Cli, ReportCaptionsSayWhatIsPredictedAndWhatWasMeasured) {
                                    {"spin", spin},
                                    {"t", nullptr}});
   std::ofstream(dir / "rattleback-manifest.json") << manifest.dump(1);
-  ASSERT_EQ(
-      rattleback("simulate " + scene("rattleback") + " --spin -5 --duration 3 -q -o " + csv).status,
-      0);
-  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
-  said = captions(page);
+  said = runAndReport(" --spin -5 --duration 3");
   ASSERT_EQ(said.size(), 3u);
   EXPECT_NE(said[0].find("Spun the <b>reversing</b> way (clockwise, -5 rad/s): the theory"),
             std::string::npos)
