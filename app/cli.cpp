@@ -1,8 +1,11 @@
 #include "app/cli.hpp"
 
 #include <array>
+#include <cerrno>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <iostream>
@@ -347,7 +350,19 @@ int runGuarded(Cli& cli) {
   // trial: exit 153 and a .NAME.part-PID beside the video). Python ignores it likewise.
   std::signal(SIGXFSZ, SIG_IGN);
   try {
-    return cli.run();
+    const int status = cli.run();
+    // What went to standard output (analyze's text, --emit's script) reached it, or the command
+    // failed: `analyze > /dev/full` and `sweep --emit parallel >&-` had exited 0 having written
+    // nothing (a CI engineer's trial), so `… | parallel` on a full disk "succeeded".
+    errno = 0;
+    const bool flushed = std::fflush(stdout) == 0;
+    const int error = errno;
+    if (status == kOk && (!flushed || std::ferror(stdout) || !std::cout)) {
+      std::cerr << "rattleback: " << cli.chosen().name << ": cannot write standard output"
+                << (error ? std::string(" (") + std::strerror(error) + ")" : std::string()) << "\n";
+      return kMachine;
+    }
+    return status;
   } catch (const std::bad_alloc&) {
     std::cerr << "rattleback: " << cli.chosen().name << ": out of memory\n";
   } catch (const std::exception& e) {

@@ -159,6 +159,11 @@ std::vector<std::int64_t> shardRows(const scene::Sweep& sweep, const std::option
 }
 
 rb::Status checkTableIsAFile(const std::string& output) {
+  // `-` is standard output to simulate and analyze; here it had made files named - and -.json.
+  if (output == "-")
+    return rb::Status::fail(
+        "-o -: a sweep's table is a file (its journal is written beside it as the runs finish), "
+        "not standard output; give -o FILE.csv");
   if (rb::outputPlace(output).temporary.empty())
     return rb::Status::fail(output + ": a sweep's table is a file (its sidecar " + output +
                             ".json and its journal go beside it), not a device or pipe");
@@ -258,10 +263,23 @@ rb::Result<Merged> mergeShards(const std::vector<std::string>& shards) {
   for (const std::string& path : shards) {
     auto meta = readShardSidecar(path);
     if (!meta) return meta.error();
-    if (first &&
-        ((*first)["sweep"] != meta.value()["sweep"] || (*first)["axes"] != meta.value()["axes"]))
-      return rb::Error{"", path + ": from another sweep than " + shards.front() + " (" +
-                               meta.value().value("sweep", "?") + ")"};
+    if (first) {
+      // One sweep is one content: shards run from the sweep file by different paths (sw.yaml,
+      // /abs/sw.yaml, ../sw.yaml) are one sweep, and shards run after an edit (a duration, a
+      // mass) are two, whose rows must not be mixed (a CI engineer's trial). Shards written
+      // before the fingerprint was kept are told apart by path, as they were.
+      const nlohmann::json &print = (*first)["fingerprint"], &mine = meta.value()["fingerprint"];
+      const bool printed = print.is_string() && mine.is_string();
+      if (printed && print != mine)
+        return rb::Error{"", path + ": its sweep file or base scene was not as when " +
+                                 shards.front() +
+                                 " ran (their contents differ); run every shard from the same "
+                                 "files"};
+      if ((!printed && (*first)["sweep"] != meta.value()["sweep"]) ||
+          (*first)["axes"] != meta.value()["axes"])
+        return rb::Error{"", path + ": from another sweep than " + shards.front() + " (" +
+                                 meta.value().value("sweep", "?") + ")"};
+    }
     if (!first) first = meta.value();
     if (auto ok = readShardRows(path, head, rows, shards.front()); !ok) return ok.error();
   }
@@ -301,13 +319,19 @@ nlohmann::json sweepSidecar(const scene::Sweep& sweep, const std::optional<Shard
   nlohmann::json sidecar;
   sidecar["program"] = "rattleback " RATTLEBACK_VERSION;
   sidecar["command"] = "sweep";
-  sidecar["sweep"] = sweep.file;
   // Absolute, as a run's scene_path is (it was relative to the folder the sweep ran from, which
-  // the sidecar does not say: a researcher's trial); a base with no file (Python's) as named.
-  std::error_code ec;
-  const bool file = !sweep.base.empty() && fs::is_regular_file(sweep.base, ec);
-  const fs::path absolute = file ? fs::absolute(sweep.base, ec) : fs::path();
-  sidecar["base"] = file && !ec ? absolute.lexically_normal().string() : sweep.base;
+  // the sidecar does not say: a researcher's trial); a base or sweep with no file (Python's) as
+  // named.
+  const auto absoluteIfFile = [](const std::string& path) {
+    std::error_code ec;
+    if (path.empty() || !fs::is_regular_file(path, ec)) return path;
+    const fs::path whole = fs::absolute(path, ec);
+    return ec ? path : whole.lexically_normal().string();
+  };
+  sidecar["sweep"] = absoluteIfFile(sweep.file);
+  sidecar["base"] = absoluteIfFile(sweep.base);
+  // The content it ran (the sweep file and its base scene): what sweep merge compares.
+  sidecar["fingerprint"] = sweepFingerprint(sweep);
   sidecar["base_as_written"] = sweep.base_as_written;
   // The rows of this table: a shard's own (rows I, I + N, … of the sweep's), as `rows` of a
   // run's sidecar counts the rows of its CSV; the sweep's are the product of the axes' sizes.

@@ -942,8 +942,27 @@ TEST(Cli, TheMachinesFailuresExitFourNotTwo) {
   const Result full = rattleback(run + "/dev/full");
   EXPECT_EQ(full.status, 4) << full.err;
   EXPECT_EQ(full.err, "/dev/full: writing failed: No space left on device\n");
+  // What goes to standard output fails as a file does: `analyze > /dev/full` and `--emit`'s
+  // script into a closed descriptor had exited 0 with nothing written (a CI engineer's trial:
+  // `… --emit parallel | parallel` on a full disk "succeeded").
+  const fs::path err = tempFile("limited.err");
+  for (const auto& [args, redirect, reason] :
+       {std::tuple{"analyze " + scene("rattleback"), ">/dev/full", "No space left on device"},
+        std::tuple{"analyze --json " + scene("rattleback"), ">&-", "Bad file descriptor"},
+        std::tuple{"sweep " + std::string(RATTLEBACK_SOURCE_DIR) +
+                       "/sweeps/dents.yaml --emit parallel --shards 2 -o " +
+                       (scratchDir() / "d.csv").string(),
+                   ">/dev/full", "No space left on device"}}) {
+    const std::string command =
+        std::string(RATTLEBACK_BIN) + " " + args + " " + redirect + " 2>" + err.string();
+    const int raw = std::system(command.c_str());
+    EXPECT_EQ(WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, 4) << args;
+    EXPECT_NE(readText(err).find("cannot write standard output (" + std::string(reason) + ")"),
+              std::string::npos)
+        << readText(err);
+  }
   const fs::path limits = emptyDir("limits");
-  const fs::path big = limits / "limited.csv", err = tempFile("limited.err");
+  const fs::path big = limits / "limited.csv";
   const std::string limited = "ulimit -f 20; " + std::string(RATTLEBACK_BIN) + " " + run +
                               big.string() + " --rate 10000 2>" + err.string();
   const int raw = std::system(limited.c_str());

@@ -573,6 +573,45 @@ TEST(Sweep, TheMergeRefusesAMissingOrRepeatedRow) {
   EXPECT_FALSE(fs::exists(dir / "out.csv.partial"));
 }
 
+// A sweep is its content: shards run from one sweep file by different paths merge, shards run
+// after an edit to the sweep or its base scene are refused (their rows had been mixed, exit 0: a
+// CI engineer's trial), and the merged table may not be one of its shards.
+TEST(Sweep, TheMergeTellsSweepsApartByTheirContent) {
+  const fs::path dir = fs::weakly_canonical(scratch());
+  const fs::path sweep = writeSweep(dir, smallSweep());
+  fs::create_directories(dir / "sub");
+  const std::string s0 = (dir / "s0.csv").string(), s1 = (dir / "s1.csv").string();
+  ASSERT_EQ(rattleback(dir, "sweep " + sweep.string() + " -q --shard 0/2 -o " + s0).status, 0);
+  const std::string from_sub = "cd " + (dir / "sub").string() + " && " + RATTLEBACK_BIN +
+                               " sweep ../sweep.yaml -q --shard 1/2 -o " + s1;
+  ASSERT_EQ(std::system(from_sub.c_str()), 0);
+  const Outcome same =
+      rattleback(dir, "sweep merge -q " + (dir / "m.csv").string() + " " + s0 + " " + s1);
+  EXPECT_EQ(same.status, 0) << same.err;
+  std::string text = slurp(sweep);
+  text.replace(text.find("duration:"), std::string("duration:").size(), "duration: 0.2 #");
+  std::ofstream(sweep) << text;
+  ASSERT_EQ(rattleback(dir, "sweep " + sweep.string() + " -q --shard 1/2 -o " + s1).status, 0);
+  const Outcome edited =
+      rattleback(dir, "sweep merge -q " + (dir / "e.csv").string() + " " + s0 + " " + s1);
+  EXPECT_EQ(edited.status, 2);
+  EXPECT_NE(edited.err.find(s1 + ": its sweep file or base scene was not as when " + s0 + " ran"),
+            std::string::npos)
+      << edited.err;
+  EXPECT_FALSE(fs::exists(dir / "e.csv"));
+  const std::string before = slurp(s0);
+  const Outcome over = rattleback(dir, "sweep merge -q " + s0 + " " + s0 + " " + s1);
+  EXPECT_EQ(over.status, 2);
+  EXPECT_NE(over.err.find("is one of the shards given"), std::string::npos) << over.err;
+  EXPECT_EQ(slurp(s0), before);
+  // `-o -` is standard output to simulate; a sweep had made files named - and -.json.
+  const std::string dash = "cd " + (dir / "sub").string() + " && " + RATTLEBACK_BIN + " sweep " +
+                           sweep.string() + " -q -o - 2>/dev/null";
+  const int raw = std::system(dash.c_str());
+  EXPECT_EQ(WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, 2);
+  EXPECT_TRUE(fs::is_empty(dir / "sub"));
+}
+
 // The sidecar's base is the base scene's absolute path, wherever the sweep ran from, beside the
 // path as the sweep file writes it (it was relative to the folder the sweep ran from, which the
 // sidecar does not say: "../mine.yaml", a researcher's trial).
