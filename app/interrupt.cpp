@@ -27,8 +27,15 @@ void installInterruptHandlers() {
   struct sigaction action {};
   action.sa_handler = onSignal;
   sigemptyset(&action.sa_mask);
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
+  // A signal the program was started ignoring stays ignored: a shell starts a script's
+  // background jobs (`rattleback … &`) with SIGINT ignored, so that the terminal's Ctrl-C stops
+  // the script and not them (POSIX's "asynchronous lists"), as Python's rattleback and most
+  // tools keep it (a CI engineer's trial).
+  for (const int signal : {SIGINT, SIGTERM}) {
+    struct sigaction before {};
+    if (sigaction(signal, nullptr, &before) == 0 && before.sa_handler == SIG_IGN) continue;
+    sigaction(signal, &action, nullptr);
+  }
 }
 
 int interruptSignal() {

@@ -51,6 +51,9 @@ echo "== telemetry and analysis"
 # The scenes side by side (the seed's two, with their checks, take most of it); any failure fails
 # the job.
 pids=()
+# Background jobs of a script start with SIGINT ignored (POSIX), and rattleback keeps it so: the
+# terminal's Ctrl-C stops this script, which stops them (SIGTERM: each keeps its old output).
+trap 'kill -TERM "${pids[@]}" 2>/dev/null; wait; exit 130' INT
 for scene in seed-flip-cw seed-flip-ccw rattleback kane-levinson kane-levinson-long; do
   (
     "$rb" analyze "scenes/$scene.yaml" -o "$out/$scene-analysis.txt"
@@ -60,6 +63,7 @@ for scene in seed-flip-cw seed-flip-ccw rattleback kane-levinson kane-levinson-l
   pids+=($!)
 done
 for pid in "${pids[@]}"; do wait "$pid"; done
+trap - INT
 
 echo "== sweeps on every core: reversal time against spin and drag, and against the dents"
 "$rb" sweep sweeps/spin-drag.yaml -o "$out/spin-drag.csv" --plot "$out/spin-drag.png" -q

@@ -417,6 +417,38 @@ TEST(Sweep, AStoppedRowKeepsItsLargestTilt) {
   EXPECT_EQ(rows[2][5], "");  // no final spin
 }
 
+// A sweep started with SIGINT ignored, as a script's background job is (`rattleback sweep … &`:
+// the terminal's Ctrl-C is the script's to stop), keeps ignoring it; SIGTERM still stops it (a
+// CI engineer's trial: it had taken the script's Ctrl-C as its own).
+TEST(Sweep, ASweepStartedIgnoringCtrlCKeepsIgnoringIt) {
+  const fs::path dir = scratch();
+  const fs::path sweep =
+      writeSweep(dir, "base: " + kBase +
+                          "\nvary:\n  initial.spin: {from: -8, to: 8, count: 161}\nduration: 8\n");
+  const fs::path table = dir / "t.csv";
+  const pid_t pid = fork();
+  if (pid == 0) {
+    signal(SIGINT, SIG_IGN);  // kept across exec, as a shell's background job has it
+    const std::string command = std::string("exec ") + RATTLEBACK_BIN + " sweep " + sweep.string() +
+                                " -q -j 1 -o " + table.string() + " 2>/dev/null";
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  ASSERT_GE(pid, 0);
+  const fs::path journal = table.string() + ".partial";
+  for (int i = 0; i < 400 && !fs::exists(journal); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  kill(pid, SIGINT);
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  kill(pid, SIGTERM);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  // 143 for the SIGTERM, or 0 had the sweep finished first; 130 would be the ignored SIGINT's.
+  EXPECT_NE(WEXITSTATUS(status), 130);
+  EXPECT_TRUE(WEXITSTATUS(status) == 143 || WEXITSTATUS(status) == 0) << WEXITSTATUS(status);
+}
+
 // Ctrl-C keeps the finished rows (in OUT.partial) and writes no table; --resume runs the rest,
 // and the table equals an uninterrupted run's.
 TEST(Sweep, AnInterruptKeepsTheFinishedRowsAndResumeCompletesThem) {
