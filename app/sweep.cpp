@@ -407,6 +407,20 @@ int sweepCommand(const SweepArgs& args) {
               << journal_path << "; the same command with --resume runs the rest\n";
     return interruptedStatus();
   }
+  // Not one run made: the sweep's values are the input at fault (a teacher's trial: four rows
+  // refused for a missing contact.stiffness, and exit 0), and bad input writes nothing: a table
+  // of refusals had replaced a good table of that name (a CI engineer's trial).
+  if (!plan->done.empty() && plan->counts["refused"] == static_cast<int>(plan->done.size())) {
+    journal->close();
+    tasks::Journal::remove(journal_path);
+    const auto first = std::find_if(run.rows.begin(), run.rows.end(), [](const auto& row) {
+      return row.status == tasks::RowStatus::Refused;
+    });
+    std::cerr << args.file << ": every run was refused, nothing written"
+              << (first == run.rows.end() ? std::string() : "; the first: " + first->reason)
+              << "\n";
+    return kBadInput;
+  }
   if (auto e = writeOutputs(args, sweep, shard, plan.value(), metric, output.value()); !e)
     return fail(e);
   std::vector<tasks::OutputEntry> entries = {
@@ -416,17 +430,6 @@ int sweepCommand(const SweepArgs& args) {
         {args.plot, tasks::OutputKind::SweepPlot, sceneName(args.file), args.metric, {}, {}});
   record(entries);
   if (!args.quiet) printSummary(args, shard, plan.value(), run, output.value());
-  // Not one run made: the sweep's values are the input at fault (a teacher's trial: four rows
-  // refused for a missing contact.stiffness, and exit 0). The table says why, row by row.
-  if (!plan->done.empty() && plan->counts["refused"] == static_cast<int>(plan->done.size())) {
-    const auto first = std::find_if(run.rows.begin(), run.rows.end(), [](const auto& row) {
-      return row.status == tasks::RowStatus::Refused;
-    });
-    std::cerr << args.file << ": every run was refused"
-              << (first == run.rows.end() ? std::string() : "; the first: " + first->reason)
-              << "\n";
-    return kBadInput;
-  }
   return kOk;
 }
 

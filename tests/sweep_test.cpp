@@ -327,22 +327,27 @@ TEST(Sweep, AnAxisRollingDoesNotUseIsSaidToBe) {
 
 // A sweep whose every run is refused made nothing: its values are the input at fault, exit 2
 // with the first reason (a teacher's trial: contact.model: [auto] without a stiffness refused
-// all four rows, and the command exited 0). The table is written, each row with its reason; one
-// refused row among good ones is the table's business, exit 0 (ABadValueRefusesItsRowOnly).
+// all four rows, and the command exited 0). As bad input, it writes nothing and keeps a table of
+// that name (a table of refusals had replaced it: a CI engineer's trial); one refused row among
+// good ones is the table's business, exit 0 (ABadValueRefusesItsRowOnly).
 TEST(Sweep, ASweepWhoseEveryRunIsRefusedExitsTwo) {
   const fs::path dir = scratch();
   const fs::path sweep = writeSweep(
       dir, "base: " + kBase + "\nvary:\n  contact.air_drag: [-1.0, -2.0]\nduration: 0.1\n");
+  std::ofstream(dir / "t.csv") << "a good table\n";
   const Outcome r =
-      rattleback(dir, "sweep " + sweep.string() + " -q -o " + (dir / "t.csv").string());
+      rattleback(dir, "sweep " + sweep.string() + " -q -o " + (dir / "t.csv").string() +
+                          " --plot " + (dir / "t.png").string());
   EXPECT_EQ(r.status, 2) << r.err;
-  EXPECT_EQ(r.err.rfind(sweep.string() + ": every run was refused; the first: " + sweep.string() +
-                            ":3: contact.air_drag",
+  EXPECT_EQ(r.err.rfind(sweep.string() + ": every run was refused, nothing written; the first: " +
+                            sweep.string() + ":3: contact.air_drag",
                         0),
             0u)
       << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  EXPECT_EQ(readCsv(slurp(dir / "t.csv")).size(), 3u);
+  EXPECT_EQ(slurp(dir / "t.csv"), "a good table\n");
+  for (const char* name : {"t.csv.json", "t.csv.partial", "t.csv.partial.json", "t.png"})
+    EXPECT_FALSE(fs::exists(dir / name)) << name;
 }
 
 // Where some runs are refused, the summary says why (the first), not only how many: a refused
