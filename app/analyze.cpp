@@ -152,9 +152,9 @@ void printTheory(std::FILE* out, const sim::Model& model, double spin, bool give
                  model.duration, spin);
   const std::string stands =
       forecast.range == sim::ForecastRange::Within
-          ? "within its range, where it is within about 3 % of a run"
-          : std::string("beyond its range (0.15 and 0.1), where runs measured it early by ") +
-                tasks::kBeyondRangeEarlyBy;
+          ? "within its range, where it is within about 1.5 % of a run"
+          : std::string("beyond its range (0.15 and 0.1), where runs measured it ") +
+                tasks::kBeyondRangeError;
   std::fprintf(out,
                " (averaged theory, %s; n²ρ/g = %.2g, rocking energy / spin energy = %.2g: %s)\n",
                where, forecast.spin_parameter, forecast.energy_ratio, stands.c_str());

@@ -263,15 +263,21 @@ ReversalForecast forecastFirstReversal(const Model& model, double spin, double h
   out.spin_parameter = modes.spin * modes.spin * rest.radii.maxCoeff() / model.gravity;
   if (!out.applies) return out;
 
-  // The tilt's share in each mode, from the conservative model at rest, where the modes do not
-  // mix: the start has no tilt rate (ω_body lies along the body axis), so each mode starts at
-  // its largest displacement a and its energy is the potential ½ aᵀ K a. (The spin about the
+  // The tilt's share in each mode: the start (the tilt, no tilt rate: ω_body lies along the body
+  // axis) taken apart into the modes of the conservative model spun at n, each mode's energy
+  // the potential ½ aᴴ K a of its displacement a (kinetic and potential alike on average), and
+  // the shares scaled to add up to the tilt's potential energy ½ u0ᵀ K u0, which is what the
+  // averaged equations conserve with ½ C n² (P8.5). Taken apart at rest, where the modes do not
+  // mix, a tilt about one principal axis put next to nothing in the other mode; spun, the modes
+  // mix in proportion to n, and that mode, when it is the growing one (a pitch tilt spun the
+  // preferred way), started some 360× larger than counted (3.6e-5 J against 1.0e-7 J, a 1°
+  // pitch tilt at 4 rad/s): forecasts 23–110 % late (a researcher's trial), now 0.06–9 % late
+  // (docs/physics.md P8.5). (The spin about the
   // tilted axis also starts the CM moving, by n ρ θ; that energy is second order in n and the
-  // theory is first order: counting it made the forecasts worse, 1.82 s against 2.02 s for the
-  // default body spun −5 rad/s without drag, which reverses at 2.32 s.)
+  // theory is first order: counting it made the forecasts worse.)
   Model conservative = asRolling(model);
   conservative.contact.air_drag = 0;
-  const Eigen::Matrix4d J = jacobianAt(conservative, 0).topLeftCorner<4, 4>();
+  const Eigen::Matrix4d J = jacobianAt(conservative, modes.spin).topLeftCorner<4, 4>();
   const Eigen::EigenSolver<Eigen::MatrixXd> solver{Eigen::MatrixXd(J)};
   const Eigen::MatrixXcd V = solver.eigenvectors();
   const Eigen::VectorXcd start = Eigen::Vector4cd(u0.x(), u0.y(), 0, 0);
@@ -298,6 +304,14 @@ ReversalForecast forecastFirstReversal(const Model& model, double spin, double h
   (low_is_roll ? modes.roll : modes.pitch).energy = oscillations[0].second;
   (low_is_roll ? modes.pitch : modes.roll).energy = oscillations[1].second;
   out.tilt_energy = 0.5 * u0.head<2>().dot(K * u0.head<2>());
+  // (Spun, the modes are not orthogonal in K: their energies add up to more than the tilt's,
+  // 1.6× for a 1° pitch tilt at n²ρ/g = 0.65, the difference in the cross terms, which average
+  // out as the modes drift apart.)
+  const double shared = modes.roll.energy + modes.pitch.energy;
+  if (shared > 0) {
+    modes.roll.energy *= out.tilt_energy / shared;
+    modes.pitch.energy *= out.tilt_energy / shared;
+  }
   out.energy_ratio =
       2 * (modes.roll.energy + modes.pitch.energy) / (modes.inertia * modes.spin * modes.spin);
 

@@ -173,9 +173,9 @@ std::string forecastOf(const nlohmann::json& theory) {
   if (!field(f, "time_s").is_number())
     return text + "none within " + number(field(f, "within_s"), "%g") + " s" + measures;
   return text + "<b>" + number(field(f, "time_s"), "%.2f") + " s</b>" + measures +
-         (field(f, "range") == "within" ? ", within its range: about 3 %"
-                                        : std::string(", beyond its range: early by ") +
-                                              kBeyondRangeEarlyBy + " in the runs measured");
+         (field(f, "range") == "within"
+              ? ", within its range: within about 1.5 %"
+              : std::string(", beyond its range: ") + kBeyondRangeError + " in the runs measured");
 }
 
 // The run's estimated errors (simulate --check, its sidecar's "check"); empty without one.
