@@ -47,12 +47,16 @@ void stepOptions(CLI::App& c, std::optional<double>& dt, std::optional<double>& 
 // analysed, drawn and filmed with the same values.
 void setOption(CLI::App& c, std::vector<std::string>& entries) {
   c.add_option("--set", entries,
-               "KEY=VALUE: set a scene key (dotted, e.g. contact.model=smooth or "
-               "body.dents.at[0]=0.8; the value in YAML), before the options above; repeatable")
+               "Set a scene key (dotted, e.g. contact.model=smooth or body.dents.at[0]=0.8; the "
+               "value in YAML); one a --set, repeatable; a key an option above also sets is "
+               "refused")
       // One value a --set: a vector option takes every word after it by default, so `--set
       // initial.spin=3 mine.yaml` took the scene as a second value and said "scene is required"
       // (a teacher's trial).
-      ->allow_extra_args(false);
+      ->allow_extra_args(false)
+      ->type_name("KEY=VALUE")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
 }
 
 void defineSimulate(CLI::App& c, Cli& cli) {

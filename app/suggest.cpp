@@ -88,6 +88,16 @@ std::string explainOptionError(const CLI::App& cli, int argc, char** argv,
     if (const CLI::Option* option = command->get_option_no_throw(what.substr(0, at)))
       return path + ": " + what.substr(0, at) + " takes " + takes(*option) + " (" + gist(*option) +
              "), none given (see rattleback " + path + " --help)";
+  // Several KEY=VALUE words after one --set: the second was taken for the scene, and CLI11 named
+  // the scene as "not expected" (a reviewer's trial).
+  if (what.find("was not expected") != std::string::npos)
+    for (int i = first + 1; i < argc; ++i)
+      if (std::string(argv[i - 1]) == "--set" && i + 1 < argc &&
+          std::string(argv[i + 1]).find('=') != std::string::npos && argv[i + 1][0] != '-')
+        return path + ": " + argv[i + 1] +
+               " follows a --set entry without a --set of its own; each KEY=VALUE takes one "
+               "(--set " +
+               argv[i] + " --set " + argv[i + 1] + ")";
   // CLI11 says "--dt: At Most 1 required but received 2" for an option given twice.
   const std::string twice = ": At Most 1 required but received ";
   if (const std::size_t at = what.find(twice); at != std::string::npos)

@@ -50,8 +50,10 @@ Eigen::Vector3d bodySize(const sim::Body& body) {
 }
 
 bool frameFits(double frame_m, const sim::Body& body) {
-  const double length = bodySize(body).x();
-  return frame_m <= 50 * length && frame_m >= 0.1 * length;
+  // (With rounding's slack: a tenth of the default body, 2 cm of 20, is 0.02 m, and 0.1 × 0.2
+  // is 0.020000000000000004: `--frame 2` was refused as below a tenth, a reviewer's trial.)
+  const double length = bodySize(body).x(), slack = 1 + 1e-12;
+  return frame_m <= 50 * length * slack && frame_m * slack >= 0.1 * length;
 }
 
 std::string sizeText(const Eigen::Vector3d& size_m, double length_unit) {

@@ -310,14 +310,21 @@ rb::Result<BenchScene> loadBenchScene(const std::string& path) {
 }
 
 rb::Status checkBenchOptions(const BenchOptions& o) {
+  // A scene after the names was taken for one (`--models rolling mine.yaml`): said so.
+  auto scene = [](const std::string& word) {
+    const std::string ext = std::filesystem::path(word).extension().string();
+    return ext == ".yaml" || ext == ".yml"
+               ? " (a scene: give the scenes before the option, or end its names with --)"
+               : "";
+  };
   for (const std::string& m : o.models)
     if (!rb::parseName<sim::ContactModel>(m))
       return rb::Status::fail("--models: expected " + rb::choices<sim::ContactModel>() + ", not '" +
-                              m + "'");
+                              m + "'" + scene(m));
   for (const std::string& i : o.integrators)
     if (!rb::parseName<sim::Integrator>(i))
       return rb::Status::fail("--integrators: expected " + rb::choices<sim::Integrator>() +
-                              ", not '" + i + "'");
+                              ", not '" + i + "'" + scene(i));
   for (double tol : o.tolerances)
     if (!(tol >= 1e-14 && tol <= 0.1))
       return rb::Status::fail("--tolerances: each must lie within 1e-14 … 0.1, not " +

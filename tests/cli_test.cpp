@@ -1327,6 +1327,13 @@ TEST(Cli, OptionErrorsNameTheOptionAndTheWayOut) {
             "--playback: must be a speed > 0 (1 real time, 0.5 slow motion, 2 twice as fast), "
             "not 0\n");
   EXPECT_FALSE(fs::exists(scratchDir() / "p.png"));
+  // The bounds themselves are taken: a tenth of the 20 cm body, 2, had been refused by rounding
+  // (0.1 × 0.2 m is 0.020000000000000004 m; a reviewer's trial).
+  for (const char* frame : {"2", "1000"}) {
+    const Result bound = rattleback("still " + scene("rattleback") + " --frame " + frame +
+                                    " --size 64x36 -q -o " + tempFile("b.png").string());
+    EXPECT_EQ(bound.status, 0) << frame << ": " << bound.err;
+  }
   // An output name that says another format than the one written is refused, nothing made.
   const fs::path avi = tempFile("x.avi"), jpg = tempFile("s.jpg");
   const Result as_avi =
@@ -1551,6 +1558,37 @@ TEST(Cli, ACountOfOneIsSingular) {
   EXPECT_NE(bench.out.find("rattleback.yaml: 0.1 s simulated, 1 repeat; reference"),
             std::string::npos)
       << bench.out;
+}
+
+// Lists on the command line as people type them (a reviewer's trial): names quoted together
+// (`--integrators "rk4 dopri5"`, as the docs allow) are several; a scene after a list taken for
+// a name, and a second KEY=VALUE after one --set taken for the scene, say so.
+TEST(Cli, ListsAreTakenAsTypedAndAStrayWordIsNamed) {
+  const fs::path dir = emptyDir("lists");
+  const Result both = rattleback("bench " + scene("rattleback") +
+                                 " --repeats 1 --rungs 1 --duration 0.1 --models rolling "
+                                 "--integrators 'rk4 dopri5' -q -o " +
+                                 (dir / "b.csv").string() + " --plot " + (dir / "b.png").string());
+  ASSERT_EQ(both.status, 0) << both.err;
+  const std::string table = readText(dir / "b.csv");
+  EXPECT_NE(table.find(",rolling,rk4,"), std::string::npos) << table;
+  EXPECT_NE(table.find(",rolling,dopri5,"), std::string::npos) << table;
+  const Result after = rattleback("bench --models rolling " + scene("rattleback") + " -o " +
+                                  (dir / "c.csv").string());
+  EXPECT_EQ(after.status, 2);
+  EXPECT_NE(after.err.find("not '" + scene("rattleback") +
+                           "' (a scene: give the scenes before the option"),
+            std::string::npos)
+      << after.err;
+  const Result set = rattleback("simulate --set initial.spin=-3 contact.air_drag=0 " +
+                                scene("rattleback") + " -o " + (dir / "s.csv").string());
+  EXPECT_EQ(set.status, 2);
+  EXPECT_EQ(set.err,
+            "rattleback: simulate: contact.air_drag=0 follows a --set entry without a --set of "
+            "its own; each KEY=VALUE takes one (--set initial.spin=-3 --set "
+            "contact.air_drag=0)\n");
+  EXPECT_FALSE(fs::exists(dir / "c.csv"));
+  EXPECT_FALSE(fs::exists(dir / "s.csv"));
 }
 
 namespace {
