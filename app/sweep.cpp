@@ -225,6 +225,11 @@ int emitScript(const SweepArgs& args, const scene::Sweep& sweep, const std::stri
   request.metric = args.metric;
   auto script = tasks::jobScript(sweep, request);
   if (!script) return fail(script);
+  // A Slurm job's logs go into the table's folder, which Slurm opens before the script runs: it
+  // is made now, or the tasks fail before their first line with nothing said. GNU parallel's
+  // shards make it as they run; a refused --emit made none (it had left the folder behind).
+  if (*kind == tasks::JobScript::Slurm)
+    if (auto made = tasks::makeParentFolder(output); !made) return fail(made);
   std::cout << script.value();
   return kOk;
 }
@@ -351,12 +356,7 @@ rb::Result<std::string> outputOf(const SweepArgs& args, const std::optional<task
   std::string output =
       args.output.empty() ? "out/" + fs::path(args.file).stem().string() + ".csv" : args.output;
   if (auto ok = tasks::checkTableIsAFile(output); !ok) return ok.error();
-  if (!args.emit.empty()) {
-    // The job script's logs go into the table's folder, which Slurm opens before the script
-    // runs: it is made now, or the tasks fail before their first line with nothing said.
-    if (auto made = tasks::makeParentFolder(output); !made) return made.error();
-    return output;
-  }
+  if (!args.emit.empty()) return output;  // (its folder: emitScript)
   if (shard && args.output.empty()) output = tasks::shardPath(output, *shard);
   if (!args.plot.empty())
     if (auto ok = checkPlotFile(args.plot, &made); !ok) return ok.error();

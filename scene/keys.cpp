@@ -162,7 +162,8 @@ const std::vector<Key>& table() {
        .need = Need::Ellipsoid,
        .shape = Shape::Ellipsoid,
        .doc = "a smooth ellipsoid (Kane & Levinson 1982; §P2)",
-       .example = "ellipsoid: {semi_axes: [0.03, 0.20, 0.02], center: [0, 0, 0.01]}"},
+       .example = "ellipsoid: {semi_axes: [0.03, 0.20, 0.02], center: [0, 0, 0.01]} (Kane & "
+                  "Levinson's, in metres: with units.length 0.01, [3, 20, 2] and [0, 0, 1])"},
       {.path = "body.ellipsoid.semi_axes",
        .field = FIELD(spec.body.ellipsoid.semi_axes),
        .need = Need::Always,
@@ -268,7 +269,9 @@ const std::vector<Key>& table() {
        .doc = "the integrator and its steps ([Physics](physics.md) §P3)"},
       {.path = "simulation.integrator",
        .field = FIELD(spec.simulation.integrator),
-       .doc = "the method: `euler`, `symplectic` and `rk4` take `dt`, `dopri5` takes `tolerance`",
+       .doc = "the method: `euler`, `symplectic` and `rk4` take `dt`, `dopri5` takes "
+              "`tolerance`; `symplectic` is refused with `rolling` and `auto`, whose energy it "
+              "does not keep (rolling without slipping is non-holonomic, §P3)",
        .sample = "rk4",
        .choices = namesOf<sim::Integrator>,
        .default_note = "with `dt`: `rk4` for `rolling` and `auto`, `symplectic` for `smooth` and "

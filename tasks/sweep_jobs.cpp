@@ -178,12 +178,19 @@ rb::Result<std::string> jobScript(const scene::Sweep& sweep, const JobRequest& r
     return rb::Error{"", "--shards: " + std::to_string(r.shards) + " shards for " +
                              rb::counted(sweep.rows(), "run") + " leaves some empty; at most " +
                              std::to_string(sweep.rows())};
-  if (r.kind == JobScript::Parallel && !r.plot.empty())
-    return rb::Error{"",
-                     "--plot: GNU parallel runs the shards only; plot when you merge them "
-                     "(rattleback sweep merge OUT.csv SHARD… --plot PNG)"};
   const std::string sweep_file = absolute(sweep.file);
   const std::string out = absolute(r.output);
+  // The merge that plots, with this sweep's names (a template had been given: a reviewer's
+  // trial); the shards' glob is the shell's.
+  if (r.kind == JobScript::Parallel && !r.plot.empty()) {
+    const std::string pattern = shardPath(out, "*", r.shards);
+    const std::size_t star = pattern.rfind('*');
+    return rb::Error{"", "--plot: GNU parallel runs the shards only; plot when you merge them: " +
+                             shellWord(r.program) + " sweep merge " + shellWord(out) + " " +
+                             shellWord(pattern.substr(0, star)) + "*" +
+                             shellWord(pattern.substr(star + 1)) + " --plot " +
+                             shellWord(absolute(r.plot))};
+  }
   std::vector<std::string> shard_files;
   for (int i = 0; i < r.shards; ++i) shard_files.push_back(shardPath(out, Shard{i, r.shards}));
   if (r.kind == JobScript::Parallel) return parallelScript(r.program, sweep_file, shard_files);

@@ -761,11 +761,18 @@ TEST(Sweep, EmitKeepsThePlotForTheMerge) {
       r.out.find("--plot '\\''" + (dir / "t.png").string() + "'\\'' --metric '\\''final_spin"),
       std::string::npos)
       << r.out;
+  // GNU parallel runs the shards only: the message gives the merge that plots, with this
+  // sweep's names (it gave a template), and no folder is left made.
   const Outcome p =
-      rattleback(dir, "sweep " + sweep.string() + " --emit parallel --shards 2 --plot " +
-                          (dir / "t.png").string());
+      rattleback(dir, "sweep " + sweep.string() + " --emit parallel --shards 2 -o " +
+                          (dir / "new" / "t.csv").string() + " --plot " + (dir / "t.png").string());
   EXPECT_EQ(p.status, 2);
-  EXPECT_NE(p.err.find("sweep merge OUT.csv SHARD… --plot PNG"), std::string::npos) << p.err;
+  EXPECT_NE(p.err.find(" sweep merge '" + (dir / "new" / "t.csv").string() + "' '" +
+                       (dir / "new" / "t.shard-").string() + "'*'-of-2.csv' --plot '" +
+                       (dir / "t.png").string() + "'"),
+            std::string::npos)
+      << p.err;
+  EXPECT_FALSE(fs::exists(dir / "new"));
 }
 
 // The commands that only simulate start without the rendering libraries (OSMesa and LLVM behind
