@@ -264,6 +264,18 @@ int notWritten(const SimulateArgs& args, const tasks::Outcome& outcome) {
   return kDiverged;
 }
 
+// A stopped run's line, then what is odd about the body, which may be why (a researcher's
+// trial: lengths in metres typed for cm made a 28 m body of 0.2 kg that tipped onto its rim,
+// and only analyze said the body was lighter than air).
+int stopped(const SimulateArgs& args, const tasks::SimulateResult& run, const sim::Model& model) {
+  const int status = notWritten(args, run.outcome);
+  if (run.outcome.ending == tasks::Ending::Interrupted) return status;
+  for (const tasks::RunWarning& w : tasks::runWarnings(model, run.summary))
+    if (w.code == "cannot_stand" || w.code == "dents_cut_nothing" || w.code == "implausible_mass")
+      std::cerr << "WARNING: " << w.text << "\n";
+  return status;
+}
+
 int simulateCommand(const SimulateArgs& args) {
   installInterruptHandlers();
   const auto overrides = overridesOf(args);
@@ -319,7 +331,7 @@ int simulateCommand(const SimulateArgs& args) {
   };
   const tasks::SimulateResult run = tasks::simulate(model, options);
   progress.finish();
-  if (run.outcome.ending != tasks::Ending::Completed) return notWritten(args, run.outcome);
+  if (run.outcome.ending != tasks::Ending::Completed) return stopped(args, run, model);
   std::optional<tasks::RunCheck> check;
   if (args.check) {
     check = tasks::checkRun(model, rate, run.summary, spins, options.cancelled);

@@ -913,6 +913,33 @@ TEST(Cli, ARefusedSimulateLeavesNoFolderBehind) {
   EXPECT_TRUE(fs::is_empty(dir)) << fs::directory_iterator(dir)->path();
 }
 
+// A run that stops says, after why, what is odd about the body, which may be the cause: lengths
+// typed in cm in a file read in metres made a 28 m body of 0.2 kg that tipped onto its rim, and
+// only analyze said it was lighter than air (a researcher's trial). The stop is one line, each
+// warning one more.
+TEST(Cli, AStoppedRunSaysWhatIsOddAboutTheBody) {
+  const fs::path dir = emptyDir("stopped-odd");
+  std::ofstream(dir / "big.yaml") << R"(units: {length: 1}
+body: {shape: paraboloid, paraboloid: {a: 2.0, p: 0.6, q: 0.0, s: 0.05, top: 0.5},
+       dents: {scale: 0.4, at: [1.0, 7.0]}, grid: {dx: 0.1, dy: 0.1, dz: 0.1}, mass: 0.2}
+contact: {model: rolling}
+initial: {spin: -4, tilt: [1.0, 0.0]}
+simulation: {integrator: rk4, dt: 1.0e-3, duration: 10}
+)";
+  const Result r =
+      rattleback("simulate -q " + (dir / "big.yaml").string() + " -o " + (dir / "x.csv").string());
+  EXPECT_EQ(r.status, 3) << r.err;
+  EXPECT_EQ(lines(r.err), 2) << r.err;
+  EXPECT_NE(r.err.find(": the run stopped: the body tipped onto the edge of its top"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("\nWARNING: body.mass 0.2 kg in a body of 28.3 × 8.16 × 2.5 m is lighter "
+                       "than air"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(dir / "x.csv"));
+}
+
 // The same for sweep, sweep merge and bench: --plot's folder was made before the table's place
 // was checked, and left behind empty.
 TEST(Cli, ARefusedSweepOrBenchLeavesNoFolderBehind) {
