@@ -86,6 +86,7 @@ void printSummary(std::FILE* out, const SimulateArgs& args, const sim::Model& mo
   std::fprintf(out, "energy          %.6g J -> %.6g J (%+.4g %%)\n", run.first.energy,
                run.last.energy, 100 * change);
   said("energy_error", "                (%s)\n");
+  said("slip_unresolved", "WARNING         %s\n");
   std::fprintf(out, "final spin      %+.4f rad/s, tilt %.2f deg\n", run.last.spin,
                run.last.tilt_deg);
   said("floor_pulled", "WARNING         %s\n");
