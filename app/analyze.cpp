@@ -262,6 +262,11 @@ int analyzeCommand(const AnalyzeArgs& args) {
     return kOk;
   }
   // -o: whole or not at all, and listed in the folder's manifest.
+  if (auto ok = rb::checkDataOutput(args.output,
+                                    args.json ? "the analysis as JSON" : "the analysis as text",
+                                    args.json ? ".json" : ".txt", {args.scene});
+      !ok)
+    return fail(ok);
   if (auto made = tasks::makeParentFolder(args.output); !made) return fail(made);
   auto file = tasks::AtomicOutput::open(args.output);
   if (!file) return fail(file);

@@ -307,6 +307,8 @@ int simulateCommand(const SimulateArgs& args) {
   if (csv == "-") csv = "/dev/stdout";
   const bool to_stdout = isStandardOutput(csv);
   if (auto ok = checkPlotIsNotTheTable(args.plot_dir, csv); !ok) return fail(ok);
+  if (auto ok = rb::checkDataOutput(args.output, "a CSV table", ".csv", {args.scene}); !ok)
+    return fail(ok);
   // Declared before the writer, so that its temporary files are gone before the folders are
   // removed.
   tasks::MadeFolders made;

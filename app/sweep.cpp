@@ -351,11 +351,14 @@ rb::Status writeOutputs(const SweepArgs& args, const scene::Sweep& sweep,
 
 // Where the table goes, checked, with its folder made (and the plot's, added to `made`: a sweep
 // refused leaves no empty folder behind).
-rb::Result<std::string> outputOf(const SweepArgs& args, const std::optional<tasks::Shard>& shard,
+rb::Result<std::string> outputOf(const SweepArgs& args, const scene::Sweep& sweep,
+                                 const std::optional<tasks::Shard>& shard,
                                  tasks::MadeFolders& made) {
   std::string output =
       args.output.empty() ? "out/" + fs::path(args.file).stem().string() + ".csv" : args.output;
   if (auto ok = tasks::checkTableIsAFile(output); !ok) return ok.error();
+  if (auto ok = rb::checkDataOutput(output, "a CSV table", ".csv", {args.file, sweep.base}); !ok)
+    return ok.error();
   if (!args.emit.empty()) return output;  // (its folder: emitScript)
   if (shard && args.output.empty()) output = tasks::shardPath(output, *shard);
   if (!args.plot.empty())
@@ -379,7 +382,7 @@ int sweepCommand(const SweepArgs& args) {
   std::optional<tasks::Shard> shard;
   if (auto ok = checkOptions(args, shard); !ok) return fail(ok);
   tasks::MadeFolders made;
-  auto output = outputOf(args, shard, made);
+  auto output = outputOf(args, sweep, shard, made);
   if (!output) return fail(output);
   if (!args.emit.empty()) return emitScript(args, sweep, output.value());
   auto scenes = scene::SweepScenes::open(sweep);
@@ -442,6 +445,7 @@ int sweepMergeCommand(const SweepMergeArgs& args) {
     return fail(
         rb::Status::fail("sweep merge: give the shard tables to merge (OUT.csv SHARD.csv…)"));
   if (auto ok = tasks::checkTableIsAFile(args.output); !ok) return fail(ok);
+  if (auto ok = rb::checkDataOutput(args.output, "a CSV table", ".csv", {}); !ok) return fail(ok);
   tasks::MadeFolders made;
   if (!args.plot.empty())
     if (auto ok = checkPlotFile(args.plot, &made); !ok) return fail(ok);

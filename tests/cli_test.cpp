@@ -1499,6 +1499,41 @@ TEST(Cli, OutputFoldersAreMadeOrRefusedInOneLine) {
 // Every writer of a PNG refuses a name that says another format, as still -o does (a new user's
 // trial: `compare --diff d.txt` wrote a PNG named d.txt, `sweep --plot x.jpg` one named x.jpg),
 // before any run, nothing written.
+// A table or an analysis is not written over the command's own input (`simulate s.yaml -o
+// s.yaml` had replaced the scene with its telemetry, exit 0), nor under a name that says a
+// picture or a scene (`sweep -o s.png` wrote CSV as s.png: a CI engineer's trial); any other
+// name is the user's to choose.
+TEST(Cli, ADataOutputIsNotWrittenOverItsInputNorAsAPicture) {
+  const fs::path dir = emptyDir("data-names");
+  const fs::path mine = dir / "mine.yaml";
+  fs::copy_file(scene("rattleback"), mine);
+  const std::string text = readText(mine);
+  const std::string sweep = std::string(RATTLEBACK_SOURCE_DIR) + "/sweeps/dents.yaml";
+  for (const auto& [command, said] :
+       {std::pair<std::string, std::string>{
+            "simulate " + mine.string() + " -o " + mine.string(),
+            "-o " + mine.string() +
+                ": is this command's own input, which it would replace with a CSV table; give "
+                "it a name of its own, ending in .csv\n"},
+        {"analyze " + mine.string() + " -o " + (dir / ".." / dir.filename() / "mine.yaml").string(),
+         "is this command's own input"},
+        {"analyze --json " + mine.string() + " -o " + (dir / "a.png").string(),
+         "-o " + (dir / "a.png").string() +
+             ": writes the analysis as JSON, not a .png file; give a name ending in .json\n"},
+        {"simulate " + mine.string() + " -o " + (dir / "t.MP4").string(), "not a .mp4 file"},
+        {"sweep " + sweep + " -o " + (dir / "d.png").string(), "writes a CSV table, not a .png"},
+        {"sweep " + sweep + " -o " + sweep, "is this command's own input"}}) {
+    const Result r = rattleback(command);
+    EXPECT_EQ(r.status, 2) << command;
+    EXPECT_NE(r.err.find(said), std::string::npos) << command << ": " << r.err;
+  }
+  EXPECT_EQ(readText(mine), text);
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+  const Result other =
+      rattleback("simulate " + mine.string() + " --duration 0.1 -q -o " + (dir / "t.dat").string());
+  EXPECT_EQ(other.status, 0) << other.err;
+}
+
 TEST(Cli, EveryPngWriterRefusesANameOfAnotherFormat) {
   const fs::path dir = emptyDir("formats");
   const std::string sweep = std::string(RATTLEBACK_SOURCE_DIR) + "/sweeps/spin-drag.yaml";

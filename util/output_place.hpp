@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <string>
 #include <system_error>
+#include <vector>
 
 #include "util/result.hpp"
 
@@ -116,6 +117,36 @@ inline Status checkExtension(const std::string& output, const std::string& wante
   if (ext == wanted || (base_allowed && ext.empty())) return {};
   return Status::fail(std::string(output_named_by) + " " + output + ": writes " + format +
                       "; give a name ending in " + wanted);
+}
+
+/// A table or text output (simulate's CSV, analyze's text or JSON, a sweep's table) is taken
+/// under most names, but not over one of the command's inputs (`simulate s.yaml -o s.yaml` had
+/// replaced the scene with its telemetry) nor under a name that says a picture, a video or a
+/// scene (`sweep -o s.png` wrote CSV as s.png: a CI engineer's trial): "-o s.png: writes a CSV
+/// table, not a .png file; give a name ending in .csv". `format` as the message says it: "a CSV
+/// table", "the analysis".
+inline Status checkDataOutput(const std::string& output, const std::string& format,
+                              const std::string& wanted, const std::vector<std::string>& inputs) {
+  if (output.empty() || output == "-") return {};
+  std::error_code ec;
+  const std::filesystem::path out = std::filesystem::weakly_canonical(output, ec);
+  for (const std::string& input : inputs) {
+    std::error_code ec2;
+    if (!ec && !input.empty() && std::filesystem::exists(input, ec2) &&
+        out == std::filesystem::weakly_canonical(input, ec2) && !ec2)
+      return Status::fail(std::string(output_named_by) + " " + output +
+                          ": is this command's own input, which it would replace with " + format +
+                          "; give it a name of its own, ending in " + wanted);
+  }
+  std::string ext = std::filesystem::path(output).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  for (const char* other :
+       {".yaml", ".yml", ".png", ".jpg", ".jpeg", ".svg", ".pdf", ".mp4", ".html"})
+    if (ext == other)
+      return Status::fail(std::string(output_named_by) + " " + output + ": writes " + format +
+                          ", not a " + ext + " file; give a name ending in " + wanted);
+  return {};
 }
 
 }  // namespace rb
