@@ -254,6 +254,11 @@ rb::Result<Plan> planRows(const SweepArgs& args, const scene::Sweep& sweep,
   Plan plan;
   plan.rows = tasks::shardRows(sweep, shard);
   const std::string journal = tasks::Journal::pathOf(output);
+  if (tasks::Journal::busy(journal))
+    return rb::Error{"", output + ": another sweep is writing this table now (its journal " +
+                             journal +
+                             " is in use); wait for it to finish, or give -o another "
+                             "name"};
   if (args.resume) {
     auto kept = tasks::Journal::read(journal, sweep, plan.rows);
     if (!kept) return kept.error();

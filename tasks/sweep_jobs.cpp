@@ -1,5 +1,9 @@
 #include "tasks/sweep_jobs.hpp"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -240,16 +244,41 @@ rb::Result<Journal> Journal::open(const std::string& output, const std::string& 
                                   const std::map<std::int64_t, std::string>& kept,
                                   const std::string& fingerprint) {
   const std::string path = pathOf(output);
+  // Locked while the sweep runs, before anything is truncated: a second sweep on the same table
+  // is told so, where it had said the first's journal was "an interrupted run" (a CI
+  // engineer's trial). The lock goes with the descriptor, when the process ends whatever way.
+  const int lock = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+  if (lock >= 0 && ::flock(lock, LOCK_EX | LOCK_NB) != 0) {
+    ::close(lock);
+    return rb::Error{"", output + ": another sweep is writing this table now (its journal " + path +
+                             " is in use); wait for it to finish, or give -o another name"};
+  }
   std::ofstream(path + ".json", std::ios::trunc)
       << nlohmann::json{{"fingerprint", fingerprint}}.dump() << "\n";
   std::ofstream out(path, std::ios::trunc);
   // Named as the table: "t.csv.partial: cannot write …" sent a teacher looking for a file of
   // that name (helper-41's trial).
-  if (!out) return rb::Error{"", rb::cannotWriteIn(output, errno)};
+  if (!out) {
+    const int error = errno;
+    if (lock >= 0) ::close(lock);
+    return rb::Error{"", rb::cannotWriteIn(output, error)};
+  }
   out << header << "\n";
   for (const auto& [r, line] : kept) out << line << "\n";
   out.flush();
-  return Journal(std::move(out));
+  return Journal(std::move(out), lock);
+}
+
+Journal::~Journal() {
+  if (lock_ >= 0) ::close(lock_);
+}
+
+bool Journal::busy(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool held = ::flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+  ::close(fd);
+  return held;
 }
 
 void Journal::remove(const std::string& path) {

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "scene/sweep.hpp"
@@ -63,12 +64,21 @@ class Journal {
                                   const std::string& fingerprint);
   /// Removes the journal and its fingerprint (the table is in place).
   static void remove(const std::string& path);
+  /// Whether another process's sweep holds the journal at `path` (open() locks it while the
+  /// sweep runs).
+  static bool busy(const std::string& path);
   void append(const std::string& line);
   void close() { out_.close(); }
 
+  Journal(Journal&& other) noexcept
+      : out_(std::move(other.out_)), lock_(std::exchange(other.lock_, -1)) {}
+  Journal& operator=(Journal&&) = delete;
+  ~Journal();
+
  private:
-  explicit Journal(std::ofstream out) : out_(std::move(out)) {}
+  Journal(std::ofstream out, int lock) : out_(std::move(out)), lock_(lock) {}
   std::ofstream out_;
+  int lock_ = -1;  ///< a descriptor of the journal holding its lock (flock), or −1
 };
 
 /// The shards of one sweep recombined: its lines in row order and the first shard's sidecar.

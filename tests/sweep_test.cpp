@@ -421,6 +421,54 @@ TEST(Sweep, AStoppedRowKeepsItsLargestTilt) {
   EXPECT_EQ(rows[2][5], "");  // no final spin
 }
 
+// A second sweep on a table another sweep is writing is told so, and the first's journal is
+// left alone (it had been called "an interrupted run", and with --resume the two would have
+// written one journal: a CI engineer's trial); once the first is stopped, --resume takes its
+// journal (the lock went with the process).
+TEST(Sweep, ASecondSweepOnATableBeingWrittenIsToldSo) {
+  const fs::path dir = scratch();
+  const fs::path sweep =
+      writeSweep(dir, "base: " + kBase +
+                          "\nvary:\n  initial.spin: {from: -8, to: 8, count: 161}\n"
+                          "  contact.air_drag: [0, 1e-6, 2e-6, 3e-6]\nduration: 30\n");
+  const fs::path table = dir / "t.csv";
+  const std::string command =
+      std::string(RATTLEBACK_BIN) + " sweep " + sweep.string() + " -q -j 1 -o " + table.string();
+  const pid_t pid = startInBackground(command, dir / "first.err");
+  ASSERT_GE(pid, 0);
+  const fs::path journal = table.string() + ".partial";
+  for (int i = 0; i < 400; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    const std::string rows = fs::exists(journal) ? slurp(journal) : std::string();
+    if (std::count(rows.begin(), rows.end(), '\n') > 2) break;
+  }
+  for (const char* resume : {"", " --resume"}) {
+    const Outcome second =
+        rattleback(dir, "sweep " + sweep.string() + " -q -o " + table.string() + resume);
+    EXPECT_EQ(second.status, 2) << resume;
+    EXPECT_EQ(second.err, table.string() +
+                              ": another sweep is writing this table now (its "
+                              "journal " +
+                              journal.string() +
+                              " is in use); wait for it to finish, or give -o another name\n")
+        << resume;
+  }
+  kill(pid, SIGINT);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  ASSERT_EQ(WEXITSTATUS(status), 130) << slurp(dir / "first.err");
+  const std::string kept = slurp(journal);
+  ASSERT_GT(std::count(kept.begin(), kept.end(), '\n'), 2) << "the first's journal was cut";
+  const pid_t again = startInBackground(command + " --resume", dir / "again.err");
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  kill(again, SIGINT);
+  waitpid(again, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_TRUE(WEXITSTATUS(status) == 130 || WEXITSTATUS(status) == 0) << slurp(dir / "again.err");
+  EXPECT_EQ(slurp(dir / "again.err").find("another sweep"), std::string::npos);
+}
+
 // A sweep started with SIGINT ignored, as a script's background job is (`rattleback sweep … &`:
 // the terminal's Ctrl-C is the script's to stop), keeps ignoring it; SIGTERM still stops it (a
 // CI engineer's trial: it had taken the script's Ctrl-C as its own).
