@@ -67,6 +67,16 @@ pid_t startInBackground(const std::string& command, const fs::path& err) {
   return pid;
 }
 
+// Waits, up to 4 s, until a sweep's journal holds more than `lines` lines (its header and
+// rows), for a test that interrupts or joins it.
+void waitForRows(const fs::path& journal, int lines) {
+  for (int i = 0; i < 400; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    const std::string rows = fs::exists(journal) ? slurp(journal) : std::string();
+    if (std::count(rows.begin(), rows.end(), '\n') > lines) return;
+  }
+}
+
 fs::path writeSweep(const fs::path& dir, const std::string& text) {
   const fs::path path = dir / "sweep.yaml";
   std::ofstream(path) << text;
@@ -437,11 +447,7 @@ TEST(Sweep, ASecondSweepOnATableBeingWrittenIsToldSo) {
   const pid_t pid = startInBackground(command, dir / "first.err");
   ASSERT_GE(pid, 0);
   const fs::path journal = table.string() + ".partial";
-  for (int i = 0; i < 400; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    const std::string rows = fs::exists(journal) ? slurp(journal) : std::string();
-    if (std::count(rows.begin(), rows.end(), '\n') > 2) break;
-  }
+  waitForRows(journal, 2);
   for (const char* resume : {"", " --resume"}) {
     const Outcome second =
         rattleback(dir, "sweep " + sweep.string() + " -q -o " + table.string() + resume);
@@ -488,8 +494,7 @@ TEST(Sweep, ASweepStartedIgnoringCtrlCKeepsIgnoringIt) {
   }
   ASSERT_GE(pid, 0);
   const fs::path journal = table.string() + ".partial";
-  for (int i = 0; i < 400 && !fs::exists(journal); ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  waitForRows(journal, 0);
   kill(pid, SIGINT);
   std::this_thread::sleep_for(std::chrono::milliseconds(100));
   kill(pid, SIGTERM);
@@ -515,11 +520,7 @@ TEST(Sweep, AnInterruptKeepsTheFinishedRowsAndResumeCompletesThem) {
   ASSERT_GE(pid, 0);
   // Wait until some rows are in the journal, then interrupt.
   const fs::path journal = table.string() + ".partial";
-  for (int i = 0; i < 400; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    const std::string rows = fs::exists(journal) ? slurp(journal) : std::string();
-    if (std::count(rows.begin(), rows.end(), '\n') > 5) break;
-  }
+  waitForRows(journal, 5);
   kill(pid, SIGINT);
   int status = 0;
   waitpid(pid, &status, 0);
@@ -568,8 +569,7 @@ TEST(Sweep, AnInterruptBeforeAnyRunFinishedLeavesNoJournal) {
       std::string(RATTLEBACK_BIN) + " sweep " + sweep.string() + " -j 1 -o " + table.string();
   const pid_t pid = startInBackground(command, dir / "stderr");
   ASSERT_GE(pid, 0);
-  for (int i = 0; i < 400 && !fs::exists(journal); ++i)  // the runs have begun
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  waitForRows(journal, 0);  // the runs have begun
   EXPECT_TRUE(fs::exists(journal));
   kill(pid, SIGINT);  // (each run of 1e5 s takes minutes)
   int status = 0;
