@@ -50,9 +50,8 @@ void printSummary(std::FILE* out, const SimulateArgs& args, const sim::Model& mo
     for (const tasks::RunWarning& w : warnings)
       if (w.code == code) std::fprintf(out, form, w.text.c_str());
   };
-  said("cannot_stand", "WARNING         %s\n");
-  said("dents_cut_nothing", "WARNING         %s\n");
-  said("implausible_mass", "WARNING         %s\n");
+  for (const tasks::RunWarning& w : warnings)
+    if (w.aboutTheBody()) std::fprintf(out, "WARNING         %s\n", w.text.c_str());
   const std::string steps = rb::counted(run.steps, "step");
   if (sim::isAdaptive(model.integrator))
     std::fprintf(out, "integrator      %s, tolerance %g, %s (%lld rejected), %g s simulated\n",
@@ -272,8 +271,7 @@ int stopped(const SimulateArgs& args, const tasks::SimulateResult& run, const si
   const int status = notWritten(args, run.outcome);
   if (run.outcome.ending == tasks::Ending::Interrupted) return status;
   for (const tasks::RunWarning& w : tasks::runWarnings(model, run.summary))
-    if (w.code == "cannot_stand" || w.code == "dents_cut_nothing" || w.code == "implausible_mass")
-      std::cerr << "WARNING: " << w.text << "\n";
+    if (w.aboutTheBody()) std::cerr << "WARNING: " << w.text << "\n";
   return status;
 }
 

@@ -28,6 +28,11 @@ nlohmann::json runJson(const sim::RunSummary& run);
 struct RunWarning {
   std::string code;
   std::string text;
+  /// Of the body itself, as analyze warns (it cannot stand, an implausible mass, dents that cut
+  /// nothing), not of how the run went: said first, and after a run that stopped.
+  bool aboutTheBody() const {
+    return code == "cannot_stand" || code == "implausible_mass" || code == "dents_cut_nothing";
+  }
 };
 std::vector<RunWarning> runWarnings(const sim::Model& model, const sim::RunSummary& run);
 nlohmann::json warningsJson(const std::vector<RunWarning>& warnings);
