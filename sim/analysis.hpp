@@ -67,7 +67,7 @@ std::optional<double> oneModeReversalTime(double n0, double k, double energy, do
 /// table of docs/physics.md P8.5.
 enum class ForecastRange {
   Within,   ///< n²ρ/g ≤ 0.15 and the energy ratio ≤ 0.1: within about 1.5 % of a run
-  Beyond,   ///< either larger, up to 1: 9 % early to 10 % late in the runs measured
+  Beyond,   ///< either larger, up to 1: 11 % early to 10 % late in the runs measured
   Outside,  ///< either above 1: no forecast (Kane & Levinson's scene, 5.1: 60 % early)
 };
 
