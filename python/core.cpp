@@ -377,7 +377,10 @@ void sweepToCsv(const SweepTable& t, const std::string& path) {
   {
     GilReleased release;
     const rb::OutputNamedBy naming("to_csv");  // the way out an error line suggests
-    written = tasks::writeSweepTable(path, keys, lines, sidecar);
+    // Not over the sweep or its base, nor as a picture (a student's to_csv("mine.yaml") had
+    // replaced the scene, where the command line refuses it).
+    written = rb::checkDataOutput(path, "a CSV table", ".csv", {t.sweep.file, t.sweep.base});
+    if (written) written = tasks::writeSweepTable(path, keys, lines, sidecar);
     if (written)
       (void)tasks::recordOutputs({{path,
                                    tasks::OutputKind::Sweep,
@@ -422,7 +425,13 @@ PYBIND11_MODULE(_core, m) {
         // finished, replaced the file there and then raised it: a researcher's trial).
         const rb::Status written = interruptibleHere([&](const std::function<bool()>& cancelled) {
           const rb::OutputNamedBy naming("to_csv");  // the way out an error line suggests
-          rb::Status status = tasks::writeTelemetry(path, r.samples, r.sidecar, cancelled);
+          // Not over the run's scene, nor as a picture (a student's to_csv("mine.yaml") had
+          // replaced the scene, where the command line refuses it).
+          const nlohmann::json& scene_path = r.sidecar.at("scene_path");
+          rb::Status status = rb::checkDataOutput(
+              path, "a CSV table", ".csv",
+              {scene_path.is_string() ? scene_path.get<std::string>() : std::string()});
+          if (status) status = tasks::writeTelemetry(path, r.samples, r.sidecar, cancelled);
           // Listed in the folder's manifest, as the command line lists it (a failure to
           // list loses nothing: the report then places the file by its name).
           if (status)

@@ -435,6 +435,16 @@ TEST(Cli, ASpinEndedTheOtherWayWithoutAReversalSaysWhy) {
       << r.out;
   const nlohmann::json sidecar = nlohmann::json::parse(readText(csv.string() + ".json"));
   EXPECT_EQ(sidecar["result"]["warnings"][0]["code"], "sign_changed_uncounted");
+  // A body that came to rest with a trace of spin the other way is not told to run longer: the
+  // seed's body, fallen onto its side, ends at +4.35e-6 rad/s from −10 with 1.4e-10 J of its
+  // 0.13 J kinetic energy (a teacher's trial).
+  const Result rest = rattleback("simulate " + scene("seed-flip-cw") + " -o " + csv.string());
+  ASSERT_EQ(rest.status, 0) << rest.err;
+  EXPECT_NE(rest.out.find("(n ended the other way (+4.35e-06 rad/s, from -10) as the body came to "
+                          "rest (kinetic energy 1.4e-10 J, from 0.13 J): it stopped turning, no "
+                          "reversal)"),
+            std::string::npos)
+      << rest.out;
 }
 
 // analyze says the body's size (a teacher's trial: nothing said how long a body the
@@ -1513,16 +1523,16 @@ TEST(Cli, ADataOutputIsNotWrittenOverItsInputNorAsAPicture) {
        {std::pair<std::string, std::string>{
             "simulate " + mine.string() + " -o " + mine.string(),
             "-o " + mine.string() +
-                ": is this command's own input, which it would replace with a CSV table; give "
+                ": is one of its own inputs, which it would replace with a CSV table; give "
                 "it a name of its own, ending in .csv\n"},
         {"analyze " + mine.string() + " -o " + (dir / ".." / dir.filename() / "mine.yaml").string(),
-         "is this command's own input"},
+         "is one of its own inputs"},
         {"analyze --json " + mine.string() + " -o " + (dir / "a.png").string(),
          "-o " + (dir / "a.png").string() +
              ": writes the analysis as JSON, not a .png file; give a name ending in .json\n"},
         {"simulate " + mine.string() + " -o " + (dir / "t.MP4").string(), "not a .mp4 file"},
         {"sweep " + sweep + " -o " + (dir / "d.png").string(), "writes a CSV table, not a .png"},
-        {"sweep " + sweep + " -o " + sweep, "is this command's own input"}}) {
+        {"sweep " + sweep + " -o " + sweep, "is one of its own inputs"}}) {
     const Result r = rattleback(command);
     EXPECT_EQ(r.status, 2) << command;
     EXPECT_NE(r.err.find(said), std::string::npos) << command << ": " << r.err;

@@ -686,7 +686,7 @@ TEST(Sweep, TheMergeTellsSweepsApartByTheirContent) {
   const std::string before = slurp(s0);
   const Outcome over = rattleback(dir, "sweep merge -q " + s0 + " " + s0 + " " + s1);
   EXPECT_EQ(over.status, 2);
-  EXPECT_NE(over.err.find(s0 + ": is this command's own input, which it would replace"),
+  EXPECT_NE(over.err.find(s0 + ": is one of its own inputs, which it would replace"),
             std::string::npos)
       << over.err;
   EXPECT_EQ(slurp(s0), before);

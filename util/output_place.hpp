@@ -135,7 +135,7 @@ inline Status checkDataOutput(const std::string& output, const std::string& form
     if (!ec && !input.empty() && std::filesystem::exists(input, ec2) &&
         out == std::filesystem::weakly_canonical(input, ec2) && !ec2)
       return Status::fail(std::string(output_named_by) + " " + output +
-                          ": is this command's own input, which it would replace with " + format +
+                          ": is one of its own inputs, which it would replace with " + format +
                           "; give it a name of its own, ending in " + wanted);
   }
   std::string ext = std::filesystem::path(output).extension().string();

@@ -210,6 +210,25 @@ def test_an_unwritable_output_gives_the_way_out_in_pythons_terms(tmp_path):
     assert str(caught.value).endswith("(give save a path in a folder you can write)")
 
 
+def test_to_csv_does_not_write_over_its_scene_nor_as_a_picture(tmp_path):
+    # A student's run.to_csv("mine.yaml") replaced the scene with telemetry, where the command
+    # line refuses the same: ValueError, the scene (or sweep file) unchanged.
+    mine = tmp_path / "mine.yaml"
+    mine.write_text(open(scene_path("rattleback.yaml")).read())
+    text = mine.read_text()
+    run = rb.simulate(str(mine), duration=0.1)
+    table = rb.sweep(str(mine), {"initial.spin": [-5]}, duration=0.1)
+    for write in (run.to_csv, table.to_csv):
+        with pytest.raises(ValueError) as caught:
+            write(str(mine))
+        assert "is one of its own inputs, which it would replace with a CSV table" in str(caught.value)
+        with pytest.raises(ValueError) as caught:
+            write(str(tmp_path / "t.png"))
+        assert str(caught.value).endswith("writes a CSV table, not a .png file; give a name ending in .csv")
+    assert mine.read_text() == text
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["mine.yaml"]
+
+
 def test_a_write_the_machine_cannot_finish_is_an_os_error_not_bad_input():
     # A full disk (/dev/full refuses every write) is the machine's failure: OSError, as the
     # command line's exit status 4, not the ValueError of a bad path or scene.
