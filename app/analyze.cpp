@@ -180,10 +180,17 @@ void printText(std::FILE* out, const std::string& scene, const sim::Model& model
   std::fprintf(out, "mass properties  %s\n", tasks::massSourceText(*model.body).c_str());
   // Dents left outside a body made smaller cut nothing: said, or the user sees only that the
   // body prefers no direction.
-  if (tasks::dentsCutShare(*model.body) == 0.0)
+  const std::optional<double> cut = tasks::dentsCutShare(*model.body);
+  if (cut == 0.0)
     std::fprintf(out,
                  "WARNING: body.dents cut nothing: they lie wholly outside the body, which is "
                  "the plain paraboloid (move body.dents.at within its top, or remove them)\n");
+  // How much of the body the dents take (a teacher's deeper dents took 39 % of it, cutting
+  // notches through the body, and only --json said so).
+  else if (cut)
+    std::fprintf(
+        out, "dents            cut %.3g %% of the paraboloid's volume%s\n", 100 * *cut,
+        *cut > 0.25 ? " (deep: see the body's shape with `rattleback still --view above`)" : "");
   std::fprintf(out, "mass             %g kg\n", m.mass);
   // Its size (a teacher's trial: nothing said how long a body the paraboloid's numbers make),
   // and a mass no material gives it (59 for 0.059 kg; lengths in cm read as m).

@@ -71,6 +71,20 @@ std::string sizeText(const Eigen::Vector3d& size_m, double length_unit) {
   return text;
 }
 
+namespace {
+
+// The body's volume, m³: the dented paraboloid's (closed form, else cubature) or the
+// ellipsoid's 4/3 π a b c.
+double bodyVolume(const sim::Body& body) {
+  if (body.surface.kind == sim::Surface::Kind::Ellipsoid)
+    return 4.0 / 3.0 * M_PI * body.surface.ellipsoid.semi_axes.prod();
+  const sim::Paraboloid& shape = body.surface.paraboloid;
+  const std::optional<sim::VolumeMoments> closed = sim::closedFormMoments(shape, body.dents);
+  return closed ? closed->volume : sim::cubatureMoments(shape, body.dents, 1e-10).volume;
+}
+
+}  // namespace
+
 std::optional<std::string> implausibleMass(const sim::Body& body, double length_unit) {
   const Eigen::Vector3d size = bodySize(body);
   const double box = size.prod();
@@ -97,6 +111,17 @@ std::optional<std::string> implausibleMass(const sim::Body& body, double length_
                   body.mass, sizeText(size, length_unit).c_str());
     return text;
   }
+  // Over its own volume, lighter than any foam: lengths ten times too large (mm numbers in a
+  // file of cm made a 2 m body of 59 g, 1.2 kg/m³, with nothing said: a teacher's trial).
+  if (const double density = body.mass / bodyVolume(body); density < 5) {
+    std::snprintf(text, sizeof text,
+                  "body.mass %g kg in a body of %s is %.2g kg/m³, lighter than any foam "
+                  "(expanded polystyrene: 10–30 kg/m³): are the lengths larger than meant? "
+                  "(units.length %s m; 0.01 reads them in cm, 0.001 in mm)",
+                  body.mass, sizeText(size, length_unit).c_str(), density,
+                  rb::show(length_unit).c_str());
+    return text;
+  }
   return std::nullopt;
 }
 
@@ -111,11 +136,8 @@ RestModes restModes(const sim::Linearisation& at_rest) {
 
 std::optional<double> dentsCutShare(const sim::Body& body) {
   if (!body.dents || body.surface.kind != sim::Surface::Kind::Paraboloid) return std::nullopt;
-  const sim::Paraboloid& shape = body.surface.paraboloid;
-  const double whole = sim::closedFormMoments(shape, std::nullopt)->volume;
-  const std::optional<sim::VolumeMoments> closed = sim::closedFormMoments(shape, body.dents);
-  const double dented =
-      closed ? closed->volume : sim::cubatureMoments(shape, body.dents, 1e-10).volume;
+  const double whole = sim::closedFormMoments(body.surface.paraboloid, std::nullopt)->volume;
+  const double dented = bodyVolume(body);
   // Cubature's error is 1e-10 of the volume's scale: a share below that is none.
   const double share = 1 - dented / whole;
   return share < 1e-9 ? 0.0 : share;

@@ -447,6 +447,23 @@ TEST(Cli, ASpinEndedTheOtherWayWithoutAReversalSaysWhy) {
       << rest.out;
 }
 
+// analyze's text says how much of the body the dents take, as --json's dents_cut_share does
+// (a teacher's deeper dents took 39 % of it, notches through the body, and the text said
+// nothing), and points deep ones to a picture of the shape.
+TEST(Cli, AnalyzeSaysHowMuchTheDentsCut) {
+  for (const char* scale : {"0.45", "0.65"}) {
+    const std::string run = "analyze " + scene("rattleback") + " --set body.dents.scale=" + scale;
+    const Result text = rattleback(run), json = rattleback(run + " --json");
+    ASSERT_EQ(text.status, 0) << text.err;
+    const double share = nlohmann::json::parse(json.out)["dents_cut_share"].get<double>();
+    char line[96];
+    std::snprintf(line, sizeof line, "dents            cut %.3g %% of the paraboloid's volume",
+                  100 * share);
+    EXPECT_NE(text.out.find(line), std::string::npos) << line << "\n" << text.out;
+    EXPECT_EQ(text.out.find("still --view above") != std::string::npos, share > 0.25) << share;
+  }
+}
+
 // analyze says the body's size (a teacher's trial: nothing said how long a body the
 // paraboloid's numbers make). Eq. P1.1 with q = 0 at the top z = top: y = ±√(2a(top + a)/s),
 // x = ±√(2a(top + a)/p), and the height top + a; the default body (cm: a 1, p 0.5, s 0.03,
@@ -493,6 +510,18 @@ TEST(Cli, AMassNoMaterialGivesIsSaid) {
   EXPECT_NE(air.out.find("body.mass 0.059 kg in a body of 20 × 4.9 × 1.5 m is lighter than air"),
             std::string::npos)
       << air.out;
+  // Lengths ten times too large (mm numbers in a file of cm): 2 m of 59 g, about 1 kg/m³ over
+  // its own volume (a thousand times the default body's), where filling a tenth of its box it
+  // was not lighter than air, and nothing was said (a teacher's trial).
+  const Result tenfold =
+      rattleback("analyze " + scene("rattleback") +
+                 " --set 'body.paraboloid={a: 10, p: 0.5, q: 0, s: 0.03, top: 5}' --set "
+                 "'body.dents.at=[7.3, 45]' --set 'body.grid={dx: 0.5, dy: 0.5, dz: 0.5}'");
+  ASSERT_EQ(tenfold.status, 0) << tenfold.err;
+  EXPECT_NE(tenfold.out.find("WARNING: body.mass 0.059 kg in a body of 200 × 49 × 15 cm is "),
+            std::string::npos)
+      << tenfold.out;
+  EXPECT_NE(tenfold.out.find("lighter than any foam"), std::string::npos) << tenfold.out;
   const fs::path csv = tempFile("grams.csv");
   const Result run = rattleback("simulate " + scene("rattleback") +
                                 " --set body.mass=59 --duration 0.1 -o " + csv.string());
@@ -505,6 +534,7 @@ TEST(Cli, AMassNoMaterialGivesIsSaid) {
     const Result fine = rattleback("analyze " + scene(shipped));
     EXPECT_EQ(fine.out.find("denser than any solid"), std::string::npos) << shipped;
     EXPECT_EQ(fine.out.find("lighter than air"), std::string::npos) << shipped;
+    EXPECT_EQ(fine.out.find("lighter than any foam"), std::string::npos) << shipped;
   }
 }
 
