@@ -71,6 +71,7 @@ void printSummary(std::FILE* out, const SimulateArgs& args, const sim::Model& mo
   } else {
     std::fprintf(out, "first reversal  none in %g s\n", simulated);
     said("upright_start", "                (%s)\n");
+    said("nothing_moves", "                (%s)\n");
     said("sign_changed_uncounted", "                (%s)\n");
   }
   if (model.contact.model == sim::ContactModel::Auto) {

@@ -191,7 +191,8 @@ const std::vector<Key>& table() {
 
       {.path = "contact",
        .need = Need::Always,
-       .doc = "how the body meets the floor ([Physics](physics.md) §P4)"},
+       .doc = "how the body meets the floor ([Physics](physics.md) §P4)",
+       .example = "contact: {model: rolling}"},
       {.path = "contact.model",
        .field = FIELD(spec.contact.model),
        .doc = "springs at the grid's surface points, one spring at the lowest point of the "

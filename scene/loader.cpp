@@ -217,6 +217,17 @@ class MapReader {
            ")";
   }
 
+  // units.length given as a unit's name ("cm"): the metres it stands for (a student's trial).
+  std::string lengthUnitHint(const YAML::Node& node, const std::string& key) const {
+    if (join(path_, key) != "units.length" || !node.IsScalar()) return "";
+    static const std::map<std::string, std::string> metres = {
+        {"m", "1"}, {"cm", "0.01"}, {"mm", "0.001"}, {"in", "0.0254"}, {"inch", "0.0254"}};
+    const auto known = metres.find(node.Scalar());
+    return known == metres.end()
+               ? " (the metres in one length unit: 0.01 for cm, 0.001 for mm)"
+               : " (the metres in one length unit: " + known->second + " for " + known->first + ")";
+  }
+
   // A decimal comma (0,059): the number with a point (a teacher's trial).
   static std::string commaHint(const YAML::Node& node) {
     if (!node.IsScalar()) return "";
@@ -235,7 +246,8 @@ class MapReader {
     if (node.IsScalar() && node.Tag() == "!")
       fail(key, "must be a number, not the quoted string \"" + node.Scalar() + "\"");
     if (!node.IsScalar() || !YAML::convert<double>::decode(node, v))
-      fail(key, "must be a number, not " + described(node) + unitHint(node, key) + commaHint(node));
+      fail(key, "must be a number, not " + described(node) + unitHint(node, key) + commaHint(node) +
+                    lengthUnitHint(node, key));
     return v;
   }
 
@@ -415,6 +427,24 @@ rb::Error malformed(const std::string& name, const YAML::Exception& e) {
 
 }  // namespace
 
+namespace {
+
+// Every map's keys are checked before any key is found missing: a misspelt key inside body was
+// named only after contact, missing, had been added ("x.yaml:1: contact is required" for
+// `body: {mas: 1}`: a student's trial).
+void checkKnownKeys(const YAML::Node& node, const std::string& path, int line,
+                    const std::map<std::string, int>& lines) {
+  Loaded scratch;
+  const MapReader reader(node, path, line, scratch, lines);  // (refuses an unknown key)
+  for (const auto& entry : node) {
+    const std::string key = join(path, entry.first.as<std::string>());
+    if (entry.second.IsMap() && !keysIn(key).empty())
+      checkKnownKeys(entry.second, key, reader.lineIn(entry.first, key), lines);
+  }
+}
+
+}  // namespace
+
 rb::Result<Loaded> loadTree(const YAML::Node& root_node, const std::string& name,
                             const std::map<std::string, std::string>& places,
                             const std::map<std::string, int>& lines) {
@@ -426,6 +456,7 @@ rb::Result<Loaded> loadTree(const YAML::Node& root_node, const std::string& name
       return rb::Error{"", printable(name) +
                                ":1: the scene is empty; expected keys such as "
                                "body, contact, simulation"};
+    if (root_node.IsMap()) checkKnownKeys(root_node, "", 1, lines);
     MapReader root(root_node, "", 1, out, lines);
     readKeys(root, out);
   } catch (const Failure& f) {

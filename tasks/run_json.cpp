@@ -92,6 +92,13 @@ std::vector<RunWarning> runWarnings(const sim::Model& model, const sim::RunSumma
     w.push_back({"dents_cut_nothing",
                  "body.dents cut nothing: they lie wholly outside the body, which is the plain "
                  "paraboloid"});
+  // Not spun, not tilted, not dropped: nothing moves (a student left initial: out, and read
+  // "first reversal none" as the body's doing).
+  if (model.initial.spin == 0 && model.initial.tilt_x == 0 && model.initial.tilt_y == 0 &&
+      model.initial.height == 0)
+    w.push_back({"nothing_moves",
+                 "not spun, not tilted (initial.spin 0, initial.tilt [0, 0]): the body rests as "
+                 "it is; give initial: {spin: -5, tilt: [0.5, 0.5]}"});
   // An exactly upright spin is an equilibrium: the rocking that turns it back has nothing to
   // grow from.
   if (!run.first_reversal_s && model.initial.tilt_x == 0 && model.initial.tilt_y == 0 &&

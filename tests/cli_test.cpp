@@ -435,6 +435,16 @@ TEST(Cli, ASpinEndedTheOtherWayWithoutAReversalSaysWhy) {
       << r.out;
   const nlohmann::json sidecar = nlohmann::json::parse(readText(csv.string() + ".json"));
   EXPECT_EQ(sidecar["result"]["warnings"][0]["code"], "sign_changed_uncounted");
+  // A body neither spun nor tilted rests as it is: said, not left as "none" (a student left out
+  // initial:).
+  const Result still = rattleback("simulate " + scene("rattleback") +
+                                  " --set initial.spin=0 --set 'initial.tilt=[0, 0]' --duration "
+                                  "1 -o " +
+                                  csv.string());
+  EXPECT_NE(still.out.find("first reversal  none in 1 s\n                (not spun, not tilted "
+                           "(initial.spin 0, initial.tilt [0, 0]): the body rests as it is"),
+            std::string::npos)
+      << still.out;
   // A body that came to rest with a trace of spin the other way is not told to run longer: the
   // seed's body, fallen onto its side, ends at +4.35e-6 rad/s from −10 with 1.4e-10 J of its
   // 0.13 J kinetic energy (a teacher's trial).
@@ -445,6 +455,42 @@ TEST(Cli, ASpinEndedTheOtherWayWithoutAReversalSaysWhy) {
                           "reversal)"),
             std::string::npos)
       << rest.out;
+}
+
+// The hints a student and a teacher found missing: a swap of two letters is one typo (video.fsp
+// got no "did you mean fps?"), a word with another ending is its word (parabola), a unit's name
+// for units.length says the metres it stands for, a misspelt key inside a map is named before a
+// map missing elsewhere ("contact is required" hid body.mas), and a missing contact gets an
+// example as the other required keys do.
+TEST(Cli, TyposGetTheHintsTheyNeed) {
+  const std::string run = "simulate " + scene("rattleback") + " --duration 0.1 -q -o " +
+                          tempFile("hint.csv").string() + " ";
+  for (const auto& [set, said] :
+       {std::pair<std::string, std::string>{"--set video.fsp=24", "did you mean fps?"},
+        {"--set body.shape=parabola", "not 'parabola'; did you mean paraboloid?"},
+        {"--set units.length=cm",
+         "units.length must be a number, not 'cm' (the metres in one length unit: 0.01 for cm)"}}) {
+    const Result r = rattleback(run + set);
+    EXPECT_EQ(r.status, 2) << set;
+    EXPECT_NE(r.err.find(said), std::string::npos) << set << ": " << r.err;
+  }
+  const fs::path bare = tempFile("bare.yaml");
+  std::ofstream(bare) << "units: {length: 0.01}\nbody: {mas: 1}\n";
+  const Result typo = rattleback("analyze " + bare.string());
+  EXPECT_EQ(typo.err, bare.string() +
+                          ":2: body.mas is not a known key; did you mean mass? (known "
+                          "here: shape, paraboloid, dents, grid, mass_properties, "
+                          "mass, ellipsoid, inertia)\n");
+  std::ofstream(bare) << "units: {length: 0.01}\n";
+  const Result missing = rattleback("analyze " + bare.string());
+  EXPECT_NE(missing.err.find("body is required"), std::string::npos) << missing.err;
+  std::string text = readText(scene("rattleback"));
+  text.erase(text.find("contact:"), text.find("gravity:") - text.find("contact:"));
+  std::ofstream(bare) << text;
+  const Result contact = rattleback("analyze " + bare.string());
+  EXPECT_NE(contact.err.find("contact is required, e.g. contact: {model: rolling}"),
+            std::string::npos)
+      << contact.err;
 }
 
 // analyze's text says how much of the body the dents take, as --json's dents_cut_share does

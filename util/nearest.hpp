@@ -11,20 +11,25 @@
 
 namespace rb {
 
-/// Levenshtein distance between two words.
+/// Edits between two words: letters put in, taken out or changed, and two neighbours swapped
+/// (the optimal-string-alignment distance: a swap is one typo, "fsp" for "fps", where counted
+/// as two changes it was too far from a three-letter word to be suggested: a teacher's trial).
 inline std::size_t editDistance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  // Three rows of the table: d[i−2], d[i−1] and d[i].
+  std::vector<std::size_t> before(b.size() + 1), last(b.size() + 1), row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) last[j] = j;
   for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
     row[0] = i;
     for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
+      row[j] =
+          std::min({last[j] + 1, row[j - 1] + 1, last[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        row[j] = std::min(row[j], before[j - 2] + 1);
     }
+    std::swap(before, last);
+    std::swap(last, row);
   }
-  return row[b.size()];
+  return last[b.size()];
 }
 
 /// The known word nearest `word`, when it is near enough to be a typo of it: at most two edits
@@ -40,7 +45,21 @@ std::optional<std::string> nearestWord(std::string_view word, const Words& known
   }
   if (nearest && best <= std::max<std::size_t>(2, word.size() / 3) && 2 * best <= word.size())
     return nearest;
-  return std::nullopt;
+  // Else the one known word that begins as this one does for five letters or more and three
+  // quarters of the shorter: the same word with another ending ("parabola" for "paraboloid": a
+  // student's trial).
+  std::optional<std::string> begun;
+  for (const auto& candidate : known) {
+    const std::string_view c(candidate);
+    const std::size_t shorter = std::min(word.size(), c.size());
+    std::size_t same = 0;
+    while (same < shorter && word[same] == c[same]) ++same;
+    if (same >= 5 && 4 * same >= 3 * shorter) {
+      if (begun) return std::nullopt;  // two such: no guess
+      begun = std::string(candidate);
+    }
+  }
+  return begun;
 }
 
 }  // namespace rb
