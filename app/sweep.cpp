@@ -130,7 +130,18 @@ rb::Status plotTable(const std::string& png, const std::string& metric, const st
   for (std::size_t i = 0; i < axes; ++i)
     if (std::find(drawn.begin(), drawn.end(), i) == drawn.end())
       fixed += (fixed.empty() ? "" : ", ") + table.keys[i] + " = " + table.axis_values[i][0];
-  const std::string named = metric + (fixed.empty() ? "" : " (" + fixed + ")");
+  // The metric in words in the title, its column's name on the axis (a teacher read
+  // "depth: first_reversal_s" as the program's names, not the figure's story).
+  static const std::map<std::string, std::string> words = {
+      {"first_reversal_s", "time of the first reversal"},
+      {"reversals", "number of reversals"},
+      {"final_spin", "spin at the end"},
+      {"max_tilt_deg", "largest tilt"},
+      {"energy_lost", "share of the energy lost"},
+      {"wall_s", "wall time of each run"}};
+  const auto said = words.find(metric);
+  const std::string named =
+      (said == words.end() ? metric : said->second) + (fixed.empty() ? "" : " (" + fixed + ")");
   const auto at = [&](std::size_t axis, std::size_t i) {
     return static_cast<std::size_t>(static_cast<std::int64_t>(i) * stride[axis]);
   };
