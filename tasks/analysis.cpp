@@ -113,7 +113,9 @@ std::optional<std::string> implausibleMass(const sim::Body& body, double length_
   }
   // Over its own volume, lighter than any foam: lengths ten times too large (mm numbers in a
   // file of cm made a 2 m body of 59 g, 1.2 kg/m³, with nothing said: a teacher's trial).
-  if (const double density = body.mass / bodyVolume(body); density < 5) {
+  // (Filling at most its box, it is at least `least` dense: the volume is worked out only for a
+  // body light for its box.)
+  if (const double density = least < 5 ? body.mass / bodyVolume(body) : least; density < 5) {
     std::snprintf(text, sizeof text,
                   "body.mass %g kg in a body of %s is %.2g kg/m³, lighter than any foam "
                   "(expanded polystyrene: 10–30 kg/m³): are the lengths larger than meant? "
