@@ -132,16 +132,8 @@ rb::Status plotTable(const std::string& png, const std::string& metric, const st
       fixed += (fixed.empty() ? "" : ", ") + table.keys[i] + " = " + table.axis_values[i][0];
   // The metric in words in the title, its column's name on the axis (a teacher read
   // "depth: first_reversal_s" as the program's names, not the figure's story).
-  static const std::map<std::string, std::string> words = {
-      {"first_reversal_s", "time of the first reversal"},
-      {"reversals", "number of reversals"},
-      {"final_spin", "spin at the end"},
-      {"max_tilt_deg", "largest tilt"},
-      {"energy_lost", "share of the energy lost"},
-      {"wall_s", "wall time of each run"}};
-  const auto said = words.find(metric);
   const std::string named =
-      (said == words.end() ? metric : said->second) + (fixed.empty() ? "" : " (" + fixed + ")");
+      tasks::sweepMetricWords(metric) + (fixed.empty() ? "" : " (" + fixed + ")");
   const auto at = [&](std::size_t axis, std::size_t i) {
     return static_cast<std::size_t>(static_cast<std::int64_t>(i) * stride[axis]);
   };
@@ -265,11 +257,7 @@ rb::Result<Plan> planRows(const SweepArgs& args, const scene::Sweep& sweep,
   Plan plan;
   plan.rows = tasks::shardRows(sweep, shard);
   const std::string journal = tasks::Journal::pathOf(output);
-  if (tasks::Journal::busy(journal))
-    return rb::Error{"", output + ": another sweep is writing this table now (its journal " +
-                             journal +
-                             " is in use); wait for it to finish, or give -o another "
-                             "name"};
+  if (tasks::Journal::busy(output)) return tasks::Journal::inUse(output);
   if (args.resume) {
     auto kept = tasks::Journal::read(journal, sweep, plan.rows);
     if (!kept) return kept.error();

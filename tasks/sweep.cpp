@@ -157,6 +157,20 @@ bool isSweepMetric(const std::string& name) {
   return false;
 }
 
+std::string sweepMetricWords(const std::string& name) {
+  // Short, for a figure's title; the columns' meanings (kResults) are the sidecar's.
+  static const std::pair<const char*, const char*> kWords[] = {
+      {"first_reversal_s", "time of the first reversal"},
+      {"reversals", "number of reversals"},
+      {"final_spin", "spin at the end"},
+      {"max_tilt_deg", "largest tilt"},
+      {"energy_lost", "share of the energy lost"},
+      {"wall_s", "wall time of each run"}};
+  for (const auto& [column, words] : kWords)
+    if (name == column) return words;
+  return name;
+}
+
 std::string sweepMetricNames() {
   std::string names;
   for (const Column& c : kResults)

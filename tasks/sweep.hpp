@@ -57,6 +57,9 @@ std::span<const Column> sweepResultColumns();
 std::string sweepColumnUnit(const std::string& name);
 /// Whether `name` is a result column with a number (what a heatmap can show).
 bool isSweepMetric(const std::string& name);
+/// A metric in words, for a figure's title ("time of the first reversal"); the name itself for
+/// one it does not know.
+std::string sweepMetricWords(const std::string& name);
 /// "a, b or c": the metrics, for messages and --help.
 std::string sweepMetricNames();
 

@@ -250,8 +250,7 @@ rb::Result<Journal> Journal::open(const std::string& output, const std::string& 
   const int lock = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
   if (lock >= 0 && ::flock(lock, LOCK_EX | LOCK_NB) != 0) {
     ::close(lock);
-    return rb::Error{"", output + ": another sweep is writing this table now (its journal " + path +
-                             " is in use); wait for it to finish, or give -o another name"};
+    return inUse(output);
   }
   std::ofstream(path + ".json", std::ios::trunc)
       << nlohmann::json{{"fingerprint", fingerprint}}.dump() << "\n";
@@ -273,8 +272,14 @@ Journal::~Journal() {
   if (lock_ >= 0) ::close(lock_);
 }
 
-bool Journal::busy(const std::string& path) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+rb::Error Journal::inUse(const std::string& output) {
+  return rb::Error{"", output + ": another sweep is writing this table now (its journal " +
+                           pathOf(output) +
+                           " is in use); wait for it to finish, or give -o another name"};
+}
+
+bool Journal::busy(const std::string& output) {
+  const int fd = ::open(pathOf(output).c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) return false;
   const bool held = ::flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK;
   ::close(fd);

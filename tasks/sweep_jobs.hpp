@@ -64,9 +64,10 @@ class Journal {
                                   const std::string& fingerprint);
   /// Removes the journal and its fingerprint (the table is in place).
   static void remove(const std::string& path);
-  /// Whether another process's sweep holds the journal at `path` (open() locks it while the
-  /// sweep runs).
-  static bool busy(const std::string& path);
+  /// Whether another process's sweep holds the journal of the table `output` (open() locks it
+  /// while the sweep runs); the error saying so.
+  static bool busy(const std::string& output);
+  static rb::Error inUse(const std::string& output);
   void append(const std::string& line);
   void close() { out_.close(); }
 
