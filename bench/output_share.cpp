@@ -108,14 +108,12 @@ int main(int argc, char** argv) {
   std::printf("  then written over it           %6.1f ms: %.0f %% of the whole\n", v * 1e3,
               100 * v / (k + v));
 
-  // The numbers the CSV has (its 20 columns of doubles), formatted alone.
+  // The numbers the CSV has (its columns of doubles, tasks::telemetryTable), formatted alone.
   std::vector<double> numbers;
   for (const sim::Telemetry& s : samples) {
     const Eigen::Quaterniond q = tasks::attitude(s);
-    for (double x : {s.t, s.spin, s.energy, s.kinetic, s.potential, s.elastic, s.tilt_deg,
-                     s.x_world.x(), s.x_world.y(), s.x_world.z(), s.w_world.x(), s.w_world.y(),
-                     s.w_world.z(), s.L_world.z(), s.normal_force, q.w(), q.x(), q.y(), q.z()})
-      numbers.push_back(x);
+    for (const tasks::TelemetryColumn& c : tasks::telemetryTable())
+      if (c.kind == tasks::ColumnKind::Number) numbers.push_back(c.value({s, q}));
   }
   std::vector<char> text(numbers.size() * 33);
   std::size_t theirs = 0, ours = 0;

@@ -131,54 +131,63 @@ py::array_t<double> column(const std::vector<sim::Telemetry>& samples, F value) 
   return frozen(std::move(out));
 }
 
-py::dict columns(const Run& run) {
-  const auto& samples = run.samples;
-  const auto n = static_cast<py::ssize_t>(samples.size());
-  // Every column filled in one pass over the samples (a pass a column read the samples' 30 MB
-  // of a 10 kHz run 20 times over).
-  static constexpr const char* kNames[] = {
-      "t",  "spin", "energy", "kinetic", "potential",    "elastic", "tilt_deg", "x",  "y", "z",
-      "wx", "wy",   "wz",     "Lz",      "normal_force", "qw",      "qx",       "qy", "qz"};
-  constexpr std::size_t kDoubles = std::size(kNames);
-  std::vector<py::array_t<double>> arrays;
-  std::vector<double*> at;
-  for (std::size_t i = 0; i < kDoubles; ++i) {
-    arrays.emplace_back(n);
-    at.push_back(arrays.back().mutable_data());
+// The array a column fills, of its kind's type (tasks::ColumnKind): float64; int64 for a count,
+// as pandas and NumPy read a column of whole numbers (pd.read_csv of the CSV gives int64, so a
+// frame from to_pandas and one read from the CSV compare equal); and for the mode an index into
+// its names, made text by NumPy at once (a Python string a sample was most of the column's cost).
+struct ColumnArray {
+  py::array_t<double> numbers;
+  py::array_t<std::int64_t> counts;
+  py::array_t<std::uint8_t> modes;
+  double* number = nullptr;
+  std::int64_t* count = nullptr;
+  std::uint8_t* mode = nullptr;
+  void make(tasks::ColumnKind kind, py::ssize_t n) {
+    switch (kind) {
+      case tasks::ColumnKind::Number:
+        number = (numbers = py::array_t<double>(n)).mutable_data();
+        break;
+      case tasks::ColumnKind::Count:
+        count = (counts = py::array_t<std::int64_t>(n)).mutable_data();
+        break;
+      case tasks::ColumnKind::Mode:
+        mode = (modes = py::array_t<std::uint8_t>(n)).mutable_data();
+        break;
+    }
   }
-  // 64-bit, as pandas and NumPy read a column of whole numbers (pd.read_csv of the CSV gives
-  // int64): a frame from to_pandas and one read from the CSV compare equal.
-  py::array_t<std::int64_t> contacts(n);
-  std::int64_t* c = contacts.mutable_data();
-  // The mode as an index into its names, made text by NumPy at once (a Python string a sample
-  // was most of the column's cost).
-  py::array_t<std::uint8_t> mode(n);
-  std::uint8_t* m = mode.mutable_data();
-  const auto& kModes = rb::NameTable<sim::ContactModel>::entries;
-  std::size_t k = 0;
-  for (const sim::Telemetry& s : samples) {
+  void set(py::ssize_t k, double value) {
+    if (number) number[k] = value;
+    if (count) count[k] = static_cast<std::int64_t>(value);
+    if (mode) mode[k] = static_cast<std::uint8_t>(value);
+  }
+  py::object array(tasks::ColumnKind kind) && {
+    if (kind == tasks::ColumnKind::Number) return frozen(std::move(numbers));
+    if (kind == tasks::ColumnKind::Count) return frozen(std::move(counts));
+    py::list names;
+    for (const auto& [value, name] : rb::NameTable<sim::ContactModel>::entries)
+      names.append(py::str(std::string(name)));
+    const py::module_ np = py::module_::import("numpy");
+    return frozen(py::array(np.attr("array")(names).attr("__getitem__")(modes)));
+  }
+};
+
+// Every telemetry column (tasks::telemetryTable, in the CSV's order) as a read-only array, all
+// filled in one pass over the samples (a pass a column read a 10 kHz run's 30 MB 20 times over).
+py::dict columns(const Run& run) {
+  const auto table = tasks::telemetryTable();
+  const auto n = static_cast<py::ssize_t>(run.samples.size());
+  std::vector<ColumnArray> arrays(table.size());
+  for (std::size_t i = 0; i < table.size(); ++i) arrays[i].make(table[i].kind, n);
+  py::ssize_t k = 0;
+  for (const sim::Telemetry& s : run.samples) {
     const Eigen::Quaterniond q = tasks::attitude(s);
-    const double row[kDoubles] = {s.t,           s.spin,        s.energy,       s.kinetic,
-                                  s.potential,   s.elastic,     s.tilt_deg,     s.x_world.x(),
-                                  s.x_world.y(), s.x_world.z(), s.w_world.x(),  s.w_world.y(),
-                                  s.w_world.z(), s.L_world.z(), s.normal_force, q.w(),
-                                  q.x(),         q.y(),         q.z()};
-    for (std::size_t i = 0; i < kDoubles; ++i) at[i][k] = row[i];
-    c[k] = s.contacts;
-    m[k] = 0;
-    while (kModes[m[k]].first != s.mode) ++m[k];
+    const tasks::SampleView view{s, q};
+    for (std::size_t i = 0; i < table.size(); ++i) arrays[i].set(k, table[i].value(view));
     ++k;
   }
-  // In the CSV's order: up to Lz, contacts, normal_force, mode, the attitude.
   py::dict d;
-  for (std::size_t i = 0; i < 14; ++i) d[kNames[i]] = frozen(std::move(arrays[i]));
-  d["contacts"] = frozen(std::move(contacts));
-  d["normal_force"] = frozen(std::move(arrays[14]));
-  py::list names;
-  for (const auto& [value, name] : kModes) names.append(py::str(std::string(name)));
-  const py::module_ np = py::module_::import("numpy");
-  d["mode"] = frozen(py::array(np.attr("array")(names).attr("__getitem__")(mode)));
-  for (std::size_t i = 15; i < kDoubles; ++i) d[kNames[i]] = frozen(std::move(arrays[i]));
+  for (std::size_t i = 0; i < table.size(); ++i)
+    d[table[i].column.name] = std::move(arrays[i]).array(table[i].kind);
   return d;
 }
 

@@ -14,91 +14,75 @@
 
 #include "tasks/output.hpp"
 #include "tasks/run_json.hpp"
+#include "tasks/telemetry_columns.hpp"
 #include "util/format.hpp"
 
 namespace tasks {
 namespace {
 
-// The CSV's columns, their units and meanings: the header is the first line of the file (so
-// that every CSV reader takes it as the header); units and meanings go to the sidecar X.csv.json.
-constexpr Column kColumns[] = {
-    {"t", "s", "time"},
-    {"spin", "rad/s", "n = w.z, + counter-clockwise seen from above"},
-    {"energy", "J", "kinetic + potential + elastic"},
-    {"kinetic", "J", "M v^2/2 + w.L/2"},
-    {"potential", "J", "M g z of the centre of mass"},
-    {"elastic", "J", "sum of k depth^2/2 over the contact springs"},
-    {"tilt_deg", "deg", "angle between the body's z axis and the vertical"},
-    {"x", "m", "centre of mass"},
-    {"y", "m", "centre of mass"},
-    {"z", "m", "centre of mass"},
-    {"wx", "rad/s", "angular velocity, world axes"},
-    {"wy", "rad/s", "angular velocity, world axes"},
-    {"wz", "rad/s", "angular velocity, world axes"},
-    {"Lz", "kg m^2/s", "vertical angular momentum about the centre of mass"},
-    {"contacts", "", "count of contact points below the floor"},
-    {"normal_force", "N", "total normal force of the floor"},
-    {"mode", "",
-     "the contact model integrated: points, smooth or rolling (contact.model auto "
-     "switches between rolling and smooth)"},
-    {"qw", "",
-     "attitude: unit quaternion (qw, qx, qy, qz), scalar first, rotating body axes into "
-     "world axes (world z up); continuous in time (q and -q are the same rotation)"},
-    {"qx", "", "attitude quaternion, x part (see qw)"},
-    {"qy", "", "attitude quaternion, y part (see qw)"},
-    {"qz", "", "attitude quaternion, z part (see qw)"},
-};
+// The CSV's columns as the sidecar and Python list them (name, unit, meaning): the table's.
+const std::vector<Column>& columnsOfTable() {
+  static const std::vector<Column> columns = [] {
+    std::vector<Column> out;
+    for (const TelemetryColumn& c : telemetryTable()) out.push_back(c.column);
+    return out;
+  }();
+  return columns;
+}
+
+// Room for one row: kMaxTelemetryColumns fields of at most kNumberChars (a mode's name is
+// shorter).
+constexpr std::size_t kRowChars = kMaxTelemetryColumns * kNumberChars;
+
+// One field of a row at `at`; returns its end. `starts` holds where each earlier field began
+// (a column the same as an earlier one copies that one's text when the doubles are the same).
+char* formatField(char* at, const TelemetryColumn& c, double value, const char* const* starts,
+                  const double* values) {
+  switch (c.kind) {
+    case ColumnKind::Count:
+      return std::to_chars(at, at + kNumberChars, static_cast<long long>(value)).ptr;
+    case ColumnKind::Mode: {
+      const auto& names = rb::NameTable<sim::ContactModel>::entries;
+      const std::string_view name = names[static_cast<std::size_t>(value)].second;
+      return std::copy(name.begin(), name.end(), at);
+    }
+    case ColumnKind::Number:
+      break;
+  }
+  const int same = c.same_as;
+  if (same >= 0 &&
+      std::bit_cast<std::uint64_t>(values[same]) == std::bit_cast<std::uint64_t>(value))
+    return std::copy(starts[same], starts[same + 1] - 1, at);  // (its text, without the comma)
+  return writeNumber(at, value);
+}
 
 }  // namespace
 
 std::span<const Column> telemetryColumns() {
-  return kColumns;
+  return columnsOfTable();
 }
 
 std::string telemetryHeader() {
-  return csvHeader(kColumns) + "\n";
-}
-
-Eigen::Quaterniond attitude(const sim::Telemetry& s) {
-  // q and −q are the same rotation; the integrated quaternion is kept as it is (never flipped
-  // to qw ≥ 0), so that the columns are continuous in time as the body turns round and round.
-  return s.orientation.normalized();
+  return csvHeader(columnsOfTable()) + "\n";
 }
 
 namespace {
 
-// Room for one row: 20 numbers, the contacts and the mode.
-constexpr std::size_t kRowChars = 24 * kNumberChars;
-
 // Every number exactly (shortest round trip), written straight into one buffer: at 10 kHz
-// printf's formatting was most of a run's time (issue 27).
+// printf's formatting was most of a run's time (docs/speed.md).
 char* formatRow(char* line, const sim::Telemetry& s) {
   const Eigen::Quaterniond q = attitude(s);
+  const SampleView view{s, q};
+  const std::span<const TelemetryColumn> table = telemetryTable();
+  const char* starts[kMaxTelemetryColumns + 1];
+  double values[kMaxTelemetryColumns];
   char* at = line;
-  const auto put = [&](double value) {
-    at = writeNumber(at, value);
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    starts[i] = at;
+    values[i] = table[i].value(view);
+    at = formatField(at, table[i], values[i], starts, values);
     *at++ = ',';
-  };
-  put(s.t);
-  const char* spin = at;
-  put(s.spin);
-  const std::size_t spin_chars = static_cast<std::size_t>(at - spin);
-  for (double v : {s.energy, s.kinetic, s.potential, s.elastic, s.tilt_deg, s.x_world.x(),
-                   s.x_world.y(), s.x_world.z(), s.w_world.x(), s.w_world.y()})
-    put(v);
-  // wz is the spin n = ω·ẑ (sim::telemetryOf): its text again, not formatted twice.
-  if (std::bit_cast<std::uint64_t>(s.w_world.z()) == std::bit_cast<std::uint64_t>(s.spin))
-    at = std::copy_n(spin, spin_chars, at);
-  else
-    put(s.w_world.z());
-  put(s.L_world.z());
-  at = std::to_chars(at, at + kNumberChars, s.contacts).ptr;
-  *at++ = ',';
-  put(s.normal_force);
-  const std::string_view mode = rb::nameOf(s.mode);
-  at = std::copy(mode.begin(), mode.end(), at);
-  *at++ = ',';
-  for (double v : {q.w(), q.x(), q.y(), q.z()}) put(v);
+  }
   at[-1] = '\n';
   return at;
 }
@@ -184,7 +168,7 @@ nlohmann::json telemetrySidecar(const RunScene& scene, const sim::Model& model, 
   j["scene_values"] = nlohmann::json::array();
   for (const scene::KeyValue& kv : scene.values)
     j["scene_values"].push_back({{"key", kv.key}, {"value", kv.yaml}});
-  j["columns"] = columnsJson(kColumns);
+  j["columns"] = columnsJson(columnsOfTable());
   j["rows"] = rows;
   j["rate_hz"] = rate;
   j["model"] = modelJson(model);

@@ -20,22 +20,21 @@
 #include "tasks/outcome.hpp"
 #include "tasks/output.hpp"
 #include "tasks/table.hpp"
+#include "tasks/telemetry_columns.hpp"
 #include "util/result.hpp"
 
 namespace tasks {
 
 constexpr double kDefaultRate = 500;  ///< Hz: samples per simulated second when not given
 
-/// Every column of the telemetry, in the CSV's order.
+/// Every column of the telemetry, in the CSV's order: the name, unit and meaning of each row of
+/// telemetryTable().
 std::span<const Column> telemetryColumns();
 
 /// The CSV's header line (with its newline) and one row per sample (docs/commands.md "The telemetry
 /// CSV").
 std::string telemetryHeader();
 void writeTelemetryRow(std::ostream& out, const sim::Telemetry& s);
-/// The body's attitude at a sample as the qw … qz columns give it: unit, scalar first, body to
-/// world, continuous in time (the integrated quaternion, never flipped).
-Eigen::Quaterniond attitude(const sim::Telemetry& s);
 
 /// Checks a sampling rate for a run of `duration` s: > 0, at most 1e7 Hz and 1e8 rows.
 rb::Status checkRate(double rate, double duration);

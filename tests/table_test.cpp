@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cctype>
 #include <charconv>
@@ -145,6 +146,23 @@ TEST(Numbers, TelemetryRowsAreTheSamplesExactly) {
     const auto fields = split(line);
     ASSERT_EQ(fields.size(), header.size());
     const Eigen::Quaterniond q = tasks::attitude(s);
+    const auto table = tasks::telemetryTable();
+    for (std::size_t i = 0; i < header.size(); ++i) {
+      ASSERT_EQ(header[i], table[i].column.name);
+      if (table[i].kind == tasks::ColumnKind::Mode) {
+        EXPECT_EQ(fields[i], std::string(rb::nameOf(s.mode)));
+        continue;
+      }
+      const double value = table[i].value({s, q});
+      ASSERT_EQ(std::strtod(fields[i].c_str(), nullptr), value) << header[i] << " = " << fields[i];
+      // The sidecars' JSON (nlohmann's dump) reads back as the same double.
+      ASSERT_EQ(nlohmann::json::parse(nlohmann::json(value).dump()).get<double>(), value);
+    }
+    // And the columns are what their names say, read from the sample by hand.
+    const auto at = [&](const std::string& name) {
+      const auto i = std::find(header.begin(), header.end(), name) - header.begin();
+      return std::strtod(fields.at(static_cast<std::size_t>(i)).c_str(), nullptr);
+    };
     const std::map<std::string, double> expected = {{"t", s.t},
                                                     {"spin", s.spin},
                                                     {"energy", s.energy},
@@ -165,16 +183,7 @@ TEST(Numbers, TelemetryRowsAreTheSamplesExactly) {
                                                     {"qx", q.x()},
                                                     {"qy", q.y()},
                                                     {"qz", q.z()}};
-    for (std::size_t i = 0; i < header.size(); ++i) {
-      if (header[i] == "mode") {
-        EXPECT_EQ(fields[i], std::string(rb::nameOf(s.mode)));
-        continue;
-      }
-      const double value = expected.at(header[i]);
-      ASSERT_EQ(std::strtod(fields[i].c_str(), nullptr), value) << header[i] << " = " << fields[i];
-      // The sidecars' JSON (nlohmann's dump) reads back as the same double.
-      ASSERT_EQ(nlohmann::json::parse(nlohmann::json(value).dump()).get<double>(), value);
-    }
+    for (const auto& [name, value] : expected) ASSERT_EQ(at(name), value) << name;
   }
 }
 
@@ -266,4 +275,25 @@ TEST(Numbers, ACsvWrittenAsTheRunGoesIsTheRowsInOrder) {
   ASSERT_EQ(writer->rows(), 40004);
   ASSERT_TRUE(writer->commit({"s.yaml", {}}, model, 1e5, run.summary));
   expectTheFileHolds(path, expected.str());
+}
+
+// The telemetry's reader's page lists every column of the table, in its order: the header line
+// it quotes is the writer's, and each column has a row of the page's table (a column added to
+// tasks::telemetryTable without a word for the reader fails here).
+TEST(Docs, TheTelemetryPageListsEveryColumn) {
+  std::ifstream in(std::string(RATTLEBACK_SOURCE_DIR) + "/docs/commands.md");
+  std::stringstream page;
+  page << in.rdbuf();
+  const std::string text = page.str();
+  const std::string header = tasks::telemetryHeader();
+  EXPECT_NE(text.find("\n" + header), std::string::npos) << "the header line " << header;
+  for (const tasks::TelemetryColumn& c : tasks::telemetryTable()) {
+    const std::string name = c.column.name;
+    // A row names it alone (`| `spin` |`) or among its fellows (`| `x, y, z` |`).
+    const bool alone = text.find("| `" + name + "` |") != std::string::npos;
+    const bool among = text.find("| `" + name + ", ") != std::string::npos ||
+                       text.find(", " + name + "` |") != std::string::npos ||
+                       text.find(", " + name + ", ") != std::string::npos;
+    EXPECT_TRUE(alone || among) << name << " has no row in docs/commands.md \"The telemetry CSV\"";
+  }
 }

@@ -177,10 +177,9 @@ def _scene(scene: SceneLike) -> Scene:
 class Run:
     """A finished run: every telemetry column as a NumPy array, and what the run found.
 
-    Columns (the CSV's, same names): ``t, spin, energy, kinetic, potential, elastic,
-    tilt_deg, x, y, z, wx, wy, wz, Lz, contacts, normal_force, mode, qw, qx, qy, qz`` (the
-    last four the attitude quaternion: unit, scalar first, body to world); ``units`` gives each
-    one's unit. ``result`` is the sidecar's ``result`` (status, reversals, energy, steps, …),
+    Columns (the CSV's, same names and order, from one table: ``t``, ``spin``, ``energy``, …,
+    ``mode``, and ``qw, qx, qy, qz``, the attitude quaternion: unit, scalar first, body to
+    world); ``units`` gives each one's unit and ``meanings`` what it is. ``result`` is the sidecar's ``result`` (status, reversals, energy, steps, …),
     ``model`` its ``model``. The arrays are read-only, as the CSV they stand for is (``.copy()``
     gives one to change).
     """
