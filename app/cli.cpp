@@ -206,8 +206,9 @@ void defineMerge(CLI::App& c, Cli& cli) {
   c.add_option("shards", m.shards, "The shards' CSV tables")->required();
   c.add_option("--plot", m.plot,
                "Heatmap (PNG) of --metric over the first two axes of more than one value");
-  c.add_option("--metric", m.metric,
-               "Column to plot: " + tasks::sweepMetricNames() + " (default first_reversal_s)");
+  c.add_option(
+      "--metric", m.metric,
+      "Column to plot: " + rb::choices<tasks::SweepMetric>(", ") + " (default first_reversal_s)");
   c.add_flag("-q,--quiet", m.quiet, "No summary");
 }
 
@@ -220,8 +221,9 @@ void defineSweep(CLI::App& c, Cli& cli) {
   c.add_option("--shard", w.shard, "I/N: run only rows I, I+N, I+2N, … (merge the shards after)");
   c.add_option("--plot", w.plot,
                "Heatmap (PNG) of --metric over the first two axes of more than one value");
-  c.add_option("--metric", w.metric,
-               "Column to plot: " + tasks::sweepMetricNames() + " (default first_reversal_s)");
+  c.add_option(
+      "--metric", w.metric,
+      "Column to plot: " + rb::choices<tasks::SweepMetric>(", ") + " (default first_reversal_s)");
   c.add_option("--emit", w.emit,
                "Print a job script instead of running: " + names<tasks::JobScript>() +
                    " (an sbatch job array and its merge, or command lines for GNU parallel)");

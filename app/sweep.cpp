@@ -84,24 +84,23 @@ struct Table {
   double length_unit = 0;      // m per file length unit of the base scene; 0: not known
 };
 
-// The metric of a row: only a run that reached its end has a value to show.
-double metricOf(const tasks::SweepRow& row, const std::string& metric) {
-  if (row.status != tasks::RowStatus::Ok) return std::nan("");
-  auto or_nan = [](const std::optional<double>& v) { return v.value_or(std::nan("")); };
-  if (metric == "first_reversal_s") return or_nan(row.first_reversal_s);
-  if (metric == "reversals")
-    return row.reversals ? static_cast<double>(*row.reversals) : std::nan("");
-  if (metric == "final_spin") return or_nan(row.final_spin);
-  if (metric == "max_tilt_deg") return or_nan(row.max_tilt_deg);
-  if (metric == "energy_lost") return or_nan(row.energy_lost);
-  return row.wall_s;  // wall_s
+// The metric --metric names (metricProblem has said when it names none).
+tasks::SweepMetric metricNamed(const std::string& name) {
+  return rb::parseName<tasks::SweepMetric>(name).value_or(tasks::SweepMetric::FirstReversal);
+}
+
+// Why --metric names no metric, or nothing.
+rb::Status metricProblem(const std::string& name) {
+  if (rb::parseName<tasks::SweepMetric>(name)) return {};
+  return rb::Status::fail("--metric: '" + name + "' is not a column to plot (one of " +
+                          rb::choices<tasks::SweepMetric>(", ") + ")");
 }
 
 // The metric from a line of a shard's table (the merge reads the files the shards wrote).
-double metricOf(const std::string& line, std::size_t axes, const std::string& metric) {
+double metricOf(const std::string& line, std::size_t axes, tasks::SweepMetric metric) {
   std::size_t column = 1 + axes;
   for (const tasks::Column& c : tasks::sweepResultColumns()) {
-    if (c.name == metric) break;
+    if (c.name == rb::nameOf(metric)) break;
     ++column;
   }
   const auto fields = splitCsv(line);
@@ -113,10 +112,11 @@ double metricOf(const std::string& line, std::size_t axes, const std::string& me
 
 // Draws `metric` over the first two axes of more than one value (a heatmap), or the one such
 // axis (a line plot); every other axis at its first value, said in the title. An axis of one
-// value drawn as a heatmap's side had given gnuplot an image one cell tall, which it left grey:
-// "no reversal" where every run reversed (a researcher's trial).
-rb::Status plotTable(const std::string& png, const std::string& metric, const std::string& title,
+// value is never a heatmap's side: gnuplot leaves an image one cell tall grey, which reads as
+// "no value" where every run had one.
+rb::Status plotTable(const std::string& png, tasks::SweepMetric metric_id, const std::string& title,
                      const Table& table) {
+  const std::string metric(rb::nameOf(metric_id));
   const std::size_t axes = table.keys.size();
   // Row index of coordinates (i0, i1, 0, 0, …).
   std::vector<std::int64_t> stride(axes, 1);
@@ -130,10 +130,9 @@ rb::Status plotTable(const std::string& png, const std::string& metric, const st
   for (std::size_t i = 0; i < axes; ++i)
     if (std::find(drawn.begin(), drawn.end(), i) == drawn.end())
       fixed += (fixed.empty() ? "" : ", ") + table.keys[i] + " = " + table.axis_values[i][0];
-  // The metric in words in the title, its column's name on the axis (a teacher read
-  // "depth: first_reversal_s" as the program's names, not the figure's story).
+  // The metric in words in the title (the figure's story), its column's name on the axis.
   const std::string named =
-      tasks::sweepMetricWords(metric) + (fixed.empty() ? "" : " (" + fixed + ")");
+      tasks::columnOf(metric_id).words + (fixed.empty() ? "" : " (" + fixed + ")");
   const auto at = [&](std::size_t axis, std::size_t i) {
     return static_cast<std::size_t>(static_cast<std::int64_t>(i) * stride[axis]);
   };
@@ -152,7 +151,7 @@ rb::Status plotTable(const std::string& png, const std::string& metric, const st
     }
     panel.log_x = logarithmicAxis(xs);
     // Every value of the axis spanned, and a missing point said (the runs that did not reverse
-    // vanished from the axis: a teacher's trial, spins −8 … 8 drawn as −8 … −1).
+    // would otherwise vanish from the axis: spins −8 … 8 drawn as −8 … −1).
     const auto [lo, hi] = std::minmax_element(xs.begin(), xs.end());
     if (*lo < *hi) panel.x_range = std::pair{*lo, *hi};
     if (std::any_of(series.points.begin(), series.points.end(),
@@ -188,9 +187,7 @@ std::string selfPath() {
 
 // The options that need no run: --metric, --jobs, --shard (and --plot with it).
 rb::Status checkOptions(const SweepArgs& args, std::optional<tasks::Shard>& shard) {
-  if (!tasks::isSweepMetric(args.metric))
-    return rb::Status::fail("--metric: '" + args.metric + "' is not a column to plot (one of " +
-                            tasks::sweepMetricNames() + ")");
+  if (auto bad = metricProblem(args.metric); !bad) return bad;
   if (args.jobs < 0 || args.jobs > 1024)
     return rb::Status::fail("--jobs: threads must be 1 … 1024 (0 or none: all cores), not " +
                             std::to_string(args.jobs));
@@ -297,7 +294,7 @@ bool runRows(const SweepArgs& args, const scene::Sweep& sweep, const scene::Swee
   if (run.interrupted) return false;
   for (const tasks::SweepRow& row : run.rows) {
     plan.done[row.row] = tasks::sweepLine(row);
-    metric[row.row] = metricOf(row, args.metric);
+    metric[row.row] = tasks::metricOf(row, metricNamed(args.metric));
     ++plan.counts[std::string(rb::nameOf(row.status))];
   }
   return true;
@@ -329,7 +326,7 @@ void printSummary(const SweepArgs& args, const std::optional<tasks::Shard>& shar
   });
   if (first != run.rows.end() && counts["refused"] < static_cast<int>(plan.done.size()))
     std::printf("refused         row %lld: %s\n", static_cast<long long>(first->row),
-                first->reason.c_str());
+                first->message.c_str());
 }
 
 // The table, its sidecar and its heatmap, once every row is done.
@@ -347,10 +344,10 @@ rb::Status writeOutputs(const SweepArgs& args, const scene::Sweep& sweep,
   for (const auto& axis : sweep.axes) table.axis_values.push_back(axis.values);
   for (const auto& [r, line] : plan.done) {
     const auto it = metric.find(r);
-    table.values.push_back(it != metric.end() ? it->second
-                                              : metricOf(line, keys.size(), args.metric));
+    table.values.push_back(
+        it != metric.end() ? it->second : metricOf(line, keys.size(), metricNamed(args.metric)));
   }
-  return plotTable(args.plot, args.metric, fs::path(args.file).stem().string(), table);
+  return plotTable(args.plot, metricNamed(args.metric), fs::path(args.file).stem().string(), table);
 }
 
 // Where the table goes, checked, with its folder made (and the plot's, added to `made`: a sweep
@@ -424,7 +421,7 @@ int sweepCommand(const SweepArgs& args) {
       return row.status == tasks::RowStatus::Refused;
     });
     std::cerr << args.file << ": every run was refused, nothing written"
-              << (first == run.rows.end() ? std::string() : "; the first: " + first->reason)
+              << (first == run.rows.end() ? std::string() : "; the first: " + first->message)
               << "\n";
     return kBadInput;
   }
@@ -441,10 +438,7 @@ int sweepCommand(const SweepArgs& args) {
 }
 
 int sweepMergeCommand(const SweepMergeArgs& args) {
-  if (!tasks::isSweepMetric(args.metric))
-    return fail(rb::Status::fail("--metric: '" + args.metric +
-                                 "' is not a column to plot (one of " + tasks::sweepMetricNames() +
-                                 ")"));
+  if (auto bad = metricProblem(args.metric); !bad) return fail(bad);
   if (args.shards.empty())
     return fail(
         rb::Status::fail("sweep merge: give the shard tables to merge (OUT.csv SHARD.csv…)"));
@@ -466,9 +460,9 @@ int sweepMergeCommand(const SweepMergeArgs& args) {
         m.sidecar.contains("length_unit_m") ? m.sidecar["length_unit_m"] : nlohmann::json();
     Table table{m.keys, m.axis_values, {}, unit.is_number() ? unit.get<double>() : 0.0};
     for (const std::string& line : m.lines)
-      table.values.push_back(metricOf(line, m.keys.size(), args.metric));
+      table.values.push_back(metricOf(line, m.keys.size(), metricNamed(args.metric)));
     const std::string title = fs::path(sweep_file).stem().string();
-    if (auto e = plotTable(args.plot, args.metric, title, table); !e) return fail(e);
+    if (auto e = plotTable(args.plot, metricNamed(args.metric), title, table); !e) return fail(e);
   }
   // The merged table and its plot go into the folder's manifest as an in-process sweep's do.
   std::vector<tasks::OutputEntry> entries = {

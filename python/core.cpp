@@ -332,11 +332,9 @@ std::shared_ptr<SweepTable> sweepOf(const std::string& vary, const std::string& 
   return runSweepTable(std::move(made), jobs, resume);
 }
 
-// An optional number as a float, NaN when absent.
-double orNan(const std::optional<double>& v) {
-  return v.value_or(std::nan(""));
-}
-
+// The table's columns by name: the row index, each axis's values as written (the package makes
+// numbers of them), and each result column (tasks::sweepResultTable): a number where the column
+// has one (NaN for none), else its text.
 py::dict sweepColumns(const SweepTable& t) {
   py::dict d;
   const auto n = static_cast<py::ssize_t>(t.rows.size());
@@ -346,28 +344,19 @@ py::dict sweepColumns(const SweepTable& t) {
   for (std::size_t a = 0; a < t.sweep.axes.size(); ++a) {
     py::list values;
     for (const tasks::SweepRow& r : t.rows) values.append(r.values[a]);
-    d[py::str(t.sweep.axes[a].key)] = values;  // text as written; the package makes numbers
+    d[py::str(t.sweep.axes[a].key)] = values;
   }
-  py::list status, reason;
-  for (const tasks::SweepRow& r : t.rows) {
-    status.append(std::string(rb::nameOf(r.status)));
-    reason.append(r.reason);
+  for (const tasks::SweepResultColumn& c : tasks::sweepResultTable()) {
+    if (c.value) {
+      py::array_t<double> out(n);
+      for (py::ssize_t i = 0; i < n; ++i) out.mutable_data()[i] = c.value(t.rows[i]);
+      d[c.column.name] = out;
+    } else {
+      py::list text;
+      for (const tasks::SweepRow& r : t.rows) text.append(c.text(r));
+      d[c.column.name] = text;
+    }
   }
-  d["status"] = status;
-  d["reason"] = reason;
-  auto numbers = [&](auto value) {
-    py::array_t<double> out(n);
-    for (py::ssize_t i = 0; i < n; ++i) out.mutable_data()[i] = value(t.rows[i]);
-    return out;
-  };
-  using R = tasks::SweepRow;
-  d["first_reversal_s"] = numbers([](const R& r) { return orNan(r.first_reversal_s); });
-  d["reversals"] = numbers(
-      [](const R& r) { return r.reversals ? static_cast<double>(*r.reversals) : std::nan(""); });
-  d["final_spin"] = numbers([](const R& r) { return orNan(r.final_spin); });
-  d["max_tilt_deg"] = numbers([](const R& r) { return orNan(r.max_tilt_deg); });
-  d["energy_lost"] = numbers([](const R& r) { return orNan(r.energy_lost); });
-  d["wall_s"] = numbers([](const R& r) { return r.wall_s; });
   return d;
 }
 

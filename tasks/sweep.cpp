@@ -18,17 +18,15 @@
 namespace tasks {
 namespace {
 
-// The columns after the varied keys, with their units (for the sidecar and the plot).
-constexpr Column kResults[] = {
-    {"status", "", "ok | stopped: reason | refused: reason"},
-    {"first_reversal_s", "s", "first spin reversal (as simulate), empty when none"},
-    {"reversals", "", "count of spin reversals (as simulate)"},
-    {"final_spin", "rad/s", "n = w.z at the end of the run"},
-    {"max_tilt_deg", "deg",
-     "largest tilt of the body axis over the steps (to the stop, if it stopped)"},
-    {"energy_lost", "", "fraction of the initial energy lost by the end"},
-    {"wall_s", "s", "wall-clock time of the run (the only column that varies between runs)"},
-};
+// The result columns' names, units and meanings (the sidecar's, the header's): the table's.
+const std::vector<Column>& resultColumns() {
+  static const std::vector<Column> columns = [] {
+    std::vector<Column> out;
+    for (const SweepResultColumn& c : sweepResultTable()) out.push_back(c.column);
+    return out;
+  }();
+  return columns;
+}
 
 double since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -77,7 +75,7 @@ std::optional<SweepRow> runRow(const scene::Sweep& sweep, const scene::SweepScen
     row.values.push_back(sweep.axes[i].values[at[i]]);
   auto refused = [&](const std::string& why) {
     row.status = RowStatus::Refused;
-    row.reason = why;
+    row.message = why;
     row.wall_s = since(start);
     return row;
   };
@@ -109,7 +107,7 @@ std::optional<SweepRow> runRow(const scene::Sweep& sweep, const scene::SweepScen
     row.energy_lost = (run.first.energy - last.energy) / std::abs(run.first.energy);
   } else {
     row.status = RowStatus::Stopped;
-    row.reason = run.divergence.value_or("the run did not reach its end");
+    row.message = run.divergence.value_or("the run did not reach its end");
     if (run.stop) row.stop = run.stop->reason;
   }
   row.wall_s = since(start);
@@ -141,48 +139,21 @@ std::vector<std::string> sweepNotes(const scene::Sweep& sweep, const scene::Swee
 }
 
 std::span<const Column> sweepResultColumns() {
-  return kResults;
+  return resultColumns();
 }
 
 std::string sweepColumnUnit(const std::string& name) {
-  for (const Column& c : kResults)
+  for (const Column& c : resultColumns())
     if (name == c.name) return c.unit;
   const scene::Key* key = scene::findKey(scene::withoutIndex(name));
   return key ? std::string(key->unit) : "";
-}
-
-bool isSweepMetric(const std::string& name) {
-  for (const Column& c : kResults)
-    if (name == c.name && name != "status") return true;
-  return false;
-}
-
-std::string sweepMetricWords(const std::string& name) {
-  // Short, for a figure's title; the columns' meanings (kResults) are the sidecar's.
-  static const std::pair<const char*, const char*> kWords[] = {
-      {"first_reversal_s", "time of the first reversal"},
-      {"reversals", "number of reversals"},
-      {"final_spin", "spin at the end"},
-      {"max_tilt_deg", "largest tilt"},
-      {"energy_lost", "share of the energy lost"},
-      {"wall_s", "wall time of each run"}};
-  for (const auto& [column, words] : kWords)
-    if (name == column) return words;
-  return name;
-}
-
-std::string sweepMetricNames() {
-  std::string names;
-  for (const Column& c : kResults)
-    if (std::string(c.name) != "status") names.append(names.empty() ? "" : ", ").append(c.name);
-  return names;
 }
 
 std::string sweepHeader(const std::vector<std::string>& keys) {
   std::string line = "row";
   // (Appended piece by piece: `"," + string` trips a false -Wrestrict of GCC 12.)
   for (const std::string& key : keys) line.append(",").append(csvField(key));
-  return line + "," + csvHeader(kResults);
+  return line + "," + csvHeader(resultColumns());
 }
 
 std::string sweepRowPrefix(const scene::Sweep& sweep, std::int64_t row) {
@@ -196,15 +167,8 @@ std::string sweepRowPrefix(const scene::Sweep& sweep, std::int64_t row) {
 std::string sweepLine(const SweepRow& row) {
   std::string line = std::to_string(row.row);
   for (const std::string& v : row.values) line.append(",").append(csvField(v));
-  std::string status(rb::nameOf(row.status));
-  if (row.status != RowStatus::Ok) status += ": " + row.reason;
-  line.append(",").append(csvField(status));
-  line.append(",").append(number(row.first_reversal_s));
-  line.append(",").append(row.reversals ? std::to_string(*row.reversals) : "");
-  line.append(",").append(number(row.final_spin));
-  line.append(",").append(number(row.max_tilt_deg));
-  line.append(",").append(number(row.energy_lost));
-  line.append(",").append(fixed(row.wall_s, 6));  // a measurement: microseconds, no more
+  for (const SweepResultColumn& c : sweepResultTable())
+    line.append(",").append(csvField(c.text(row)));
   return line;
 }
 
@@ -221,7 +185,7 @@ nlohmann::json sweepColumnsJson(const std::vector<std::string>& keys) {
                        {"meaning", "the value put into the scene" +
                                        (k ? ": " + std::string(k->doc) : std::string())}});
   }
-  for (const auto& c : columnsJson(kResults)) columns.push_back(c);
+  for (const auto& c : columnsJson(resultColumns())) columns.push_back(c);
   return columns;
 }
 
@@ -267,7 +231,7 @@ SweepRun runSweep(const scene::Sweep& sweep, const scene::SweepScenes& scenes,
             for (std::size_t a = 0; a < sweep.axes.size(); ++a)
               row->values.push_back(sweep.axes[a].values[at[a]]);
             row->status = RowStatus::Stopped;
-            row->reason = e.what();
+            row->message = e.what();
           }
           if (!row) break;
           if (options.finished) {

@@ -13,6 +13,7 @@
 
 #include "scene/sweep.hpp"
 #include "tasks/simulate.hpp"
+#include "tasks/sweep_columns.hpp"
 #include "tasks/table.hpp"
 
 namespace tasks {
@@ -23,45 +24,18 @@ enum class JobScript {
   Parallel,  ///< one command line per shard, for GNU parallel
 };
 
-enum class RowStatus {
-  Ok,       ///< ran to its end
-  Stopped,  ///< stopped by itself (reason says why)
-  Refused,  ///< its scene was refused (reason: the loader's line)
-};
-
-/// One run of a sweep and what it found.
-struct SweepRow {
-  std::int64_t row = 0;             ///< index in the sweep's order (first axis slowest)
-  std::vector<std::string> values;  ///< each axis's value, as put into the scene
-  RowStatus status = RowStatus::Ok;
-  std::string reason;                      ///< for Stopped and Refused
-  std::optional<sim::StopReason> stop;     ///< for Stopped, when the run said why
-  std::optional<double> first_reversal_s;  ///< s
-  std::optional<std::int64_t> reversals;   ///< none when refused
-  std::optional<double> final_spin;        ///< rad/s, when it reached its end
-  std::optional<double> max_tilt_deg;      ///< degrees over the steps (also a stopped run's)
-  std::optional<double> energy_lost;       ///< fraction of the initial energy, at the end
-  double wall_s = 0;                       ///< wall-clock time of the run, s
-};
-
-/// The result columns after the axes' (name and unit), in the table's order.
 /// What a sweep should know before it runs: an axis whose key the rows' contact model does not
-/// use (contact.friction, stiffness, … under rolling) gives the same row all along it (a
-/// researcher's trial: a friction × spin heatmap under rolling was flat, with nothing said).
-/// One line each; none when the contact model is itself an axis.
+/// use (contact.friction, stiffness, … under rolling) gives the same row all along it, with
+/// nothing in the table to say why. One line each; none when the contact model is itself an
+/// axis.
 std::vector<std::string> sweepNotes(const scene::Sweep& sweep, const scene::SweepScenes& scenes);
 
+/// The result columns after the axes' (name, unit, meaning), in the table's order: those of
+/// sweepResultTable().
 std::span<const Column> sweepResultColumns();
 /// The unit of a sweep table's column: a varied key's from the schema (lengths "file units"),
-/// a result column's from sweepResultColumns(); "" for none (the sidecar and the plots').
+/// a result column's from sweepResultTable(); "" for none (the sidecar and the plots').
 std::string sweepColumnUnit(const std::string& name);
-/// Whether `name` is a result column with a number (what a heatmap can show).
-bool isSweepMetric(const std::string& name);
-/// A metric in words, for a figure's title ("time of the first reversal"); the name itself for
-/// one it does not know.
-std::string sweepMetricWords(const std::string& name);
-/// "a, b or c": the metrics, for messages and --help.
-std::string sweepMetricNames();
 
 /// The table's header line (no newline) for these axis keys.
 std::string sweepHeader(const std::vector<std::string>& keys);
@@ -105,14 +79,6 @@ struct NameTable<tasks::JobScript> {
   static constexpr std::array<std::pair<tasks::JobScript, std::string_view>, 2> entries{{
       {tasks::JobScript::Slurm, "slurm"},
       {tasks::JobScript::Parallel, "parallel"},
-  }};
-};
-template <>
-struct NameTable<tasks::RowStatus> {
-  static constexpr std::array<std::pair<tasks::RowStatus, std::string_view>, 3> entries{{
-      {tasks::RowStatus::Ok, "ok"},
-      {tasks::RowStatus::Stopped, "stopped"},
-      {tasks::RowStatus::Refused, "refused"},
   }};
 };
 }  // namespace rb

@@ -112,6 +112,12 @@ std::vector<std::vector<std::string>> readCsv(const std::string& text) {
 }
 
 // The table without its last column (wall_s, the only one that changes from run to run).
+// The index of a table's column by its name in the header (rows[0]).
+std::size_t at(const std::vector<std::vector<std::string>>& rows, const std::string& name) {
+  const auto& header = rows.at(0);
+  return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+}
+
 std::string withoutWall(const std::string& text) {
   std::string out;
   std::istringstream in(text);
@@ -163,9 +169,10 @@ TEST(Sweep, TheTableIsTheSameForOneOrTwoThreadsAndForMergedShards) {
   EXPECT_EQ(withoutWall(slurp(dir / "merged.csv")), reference);
   const auto rows = readCsv(reference);
   ASSERT_EQ(rows.size(), 7u);  // the header and 3 × 2 runs
-  EXPECT_EQ(rows[0], (std::vector<std::string>{"row", "initial.spin", "body.dents.scale", "status",
-                                               "first_reversal_s", "reversals", "final_spin",
-                                               "max_tilt_deg", "energy_lost"}));
+  EXPECT_EQ(rows[0],
+            (std::vector<std::string>{"row", "initial.spin", "body.dents.scale", "status",
+                                      "stop_reason", "first_reversal_s", "reversals", "final_spin",
+                                      "max_tilt_deg", "energy_lost", "message"}));
   // First axis slowest.
   EXPECT_EQ(rows[1][1], "-5");
   EXPECT_EQ(rows[1][2], "0.45");
@@ -194,7 +201,7 @@ TEST(Sweep, EveryRowIsWhatSimulateReportsForItsScene) {
   int reversing = 0;
   for (std::size_t i = 1; i < rows.size(); ++i) {
     const auto& row = rows[i];
-    ASSERT_EQ(row[3], "ok") << row[3];
+    ASSERT_EQ(row[at(rows, "status")], "ok") << row[at(rows, "status")];
     std::string text = base;
     text.replace(text.find("spin: -5.0"), 10, "spin: " + row[1]);
     text.replace(text.find("scale: 0.45"), 11, "scale: " + row[2]);
@@ -210,16 +217,21 @@ TEST(Sweep, EveryRowIsWhatSimulateReportsForItsScene) {
       return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(b));
     };
     if (result["first_reversal_s"].is_null()) {
-      EXPECT_EQ(row[4], "") << "row " << i;
+      EXPECT_EQ(row[at(rows, "first_reversal_s")], "") << "row " << i;
     } else {
       ++reversing;
-      EXPECT_TRUE(near(std::stod(row[4]), result["first_reversal_s"].get<double>())) << "row " << i;
+      EXPECT_TRUE(near(std::stod(row[at(rows, "first_reversal_s")]),
+                       result["first_reversal_s"].get<double>()))
+          << "row " << i;
     }
-    EXPECT_EQ(std::stoul(row[5]), result["reversals_s"].size()) << "row " << i;
-    EXPECT_TRUE(near(std::stod(row[6]), result["final_spin"].get<double>())) << "row " << i;
-    EXPECT_TRUE(near(std::stod(row[7]), result["max_tilt_deg"].get<double>())) << "row " << i;
+    EXPECT_EQ(std::stoul(row[at(rows, "reversals")]), result["reversals_s"].size()) << "row " << i;
+    EXPECT_TRUE(near(std::stod(row[at(rows, "final_spin")]), result["final_spin"].get<double>()))
+        << "row " << i;
+    EXPECT_TRUE(
+        near(std::stod(row[at(rows, "max_tilt_deg")]), result["max_tilt_deg"].get<double>()))
+        << "row " << i;
     const double e0 = result["energy_j"]["initial"], e1 = result["energy_j"]["final"];
-    EXPECT_TRUE(near(std::stod(row[8]), (e0 - e1) / e0)) << "row " << i;
+    EXPECT_TRUE(near(std::stod(row[at(rows, "energy_lost")]), (e0 - e1) / e0)) << "row " << i;
   }
   // Within 3 s the clockwise spins reverse, except -5 with the shallower dents (a smaller
   // misalignment: it reverses only after ≈5 s, as sweeps/dents.yaml shows); the
@@ -295,10 +307,13 @@ TEST(Sweep, ABadValueRefusesItsRowOnly) {
   ASSERT_EQ(r.status, 0) << r.err;
   const auto rows = readCsv(slurp(dir / "t.csv"));
   ASSERT_EQ(rows.size(), 3u);
-  EXPECT_EQ(rows[1][3], "ok");
-  EXPECT_EQ(rows[2][3].rfind("refused: " + sweep.string() + ":3: contact.air_drag", 0), 0u)
-      << rows[2][3];
-  EXPECT_EQ(rows[2][4], "");
+  const std::size_t status = at(rows, "status"), message = at(rows, "message");
+  EXPECT_EQ(rows[1][status], "ok");
+  EXPECT_EQ(rows[2][status], "refused");
+  EXPECT_EQ(rows[2][at(rows, "stop_reason")], "");
+  EXPECT_EQ(rows[2][message].rfind(sweep.string() + ":3: contact.air_drag", 0), 0u)
+      << rows[2][message];
+  EXPECT_EQ(rows[2][at(rows, "first_reversal_s")], "");
 }
 
 // A rolling run never slips: an axis of contact.friction under it gives the same row all along
@@ -321,8 +336,9 @@ TEST(Sweep, AnAxisRollingDoesNotUseIsSaidToBe) {
       << said.err;
   const auto rows = readCsv(slurp(dir / "t.csv"));
   ASSERT_EQ(rows.size(), 3u);
-  ASSERT_EQ(rows[0][6], "final_spin");
-  EXPECT_EQ(rows[1][6], rows[2][6]);  // the same final spin to the bit: what the note says
+  const std::size_t final_spin = at(rows, "final_spin");
+  ASSERT_LT(final_spin, rows[0].size());
+  EXPECT_EQ(rows[1][final_spin], rows[2][final_spin]);  // the same to the bit: as the note says
   EXPECT_EQ(rattleback(dir, "sweep " + friction.string() + " -q" + table).err, "");
   for (const std::string& vary : {"  contact.air_drag: [0.0, 1.0e-5]\n",
                                   "  contact.friction: [0.1, 0.5]\n"
@@ -405,9 +421,10 @@ TEST(Sweep, AnErrorAboutTheVariedKeysMapNamesTheSweepsLine) {
   ASSERT_EQ(r.status, 0) << r.err;
   const auto rows = readCsv(slurp(dir / "t.csv"));
   ASSERT_EQ(rows.size(), 3u);
-  EXPECT_EQ(rows[1][2], "ok");
-  EXPECT_EQ(rows[2][2].rfind("refused: " + sweep.string() + ":3: body.grid makes about", 0), 0u)
-      << rows[2][2];
+  EXPECT_EQ(rows[1][at(rows, "status")], "ok");
+  EXPECT_EQ(rows[2][at(rows, "status")], "refused");
+  const std::string& message = rows[2][at(rows, "message")];
+  EXPECT_EQ(message.rfind(sweep.string() + ":3: body.grid makes about", 0), 0u) << message;
 }
 
 // A row whose run stops (rolling cannot hold the default body spun at 45 rad/s: it tips onto
@@ -422,13 +439,17 @@ TEST(Sweep, AStoppedRowKeepsItsLargestTilt) {
   ASSERT_EQ(r.status, 0) << r.err;
   const auto rows = readCsv(slurp(dir / "t.csv"));
   ASSERT_EQ(rows.size(), 3u);
-  ASSERT_EQ(rows[0][6], "max_tilt_deg");
-  EXPECT_EQ(rows[1][2], "ok");
-  EXPECT_EQ(rows[2][2].rfind("stopped: the body tipped onto the edge of its top", 0), 0u)
-      << rows[2][2];
-  ASSERT_FALSE(rows[2][6].empty());
-  EXPECT_GT(std::stod(rows[2][6]), 50.0);
-  EXPECT_EQ(rows[2][5], "");  // no final spin
+  const std::size_t status = at(rows, "status"), tilt = at(rows, "max_tilt_deg");
+  ASSERT_LT(tilt, rows[0].size());
+  EXPECT_EQ(rows[1][status], "ok");
+  // A word to group by, a code for why, and the run's words.
+  EXPECT_EQ(rows[2][status], "stopped");
+  EXPECT_EQ(rows[2][at(rows, "stop_reason")], "on_rim");
+  const std::string& message = rows[2][at(rows, "message")];
+  EXPECT_EQ(message.rfind("the body tipped onto the edge of its top", 0), 0u) << message;
+  ASSERT_FALSE(rows[2][tilt].empty());
+  EXPECT_GT(std::stod(rows[2][tilt]), 50.0);
+  EXPECT_EQ(rows[2][at(rows, "final_spin")], "");  // no final spin
 }
 
 // A second sweep on a table another sweep is writing is told so, and the first's journal is

@@ -28,10 +28,12 @@ class SweepTable:
     """A sweep's table, one row per run in the sweep's order (first axis slowest): the same
     rows as ``rattleback sweep`` writes.
 
-    Columns: ``row``, one per varied key (floats, or text for values that are not numbers),
-    ``status`` (``ok``, ``stopped`` or ``refused``), ``reason`` (why, for the others),
-    ``first_reversal_s``, ``reversals``, ``final_spin``, ``max_tilt_deg``, ``energy_lost``,
-    ``wall_s``. A value a run does not have is NaN. The arrays are read-only, as the CSV they
+    Columns (the CSV's, same names and order): ``row``, one per varied key (floats, or text
+    for values that are not numbers), ``status`` (``ok``, ``stopped`` or ``refused``: a word to
+    group by), ``stop_reason`` (for a stopped run, why as a code: ``non_finite``,
+    ``energy_gain``, ``on_rim``), ``first_reversal_s``, ``reversals``, ``final_spin``,
+    ``max_tilt_deg``, ``energy_lost``, ``wall_s``, and ``message`` (why a run stopped or was
+    refused, in words). A number a run does not have is NaN; text it does not have is ``""``. The arrays are read-only, as the CSV they
     stand for is (``.copy()`` gives one to change).
     """
 
@@ -40,8 +42,9 @@ class SweepTable:
         columns = core_table.columns()
         for key in core_table.keys:
             columns[key] = _numbers_or_text(columns[key])
-        columns["status"] = np.array(columns["status"])
-        columns["reason"] = np.array(columns["reason"], dtype=object)
+        for name, column in list(columns.items()):
+            if isinstance(column, list):  # a result column of text
+                columns[name] = np.array(column, dtype=object)
         # Read-only, as a Run's: the columns are the table's record, and to_csv writes the
         # rows, not the arrays (`s = table["final_spin"]; s *= 2` changed the columns and
         # to_pandas() but not the CSV).
@@ -125,7 +128,7 @@ def sweep(source: Union[str, os.PathLike, Scene, Mapping[str, Any]],
     (``contact.friction`` under ``rolling``: the rows along it are alike) is warned of, as
     ``rattleback sweep`` notes it (:class:`RunWarning`, code ``"axis_unused"``), and so is a
     sweep whose every run was refused (code ``"all_refused"``: ``rattleback sweep`` exits 2),
-    with the first reason.
+    with the first refusal's message.
     """
     kept = resume._table if resume is not None else None
     if vary is None:
@@ -165,5 +168,5 @@ def sweep(source: Union[str, os.PathLike, Scene, Mapping[str, Any]],
     status = result["status"]
     if len(status) and bool(np.all(status == "refused")):
         warnings.warn(RunWarning(f"{table.file}: every run was refused; the first: "
-                                 f"{result['reason'][0]}", "all_refused"), stacklevel=3)
+                                 f"{result['message'][0]}", "all_refused"), stacklevel=3)
     return result

@@ -383,4 +383,4 @@ def test_a_sweep_made_in_python_names_argument_vary_and_the_key():
     # A value no scene can take refuses its row, named as the argument's (a file's names its line).
     table = rb.sweep(base, {"body.mass": [-1, 0.059]}, duration=0.1, jobs=1)
     assert list(table["status"]) == ["refused", "ok"]
-    assert table["reason"][0] == "argument vary: body.mass must be > 0, not -1"
+    assert table["message"][0] == "argument vary: body.mass must be > 0, not -1"

@@ -1,0 +1,78 @@
+#include "tasks/sweep_columns.hpp"
+
+#include <cmath>
+
+namespace tasks {
+namespace {
+
+double orNan(const std::optional<double>& v) {
+  return v.value_or(std::nan(""));
+}
+
+using M = SweepMetric;
+using Row = SweepRow;
+
+// The columns after the varied keys. `status` is a word to group by; why a run stopped is
+// `stop_reason` (a code) and `message` (its words); wall_s last, the one column that varies
+// between runs of the same sweep.
+const SweepResultColumn kResults[] = {
+    {{"status", "", "ok | stopped | refused"},
+     [](const Row& r) { return std::string(rb::nameOf(r.status)); }},
+    {{"stop_reason", "",
+      "for a stopped run, why as a code: non_finite | energy_gain | on_rim (empty otherwise)"},
+     [](const Row& r) { return r.stop ? std::string(rb::nameOf(*r.stop)) : std::string(); }},
+    {{"first_reversal_s", "s", "first spin reversal (as simulate), empty when none"},
+     [](const Row& r) { return number(r.first_reversal_s); },
+     M::FirstReversal,
+     [](const Row& r) { return orNan(r.first_reversal_s); },
+     "time of the first reversal"},
+    {{"reversals", "", "count of spin reversals (as simulate)"},
+     [](const Row& r) { return r.reversals ? std::to_string(*r.reversals) : std::string(); },
+     M::Reversals,
+     [](const Row& r) { return r.reversals ? static_cast<double>(*r.reversals) : std::nan(""); },
+     "number of reversals"},
+    {{"final_spin", "rad/s", "n = w.z at the end of the run"},
+     [](const Row& r) { return number(r.final_spin); },
+     M::FinalSpin,
+     [](const Row& r) { return orNan(r.final_spin); },
+     "spin at the end"},
+    {{"max_tilt_deg", "deg",
+      "largest tilt of the body axis over the steps (to the stop, if it stopped)"},
+     [](const Row& r) { return number(r.max_tilt_deg); },
+     M::MaxTilt,
+     [](const Row& r) { return orNan(r.max_tilt_deg); },
+     "largest tilt"},
+    {{"energy_lost", "", "fraction of the initial energy lost by the end"},
+     [](const Row& r) { return number(r.energy_lost); },
+     M::EnergyLost,
+     [](const Row& r) { return orNan(r.energy_lost); },
+     "share of the energy lost"},
+    {{"message", "",
+      "for a stopped or refused run, why in words (the run's or the scene loader's line)"},
+     [](const Row& r) { return r.message; }},
+    // A measurement: microseconds, no more.
+    {{"wall_s", "s", "wall-clock time of the run (the only column that varies between runs)"},
+     [](const Row& r) { return fixed(r.wall_s, 6); },
+     M::Wall,
+     [](const Row& r) { return r.wall_s; },
+     "wall time of each run"},
+};
+
+}  // namespace
+
+std::span<const SweepResultColumn> sweepResultTable() {
+  return kResults;
+}
+
+const SweepResultColumn& columnOf(SweepMetric metric) {
+  for (const SweepResultColumn& c : kResults)
+    if (c.metric == metric) return c;
+  return kResults[0];  // (every metric has its row: the sweep tests look up each)
+}
+
+double metricOf(const SweepRow& row, SweepMetric metric) {
+  if (row.status != RowStatus::Ok) return std::nan("");
+  return columnOf(metric).value(row);
+}
+
+}  // namespace tasks
