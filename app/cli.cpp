@@ -36,11 +36,24 @@ void sceneOption(CLI::App& c, std::string& scene) {
   c.add_option("scene", scene, "Scene file (YAML)")->required();
 }
 
-void stepOptions(CLI::App& c, std::optional<double>& dt, std::optional<double>& tolerance) {
-  c.add_option("--dt", dt, "Fixed time step, s (overrides the scene's dt or tolerance)");
-  c.add_option("--tolerance", tolerance,
-               "Adaptive steps (dopri5) to this error per step (overrides the scene's dt or "
-               "tolerance)");
+// An option that sets a scene key (tasks::sceneOptions: its name, its key, its help), into
+// `o`; `help` replaces the table's words where this command uses it otherwise. A size is kept
+// as typed and read once the line is parsed (Cli::parse), so its error is ours, not CLI11's.
+CLI::Option* keyOption(CLI::App& c, Overrides& o, tasks::SceneOption option,
+                       const std::string& help = "") {
+  const tasks::SceneOptionRow& row = tasks::rowOf(option);
+  const std::string flag = std::string("--") + row.name;
+  const std::string said = help.empty() ? std::string(row.help) : help;
+  if (row.kind == tasks::OptionKind::Number)
+    return c.add_option_function<double>(
+        flag, [&o, option](double value) { o.set(option, value); }, said);
+  return c.add_option_function<std::string>(
+      flag, [&o, option](const std::string& text) { o.set(option, text); }, said);
+}
+
+void stepOptions(CLI::App& c, Overrides& o) {
+  keyOption(c, o, tasks::SceneOption::Dt);
+  keyOption(c, o, tasks::SceneOption::Tolerance);
 }
 
 // --set, which simulate, analyze, render and still take alike: a run made with it can be
@@ -64,10 +77,10 @@ void defineSimulate(CLI::App& c, Cli& cli) {
   sceneOption(c, s.scene);
   c.add_option("-o,--output", s.output,
                "CSV telemetry file (default out/<scene>.csv; - for standard output)");
-  c.add_option("--duration", s.duration, "Simulated time, s (overrides the scene)");
-  c.add_option("--spin", s.spin, "Initial spin, rad/s (overrides the scene)");
-  stepOptions(c, s.dt, s.tolerance);
-  c.add_option("--integrator", s.integrator, names<sim::Integrator>());
+  keyOption(c, s.overrides, tasks::SceneOption::Duration);
+  keyOption(c, s.overrides, tasks::SceneOption::Spin);
+  stepOptions(c, s.overrides);
+  keyOption(c, s.overrides, tasks::SceneOption::Integrator, names<sim::Integrator>());
   setOption(c, s.set);
   c.add_option("--rate", s.rate,
                "Telemetry samples per simulated second, at exact times (default 500)");
@@ -88,8 +101,8 @@ void defineAnalyze(CLI::App& c, Cli& cli) {
   c.add_option(
       "--spin", cli.analyze_args.spin,
       "Spin for the growth rates, eigenvalues and forecast, rad/s (default: the scene's, else 5)");
-  c.add_option("--duration", cli.analyze_args.overrides.duration,
-               "How far the forecast looks, s (default: the scene's simulation.duration)");
+  keyOption(c, cli.analyze_args.overrides, tasks::SceneOption::Duration,
+            "How far the forecast looks, s (default: the scene's simulation.duration)");
   setOption(c, cli.analyze_set);
   // Every other command has -q; a script that gives it to all of them works here too.
   c.add_flag("-q,--quiet", cli.analyze_args.quiet,
@@ -109,19 +122,15 @@ void backendOption(CLI::App& c, std::string& backend, std::string& from, const c
 }
 
 // The video's options, which a still takes too (they change a frame's inset).
-void videoOptions(CLI::App& c, Overrides& o, std::string& size) {
-  c.add_option("--view", o.view, names<render::View>());
-  c.add_option("--size", size, "Frame size WxH, e.g. 1280x720");
-  c.add_option("--frame", o.frame,
-               "Frame every view for a body this long, in the scene's length unit (default: "
-               "the body's own); bodies drawn with the same --frame are drawn at one scale");
-  c.add_option("--fps", o.fps,
-               "Frames per second, a whole number 1–240 (default: the scene's video.fps, or 30)");
-  c.add_option("--duration", o.duration, "Simulated time, s (the inset's time axis)");
-  c.add_option("--playback", o.playback,
-               "Playback speed: simulated seconds per video second (0.5 = slow motion)");
-  c.add_option("--spin", o.spin, "Initial spin, rad/s (overrides the scene)");
-  stepOptions(c, o.dt, o.tolerance);
+void videoOptions(CLI::App& c, Overrides& o) {
+  keyOption(c, o, tasks::SceneOption::View, names<render::View>());
+  keyOption(c, o, tasks::SceneOption::Size);
+  keyOption(c, o, tasks::SceneOption::Frame);
+  keyOption(c, o, tasks::SceneOption::Fps);
+  keyOption(c, o, tasks::SceneOption::Duration, "Simulated time, s (the inset's time axis)");
+  keyOption(c, o, tasks::SceneOption::Playback);
+  keyOption(c, o, tasks::SceneOption::Spin);
+  stepOptions(c, o);
 }
 
 void defineRender(CLI::App& c, Cli& cli) {
@@ -129,7 +138,7 @@ void defineRender(CLI::App& c, Cli& cli) {
   sceneOption(c, r.scene);
   c.add_option("-o,--output", r.output,
                "Video file (default out/<scene>.mp4; with --both the base name)");
-  videoOptions(c, r.overrides, cli.render_size);
+  videoOptions(c, r.overrides);
   setOption(c, cli.render_set);
   c.add_option("--crf", r.crf, "x264 quality 1–51, lower is better (default 20)");
   c.add_option("--preset", r.preset, media::presetNames() + " (x264's; default veryfast)");
@@ -149,7 +158,7 @@ void defineStill(CLI::App& c, Cli& cli) {
   sceneOption(c, st.scene);
   c.add_option("-o,--output", st.output, "PNG file (default out/<scene>-<view>.png)");
   c.add_option("--t,--time", st.t, "Simulated time of the frame, s (default 0)");
-  videoOptions(c, st.overrides, cli.still_size);
+  videoOptions(c, st.overrides);
   setOption(c, cli.still_set);
   c.add_flag("--no-readouts", st.no_readouts, "No time, spin, inset plot or floor scale");
   c.add_flag("--transparent", st.transparent,
@@ -317,15 +326,14 @@ std::optional<int> Cli::parse(int argc, char** argv) {
       std::cerr << ok.error().text() << "\n";
       return kBadInput;
     }
-  for (auto [text, target] : {std::pair{&render_size, &render_args.overrides.size},
-                              std::pair{&still_size, &still_args.overrides.size}}) {
-    if (text->empty()) continue;
-    std::array<int, 2> size;
-    if (!parseSize(*text, size)) {
-      std::cerr << "--size: expected WIDTHxHEIGHT such as 1280x720, not '" << *text << "'\n";
+  for (Overrides* o : {&render_args.overrides, &still_args.overrides}) {
+    const auto size = o->given.find(tasks::SceneOption::Size);
+    if (size == o->given.end()) continue;
+    if (!parseSize(size->second.name, size->second.size)) {
+      std::cerr << "--size: expected WIDTHxHEIGHT such as 1280x720, not '" << size->second.name
+                << "'\n";
       return kBadInput;
     }
-    *target = size;
   }
   // still's --t is also --time: its errors name the one typed (CLI11 does not say which).
   if (app.got_subcommand("still"))

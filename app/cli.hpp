@@ -44,7 +44,6 @@ struct Cli {
   ReportArgs report_args;
   SweepArgs sweep_args;
   SweepMergeArgs merge_args;
-  std::string render_size, still_size;
   std::vector<std::string> render_set, still_set, analyze_set;  ///< --set, put in by parse()
   CLI::App* merge = nullptr;                                    ///< `sweep merge`
 

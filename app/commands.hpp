@@ -50,8 +50,8 @@ rb::Status putSettings(const std::vector<std::string>& entries, Overrides& o);
 struct SimulateArgs {
   std::string scene;
   std::string output;  ///< CSV path; empty: out/<scene name>.csv
-  std::optional<double> duration, dt, tolerance, rate, spin;
-  std::optional<std::string> integrator;
+  std::optional<double> rate;
+  Overrides overrides;           ///< --duration, --spin, --dt, --tolerance, --integrator
   std::vector<std::string> set;  ///< KEY=VALUE: a scene key's value (YAML), before the options
   std::string plot_dir;          ///< non-empty: write the four figures (PNG) there
   bool check = false;            ///< also estimate the run's error (tasks/check.hpp)

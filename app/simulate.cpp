@@ -198,13 +198,8 @@ rb::Status putSettings(const std::vector<std::string>& entries, Overrides& o) {
 
 // The run's overrides as simulate's options give them.
 rb::Result<Overrides> overridesOf(const SimulateArgs& args) {
-  Overrides o;
+  Overrides o = args.overrides;
   if (auto ok = putSettings(args.set, o); !ok) return ok.error();
-  o.duration = args.duration;
-  o.spin = args.spin;
-  o.dt = args.dt;
-  o.tolerance = args.tolerance;
-  o.integrator = args.integrator;
   return o;
 }
 

@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
   std::filesystem::create_directories(folder);
   const std::string csv = (folder / "run.csv").string();
   tasks::Overrides o;
-  o.duration = 10;
+  o.set(tasks::SceneOption::Duration, 10.0);
   auto loaded = tasks::loadScene(RATTLEBACK_SOURCE_DIR "/scenes/rattleback.yaml", o);
   if (!loaded) {
     std::fprintf(stderr, "%s\n", loaded.error().text().c_str());

@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
   for (render::Backend backend : {render::Backend::Egl, render::Backend::OsMesa})
     for (auto [w, h] : {std::pair{1280, 720}, std::pair{1920, 1080}}) {
       tasks::Overrides o;
-      o.size = std::array<int, 2>{w, h};
+      o.set(tasks::SceneOption::Size, std::array<int, 2>{w, h});
       auto loaded = tasks::loadScene(scene, o);
       if (!loaded) {
         std::fprintf(stderr, "%s\n", loaded.error().text().c_str());
@@ -147,7 +147,7 @@ int main(int argc, char** argv) {
 
         // End to end: the library's video, as `rattleback render` makes it.
         tasks::Overrides run = o;
-        run.duration = frames * plan.playback / plan.fps;
+        run.set(tasks::SceneOption::Duration, frames * plan.playback / plan.fps);
         auto video_scene = tasks::loadScene(scene, run);
         media::VideoRequest request;
         request.scene_name = scene;

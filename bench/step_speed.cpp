@@ -18,7 +18,7 @@ namespace {
 void stepScene(benchmark::State& state, const char* scene, const char* model,
                const char* integrator) {
   tasks::Overrides o;
-  o.integrator = integrator;
+  o.set(tasks::SceneOption::Integrator, std::string(integrator));
   auto loaded = tasks::loadScene(std::string(RATTLEBACK_SOURCE_DIR "/scenes/") + scene, o);
   if (!loaded) {
     state.SkipWithError(loaded.error().text().c_str());

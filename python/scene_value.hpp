@@ -30,27 +30,30 @@ inline std::string stemOf(const std::string& name, bool has_file) {
   return !has_file && (stem.empty() || stem.front() == '<') ? "scene" : stem;
 }
 
-/// The overrides a Python call may give, named in messages as "argument dt".
+/// The overrides a Python call may give (tasks::sceneOptions, by name: dt=…, size=(w, h)),
+/// named in messages as "argument dt".
 inline tasks::Overrides overridesOf(const py::dict& kw) {
   tasks::Overrides o;
   o.option_prefix = "argument ";
-  auto number = [&](const char* name, std::optional<double>& field) {
-    if (kw.contains(name) && !kw[name].is_none()) field = kw[name].cast<double>();
-  };
-  number("duration", o.duration);
-  number("dt", o.dt);
-  number("tolerance", o.tolerance);
-  number("playback", o.playback);
-  number("spin", o.spin);
-  number("fps", o.fps);
-  number("frame", o.frame);
-  if (kw.contains("integrator") && !kw["integrator"].is_none())
-    o.integrator = kw["integrator"].cast<std::string>();
-  if (kw.contains("view") && !kw["view"].is_none()) o.view = kw["view"].cast<std::string>();
-  if (kw.contains("size") && !kw["size"].is_none()) {
-    const auto size = kw["size"].cast<std::vector<int>>();
-    if (size.size() != 2) throw py::value_error("argument size: give (width, height) in pixels");
-    o.size = std::array<int, 2>{size[0], size[1]};
+  for (const tasks::SceneOptionRow& row : tasks::sceneOptions()) {
+    if (!kw.contains(row.name) || kw[row.name].is_none()) continue;
+    const py::handle value = kw[row.name];
+    switch (row.kind) {
+      case tasks::OptionKind::Number:
+        o.set(row.option, value.cast<double>());
+        break;
+      case tasks::OptionKind::Name:
+        o.set(row.option, value.cast<std::string>());
+        break;
+      case tasks::OptionKind::Size: {
+        const auto size = value.cast<std::vector<int>>();
+        if (size.size() != 2)
+          throw py::value_error("argument " + std::string(row.name) +
+                                ": give (width, height) in pixels");
+        o.set(row.option, std::array<int, 2>{size[0], size[1]});
+        break;
+      }
+    }
   }
   return o;
 }

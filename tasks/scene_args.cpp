@@ -15,8 +15,8 @@ std::string findShipped(const std::string& path) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (path.empty() || fs::exists(path, ec) || fs::path(path).is_absolute()) return path;
-  // "./scenes/x.yaml" names this folder's, and only that (a CI maintainer's trial: a missing
-  // scene of a shipped one's name ran the shipped one, ./ or not).
+  // "./scenes/x.yaml" names this folder's, and only that: a missing scene of a shipped one's
+  // name must not run the shipped one.
   if (path.starts_with("./") || path.starts_with("../")) return path;
   const fs::path shipped = fs::path(rb::assetsDir()) / path;
   return fs::is_regular_file(shipped, ec) ? shipped.lexically_normal().string() : path;
@@ -34,82 +34,71 @@ rb::Result<LoadedScene> loadScene(const std::string& path, const Overrides& o) {
   return applyOverrides(std::move(loaded).value(), o);
 }
 
-rb::Result<LoadedScene> applyOverrides(scene::Loaded scene, const Overrides& o) {
-  sim::SceneSpec& spec = scene.spec;
-  // Each override is named as the front end spells it: "--dt" on the command line,
-  // "argument dt" in Python.
-  auto name = [&](const char* option) { return o.option_prefix + option; };
-  auto set = [&](auto& field, const auto& value, const char* key, const char* option) {
-    if (!value) return;
-    field = *value;
-    scene.overrides[key] = name(option);
+namespace {
+
+// A scene's video.fps is a whole number of frames per second within 1 … kMaxFps. Placed as the
+// other options' errors are (the option, no line, the key it sets), so that Python raises
+// SceneError for a bad fps as for a bad view or size.
+rb::Status checkFps(const Overrides& o) {
+  const std::optional<double> fps = o.number(SceneOption::Fps);
+  if (!fps) return {};
+  const std::string name = o.option_prefix + "fps";
+  char text[64];
+  std::snprintf(text, sizeof text, "%g", *fps);
+  auto refused = [&](const std::string& why) {
+    return rb::Error{"", name + ": " + why, rb::Error::Where{name, 0, "video.fps"}};
   };
-  // A NaN is the scene's "not given" (sim::kUnset): a NaN --dt read as no step at all ("--dt: or
-  // simulation.tolerance is required"). Refused as a scene's non-finite number is, placed as
-  // the fps's error is below.
-  for (const auto& [value, option, key] :
-       {std::tuple{&o.duration, "duration", "simulation.duration"},
-        std::tuple{&o.dt, "dt", "simulation.dt"},
-        std::tuple{&o.tolerance, "tolerance", "simulation.tolerance"},
-        std::tuple{&o.frame, "frame", "video.frame"}})
-    if (*value && !std::isfinite(**value))
-      return rb::Error{"", name(option) + ": must be a finite number, not " + rb::show(**value),
-                       rb::Error::Where{name(option), 0, key}};
-  // An option and a --set entry for the same key: the option won, and the report page listed
-  // the entry among the values put in beside the option's value ("initial.spin = -4", "spun -3
-  // rad/s"; a teacher's trial). One command gives each key once.
-  for (const auto& [given, key, option] :
-       {std::tuple{bool(o.duration), "simulation.duration", "duration"},
-        std::tuple{bool(o.dt), "simulation.dt", "dt"},
-        std::tuple{bool(o.tolerance), "simulation.tolerance", "tolerance"},
-        std::tuple{bool(o.integrator), "simulation.integrator", "integrator"},
-        std::tuple{bool(o.spin), "initial.spin", "spin"},
-        std::tuple{bool(o.playback), "video.playback", "playback"},
-        std::tuple{bool(o.view), "video.view", "view"},
-        std::tuple{bool(o.frame), "video.frame", "frame"},
-        std::tuple{bool(o.size), "video.size", "size"},
-        std::tuple{bool(o.fps), "video.fps", "fps"}})
+  if (*fps != std::floor(*fps))  // (NaN too)
+    return refused("must be a whole number of frames per second (24, 25, 30, 60 …), not " +
+                   std::string(text));
+  if (*fps < 1 || *fps > scene::kMaxFps)
+    return refused("must be within 1 … " + std::to_string(scene::kMaxFps) + ", not " + text);
+  return {};
+}
+
+// What no option may be given: a NaN (the scene's "not given", sim::kUnset) where a number must
+// be finite, an option and a --set entry for the same key (one command gives each key once, and
+// the report lists the entry among the values put in), a step and a tolerance together, and an
+// fps that no video has. Each is named as the front end spells the option.
+rb::Status checkOverrides(const Overrides& o) {
+  for (const auto& [option, value] : o.given) {
+    const SceneOptionRow& row = rowOf(option);
+    const std::string name = o.option_prefix + row.name;
+    if (row.finite && !std::isfinite(value.number))
+      return rb::Error{"", name + ": must be a finite number, not " + rb::show(value.number),
+                       rb::Error::Where{name, 0, row.key}};
+  }
+  for (const auto& [option, value] : o.given)
     for (const scene::KeyValue& kv : o.values)
-      if (given && kv.key == key)
-        return rb::Error{"", name(option) + " and " + name("set") + " " + kv.key +
-                                 " set the same key: give one of them"};
-  set(spec.simulation.duration, o.duration, "simulation.duration", "duration");
-  if (o.dt && o.tolerance)
-    return rb::Error{"", name("dt") + " and " + name("tolerance") +
-                             ": give one, a fixed step or adaptive steps to a tolerance"};
-  // A step or a tolerance from the command line replaces whichever of the two the file gives.
-  if (o.dt) spec.simulation.tolerance = sim::kUnset;
-  if (o.tolerance) spec.simulation.dt = sim::kUnset;
-  // …and an integrator of the other kind gives way to that kind's default (dopri5 for a
+      if (kv.key == rowOf(option).key)
+        return rb::Error{"", o.option_prefix + rowOf(option).name + " and " + o.option_prefix +
+                                 "set " + kv.key + " set the same key: give one of them"};
+  if (o.has(SceneOption::Dt) && o.has(SceneOption::Tolerance))
+    return rb::Error{"", o.option_prefix + "dt and " + o.option_prefix +
+                             "tolerance: give one, a fixed step or adaptive steps to a tolerance"};
+  return checkFps(o);
+}
+
+}  // namespace
+
+rb::Result<LoadedScene> applyOverrides(scene::Loaded scene, const Overrides& o) {
+  if (auto ok = checkOverrides(o); !ok) return ok.error();
+  sim::SceneSpec& spec = scene.spec;
+  // A step or a tolerance from the command line replaces whichever of the two the file gives,
+  // and an integrator of the other kind gives way to that kind's default (dopri5 for a
   // tolerance, symplectic for a step) unless --integrator names one.
-  if (!o.integrator) {
+  const bool dt = o.has(SceneOption::Dt), tolerance = o.has(SceneOption::Tolerance);
+  if (dt) spec.simulation.tolerance = sim::kUnset;
+  if (tolerance) spec.simulation.dt = sim::kUnset;
+  if (!o.has(SceneOption::Integrator)) {
     const auto named = rb::parseName<sim::Integrator>(spec.simulation.integrator);
-    if (named && ((o.dt && sim::isAdaptive(*named)) || (o.tolerance && !sim::isAdaptive(*named))))
+    if (named && ((dt && sim::isAdaptive(*named)) || (tolerance && !sim::isAdaptive(*named))))
       spec.simulation.integrator.clear();
   }
-  set(spec.simulation.dt, o.dt, "simulation.dt", "dt");
-  set(spec.simulation.tolerance, o.tolerance, "simulation.tolerance", "tolerance");
-  set(spec.simulation.integrator, o.integrator, "simulation.integrator", "integrator");
-  set(spec.initial.spin, o.spin, "initial.spin", "spin");
-  set(scene.video.playback, o.playback, "video.playback", "playback");
-  set(scene.video.view, o.view, "video.view", "view");
-  set(scene.video.frame, o.frame, "video.frame", "frame");
-  set(scene.video.size, o.size, "video.size", "size");
-  if (o.fps) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%g", *o.fps);
-    // Placed as the other overrides' errors are (the option, no line, the key it sets), so that
-    // Python raises SceneError for a bad fps as for a bad view or size.
-    auto refused = [&](const std::string& why) {
-      return rb::Error{"", name("fps") + ": " + why, rb::Error::Where{name("fps"), 0, "video.fps"}};
-    };
-    if (*o.fps != std::floor(*o.fps))  // (NaN too)
-      return refused("must be a whole number of frames per second (24, 25, 30, 60 …), not " +
-                     std::string(text));
-    if (*o.fps < 1 || *o.fps > scene::kMaxFps)
-      return refused("must be within 1 … " + std::to_string(scene::kMaxFps) + ", not " + text);
-    scene.video.fps = static_cast<int>(*o.fps);
-    scene.overrides["video.fps"] = name("fps");
+  for (const auto& [option, value] : o.given) {
+    const SceneOptionRow& row = rowOf(option);
+    row.apply(scene, value);
+    scene.overrides[row.key] = o.option_prefix + row.name;
   }
   auto compiled = scene::loadModel(scene);
   if (!compiled) return compiled.error();

@@ -8,22 +8,10 @@
 
 #include "scene/loader.hpp"
 #include "sim/model.hpp"
+#include "tasks/scene_options.hpp"
 #include "util/result.hpp"
 
 namespace tasks {
-
-struct Overrides {
-  std::optional<double> duration, dt, tolerance, playback, spin;
-  std::optional<double> frame;  ///< video.frame, in the scene's length unit
-  std::optional<std::string> integrator, view;
-  std::optional<std::array<int, 2>> size;
-  std::optional<double> fps;  ///< checked to be whole: a scene's video.fps is an integer
-  /// Scene keys and their values (YAML) put into the file before the options above ("--set").
-  std::vector<scene::KeyValue> values;
-  /// How messages name an override: "--" + "dt" on the command line, "argument " + "dt" in
-  /// Python. Either way the option is named alone, not with the key it sets.
-  std::string option_prefix = "--";
-};
 
 /// A scene file as loaded (with the overrides applied) and its compiled run.
 struct LoadedScene {

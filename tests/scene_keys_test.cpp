@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <charconv>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -16,6 +17,7 @@
 #include "media/video_plan.hpp"
 #include "scene/keys.hpp"
 #include "support.hpp"
+#include "tasks/scene_options.hpp"
 
 namespace {
 
@@ -274,4 +276,29 @@ TEST(SceneKeys, TheDocsCompleteSceneLoadsAndNamesEveryKey) {
   EXPECT_EQ(testing_support::errorFor(yaml), "") << yaml;
   for (const scene::Key& key : scene::keys())
     EXPECT_NE(yaml.find(std::string(scene::nameIn(key.path)) + ":"), std::string::npos) << key.path;
+}
+
+// Every option that sets a scene key (tasks::sceneOptions) puts its value into that key's own
+// member, the one the loader fills from a file: a row that wrote another key's member, or a
+// key the loader does not know, fails here. Each key's sample differs from the empty scene's
+// value, so that the change is seen.
+TEST(SceneOptions, EachPutsItsValueIntoItsKeysOwnMember) {
+  std::set<std::string> names;
+  for (const tasks::SceneOptionRow& row : tasks::sceneOptions()) {
+    EXPECT_TRUE(names.insert(row.name).second) << row.name << " twice";
+    EXPECT_EQ(&tasks::rowOf(row.option), &row) << row.name;
+    const scene::Key* key = scene::findKey(row.key);
+    ASSERT_NE(key, nullptr) << row.key;
+    const std::string sample(key->sample);
+    tasks::OptionValue value;
+    value.number = std::strtod(sample.c_str(), nullptr);
+    value.name = sample;
+    if (row.kind == tasks::OptionKind::Size)
+      ASSERT_EQ(std::sscanf(sample.c_str(), "[%d, %d]", &value.size[0], &value.size[1]), 2);
+    scene::Loaded loaded;
+    ASSERT_NE(normal(scene::valueOf(*key, loaded)), normal(sample)) << row.key;
+    row.apply(loaded, value);
+    EXPECT_EQ(normal(scene::valueOf(*key, loaded)), normal(sample)) << row.name;
+  }
+  EXPECT_EQ(names.size(), 10u);
 }
