@@ -74,8 +74,9 @@ std::string stepText(const tasks::BenchRow& r) {
 }
 
 void printRow(const tasks::BenchRow& r) {
-  if (r.status != "ok" && std::isnan(r.cost_median)) {
-    std::printf("%-8s %-10s %13s  %s\n", r.model.c_str(), r.integrator.c_str(), stepText(r).c_str(),
+  const std::string model(rb::nameOf(r.model)), integrator(rb::nameOf(r.integrator));
+  if (r.status != tasks::BenchStatus::Ok && std::isnan(r.cost_median)) {
+    std::printf("%-8s %-10s %13s  %s\n", model.c_str(), integrator.c_str(), stepText(r).c_str(),
                 r.brief.c_str());
     return;
   }
@@ -86,23 +87,28 @@ void printRow(const tasks::BenchRow& r) {
   const std::optional<double> process_ms =
       r.process_s ? std::optional<double>(1e3 * *r.process_s) : std::nullopt;
   std::printf("%-8s %-10s %13s %10.3g %6.0f%% %8.3g %9s %11s %9s %9s %9s %9s %9s %9s %8s%s\n",
-              r.model.c_str(), r.integrator.c_str(), stepText(r).c_str(), r.cost_median,
-              100 * spread, r.us_per_step, show(process_ms).c_str(), steps,
-              show(r.reversal, "%.4f").c_str(), show(r.reversal_error).c_str(),
-              show(r.reversal_error_rolling).c_str(), show(r.spin_error).c_str(),
-              show(r.spin_error_rolling).c_str(), show(r.energy_drift).c_str(),
-              show(r.switches, "%.0f").c_str(), r.status == "ok" ? "" : ("  " + r.brief).c_str());
+              model.c_str(), integrator.c_str(), stepText(r).c_str(), r.cost_median, 100 * spread,
+              r.us_per_step, show(process_ms).c_str(), steps, show(r.reversal, "%.4f").c_str(),
+              show(r.reversal_error).c_str(), show(r.reversal_error_rolling).c_str(),
+              show(r.spin_error).c_str(), show(r.spin_error_rolling).c_str(),
+              show(r.energy_drift).c_str(), show(r.switches, "%.0f").c_str(),
+              r.status == tasks::BenchStatus::Ok ? "" : ("  " + r.brief).c_str());
 }
 
 // Colour by integrator, marker by contact model, dashes by scene. (Each integrator its own
 // colour and each model its own marker: rk4 and dopri5 shared green, rolling and auto a
 // triangle, so their legend entries could not be told apart.)
 void styleOf(const tasks::BenchRow& r, int dash, Series& s) {
-  s.color = r.integrator == "euler"        ? "#d62728"
-            : r.integrator == "symplectic" ? "#1f77b4"
-            : r.integrator == "rk4"        ? "#2ca02c"
-                                           : "#9467bd";
-  s.point_type = r.model == "points" ? 7 : r.model == "smooth" ? 5 : r.model == "rolling" ? 9 : 13;
+  using I = sim::Integrator;
+  using M = sim::ContactModel;
+  s.color = r.integrator == I::Euler        ? "#d62728"
+            : r.integrator == I::Symplectic ? "#1f77b4"
+            : r.integrator == I::Rk4        ? "#2ca02c"
+                                            : "#9467bd";
+  s.point_type = r.model == M::Points    ? 7
+                 : r.model == M::Smooth  ? 5
+                 : r.model == M::Rolling ? 9
+                                         : 13;
   s.dash = dash;
 }
 
@@ -123,7 +129,9 @@ rb::Status plotBench(const std::string& png, const std::vector<tasks::BenchRow>&
   std::map<std::string, std::array<Series, 3>> lines;
   std::vector<std::string> order;
   for (const tasks::BenchRow& r : rows) {
-    const std::string key = (scenes.size() > 1 ? r.scene + " " : "") + r.model + " " + r.integrator;
+    const std::string key = (scenes.size() > 1 ? r.scene + " " : "") +
+                            std::string(rb::nameOf(r.model)) + " " +
+                            std::string(rb::nameOf(r.integrator));
     if (!lines.count(key)) order.push_back(key);
     auto& s = lines[key];
     const int dash =

@@ -31,14 +31,16 @@ constexpr std::size_t kMaxBenchPoints = 10000;
 constexpr double kDefaultStiffness = 2.0e4;
 constexpr double kDefaultZeta = 0.06;
 
-const char* kIntegrators[] = {"euler", "symplectic", "rk4", "dopri5"};
+constexpr sim::Integrator kIntegrators[] = {sim::Integrator::Euler, sim::Integrator::Symplectic,
+                                            sim::Integrator::Rk4, sim::Integrator::Dopri5};
 
 // The coarsest step of each model's ladder: rolling has no contact spring (rk4 is converged
 // to 4 digits at 1 ms); the penalty models need steps near 1/ω of their floor and, with
 // friction, of its slip regularisation.
-double topStep(const std::string& model) {
-  if (model == "rolling" || model == "auto") return 2e-3;  // auto slides in steps of its own
-  if (model == "smooth") return 1.6e-4;
+double topStep(sim::ContactModel model) {
+  using M = sim::ContactModel;
+  if (model == M::Rolling || model == M::Auto) return 2e-3;  // auto slides in steps of its own
+  if (model == M::Smooth) return 1.6e-4;
   return 4e-5;
 }
 
@@ -141,18 +143,19 @@ double energyDrift(const Trace& t) {
   return worst;
 }
 
-sim::SceneSpec variant(const sim::SceneSpec& base, const std::string& model) {
+sim::SceneSpec variant(const sim::SceneSpec& base, sim::ContactModel model) {
   sim::SceneSpec spec = base;
-  spec.contact.model = model;
-  if (model != "rolling" && std::isnan(spec.contact.stiffness)) {
+  spec.contact.model = rb::nameOf(model);
+  const bool rolling = model == sim::ContactModel::Rolling;
+  if (!rolling && std::isnan(spec.contact.stiffness)) {
     spec.contact.stiffness = kDefaultStiffness;
     spec.contact.damping = 2 * kDefaultZeta * std::sqrt(kDefaultStiffness * spec.body.mass);
   }
-  if (model == "rolling") spec.initial.height = 0;
+  if (rolling) spec.initial.height = 0;
   return spec;
 }
 
-Trace reference(const BenchScene& scene, const sim::SceneSpec& base, const std::string& model,
+Trace reference(const BenchScene& scene, const sim::SceneSpec& base, sim::ContactModel model,
                 int rungs) {
   sim::SceneSpec spec = variant(base, model);
   spec.simulation.integrator = "rk4";
@@ -162,12 +165,15 @@ Trace reference(const BenchScene& scene, const sim::SceneSpec& base, const std::
 }
 
 // The models a scene is benched with: those asked for, else all that apply.
-std::vector<std::string> modelsOf(const BenchScene& scene, const BenchOptions& options) {
-  if (!options.models.empty()) return options.models;
-  std::vector<std::string> models;
+std::vector<sim::ContactModel> modelsOf(const BenchScene& scene, const BenchOptions& options) {
+  using M = sim::ContactModel;
+  std::vector<M> models;
+  for (const std::string& m : options.models) models.push_back(*rb::parseName<M>(m));
+  if (!models.empty()) return models;
   const auto bottom = static_cast<std::size_t>(sim::censusOf(*scene.body).bottom);
-  if (scene.spec.contact.model == "points" || bottom <= kMaxBenchPoints) models.push_back("points");
-  for (const char* m : {"smooth", "rolling", "auto"}) models.push_back(m);
+  if (scene.spec.contact.model == "points" || bottom <= kMaxBenchPoints)
+    models.push_back(M::Points);
+  for (M m : {M::Smooth, M::Rolling, M::Auto}) models.push_back(m);
   if (bottom > kMaxBenchPoints && scene.spec.contact.model != "points" && options.note)
     options.note("(" + scene.name + ": points model left out: " + std::to_string(bottom) +
                  " bottom points; --models points adds it)");
@@ -190,7 +196,8 @@ BenchRow measureRung(BenchRow row, const sim::SceneSpec& spec, const BenchScene&
     Trace t = runOnce(spec, scene.body);
     if (t.over_budget) over_budget = true;
     if (t.failure && t.samples.empty()) {  // refused: nothing ran
-      row.status = *t.failure;
+      row.status = BenchStatus::Failed;
+      row.message = *t.failure;
       row.brief = t.brief;
       return row;
     }
@@ -211,9 +218,10 @@ BenchRow measureRung(BenchRow row, const sim::SceneSpec& spec, const BenchScene&
   row.us_per_step = first.us_per_step;
   row.steps = first.steps;
   row.rejected = first.rejected;
-  if (row.model == "auto") row.switches = first.switches;
+  if (row.model == sim::ContactModel::Auto) row.switches = first.switches;
   if (first.failure) {
-    row.status = *first.failure;
+    row.status = BenchStatus::Failed;
+    row.message = *first.failure;
     row.brief = first.brief;
   }
   row.reversal = first.failure ? std::nullopt : first.reversal;
@@ -227,10 +235,10 @@ BenchRow measureRung(BenchRow row, const sim::SceneSpec& spec, const BenchScene&
 }
 
 // The ladder of one model × integrator; false when cancelled.
-bool ladder(const BenchScene& scene, const sim::SceneSpec& base, const std::string& model,
-            const std::string& integrator, const BenchOptions& options, const References& ref,
+bool ladder(const BenchScene& scene, const sim::SceneSpec& base, sim::ContactModel model,
+            sim::Integrator integrator, const BenchOptions& options, const References& ref,
             std::vector<BenchRow>& rows) {
-  const bool adaptive = sim::isAdaptive(*rb::parseName<sim::Integrator>(integrator));
+  const bool adaptive = sim::isAdaptive(integrator);
   const std::vector<double> tolerances =
       options.tolerances.empty()
           // As many decades from 1e-4 as the step ladders have rungs (--rungs 1 is one run of
@@ -248,15 +256,17 @@ bool ladder(const BenchScene& scene, const sim::SceneSpec& base, const std::stri
     row.model = model;
     row.integrator = integrator;
     sim::SceneSpec spec = variant(base, model);
-    spec.simulation.integrator = integrator;
+    spec.simulation.integrator = rb::nameOf(integrator);
     row.dt = adaptive ? NAN : topStep(model) / std::pow(2.0, rung);
     row.tolerance = adaptive ? tolerances[rung] : NAN;
     spec.simulation.dt = adaptive ? sim::kUnset : row.dt;
     spec.simulation.tolerance = adaptive ? row.tolerance : sim::kUnset;
-    if (over_budget)
-      row.status = row.brief = "skipped: the rung before ran over the budget of one run";
-    else
+    if (over_budget) {
+      row.status = BenchStatus::Skipped;
+      row.message = row.brief = "skipped: the rung before ran over the budget of one run";
+    } else {
       row = measureRung(row, spec, scene, options, ref, over_budget);
+    }
     if (options.row) options.row(row);
     rows.push_back(row);
   }
@@ -339,24 +349,27 @@ rb::Status checkBenchOptions(const BenchOptions& o) {
 bool benchScene(const BenchScene& scene, const BenchOptions& options, std::vector<BenchRow>& rows) {
   sim::SceneSpec base = scene.spec;
   base.simulation.duration = options.duration;
-  const std::vector<std::string> integrators =
-      options.integrators.empty()
-          ? std::vector<std::string>(std::begin(kIntegrators), std::end(kIntegrators))
-          : options.integrators;
-  const Trace rolling_reference = reference(scene, base, "rolling", options.rungs);
-  for (const std::string& model : modelsOf(scene, options)) {
+  std::vector<sim::Integrator> integrators;
+  for (const std::string& i : options.integrators)
+    integrators.push_back(*rb::parseName<sim::Integrator>(i));
+  if (integrators.empty()) integrators.assign(std::begin(kIntegrators), std::end(kIntegrators));
+  using M = sim::ContactModel;
+  const Trace rolling_reference = reference(scene, base, M::Rolling, options.rungs);
+  for (const M model : modelsOf(scene, options)) {
     const Trace own =
-        model == "rolling" ? rolling_reference : reference(scene, base, model, options.rungs);
-    if (own.failure && options.note) options.note(model + " reference (rk4) " + own.brief);
-    for (const std::string& integrator : integrators) {
+        model == M::Rolling ? rolling_reference : reference(scene, base, model, options.rungs);
+    if (own.failure && options.note)
+      options.note(std::string(rb::nameOf(model)) + " reference (rk4) " + own.brief);
+    for (const sim::Integrator integrator : integrators) {
       // The points model's thousands of stiff springs leave adaptive steps nothing to gain;
       // its dopri5 rows only when asked for by name.
-      const bool adaptive = sim::isAdaptive(*rb::parseName<sim::Integrator>(integrator));
-      if (adaptive && model == "points" && options.integrators.empty()) continue;
+      const bool adaptive = sim::isAdaptive(integrator);
+      if (adaptive && model == M::Points && options.integrators.empty()) continue;
       // Semi-implicit Euler is refused where the body rolls (sim/compile.cpp); its rows only
       // when asked for by name, to show the refusal.
-      const bool rolls = model == "rolling" || model == "auto";
-      if (integrator == "symplectic" && rolls && options.integrators.empty()) continue;
+      const bool rolls = model == M::Rolling || model == M::Auto;
+      if (integrator == sim::Integrator::Symplectic && rolls && options.integrators.empty())
+        continue;
       if (!ladder(scene, base, model, integrator, options, {own, rolling_reference}, rows))
         return false;
     }
@@ -398,13 +411,13 @@ std::string benchCsvHeader() {
 
 std::string benchCsvLine(const BenchRow& r) {
   const std::string fields[] = {csvField(r.scene),
-                                csvField(r.model),
-                                csvField(r.integrator),
+                                std::string(rb::nameOf(r.model)),
+                                std::string(rb::nameOf(r.integrator)),
                                 number(r.dt, 6),
                                 number(r.tolerance, 3),
                                 std::to_string(r.steps),
                                 std::to_string(r.rejected),
-                                csvField(r.status),
+                                csvField(r.status == BenchStatus::Ok ? "ok" : r.message),
                                 number(r.cost_median, 6),
                                 number(r.cost_min, 6),
                                 number(r.cost_max, 6),

@@ -19,14 +19,24 @@
 namespace tasks {
 
 /// One rung of a ladder and what it measured.
+/// How a rung of the bench went.
+enum class BenchStatus {
+  Ok,       ///< measured
+  Failed,   ///< refused, or stopped by itself (message says why)
+  Skipped,  ///< not run: the rung before ran over the budget of one run
+};
+
 struct BenchRow {
-  std::string scene, model, integrator;
+  std::string scene;
+  sim::ContactModel model = sim::ContactModel::Points;
+  sim::Integrator integrator = sim::Integrator::Rk4;
   double dt = 0;           ///< fixed step, s (NaN for adaptive rows)
   double tolerance = NAN;  ///< adaptive rows
   std::int64_t steps = 0, rejected = 0;
   std::optional<double> switches;  ///< auto rows: changes of contact model
-  std::string status = "ok";       ///< or the failure in full (CSV)
-  std::string brief;               ///< the failure in a few words (table)
+  BenchStatus status = BenchStatus::Ok;
+  std::string message;  ///< for Failed and Skipped: why, in full (the CSV's status)
+  std::string brief;    ///< the same in a few words (the printed table)
   double cost_median = NAN, cost_min = NAN, cost_max = NAN, us_per_step = NAN;
   /// Wall time of the rung's run as a whole process (`rattleback simulate` with the rung's
   /// settings: start-up, loading, the run and its telemetry), s, median of the repeats.

@@ -16,7 +16,18 @@
 
 namespace tasks {
 
-enum class SceneOption { Duration, Dt, Tolerance, Integrator, Spin, Playback, View, Frame, Size, Fps };
+enum class SceneOption {
+  Duration,
+  Dt,
+  Tolerance,
+  Integrator,
+  Spin,
+  Playback,
+  View,
+  Frame,
+  Size,
+  Fps
+};
 
 /// The value an option takes.
 enum class OptionKind {
