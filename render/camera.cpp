@@ -3,9 +3,32 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/views.hpp"
+
 namespace render {
 namespace {
-const float kElevation = 10.0f * static_cast<float>(M_PI) / 180;
+
+float radians(float degrees) {
+  return degrees * static_cast<float>(M_PI) / 180;
+}
+
+// The preset's direction towards the eye, raised by its elevation where it has one.
+Eigen::Vector3f towardEye(const ViewPreset& p) {
+  const Eigen::Vector3f toward(p.toward_eye[0], p.toward_eye[1], p.toward_eye[2]);
+  if (p.elevation_deg == 0) return toward;
+  const float e = radians(p.elevation_deg);
+  return Eigen::Vector3f(toward.x() * std::cos(e), toward.y() * std::cos(e), std::sin(e));
+}
+
+Eigen::Vector3f upOf(const ViewPreset& p) {
+  return Eigen::Vector3f(p.up[0], p.up[1], p.up[2]);
+}
+
+// The narrower of the two angles of a perspective view's field at this aspect.
+float narrowAngle(float fov, float aspect) {
+  return aspect >= 1 ? fov : 2 * std::atan(std::tan(fov / 2) * aspect);
+}
+
 }  // namespace
 
 Eigen::Matrix4f lookAt(const Eigen::Vector3f& eye, const Eigen::Vector3f& target,
@@ -46,74 +69,54 @@ Eigen::Matrix4f orthographic(float half_w, float half_h, float near, float far) 
 Camera fixedCamera(View view, const Framing& framing, float half_height, float aspect) {
   const Eigen::Vector3f& target = framing.center;
   const float r = framing.radius;
+  // (follow has its own camera, chaseCamera: framed here as side)
+  const ViewPreset& p = presetOf(view == View::Follow ? View::Side : view);
   Camera c;
-  // Orthographic views: the visible half extents (across the screen, up the screen) hold
-  // `across` and `upwards` with a 10 % margin, at the frame's aspect.
-  auto ortho = [&](const Eigen::Vector3f& direction, const Eigen::Vector3f& up, float across,
-                   float upwards) {
-    const float half_w = 1.1f * std::max(across, upwards * aspect);
-    // Far enough back (20 r) that the floor runs to the bottom of the frame even when the scene
-    // is drawn shrunk into a band (narrow frames, renderer.cpp): nearer, the floor in front of
-    // the body would pass behind the eye.
-    c.eye = target + 20 * r * direction;
-    c.view = lookAt(c.eye, target, up);
-    c.proj = orthographic(half_w, half_w / aspect, 0.1f * r, 40 * r);
-  };
+  if (p.projection == Projection::Perspective) {
+    // Far enough that the sphere fits the narrower of the two angles with the margin.
+    const float fov = radians(p.fov_deg);
+    const float distance = p.margin * r / std::sin(narrowAngle(fov, aspect) / 2);
+    c.eye = target + distance * towardEye(p).normalized();
+    c.view = lookAt(c.eye, target, upOf(p));
+    c.proj = perspective(fov, aspect, 0.05f * distance, 8 * distance);
+    return c;
+  }
+  // Orthographic: the visible half extents (across the screen, up the screen) hold the sphere
+  // across, and up the screen the sphere (above) or the body's height plus r·sin e (front and
+  // side, which look down by e), with the margin, at the frame's aspect.
+  const float e = radians(p.elevation_deg);
+  const float upwards = p.elevation_deg == 0 ? r : half_height + r * std::sin(e);
+  const float half_w = p.margin * std::max(r, upwards * aspect);
+  const Eigen::Vector3f direction = towardEye(p);
+  c.eye = target + p.eye_r * r * direction;
+  c.view = lookAt(c.eye, target, upOf(p));
+  c.proj = orthographic(half_w, half_w / aspect, p.near_r * r, p.far_r * r);
   // Front and side: a floor point d behind the target shows d·sin e − z·cos e above it on the
-  // screen (e the elevation, z the target's height); the floor is gone into the background
-  // at 80 % of the way to the top of the frame, its checker from just behind the body.
-  auto horizon = [&](const Eigen::Vector3f& direction) {
+  // screen (z the target's height); the floor is gone into the background at 80 % of the way
+  // to the top of the frame, its checker from just behind the body.
+  if (p.elevation_deg != 0) {
     const float half_h = 1.0f / c.proj(1, 1);
     c.depth_direction = -direction.head<2>().normalized();
-    c.fog_far = (0.8f * half_h + target.z() * std::cos(kElevation)) / std::sin(kElevation);
+    c.fog_far = (0.8f * half_h + target.z() * std::cos(e)) / std::sin(e);
     c.fog_near = std::min(r, 0.5f * c.fog_far);
-  };
-  const Eigen::Vector3f look_down(std::cos(kElevation), 0, std::sin(kElevation));
-  switch (view) {
-    case View::Above:  // +y to the right, +x down; the body turns within the circle r
-      ortho(Eigen::Vector3f::UnitZ(), -Eigen::Vector3f::UnitX(), r, r);
-      break;
-    // Front and side look 10° down so that the floor shows as a band, not a line; the body
-    // turns within r across, and its height plus r·sin 10° up the screen.
-    case View::Front:
-      ortho(Eigen::Vector3f(0, -std::cos(kElevation), std::sin(kElevation)),
-            Eigen::Vector3f::UnitZ(), r, half_height + r * std::sin(kElevation));
-      horizon(Eigen::Vector3f(0, -std::cos(kElevation), std::sin(kElevation)));
-      break;
-    case View::Side:
-    case View::Follow:  // (follow has its own camera: chaseCamera)
-      ortho(look_down, Eigen::Vector3f::UnitZ(), r, half_height + r * std::sin(kElevation));
-      horizon(look_down);
-      break;
-    case View::Oblique: {
-      // Fixed: from the front right, 30° field of view; far enough that the sphere fits the
-      // narrower of the two angles with a 10 % margin.
-      const float fov = 30.0f * static_cast<float>(M_PI) / 180;
-      const float narrow = aspect >= 1 ? fov : 2 * std::atan(std::tan(fov / 2) * aspect);
-      const Eigen::Vector3f direction = Eigen::Vector3f(0.75f, -0.55f, 0.55f).normalized();
-      const float distance = 1.1f * r / std::sin(narrow / 2);
-      c.eye = target + distance * direction;
-      c.view = lookAt(c.eye, target, Eigen::Vector3f::UnitZ());
-      c.proj = perspective(fov, aspect, 0.05f * distance, 8 * distance);
-      break;
-    }
   }
   return c;
 }
 
 Camera chaseCamera(const Eigen::Vector3f& middle, const Eigen::Vector2f& heading, float radius,
                    float aspect) {
-  const float fov = 30.0f * static_cast<float>(M_PI) / 180;
-  const float narrow = aspect >= 1 ? fov : 2 * std::atan(std::tan(fov / 2) * aspect);
-  const float elevation = 25.0f * static_cast<float>(M_PI) / 180;
+  const ViewPreset& p = presetOf(View::Follow);
+  const float fov = radians(p.fov_deg);
+  const float narrow = narrowAngle(fov, aspect);
+  const float elevation = radians(p.elevation_deg);
   // Beside the body: across its long axis, so the whole length shows.
   const Eigen::Vector2f across(-heading.y(), heading.x());
   const Eigen::Vector3f direction(std::cos(elevation) * across.x(),
                                   std::cos(elevation) * across.y(), std::sin(elevation));
-  const float distance = 1.1f * radius / std::sin(narrow / 2);
+  const float distance = p.margin * radius / std::sin(narrow / 2);
   Camera c;
   c.eye = middle + distance * direction;
-  c.view = lookAt(c.eye, middle, Eigen::Vector3f::UnitZ());
+  c.view = lookAt(c.eye, middle, upOf(p));
   c.proj = perspective(fov, aspect, 0.05f * distance, 8 * distance);
   return c;
 }
