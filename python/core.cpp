@@ -462,20 +462,13 @@ PYBIND11_MODULE(_core, m) {
   m.def(
       "player_script",
       [](const LoadedScene& loaded, const Run& run, const std::string& id) {
-        tasks::PlayerRun player;
-        player.id = id;
-        player.title = id;
-        player.points = tasks::drawnPointsOf(loaded.value.model);
-        player.frame = tasks::playerFrame(loaded.value.scene, loaded.value.model);
-        for (const sim::Telemetry& s : run.samples) {
-          const Eigen::Quaterniond q = tasks::attitude(s);
-          player.poses.push_back({s.t, s.x_world.x(), s.x_world.y(), s.x_world.z(), q.w(), q.x(),
-                                  q.y(), q.z(), s.spin});
-        }
-        player.poses = tasks::thinPoses(player.poses);
+        const sim::Model& model = loaded.value.model;
+        std::vector<double> reversals;
         for (const auto& t : run.sidecar.at("result").at("reversals_s"))
-          player.reversals.push_back(t.get<double>());
-        return tasks::playerScript(player);
+          reversals.push_back(t.get<double>());
+        return tasks::playerScript(
+            tasks::playerRunOf(id, model, tasks::playerFrame(loaded.value.scene, model),
+                               tasks::posesOf(run.samples), std::move(reversals)));
       },
       py::arg("scene"), py::arg("run"), py::arg("id"));
   // For bench/python_speed.py: the C++ run alone (samples kept as simulate keeps them), the

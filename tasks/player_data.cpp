@@ -4,9 +4,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <nlohmann/json.hpp>
 
+#include "render/views.hpp"
 #include "tasks/analysis.hpp"
+#include "tasks/simulate.hpp"
+#include "util/names.hpp"
 
 namespace tasks {
 namespace {
@@ -61,7 +65,57 @@ bool replays(const std::vector<Pose>& poses, const std::vector<std::size_t>& kep
   return true;
 }
 
+// The views' cameras, in the renderer's order (render/views.hpp): "views":[{"name":"oblique",
+// "projection":"perspective","toward_eye":[…],"up":[…],"elevation_deg":0,…},…].
+std::string viewsJson() {
+  // A float as the decimal it was written as (0.55f, not 0.550000011920929).
+  auto decimal = [](float value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.7g", value);
+    return std::strtod(text, nullptr);
+  };
+  auto vector = [&](const std::array<float, 3>& v) {
+    return nlohmann::json{decimal(v[0]), decimal(v[1]), decimal(v[2])};
+  };
+  nlohmann::json views = nlohmann::json::array();
+  for (const render::ViewPreset& p : render::kViewPresets)
+    views.push_back({{"name", rb::nameOf(p.view)},
+                     {"projection", rb::nameOf(p.projection)},
+                     {"toward_eye", vector(p.toward_eye)},
+                     {"up", vector(p.up)},
+                     {"elevation_deg", decimal(p.elevation_deg)},
+                     {"fov_deg", decimal(p.fov_deg)},
+                     {"margin", decimal(p.margin)},
+                     {"eye_r", decimal(p.eye_r)},
+                     {"near_r", decimal(p.near_r)},
+                     {"far_r", decimal(p.far_r)}});
+  return "\"views\":" + views.dump() + ",";
+}
+
 }  // namespace
+
+std::vector<Pose> posesOf(const std::vector<sim::Telemetry>& samples) {
+  std::vector<Pose> poses;
+  poses.reserve(samples.size());
+  for (const sim::Telemetry& s : samples) {
+    const Eigen::Quaterniond q = attitude(s);
+    poses.push_back(
+        {s.t, s.x_world.x(), s.x_world.y(), s.x_world.z(), q.w(), q.x(), q.y(), q.z(), s.spin});
+  }
+  return poses;
+}
+
+PlayerRun playerRunOf(const std::string& id, const sim::Model& model, double frame,
+                      std::vector<Pose> poses, std::vector<double> reversals) {
+  PlayerRun run;
+  run.id = id;
+  run.title = id;
+  run.points = drawnPointsOf(model);
+  run.frame = frame;
+  run.poses = thinPoses(poses);
+  run.reversals = std::move(reversals);
+  return run;
+}
 
 std::vector<Pose> thinPoses(const std::vector<Pose>& poses) {
   if (poses.size() < 3) return poses;
@@ -95,6 +149,7 @@ std::string playerScript(const PlayerRun& run) {
   std::snprintf(text, sizeof text, "\"radius\":%.6g,\"reach\":%.6g,\"frame\":%.6g,", p.radius,
                 reachOf(p), run.frame);
   data += text;
+  data += viewsJson();
   const auto& q = run.poses;
   // Times to the µs over runs up to 1000 s; positions to 0.1 µm; the quaternion to 1e-9.
   appendArray(data, "t", q.size(), 9, [&](std::size_t i) { return q[i].t; });

@@ -3,9 +3,10 @@
 //
 //   (window.RATTLEBACK_RUNS = window.RATTLEBACK_RUNS || {})["ID"] = {…};
 //
-// holding the drawn points (body frame about the CM, m), the fixed views' framing, and the
-// run's poses: t, x, y, z (CM, world, m), qw, qx, qy, qz (body to world, scalar first) and the
-// spin n (rad/s), at most kPlayerRate samples per simulated second.
+// holding the drawn points (body frame about the CM, m), the fixed views' framing, the views'
+// cameras (the renderer's own table, render/views.hpp), and the run's poses: t, x, y, z (CM, world,
+// m), qw, qx, qy, qz (body to world, scalar first) and the spin n (rad/s), at most kPlayerRate
+// samples per simulated second.
 #pragma once
 
 #include <optional>
@@ -14,6 +15,7 @@
 
 #include "scene/loader.hpp"
 #include "sim/model.hpp"
+#include "sim/telemetry.hpp"
 #include "tasks/drawn_points.hpp"
 
 namespace tasks {
@@ -61,7 +63,15 @@ inline std::optional<double> listedFrame(const scene::Loaded& scene, const sim::
 /// off, and read +0.04 rad/s at its reversal: all of its 500 a second are kept.)
 std::vector<Pose> thinPoses(const std::vector<Pose>& poses);
 
-/// The script's text.
+/// The poses of a run's samples (tasks::attitude's quaternion).
+std::vector<Pose> posesOf(const std::vector<sim::Telemetry>& samples);
+
+/// The player's run, as the report and Python both make it: titled by its id, the body's drawn
+/// points, `frame` (m; 0: the body's own), the poses thinned (thinPoses), the reversals (s).
+PlayerRun playerRunOf(const std::string& id, const sim::Model& model, double frame,
+                      std::vector<Pose> poses, std::vector<double> reversals);
+
+/// The script's text, with the views' cameras.
 std::string playerScript(const PlayerRun& run);
 
 }  // namespace tasks

@@ -4,7 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
+
+#include "render/views.hpp"
 
 namespace {
 
@@ -30,6 +34,30 @@ TEST(Player, PosesAreKeptAsTheReplayNeedsThem) {
   EXPECT_EQ(slow.back().t, 4.0);
   EXPECT_EQ(tasks::thinPoses(poses(17, 1)).size(), 1001u);
   EXPECT_EQ(tasks::thinPoses(poses(17, 10)).size(), 2001u);
+}
+
+// The player places its cameras by the renderer's own table (render/views.hpp), which comes with
+// each run's data: every view, in the renderer's order, with the table's numbers as written
+// (0.55, not the float's 0.550000011920929).
+TEST(Player, DataCarriesTheRenderersViews) {
+  tasks::PlayerRun run;
+  run.id = "x";
+  run.poses = {tasks::Pose{}, tasks::Pose{0.01}};
+  const std::string script = tasks::playerScript(run);
+  const std::size_t start = script.find(" = ") + 3, end = script.rfind(';');
+  const nlohmann::json data = nlohmann::json::parse(script.substr(start, end - start));
+  ASSERT_EQ(data.at("views").size(), render::kViewPresets.size());
+  for (std::size_t i = 0; i < render::kViewPresets.size(); ++i) {
+    const render::ViewPreset& p = render::kViewPresets[i];
+    const nlohmann::json& v = data["views"][i];
+    EXPECT_EQ(v.at("name"), rb::nameOf(p.view));
+    EXPECT_EQ(v.at("projection"), rb::nameOf(p.projection));
+    for (int k = 0; k < 3; ++k)
+      EXPECT_FLOAT_EQ(v.at("toward_eye")[k].get<double>(), p.toward_eye[k]);
+    EXPECT_FLOAT_EQ(v.at("elevation_deg").get<double>(), p.elevation_deg);
+    EXPECT_FLOAT_EQ(v.at("margin").get<double>(), p.margin);
+  }
+  EXPECT_EQ(data["views"][0].at("toward_eye")[1].dump(), "-0.55");
 }
 
 }  // namespace
