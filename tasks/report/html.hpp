@@ -1,0 +1,24 @@
+// The report page's HTML pieces: text escaped for HTML, file names as URLs, a captioned figure.
+#pragma once
+
+#include <ostream>
+#include <string>
+
+namespace tasks::report {
+
+/// Text for HTML: & < > " as entities.
+std::string escape(const std::string& text);
+
+/// A file's name as an attribute's URL (href, src, poster): percent-encoded (tasks::urlPath),
+/// then escaped. Its visible text (a caption, a heading) stays as escape() alone writes it.
+std::string url(const std::string& file);
+
+/// Whether `s` ends with `suffix` and is longer than it.
+bool endsWith(const std::string& s, const std::string& suffix);
+
+/// An image linked to itself, captioned (its file name when there is no caption), with the
+/// caption as its alt text: a bare file name tells a reader nothing of what the still shows.
+void writeFigure(std::ostream& out, const std::string& file, const std::string& caption,
+                 const char* loading = "eager");
+
+}  // namespace tasks::report

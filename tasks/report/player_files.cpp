@@ -1,0 +1,151 @@
+#include "tasks/report/player_files.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <optional>
+#include <sstream>
+
+#include "tasks/manifest.hpp"
+#include "tasks/output.hpp"
+#include "tasks/player_data.hpp"
+#include "tasks/report/run_scene.hpp"
+#include "tasks/report/sidecars.hpp"
+#include "util/assets.hpp"
+
+namespace tasks::report {
+namespace {
+
+// The telemetry columns a pose is made of, in Pose's order.
+constexpr const char* kPoseColumns[] = {"t", "x", "y", "z", "qw", "qx", "qy", "qz", "spin"};
+
+// Where each of kPoseColumns is in a CSV's header line; none where one is missing.
+std::optional<std::vector<int>> poseColumnsOf(const std::string& header) {
+  std::vector<int> index(std::size(kPoseColumns), -1);
+  std::stringstream head(header);
+  std::string name;
+  for (int i = 0; std::getline(head, name, ','); ++i)
+    for (std::size_t w = 0; w < std::size(kPoseColumns); ++w)
+      if (name == kPoseColumns[w]) index[w] = i;
+  if (std::count(index.begin(), index.end(), -1) > 0) return std::nullopt;
+  return index;
+}
+
+// A CSV line's numbers (the telemetry has no quoted fields), read as strtod reads them.
+void numbersOf(const std::string& line, std::vector<double>& fields) {
+  fields.clear();
+  for (const char* p = line.c_str(); *p;) {
+    char* end = nullptr;
+    fields.push_back(std::strtod(p, &end));
+    p = std::strchr(end, ',');
+    if (!p) break;
+    ++p;
+  }
+}
+
+// The poses of a telemetry CSV (found by the header); none for a CSV without them (written
+// before the attitude was).
+std::vector<Pose> posesOf(const fs::path& csv) {
+  std::ifstream in(csv);
+  std::string line;
+  if (!std::getline(in, line)) return {};
+  const auto index = poseColumnsOf(line);
+  if (!index) return {};
+  std::vector<Pose> poses;
+  std::vector<double> fields;
+  while (std::getline(in, line)) {
+    numbersOf(line, fields);
+    auto at = [&](std::size_t w) {
+      return static_cast<std::size_t>((*index)[w]) < fields.size() ? fields[(*index)[w]] : NAN;
+    };
+    poses.push_back({at(0), at(1), at(2), at(3), at(4), at(5), at(6), at(7), at(8)});
+  }
+  return poses;
+}
+
+// DIR/<id>.player.js for a scene with telemetry: its poses, reversals and drawn points; false
+// (the page then has no player for it) when the CSV, its sidecar or its scene cannot be read;
+// an error when the file cannot be written.
+rb::Result<bool> writePlayerData(const fs::path& dir, const std::string& id, const SceneFiles& f,
+                                 std::optional<double> drawn_frame,
+                                 std::vector<std::string>& notes) {
+  if (!f.has(".csv") || !f.has(".csv.json")) return false;
+  const std::optional<RunRecord> sidecar = readRunRecord(dir / f.at(".csv.json"));
+  if (!sidecar || sidecar->command != "simulate") return false;
+  const RunModel found = runModelOf(*sidecar, dir);
+  if (!found.model) {
+    if (!found.why.empty())
+      notes.push_back((dir / f.at(".csv")).string() + ": " + found.scene + " " + found.why);
+    // The data an earlier report wrote for this run would replay it on another body.
+    std::error_code ec;
+    fs::remove(dir / (id + ".player.js"), ec);
+    return false;
+  }
+  std::vector<Pose> poses = posesOf(dir / f.at(".csv"));
+  if (poses.size() < 2) return false;
+  std::vector<double> reversals;
+  for (const Number& r : sidecar->reversals_s)
+    if (r) reversals.push_back(*r);
+  // Framed as the scene's videos and stills were drawn (--frame), else as its video.frame says.
+  const PlayerRun run = playerRunOf(id, *found.model, drawn_frame.value_or(found.frame),
+                                    std::move(poses), std::move(reversals));
+  auto out = AtomicOutput::open((dir / (id + ".player.js")).string());
+  if (!out) return out.error();
+  out->stream() << playerScript(run);
+  if (auto e = out->commit(); !e) return e.error();
+  return true;
+}
+
+// The bundle copied beside the page; false when the build made none (no node and npm), an
+// error when it cannot be written (a full disk, a file-size limit: the page would otherwise
+// stand without its players, and nothing said).
+rb::Result<bool> copyPlayerBundle(const fs::path& dir) {
+  std::ifstream in(fs::path(rb::assetsDir()) / "player" / kPlayerBundle, std::ios::binary);
+  if (!in) return false;
+  auto out = AtomicOutput::open((dir / kPlayerBundle).string());
+  if (!out) return out.error();
+  // Read whole, then written: `<< rdbuf()` stops quietly at a failed write once it has written
+  // anything (no failbit), and a bundle cut at a file-size limit would stand as whole.
+  const std::string bundle((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  out->stream().write(bundle.data(), static_cast<std::streamsize>(bundle.size()));
+  if (auto e = out->commit(); !e) return e.error();
+  return true;
+}
+
+// The frame each scene's videos (else stills) were drawn at, where one was asked for: the
+// players are framed as the videos beside them (--frame), not each filled with its own body.
+std::map<std::string, std::optional<double>> drawnFrames(const fs::path& dir) {
+  std::map<std::string, std::optional<double>> drawn;
+  const std::vector<OutputEntry> listed = readManifest(dir.string());
+  for (const OutputKind kind : {OutputKind::Video, OutputKind::Still})
+    for (const OutputEntry& e : listed)
+      if (e.kind == kind && e.frame_m && !drawn.count(e.scene)) drawn[e.scene] = e.frame_m;
+  return drawn;
+}
+
+}  // namespace
+
+rb::Result<std::vector<std::string>> writePlayers(const fs::path& dir, const Folder& folder,
+                                                  std::vector<std::string>& notes) {
+  std::vector<std::string> players;
+  const rb::Result<bool> bundle = copyPlayerBundle(dir);
+  if (!bundle) return bundle.error();
+  if (!bundle.value()) return players;
+  const auto drawn = drawnFrames(dir);
+  for (const auto& [name, files] : folder.scenes) {
+    const auto frame = drawn.find(name);
+    const rb::Result<bool> data = writePlayerData(
+        dir, name, files, frame == drawn.end() ? std::nullopt : frame->second, notes);
+    if (!data) return data.error();
+    if (data.value()) players.push_back(name);
+  }
+  std::error_code ec;
+  if (players.empty()) fs::remove(dir / kPlayerBundle, ec);  // nothing to play
+  return players;
+}
+
+}  // namespace tasks::report

@@ -1,0 +1,112 @@
+#include "tasks/report/videos.hpp"
+
+#include <string>
+
+#include "tasks/report/captions.hpp"
+#include "tasks/report/html.hpp"
+
+namespace tasks::report {
+namespace {
+
+constexpr const char* kReversingWay = "the theory predicts it rocks, stops and spins back";
+
+// The videos of one scene and what their captions draw on.
+struct Videos {
+  std::ostream& out;
+  const SceneFiles& f;
+  const std::optional<RunRecord>& run;
+  std::optional<bool> ccw_preferred;  ///< the preferred direction as analyze found it
+
+  // A video's poster is its own first frame (NAME-reversed.png for NAME-reversed.mp4, as the
+  // main job renders with `still --spin`), when the run left one; otherwise the browser shows
+  // the video's first frame once loaded.
+  void video(const std::string& file, const std::string& poster_suffix,
+             const std::string& caption) const {
+    const std::string poster = f.has(poster_suffix) ? f.at(poster_suffix) : "";
+    out << "<figure><video src=\"" << url(file) << "\" muted loop playsinline controls "
+        << "preload=\"auto\"" << (poster.empty() ? "" : " poster=\"" + url(poster) + "\"")
+        << "></video><figcaption>" << caption << "</figcaption></figure>\n";
+  }
+
+  // What the run measured, where it was spun the way (`preferred` or not) a video was.
+  std::string measured(bool preferred) const {
+    return ccw_preferred ? measuredAs(run, preferred == *ccw_preferred) : std::string();
+  }
+
+  // A video's spin as the manifest lists it: none where it does not (or says 0).
+  std::optional<double> spinOf(const std::string& file) const {
+    const auto spin = f.video_spins.find(file);
+    if (spin == f.video_spins.end() || spin->second == 0) return std::nullopt;
+    return spin->second;
+  }
+
+  static std::string rads(double spin) { return number(spin, "%+.3g") + " rad/s"; }
+
+  // Which way and how fast a video was spun, as the manifest says: " (clockwise, −5 rad/s)".
+  std::string spun(const std::string& file) const {
+    const auto spin = spinOf(file);
+    return spin ? " (" + spinWords(*spin) + ", " + rads(*spin) + ")" : std::string();
+  }
+
+  // render --both's pair, named by the preferred direction.
+  void byWay() const {
+    if (!f.has("-reversed.mp4") && !f.has("-preferred.mp4")) return;
+    out << "<div class=\"pair\">\n";
+    if (f.has("-reversed.mp4"))
+      video(f.at("-reversed.mp4"), "-reversed.png",
+            "Spun the <b>reversing</b> way" + spun(f.at("-reversed.mp4")) + ": " + kReversingWay +
+                measured(false));
+    if (f.has("-preferred.mp4"))
+      video(f.at("-preferred.mp4"), "-preferred.png",
+            "Spun the <b>preferred</b> way" + spun(f.at("-preferred.mp4")) + ": " + kPreferredWay +
+                measured(true));
+    out << "</div>\n";
+  }
+
+  // A body with no preferred direction: its videos are named by their spins.
+  void bySpin() const {
+    if (!f.has("-ccw.mp4") && !f.has("-cw.mp4")) return;
+    out << "<div class=\"pair\">\n";
+    for (const auto& [suffix, ccw] : {std::pair{"-cw", false}, std::pair{"-ccw", true}})
+      if (f.has(std::string(suffix) + ".mp4"))
+        video(f.at(std::string(suffix) + ".mp4"), std::string(suffix) + ".png",
+              std::string("Spun <b>") + (ccw ? "counter-clockwise" : "clockwise") +
+                  "</b>: the theory prefers neither direction" + measuredAs(run, ccw));
+    out << "</div>\n";
+  }
+
+  // A video alone: its spin, which way, what the theory predicts that way and what a run spun
+  // so measured.
+  void alone() const {
+    if (!f.has(".mp4")) return;
+    std::string caption = "The scene as rendered";
+    if (const auto spin = spinOf(f.at(".mp4"))) {
+      const bool ccw = *spin > 0;
+      caption = "Spun <b>" + spinWords(*spin) + "</b> (" + rads(*spin) + ")";
+      if (ccw_preferred)
+        caption += ": " + std::string(ccw == *ccw_preferred ? kPreferredWay : kReversingWay);
+      caption += measuredAs(run, ccw);
+    }
+    video(f.at(".mp4"), "-single.png", caption);
+  }
+};
+
+}  // namespace
+
+void writeVideos(std::ostream& out, const SceneFiles& f,
+                 const std::optional<nlohmann::json>& theory, const std::optional<RunRecord>& run) {
+  Videos videos{out, f, run, std::nullopt};
+  // The preferred direction as analyze found it (render --both names its videos the same way).
+  if (theory) {
+    const nlohmann::json& preferred = field(*theory, "preferred");
+    if (preferred == "ccw" || preferred == "cw") videos.ccw_preferred = preferred == "ccw";
+  }
+  videos.byWay();
+  videos.bySpin();
+  videos.alone();
+  if (f.has("-both.mp4"))
+    out << "<p><a href=\"" << url(f.at("-both.mp4"))
+        << "\">Both side by side in one video</a></p>\n";
+}
+
+}  // namespace tasks::report
