@@ -1,0 +1,51 @@
+// The player's style and elements. The style is injected once, so that the page needs no CSS of
+// its own. The canvas's stage has square corners and clips nothing: with rounded corners
+// (border-radius, overflow: hidden) Chromium composites the canvas through a masked layer of its
+// own, which doubled the cost of each frame on software WebGL (bench/player_speed.py).
+
+export const STYLE = `
+.rbp{display:flex;flex-wrap:wrap;gap:10px;align-items:flex-start;font:14px/1.35 system-ui,-apple-system,"Segoe UI",sans-serif;color:#1e1e1e;outline:none;margin:8px 0}
+.rbp:focus-visible{box-shadow:0 0 0 2px #6b8fd6;border-radius:4px}
+.rbp-main{flex:1 1 480px;min-width:280px;max-width:100%}
+.rbp-stage{position:relative;width:100%;aspect-ratio:16/9;background:#eef0f5;border:1px solid #c9ccd4}
+.rbp-stage canvas{display:block;width:100%;height:100%;touch-action:none;cursor:grab}
+.rbp-stage.rbp-fixed{aspect-ratio:auto;width:auto}
+.rbp-bar,.rbp-views{display:flex;flex-wrap:wrap;gap:4px;align-items:center;margin-top:6px}
+.rbp button,.rbp select{font:inherit;font-size:13px;padding:2px 8px;border:1px solid #b7bcc7;border-radius:3px;background:#f7f8fa;color:#1e1e1e;cursor:pointer}
+.rbp button:hover{background:#e9ecf2}
+.rbp button.rbp-on{background:#3b5fa8;border-color:#3b5fa8;color:#fff}
+.rbp-play{min-width:4.5em}
+.rbp-slider{flex:1 1 160px;min-width:120px;margin:0 6px}
+.rbp-label{font-size:12px;color:#555;margin-right:2px}
+.rbp-side{flex:0 0 270px;max-width:100%}
+.rbp-title{font-weight:600;margin-bottom:4px;word-break:break-word}
+.rbp-read{font:13px/1.5 ui-monospace,"DejaVu Sans Mono",Menlo,Consolas,monospace;white-space:pre}
+.rbp-plotbox{position:relative;width:272px;margin-top:6px}
+.rbp-plot{display:block;width:270px;height:130px;border:1px solid #c9ccd4;border-radius:3px;background:#fff;cursor:crosshair}
+.rbp-cursor,.rbp-dot{position:absolute;left:0;top:0;background:#d0211a;pointer-events:none;will-change:transform}
+.rbp-cursor{width:1.5px;opacity:.6}
+.rbp-dot{width:6px;height:6px;border-radius:50%}
+.rbp-help{font-size:12px;color:#666;margin-top:6px}
+.rbp-reversal:disabled{opacity:.45;cursor:default}
+.rbp:fullscreen{background:#fff;margin:0;padding:16px;box-sizing:border-box;overflow:auto;align-items:flex-start;flex-wrap:nowrap}
+.rbp:fullscreen .rbp-main{flex:1 1 auto;min-width:0}
+.rbp:fullscreen .rbp-stage{width:min(100%,calc((100vh - 120px) * 16 / 9))}
+.rbp:fullscreen .rbp-side{flex:0 0 300px}
+.rbp:fullscreen .rbp-read{font-size:20px}
+.rbp-missing{padding:10px 12px;border:1px dashed #c9a0a0;border-radius:4px;color:#7a2e2e;background:#fbf4f4;font:14px system-ui,sans-serif;margin:8px 0}
+`;
+
+export function injectStyle() {
+  if (document.getElementById('rb-player-style')) return;
+  const style = document.createElement('style');
+  style.id = 'rb-player-style';
+  style.textContent = STYLE;
+  (document.head || document.documentElement).appendChild(style);
+}
+
+export function el(tag, className, text) {
+  const e = document.createElement(tag);
+  if (className) e.className = className;
+  if (text !== undefined) e.textContent = text;
+  return e;
+}
