@@ -44,7 +44,7 @@ TEST(Player, DataCarriesTheRenderersViews) {
   run.id = "x";
   run.poses = {tasks::Pose{}, tasks::Pose{0.01}};
   const std::string script = tasks::playerScript(run);
-  const std::size_t start = script.find(" = ") + 3, end = script.rfind(';');
+  const std::size_t start = script.find("] = ") + 4, end = script.rfind(';');
   const nlohmann::json data = nlohmann::json::parse(script.substr(start, end - start));
   ASSERT_EQ(data.at("views").size(), render::kViewPresets.size());
   for (std::size_t i = 0; i < render::kViewPresets.size(); ++i) {
