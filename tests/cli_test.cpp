@@ -2685,7 +2685,7 @@ TEST(Report, ARunsSceneThatNoLongerLoadsIsSaidToAsItIs) {
   std::ofstream(csv + ".json") << sidecar.dump(2);
   const Result refused = rattleback("report " + dir.string());
   ASSERT_EQ(refused.status, 0);
-  EXPECT_EQ(refused.err, csv + ": " + yaml.string() +
+  EXPECT_EQ(refused.err, "rattleback: note: " + csv + ": " + yaml.string() +
                              " no longer loads in this rattleback (scene_values: body.mass must "
                              "be > 0, not -3): no 3D player for it (mend the scene and simulate "
                              "it again to replay it)\n");
@@ -2694,7 +2694,7 @@ TEST(Report, ARunsSceneThatNoLongerLoadsIsSaidToAsItIs) {
   std::ofstream(yaml, std::ios::app) << "body: [unclosed\n";
   const Result broken = rattleback("report " + dir.string());
   ASSERT_EQ(broken.status, 0);
-  EXPECT_EQ(broken.err, csv + ": " + yaml.string() +
+  EXPECT_EQ(broken.err, "rattleback: note: " + csv + ": " + yaml.string() +
                             " has changed since this run was simulated: no 3D player for it "
                             "(simulate it again to replay it)\n");
   EXPECT_FALSE(fs::exists(dir / "edit.player.js"));
@@ -2702,7 +2702,7 @@ TEST(Report, ARunsSceneThatNoLongerLoadsIsSaidToAsItIs) {
   fs::remove(yaml);
   const Result gone = rattleback("report " + dir.string());
   ASSERT_EQ(gone.status, 0);
-  EXPECT_EQ(gone.err, csv + ": " + yaml.string() +
+  EXPECT_EQ(gone.err, "rattleback: note: " + csv + ": " + yaml.string() +
                           " is not there any more: no 3D player for it (simulate it again to "
                           "replay it)\n");
   // -q says nothing, these notes neither (a teacher's trial: they were printed under -q).
