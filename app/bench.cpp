@@ -159,7 +159,7 @@ tasks::BenchOptions optionsOf(const BenchArgs& args) {
   o.duration = args.duration;
   o.repeats = args.repeats;
   o.rungs = args.rungs;
-  // "rk4 dopri5" quoted as one word is two names, as the docs say (a reviewer's trial).
+  // "rk4 dopri5" quoted as one word is two names, as the docs say.
   auto words = [](const std::vector<std::string>& given) {
     std::vector<std::string> out;
     for (const std::string& g : given) {
@@ -218,7 +218,7 @@ int benchCommand(const BenchArgs& args) {
       printHeader();
     }
     if (!tasks::benchScene(scene, options, rows)) {
-      std::cerr << "bench: interrupted; no table written\n";
+      tell(Tone::Error, "bench: interrupted; no table written");
       return interruptedStatus();
     }
   }

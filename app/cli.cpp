@@ -64,8 +64,7 @@ void setOption(CLI::App& c, std::vector<std::string>& entries) {
                "value in YAML); one a --set, repeatable; a key an option above also sets is "
                "refused")
       // One value a --set: a vector option takes every word after it by default, so `--set
-      // initial.spin=3 mine.yaml` took the scene as a second value and said "scene is required"
-      // (a teacher's trial).
+      // initial.spin=3 mine.yaml` took the scene as a second value and said "scene is required".
       ->allow_extra_args(false)
       ->type_name("KEY=VALUE")
       ->expected(1)
@@ -316,22 +315,22 @@ std::optional<int> Cli::parse(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "rattleback: " << explainParseError(app, argc, argv, e.what()) << "\n";
+    tell(Tone::Error, "rattleback: " + explainParseError(app, argc, argv, e.what()));
     return kBadInput;
   }
   for (auto [entries, target] : {std::pair{&render_set, &render_args.overrides},
                                  std::pair{&still_set, &still_args.overrides},
                                  std::pair{&analyze_set, &analyze_args.overrides}})
     if (auto ok = putSettings(*entries, *target); !ok) {
-      std::cerr << ok.error().text() << "\n";
+      tell(Tone::Error, ok.error().text());
       return kBadInput;
     }
   for (Overrides* o : {&render_args.overrides, &still_args.overrides}) {
     const auto size = o->given.find(tasks::SceneOption::Size);
     if (size == o->given.end()) continue;
     if (!parseSize(size->second.name, size->second.size)) {
-      std::cerr << "--size: expected WIDTHxHEIGHT such as 1280x720, not '" << size->second.name
-                << "'\n";
+      tell(Tone::Error,
+           "--size: expected WIDTHxHEIGHT such as 1280x720, not '" + size->second.name + "'");
       return kBadInput;
     }
   }
@@ -360,28 +359,30 @@ int Cli::run() {
 int runGuarded(Cli& cli) {
   // A write beyond the shell's file-size limit (ulimit -f) fails with "File too large" and is
   // handled as every failed write is (exit 4, its temporary file removed, an existing output
-  // kept), instead of SIGXFSZ ending the process with its part files left behind (a teacher's
-  // trial: exit 153 and a .NAME.part-PID beside the video). Python ignores it likewise.
+  // kept), instead of SIGXFSZ ending the process with its part files left behind (exit 153 and
+  // a .NAME.part-PID beside the video). Python ignores it likewise.
   std::signal(SIGXFSZ, SIG_IGN);
   try {
     const int status = cli.run();
     // What went to standard output (analyze's text, --emit's script) reached it, or the command
-    // failed: `analyze > /dev/full` and `sweep --emit parallel >&-` had exited 0 having written
-    // nothing (a CI engineer's trial), so `… | parallel` on a full disk "succeeded".
+    // failed: `analyze > /dev/full` and `sweep --emit parallel >&-` would exit 0 having written
+    // nothing, so that `… | parallel` on a full disk "succeeded".
     errno = 0;
     const bool flushed = std::fflush(stdout) == 0;
     const int error = errno;
     if (status == kOk && (!flushed || std::ferror(stdout) || !std::cout)) {
-      std::cerr << "rattleback: " << cli.chosen().name << ": cannot write standard output"
-                << (error ? std::string(" (") + std::strerror(error) + ")" : std::string()) << "\n";
+      tell(Tone::Error,
+           std::string("rattleback: ") + cli.chosen().name + ": cannot write standard output" +
+               (error ? std::string(" (") + std::strerror(error) + ")" : std::string()));
       return kMachine;
     }
     return status;
   } catch (const std::bad_alloc&) {
-    std::cerr << "rattleback: " << cli.chosen().name << ": out of memory\n";
+    tell(Tone::Error, std::string("rattleback: ") + cli.chosen().name + ": out of memory");
   } catch (const std::exception& e) {
-    std::cerr << "rattleback: " << cli.chosen().name << ": internal error: " << e.what()
-              << " (a fault of rattleback's: please report it with the command)\n";
+    tell(Tone::Error, std::string("rattleback: ") + cli.chosen().name +
+                          ": internal error: " + e.what() +
+                          " (a fault of rattleback's: please report it with the command)");
   }
   return kMachine;
 }

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "app/tell.hpp"
 #include "tasks/manifest.hpp"
 #include "tasks/scene_args.hpp"
 

@@ -4,9 +4,7 @@
 
 #include <atomic>
 #include <csignal>
-#include <iostream>
 
-#include "app/commands.hpp"
 #include "tasks/output.hpp"
 
 namespace app {
@@ -30,7 +28,7 @@ void installInterruptHandlers() {
   // A signal the program was started ignoring stays ignored: a shell starts a script's
   // background jobs (`rattleback … &`) with SIGINT ignored, so that the terminal's Ctrl-C stops
   // the script and not them (POSIX's "asynchronous lists"), as Python's rattleback and most
-  // tools keep it (a CI engineer's trial).
+  // tools keep it.
   for (const int signal : {SIGINT, SIGTERM}) {
     struct sigaction before {};
     if (sigaction(signal, nullptr, &before) == 0 && before.sa_handler == SIG_IGN) continue;
@@ -44,18 +42,6 @@ int interruptSignal() {
 
 int interruptedStatus() {
   return 128 + received.load();
-}
-
-}  // namespace app
-
-namespace app {
-
-int fail(const rb::Error& error) {
-  std::cerr << error.text() << "\n";
-  // A failure of something Ctrl-C stopped (gnuplot ended mid-figure: "interrupted while
-  // drawing") is the interruption's: 130 or 143, as a pipeline expects of Ctrl-C.
-  if (interruptSignal() != 0) return interruptedStatus();
-  return error.machine ? kMachine : kBadInput;
 }
 
 }  // namespace app

@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "app/cli.hpp"
+#include "app/tell.hpp"
 
 namespace {
 
@@ -31,13 +32,14 @@ int main(int argc, char** argv) {
   if (!cli.chosen().draws) return app::runGuarded(cli);
   const std::filesystem::path program = renderProgram();
   if (program.empty()) {
-    std::cerr << "rattleback: " << cli.chosen().name
-              << " needs rattleback-render, which is neither beside this program nor in "
-              << RATTLEBACK_LIBEXEC_RELATIVE << "; reinstall rattleback\n";
+    app::tell(app::Tone::Error, std::string("rattleback: ") + cli.chosen().name +
+                                    " needs rattleback-render, which is neither beside this "
+                                    "program nor in " RATTLEBACK_LIBEXEC_RELATIVE
+                                    "; reinstall rattleback");
     return app::kMachine;
   }
   ::execv(program.c_str(), argv);
-  std::cerr << "rattleback: cannot run " << program.string() << ": " << std::strerror(errno)
-            << "\n";
+  app::tell(app::Tone::Error,
+            "rattleback: cannot run " + program.string() + ": " + std::strerror(errno));
   return app::kMachine;
 }

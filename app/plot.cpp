@@ -51,7 +51,7 @@ constexpr int kGnuplotInterrupted = -2;
 
 // Runs `gnuplot script` with stderr into `log`; the exit status, 128 + the signal that ended it,
 // kGnuplotMissing, or kGnuplotInterrupted (Ctrl-C or SIGTERM to this program: gnuplot is ended
-// too, not waited for; a teacher's trial waited ten minutes for a long run's figures).
+// too, not waited for: a long run's figures could take ten minutes).
 int runGnuplot(const fs::path& script, const fs::path& log) {
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
@@ -61,9 +61,9 @@ int runGnuplot(const fs::path& script, const fs::path& log) {
   posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
   const std::string script_path = script.string();
   char* argv[] = {const_cast<char*>("gnuplot"), const_cast<char*>(script_path.c_str()), nullptr};
-  // This program ignores SIGXFSZ (a write beyond a file-size limit is an error it reports);
-  // gnuplot ignores write errors, so it gets the signal's default back: a PNG cut short by the
-  // limit ends gnuplot, rather than standing as a finished figure (a teacher's trial).
+  // This program ignores SIGXFSZ (a write beyond a file-size limit is an error it reports); gnuplot
+  // ignores write errors, so it gets the signal's default back: a PNG cut short by the limit ends
+  // gnuplot, rather than standing as a finished figure.
   posix_spawnattr_t attributes;
   posix_spawnattr_init(&attributes);
   sigset_t defaults;
@@ -149,7 +149,7 @@ rb::Status checkPlotFile(const std::string& png, tasks::MadeFolders* made, const
   if (fs::is_directory(png, ec))
     return rb::Status::fail(png + ": " + option + " is a folder, not a file");
   const rb::OutputNamedBy naming(option);
-  // gnuplot draws a PNG whatever the name says (a new user's trial: --plot x.jpg).
+  // gnuplot draws a PNG whatever the name says (--plot x.jpg).
   if (auto ok = rb::checkExtension(png, ".png", "PNG", false); !ok) return ok;
   const rb::OutputPlace place = rb::outputPlace(png);
   if (auto refused = refuseDevice(png, place); !refused) return refused;
@@ -352,11 +352,11 @@ std::string ticLabel(const std::string& value) {
   return out;
 }
 
-// The labels of an axis's values: each number with the fewest significant digits that keep all
-// the axis's values apart and each within 1 % of itself, in %g's form with the exponent's zeros
-// and plus dropped ("3.16e-7"), or as written where that is no longer: a log axis's values come
-// as 3.16227766017e-07, 18 characters that had to be turned and ran into the axis title (a new
-// user's trial). Text that is not a number stays as it is.
+// The labels of an axis's values: each number with the fewest significant digits that keep all the
+// axis's values apart and each within 1 % of itself, in %g's form with the exponent's zeros and
+// plus dropped ("3.16e-7"), or as written where that is no longer: a log axis's values come as
+// 3.16227766017e-07, 18 characters that had to be turned and ran into the axis title. Text that is
+// not a number stays as it is.
 std::vector<std::string> axisLabels(const std::vector<std::string>& values) {
   std::vector<std::optional<double>> numbers;
   for (const std::string& v : values) {

@@ -10,9 +10,9 @@ namespace app {
 
 namespace {
 
-// A bar redrawn in place, on a terminal that can show one: not TERM=dumb (Emacs' shells, CI
-// runners that give a job a pseudo-terminal: a CI maintainer's trial found only -q, which drops
-// the summary too, silenced it) and not with NO_PROGRESS set.
+// A bar redrawn in place, on a terminal that can show one: not TERM=dumb (Emacs' shells, CI runners
+// that give a job a pseudo-terminal: only -q, which drops the summary too, silenced it) and not
+// with NO_PROGRESS set.
 bool terminalTakesABar() {
   if (!::isatty(STDERR_FILENO)) return false;
   const char* term = std::getenv("TERM");

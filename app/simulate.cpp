@@ -151,8 +151,7 @@ rb::Status writePlots(const std::string& dir, const std::string& stem,
       series("kinetic", [](const sim::Telemetry& t) { return 1e3 * t.kinetic; }),
       series("potential M g z", [](const sim::Telemetry& t) { return 1e3 * t.potential; }),
       series("elastic (floor springs)", [](const sim::Telemetry& t) { return 1e3 * t.elastic; })};
-  // Rolling has no floor springs: no line of zeros in the legend as if it had (a teacher's
-  // trial).
+  // Rolling has no floor springs: no line of zeros in the legend as if it had.
   if (std::all_of(samples.begin(), samples.end(),
                   [](const sim::Telemetry& t) { return t.elastic == 0; }))
     energy.series.pop_back();
@@ -234,8 +233,8 @@ std::vector<tasks::OutputEntry> outputsOf(const SimulateArgs& args, const std::s
 
 namespace {
 
-// --plot naming the table itself would make a folder where the table goes (a new user's trial:
-// `-o a.csv --plot a.csv`).
+// --plot naming the table itself would make a folder where the table goes (`-o a.csv --plot
+// a.csv`).
 rb::Status checkPlotIsNotTheTable(const std::string& plot_dir, const std::string& csv) {
   if (plot_dir.empty()) return {};
   std::error_code ec, ec2;
@@ -253,21 +252,22 @@ rb::Status checkPlotIsNotTheTable(const std::string& plot_dir, const std::string
 // Why a run wrote nothing, and its exit status.
 int notWritten(const SimulateArgs& args, const tasks::Outcome& outcome) {
   if (outcome.ending == tasks::Ending::Interrupted) {
-    std::cerr << args.scene << ": interrupted at t = " << outcome.t << " s; no telemetry written\n";
+    tell(Tone::Error,
+         args.scene + ": interrupted at t = " + rb::show(outcome.t) + " s; no telemetry written");
     return interruptedStatus();  // the temporary files are removed unfinished
   }
-  std::cerr << args.scene << ": the run stopped: " << outcome.message << ". No telemetry written\n";
+  tell(Tone::Error,
+       args.scene + ": the run stopped: " + outcome.message + ". No telemetry written");
   return kDiverged;
 }
 
-// A stopped run's line, then what is odd about the body, which may be why (a researcher's
-// trial: lengths in metres typed for cm made a 28 m body of 0.2 kg that tipped onto its rim,
-// and only analyze said the body was lighter than air).
+// A stopped run's line, then what is odd about the body, which may be why (lengths in metres
+// typed for cm make a 28 m body of 0.2 kg that tips onto its rim, lighter than air).
 int stopped(const SimulateArgs& args, const tasks::SimulateResult& run, const sim::Model& model) {
   const int status = notWritten(args, run.outcome);
   if (run.outcome.ending == tasks::Ending::Interrupted) return status;
   for (const tasks::RunWarning& w : tasks::runWarnings(model, run.summary))
-    if (w.aboutTheBody()) std::cerr << "WARNING: " << w.text << "\n";
+    if (w.aboutTheBody()) tell(Tone::Warning, w.text);
   return status;
 }
 
@@ -341,14 +341,14 @@ int simulateCommand(const SimulateArgs& args) {
     return fail(e);
   if (!args.plot_dir.empty())
     if (auto e = writePlots(args.plot_dir, plotStem(args, csv), kept, run.summary.reversals); !e) {
-      // Ctrl-C while the figures are drawn: the table stands, the figures not drawn go unsaid
-      // as a failure (it exited 2 with "gnuplot failed: "; a teacher's trial).
+      // Ctrl-C while the figures are drawn: the table stands, the figures not drawn go unsaid as a
+      // failure (it exited 2 with "gnuplot failed: ").
       if (interruptSignal() != 0) {
-        // Listed in the folder's manifest as written (it was not: the report then placed it by
-        // its name alone; a teacher's trial).
+        // Listed in the folder's manifest as written (it was not: the report then placed it by its
+        // name alone).
         record({outputsOf(args, csv, tasks::madeFrom(loaded->scene)).front()});
         // Said with -q too, as every command's interruption is (it said nothing).
-        std::cerr << "interrupted while drawing the figures; " << csv << " is written\n";
+        tell(Tone::Error, "interrupted while drawing the figures; " + csv + " is written");
         return interruptedStatus();
       }
       return fail(e);

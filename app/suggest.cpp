@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <optional>
 #include <vector>
 
 #include "util/nearest.hpp"
@@ -38,18 +39,11 @@ bool looksLikeANumber(const std::string& word) {
   return word.size() > 1 && (std::isdigit(static_cast<unsigned char>(word[1])) || word[1] == '.');
 }
 
-// A known command with a word that is none of its options: the line names the word and the
-// nearest option; otherwise CLI11's message and a pointer to the command's --help.
-std::string explainOptionError(const CLI::App& cli, int argc, char** argv,
-                               const std::string& what) {
-  const CLI::App* command = cli.get_subcommand(argv[1]);
-  std::string path = argv[1];
-  int first = 2;
-  if (argc > 2) {
-    for (const CLI::App* sub : command->get_subcommands([](const CLI::App*) { return true; }))
-      if (sub->get_name() == argv[2]) command = sub, path += std::string(" ") + argv[2], first = 3;
-  }
-  const std::vector<std::string> names = optionNames(*command);
+// The first word from argv[first] on that is none of `command`'s options, said with the nearest
+// option, or nothing.
+std::optional<std::string> unknownOption(const CLI::App& command, const std::string& path,
+                                         int first, int argc, char** argv) {
+  const std::vector<std::string> names = optionNames(command);
   auto known = [&](const std::string& name) {
     return std::find(names.begin(), names.end(), name) != names.end();
   };
@@ -71,6 +65,21 @@ std::string explainOptionError(const CLI::App& cli, int argc, char** argv,
       line += "; did you mean " + *nearest + "?";
     return line + " (see rattleback " + path + " --help)";
   }
+  return std::nullopt;
+}
+
+// A known command with a word that is none of its options: the line names the word and the
+// nearest option; otherwise CLI11's message and a pointer to the command's --help.
+std::string explainOptionError(const CLI::App& cli, int argc, char** argv,
+                               const std::string& what) {
+  const CLI::App* command = cli.get_subcommand(argv[1]);
+  std::string path = argv[1];
+  int first = 2;
+  if (argc > 2) {
+    for (const CLI::App* sub : command->get_subcommands([](const CLI::App*) { return true; }))
+      if (sub->get_name() == argv[2]) command = sub, path += std::string(" ") + argv[2], first = 3;
+  }
+  if (auto unknown = unknownOption(*command, path, first, argc, argv)) return *unknown;
   // CLI11 says "Could not convert: --dt = abc": said as what the option takes.
   const std::string prefix = "Could not convert: ", equals = " = ";
   if (const std::size_t at = what.find(equals);
@@ -89,7 +98,7 @@ std::string explainOptionError(const CLI::App& cli, int argc, char** argv,
       return path + ": " + what.substr(0, at) + " takes " + takes(*option) + " (" + gist(*option) +
              "), none given (see rattleback " + path + " --help)";
   // Several KEY=VALUE words after one --set: the second was taken for the scene, and CLI11 named
-  // the scene as "not expected" (a reviewer's trial).
+  // the scene as "not expected".
   if (what.find("was not expected") != std::string::npos)
     for (int i = first + 1; i < argc; ++i)
       if (std::string(argv[i - 1]) == "--set" && i + 1 < argc &&

@@ -26,13 +26,13 @@
 namespace app {
 
 // An axis's label: the key or column with its unit, "initial.spin [rad/s]", as the run's plots
-// label theirs ("spin n [rad/s]"). A scene key's unit is the schema's; lengths in the file's
-// unit ("file units") and dimensionless values go bare (a new user's trial: the sweep's plots
-// said "initial.spin" and "first_reversal_s" with no units).
+// label theirs ("spin n [rad/s]"). A scene key's unit is the schema's; lengths in the file's unit
+// ("file units") and dimensionless values go bare (the sweep's plots said "initial.spin" and
+// "first_reversal_s" with no units).
 std::string sweepLabel(const std::string& name, double length_unit) {
   const std::string unit = tasks::sweepColumnUnit(name);
   if (unit == "file units") {
-    // The dents sweep's heatmap said "body.dents.at[0]" with no unit (a teacher's trial).
+    // The dents sweep's heatmap said "body.dents.at[0]" with no unit.
     if (!(length_unit > 0)) return name;
     for (const auto& [metres, symbol] :
          {std::pair{1.0, "m"}, {0.1, "dm"}, {0.01, "cm"}, {0.001, "mm"}, {0.0254, "in"}})
@@ -389,8 +389,7 @@ int sweepCommand(const SweepArgs& args) {
   auto scenes = scene::SweepScenes::open(sweep);
   if (!scenes) return fail(scenes);
   if (!args.quiet)
-    for (const std::string& note : tasks::sweepNotes(sweep, scenes.value()))
-      std::cerr << "note: " << note << "\n";
+    for (const std::string& note : tasks::sweepNotes(sweep, scenes.value())) tell(Tone::Note, note);
   auto plan = planRows(args, sweep, shard, output.value());
   if (!plan) return fail(plan);
   const std::string journal_path = tasks::Journal::pathOf(output.value());
@@ -403,26 +402,27 @@ int sweepCommand(const SweepArgs& args) {
     if (plan->from_journal + run.rows.size() == 0) {  // a journal of its header alone is no use
       journal->close();
       tasks::Journal::remove(journal_path);
-      std::cerr << args.file << ": interrupted before any run finished; nothing kept\n";
+      tell(Tone::Error, args.file + ": interrupted before any run finished; nothing kept");
       return interruptedStatus();
     }
-    std::cerr << args.file << ": interrupted; " << plan->from_journal + run.rows.size() << " of "
-              << rb::counted(static_cast<long long>(plan->rows.size()), "run") << " kept in "
-              << journal_path << "; the same command with --resume runs the rest\n";
+    tell(Tone::Error,
+         args.file + ": interrupted; " + std::to_string(plan->from_journal + run.rows.size()) +
+             " of " + rb::counted(static_cast<long long>(plan->rows.size()), "run") + " kept in " +
+             journal_path + "; the same command with --resume runs the rest");
     return interruptedStatus();
   }
-  // Not one run made: the sweep's values are the input at fault (a teacher's trial: four rows
-  // refused for a missing contact.stiffness, and exit 0), and bad input writes nothing: a table
-  // of refusals had replaced a good table of that name (a CI engineer's trial).
+  // Not one run made: the sweep's values are the input at fault (rows all refused for a missing
+  // contact.stiffness are not a success), and bad input writes nothing: a table of refusals
+  // would replace a good table of that name.
   if (!plan->done.empty() && plan->counts["refused"] == static_cast<int>(plan->done.size())) {
     journal->close();
     tasks::Journal::remove(journal_path);
     const auto first = std::find_if(run.rows.begin(), run.rows.end(), [](const auto& row) {
       return row.status == tasks::RowStatus::Refused;
     });
-    std::cerr << args.file << ": every run was refused, nothing written"
-              << (first == run.rows.end() ? std::string() : "; the first: " + first->message)
-              << "\n";
+    tell(Tone::Error,
+         args.file + ": every run was refused, nothing written" +
+             (first == run.rows.end() ? std::string() : "; the first: " + first->message));
     return kBadInput;
   }
   if (auto e = writeOutputs(args, sweep, shard, plan.value(), metric, output.value()); !e)
@@ -447,7 +447,7 @@ int sweepMergeCommand(const SweepMergeArgs& args) {
   if (!args.plot.empty())
     if (auto ok = checkPlotFile(args.plot, &made); !ok) return fail(ok);
   // Not over one of its shards: the shard was replaced by the whole, and every later merge found
-  // its rows twice (a CI engineer's trial).
+  // its rows twice.
   if (auto ok = rb::checkDataOutput(args.output, "a CSV table", ".csv", args.shards); !ok)
     return fail(ok);
   auto merged = tasks::mergeShards(args.shards);

@@ -29,7 +29,7 @@ namespace {
 std::optional<render::Backend> parseBackend(const std::string& name, const std::string& from) {
   const auto backend = rb::parseName<render::Backend>(name);
   if (!backend)
-    std::cerr << from << ": " << rb::choices<render::Backend>() << ", not '" << name << "'\n";
+    tell(Tone::Error, from + ": " + rb::choices<render::Backend>() + ", not '" + name + "'");
   return backend;
 }
 
@@ -40,17 +40,17 @@ bool interrupted() {
 // The exit status and message of a run that stopped or was interrupted before its output.
 int notWritten(const tasks::Outcome& outcome, const std::string& scene, const std::string& what) {
   if (outcome.ending == tasks::Ending::Stopped) {
-    std::cerr << scene << ": the run stopped: " << outcome.message << ". No " << what
-              << " written\n";
+    tell(Tone::Error,
+         scene + ": the run stopped: " + outcome.message + ". No " + what + " written");
     return kDiverged;
   }
-  std::cerr << scene << ": interrupted; no " << what << " written\n";
+  tell(Tone::Error, scene + ": interrupted; no " + what + " written");
   return interruptedStatus();
 }
 
 void printVideos(const media::VideoResult& r) {
-  for (const std::string& note : r.notes) std::cerr << "note: " << note << "\n";
-  if (r.leaves) std::cerr << "warning: " << *r.leaves << "\n";
+  for (const std::string& note : r.notes) tell(Tone::Note, note);
+  if (r.leaves) tell(Tone::Warning, *r.leaves);
   for (const media::VideoFile& f : r.files) {
     std::printf("%s  (%s", f.path.c_str(), rb::counted(f.frames, "frame").c_str());
     if (f.spin && f.first_reversal_s)
@@ -79,14 +79,15 @@ int renderCommand(const RenderArgs& args) {
   if (args.verbose) describeModel(loaded->model, args.scene);
   // A video over ten minutes long is said up front, on or off a terminal (where no progress
   // bar shows): a playback typed 0.001 for 1 made 180,000 frames of a 6 s scene, hundreds of
-  // megabytes, with nothing said for as long as it ran (a new user's trial).
+  // megabytes, with nothing said for as long as it ran.
   if (const auto plan = media::planVideo(loaded->scene, loaded->model, loaded->model.duration);
       plan && !args.quiet && plan->frames > 600LL * plan->fps)
-    std::cerr << args.scene << ": " << plan->frames << " frames, "
-              << std::lround(static_cast<double>(plan->frames) / plan->fps / 60.0)
-              << " min of video (" << loaded->model.duration << " s simulated at playback "
-              << plan->playback << ", " << plan->fps
-              << " fps); this takes a while, and Ctrl-C stops it with nothing written\n";
+    tell(Tone::Note,
+         args.scene + ": " + std::to_string(plan->frames) + " frames, " +
+             std::to_string(std::lround(static_cast<double>(plan->frames) / plan->fps / 60.0)) +
+             " min of video (" + rb::show(loaded->model.duration) + " s simulated at playback " +
+             rb::show(plan->playback) + ", " + rb::show(plan->fps) +
+             " fps); this takes a while, and Ctrl-C stops it with nothing written");
   media::VideoRequest request;
   request.scene_name = args.scene;
   request.output = args.output;
@@ -105,7 +106,7 @@ int renderCommand(const RenderArgs& args) {
   progress.finish();
   if (!made) return fail(made);
   const media::VideoResult& result = made.value();
-  if (args.verbose) std::cerr << "render: OpenGL " << result.opengl << "\n";
+  if (args.verbose) tell(Tone::Note, "render: OpenGL " + result.opengl);
   if (result.outcome.ending != tasks::Ending::Completed)
     return notWritten(result.outcome, args.scene, "video");
   std::vector<tasks::OutputEntry> entries;
@@ -147,7 +148,7 @@ int stillCommand(const StillArgs& args) {
   progress.finish();
   if (!drawn) return fail(drawn);
   const media::StillResult& still = drawn.value();
-  if (args.verbose) std::cerr << "still: OpenGL " << still.opengl << "\n";
+  if (args.verbose) tell(Tone::Note, "still: OpenGL " + still.opengl);
   if (still.outcome.ending != tasks::Ending::Completed)
     return notWritten(still.outcome, args.scene, "still");
   const std::string path = args.output.empty()
@@ -160,7 +161,7 @@ int stillCommand(const StillArgs& args) {
            std::string(rb::nameOf(still.view)), loaded->model.initial.spin, args.t,
            tasks::madeFrom(loaded->scene), tasks::listedFrame(loaded->scene, loaded->model)}});
   if (!args.quiet) {
-    if (still.leaves) std::cerr << "warning: " << *still.leaves << "\n";
+    if (still.leaves) tell(Tone::Warning, *still.leaves);
     std::printf("%s\n", path.c_str());
   }
   return kOk;
@@ -176,42 +177,77 @@ int runCompare(Cli& cli) {
   return compareCommand(cli.compare_args);
 }
 
+namespace {
+
+rb::Status checkCompareOptions(const CompareArgs& args) {
+  if (args.channel_tolerance < 0 || args.channel_tolerance > 255)
+    return rb::Status::fail("--tolerance: a channel difference within 0 … 255, not " +
+                            std::to_string(args.channel_tolerance));
+  if (!(args.pixel_fraction >= 0 && args.pixel_fraction <= 1))
+    return rb::Status::fail(
+        "--pixels: a fraction of the pixels within 0 … 1 (0.002 = 0.2 %), not " +
+        rb::show(args.pixel_fraction));
+  if (args.square < 0)
+    return rb::Status::fail("--square: a side in pixels, 0 (no square check) or more, not " +
+                            std::to_string(args.square));
+  return {};
+}
+
+// --diff's place checked (its folder made, as every output's is) before the images are read: an
+// unwritable one is refused at once, not after the verdict (`--diff diffs/x.png` into a missing
+// folder would say "differ" and then exit 2).
+rb::Status checkDiffPlace(const CompareArgs& args, tasks::MadeFolders& made) {
+  if (args.diff.empty()) return {};
+  // The diff written over one of the images compared would destroy it (`compare new.png
+  // golden.png --diff golden.png`: the golden became a magenta diff).
+  for (const auto& [image, role] : {std::pair{&args.actual, "the image compared"},
+                                    std::pair{&args.expected, "the expected image"}}) {
+    std::error_code ec;
+    if (std::filesystem::equivalent(args.diff, *image, ec))
+      return rb::Status::fail("--diff " + args.diff + ": is " + role + " (" + *image +
+                              "); give the diff a name of its own");
+  }
+  return checkPlotFile(args.diff, &made, "--diff");
+}
+
+// The verdict's line on standard output, and what drew each image where that differs.
+void printVerdict(const CompareArgs& args, const render::Image& a, const render::Image& b,
+                  const render::Comparison& c, bool same, bool square) {
+  std::printf(
+      "%s: %lld of %lld pixels (%.4f%%) differ by more than %d in a channel "
+      "(allowed %.4f%%); largest channel difference %d",
+      same ? "same" : "differ", c.differing, c.pixels, 100 * c.fraction(), args.channel_tolerance,
+      100 * args.pixel_fraction, c.max_channel_delta);
+  if (c.differing)
+    std::printf("; differing pixels within x %d–%d, y %d–%d", c.box[0], c.box[2], c.box[1],
+                c.box[3]);
+  if (c.square > 1)
+    std::printf("; largest square of them %dx%d at x %d, y %d%s", c.square, c.square,
+                c.square_at[0], c.square_at[1],
+                square ? (" (--square " + std::to_string(args.square) + ")").c_str() : "");
+  std::printf("\n");
+  // A golden holds for the rasteriser that drew it (softpipe against llvmpipe: 2.8 % of a still's
+  // pixels): where both say what drew them, and it differs, that is said, the likely cause of the
+  // difference.
+  if (!same && !a.drawn_by.empty() && !b.drawn_by.empty() && a.drawn_by != b.drawn_by)
+    std::printf(
+        "note: drawn by different OpenGL: %s by %s, %s by %s; a golden holds for the "
+        "rasteriser that drew it (%s, rattleback compare)\n",
+        args.actual.c_str(), a.drawn_by.c_str(), args.expected.c_str(), b.drawn_by.c_str(),
+        rb::docPage("commands.md").c_str());
+}
+
+}  // namespace
+
 int compareCommand(const CompareArgs& args) {
-  if (args.channel_tolerance < 0 || args.channel_tolerance > 255) {
-    std::cerr << "--tolerance: a channel difference within 0 … 255, not " << args.channel_tolerance
-              << "\n";
-    return kBadInput;
-  }
-  if (!(args.pixel_fraction >= 0 && args.pixel_fraction <= 1)) {
-    std::cerr << "--pixels: a fraction of the pixels within 0 … 1 (0.002 = 0.2 %), not "
-              << args.pixel_fraction << "\n";
-    return kBadInput;
-  }
-  if (args.square < 0) {
-    std::cerr << "--square: a side in pixels, 0 (no square check) or more, not " << args.square
-              << "\n";
-    return kBadInput;
-  }
-  // --diff's place checked (its folder made, as every output's is) before the images are read:
-  // an unwritable one is refused at once, not after the verdict (a CI maintainer's trial:
-  // `--diff diffs/x.png` into a missing folder said "differ" and then exited 2).
+  if (auto ok = checkCompareOptions(args); !ok) return fail(ok);
   tasks::MadeFolders made;  // removed again when no diff is written into it
-  if (!args.diff.empty()) {
-    // The diff written over one of the images compared would destroy it (`compare new.png
-    // golden.png --diff golden.png`: the golden became a magenta diff).
-    for (const auto& [image, role] : {std::pair{&args.actual, "the image compared"},
-                                      std::pair{&args.expected, "the expected image"}}) {
-      std::error_code ec;
-      if (std::filesystem::equivalent(args.diff, *image, ec))
-        return fail(rb::Status::fail("--diff " + args.diff + ": is " + role + " (" + *image +
-                                     "); give the diff a name of its own"));
-    }
-    if (auto ok = checkPlotFile(args.diff, &made, "--diff"); !ok) return fail(ok);
-  }
+  if (auto ok = checkDiffPlace(args, made); !ok) return fail(ok);
   render::Image a, b;
   for (auto [path, image] : {std::pair{&args.actual, &a}, std::pair{&args.expected, &b}}) {
+    // An image that cannot be read is the input at fault, whatever the reason.
     if (auto e = render::readPng(*path, *image); !e) {
-      std::cerr << e.error().text() << "\n";
+      tell(Tone::Error, e.error().text());
       return kBadInput;
     }
   }
@@ -226,46 +262,21 @@ int compareCommand(const CompareArgs& args) {
     return 1;
   }
   // A fraction of the pixels alone lets a small thing changed whole pass (a 40×40 patch is 0.17 %
-  // of a 1280×720 frame, within 0.2 %; a CI maintainer's trial): a square of differing pixels
-  // --square a side differs too. Another CPU's rasteriser moves pixels on edges, in lines one or
-  // two pixels wide, which make no such square.
+  // of a 1280×720 frame, within 0.2 %): a square of differing pixels --square a side differs too.
+  // Another CPU's rasteriser moves pixels on edges, in lines one or two pixels wide, which make no
+  // such square.
   const bool square = args.square > 0 && c.square >= args.square;
   const bool same = c.fraction() <= args.pixel_fraction && !square;
-  if (!args.quiet) {
-    std::printf(
-        "%s: %lld of %lld pixels (%.4f%%) differ by more than %d in a channel "
-        "(allowed %.4f%%); largest channel difference %d",
-        same ? "same" : "differ", c.differing, c.pixels, 100 * c.fraction(), args.channel_tolerance,
-        100 * args.pixel_fraction, c.max_channel_delta);
-    if (c.differing)
-      std::printf("; differing pixels within x %d–%d, y %d–%d", c.box[0], c.box[2], c.box[1],
-                  c.box[3]);
-    if (c.square > 1)
-      std::printf("; largest square of them %dx%d at x %d, y %d%s", c.square, c.square,
-                  c.square_at[0], c.square_at[1],
-                  square ? (" (--square " + std::to_string(args.square) + ")").c_str() : "");
-    std::printf("\n");
-    // A golden holds for the rasteriser that drew it (softpipe against llvmpipe: 2.8 % of a
-    // still's pixels; a CI maintainer's trial): where both say what drew them, and it differs,
-    // that is said, the likely cause of the difference.
-    if (!same && !a.drawn_by.empty() && !b.drawn_by.empty() && a.drawn_by != b.drawn_by)
-      std::printf(
-          "note: drawn by different OpenGL: %s by %s, %s by %s; a golden holds for the "
-          "rasteriser that drew it (%s, rattleback compare)\n",
-          args.actual.c_str(), a.drawn_by.c_str(), args.expected.c_str(), b.drawn_by.c_str(),
-          rb::docPage("commands.md").c_str());
-  }
+  if (!args.quiet) printVerdict(args, a, b, c, same, square);
   if (!same && !args.diff.empty()) {
     const rb::OutputNamedBy naming("--diff");  // the way out an error line suggests
-    if (auto e = render::writePng(args.diff, render::diffImage(a, b, args.channel_tolerance)); !e) {
-      std::cerr << e.error().text() << "\n";
-      return kBadInput;
-    }
+    if (auto e = render::writePng(args.diff, render::diffImage(a, b, args.channel_tolerance)); !e)
+      return fail(e);  // 4 for a fault of the disk, 2 for a place that cannot be written
     if (!args.quiet) std::printf("diff image: %s\n", args.diff.c_str());
   }
-  // The same: a diff left at --diff by an earlier comparison that differed is removed, so that
-  // it does not stand beside this pass (a CI maintainer's trial: a reused workspace published
-  // the stale diff with the passing run).
+  // The same: a diff left at --diff by an earlier comparison that differed is removed, so that it
+  // does not stand beside this pass (a reused workspace would publish the stale diff with the
+  // passing run).
   std::error_code ec;
   if (same && !args.diff.empty() && std::filesystem::is_regular_file(args.diff, ec)) {
     std::filesystem::remove(args.diff, ec);

@@ -1,4 +1,4 @@
-// What writing costs a 10 s run of the default scene at 10 kHz (issue 27: "a 10 s run at 10 kHz
+// What writing costs a 10 s run of the default scene at 10 kHz (the target: "a 10 s run at 10 kHz
 // spends under a quarter of its time writing"), in one process, side by side, alternating:
 //   run       the run sampled at 10 kHz, each sample dropped
 //   as it goes  the same writing its CSV and sidecar as `rattleback simulate` does (rows

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""How fast the report page's 3D player draws in headless Chromium on software WebGL (issue 28:
+"""How fast the report page's 3D player draws in headless Chromium on software WebGL (the target:
 "the player draws at the display's rate ... at 1280×720"). Prints figures; asserts nothing.
 
 Usage: /usr/bin/python3 bench/player_speed.py DIR [DIR…] [--seconds S] [--size WxH] [--rounds N]

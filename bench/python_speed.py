@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""What Python adds to the library (issue 25's targets): the per-call overhead of simulate()
+"""What Python adds to the library (docs/python.md "Speed"): the per-call overhead of simulate()
 over the same C++ run, the cost of the columns per sample, and sweep throughput from Python
 against the command line. Prints figures; asserts nothing.
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Issue 27's targets, each beside its figure, measured side by side in one run on this machine.
+"""The speed targets (docs/speed.md), each beside its figure, measured side by side in one run on this machine.
 
   start-up        `simulate` of the default scene for 0.01 s against `rattleback --version`
                   (whole processes, alternating, median)                        target <= 2x

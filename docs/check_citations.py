@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """Every citation of the docs in the code names a page that exists and, where it names one, a
 section of it: `docs/NAME.md "Heading"` must match a heading of docs/NAME.md, and
-`docs/physics.md PN` a section "PN." of the physics page. Exit 1 naming each that does not.
+`docs/physics.md PN` a section "PN." of the physics page; and no code cites what a reader cannot
+open: a "SPEC" that is not in the repository, or an "issue N" (the CHANGELOG keeps history; a
+comment names the docs section that says why). Exit 1 naming each that does not.
 
 Usage: /usr/bin/python3 docs/check_citations.py
 """
@@ -13,6 +15,8 @@ ROOT = Path(__file__).resolve().parents[1]
 FOLDERS = ["app", "tasks", "media", "sim", "scene", "render", "util", "python", "tests", "bench",
            "scripts", "fuzz"]
 CITATION = re.compile(r'docs/([\w-]+\.md)(?:\s+"([^"]+)"|\s+(P\d+))?')
+# What a reader cannot open: the SPEC that is not in the repository, an issue by its number.
+UNREADABLE = re.compile(r"\bSPEC\b|\b[Ii]ssues? #?\d+")
 
 
 def headings(page: Path) -> set[str]:
@@ -36,6 +40,9 @@ def main() -> int:
             if "node_modules" in path.parts or path.name == "check_citations.py":
                 continue
             for number, line in enumerate(path.read_text(errors="replace").splitlines(), 1):
+                for m in UNREADABLE.finditer(line):
+                    failures.append(f"{path.relative_to(ROOT)}:{number}: cites \"{m.group(0)}\", "
+                                    "which a reader cannot open: cite a docs section")
                 for m in CITATION.finditer(line):
                     cited += 1
                     page = ROOT / "docs" / m.group(1)

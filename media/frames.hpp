@@ -32,7 +32,7 @@ struct RunFraming {
 
 /// The same for a whole run, known before a frame is drawn: where the centre of mass wanders
 /// further than that quarter (a body sliding on a slippery floor), the sphere holds the path of
-/// the body over the run instead (issue 26: a body spun −50 rad/s on friction 0.02 slid 10 cm,
+/// the body over the run instead (a body spun −50 rad/s on friction 0.02 slid 10 cm,
 /// off the frame of the fixed views); with a `frame`, the sphere keeps its size and is centred
 /// on the path. Runs `model` to its end, sampling every 10 ms, or until `cancelled` (when
 /// given) says to stop; `reached` (when given) hears each sample's time.

@@ -113,8 +113,8 @@ render::RenderSettings settingsOf(const VideoPlan& plan, double duration, double
                                   const std::string& scene,
                                   const std::vector<scene::KeyValue>& values,
                                   render::Backend backend) {
-  // The values put in name the variant: a class's bodies made with --set all read "mine: spun
-  // −5 rad/s" (a teacher's trial). The renderer shortens a title too long for the frame.
+  // The values put in name the variant: a class's bodies made with --set all read "mine: spun −5
+  // rad/s". The renderer shortens a title too long for the frame.
   std::string title = std::filesystem::path(scene).stem().string() + ": spun " + describeSpin(spin);
   for (const scene::KeyValue& kv : values)
     title += (&kv == &values.front() ? "; " : ", ") + kv.key + " = " + kv.yaml;

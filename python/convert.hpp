@@ -79,11 +79,11 @@ T take(rb::Result<T> result) {
   return std::move(result).value();
 }
 
-/// Whether this is Python's main thread, the only one signals reach (the GIL held). Elsewhere
-/// (a worker of a ThreadPoolExecutor, a daemon thread) a run never takes the GIL to look for
-/// them: PyErr_CheckSignals would find none there, and a daemon thread that takes the GIL
-/// after the interpreter began to exit is ended by CPython in the middle of our code
-/// (std::terminate: a researcher's trial, exit 134 when a script ended with a run going on).
+/// Whether this is Python's main thread, the only one signals reach (the GIL held). Elsewhere (a
+/// worker of a ThreadPoolExecutor, a daemon thread) a run never takes the GIL to look for them:
+/// PyErr_CheckSignals would find none there, and a daemon thread that takes the GIL after the
+/// interpreter began to exit is ended by CPython in the middle of our code (std::terminate, exit
+/// 134 when a script ended with a run going on).
 inline bool onMainThread() {
   const py::module_ threading = py::module_::import("threading");
   const py::object main = threading.attr("main_thread")().attr("ident");

@@ -365,8 +365,8 @@ void sweepToCsv(const SweepTable& t, const std::string& path) {
   for (const auto& axis : t.sweep.axes) keys.push_back(axis.key);
   for (const tasks::SweepRow& r : t.rows) lines.push_back(tasks::sweepLine(r));
   nlohmann::json sidecar = tasks::sweepSidecar(t.sweep, std::nullopt);
-  // A table kept from Ctrl-C says so, and counts its own rows, not the sweep's (a researcher's
-  // trial: its sidecar claimed all 40,000 for 3,802 rows).
+  // A table kept from Ctrl-C says so, and counts its own rows, not the sweep's (its sidecar claimed
+  // all 40,000 for 3,802 rows).
   if (t.interrupted) {
     sidecar["rows"] = t.rows.size();
     sidecar["interrupted"] = {{"rows_run", t.rows.size()}, {"sweep_rows", t.sweep.rows()}};
@@ -420,7 +420,7 @@ PYBIND11_MODULE(_core, m) {
       .def_readonly("rate", &Run::rate)
       .def("to_csv", [](const Run& r, const std::string& path) {
         // Ctrl-C stops the writing, puts nothing in place and raises KeyboardInterrupt (it
-        // finished, replaced the file there and then raised it: a researcher's trial).
+        // finished, replaced the file there and then raised it).
         const rb::Status written = interruptibleHere([&](const std::function<bool()>& cancelled) {
           const rb::OutputNamedBy naming("to_csv");  // the way out an error line suggests
           // Not over the run's scene, nor as a picture (a student's to_csv("mine.yaml") had
@@ -497,8 +497,7 @@ PYBIND11_MODULE(_core, m) {
       "analyze",
       [](const LoadedScene& loaded, std::optional<double> spin) {
         if (auto ok = tasks::checkAnalysisSpin(spin, "argument spin"); !ok) raise(ok.error());
-        const sim::Model& model = loaded.value.model;
-        return toPython(tasks::analysisJson(model, tasks::analysisSpin(model, spin)));
+        return toPython(tasks::analysisJson(tasks::analyze(loaded.value.model, spin)));
       },
       py::arg("scene"), py::arg("spin") = py::none());
 }

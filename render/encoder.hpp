@@ -1,4 +1,4 @@
-// H.264 in MP4 through libavcodec / libavformat (SPEC "Rendering and video"): RGBA frames
+// H.264 in MP4 through libavcodec / libavformat (docs/commands.md "rattleback render"): RGBA frames
 // converted to yuv420p by render/yuv.hpp (here, or by the caller), BT.709 tagged, moov atom
 // first (+faststart), a fixed thread count for repeatable bytes. Written under a temporary
 // name and renamed into place by finish().

@@ -1,5 +1,5 @@
 // What the renderer is given: the body's points once, and a pose with read-outs per frame.
-// It includes nothing of the simulation (SPEC "Data flow").
+// It includes nothing of the simulation (docs/design.md "Data flow").
 #pragma once
 
 #include <Eigen/Dense>

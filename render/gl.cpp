@@ -177,8 +177,8 @@ std::string openEglDisplay(EGLDisplay& display, std::string& platform) {
   if (display == EGL_NO_DISPLAY || !eglInitialize(display, nullptr, nullptr)) {
     std::string why =
         "EGL cannot initialise the surfaceless platform (error 0x" + eglHex(eglGetError()) + ")";
-    // Mesa takes its driver from GALLIUM_DRIVER: one it cannot start here (zink without
-    // Vulkan) is the likely cause (a CI maintainer's trial: the message did not name it).
+    // Mesa takes its driver from GALLIUM_DRIVER: one it cannot start here (zink without Vulkan) is
+    // the likely cause (the message did not name it).
     if (const char* driver = std::getenv("GALLIUM_DRIVER"); driver && *driver)
       why += std::string(" with GALLIUM_DRIVER=") + driver +
              ": unset GALLIUM_DRIVER or set it to llvmpipe";

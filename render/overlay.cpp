@@ -30,8 +30,8 @@ std::string Overlay::load(int pixels) {
   if (FT_Init_FreeType(&face_->library)) return "cannot start FreeType";
   const std::string list = assetsDir() + "/fonts.txt";
   std::ifstream in(list);
-  // No list at all: the assets folder is not where it was looked for (a RATTLEBACK_ASSETS set
-  // wrong said "install fonts-dejavu-core", which would not help; a CI maintainer's trial).
+  // No list at all: the assets folder is not where it was looked for (a RATTLEBACK_ASSETS set wrong
+  // said "install fonts-dejavu-core", which would not help).
   if (!in)
     return list + ": cannot read the font list (set RATTLEBACK_ASSETS to the assets folder, " +
            "share/rattleback where rattleback is installed, or unset it)";
@@ -200,7 +200,7 @@ void drawSpinInset(Image& image, Overlay& font, std::span<const std::array<float
   const float left = x0 + pad, right = x0 + w - pad;
   // The curve's band starts below the title's descenders (the title's line ends at
   // y0 + pad + lineHeight) with room for the curve's 2-pixel width and its antialiased edge,
-  // so the curve never runs through the title (issue 11; found by the helper on its branch).
+  // so the curve never runs through the title.
   const float top = y0 + pad + font.lineHeight() + 0.5f * pad + 2, bottom = y0 + h - pad - 2;
   const float mid = 0.5f * (top + bottom);
   drawLine(image, left, mid, right, mid, 1, {90, 90, 90, 255});  // n = 0

@@ -101,9 +101,9 @@ std::string Renderer::init() {
   // of that length: the floor's squares and fade, and the follow camera's distance).
   scale_half_ = settings_.frame > 0 ? 0.5f * settings_.frame : half_extent_.maxCoeff();
   follow_radius_ = settings_.frame > 0 ? 0.5f * settings_.frame : radius_;
-  // The floor's scale, made once: the square follows the body's size, so without it a longer
-  // body drawn to fill the frame looked no longer (a teacher's trial: bodies of 20, 24.5 and
-  // 40 cm were all 262 pixels long, on squares of 1, 2 and 2 cm).
+  // The floor's scale, made once: the square follows the body's size, so without it a longer body
+  // drawn to fill the frame looked no longer (bodies of 20, 24.5 and 40 cm were all 262 pixels
+  // long, on squares of 1, 2 and 2 cm).
   const bool fogged = settings_.view == View::Front || settings_.view == View::Side;
   scale_label_ = "floor squares " + lengthText(floorSquare(scaleExtent(), fogged));
   middle_height_ = 0.5f * (high.z() + low.z());

@@ -72,10 +72,9 @@ class MapReader {
     }
   }
 
-  // What an unknown key more likely is (a teacher's trial): a number or nothing where a key
-  // stands is a comma inside a value ({dt: 1,0e-4} is dt: 1 and a key 0e-4; [-5,,] an empty
-  // entry), and a key of another map given here is named with its place (spin: at the top
-  // level is initial.spin).
+  // What an unknown key more likely is: a number or nothing where a key stands is a comma inside a
+  // value ({dt: 1,0e-4} is dt: 1 and a key 0e-4; [-5,,] an empty entry), and a key of another map
+  // given here is named with its place (spin: at the top level is initial.spin).
   std::string misplaced(const std::string& key, const YAML::Node& key_node) const {
     double number = 0;
     if (key_node.IsNull() || key == "null" || key == "~")
@@ -133,8 +132,7 @@ class MapReader {
                     ", not " +
                     (node->IsSequence() ? "a list of " + std::to_string(node->size())
                                         : described(*node)) +
-                    // [0.5 0.5] is a list of one word: the commas are missing (a teacher's
-                    // trial).
+                    // [0.5 0.5] is a list of one word: the commas are missing.
                     (node->IsSequence() && node->size() == 1 && (*node)[0].IsScalar() &&
                              (*node)[0].Scalar().find(' ') != std::string::npos
                          ? " ('" + (*node)[0].Scalar() + "': separate the numbers with commas)"
@@ -194,8 +192,8 @@ class MapReader {
     return "empty (the key has no value)";
   }
 
-  // A number written with a unit ("59 g", or "5rad/s" with no space: a teacher's trial): the
-  // number alone, in the key's unit as the table gives it (body.mass: kg; a teacher's trial).
+  // A number written with a unit ("59 g", or "5rad/s" with no space): the number alone, in the
+  // key's unit as the table gives it (body.mass: kg).
   std::string unitHint(const YAML::Node& node, const std::string& key) const {
     if (!node.IsScalar()) return "";
     const std::string text = node.Scalar();
@@ -217,7 +215,7 @@ class MapReader {
            ")";
   }
 
-  // units.length given as a unit's name ("cm"): the metres it stands for (a student's trial).
+  // units.length given as a unit's name ("cm"): the metres it stands for.
   std::string lengthUnitHint(const YAML::Node& node, const std::string& key) const {
     if (join(path_, key) != "units.length" || !node.IsScalar()) return "";
     static const std::map<std::string, std::string> metres = {
@@ -228,7 +226,7 @@ class MapReader {
                : " (the metres in one length unit: " + known->second + " for " + known->first + ")";
   }
 
-  // A decimal comma (0,059): the number with a point (a teacher's trial).
+  // A decimal comma (0,059): the number with a point.
   static std::string commaHint(const YAML::Node& node) {
     if (!node.IsScalar()) return "";
     std::string text = node.Scalar();
@@ -406,8 +404,8 @@ rb::Error malformedYaml(const std::string& name, const std::string& text,
     }
     start = end + 1;
   }
-  // yaml-cpp's words for a key off its column or a line without its colon say neither (a
-  // teacher's trial: "end of map not found"): the usual causes, where the parser noticed.
+  // yaml-cpp's words for a key off its column or a line without its colon say neither ("end of map
+  // not found"): the usual causes, where the parser noticed.
   if (message == e.msg && (e.msg.find("end of map not found") != std::string::npos ||
                            e.msg.find("illegal map value") != std::string::npos))
     message +=
@@ -430,8 +428,8 @@ rb::Error malformed(const std::string& name, const YAML::Exception& e) {
 namespace {
 
 // Every map's keys are checked before any key is found missing: a misspelt key inside body was
-// named only after contact, missing, had been added ("x.yaml:1: contact is required" for
-// `body: {mas: 1}`: a student's trial).
+// named only after contact, missing, had been added ("x.yaml:1: contact is required" for `body:
+// {mas: 1}`).
 void checkKnownKeys(const YAML::Node& node, const std::string& path, int line,
                     const std::map<std::string, int>& lines) {
   Loaded scratch;

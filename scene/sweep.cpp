@@ -19,9 +19,20 @@ namespace {
 
 constexpr std::int64_t kMaxRows = 100'000'000;
 
+// A sweep that cannot be used; `where` names the file, line and key when the thrower knows
+// them better than the part being read (parseSweep's `place`).
 struct SweepFailure {
   std::string message;
+  std::optional<rb::Error::Where> where = std::nullopt;
 };
+
+// An error of a sweep file at `where`: as a scene's names its file, line and key (Python raises
+// SceneError for it).
+rb::Error sweepError(std::string message, rb::Error::Where where) {
+  rb::Error e{"", std::move(message)};
+  e.where = std::move(where);
+  return e;
+}
 
 std::string flowText(const YAML::Node& node) {
   if (node.IsScalar()) return node.Scalar();
@@ -41,8 +52,8 @@ std::string rangeValue(double v) {
 
 double number(const YAML::Node& node, const std::string& where, const std::string& what) {
   double v = 0;
-  // Missing is said as missing ({from: -5, to: 5} said "count must be a number"; a teacher's
-  // trial), with what the range needs.
+  // Missing is said as missing (rather than "count must be a number" for {from: -5, to: 5}),
+  // with what the range needs.
   if (!node.IsDefined())
     throw SweepFailure{where + " " + what +
                        " is required: a range is {from: A, to: B, count: N} (count: how many "
@@ -188,7 +199,7 @@ rb::Result<SweepScenes> SweepScenes::open(const Sweep& sweep) {
     }
     replaceStepSetting(impl->base, impl->places);
   } catch (const YAML::Exception& e) {
-    return rb::Error{"", sweep.base + ": " + e.msg};
+    return sweepError(sweep.base + ": " + e.msg, {sweep.base, 0, ""});
   }
   return SweepScenes(std::move(impl));
 }
@@ -213,6 +224,12 @@ rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, b
     return lines ? path + ":" + std::to_string(lineOf(node)) : path;
   };
   const std::string top = lines ? path + ":1" : path;
+  // The part being read, which an error names unless it knows better: the file, the line and
+  // the key (the sweep's own, base, vary or duration, or a varied scene key).
+  rb::Error::Where place{path, lines ? 1 : 0, ""};
+  auto reading = [&](const YAML::Node& node, const std::string& key) {
+    place = {path, lines ? lineOf(node) : 0, key};
+  };
   try {
     if (!root.IsMap())
       throw SweepFailure{top + ": a sweep is a map with the keys base, vary and duration"};
@@ -222,6 +239,7 @@ rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, b
     bool has_base = false, has_vary = false, has_duration = false;
     for (const auto& entry : root) {
       const std::string key = entry.first.as<std::string>();
+      reading(entry.first, key);
       if (key == "base" && !given)
         base_key = entry.first, base_node = entry.second, has_base = true;
       else if (key == "vary")
@@ -232,16 +250,19 @@ rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, b
         throw SweepFailure{at(entry.first) + ": " + key + " is not a key of a sweep (known: " +
                            (given ? "vary, duration" : "base, vary, duration") + ")"};
     }
+    place = {path, lines ? 1 : 0, ""};
     if (given) {
       sweep.base = sweep.base_as_written = given->name;
       sweep.base_text = given->yaml;
       sweep.base_values = given->values;
       auto loaded_base = loadWithValues(given->yaml, given->name, given->values, "with_values");
-      if (!loaded_base) throw SweepFailure{loaded_base.error().text()};
+      if (!loaded_base) throw SweepFailure{loaded_base.error().text(), loaded_base.error().where};
       sweep.length_unit = loaded_base->spec.units.length;
     } else {
       if (!has_base)
-        throw SweepFailure{top + ": base is required: the scene file the runs start from"};
+        throw SweepFailure{top + ": base is required: the scene file the runs start from",
+                           rb::Error::Where{path, lines ? 1 : 0, "base"}};
+      reading(base_key, "base");
       if (!base_node.IsScalar() || base_node.Scalar().empty())
         throw SweepFailure{at(base_key) + ": base must be the path of a scene file"};
       sweep.base_as_written = base_node.Scalar();
@@ -262,10 +283,15 @@ rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, b
       sweep.length_unit = loaded_base->spec.units.length;
     }
     if (has_duration) {
+      reading(duration_key, "duration");
       const double d = number(duration, at(duration_key) + ":", "duration");
       if (!(d > 0)) throw SweepFailure{at(duration_key) + ": duration must be above 0 s"};
       sweep.duration = d;
     }
+    if (has_vary)
+      reading(vary_key, "vary");
+    else
+      place = {path, lines ? 1 : 0, "vary"};
     if (!has_vary || !vary.IsMap() || vary.size() == 0)
       throw SweepFailure{(has_vary ? at(vary_key) : top) +
                          ": vary must map scene keys to their values, e.g. initial.spin: [-5, 5]"};
@@ -280,6 +306,7 @@ rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, b
       SweepAxis axis;
       axis.key = entry.first.as<std::string>();
       axis.place = at(entry.first);
+      reading(entry.first, axis.key);
       const std::string where = axis.place + ": " + axis.key;
       const auto key_path = splitKey(axis.key);
       if (!key_path)
@@ -295,7 +322,7 @@ rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, b
                   axis.key == "contact.model";
       const YAML::Node spec = entry.second;
       // The base scene's value, where it is a number: a word swept in its place ("5 rad/s", a
-      // unit written in; a teacher's trial) is a slip too.
+      // unit written in) is a slip too.
       YAML::Node in_base = find(base_tree, *key_path);
       if (key_path->index && in_base.IsSequence() && in_base.size() > *key_path->index)
         in_base = in_base[*key_path->index];
@@ -305,8 +332,8 @@ rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, b
       if (spec.IsSequence()) {
         if (spec.size() == 0) throw SweepFailure{where + " has no values"};
         for (const auto& value : spec) {
-          // A quoted number is always a slip (a scene refuses it, and a refused row showed as
-          // "no reversal" on the heatmap; a teacher's trial): said before anything runs.
+          // A quoted number is always a slip (a scene refuses it, and a refused row shows as
+          // "no reversal" on the heatmap): said before anything runs.
           double number = 0;
           if (value.IsScalar() && value.Tag() == "!" &&
               YAML::convert<double>::decode(value, number))
@@ -348,7 +375,7 @@ rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, b
           loaded.error().message.rfind(axis.place + ":", 0) == 0)
         throw SweepFailure{loaded.error().message};
       // A list in the base swept with single numbers refuses every row ("must be a list of
-      // two numbers, not '0.5'"; a researcher's trial): said once, with the two ways to sweep it.
+      // two numbers, not '0.5'"): said once, with the two ways to sweep it.
       const YAML::Node listed = key_path->index ? YAML::Node() : find(base_tree, *key_path);
       if (!loaded && listed.IsSequence() && YAML::Load(axis.values.front()).IsScalar())
         throw SweepFailure{where + " is a list (the base scene's is " + flowText(listed) +
@@ -361,10 +388,11 @@ rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, b
       sweep.axes.push_back(std::move(axis));
     }
   } catch (const SweepFailure& f) {
-    return rb::Error{"", f.message};
+    return sweepError(f.message, f.where.value_or(place));
   } catch (const YAML::Exception& e) {
     const int line = e.mark.is_null() ? 1 : e.mark.line + 1;
-    return rb::Error{"", (lines ? path + ":" + std::to_string(line) : path) + ": " + e.msg};
+    return sweepError((lines ? path + ":" + std::to_string(line) : path) + ": " + e.msg,
+                      {path, lines ? line : 0, place.key});
   }
   return sweep;
 }
@@ -373,13 +401,15 @@ rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, b
 
 rb::Result<Sweep> loadSweep(const std::string& path) {
   std::error_code ec;
+  const rb::Error::Where file{path, 0, ""};
   if (std::filesystem::is_directory(path, ec))
-    return rb::Error{"", path +
-                             ": is a folder, not a sweep file (give a .yaml file, e.g. "
-                             "sweeps/spin-drag.yaml)"};
-  if (!std::filesystem::exists(path, ec)) return rb::Error{"", path + ": no such sweep file"};
+    return sweepError(path +
+                          ": is a folder, not a sweep file (give a .yaml file, e.g. "
+                          "sweeps/spin-drag.yaml)",
+                      file);
+  if (!std::filesystem::exists(path, ec)) return sweepError(path + ": no such sweep file", file);
   std::ifstream in(path, std::ios::binary);
-  if (!in) return rb::Error{"", path + ": cannot open the sweep file"};
+  if (!in) return sweepError(path + ": cannot open the sweep file", file);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   return parseSweep(text, path, true, nullptr);
 }

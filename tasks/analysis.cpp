@@ -7,6 +7,7 @@
 #include "sim/compile.hpp"
 #include "sim/continuum.hpp"
 #include "sim/stability.hpp"
+#include "sim/switching.hpp"
 #include "util/format.hpp"
 
 namespace tasks {
@@ -50,8 +51,8 @@ Eigen::Vector3d bodySize(const sim::Body& body) {
 }
 
 bool frameFits(double frame_m, const sim::Body& body) {
-  // (With rounding's slack: a tenth of the default body, 2 cm of 20, is 0.02 m, and 0.1 × 0.2
-  // is 0.020000000000000004: `--frame 2` was refused as below a tenth, a reviewer's trial.)
+  // (With rounding's slack: a tenth of the default body, 2 cm of 20, is 0.02 m, and 0.1 × 0.2 is
+  // 0.020000000000000004: `--frame 2` was refused as below a tenth.)
   const double length = bodySize(body).x(), slack = 1 + 1e-12;
   return frame_m <= 50 * length * slack && frame_m * slack >= 0.1 * length;
 }
@@ -92,8 +93,8 @@ std::optional<std::string> implausibleMass(const sim::Body& body, double length_
   const double least = body.mass / box;  // kg/m³: the body fills at most its box
   char text[400];
   if (least > 23000) {
-    // With a unit of its own the lengths may be the slip: mm written for cm (a researcher's
-    // trial: units.length 0.001 for a body measured in cm was blamed on the mass alone).
+    // With a unit of its own the lengths may be the slip: mm written for cm (units.length 0.001 for
+    // a body measured in cm was blamed on the mass alone).
     const std::string unit = length_unit < 0.01 ? ", or the lengths are larger than units.length " +
                                                       rb::show(length_unit) +
                                                       " m makes them (0.01 reads them in cm)"
@@ -111,10 +112,9 @@ std::optional<std::string> implausibleMass(const sim::Body& body, double length_
                   body.mass, sizeText(size, length_unit).c_str());
     return text;
   }
-  // Over its own volume, lighter than any foam: lengths ten times too large (mm numbers in a
-  // file of cm made a 2 m body of 59 g, 1.2 kg/m³, with nothing said: a teacher's trial).
-  // (Filling at most its box, it is at least `least` dense: the volume is worked out only for a
-  // body light for its box.)
+  // Over its own volume, lighter than any foam: lengths ten times too large (mm numbers in a file
+  // of cm made a 2 m body of 59 g, 1.2 kg/m³, with nothing said). (Filling at most its box, it is
+  // at least `least` dense: the volume is worked out only for a body light for its box.)
   if (const double density = least < 5 ? body.mass / bodyVolume(body) : least; density < 5) {
     std::snprintf(text, sizeof text,
                   "body.mass %g kg in a body of %s is %.2g kg/m³, lighter than any foam "
@@ -156,72 +156,139 @@ rb::Status checkAnalysisSpin(const std::optional<double>& spin, const std::strin
   return {};
 }
 
-nlohmann::json analysisJson(const sim::Model& model, double spin) {
+namespace {
+
+// The growth rates at ±1, 2, 5, 10 rad/s and at `spin`, ascending; at `spin` they are
+// `at_spin`'s.
+std::vector<GrowthAt> growthTable(const sim::Model& model, double spin,
+                                  const sim::Linearisation& at_spin) {
+  std::vector<double> spins = {-10, -5, -2, -1, 1, 2, 5, 10};
+  if (std::find(spins.begin(), spins.end(), spin) == spins.end()) spins.push_back(spin);
+  std::sort(spins.begin(), spins.end());
+  std::vector<GrowthAt> table;
+  for (double n : spins) {
+    const sim::Linearisation l = n == spin ? at_spin : sim::linearise(model, n);
+    table.push_back({n, l.roll_growth, l.pitch_growth});
+  }
+  return table;
+}
+
+// The body's mass properties, size and the checks on them.
+void analyzeBody(const sim::Model& model, Analysis& a) {
   const sim::Body& body = *model.body;
   const sim::MassProperties& m = body.mass_properties;
-  const sim::Rest rest = sim::restOf(model);
-  const sim::Linearisation at_rest = sim::linearise(model, 0);
-  const sim::Linearisation spinning = sim::linearise(model, spin);
-  const sim::FirstOrder first = sim::firstOrderGrowth(model);
-  const sim::ContactStability stability = sim::contactStability(model);
-  const double size = body.surface.footprintHalf().maxCoeff();
-  const sim::GridCensus census = sim::censusOf(body);
-  const auto top = static_cast<std::size_t>(census.top);
-  const auto bottom = static_cast<std::size_t>(census.bottom);
+  a.length_unit = model.length_unit;
+  a.paraboloid = body.surface.kind == sim::Surface::Kind::Paraboloid;
+  a.census = sim::censusOf(body);
+  a.mass_source = massSourceText(body);
+  a.dents_cut_share = dentsCutShare(body);
+  a.mass = m.mass;
+  a.size = bodySize(body);
+  a.implausible_mass = implausibleMass(body, model.length_unit);
+  a.com = clean(m.com, body.surface.footprintHalf().maxCoeff());
+  a.inertia = m.inertia;
+  a.principal = m.principal;
+  a.axes = m.axes;
+  a.misalignment_deg = m.misalignment_deg;
+}
+
+// The rest, the linearised theory at `a.spin` and the forecast first reversal.
+void analyzeTheory(const sim::Model& model, Analysis& a) {
+  a.rest = sim::restOf(model);
+  a.modes = restModes(sim::linearise(model, 0));
+  a.first_order = sim::firstOrderGrowth(model);
+  a.at_spin = sim::linearise(model, a.spin);
+  a.growth = growthTable(model, a.spin, a.at_spin);
+  a.preferred = sim::preferredDirection(model, a.spin);
+  if (a.rest.stable && a.preferred == sim::Direction::None)
+    a.preferred_faster = sim::preferredDirection(model, std::max(5.0, std::abs(a.spin)));
+  a.forecast = sim::forecastFirstReversal(model, a.spin, model.duration);
+  a.duration = model.duration;
+}
+
+}  // namespace
+
+Analysis analyze(const sim::Model& model, const std::optional<double>& spin) {
+  Analysis a;
+  a.spin = analysisSpin(model, spin);
+  a.spin_given = spin.has_value();
+  a.unspun = !a.spin_given && model.initial.spin == 0;
+  analyzeBody(model, a);
+  a.contact_model = model.contact.model;
+  a.integrator = model.integrator;
+  a.stability = sim::contactStability(model);
+  if (model.contact.model == sim::ContactModel::Auto && !sim::isAdaptive(model.integrator))
+    a.auto_smooth_step = std::min(sim::smoothStep(model), model.dt);
+  analyzeTheory(model, a);
+  return a;
+}
+
+namespace {
+
+nlohmann::json bodyJson(const Analysis& a) {
   nlohmann::json j;
-  const bool grid = body.surface.kind == sim::Surface::Kind::Paraboloid;
-  j["points"] = {{"total", grid ? nlohmann::json(census.points) : nlohmann::json(nullptr)},
+  const auto top = static_cast<std::size_t>(a.census.top);
+  const auto bottom = static_cast<std::size_t>(a.census.bottom);
+  j["points"] = {{"total", a.paraboloid ? nlohmann::json(a.census.points) : nlohmann::json()},
                  {"top", top},
                  {"bottom", bottom},
                  {"surface", top + bottom}};
-  j["mass_properties"] = massSourceText(body);
-  j["length_unit_m"] = model.length_unit;
-  j["mass"] = m.mass;
-  j["size_m"] = vectorJson(bodySize(body));  // length, width, height
-  const std::optional<std::string> implausible = implausibleMass(body, model.length_unit);
-  j["implausible_mass"] = implausible ? nlohmann::json(*implausible) : nlohmann::json(nullptr);
-  j["com"] = vectorJson(clean(m.com, size));
-  j["inertia"] = matrixJson(m.inertia);
-  j["principal_moments"] = vectorJson(m.principal);
-  j["principal_axes"] = matrixJson(m.axes.transpose());
-  j["misalignment_deg"] = m.misalignment_deg;
-  const std::optional<double> cut = dentsCutShare(body);
-  j["dents_cut_share"] = cut ? nlohmann::json(*cut) : nlohmann::json(nullptr);
-  j["contact"] = {{"omega_rad_s", stability.omega},
-                  {"damping_ratio", stability.zeta},
-                  {"largest_stable_dt_s", stability.run_step},  // inf → null
-                  {"largest_stable_dt_at_rest_s", stability.largest_step}};
-  j["h"] = rest.h;
-  j["radii_of_curvature"] = {rest.radii(0), rest.radii(1)};
-  j["rest_stable"] = rest.stable;
+  j["mass_properties"] = a.mass_source;
+  j["length_unit_m"] = a.length_unit;
+  j["mass"] = a.mass;
+  j["size_m"] = vectorJson(a.size);  // length, width, height
+  j["implausible_mass"] =
+      a.implausible_mass ? nlohmann::json(*a.implausible_mass) : nlohmann::json(nullptr);
+  j["com"] = vectorJson(a.com);
+  j["inertia"] = matrixJson(a.inertia);
+  j["principal_moments"] = vectorJson(a.principal);
+  j["principal_axes"] = matrixJson(a.axes.transpose());
+  j["misalignment_deg"] = a.misalignment_deg;
+  j["dents_cut_share"] =
+      a.dents_cut_share ? nlohmann::json(*a.dents_cut_share) : nlohmann::json(nullptr);
+  j["contact"] = {{"omega_rad_s", a.stability.omega},
+                  {"damping_ratio", a.stability.zeta},
+                  {"largest_stable_dt_s", a.stability.run_step},  // inf → null
+                  {"largest_stable_dt_at_rest_s", a.stability.largest_step}};
+  return j;
+}
+
+nlohmann::json forecastJson(const Analysis& a) {
+  const sim::ReversalForecast& forecast = a.forecast;
+  return {{"theory", "averaged small-oscillation (Garcia & Hubbard 1988; docs/physics.md P8.5)"},
+          {"applies", forecast.applies},
+          {"range", orNull(forecast.applies, std::string(rb::nameOf(forecast.range)))},
+          {"time_s", forecast.time ? nlohmann::json(*forecast.time) : nlohmann::json(nullptr)},
+          {"within_s", a.duration},
+          {"spin", forecast.modes.spin},
+          {"spin_parameter", forecast.spin_parameter},
+          {"energy_ratio", orNull(forecast.applies, forecast.energy_ratio)},
+          {"mode_energy_j",
+           orNull(forecast.applies, nlohmann::json{{"roll", forecast.modes.roll.energy},
+                                                   {"pitch", forecast.modes.pitch.energy}})}};
+}
+
+}  // namespace
+
+nlohmann::json analysisJson(const Analysis& a) {
+  nlohmann::json j = bodyJson(a);
+  j["h"] = a.rest.h;
+  j["radii_of_curvature"] = {a.rest.radii(0), a.rest.radii(1)};
+  j["rest_stable"] = a.rest.stable;
   // A mode that grows at rest does not rock: no frequency, and how fast it grows.
-  const RestModes modes = restModes(at_rest);
   auto hzOrNull = [](const RestMode& m) { return m.hz ? nlohmann::json(*m.hz) : nlohmann::json(); };
-  j["frequencies_hz"] = {{"roll", hzOrNull(modes.roll)}, {"pitch", hzOrNull(modes.pitch)}};
-  j["growth_rates_at_rest"] = {{"roll", modes.roll.growth}, {"pitch", modes.pitch.growth}};
-  j["spin"] = spin;
-  j["growth_rates"] = {{"roll", spinning.roll_growth}, {"pitch", spinning.pitch_growth}};
-  j["first_order_growth_per_spin"] = {{"roll", first.roll}, {"pitch", first.pitch}};
+  j["frequencies_hz"] = {{"roll", hzOrNull(a.modes.roll)}, {"pitch", hzOrNull(a.modes.pitch)}};
+  j["growth_rates_at_rest"] = {{"roll", a.modes.roll.growth}, {"pitch", a.modes.pitch.growth}};
+  j["spin"] = a.spin;
+  j["growth_rates"] = {{"roll", a.at_spin.roll_growth}, {"pitch", a.at_spin.pitch_growth}};
+  j["first_order_growth_per_spin"] = {{"roll", a.first_order.roll}, {"pitch", a.first_order.pitch}};
   nlohmann::json eigenvalues = nlohmann::json::array();
-  for (const auto& lambda : spinning.eigenvalues)
+  for (const auto& lambda : a.at_spin.eigenvalues)
     eigenvalues.push_back({lambda.real(), lambda.imag()});
   j["eigenvalues"] = eigenvalues;
   // A body that cannot stand has no rocking about upright for a spin direction to favour.
-  j["preferred"] =
-      orNull(rest.stable, std::string(rb::nameOf(sim::preferredDirection(model, spin))));
-  const sim::ReversalForecast forecast = sim::forecastFirstReversal(model, spin, model.duration);
-  j["predicted_first_reversal"] = {
-      {"theory", "averaged small-oscillation (Garcia & Hubbard 1988; docs/physics.md P8.5)"},
-      {"applies", forecast.applies},
-      {"range", orNull(forecast.applies, std::string(rb::nameOf(forecast.range)))},
-      {"time_s", forecast.time ? nlohmann::json(*forecast.time) : nlohmann::json(nullptr)},
-      {"within_s", model.duration},
-      {"spin", forecast.modes.spin},
-      {"spin_parameter", forecast.spin_parameter},
-      {"energy_ratio", orNull(forecast.applies, forecast.energy_ratio)},
-      {"mode_energy_j",
-       orNull(forecast.applies, nlohmann::json{{"roll", forecast.modes.roll.energy},
-                                               {"pitch", forecast.modes.pitch.energy}})}};
+  j["preferred"] = orNull(a.rest.stable, std::string(rb::nameOf(a.preferred)));
+  j["predicted_first_reversal"] = forecastJson(a);
   return j;
 }
 

@@ -10,6 +10,7 @@
 #include "sim/analysis.hpp"
 #include "sim/body.hpp"
 #include "sim/model.hpp"
+#include "sim/stability.hpp"
 #include "util/result.hpp"
 
 namespace tasks {
@@ -66,7 +67,59 @@ RestModes restModes(const sim::Linearisation& at_rest);
 /// largest error measured there, rounded out (docs/physics.md P8.5's table; a test reads it).
 inline constexpr const char* kBeyondRangeError = "between 11 % early and 10 % late";
 
-/// The analysis at `spin` rad/s.
-nlohmann::json analysisJson(const sim::Model& model, double spin);
+/// The linearised rolling model's growth rates at one spin.
+struct GrowthAt {
+  double spin = 0;             ///< n, rad/s
+  double roll = 0, pitch = 0;  ///< largest real part in each mode, 1/s
+};
+
+/// What `analyze` finds about a scene, worked out once: the text (app/analyze.cpp), the JSON
+/// (analysisJson) and Python's analyze() only format it. Lengths in m unless said.
+struct Analysis {
+  // The body.
+  double length_unit = 1;                 ///< m per file unit (units.length)
+  bool paraboloid = false;                ///< points on a grid; else an ellipsoid's (scene's)
+  sim::GridCensus census;                 ///< the grid's points (total for a paraboloid only)
+  std::string mass_source;                ///< massSourceText
+  std::optional<double> dents_cut_share;  ///< dentsCutShare
+  double mass = 0;                        ///< kg
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();       ///< bodySize: length, width, height
+  std::optional<std::string> implausible_mass;          ///< implausibleMass
+  Eigen::Vector3d com = Eigen::Vector3d::Zero();        ///< shape's frame, rounding's zeros as 0
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();    ///< about the CM, geometric axes, kg m²
+  Eigen::Vector3d principal = Eigen::Vector3d::Zero();  ///< principal moments, kg m²
+  Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();   ///< principal axes as columns
+  double misalignment_deg = 0;  ///< least-inertia axis from the bottom's long axis, ccw
+  // The contact.
+  sim::ContactModel contact_model = sim::ContactModel::Rolling;
+  sim::Integrator integrator = sim::Integrator::Symplectic;
+  sim::ContactStability stability;
+  double auto_smooth_step = 0;  ///< s: auto's smooth steps within each fixed step, else 0
+  // Rest and the theory.
+  sim::Rest rest;
+  RestModes modes;          ///< at rest (spin 0)
+  double spin = 0;          ///< rad/s: the spin the theory is at (analysisSpin)
+  bool spin_given = false;  ///< given by the caller rather than the scene's
+  bool unspun = false;      ///< not given and the scene is not spun: at 5 rad/s
+  sim::FirstOrder first_order;
+  std::vector<GrowthAt> growth;  ///< at ±1, 2, 5, 10 rad/s and `spin`, ascending
+  sim::Linearisation at_spin;    ///< linearised at `spin`
+  sim::Direction preferred = sim::Direction::None;  ///< at |spin|
+  /// Where no direction is preferred at |spin| by a body that stands: the one preferred at
+  /// max(5, |spin|) rad/s (a slow spin may see the rocking die out both ways).
+  std::optional<sim::Direction> preferred_faster;
+  sim::ReversalForecast forecast;  ///< of the first reversal spun `spin`, within `duration`
+  double duration = 0;             ///< s: how far the forecast looks
+};
+
+/// The analysis of `model` at `spin` rad/s when given, else as analysisSpin chooses.
+Analysis analyze(const sim::Model& model, const std::optional<double>& spin);
+
+/// The analysis as one JSON value (docs/commands.md "rattleback analyze").
+nlohmann::json analysisJson(const Analysis& analysis);
+/// The analysis of `model` at `spin` rad/s as JSON.
+inline nlohmann::json analysisJson(const sim::Model& model, double spin) {
+  return analysisJson(analyze(model, spin));
+}
 
 }  // namespace tasks

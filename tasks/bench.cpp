@@ -26,8 +26,8 @@ constexpr double kTolerances[] = {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10};
 // The points model visits every bottom point each step; past this many it is left out unless
 // asked for (the default body's 0.025 cm grid has 121076).
 constexpr std::size_t kMaxBenchPoints = 10000;
-// A penalty model benched on a scene that has no floor constants gets SPEC's stiffness and a
-// damping ratio ζ = c / (2 sqrt(kM)) of 0.06 (the default body's c = 4 N s/m).
+// A penalty model benched on a scene that has no floor constants gets the default scene's stiffness
+// and a damping ratio ζ = c / (2 sqrt(kM)) of 0.06 (the default body's c = 4 N s/m).
 constexpr double kDefaultStiffness = 2.0e4;
 constexpr double kDefaultZeta = 0.06;
 

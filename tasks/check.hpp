@@ -1,6 +1,7 @@
-// `simulate --check` (issue 27): the error of the user's own run, estimated by running the same
-// scene again at a tighter setting, half the step (or a hundredth of the tolerance), and
-// comparing the two where it matters: each reversal time and the spin n(t) at the samples.
+// `simulate --check` (docs/commands.md "The error of your own run: --check"): the error of the
+// user's own run, estimated by running the same scene again at a tighter setting, half the step (or
+// a hundredth of the tolerance), and comparing the two where it matters: each reversal time and the
+// spin n(t) at the samples.
 #pragma once
 
 #include <functional>

@@ -21,10 +21,10 @@ nlohmann::json runJson(const sim::RunSummary& run);
 
 /// What a run's reader should be told beside its numbers: `code` names it for programs
 /// ("cannot_stand", "implausible_mass", "dents_cut_nothing", "upright_start",
-/// "sign_changed_uncounted", "energy_error", "floor_pulled"),
-/// `text` says it for people. simulate's summary prints them, the sidecar's result lists them
-/// ("warnings"), and the report page shows them beside the run (a teacher's trial: the page
-/// showed "no reversal in 5 s" for a run whose step was too large, which only the terminal said).
+/// "sign_changed_uncounted", "energy_error", "floor_pulled"), `text` says it for people. simulate's
+/// summary prints them, the sidecar's result lists them ("warnings"), and the report page shows
+/// them beside the run (the page showed "no reversal in 5 s" for a run whose step was too large,
+/// which only the terminal said).
 struct RunWarning {
   std::string code;
   std::string text;

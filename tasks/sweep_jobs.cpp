@@ -184,8 +184,8 @@ rb::Result<std::string> jobScript(const scene::Sweep& sweep, const JobRequest& r
                              std::to_string(sweep.rows())};
   const std::string sweep_file = absolute(sweep.file);
   const std::string out = absolute(r.output);
-  // The merge that plots, with this sweep's names (a template had been given: a reviewer's
-  // trial); the shards' glob is the shell's.
+  // The merge that plots, with this sweep's names (a template had been given); the shards' glob is
+  // the shell's.
   if (r.kind == JobScript::Parallel && !r.plot.empty()) {
     const std::string pattern = shardPath(out, "*", r.shards);
     const std::size_t star = pattern.rfind('*');
@@ -244,9 +244,9 @@ rb::Result<Journal> Journal::open(const std::string& output, const std::string& 
                                   const std::map<std::int64_t, std::string>& kept,
                                   const std::string& fingerprint) {
   const std::string path = pathOf(output);
-  // Locked while the sweep runs, before anything is truncated: a second sweep on the same table
-  // is told so, where it had said the first's journal was "an interrupted run" (a CI
-  // engineer's trial). The lock goes with the descriptor, when the process ends whatever way.
+  // Locked while the sweep runs, before anything is truncated: a second sweep on the same table is
+  // told so, where it had said the first's journal was "an interrupted run". The lock goes with the
+  // descriptor, when the process ends whatever way.
   const int lock = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
   if (lock >= 0 && ::flock(lock, LOCK_EX | LOCK_NB) != 0) {
     ::close(lock);
@@ -255,8 +255,8 @@ rb::Result<Journal> Journal::open(const std::string& output, const std::string& 
   std::ofstream(path + ".json", std::ios::trunc)
       << nlohmann::json{{"fingerprint", fingerprint}}.dump() << "\n";
   std::ofstream out(path, std::ios::trunc);
-  // Named as the table: "t.csv.partial: cannot write …" sent a teacher looking for a file of
-  // that name (helper-41's trial).
+  // Named as the table: "t.csv.partial: cannot write …" sent a teacher looking for a file of that
+  // name.
   if (!out) {
     const int error = errno;
     if (lock >= 0) ::close(lock);
@@ -306,9 +306,9 @@ rb::Result<Merged> mergeShards(const std::vector<std::string>& shards) {
     if (!meta) return meta.error();
     if (first) {
       // One sweep is one content: shards run from the sweep file by different paths (sw.yaml,
-      // /abs/sw.yaml, ../sw.yaml) are one sweep, and shards run after an edit (a duration, a
-      // mass) are two, whose rows must not be mixed (a CI engineer's trial). Shards written
-      // before the fingerprint was kept are told apart by path, as they were.
+      // /abs/sw.yaml, ../sw.yaml) are one sweep, and shards run after an edit (a duration, a mass)
+      // are two, whose rows must not be mixed. Shards written before the fingerprint was kept are
+      // told apart by path, as they were.
       const nlohmann::json &print = (*first)["fingerprint"], &mine = meta.value()["fingerprint"];
       const bool printed = print.is_string() && mine.is_string();
       if (printed && print != mine)
@@ -360,9 +360,8 @@ nlohmann::json sweepSidecar(const scene::Sweep& sweep, const std::optional<Shard
   nlohmann::json sidecar;
   sidecar["program"] = "rattleback " RATTLEBACK_VERSION;
   sidecar["command"] = "sweep";
-  // Absolute, as a run's scene_path is (it was relative to the folder the sweep ran from, which
-  // the sidecar does not say: a researcher's trial); a base or sweep with no file (Python's) as
-  // named.
+  // Absolute, as a run's scene_path is (it was relative to the folder the sweep ran from, which the
+  // sidecar does not say); a base or sweep with no file (Python's) as named.
   const auto absoluteIfFile = [](const std::string& path) {
     std::error_code ec;
     if (path.empty() || !fs::is_regular_file(path, ec)) return path;

@@ -1,5 +1,5 @@
-// contact.model auto (sim/switching.hpp, issue 14): rolling while rolling holds, smooth while
-// it does not; switches located inside the step, and none that adds energy.
+// contact.model auto (sim/switching.hpp; docs/physics.md P4): rolling while rolling holds, smooth
+// while it does not; switches located inside the step, and none that adds energy.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,7 +18,8 @@ using namespace testing_support;
 
 namespace {
 
-// The default body (SPEC), with the smooth contact's constants auto needs.
+// The default body (docs/scenes.md "Shipped scenes"), with the smooth contact's constants auto
+// needs.
 const char* kDefaultAuto = R"(
 units: {length: 0.01}
 body:
@@ -171,7 +172,7 @@ TEST(Auto, HardCasesRunToTheEndWithoutGainingEnergy) {
   }
 }
 
-// Issue 26: inside a step in which the contact model switches, each sample belongs to the mode
+// Inside a step in which the contact model switches, each sample belongs to the mode
 // in force at its time by the recorded switches (before a hand-back to rolling at the step's
 // end: the sliding step; before a switch to sliding inside it: the rolling step), and the
 // energy does not dip between samples (it did by up to 6.3e-5 J, 0.54 %, where rolling's

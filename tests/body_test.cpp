@@ -109,12 +109,12 @@ TEST(MassProperties, GridConvergesToTheContinuumParaboloid) {
   EXPECT_LT(errors[2], 0.005);
 }
 
-// SPEC "The body": the default body's least-inertia axis is turned ≈ +2.2° from the long
-// axis; mirroring the dents (x → −x) mirrors the angle.
+// docs/scenes.md "Shipped scenes": the default body's least-inertia axis is turned ≈ +2.2° from the
+// long axis; mirroring the dents (x → −x) mirrors the angle.
 TEST(MassProperties, MisalignmentOfTheDefaultBodyAndItsMirror) {
   sim::SceneSpec spec = parse(kStableScene);
   const double angle = build(spec).body->mass_properties.misalignment_deg;
-  // ±0.1°: SPEC quotes one decimal ("≈ +2.2°"); the grid itself moves it by ~0.05°.
+  // ±0.1°: the docs quote one decimal ("≈ +2.2°"); the grid itself moves it by ~0.05°.
   EXPECT_NEAR(angle, 2.2, 0.1);
   spec.body.dents->at[0] *= -1;
   const double mirrored = build(spec).body->mass_properties.misalignment_deg;
@@ -176,7 +176,7 @@ PointByPoint walkPointByPoint(const sim::Paraboloid& shape, const std::optional<
 
 }  // namespace
 
-// Issue 27: the grid's levels come in closed form, one step a column, so that only the points
+// The grid's levels come in closed form, one step a column, so that only the points
 // model pays for its points. The walk must give exactly the points of the definition: same
 // count, same surface points bit for bit, same order, on grids whose levels fall on the
 // bottom and dent surfaces awkwardly (spacings that are not fractions of the height).
@@ -234,7 +234,7 @@ TEST(GridWalk, AStrideKeepsEveryKthColumnFromTheAxes) {
   EXPECT_GT(kept.size(), 100u);
 }
 
-// Issue 27: the grid is the drawing's (and the points model's), so a run of any other model
+// The grid is the drawing's (and the points model's), so a run of any other model
 // is the same, byte for byte, on a fine grid and a coarse one: nothing of the physics may
 // depend on it (the adaptive steps' length scale is the body's box, not its points').
 TEST(GridWalk, OnlyThePointsModelDependsOnTheGrid) {

@@ -1,5 +1,6 @@
-// simulate --check (issue 27): the estimated error of a run must be the error it has, as a
-// converged run measures it, within what the estimate's own order leaves.
+// simulate --check (docs/commands.md "The error of your own run: --check"): the estimated error of
+// a run must be the error it has, as a converged run measures it, within what the estimate's own
+// order leaves.
 #include "tasks/check.hpp"
 
 #include <gtest/gtest.h>

@@ -369,7 +369,7 @@ TEST(Cli, ACoarseStepInAModelThatKeepsEnergyIsPointedOut) {
 }
 
 // A step that cannot resolve the body's own rocking is refused where the body rolls, as one
-// that cannot resolve the floor's stiffness is for the penalty models (issue 26: --dt 0.05 on
+// that cannot resolve the floor's stiffness is for the penalty models (--dt 0.05 on
 // the default body, rocking at 7 Hz, ran and reported no reversal; at 1e-4 s it reverses).
 TEST(Cli, AStepTooCoarseForTheRockingIsRefused) {
   const std::string run = "simulate " + scene("rattleback") + " -o " + tempFile("r.csv").string();
@@ -417,7 +417,7 @@ TEST(Cli, AnalyzeJsonHasTheSeedCounts) {
   EXPECT_EQ(j["points"]["bottom"], 294);
   EXPECT_DOUBLE_EQ(j["mass"].get<double>(), 0.5);
   EXPECT_EQ(j["inertia"].size(), 3u);
-  EXPECT_FALSE(j["rest_stable"].get<bool>());  // SPEC: the seed's body cannot stand
+  EXPECT_FALSE(j["rest_stable"].get<bool>());  // docs/physics.md P10: the seed's body cannot stand
 }
 
 // A spin that ended the other way with no reversal counted says why (a teacher's trial: "first
@@ -582,7 +582,7 @@ TEST(Cli, AMassNoMaterialGivesIsSaid) {
 
 // The rolling model has no contact spring, so its largest stable step is infinite: JSON has
 // no infinity, and it is written as null (this was `inf`, which no JSON reader accepts). The
-// default body is predicted to prefer counter-clockwise (SPEC: clockwise reverses).
+// default body is predicted to prefer counter-clockwise (docs/physics.md P8: clockwise reverses).
 TEST(Cli, AnalyzeJsonWritesNonFiniteAsNull) {
   const Result r = rattleback("analyze " + scene("rattleback") + " --json");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -1045,9 +1045,11 @@ simulation: {integrator: rk4, dt: 1.0e-3, duration: 10}
   EXPECT_NE(r.err.find(": the run stopped: the body tipped onto the edge of its top"),
             std::string::npos)
       << r.err;
-  EXPECT_NE(r.err.find("\nWARNING: body.mass 0.2 kg in a body of 28.3 × 8.16 × 2.5 m is lighter "
-                       "than air"),
-            std::string::npos)
+  EXPECT_NE(
+      r.err.find(
+          "\nrattleback: warning: body.mass 0.2 kg in a body of 28.3 × 8.16 × 2.5 m is lighter "
+          "than air"),
+      std::string::npos)
       << r.err;
   EXPECT_FALSE(fs::exists(dir / "x.csv"));
 }
@@ -1117,6 +1119,17 @@ TEST(Cli, TheMachinesFailuresExitFourNotTwo) {
   const int drawn = std::system(still.c_str());
   EXPECT_EQ(WIFEXITED(drawn) ? WEXITSTATUS(drawn) : -1, 4) << readText(err);
   EXPECT_FALSE(fs::exists(png));
+  // And compare's diff image: a disk fault, 4, not the input's 2 (512 bytes: less than any diff).
+  const fs::path diff = limits / "diff.png";
+  const std::string compared = "ulimit -f 1; " + std::string(RATTLEBACK_BIN) + " compare " +
+                               std::string(RATTLEBACK_SOURCE_DIR) + "/tests/golden/seed-above.png" +
+                               " " + std::string(RATTLEBACK_SOURCE_DIR) +
+                               "/tests/golden/seed-front.png" + " -q --diff " + diff.string() +
+                               " 2>" + err.string();
+  const int diffed = std::system(compared.c_str());
+  EXPECT_EQ(WIFEXITED(diffed) ? WEXITSTATUS(diffed) : -1, 4) << readText(err);
+  EXPECT_EQ(readText(err), diff.string() + ": writing failed: File too large\n");
+  EXPECT_FALSE(fs::exists(diff));
   EXPECT_TRUE(fs::is_empty(limits)) << fs::directory_iterator(limits)->path();
   // The figures too: gnuplot ignores a failed write, and under the program's ignored SIGXFSZ
   // it wrote PNGs cut at the limit, which stood as figures with exit 0 (a teacher's trial).
@@ -2111,9 +2124,9 @@ TEST(Outputs, TheTelemetryHoldsTheScenesNumbers) {
   EXPECT_GT(largest_elastic, 0);
 }
 
-// The default body's theory as SPEC states it ("Physics caveat": misalignment ≈ +2.2°,
-// roll/pitch ≈ 3.5/7.0 Hz, reverses when spun clockwise): within 0.1 (the SPEC's rounding,
-// and the grid's 0.5 % on the mass properties).
+// The default body's theory as the docs state it (docs/physics.md P8: misalignment ≈ +2.2°,
+// roll/pitch ≈ 3.5/7.0 Hz, reverses when spun clockwise): within 0.1 (the docs' rounding, and
+// the grid's 0.5 % on the mass properties).
 TEST(Outputs, AnalyzeJsonGivesTheDefaultBodysNumbers) {
   const Result r = rattleback("analyze " + scene("rattleback") + " --json");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -2672,7 +2685,7 @@ TEST(Report, ARunsSceneThatNoLongerLoadsIsSaidToAsItIs) {
   std::ofstream(csv + ".json") << sidecar.dump(2);
   const Result refused = rattleback("report " + dir.string());
   ASSERT_EQ(refused.status, 0);
-  EXPECT_EQ(refused.err, csv + ": " + yaml.string() +
+  EXPECT_EQ(refused.err, "rattleback: note: " + csv + ": " + yaml.string() +
                              " no longer loads in this rattleback (scene_values: body.mass must "
                              "be > 0, not -3): no 3D player for it (mend the scene and simulate "
                              "it again to replay it)\n");
@@ -2681,7 +2694,7 @@ TEST(Report, ARunsSceneThatNoLongerLoadsIsSaidToAsItIs) {
   std::ofstream(yaml, std::ios::app) << "body: [unclosed\n";
   const Result broken = rattleback("report " + dir.string());
   ASSERT_EQ(broken.status, 0);
-  EXPECT_EQ(broken.err, csv + ": " + yaml.string() +
+  EXPECT_EQ(broken.err, "rattleback: note: " + csv + ": " + yaml.string() +
                             " has changed since this run was simulated: no 3D player for it "
                             "(simulate it again to replay it)\n");
   EXPECT_FALSE(fs::exists(dir / "edit.player.js"));
@@ -2689,7 +2702,7 @@ TEST(Report, ARunsSceneThatNoLongerLoadsIsSaidToAsItIs) {
   fs::remove(yaml);
   const Result gone = rattleback("report " + dir.string());
   ASSERT_EQ(gone.status, 0);
-  EXPECT_EQ(gone.err, csv + ": " + yaml.string() +
+  EXPECT_EQ(gone.err, "rattleback: note: " + csv + ": " + yaml.string() +
                           " is not there any more: no 3D player for it (simulate it again to "
                           "replay it)\n");
   // -q says nothing, these notes neither (a teacher's trial: they were printed under -q).
@@ -2946,7 +2959,10 @@ TEST(Report, AFolderWithNothingToShowIsSaidToBe) {
   EXPECT_TRUE(fs::is_regular_file(dir / "index.html"));
   EXPECT_EQ(r.out, (dir / "index.html").string() + "\n");
   EXPECT_EQ(lines(r.err), 1) << r.err;
-  EXPECT_EQ(r.err.rfind(dir.string() + ": no runs, videos, stills or plots", 0), 0u) << r.err;
+  EXPECT_EQ(
+      r.err.rfind("rattleback: note: " + dir.string() + ": no runs, videos, stills or plots", 0),
+      0u)
+      << r.err;
   EXPECT_NE(r.err.find("rattleback simulate SCENE -o " + dir.string() + "/NAME.csv"),
             std::string::npos)
       << r.err;
@@ -3128,7 +3144,7 @@ TEST(Cli, AModeThatGrowsAtRestIsCalledUnstable) {
 
 // A body with no preferred direction (the default body without its dents: misalignment 0,
 // growth rates alike both ways, all negative: roll −0.228, pitch −0.035 /s at ±5 rad/s) gets
-// none (issue 26: it got "cw" from rounding, and render --both named its +5 run "reversed").
+// none (not "cw" from rounding, and render --both named its +5 run "reversed").
 // Its videos are named by their spins, and the page says the theory prefers neither.
 TEST(Cli, ABodyWithNoPreferredDirectionGetsNone) {
   const fs::path dir = emptyDir("none");
@@ -3172,7 +3188,7 @@ TEST(Cli, SimulateWarnsOfABodyThatCannotStand) {
   EXPECT_EQ(upright.out.find("WARNING"), std::string::npos) << upright.out;
 }
 
-// simulate --check (issue 27): the summary names the tighter run and each reversal's error, the
+// simulate --check: the summary names the tighter run and each reversal's error, the
 // sidecar carries it, and the report page shows it beside the run.
 TEST(Cli, CheckEstimatesTheRunsErrorsAndTheReportShowsThem) {
   const fs::path dir = emptyDir("check");
@@ -3192,7 +3208,7 @@ TEST(Cli, CheckEstimatesTheRunsErrorsAndTheReportShowsThem) {
   const double error = sidecar["check"]["reversal_errors_s"][0];
   EXPECT_GT(std::abs(error), 1e-12);
   EXPECT_LT(std::abs(error), 1e-7);
-  // And the default scene, adaptive since issue 27, is checked at a hundredth of its tolerance.
+  // And the default scene, adaptive, is checked at a hundredth of its tolerance.
   const auto adaptive = rattleback("simulate " + scene("rattleback") + " --duration 3 --check -o " +
                                    (dir / "default.csv").string());
   EXPECT_NE(
@@ -3208,7 +3224,7 @@ TEST(Cli, CheckEstimatesTheRunsErrorsAndTheReportShowsThem) {
             std::string::npos);
 }
 
-// Issue 27 keeps contact points only on bodies of the points model; bench runs the points model
+// Contact points are kept only on bodies of the points model; bench runs the points model
 // on a rolling scene's body too (when its grid is small), so its body must have them, and be
 // the scene's body otherwise (the same mass properties).
 TEST(Cli, BenchRunsThePointsModelOnABodyWithItsPoints) {
@@ -3322,7 +3338,7 @@ TEST(Cli, AStillBeforeZeroNamesTAndItsValue) {
 TEST(Cli, AStillWithTooShortAFrameSaysTheBodyLeavesIt) {
   const fs::path png = tempFile("close.png");
   const std::string still = "still " + scene("rattleback") + " --size 320x180 -o " + png.string();
-  const std::string warning = "warning: the body goes out of the picture: --frame ";
+  const std::string warning = "rattleback: warning: the body goes out of the picture: --frame ";
   for (const char* view : {"oblique", "follow"}) {
     const Result close = rattleback(still + " --frame 10 --view " + view);
     EXPECT_EQ(close.status, 0) << close.err;
@@ -3401,7 +3417,7 @@ TEST(Cli, ALongVideoIsSaidUpFront) {
                                   " --playback 0.001 --duration 1 --size 64x48 -o " + mp4.string(),
                               4);
   EXPECT_EQ(r.err.substr(0, r.err.find('\n')),
-            scene("rattleback") +
+            "rattleback: note: " + scene("rattleback") +
                 ": 25000 frames, 17 min of video (1 s simulated at playback 0.001, 25 fps); "
                 "this takes a while, and Ctrl-C stops it with nothing written");
   EXPECT_FALSE(fs::exists(mp4));

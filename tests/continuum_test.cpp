@@ -1,5 +1,5 @@
-// The body's mass properties from its shape (sim/continuum.hpp, issue 14): closed form against
-// the axis formula and against cubature, the grid's sums converging to them at the order
+// The body's mass properties from its shape (sim/continuum.hpp; docs/physics.md P1): closed form
+// against the axis formula and against cubature, the grid's sums converging to them at the order
 // derived below, and a reversal that no longer depends on the grid.
 #include "sim/continuum.hpp"
 
@@ -17,7 +17,7 @@ namespace {
 
 constexpr double kCm = 0.01;
 
-// The default body (SPEC "Physics caveat"), metres.
+// The default body (docs/scenes.md "Shipped scenes"), metres.
 sim::Paraboloid defaultShape() {
   return sim::Paraboloid(1.0 * kCm, 0.5, 0.0, 0.03, 0.5 * kCm);
 }
@@ -145,7 +145,7 @@ TEST(Continuum, GridSumsConvergeAtFirstOrderToTheDerivedCoefficient) {
   }
 }
 
-// Issue 14's test: the default body's first reversal (rolling, no drag, rk4 0.5 ms) on a
+// The default body's first reversal (rolling, no drag, rk4 0.5 ms) on a
 // 0.1 cm and a 0.0125 cm grid within 1e-4 relative with the continuum's mass properties; with
 // the grid's it moves by 0.7% between the two (measured 2.379 → 2.363 s with drag removed), and
 // those grid times approach the continuum's as the grid is refined.

@@ -185,11 +185,11 @@ TiltRun releasedAtRest(const char* yaml, double tilt_deg) {
 
 }  // namespace
 
-// SPEC "Physics caveat": the seed's CM (3.9 cm above the apex) is above the radius of
+// docs/physics.md P10: the seed's CM (3.9 cm above the apex) is above the radius of
 // curvature across its short axis (a/p = 1.33 cm): it cannot stand. Its coarse grid gives it
 // an 8-point flat foot that holds small tilts only (measured: it holds 3°, not 4°); released
-// at 5° it rolls onto its side, ≈ 62° (SPEC). ±3°: the side it lies on is a facet of the
-// coarse grid, and the SPEC gives the angle to the degree.
+// at 5° it rolls onto its side, ≈ 62° (P10). ±3°: the side it lies on is a facet of the
+// coarse grid, and P10 gives the angle to the degree.
 TEST(AtRest, SeedBodyTipsOntoItsSide) {
   const TiltRun held = releasedAtRest(kSeedScene, 3.0);
   EXPECT_LT(held.max_tilt, 3.05);  // never tilts further than released

@@ -1,4 +1,4 @@
-// Hard cases (issue 5): stiff floors, steps too large, fast spins, no and extreme friction,
+// Hard cases: stiff floors, steps too large, fast spins, no and extreme friction,
 // drops, an upside-down start, the seed's roll-over and a simulated hour. Each states what
 // physics expects and checks it; none may end in NaN or in energy from nowhere.
 #include <gtest/gtest.h>
@@ -63,7 +63,7 @@ TEST(HardCases, HundredTimesStifferFloor) {
   const Recorded r = record(model);
   ASSERT_FALSE(r.summary.divergence) << *r.summary.divergence;
   // A harder floor is closer to the rigid, rolling one. At the default stiffness the smooth
-  // model's reversal is within 0.5% of rolling (README, issue 4); the stiffer one as close.
+  // model's reversal is within 0.5% of rolling (docs/physics.md P4); the stiffer one as close.
   ASSERT_TRUE(r.summary.first_reversal_s);
   const double reference = rollingReversal();
   EXPECT_NEAR(*r.summary.first_reversal_s, reference, 0.005 * reference);
@@ -311,7 +311,7 @@ TEST(HardCases, SeedBodyRollsOverAndComesToRest) {
 TEST(HardCases, OneSimulatedHour) {
   // The default scene (rolling, rk4, 0.5 ms, drag) for 3600 s: 7.2 million steps. Drag only
   // removes energy, so it never rises, apart from rk4's error: 1.5e-9 of the energy over 8 s
-  // without drag (issue 4), so 1e-9 of it between samples 10 s apart is generous, and a rise
+  // without drag, so 1e-9 of it between samples 10 s apart is generous, and a rise
   // beyond it is a real fault.
   sim::SceneSpec spec = parse(kDefaultSmooth);
   spec.contact.model = "rolling";
@@ -334,7 +334,7 @@ TEST(HardCases, OneSimulatedHour) {
 
 // A strongly damped floor (k 1e8 N/m, c 2e4 N s/m: ζ ≈ 8) clips its force max(0, k d − c v)
 // to zero for tens of ms while a point rises out of it; that is no flight (the point is still
-// below the floor), and the reversal is reported. Issue 26: "first reversal none", while n went
+// below the floor), and the reversal is reported, not "first reversal none" while n goes
 // from −5 to +2.3 rad/s, crossing zero at 2.37 s. Against rolling's: within 0.01 s, the
 // smooth model's own difference on a stiff floor (the README's 0.4 %).
 TEST(HardCases, AStronglyDampedFloorKeepsItsReversal) {
@@ -353,7 +353,7 @@ TEST(HardCases, AStronglyDampedFloorKeepsItsReversal) {
 
 // The largest stable step the refusal names, and refuses above, is one a run completes at: 0.95 of
 // it runs to the end, without the watchdog stopping it, for the cases where 0.95 of the linear
-// limit at rest did not (issue 26.3): an undamped k 1e6 N/m floor with rk4 and with symplectic, and
+// limit at rest did not: an undamped k 1e6 N/m floor with rk4 and with symplectic, and
 // a 3 cm drop onto k 1e8 N/m. (The margin, half the limit, is measured in sim/stability.hpp.)
 TEST(HardCases, TheNamedStableStepRunsToTheEnd) {
   struct Case {

@@ -66,18 +66,18 @@ grep -qF "($work/prefix/share/doc/rattleback/scenes.md has a complete scene)" <<
   { echo "FAIL: the installed program's message does not cite the installed docs: $said"; exit 1; }
 echo "ok: an installed message cites $work/prefix/share/doc/rattleback/scenes.md"
 # The shipped scenes and sweeps are installed, and found by their relative names from any folder
-# (issue 26: plain `bench` and `still scenes/rattleback.yaml` failed outside the source tree).
+# (plain `bench` and `still scenes/rattleback.yaml` failed outside the source tree).
 (cd "$(mktemp -d "$work/elsewhere.XXXX")" &&
   "$work/prefix/bin/rattleback" simulate scenes/rattleback.yaml --duration 0.1 -q -o r.csv &&
   "$work/prefix/bin/rattleback" bench --duration 0.05 --rungs 1 --repeats 1 --models rolling \
     --integrators rk4 -q -o b.csv --plot b.png &&
   test -s r.csv && test -s b.csv) || { echo "FAIL: the installed scenes are not found"; exit 1; }
 echo "ok: the installed scenes are found from another folder"
-# ... and said to be (a CI maintainer's trial: a course's deleted scene of the same name ran the
-# shipped one in silence).
+# ... and said to be (a course's deleted scene of the same name would run the shipped one in
+# silence).
 note=$(cd "$(mktemp -d "$work/elsewhere.XXXX")" &&
   "$work/prefix/bin/rattleback" simulate scenes/rattleback.yaml --duration 0.1 -o r.csv 2>&1 >/dev/null)
-[ "$note" = "note: no scenes/rattleback.yaml in this folder; running the shipped one, $work/prefix/share/rattleback/scenes/rattleback.yaml (./scenes/rattleback.yaml names this folder's only)" ] ||
+[ "$note" = "rattleback: note: no scenes/rattleback.yaml in this folder; running the shipped one, $work/prefix/share/rattleback/scenes/rattleback.yaml (./scenes/rattleback.yaml names this folder's only)" ] ||
   { echo "FAIL: an installed scene run from another folder is not said to be: '$note'"; exit 1; }
 echo "ok: a shipped scene run in place of a missing one is said to be"
 # ... with -q too, and never for ./ (a CI maintainer's trial: a pipeline's deleted scene of a

@@ -95,7 +95,7 @@ TEST(Snapshots, ReadoutsAndInsetMatchTheGoldensToOneStep) {
   EXPECT_GE(checked, 4);
 }
 
-// The read-outs and the inset never cover the body (issue 11): for each shipped scene, in every
+// The read-outs and the inset never cover the body: for each shipped scene, in every
 // view, a quarter of the way through the run, the pixels the read-outs change
 // (a still against its --no-readouts twin, beyond 2 levels) hold no body pixel of the twin (a
 // saturated red or blue point: red > 120 with green, blue < 80; blue > 120 with red < 80 and

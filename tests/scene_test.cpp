@@ -110,7 +110,7 @@ const BadCase kBadCases[] = {
     {"top: 2}", "top: -5}", "4: body.paraboloid.top must be above the apex"},
     {"dz: 0.2}", "dz: -0.2}", "6: body.grid.dz must be > 0"},
     {"dx: 0.52,", "dx: 1e-6,", "6: body.grid makes about"},
-    // Spacings so small that the counts pass any integer (issue 26: 1e-9 aborted the program
+    // Spacings so small that the counts pass any integer (1e-9 aborted the program
     // with std::length_error; the int column count overflowed past the check).
     {"dx: 0.52,", "dx: 1e-9,", "6: body.grid makes about"},
     {"dz: 0.2}", "dz: 1e-12}", "6: body.grid makes about"},
@@ -324,8 +324,8 @@ TEST(BadScenes, AFolderIsNamedAsAFolder) {
       << loaded.error().text();
 }
 
-// The simulation never reads the video section's values (SPEC "Scene files"): a scene whose
-// only fault is there simulates, and the drawing commands refuse it.
+// The simulation never reads the video section's values (docs/scenes.md "Scene files"): a scene
+// whose only fault is there simulates, and the drawing commands refuse it.
 TEST(BadScenes, VideoValuesStopOnlyTheDrawingCommands) {
   int seen = 0;
   for (const BadCase& c : kBadCases) {
@@ -381,7 +381,7 @@ TEST(BadScenes, ControlCharactersInTheFileStayOnOneLine) {
 }
 
 // A step set on top of a scene replaces its tolerance and the other way round, as --dt and
-// --tolerance do (the default scene has a tolerance since issue 27; Python's with_values and a
+// --tolerance do (the default scene has a tolerance; Python's with_values and a
 // sweep of simulation.dt over it must still work). Both at once stay refused.
 TEST(SceneValues, AStepReplacesTheScenesToleranceAndTheOtherWayRound) {
   const std::string adaptive = std::string(testing_support::kStableScene);

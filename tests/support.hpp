@@ -33,7 +33,8 @@ simulation: {integrator: symplectic, dt: 1.0e-5, duration: 1.0}
 video: {fps: 25}
 )";
 
-/// The stable body of SPEC (a=1, p=0.5, s=0.03, top=0.5, dents 0.45 at (0.73, 4.50) cm).
+/// The stable default body (docs/scenes.md "Shipped scenes": a=1, p=0.5, s=0.03, top=0.5, dents
+/// 0.45 at (0.73, 4.50) cm).
 inline const char* kStableScene = R"(
 units: {length: 0.01}
 body:

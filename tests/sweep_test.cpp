@@ -328,7 +328,7 @@ TEST(Sweep, AnAxisRollingDoesNotUseIsSaidToBe) {
                "\nvary:\n  contact.friction: [0.1, 0.5]\n  initial.spin: [-5]\nduration: 0.2\n");
   const Outcome said = rattleback(dir, "sweep " + friction.string() + table);
   ASSERT_EQ(said.status, 0) << said.err;
-  EXPECT_EQ(said.err.rfind("note: " + friction.string() +
+  EXPECT_EQ(said.err.rfind("rattleback: note: " + friction.string() +
                                ":3: contact.friction does not change a rolling run, which never "
                                "slips (",
                            0),

@@ -1,5 +1,6 @@
-// The tables' numbers (issue 27): every number the CSV writes reads back as exactly the double
-// that was computed, in the shortest text that does, and the same text as the JSON sidecars.
+// The tables' numbers (docs/commands.md "The telemetry CSV"): every number the CSV writes reads
+// back as exactly the double that was computed, in the shortest text that does, and the same text
+// as the JSON sidecars.
 #include "tasks/table.hpp"
 
 #include <gtest/gtest.h>

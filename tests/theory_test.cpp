@@ -16,8 +16,9 @@ using namespace testing_support;
 
 namespace {
 
-// The SPEC body (a=1, p=0.5, s=0.03, top=0.5, dents 0.45 at (0.73, 4.50) cm), mass properties
-// on a 0.025 cm grid, rolling without slipping, rk4, tilt 0.5°/0.5°, spin −5 rad/s.
+// The default body (docs/scenes.md "Shipped scenes": a=1, p=0.5, s=0.03, top=0.5, dents 0.45 at
+// (0.73, 4.50) cm), mass properties on a 0.025 cm grid, rolling without slipping, rk4, tilt
+// 0.5°/0.5°, spin −5 rad/s.
 const char* kRollingScene = R"(
 units: {length: 0.01}
 body:
@@ -137,7 +138,7 @@ TEST(Theory, RockingFrequenciesMatchAnalyze) {
   const double pitch = crossingFrequency(runScene(spec, 2).samples, 0, 0.0);
   EXPECT_NEAR(roll / rest.roll_hz, 1.0, 0.005) << roll << " Hz vs " << rest.roll_hz;
   EXPECT_NEAR(pitch / rest.pitch_hz, 1.0, 0.005) << pitch << " Hz vs " << rest.pitch_hz;
-  // SPEC: roll/pitch ≈ 3.5/7.0 Hz for this body.
+  // docs/physics.md P8: roll/pitch ≈ 3.5/7.0 Hz for this body.
   EXPECT_NEAR(rest.roll_hz, 3.5, 0.1);
   EXPECT_NEAR(rest.pitch_hz, 7.0, 0.1);
 }
@@ -192,7 +193,7 @@ TEST(Theory, HalvingTheTiltDelaysTheReversalByLn2OverGrowth) {
 }
 
 // Bondi's rest condition: the seed's body cannot stand (h = 3.97 cm above a radius of 1.33 cm
-// across x); the SPEC body can (h = 0.97 cm, radii 2 and 33 cm). The radii are a/p and a/s
+// across x); the default body can (h = 0.97 cm, radii 2 and 33 cm). The radii are a/p and a/s
 // exactly: 1e-12 m allows only rounding in a 2×2 eigen-decomposition.
 TEST(Theory, RestStability) {
   const sim::Rest seed = sim::restOf(build(parse(kSeedScene)));
@@ -204,8 +205,8 @@ TEST(Theory, RestStability) {
   EXPECT_NEAR(stable.radii(1), 0.01 / 0.03, 1e-12);
 }
 
-// The dents make the direction: the SPEC body prefers counter-clockwise (SPEC: clockwise
-// reverses), mirrored dents prefer clockwise, and without dents the rolling body spun the
+// The dents make the direction: the default body prefers counter-clockwise (docs/physics.md P8:
+// clockwise reverses), mirrored dents prefer clockwise, and without dents the rolling body spun the
 // reversing way does not reverse.
 TEST(Theory, DentsSetThePreferredDirection) {
   sim::SceneSpec spec = parse(kRollingScene);
@@ -354,7 +355,7 @@ TEST(Rolling, AgreesWithTheIndependentReferenceSolver) {
 // The misalignment is measured from the long axis, whichever of x and y it is: the least-inertia
 // axis of the horizontal block [[Ixx, Ixy], [Ixy, Iyy]] of the tensor lies at θ from x with
 // θ = ½ atan2(−2 Ixy, Iyy − Ixx) (the eigenvector of its smaller eigenvalue). A body long in x
-// is misaligned by that θ (−10.9° here), not by 90° − |θ| read from y (issue 26: 89.2° for a
+// is misaligned by that θ (−10.9° here), not by 90° − |θ| read from y (not 89.2° for a
 // body misaligned by 0.8°); the same body turned a quarter (long in y) by the same angle from
 // y. Closed form: 1e-9° is rounding.
 TEST(Ellipsoid, TheMisalignmentIsMeasuredFromTheLongAxis) {
@@ -385,7 +386,7 @@ simulation: {dt: 1.0e-4, duration: 1.0}
   EXPECT_NEAR(misalignment("[0.025, 0.15, 0.02]", Iyy, Ixx, -Ixy), expected, 1e-9);
 }
 
-// Semi-implicit Euler is refused where the body rolls (issue 26: Kane & Levinson without
+// Semi-implicit Euler is refused where the body rolls (Kane & Levinson without
 // dissipation lost 17.9 % of their energy in 60 s at 0.1 ms with it), naming what to use; a
 // rolling scene that gives a step and no integrator gets rk4, which keeps the energy.
 TEST(Ellipsoid, SymplecticIsRefusedWhereTheBodyRolls) {

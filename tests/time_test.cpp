@@ -272,7 +272,7 @@ TEST(Rollout, AStopRequestEndsTheRun) {
   EXPECT_FALSE(watched.advanceTo(0.1));
 }
 
-// Sampling has no side effects (issue 26.12): samples at times of the last step, in any order
+// Sampling has no side effects: samples at times of the last step, in any order
 // and as often as wished, give the same telemetry, and the summary's `last` is the time that
 // advanceTo asked for, sampled or not. Exact equality: the same state, the same arithmetic.
 TEST(Rollout, SamplingChangesNothing) {

@@ -132,7 +132,7 @@ TEST(Watchdog, OnlyTenMillisecondsInTheAirIsAFlight) {
 }
 
 TEST(Watchdog, ADampedFloorThatCarriesNothingIsNoFlight) {
-  // Issue 26: on a strongly damped floor the force max(0, k d − c v) is zero for up to 50 ms
+  // On a strongly damped floor the force max(0, k d − c v) is zero for up to 50 ms
   // while a point rises out of the floor; the point is still below it, so it is no flight and
   // the reversal 0.3 s later counts. The same history with those 50 ms in the air is a bounce,
   // and a crossing within 0.5 s of it does not count.

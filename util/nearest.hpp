@@ -11,9 +11,9 @@
 
 namespace rb {
 
-/// Edits between two words: letters put in, taken out or changed, and two neighbours swapped
-/// (the optimal-string-alignment distance: a swap is one typo, "fsp" for "fps", where counted
-/// as two changes it was too far from a three-letter word to be suggested: a teacher's trial).
+/// Edits between two words: letters put in, taken out or changed, and two neighbours swapped (the
+/// optimal-string-alignment distance: a swap is one typo, "fsp" for "fps", where counted as two
+/// changes it was too far from a three-letter word to be suggested).
 inline std::size_t editDistance(std::string_view a, std::string_view b) {
   // Three rows of the table: d[i−2], d[i−1] and d[i].
   std::vector<std::size_t> before(b.size() + 1), last(b.size() + 1), row(b.size() + 1);
@@ -46,8 +46,7 @@ std::optional<std::string> nearestWord(std::string_view word, const Words& known
   if (nearest && best <= std::max<std::size_t>(2, word.size() / 3) && 2 * best <= word.size())
     return nearest;
   // Else the one known word that begins as this one does for five letters or more and three
-  // quarters of the shorter: the same word with another ending ("parabola" for "paraboloid": a
-  // student's trial).
+  // quarters of the shorter: the same word with another ending ("parabola" for "paraboloid").
   std::optional<std::string> begun;
   for (const auto& candidate : known) {
     const std::string_view c(candidate);

@@ -104,9 +104,9 @@ inline std::string cannotWriteIn(const std::string& path, int error) {
 inline Status checkExtension(const std::string& output, const std::string& wanted,
                              const std::string& format, bool base_allowed) {
   if (output.empty()) return {};
-  // A folder of that name is refused here, before the work, as the tables' writer refuses it
-  // (a still into a folder named x.png was drawn, then failed to be moved into place: exit 4
-  // after the work, for a mistake in the input; a teacher's trial).
+  // A folder of that name is refused here, before the work, as the tables' writer refuses it (a
+  // still into a folder named x.png was drawn, then failed to be moved into place: exit 4 after the
+  // work, for a mistake in the input).
   std::error_code ec;
   if (std::filesystem::is_directory(output, ec))
     return Status::fail(output + ": is a folder, not a file (give " + output_named_by +
@@ -119,12 +119,11 @@ inline Status checkExtension(const std::string& output, const std::string& wante
                       "; give a name ending in " + wanted);
 }
 
-/// A table or text output (simulate's CSV, analyze's text or JSON, a sweep's table) is taken
-/// under most names, but not over one of the command's inputs (`simulate s.yaml -o s.yaml` had
-/// replaced the scene with its telemetry) nor under a name that says a picture, a video or a
-/// scene (`sweep -o s.png` wrote CSV as s.png: a CI engineer's trial): "-o s.png: writes a CSV
-/// table, not a .png file; give a name ending in .csv". `format` as the message says it: "a CSV
-/// table", "the analysis".
+/// A table or text output (simulate's CSV, analyze's text or JSON, a sweep's table) is taken under
+/// most names, but not over one of the command's inputs (`simulate s.yaml -o s.yaml` had replaced
+/// the scene with its telemetry) nor under a name that says a picture, a video or a scene (`sweep
+/// -o s.png` wrote CSV as s.png): "-o s.png: writes a CSV table, not a .png file; give a name
+/// ending in .csv". `format` as the message says it: "a CSV table", "the analysis".
 inline Status checkDataOutput(const std::string& output, const std::string& format,
                               const std::string& wanted, const std::vector<std::string>& inputs) {
   if (output.empty() || output == "-") return {};

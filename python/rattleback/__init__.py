@@ -330,13 +330,13 @@ def simulate(scene: SceneLike, *, rate: float = _core.default_rate,
     try:
         run = Run(_core.simulate(loaded, float(rate), bool(check)))
     except RunStopped as stopped:
-        # The run as far as it went, as a Run (a student's trial: a body that tipped over left
-        # nothing to plot of the 2.2 s before).
+        # The run as far as it went, as a Run (a body that tipped over left nothing to plot of the
+        # 2.2 s before).
         if isinstance(stopped.run, _core.Run):
             stopped.run = Run(stopped.run)
         raise
-    # What the command line's summary warns of, where a notebook shows it (a teacher's trial:
-    # a mass typed in grams ran in silence, its warning only in run.result["warnings"]).
+    # What the command line's summary warns of, where a notebook shows it (a mass typed in grams ran
+    # in silence, its warning only in run.result["warnings"]).
     for warning in run.result.get("warnings") or []:
         warnings.warn(RunWarning(f"{run.scene}: {warning['text']}", warning.get("code")),
                       stacklevel=3)

@@ -121,8 +121,9 @@ def sweep(source: Union[str, os.PathLike, Scene, Mapping[str, Any]],
     and ``-sweep``). ``resume``: a table of the same sweep kept from Ctrl-C (its rows are not
     run again, and the table returned holds them too), as ``rattleback sweep --resume`` does.
 
-    Raises ValueError for a sweep that cannot be used (an error in ``vary`` is named
-    ``argument vary`` and the key); KeyboardInterrupt on Ctrl-C, whose ``table`` is a
+    Raises :class:`SceneError` (a ``ValueError``) for a sweep that cannot be used, naming its
+    file, line and key as a scene's does (an error in ``vary`` is named ``argument vary`` and
+    the key); KeyboardInterrupt on Ctrl-C, whose ``table`` is a
     SweepTable of the rows finished by then (the others not run; its ``interrupted`` is True,
     and its ``to_csv`` sidecar says so). An axis the runs do not use
     (``contact.friction`` under ``rolling``: the rows along it are alike) is warned of, as

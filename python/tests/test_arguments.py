@@ -102,8 +102,8 @@ def test_numbers_are_ints_floats_and_numpy_scalars(scene):
     assert (image.width, image.height) == (64, 48)
     assert rb.still(scene, 0, size=np.array([64, 48])).width == 64
     assert rb.still(scene, 0, size=[64, 48]).width == 64
-    # A 0-d array (what np.sum and friends give) is a number too, as with_values takes it (a
-    # researcher's trial: simulate(spin=np.array(-4.0)) raised TypeError); not a 1-element one.
+    # A 0-d array (what np.sum and friends give) is a number too, as with_values takes it
+    # (simulate(spin=np.array(-4.0)) raised TypeError); not a 1-element one.
     assert rb.simulate(scene, spin=np.array(-4.0)).spin[0] == base.spin[0]
     assert rb.simulate(scene, rate=np.array(50), duration=0.2).t.size == 11
     refused(lambda: rb.simulate(scene, spin=np.array([-4.0])),

@@ -335,7 +335,7 @@ def test_a_bad_playback_says_the_value_given(tmp_path, playback, given):
 
 def test_a_runs_warnings_are_python_warnings(recwarn):
     """What simulate's summary warns of is a RunWarning in Python, pointing at the caller's line
-    (a teacher's trial: a mass typed in grams ran in silence in a notebook); a run without one
+    (a mass typed in grams would run in silence in a notebook); a run without one
     warns of nothing."""
     rb.simulate(scene_path("rattleback.yaml"), duration=0.2)
     assert not [w for w in recwarn if issubclass(w.category, rb.RunWarning)]
@@ -345,6 +345,26 @@ def test_a_runs_warnings_are_python_warnings(recwarn):
     assert caught[0].message.code == "implausible_mass"
     assert caught[0].filename == __file__
     assert run.result["warnings"][0]["code"] == "implausible_mass"
+
+
+def test_a_sweep_files_errors_name_its_file_line_and_key(tmp_path):
+    """A sweep file's error is a SceneError naming the file, the line and the key, as a scene's
+    is (docs/commands.md "Messages"), with the same message as the command line."""
+    sweep = tmp_path / "bad.yaml"
+    sweep.write_text(f"base: {scene_path('rattleback.yaml')}\nvary:\n  initial.spin: []\n")
+    with pytest.raises(rb.SceneError) as caught:
+        rb.sweep(str(sweep), jobs=1)
+    assert str(caught.value) == f"{sweep}:3: initial.spin has no values"
+    assert (caught.value.file, caught.value.line, caught.value.key) == (str(sweep), 3, "initial.spin")
+    said = cli("sweep", str(sweep), "-o", str(tmp_path / "t.csv"), check=False)
+    assert (said.returncode, said.stderr) == (2, f"{caught.value}\n")
+    sweep.write_text("vary: {initial.spin: [1]}\n")
+    with pytest.raises(rb.SceneError) as caught:
+        rb.sweep(str(sweep), jobs=1)
+    assert (caught.value.line, caught.value.key) == (1, "base")
+    with pytest.raises(rb.SceneError) as caught:
+        rb.sweep(str(tmp_path / "none.yaml"), jobs=1)
+    assert (caught.value.line, caught.value.key) == (None, None)
 
 
 def test_a_sweep_made_in_python_names_argument_vary_and_the_key():
@@ -363,9 +383,10 @@ def test_a_sweep_made_in_python_names_argument_vary_and_the_key():
          "argument vary: body.dents.at[5]: the base scene has no list body.dents.at with an "
          "element 5"),
     ]:
-        with pytest.raises(ValueError) as caught:
+        with pytest.raises(rb.SceneError) as caught:
             rb.sweep(base, vary, jobs=1)
         assert str(caught.value) == message
+        assert caught.value.file == "argument vary" and caught.value.line is None
     with pytest.raises(rb.SceneError, match=r"^argument duration: must be > 0, not -1$") as e:
         rb.sweep(base, {"initial.spin": [1]}, duration=-1)
     assert e.value.key == "simulation.duration"  # as simulate's

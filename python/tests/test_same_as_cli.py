@@ -242,7 +242,7 @@ def test_a_sweep_of_a_key_rolling_does_not_use_warns_as_the_command_line_notes(t
     assert w[0].message.code == "axis_unused"
     assert w[0].filename == __file__
     note = cli("sweep", str(sweep), "-o", str(tmp_path / "f.csv")).stderr
-    assert note == f"note: {w[0].message}\n"
+    assert note == f"rattleback: note: {w[0].message}\n"
     assert table["final_spin"][0] == table["final_spin"][1]
 
 
@@ -275,8 +275,8 @@ def test_a_sweep_whose_every_run_is_refused_warns_as_the_command_line_exits_two(
 
 
 def test_analyze_looks_as_far_as_its_duration(tmp_path):
-    """A researcher's 10 cm body spun -1 rad/s is forecast to reverse after its scene's 8 s:
-    none within them, one within 60 (a researcher's trial had to edit the scene to see it)."""
+    """A 10 cm body spun -1 rad/s is forecast to reverse after its scene's 8 s: none within
+    them, one within 60 (--duration 60 shows it without an edit of the scene)."""
     scene = tmp_path / "slow.yaml"
     scene.write_text(SLOW_BODY)
     near = rb.analyze(scene)["predicted_first_reversal"]

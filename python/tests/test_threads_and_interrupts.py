@@ -143,8 +143,8 @@ sys.exit(0)
 
 def test_ctrl_c_in_to_csv_stops_the_writing(tmp_path):
     """Ctrl-C while a large run is written stops the writing and raises KeyboardInterrupt (it
-    had written the whole file, put it in place over what was there, and only then raised it:
-    a researcher's trial). The run is written into a pipe that this test reads, so that the
+    had written the whole file, put it in place over what was there, and only then raised
+    it). The run is written into a pipe that this test reads, so that the
     signal surely comes while it is written: 1 MB read, the signal sent, then the rest read
     (after a pause, so that the writer waits on the pipe as a slow disk would make it)."""
     fifo = tmp_path / "t.csv"
@@ -314,8 +314,8 @@ print("main done", flush=True)
 @pytest.mark.parametrize("what", ["simulate", "render"])
 def test_a_script_that_ends_with_a_run_in_a_daemon_thread_exits_cleanly(tmp_path, what):
     """A daemon thread's run still going when the script ends is left to the process's exit,
-    as Python's own daemon threads are (a researcher's trial: std::terminate, exit 134, when the
-    run took the GIL to look for signals after the interpreter began to exit)."""
+    as Python's own daemon threads are (not std::terminate, exit 134, as when the run took the
+    GIL to look for signals after the interpreter began to exit)."""
     done = subprocess.run([sys.executable, "-c", DAEMON, what, scene_path("rattleback.yaml"),
                            str(tmp_path / "v.mp4")], capture_output=True, text=True,
                           timeout=60, env=os.environ.copy())
