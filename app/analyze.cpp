@@ -11,6 +11,7 @@
 #include "app/commands.hpp"
 #include "sim/analysis.hpp"
 #include "sim/compile.hpp"
+#include "sim/contact_model.hpp"
 #include "sim/stability.hpp"
 #include "sim/switching.hpp"
 #include "tasks/analysis.hpp"
@@ -94,7 +95,7 @@ void printTheory(std::FILE* out, const sim::Model& model, double spin, bool give
   else if (preferred == sim::Direction::None) {
     // Which of the two: a body with no misalignment grows alike both ways at any spin; a slow
     // spin (drag damps the rocking) may see it die out both ways, though faster spins favour
-    // one (a physicist's trial: at --spin 0 "none" read as the body's, where 5 rad/s gives ccw).
+    // one (at --spin 0 "none" would read as the body's, where 5 rad/s gives ccw).
     const sim::Direction faster = sim::preferredDirection(model, std::max(5.0, std::abs(spin)));
     if (faster == sim::Direction::None)
       std::fprintf(out,
@@ -117,8 +118,7 @@ void printTheory(std::FILE* out, const sim::Model& model, double spin, bool give
                  "forecasts one spun N rad/s)\n");
     return;
   }
-  // --spin 0: nothing to reverse (it read "outside the averaged theory's range ... = inf": a
-  // student's trial).
+  // --spin 0: nothing to reverse (not "outside the averaged theory's range ... = inf").
   if (spin == 0) {
     std::fprintf(out, "first reversal   none: not spun (--spin 0), there is no spin to reverse\n");
     return;
@@ -185,15 +185,15 @@ void printText(std::FILE* out, const std::string& scene, const sim::Model& model
     std::fprintf(out,
                  "WARNING: body.dents cut nothing: they lie wholly outside the body, which is "
                  "the plain paraboloid (move body.dents.at within its top, or remove them)\n");
-  // How much of the body the dents take (a teacher's deeper dents took 39 % of it, cutting
-  // notches through the body, and only --json said so).
+  // How much of the body the dents take (deep dents can take 39 % of it, cutting notches
+  // through the body).
   else if (cut)
     std::fprintf(
         out, "dents            cut %.3g %% of the paraboloid's volume%s\n", 100 * *cut,
         *cut > 0.25 ? " (deep: see the body's shape with `rattleback still --view above`)" : "");
   std::fprintf(out, "mass             %g kg\n", m.mass);
-  // Its size (a teacher's trial: nothing said how long a body the paraboloid's numbers make),
-  // and a mass no material gives it (59 for 0.059 kg; lengths in cm read as m).
+  // Its size (the paraboloid's numbers do not say how long a body they make), and a mass no
+  // material gives it (59 for 0.059 kg; lengths in cm read as m).
   std::fprintf(out, "size             %s (length × width × height: the box that holds it)\n",
                tasks::sizeText(tasks::bodySize(*model.body), unit).c_str());
   if (const auto implausible = tasks::implausibleMass(*model.body, unit))
@@ -217,16 +217,16 @@ void printText(std::FILE* out, const std::string& scene, const sim::Model& model
                "misalignment     %+.4f deg (least-inertia axis from the bottom's long axis, "
                "counter-clockwise seen from above)\n",
                m.misalignment_deg);
-  if (model.contact.model == sim::ContactModel::Rolling)
+  if (sim::heldOnFloor(model.contact.model))
     std::fprintf(out,
                  "contact          rolling: no contact spring, so no step limit from the floor\n");
-  else if (model.contact.model == sim::ContactModel::Auto && sim::isAdaptive(model.integrator))
+  else if (sim::contactTraits(model.contact.model).switches && sim::isAdaptive(model.integrator))
     std::fprintf(out,
                  "contact          auto: rolls while the floor can give the force rolling needs, "
                  "else slides (smooth: stiffest mode %.4g rad/s, damping ratio %.3g); the "
                  "adaptive integrator chooses its steps\n",
                  stability.omega, stability.zeta);
-  else if (model.contact.model == sim::ContactModel::Auto)
+  else if (sim::contactTraits(model.contact.model).switches)
     std::fprintf(out,
                  "contact          auto: rolls while the floor can give the force rolling needs, "
                  "else slides (smooth: stiffest mode %.4g rad/s, damping ratio %.3g) in steps of "

@@ -15,6 +15,7 @@
 #include "app/plot.hpp"
 #include "app/progress.hpp"
 #include "sim/analysis.hpp"
+#include "sim/contact_model.hpp"
 #include "sim/rollout.hpp"
 #include "tasks/analysis.hpp"
 #include "tasks/check.hpp"
@@ -74,7 +75,7 @@ void printSummary(std::FILE* out, const SimulateArgs& args, const sim::Model& mo
     said("nothing_moves", "                (%s)\n");
     said("sign_changed_uncounted", "                (%s)\n");
   }
-  if (model.contact.model == sim::ContactModel::Auto) {
+  if (sim::contactTraits(model.contact.model).switches) {
     std::fprintf(out, "contact modes   %s",
                  rb::counted(run.switches, "switch", "switches").c_str());
     for (const auto& [t, mode] : run.mode_changes)
@@ -151,8 +152,7 @@ rb::Status writePlots(const std::string& dir, const std::string& stem,
       series("kinetic", [](const sim::Telemetry& t) { return 1e3 * t.kinetic; }),
       series("potential M g z", [](const sim::Telemetry& t) { return 1e3 * t.potential; }),
       series("elastic (floor springs)", [](const sim::Telemetry& t) { return 1e3 * t.elastic; })};
-  // Rolling has no floor springs: no line of zeros in the legend as if it had (a teacher's
-  // trial).
+  // Rolling has no floor springs: no line of zeros in the legend as if it had.
   if (std::all_of(samples.begin(), samples.end(),
                   [](const sim::Telemetry& t) { return t.elastic == 0; }))
     energy.series.pop_back();
@@ -234,8 +234,8 @@ std::vector<tasks::OutputEntry> outputsOf(const SimulateArgs& args, const std::s
 
 namespace {
 
-// --plot naming the table itself would make a folder where the table goes (a new user's trial:
-// `-o a.csv --plot a.csv`).
+// --plot naming the table itself would make a folder where the table goes
+// (`-o a.csv --plot a.csv`).
 rb::Status checkPlotIsNotTheTable(const std::string& plot_dir, const std::string& csv) {
   if (plot_dir.empty()) return {};
   std::error_code ec, ec2;
@@ -260,9 +260,8 @@ int notWritten(const SimulateArgs& args, const tasks::Outcome& outcome) {
   return kDiverged;
 }
 
-// A stopped run's line, then what is odd about the body, which may be why (a researcher's
-// trial: lengths in metres typed for cm made a 28 m body of 0.2 kg that tipped onto its rim,
-// and only analyze said the body was lighter than air).
+// A stopped run's line, then what is odd about the body, which may be why (lengths in metres
+// typed for cm make a 28 m body of 0.2 kg that tips onto its rim, lighter than air).
 int stopped(const SimulateArgs& args, const tasks::SimulateResult& run, const sim::Model& model) {
   const int status = notWritten(args, run.outcome);
   if (run.outcome.ending == tasks::Ending::Interrupted) return status;
@@ -342,10 +341,10 @@ int simulateCommand(const SimulateArgs& args) {
   if (!args.plot_dir.empty())
     if (auto e = writePlots(args.plot_dir, plotStem(args, csv), kept, run.summary.reversals); !e) {
       // Ctrl-C while the figures are drawn: the table stands, the figures not drawn go unsaid
-      // as a failure (it exited 2 with "gnuplot failed: "; a teacher's trial).
+      // as a failure (not exit 2 with "gnuplot failed: ").
       if (interruptSignal() != 0) {
-        // Listed in the folder's manifest as written (it was not: the report then placed it by
-        // its name alone; a teacher's trial).
+        // Listed in the folder's manifest as written (else the report places it by its name
+        // alone).
         record({outputsOf(args, csv, tasks::madeFrom(loaded->scene)).front()});
         // Said with -q too, as every command's interruption is (it said nothing).
         std::cerr << "interrupted while drawing the figures; " << csv << " is written\n";
