@@ -122,7 +122,7 @@ std::optional<rb::Error> checkBody(const BodySpec& b) {
 std::optional<rb::Error> checkContact(const ContactSpec& c) {
   if (!rb::parseName<ContactModel>(c.model))
     return wrongWord<ContactModel>("contact.model", c.model);
-  if (c.model != "rolling")
+  if (!heldOnFloor(*rb::parseName<ContactModel>(c.model)))  // the constraint needs no spring
     if (auto e = needPositive("contact.stiffness", c.stiffness)) return e;
   if (auto e = needNonNegative("contact.damping", c.damping)) return e;
   if (auto e = needNonNegative("contact.friction", c.friction)) return e;
@@ -187,7 +187,8 @@ std::optional<rb::Error> checkRest(const SceneSpec& spec) {
       return rb::Error{"initial.tilt", "must lie within ±180 degrees, not " + rb::show(tilt)};
   }
   if (auto e = needNonNegative("initial.height", spec.initial.height)) return e;
-  if (spec.initial.height > 0 && spec.contact.model == "rolling")  // auto starts sliding
+  const std::optional<ContactModel> model = rb::parseName<ContactModel>(spec.contact.model);
+  if (spec.initial.height > 0 && model && heldOnFloor(*model))  // auto starts sliding
     return rb::Error{"initial.height",
                      "must be 0 with contact.model rolling (it keeps the body on the floor); "
                      "drop it with smooth or points"};
