@@ -15,6 +15,7 @@
 #include "app/plot.hpp"
 #include "app/progress.hpp"
 #include "sim/analysis.hpp"
+#include "sim/contact_model.hpp"
 #include "sim/rollout.hpp"
 #include "tasks/analysis.hpp"
 #include "tasks/check.hpp"
@@ -74,7 +75,7 @@ void printSummary(std::FILE* out, const SimulateArgs& args, const sim::Model& mo
     said("nothing_moves", "                (%s)\n");
     said("sign_changed_uncounted", "                (%s)\n");
   }
-  if (model.contact.model == sim::ContactModel::Auto) {
+  if (sim::contactTraits(model.contact.model).switches) {
     std::fprintf(out, "contact modes   %s",
                  rb::counted(run.switches, "switch", "switches").c_str());
     for (const auto& [t, mode] : run.mode_changes)
@@ -233,8 +234,8 @@ std::vector<tasks::OutputEntry> outputsOf(const SimulateArgs& args, const std::s
 
 namespace {
 
-// --plot naming the table itself would make a folder where the table goes (`-o a.csv --plot
-// a.csv`).
+// --plot naming the table itself would make a folder where the table goes
+// (`-o a.csv --plot a.csv`).
 rb::Status checkPlotIsNotTheTable(const std::string& plot_dir, const std::string& csv) {
   if (plot_dir.empty()) return {};
   std::error_code ec, ec2;
@@ -341,11 +342,11 @@ int simulateCommand(const SimulateArgs& args) {
     return fail(e);
   if (!args.plot_dir.empty())
     if (auto e = writePlots(args.plot_dir, plotStem(args, csv), kept, run.summary.reversals); !e) {
-      // Ctrl-C while the figures are drawn: the table stands, the figures not drawn go unsaid as a
-      // failure (it exited 2 with "gnuplot failed: ").
+      // Ctrl-C while the figures are drawn: the table stands, the figures not drawn go unsaid
+      // as a failure (not exit 2 with "gnuplot failed: ").
       if (interruptSignal() != 0) {
-        // Listed in the folder's manifest as written (it was not: the report then placed it by its
-        // name alone).
+        // Listed in the folder's manifest as written (else the report places it by its name
+        // alone).
         record({outputsOf(args, csv, tasks::madeFrom(loaded->scene)).front()});
         // Said with -q too, as every command's interruption is (it said nothing).
         tell(Tone::Error, "interrupted while drawing the figures; " + csv + " is written");

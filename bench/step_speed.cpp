@@ -8,6 +8,7 @@
 
 #include "scene/sweep.hpp"
 #include "sim/compile.hpp"
+#include "sim/contact_model.hpp"
 #include "sim/initial.hpp"
 #include "sim/rollout.hpp"
 #include "sim/step.hpp"
@@ -31,7 +32,7 @@ void stepScene(benchmark::State& state, const char* scene, const char* model,
     benchmark::DoNotOptimize(s.x_world);
   }
   // Only the points model visits the bottom points.
-  state.SetLabel(m.contact.model == sim::ContactModel::Points
+  state.SetLabel(sim::contactTraits(m.contact.model).touch == sim::Touch::Grid
                      ? std::string(model) + ", " + std::to_string(m.body->bottom.size()) + " points"
                      : std::string(model));
 }
@@ -44,7 +45,7 @@ BENCHMARK_CAPTURE(stepScene, default_rolling_symplectic, "rattleback.yaml", "rol
                   "symplectic");
 BENCHMARK_CAPTURE(stepScene, ellipsoid_rolling_rk4, "kane-levinson.yaml", "rolling", "rk4");
 
-// Preparing another run of a compiled body (issue: ≤ 0.05 ms): a copy of the per-run value
+// Preparing another run of a compiled body (aim: ≤ 0.05 ms): a copy of the per-run value
 // (the body is shared, not copied) and its initial state.
 void prepareRun(benchmark::State& state, const char* scene) {
   auto loaded = tasks::loadScene(std::string(RATTLEBACK_SOURCE_DIR "/scenes/") + scene, {});
@@ -65,7 +66,7 @@ void prepareRun(benchmark::State& state, const char* scene) {
   state.SetLabel(std::to_string(census.bottom + census.top) + " surface points shared");
 }
 
-// What a sweep does for each run besides integrating (issue: ≤ 0.1 ms): build its scene from
+// What a sweep does for each run besides integrating (aim: ≤ 0.1 ms): build its scene from
 // the base with the axes' values put in, make the run of the shared body, start the rollout,
 // and take the final sample. The body is compiled once, outside the loop, as the sweep does.
 void sweepRowOverhead(benchmark::State& state) {

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "render/frame.hpp"  // the name table of video.view (header only: no render library)
+#include "sim/contact_model.hpp"
 #include "sim/model.hpp"
 #include "util/assets.hpp"
 
@@ -443,7 +444,7 @@ bool requiredIn(const Key& key, const sim::SceneSpec& spec) {
       return spec.body.shape == "ellipsoid";
     case Need::UnlessRolling: {
       const auto model = rb::parseName<sim::ContactModel>(spec.contact.model);
-      return model && *model != sim::ContactModel::Rolling;
+      return model && !sim::heldOnFloor(*model);
     }
   }
   return false;

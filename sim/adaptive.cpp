@@ -6,6 +6,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "sim/contact_model.hpp"
 #include "sim/rolling.hpp"
 #include "sim/step.hpp"
 
@@ -19,7 +20,7 @@ namespace odeint = boost::numeric::odeint;
 // (≤ 1, Odeint's norm), the next h grows by safety · err^−(1/5 − 0.75β) · err_prev^β, within
 // 0.2 … 10 and never after a rejection; a rejected step shrinks by safety · err^−(1/5 − 0.75β),
 // at most 5×. The embedded error is O(h⁵), so its exponent is 1/5 both ways. Odeint's own
-// controller (the issue measured ~30 % of tries rejected on Kane & Levinson) grows up to 5×
+// controller (~30 % of tries rejected on Kane & Levinson) grows up to 5×
 // whenever err < ½, shrinks by err^−1/3, and keeps no memory of the last error.
 class PiStepAdjuster {
  public:
@@ -224,8 +225,7 @@ class Integration final : public AdaptiveStepper::Impl {
 };
 
 std::unique_ptr<AdaptiveStepper::Impl> integrationOf(const Model& model, const State& start) {
-  if (model.contact.model == ContactModel::Rolling)
-    return std::make_unique<Integration<Rolling>>(model, start);
+  if (heldOnFloor(model.contact.model)) return std::make_unique<Integration<Rolling>>(model, start);
   return std::make_unique<Integration<Free>>(model, start);
 }
 

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "sim/analysis.hpp"
+#include "sim/contact_model.hpp"
 #include "sim/continuum.hpp"
 #include "sim/initial.hpp"
 #include "sim/stability.hpp"
@@ -23,7 +24,7 @@ std::optional<rb::Error> needFinite(const std::string& key, double v) {
   return rb::Error{key, "must be a finite number, not " + show(v)};
 }
 // A word that is none of its key's choices, with the nearest when it is a typo of one ("must
-// be points, smooth, rolling or auto, not 'roling'; did you mean rolling?": a teacher's trial).
+// be points, smooth, rolling or auto, not 'roling'; did you mean rolling?").
 template <typename E>
 rb::Error wrongWord(const char* key, const std::string& given) {
   const std::optional<std::string> nearest = rb::nearestWord(given, rb::namesOf<E>());
@@ -121,7 +122,7 @@ std::optional<rb::Error> checkBody(const BodySpec& b) {
 std::optional<rb::Error> checkContact(const ContactSpec& c) {
   if (!rb::parseName<ContactModel>(c.model))
     return wrongWord<ContactModel>("contact.model", c.model);
-  if (c.model != "rolling")
+  if (!heldOnFloor(*rb::parseName<ContactModel>(c.model)))  // the constraint needs no spring
     if (auto e = needPositive("contact.stiffness", c.stiffness)) return e;
   if (auto e = needNonNegative("contact.damping", c.damping)) return e;
   if (auto e = needNonNegative("contact.friction", c.friction)) return e;
@@ -186,7 +187,8 @@ std::optional<rb::Error> checkRest(const SceneSpec& spec) {
       return rb::Error{"initial.tilt", "must lie within ±180 degrees, not " + rb::show(tilt)};
   }
   if (auto e = needNonNegative("initial.height", spec.initial.height)) return e;
-  if (spec.initial.height > 0 && spec.contact.model == "rolling")  // auto starts sliding
+  const std::optional<ContactModel> model = rb::parseName<ContactModel>(spec.contact.model);
+  if (spec.initial.height > 0 && model && heldOnFloor(*model))  // auto starts sliding
     return rb::Error{"initial.height",
                      "must be 0 with contact.model rolling (it keeps the body on the floor); "
                      "drop it with smooth or points"};
@@ -197,14 +199,13 @@ std::optional<rb::Error> checkRest(const SceneSpec& spec) {
 // A fixed step must resolve the body's own rocking where it rolls, as it must the floor's
 // stiffness for the penalty models: at least kStepsPerRocking steps a period of its fastest
 // mode, at rest or at the scene's spin (the linearised rolling model, docs/physics.md P8).
-// Issue 26: --dt 0.05 on a body rocking at 7 Hz (a third of a period a step) ran and reported
-// no reversal, where at 1e-4 s it reversed at 1.584 s.
+// (--dt 0.05 on a body rocking at 7 Hz, a third of a period a step, runs and reports
+// no reversal, where at 1e-4 s it reverses at 1.584 s.)
 constexpr double kStepsPerRocking = 8;
 
 std::optional<rb::Error> checkRockingStep(const Model& model) {
-  const bool rolls =
-      model.contact.model == ContactModel::Rolling || model.contact.model == ContactModel::Auto;
-  if (!rolls || isAdaptive(model.integrator)) return std::nullopt;
+  if (!contactTraits(model.contact.model).rolls || isAdaptive(model.integrator))
+    return std::nullopt;
   double omega = 0;  // rad/s: the fastest rocking
   for (double spin : {0.0, model.initial.spin})
     for (const auto& lambda : linearise(model, spin).eigenvalues)
@@ -225,8 +226,7 @@ std::optional<rb::Error> checkRockingStep(const Model& model) {
 Integrator integratorOf(const SimulationSpec& sim, ContactModel contact) {
   if (auto named = rb::parseName<Integrator>(sim.integrator)) return *named;
   if (!std::isnan(sim.tolerance)) return Integrator::Dopri5;
-  const bool rolls = contact == ContactModel::Rolling || contact == ContactModel::Auto;
-  return rolls ? Integrator::Rk4 : Integrator::Symplectic;
+  return contactTraits(contact).rolls ? Integrator::Rk4 : Integrator::Symplectic;
 }
 
 // Surface points and contact points from the geometric frame to the CM's.
@@ -294,7 +294,7 @@ rb::Result<Body> buildBody(const BodySpec& b, double unit, MassSource source, bo
     dents =
         Dents{b.dents->scale, b.dents->at[0] * unit, b.dents->at[1] * unit, b.dents->inset * unit};
   // Dents that leave a sliver (a scale typed 100 for 0.45): the body is found without them
-  // (a teacher's trial: the message asked for a finer grid).
+  // (a finer grid, which a message could ask for, would not help).
   if (dents && !gridHasTwoLevels(shape, dents, grid) && gridHasTwoLevels(shape, std::nullopt, grid))
     return rb::Error{"body.dents.scale",
                      "cuts the body away: with the dents the grid finds fewer than two levels of "
@@ -323,8 +323,8 @@ rb::Result<Body> buildBody(const BodySpec& b, double unit, MassSource source, bo
     body.mass_properties = gridMassProperties(shape, dents, grid, b.mass);
   }
   // Measured from the bottom's long curvature axis, which q turns from y: a skewed body without
-  // dents is a symmetric one turned, its inertia axes on its curvature axes (a physicist's
-  // trial: q 0.05 read +6.0° against y, where growth rates and runs showed none).
+  // dents is a symmetric one turned, its inertia axes on its curvature axes (measured from y,
+  // q 0.05 would read +6.0°, where growth rates and runs show no misalignment).
   body.mass_properties.misalignment_deg =
       misalignmentDeg(body.mass_properties, shape.longAxisAngle());
   body.surface.kind = Surface::Kind::Paraboloid;
@@ -388,11 +388,10 @@ rb::Result<Model> compileRun(const SceneSpec& spec, std::shared_ptr<const Body> 
   model.gravity = spec.gravity;
   model.integrator = integratorOf(spec.simulation, model.contact.model);
   // Semi-implicit Euler keeps a penalty floor's energy, not the rolling model's: rolling
-  // without slipping is non-holonomic, and the method is not symplectic for it (issue 26:
-  // Kane & Levinson without dissipation lost 17.9 % of their energy in 60 s at 0.1 ms and
-  // reversed at the wrong times).
-  if (model.integrator == Integrator::Symplectic &&
-      (model.contact.model == ContactModel::Rolling || model.contact.model == ContactModel::Auto))
+  // without slipping is non-holonomic, and the method is not symplectic for it (Kane &
+  // Levinson without dissipation lose 17.9 % of their energy in 60 s at 0.1 ms and reverse at
+  // the wrong times).
+  if (model.integrator == Integrator::Symplectic && contactTraits(model.contact.model).rolls)
     return rb::Error{"simulation.integrator",
                      "symplectic does not keep the energy of contact.model " +
                          std::string(rb::nameOf(model.contact.model)) +
@@ -413,8 +412,8 @@ rb::Result<Model> compileRun(const SceneSpec& spec, std::shared_ptr<const Body> 
   const ContactStability stability = contactStability(model);
   // Refused above the step a run completes at (kRunMargin of the linear limit at rest), which
   // the message names: between the two, rk4 ran on with exit 0 and symplectic gained 11 % of
-  // its energy by 0.25 s (a researcher's trial; the margin is measured in sim/stability.hpp).
-  if (model.contact.model != ContactModel::Auto && model.dt > stability.run_step) {
+  // its energy by 0.25 s (the margin is measured in sim/stability.hpp).
+  if (contactTraits(model.contact.model).penalty_at_run_step && model.dt > stability.run_step) {
     std::ostringstream msg;
     msg << model.dt << " s is too large for contact.stiffness " << c.stiffness << " N/m with "
         << rb::nameOf(model.integrator) << ": the stiffest contact mode (" << stability.omega

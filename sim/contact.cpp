@@ -58,6 +58,8 @@ void pressPoints(const Contact& c, const Kinematics& k, const ContactPoints& pts
   }
 }
 
+}  // namespace
+
 ContactLoad pointContact(const Model& model, const Kinematics& k) {
   ContactLoad load;
   pressPoints(model.contact, k, model.body->bottom, load);
@@ -75,13 +77,6 @@ ContactLoad smoothContact(const Model& model, const Kinematics& k) {
   const double z = k.x_world.z() + r.z();
   if (z < 0) pressPoint(model.contact, k, r, z, load);
   return load;
-}
-
-}  // namespace
-
-ContactLoad penaltyContact(const Model& model, const Kinematics& k) {
-  return model.contact.model == ContactModel::Smooth ? smoothContact(model, k)
-                                                     : pointContact(model, k);
 }
 
 }  // namespace sim

@@ -1,4 +1,4 @@
-// Floor contact forces (SPEC "Contact and friction"; seed §3.3, eq. 31).
+// Floor contact forces of the penalty models (docs/physics.md P4; seed §3.3, eq. 31).
 #pragma once
 
 #include <Eigen/Dense>
@@ -27,11 +27,13 @@ struct ContactLoad {
   int contacts = 0;                                        ///< points below the floor
 };
 
-/// The floor's load for model.contact.model `points` or `smooth` (penalty contact).
-/// A point below the floor (depth d = −z > 0) gets the normal force N = max(0, k d − c v_n)
-/// and friction F_t = −μ N v_t/|v_t| (coulomb, seed eq. 31) or −μ N v_t / sqrt(|v_t|² + ε²)
-/// (regularized). `points` applies it to every bottom-surface grid point below the floor
-/// (only those are visited); `smooth` to the single lowest point of the smooth surface.
-ContactLoad penaltyContact(const Model& model, const Kinematics& k);
+/// Penalty contact (seed eq. 31): a point below the floor (depth d = −z > 0) gets the normal
+/// force N = max(0, k d − c v_n) and friction F_t = −μ N v_t/|v_t| (coulomb) or
+/// −μ N v_t / sqrt(|v_t|² + ε²) (regularized).
+/// contact.model points: every bottom-surface grid point below the floor (only those are
+/// visited), and the top's when its bounding box reaches the floor.
+ContactLoad pointContact(const Model& model, const Kinematics& k);
+/// contact.model smooth: the single lowest point of the smooth surface.
+ContactLoad smoothContact(const Model& model, const Kinematics& k);
 
 }  // namespace sim

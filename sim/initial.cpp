@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "sim/contact_model.hpp"
+
 namespace sim {
 namespace {
 
@@ -34,10 +36,10 @@ double springForce(const Model& model, const Eigen::Matrix3d& R, double z_cm) {
 
 double restingHeight(const Model& model, const Eigen::Matrix3d& R) {
   // Smooth contact: one spring at the lowest point carries the weight, depth M g / k.
-  if (model.contact.model != ContactModel::Points) {
+  const Touch touch = contactTraits(model.contact.model).touch;
+  if (touch != Touch::Grid) {
     const Eigen::Vector3d low = R * lowestSurfacePoint(*model.body, -R.row(2).transpose());
-    const bool spring =
-        model.contact.model == ContactModel::Smooth || model.contact.model == ContactModel::Auto;
+    const bool spring = touch == Touch::Spring;
     const double depth = spring ? model.body->mass * model.gravity / model.contact.stiffness : 0.0;
     return -low.z() - depth;
   }
@@ -63,7 +65,7 @@ State initialState(const Model& model) {
   const Eigen::Vector3d w_world = init.spin * R.col(2);
   s.L_world = R * model.body->inertia * R.transpose() * w_world;
   if (init.height > 0) {  // released in the air, spinning, the CM at rest
-    const double touching = model.contact.model == ContactModel::Points
+    const double touching = contactTraits(model.contact.model).touch == Touch::Grid
                                 ? -lowestPoint(model, R).z()
                                 : -(R * lowestSurfacePoint(*model.body, -R.row(2).transpose())).z();
     s.x_world = Eigen::Vector3d(0, 0, touching + init.height);

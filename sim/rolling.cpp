@@ -70,6 +70,28 @@ RollingRates rollingRates(const Model& model, const Eigen::Quaterniond& q,
   return out;
 }
 
+ContactLoad rollingContact(const Model& model, const Kinematics& k,
+                           Eigen::Vector3d& r_contact_world) {
+  // The floor pushes with whatever force keeps the contact point still.
+  const RollingMotion motion = rollingMotion(model, k);
+  r_contact_world = motion.r_world;
+  ContactLoad load;
+  load.force_world = motion.force_world;
+  load.torque_world = motion.r_world.cross(motion.force_world);
+  load.normal_force = motion.force_world.z();
+  load.contacts = 1;
+  if (model.rolling_depth > 0)  // auto: the spring's compression rolling holds (no k otherwise)
+    load.elastic_energy = 0.5 * model.contact.stiffness * model.rolling_depth * model.rolling_depth;
+  return load;
+}
+
+double rollingEnergy(const Model& model, const State& s, const Eigen::Vector3d& w_world) {
+  const double M = model.body->mass, depth = model.rolling_depth;
+  return 0.5 * M * s.v_world.squaredNorm() + 0.5 * w_world.dot(s.L_world) +
+         M * model.gravity * s.x_world.z() +
+         (depth > 0 ? 0.5 * model.contact.stiffness * depth * depth : 0.0);
+}
+
 void enforceRolling(const Model& model, State& s) {
   const Eigen::Matrix3d R = s.q.toRotationMatrix();
   enforceRolling(model, s, R, angularVelocity(*model.body, R, s.L_world));

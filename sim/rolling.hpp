@@ -1,5 +1,5 @@
 // Rolling without slipping on the floor: the classic nonholonomic rattleback model (Walker
-// 1896; Bondi 1986; Kane & Levinson 1982), SPEC "Contact and friction". The body's smooth
+// 1896; Bondi 1986; Kane & Levinson 1982), docs/physics.md P4. The body's smooth
 // surface always touches the floor at its lowest point, which does not slide; the contact
 // force is whatever the constraint needs.
 #pragma once
@@ -21,6 +21,17 @@ struct RollingMotion {
 /// where ṙ_body is how the contact point moves over the surface as the body turns
 /// (derived from Newton and Euler about the CM with the constraint differentiated once).
 RollingMotion rollingMotion(const Model& model, const Kinematics& k);
+
+/// The floor's load under rolling: the force the constraint needs at its contact point,
+/// r_contact_world (CM → contact, world axes, m, set here); one contact. Under auto the
+/// spring's compression that rolling holds (model.rolling_depth) keeps its ½ k δ² as elastic
+/// energy.
+ContactLoad rollingContact(const Model& model, const Kinematics& k,
+                           Eigen::Vector3d& r_contact_world);
+
+/// The total energy of a rolling state, J, with ω = w_world (rad/s, world axes) at hand: the
+/// body on the floor and no spring but auto's held one, so no contact solve is needed.
+double rollingEnergy(const Model& model, const State& s, const Eigen::Vector3d& w_world);
 
 /// What an adaptive run integrates under rolling: the constraint fixes the CM's height and
 /// velocity, so the state reduces to the CM's place on the floor, the attitude and ω in body

@@ -1,7 +1,7 @@
-// A run the caller pulls (SPEC "Data flow"): a Rollout advances a Model from a state, step by
-// step, only as far as the caller asks, and gives the state at any time inside its last step —
-// so frames and telemetry samples fall at exact times whatever the step. It watches the run as
-// it goes: spin reversals, NaN or infinity, energy from nowhere, a rolling body on its rim, and
+// A run the caller pulls (docs/design.md "Data flow"): a Rollout advances a Model from a state,
+// step by step, only as far as the caller asks, and gives the state at any time inside its last
+// step — so frames and telemetry samples fall at exact times whatever the step. It watches the run
+// as it goes: spin reversals, NaN or infinity, energy from nowhere, a rolling body on its rim, and
 // a stop request. It makes no threads and calls nothing back.
 #pragma once
 
@@ -12,8 +12,10 @@
 #include <string>
 #include <vector>
 
+#include "sim/auto_switch.hpp"
 #include "sim/model.hpp"
 #include "sim/reversals.hpp"
+#include "sim/step_interpolant.hpp"
 #include "sim/telemetry.hpp"
 #include "sim/watchdog.hpp"
 
@@ -64,7 +66,7 @@ struct RunSummary {
 
 class Rollout {
  public:
-  /// Starts `model` from its initial state (SPEC "Initial state").
+  /// Starts `model` from its initial state (docs/physics.md P5).
   explicit Rollout(Model model);
   /// Starts `model` from `start` (its t and step are kept).
   Rollout(Model model, const State& start);
@@ -110,55 +112,39 @@ class Rollout {
   /// Feeds the watchdog the end of the last step (its rotation R and ω w, world axes);
   /// records its stop.
   void watch(const Eigen::Matrix3d& R, const Eigen::Vector3d& w);
-  /// The state at t inside the last step; `on_constraint` (when given) says whether it is on
-  /// the rolling constraint already (the adaptive stepper's rolling layout answered).
-  State interpolate(double t, bool* on_constraint = nullptr) const;
-  /// The cubic Hermite interpolant between a and b with their rates (packed as the state).
-  State hermite(const State& a, const Eigen::Matrix<double, 13, 1>& rates_a, const State& b,
-                const Eigen::Matrix<double, 13, 1>& rates_b, double t) const;
   void locateReversal(double previous_spin, double spin);
-  void startAuto();
-  void advanceSmooth(State& s, double t_end);
-  void countStuck(const State& s, double h);
+  /// Auto: after each step, carries out a change of mode the switch calls for.
   void switchModes();
-  void changeMode(State s, double t_switch, Model next);
-  /// The mode a time of the last step was integrated in: under auto, the one before a switch
-  /// inside the step for times before it (issue 26), else the active one.
-  const Model& modeAt(double t) const;
+  /// Carries out a change found in the last step: fixed steps finish the step in the new mode;
+  /// adaptive ones restart there.
+  void changeMode(ModeChange change);
+  /// Steps that this many steps apart are watched (about once per simulated millisecond;
+  /// every step when adaptive).
+  std::int64_t checkEvery() const;
   void countSteps() const;  ///< the summary's steps, tilt and evaluations, as they are now
+
+  /// Adaptive: what the steppers before the current one did (a change of mode restarts it).
+  struct EarlierSteppers {
+    std::int64_t evaluations = 0, rejected = 0;
+    std::int64_t start_step = 0;  ///< the step the current stepper started at
+  };
 
   Model model_;   ///< the run as compiled
   Model active_;  ///< the model being integrated: model_, or under auto its rolling or smooth mode
-  State previous_, current_;
+  State previous_, current_;   ///< the last step's ends
+  StepInterpolant last_step_;  ///< states between them
   std::unique_ptr<AdaptiveStepper> adaptive_;
+  EarlierSteppers earlier_;
+  std::optional<AutoSwitch> auto_;  ///< contact.model auto: when its mode changes
   std::stop_source stop_;
   std::stop_token external_;
   mutable RunSummary summary_;  ///< `last` is filled in when asked for (summary())
-  double reached_ = 0;          ///< the time of summary().last, s
-  mutable bool last_filled_ = true;
-  // Rates at the ends of the last step for the Hermite interpolant, computed when first needed.
-  mutable bool have_rates_ = false;
-  mutable Eigen::Matrix<double, 13, 1> rates_previous_, rates_current_;
+  /// The time of summary().last, s, while it is still to be sampled.
+  mutable std::optional<double> last_due_s_;
   ReversalDetector reversals_{0};  ///< the reversal rule, fed each step's ends
   double spin_ = 0;                ///< n = ω·ẑ of current_, rad/s
   double min_cos_tilt_ = 1;        ///< smallest cosine of the tilt so far
   Watchdog watchdog_;              ///< NaN, energy from nowhere, the rim; and the last flight
-  std::int64_t check_every_ = 1;
-  // Auto: how long the contact point has stuck while sliding; adaptive counts of earlier steppers.
-  double stuck_for_ = 0;
-  bool hermite_ = false;  ///< adaptive: interpolate the last step by Hermite (a switch ended it)
-  std::int64_t evaluations_before_ = 0, rejected_before_ = 0, stepper_start_ = 0;
-  /// Auto: rolling takes over at the end of the last step, from this state (in rolling's
-  /// terms), when the next step starts: until then the step just ended is the sliding one it
-  /// was, sampled as such (issue 26: its samples were labelled rolling and dipped in energy).
-  struct HandBack {
-    Model rolling;
-    State start;
-  };
-  std::optional<HandBack> hand_back_;
-  Model before_switch_;  ///< auto: the mode before the last switch
-  State before_end_;     ///< and where its step ended before the switch cut it
-  double switched_at_ = -std::numeric_limits<double>::infinity();  ///< the switch's time, s
 };
 
 /// Sample times of a run of `duration` s at `rate` samples per simulated second:

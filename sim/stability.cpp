@@ -5,6 +5,7 @@
 #include <limits>
 #include <vector>
 
+#include "sim/contact_model.hpp"
 #include "sim/initial.hpp"
 
 namespace sim {
@@ -45,7 +46,7 @@ bool acceptable(Integrator integrator, double omega, double zeta, double h, doub
 double stiffestMode(const Model& model, const Eigen::Matrix3d& R) {
   const double z_cm = restingHeight(model, R);
   std::vector<Eigen::Vector3d> springs;  // world axes, from the CM
-  if (model.contact.model == ContactModel::Smooth || model.contact.model == ContactModel::Auto) {
+  if (contactTraits(model.contact.model).touch == Touch::Spring) {
     springs.push_back(R * lowestSurfacePoint(*model.body, -R.row(2).transpose()));
   } else {
     for (const ContactPoints* p : {&model.body->bottom, &model.body->top})
@@ -72,7 +73,7 @@ double stepAmplification(Integrator integrator, double omega, double zeta, doubl
   // λ² − tλ + det: real roots t/2 ± √disc, or a complex pair of modulus √det, with the
   // discriminant written as ((a − e)/2)² + bc, free of the cancellation in t²/4 − det that at
   // small steps turns the oscillator's complex pair real. (Eigen's general eigensolver here made
-  // this the slowest file to compile: 21 s and 1 GB, now 11 s, issue 27.)
+  // this the slowest file to compile: 21 s and 1 GB, now 11 s.)
   const Eigen::Matrix2d A = stepMatrix(integrator, omega, zeta, h);
   const double half_difference = (A(0, 0) - A(1, 1)) / 2;
   const double disc = half_difference * half_difference + A(0, 1) * A(1, 0);
@@ -82,7 +83,7 @@ double stepAmplification(Integrator integrator, double omega, double zeta, doubl
 
 ContactStability contactStability(const Model& model) {
   // Rolling has no contact spring: only the integrator's accuracy limits the step.
-  if (model.contact.model == ContactModel::Rolling)
+  if (heldOnFloor(model.contact.model))
     return {0, 0, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   // The pose it starts nearest to: upright, or upside down on its top (a flat top carries
   // many more points than the bottom, hence much stiffer modes). A body that turns over

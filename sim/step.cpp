@@ -1,6 +1,6 @@
 #include "sim/step.hpp"
 
-#include "sim/rolling.hpp"
+#include "sim/contact_model.hpp"
 
 namespace sim {
 namespace {
@@ -15,12 +15,8 @@ Eigen::Vector4d quaternionRate(const Eigen::Quaterniond& q, const Eigen::Vector3
 Rates ratesOf(const Model& model, const State& s) {
   const Kinematics k = kinematicsOf(model, s);
   const Load load = loadsOn(model, k);
-  // Rolling: the CM moves as the constraint says, v = −ω × r.
-  const Eigen::Vector3d v = model.contact.model == ContactModel::Rolling
-                                ? Eigen::Vector3d(-k.w_world.cross(load.r_contact_world))
-                                : s.v_world;
-  return {v, load.force_world / model.body->mass, quaternionRate(s.q, k.w_world),
-          load.torque_world};
+  return {cmVelocity(model, s, k, load), load.force_world / model.body->mass,
+          quaternionRate(s.q, k.w_world), load.torque_world};
 }
 
 State advanced(const State& s, const Rates& r, double h) {
@@ -74,20 +70,7 @@ void rk4Step(const Model& model, State& s, double h) {
 
 Load loadsOn(const Model& model, const Kinematics& k) {
   Load load;
-  if (model.contact.model == ContactModel::Rolling) {
-    // The floor pushes with whatever force keeps the contact point still.
-    const RollingMotion motion = rollingMotion(model, k);
-    load.r_contact_world = motion.r_world;
-    load.contact.force_world = motion.force_world;
-    load.contact.torque_world = motion.r_world.cross(motion.force_world);
-    load.contact.normal_force = motion.force_world.z();
-    load.contact.contacts = 1;
-    if (model.rolling_depth > 0)  // auto: the spring's compression rolling holds (no k otherwise)
-      load.contact.elastic_energy =
-          0.5 * model.contact.stiffness * model.rolling_depth * model.rolling_depth;
-  } else {
-    load.contact = penaltyContact(model, k);
-  }
+  floorLoad(model, k, load);
   load.force_world = load.contact.force_world;
   load.force_world.z() -= model.body->mass * model.gravity;
   load.torque_world = load.contact.torque_world - model.contact.air_drag * k.w_world;
@@ -108,7 +91,7 @@ void advanceBy(const Model& model, State& s, double h) {
     case Integrator::Dopri5:
       break;  // driven by the Rollout's adaptive stepper
   }
-  if (model.contact.model == ContactModel::Rolling) enforceRolling(model, s);
+  holdOnFloor(model, s);
 }
 
 void step(const Model& model, State& s) {

@@ -1,4 +1,4 @@
-// Time stepping (SPEC "Integrators"): forward Euler (the seed's, §3.4), semi-implicit
+// Time stepping (docs/physics.md P3): forward Euler (the seed's, §3.4), semi-implicit
 // (symplectic) Euler with the exact exponential map for the rotation, and classical RK4.
 #pragma once
 

@@ -7,6 +7,7 @@
 
 #include "scene/loader.hpp"
 #include "sim/analysis.hpp"
+#include "sim/contact_model.hpp"
 #include "sim/reversals.hpp"
 #include "tasks/analysis.hpp"
 #include "tasks/outcome.hpp"
@@ -18,7 +19,7 @@ nlohmann::json modelJson(const sim::Model& model) {
   nlohmann::json j;
   j["contact"] = {{"model", std::string(rb::nameOf(model.contact.model))},
                   {"air_drag", model.contact.air_drag}};
-  if (model.contact.model != sim::ContactModel::Rolling) {
+  if (!sim::heldOnFloor(model.contact.model)) {
     j["contact"]["stiffness"] = model.contact.stiffness;
     j["contact"]["damping"] = model.contact.damping;
     j["contact"]["friction"] = model.contact.friction;
@@ -107,14 +108,14 @@ std::vector<RunWarning> runWarnings(const sim::Model& model, const sim::RunSumma
                  "it started exactly upright, initial.tilt [0, 0]: with nothing to rock, no spin "
                  "reverses; try tilt: [0.5, 0.5]"});
   // A spin that ended the other way with no reversal counted reads as a contradiction ("first
-  // reversal none" for n from −3 to +0.017 rad/s, and for a dropped body from −5 to +5.26): why
+  // reversal none" for n from −3 to +0.017 rad/s, or for a dropped body from −5 to +5.26): why
   // none was counted (docs/physics.md P7).
   if (!run.first_reversal_s && run.first.spin != 0 && run.last.spin * run.first.spin < 0) {
     const double threshold = sim::ReversalDetector::kFraction * std::abs(run.first.spin);
     char text[600];
     // All but still at the end (its kinetic energy a millionth of the start's): it came to rest
-    // with a trace of spin the other way, and running longer shows nothing (the seed's body fallen
-    // onto its side at 62.5°, +4e-6 rad/s from −10).
+    // with a trace of spin the other way, and running longer shows nothing (the seed's body
+    // fallen onto its side at 62.5°, +4e-6 rad/s from −10).
     const bool at_rest = run.last.kinetic <= 1e-6 * std::abs(run.first.kinetic);
     if (at_rest)
       std::snprintf(text, sizeof text,
@@ -153,15 +154,15 @@ std::vector<RunWarning> runWarnings(const sim::Model& model, const sim::RunSumma
                   *run.floor_pulled_s);
     w.push_back({"floor_pulled", text});
   }
-  // The regularised friction damps the slip at the rate μ g/ε (docs/physics.md P4.3): a fixed step
-  // longer than its time ε/(μ g) steps over it, and the run then depends on the step (smooth with
-  // rk4: reversal 6.15, 6.22, 7.44 s and none as dt went 1, 2, 6 and 8.9 ms, converged 6.169 s;
-  // energy lost 4.8 % at 1 ms against 1.24 %). `auto` takes smaller steps of its own in its smooth
-  // phases (sim::smoothStep).
+  // The regularised friction damps the slip at the rate μ g/ε (docs/physics.md P4.3): a fixed
+  // step longer than its time ε/(μ g) steps over it, and the run then depends on the step
+  // (smooth with rk4: reversal 6.15, 6.22, 7.44 s and none as dt goes 1, 2, 6 and 8.9 ms,
+  // converged 6.169 s; energy lost 4.8 % at 1 ms against 1.24 %). `auto` takes
+  // smaller steps of its own in its smooth phases (sim::smoothStep).
   const sim::Contact& c = model.contact;
-  const bool regularised_slip =
-      (c.model == sim::ContactModel::Smooth || c.model == sim::ContactModel::Points) &&
-      c.law == sim::FrictionLaw::Regularized && c.friction > 0 && model.gravity > 0;
+  const bool regularised_slip = sim::contactTraits(c.model).penalty_at_run_step &&
+                                c.law == sim::FrictionLaw::Regularized && c.friction > 0 &&
+                                model.gravity > 0;
   if (regularised_slip && !sim::isAdaptive(model.integrator)) {
     const double relax = c.slip_velocity / (c.friction * model.gravity);
     if (model.dt > relax) {

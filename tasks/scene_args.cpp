@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "sim/compile.hpp"
+#include "sim/contact_model.hpp"
 #include "util/assets.hpp"
 #include "util/format.hpp"
 
@@ -111,7 +112,7 @@ void describeModel(const sim::Model& model, const std::string& scene) {
   std::fprintf(stderr, "%s: %zu bottom and %zu top points, mass %g kg, contact %s", scene.c_str(),
                static_cast<std::size_t>(census.bottom), static_cast<std::size_t>(census.top),
                body.mass, std::string(rb::nameOf(model.contact.model)).c_str());
-  if (model.contact.model != sim::ContactModel::Rolling)
+  if (!sim::heldOnFloor(model.contact.model))
     std::fprintf(stderr, " (k %g N/m, c %g N s/m, mu %g)", model.contact.stiffness,
                  model.contact.damping, model.contact.friction);
   const std::string integrator(rb::nameOf(model.integrator));

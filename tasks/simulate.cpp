@@ -12,6 +12,7 @@
 #include <ostream>
 #include <thread>
 
+#include "sim/contact_model.hpp"
 #include "tasks/output.hpp"
 #include "tasks/run_json.hpp"
 #include "tasks/telemetry_columns.hpp"
@@ -121,7 +122,7 @@ SimulateResult simulate(const sim::Model& model, const SimulateOptions& options)
   sim::Rollout rollout(model);
   std::optional<double> pulled, slipped;
   double needed = std::numeric_limits<double>::quiet_NaN();
-  const bool rolling = model.contact.model == sim::ContactModel::Rolling;
+  const bool rolling = sim::heldOnFloor(model.contact.model);
   for (double t : sim::sampleTimes(model.duration, options.rate)) {
     if (options.cancelled && options.cancelled()) rollout.requestStop();
     if (!rollout.advanceTo(t)) break;
@@ -183,8 +184,7 @@ nlohmann::json telemetrySidecar(const RunScene& scene, const sim::Model& model, 
 // front chunk, once formatted, is written by whichever is free, so that the file is written in
 // order while later chunks are still being formatted. The caller's thread hands chunks over and
 // goes on with its run: on two cores the run keeps one and formatting and writing the other, and
-// both share the rest once the run is over (docs/speed.md "Writing beside the run (2026-11-27,
-// eleventh session; issue 27)").
+// both share the rest once the run is over (docs/speed.md).
 constexpr unsigned kMaxWorkers = 7;  // more than a few chunks at once gain nothing
 
 class TelemetryWriter::Pipeline {
