@@ -1,4 +1,4 @@
-// Adaptive steps with error control and dense output (SPEC "Integrators": a tolerance instead
+// Adaptive steps with error control and dense output (docs/physics.md P3: a tolerance instead
 // of a step). The method is Dormand–Prince 5(4) as Boost.Odeint implements it
 // (runge_kutta_dopri5 in a dense-output stepper): a well-kept, header-only library whose
 // stepper takes our state as a plain array, with the step-size controller and the fourth-order

@@ -271,7 +271,7 @@ ReversalForecast forecastFirstReversal(const Model& model, double spin, double h
   // mix, a tilt about one principal axis put next to nothing in the other mode; spun, the modes
   // mix in proportion to n, and that mode, when it is the growing one (a pitch tilt spun the
   // preferred way), started some 360× larger than counted (3.6e-5 J against 1.0e-7 J, a 1°
-  // pitch tilt at 4 rad/s): forecasts 23–110 % late (a researcher's trial), now 0.06–9 % late
+  // pitch tilt at 4 rad/s): forecasts 23–110 % late, now 0.06–9 % late
   // (docs/physics.md P8.5). (The spin about the
   // tilted axis also starts the CM moving, by n ρ θ; that energy is second order in n and the
   // theory is first order: counting it made the forecasts worse.)
@@ -287,7 +287,7 @@ ReversalForecast forecastFirstReversal(const Model& model, double spin, double h
   // modes named as linearise names them, by frequency, the lower pair roll where at rest it
   // rocks more about the long axis (modePairs). Named each by its own eigenvector's roll excess,
   // both went to roll once deep dents turned the principal axes: dents.scale 0.65 forecast no
-  // reversal where the run reversed at 0.70 s (a teacher's trial).
+  // reversal where the run reversed at 0.70 s.
   const bool low_is_roll = modePairs(asRolling(model), 0).low_is_roll;
   std::vector<std::pair<double, double>> oscillations;  // (frequency, energy)
   for (int i = 0; i < 4; ++i) {

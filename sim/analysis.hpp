@@ -1,4 +1,4 @@
-// Theory for a body (SPEC "Theory"; seed §2): its rest on the floor and the linearised
+// Theory for a body (docs/physics.md P8; seed §2): its rest on the floor and the linearised
 // rolling model about steady upright spin.
 #pragma once
 
@@ -101,7 +101,7 @@ enum class Direction {
 /// The direction of spin (at |spin|) whose fastest mode grows more slowly: the one that keeps
 /// turning; spun the other way the body is predicted to reverse. None where neither direction's
 /// rocking grows (spun either way it is predicted to keep turning) or where both grow alike
-/// (a body with no misalignment): a dentless body got "cw" from rounding (issue 26).
+/// (a body with no misalignment): a dentless body got "cw" from rounding.
 Direction preferredDirection(const Model& model, double spin_magnitude);
 
 /// Whether a spin n (rad/s) turns in `direction` (never in None).

@@ -257,7 +257,7 @@ void principalAxes(MassProperties& m) {
   m.principal = solver.eigenvalues();  // ascending
   m.axes = solver.eigenvectors();
   // The long axis is the horizontal body axis the least-inertia axis lies nearest: y for the
-  // shipped bodies, x for a body long in x (issue 26: measured from y, such a body's 0.8° read
+  // shipped bodies, x for a body long in x (measured from y, such a body's 0.8° read
   // as 89.2°). Orient: the least-inertia axis points along the long axis's + side, the largest
   // along +z, and the set is right-handed.
   const bool long_in_x = std::abs(m.axes.col(0).x()) > std::abs(m.axes.col(0).y());
@@ -265,7 +265,7 @@ void principalAxes(MassProperties& m) {
   if (m.axes.col(2).z() < 0) m.axes.col(2) *= -1;
   m.axes.col(1) = m.axes.col(2).cross(m.axes.col(0));
   // Misalignment: angle from the long axis to the horizontal projection of the least-inertia
-  // axis, positive counter-clockwise about +z (SPEC: ≈ +2.2° for the default body).
+  // axis, positive counter-clockwise about +z (≈ +2.2° for the default body).
   const Eigen::Vector3d least = m.axes.col(0);
   m.misalignment_deg =
       (long_in_x ? std::atan2(least.y(), least.x()) : std::atan2(-least.x(), least.y())) * 180.0 /

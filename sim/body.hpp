@@ -18,7 +18,7 @@ struct PointAndRate {
 };
 
 /// Paraboloid shape in metres: bottom z = p/(2a) x² + q/a² xy + s/(2a) y² − a
-/// (SPEC; the seed's eq. 24), flat top at z = top.
+/// (docs/physics.md P1; the seed's eq. 24), flat top at z = top.
 struct Paraboloid {
   double a, p, q, s, top;
   /// H⁻¹ with H = [p/a, q/a²; q/a², s/a] the bottom's Hessian: derived once, here, from the

@@ -1,4 +1,4 @@
-// Mass properties of the paraboloid body from its shape (issue 14): the solid between the
+// Mass properties of the paraboloid body from its shape (docs/physics.md P1): the solid between the
 // bottom paraboloid and the flat top, less the two dents, of uniform density. Two ways, which
 // the tests hold against each other:
 //  - closed form: the cap's exact moments minus each dent's exact moments, when each dent's

@@ -1,4 +1,4 @@
-// The initial state (SPEC "Initial state").
+// The initial state (docs/physics.md P5).
 #pragma once
 
 #include "sim/model.hpp"

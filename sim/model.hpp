@@ -79,7 +79,7 @@ struct Body {
   Grid grid;                      ///< the point grid's spacing, m
   std::optional<Dents> dents;     ///< the dents cut from the top (paraboloid), m
   /// Contact points, only for contact.model points (the others touch the smooth surface, and
-  /// building the default body's 244,212 made most of a short run's cost, issue 27); the
+  /// building the default body's 244,212 made most of a short run's cost); the
   /// drawing walks the grid itself, thinned (tasks/drawn_points), and censusOf counts it.
   /// Bottom-surface points, body frame, m (blue).
   ContactPoints bottom;
@@ -91,7 +91,7 @@ struct Body {
   Eigen::Vector3d extent = Eigen::Vector3d::Zero();
 };
 
-/// Floor contact (SPEC "Contact and friction"): normal force max(0, k·depth − c·v_n) and
+/// Floor contact (docs/physics.md P4): normal force max(0, k·depth − c·v_n) and
 /// friction μN against the sliding velocity, per contact point.
 struct Contact {
   ContactModel model = ContactModel::Points;
@@ -108,7 +108,7 @@ struct Contact {
   bool conservesEnergy() const { return model == ContactModel::Rolling && air_drag == 0; }
 };
 
-/// Initial condition (SPEC "Initial state").
+/// Initial condition (docs/physics.md P5).
 struct Initial {
   double spin = 0;    ///< rad/s about the body z axis, + counter-clockwise from above
   double tilt_x = 0;  ///< rad, about body x
@@ -116,7 +116,7 @@ struct Initial {
   double height = 0;  ///< m, lowest point above the floor at release (0: resting on it)
 };
 
-/// One run of a shared body: small, cheap to copy (SPEC "Data flow").
+/// One run of a shared body: small, cheap to copy (docs/design.md "Data flow").
 struct Model {
   std::shared_ptr<const Body> body;  ///< immutable, shared by every run of this body
   Contact contact;

@@ -24,7 +24,7 @@ void ReversalDetector::step(double t0, double n0, double t1, double n1, double l
   if (crossing_ && n1 * reference_sign_ < -threshold_) crossing_reached_ = true;
   // It counts once n is beyond the threshold the new way kHoldTime or more after the crossing:
   // beyond it then, not merely not back (a spin braked to rest that overshot past the threshold
-  // and died out at zero was counted: a physicist's trial). A crossing within kHoldTime of the
+  // and died out at zero would be counted). A crossing within kHoldTime of the
   // run's end counts there, its hold cut short: nothing undid it.
   const bool held = crossing_ && t1 - *crossing_ >= kHoldTime;
   if (crossing_ && crossing_reached_ &&

@@ -18,7 +18,7 @@ struct UnitsSpec {
 };
 
 /// body.paraboloid: bottom z = p/(2a) x² + q/a² xy + s/(2a) y² − a, flat top at z = top
-/// (SPEC "The body"; seed eq. 24). Lengths in file units; p, q, s dimensionless.
+/// (docs/physics.md P1; seed eq. 24). Lengths in file units; p, q, s dimensionless.
 struct ParaboloidSpec {
   double a = kUnset;    ///< depth of the apex below the origin, > 0
   double p = kUnset;    ///< curvature across the short axis (x), > 0

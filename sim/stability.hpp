@@ -1,4 +1,4 @@
-// How large a step the contact stiffness allows (SPEC "Integrators": refuse a step the
+// How large a step the contact stiffness allows (docs/physics.md P3: refuse a step the
 // contact makes unstable and name the largest stable one).
 #pragma once
 
@@ -13,7 +13,7 @@ struct ContactStability {
   /// s: the largest step a run is given, kRunMargin of the linear limit. Rocking, landing and
   /// sliding load the springs beyond the rest pose: at 0.95 of the limit an undamped k 1e6 N/m
   /// floor gained 19 % of its energy with rk4 (0.8 ran), 10 % with symplectic by 0.6 s (0.6
-  /// ran), and a 3 cm drop onto k 1e8 N/m by 0.03 s (0.6 ran) (issue 26.3).
+  /// ran), and a 3 cm drop onto k 1e8 N/m by 0.03 s (0.6 ran).
   double run_step = 0;
 };
 

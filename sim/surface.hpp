@@ -1,5 +1,5 @@
 // The body's smooth surface, where the `smooth` and `rolling` contacts touch: the seed's
-// paraboloid body or an ellipsoid (SPEC "The body"). Geometric frame, metres.
+// paraboloid body or an ellipsoid (docs/physics.md P1, P2). Geometric frame, metres.
 #pragma once
 
 #include <Eigen/Dense>

@@ -1,6 +1,6 @@
-// contact.model auto (issue 14): roll while rolling holds, slide when it does not. The Rollout
-// runs one of two models of the same run at a time — rolling without slipping, or the smooth
-// penalty contact with regularised friction — and this file says when and how it changes:
+// contact.model auto (docs/physics.md P4): roll while rolling holds, slide when it does not. The
+// Rollout runs one of two models of the same run at a time — rolling without slipping, or the
+// smooth penalty contact with regularised friction — and this file says when and how it changes:
 //  - rolling → smooth when the force the rolling constraint needs leaves what the floor can
 //    give: the friction it needs exceeds μN, or N ≤ 0 (lift-off), or the lowest point reaches
 //    the rim of the flat top. The time is located inside the step on the margins below.

@@ -1,4 +1,4 @@
-// What a run reports at each sample (SPEC "Outputs a user expects").
+// What a run reports at each sample (docs/commands.md "The telemetry CSV").
 #pragma once
 
 #include <Eigen/Geometry>

@@ -23,7 +23,7 @@ std::optional<Stop> Watchdog::observe(const StepEnd& end) {
   }
   // In the air: no point below the floor. Not "no force": a strongly damped floor's clipped
   // force max(0, k d − c v) is zero for tens of ms while a point rises out of it, and that was
-  // taken for a bounce, hiding a reversal (issue 26: k 1e8, c 2e4 N s/m). A start in the air
+  // taken for a bounce, hiding a reversal (k 1e8, c 2e4 N s/m). A start in the air
   // is a flight at once (a drop).
   if (end.contacts) {
     if (*end.contacts == 0) {
