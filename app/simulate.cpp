@@ -272,6 +272,65 @@ int stopped(const SimulateArgs& args, const tasks::SimulateResult& run, const si
   return status;
 }
 
+namespace {
+
+// Where the table goes: -o, else out/<scene>.csv; "-o -" is standard output, as for most tools
+// that write a table.
+std::string tableOf(const SimulateArgs& args) {
+  const std::string csv = args.output.empty() ? defaultOutput(args.scene) : args.output;
+  return csv == "-" ? "/dev/stdout" : csv;
+}
+
+// Why the run's rows cannot be written at `rate`, or nothing. At the default rate it is the
+// duration that makes too many rows: named where it was set (a scene's duration of 1e9 is not
+// the fault of a --rate the user never gave).
+rb::Status rateProblem(const SimulateArgs& args, const tasks::LoadedScene& loaded, double rate) {
+  const sim::Model& model = loaded.model;
+  auto ok = tasks::checkRate(rate, model.duration);
+  if (ok) return {};
+  if (!args.rate && model.duration * rate > 1e7)
+    return scene::locate(
+        loaded.scene,
+        rb::Error{"simulation.duration",
+                  rb::show(model.duration) + " s makes " +
+                      rb::show(std::floor(model.duration * rate) + 1) +
+                      " rows of telemetry at the default --rate of " + rb::show(rate) +
+                      " samples a second; at most 1e7 rows (about 3 GB): give a "
+                      "shorter duration, or a lower --rate"});
+  return rb::Status::fail("--" + ok.error().text());
+}
+
+// Draws --plot's figures: the exit status when that failed, else nothing. Ctrl-C while they are
+// drawn leaves the table standing and listed in the folder's manifest (else the report places it
+// by its name alone), and is said with -q too, as every command's interruption is; it is not a
+// failure of gnuplot's.
+std::optional<int> drawPlots(const SimulateArgs& args, const std::string& csv,
+                             const scene::Loaded& scene, const std::vector<sim::Telemetry>& kept,
+                             const sim::RunSummary& run) {
+  if (args.plot_dir.empty()) return std::nullopt;
+  auto e = writePlots(args.plot_dir, plotStem(args, csv), kept, run.reversals);
+  if (e) return std::nullopt;
+  if (interruptSignal() == 0) return fail(e);
+  record({outputsOf(args, csv, tasks::madeFrom(scene)).front()});
+  tell(Tone::Error, "interrupted while drawing the figures; " + csv + " is written");
+  return interruptedStatus();
+}
+
+// The summary, the check's figures and the figures' names (on standard error when the table
+// went to standard output, so that it can be piped on whole).
+void printResults(const SimulateArgs& args, const sim::Model& model,
+                  const tasks::SimulateResult& run, const std::optional<tasks::RunCheck>& check,
+                  const std::string& csv, bool to_stdout) {
+  std::FILE* report = to_stdout ? stderr : stdout;
+  printSummary(report, args, model, run.summary, to_stdout ? "standard output" : csv, run.rows);
+  if (check) printCheck(report, *check, run.summary);
+  if (!args.plot_dir.empty())
+    std::fprintf(report, "plots           %s/%s-{energy,spin,tilt,normal}.png\n",
+                 args.plot_dir.c_str(), plotStem(args, csv).c_str());
+}
+
+}  // namespace
+
 int simulateCommand(const SimulateArgs& args) {
   installInterruptHandlers();
   const auto overrides = overridesOf(args);
@@ -281,25 +340,10 @@ int simulateCommand(const SimulateArgs& args) {
   noteShipped(args.scene);
   const sim::Model& model = loaded->model;
   const double rate = args.rate.value_or(tasks::kDefaultRate);
-  if (auto ok = tasks::checkRate(rate, model.duration); !ok) {
-    // At the default rate it is the duration that makes too many rows: named where it was set
-    // (a scene's duration: 1e9 was blamed on --rate, which the user never gave).
-    if (!args.rate && model.duration * rate > 1e7)
-      return fail(scene::locate(
-          loaded->scene,
-          rb::Error{"simulation.duration",
-                    rb::show(model.duration) + " s makes " +
-                        rb::show(std::floor(model.duration * rate) + 1) +
-                        " rows of telemetry at the default --rate of " + rb::show(rate) +
-                        " samples a second; at most 1e7 rows (about 3 GB): give a shorter "
-                        "duration, or a lower --rate"}));
-    return fail(rb::Status::fail("--" + ok.error().text()));
-  }
-  // "-o -" is standard output, as for most tools that write a table. When the table goes to
-  // standard output (so also through /dev/stdout or a link to it), the summary goes to standard
-  // error, so that the table can be piped on whole.
-  std::string csv = args.output.empty() ? defaultOutput(args.scene) : args.output;
-  if (csv == "-") csv = "/dev/stdout";
+  if (auto ok = rateProblem(args, loaded.value(), rate); !ok) return fail(ok);
+  // When the table goes to standard output (so also through /dev/stdout or a link to it), the
+  // summary goes to standard error, so that the table can be piped on whole.
+  const std::string csv = tableOf(args);
   const bool to_stdout = isStandardOutput(csv);
   if (auto ok = checkPlotIsNotTheTable(args.plot_dir, csv); !ok) return fail(ok);
   if (auto ok = rb::checkDataOutput(args.output, "a CSV table", ".csv", {args.scene}); !ok)
@@ -340,28 +384,10 @@ int simulateCommand(const SimulateArgs& args) {
                          rate, run.summary, check ? tasks::checkJson(*check) : nlohmann::json());
       !e)
     return fail(e);
-  if (!args.plot_dir.empty())
-    if (auto e = writePlots(args.plot_dir, plotStem(args, csv), kept, run.summary.reversals); !e) {
-      // Ctrl-C while the figures are drawn: the table stands, the figures not drawn go unsaid
-      // as a failure (not exit 2 with "gnuplot failed: ").
-      if (interruptSignal() != 0) {
-        // Listed in the folder's manifest as written (else the report places it by its name
-        // alone).
-        record({outputsOf(args, csv, tasks::madeFrom(loaded->scene)).front()});
-        // Said with -q too, as every command's interruption is (it said nothing).
-        tell(Tone::Error, "interrupted while drawing the figures; " + csv + " is written");
-        return interruptedStatus();
-      }
-      return fail(e);
-    }
+  if (const std::optional<int> status = drawPlots(args, csv, loaded->scene, kept, run.summary))
+    return *status;
   record(outputsOf(args, csv, tasks::madeFrom(loaded->scene)));
-  if (args.quiet) return kOk;
-  std::FILE* report = to_stdout ? stderr : stdout;
-  printSummary(report, args, model, run.summary, to_stdout ? "standard output" : csv, run.rows);
-  if (check) printCheck(report, *check, run.summary);
-  if (!args.plot_dir.empty())
-    std::fprintf(report, "plots           %s/%s-{energy,spin,tilt,normal}.png\n",
-                 args.plot_dir.c_str(), plotStem(args, csv).c_str());
+  if (!args.quiet) printResults(args, model, run, check, csv, to_stdout);
   return kOk;
 }
 

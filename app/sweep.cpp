@@ -110,6 +110,38 @@ double metricOf(const std::string& line, std::size_t axes, tasks::SweepMetric me
   return std::strtod((*fields)[column].c_str(), nullptr);
 }
 
+// The metric along one axis (the line plot of plotTable): the figure titled `title`, its panel
+// `named`; the axis's values are the table's rows `stride` apart.
+rb::Status plotLine(const std::string& png, tasks::SweepMetric metric_id, const std::string& title,
+                    const std::string& named, const Table& table, std::size_t x,
+                    std::int64_t stride) {
+  const std::string metric(rb::nameOf(metric_id));
+  Panel panel;
+  panel.title = named;
+  panel.x_label = sweepLabel(table.keys[x], table.length_unit);
+  panel.y_label = sweepLabel(metric);
+  Series series;
+  series.title = metric;
+  std::vector<double> xs;
+  for (std::size_t i = 0; i < table.axis_values[x].size(); ++i) {
+    xs.push_back(std::strtod(table.axis_values[x][i].c_str(), nullptr));
+    const auto row = static_cast<std::size_t>(static_cast<std::int64_t>(i) * stride);
+    series.points.emplace_back(xs.back(), table.values[row]);
+  }
+  panel.log_x = logarithmicAxis(xs);
+  // Every value of the axis spanned, and a missing point said (the runs that did not reverse
+  // would otherwise vanish from the axis: spins −8 … 8 drawn as −8 … −1).
+  const auto [lo, hi] = std::minmax_element(xs.begin(), xs.end());
+  if (*lo < *hi) panel.x_range = std::pair{*lo, *hi};
+  if (std::any_of(series.points.begin(), series.points.end(),
+                  [](const auto& p) { return !std::isfinite(p.second); }))
+    panel.note = "no point: no value (" +
+                 std::string(metric == "first_reversal_s" ? "no reversal, or " : "") +
+                 "run stopped or refused)";
+  panel.series.push_back(series);
+  return plotPng(png, title, {panel}, 900, 500);
+}
+
 // Draws `metric` over the first two axes of more than one value (a heatmap), or the one such
 // axis (a line plot); every other axis at its first value, said in the title. An axis of one
 // value is never a heatmap's side: gnuplot leaves an image one cell tall grey, which reads as
@@ -136,32 +168,8 @@ rb::Status plotTable(const std::string& png, tasks::SweepMetric metric_id, const
   const auto at = [&](std::size_t axis, std::size_t i) {
     return static_cast<std::size_t>(static_cast<std::int64_t>(i) * stride[axis]);
   };
-  if (drawn.size() == 1) {
-    const std::size_t x = drawn[0];
-    Panel panel;
-    panel.title = named;
-    panel.x_label = sweepLabel(table.keys[x], table.length_unit);
-    panel.y_label = sweepLabel(metric);
-    Series series;
-    series.title = metric;
-    std::vector<double> xs;
-    for (std::size_t i = 0; i < table.axis_values[x].size(); ++i) {
-      xs.push_back(std::strtod(table.axis_values[x][i].c_str(), nullptr));
-      series.points.emplace_back(xs.back(), table.values[at(x, i)]);
-    }
-    panel.log_x = logarithmicAxis(xs);
-    // Every value of the axis spanned, and a missing point said (the runs that did not reverse
-    // would otherwise vanish from the axis: spins −8 … 8 drawn as −8 … −1).
-    const auto [lo, hi] = std::minmax_element(xs.begin(), xs.end());
-    if (*lo < *hi) panel.x_range = std::pair{*lo, *hi};
-    if (std::any_of(series.points.begin(), series.points.end(),
-                    [](const auto& p) { return !std::isfinite(p.second); }))
-      panel.note = "no point: no value (" +
-                   std::string(metric == "first_reversal_s" ? "no reversal, or " : "") +
-                   "run stopped or refused)";
-    panel.series.push_back(series);
-    return plotPng(png, title + ": " + named, {panel}, 900, 500);
-  }
+  if (drawn.size() == 1)
+    return plotLine(png, metric_id, title + ": " + named, named, table, drawn[0], stride[drawn[0]]);
   const std::size_t x = drawn[0], y = drawn[1];
   Heatmap map;
   map.title = title + ": " + named;
@@ -368,6 +376,39 @@ rb::Result<std::string> outputOf(const SweepArgs& args, const scene::Sweep& swee
   return output;
 }
 
+// Ctrl-C in the middle: the finished runs stay in the journal for --resume; a journal of its
+// header alone is no use, and is removed.
+int interruptedSweep(const SweepArgs& args, const Plan& plan, const tasks::SweepRun& run,
+                     tasks::Journal& journal, const std::string& journal_path) {
+  const std::size_t kept = plan.from_journal + run.rows.size();
+  if (kept == 0) {
+    journal.close();
+    tasks::Journal::remove(journal_path);
+    tell(Tone::Error, args.file + ": interrupted before any run finished; nothing kept");
+    return interruptedStatus();
+  }
+  tell(Tone::Error, args.file + ": interrupted; " + std::to_string(kept) + " of " +
+                        rb::counted(static_cast<long long>(plan.rows.size()), "run") + " kept in " +
+                        journal_path + "; the same command with --resume runs the rest");
+  return interruptedStatus();
+}
+
+// Not one run made: the sweep's values are the input at fault (rows all refused for a missing
+// contact.stiffness are not a success), and bad input writes nothing: a table of refusals
+// would replace a good table of that name.
+int everyRunRefused(const SweepArgs& args, const tasks::SweepRun& run, tasks::Journal& journal,
+                    const std::string& journal_path) {
+  journal.close();
+  tasks::Journal::remove(journal_path);
+  const auto first = std::find_if(run.rows.begin(), run.rows.end(), [](const auto& row) {
+    return row.status == tasks::RowStatus::Refused;
+  });
+  tell(Tone::Error,
+       args.file + ": every run was refused, nothing written" +
+           (first == run.rows.end() ? std::string() : "; the first: " + first->message));
+  return kBadInput;
+}
+
 }  // namespace
 
 int sweepCommand(const SweepArgs& args) {
@@ -399,32 +440,10 @@ int sweepCommand(const SweepArgs& args) {
   std::map<std::int64_t, double> metric;
   tasks::SweepRun run;
   if (!runRows(args, sweep, scenes.value(), plan.value(), journal.value(), metric, run)) {
-    if (plan->from_journal + run.rows.size() == 0) {  // a journal of its header alone is no use
-      journal->close();
-      tasks::Journal::remove(journal_path);
-      tell(Tone::Error, args.file + ": interrupted before any run finished; nothing kept");
-      return interruptedStatus();
-    }
-    tell(Tone::Error,
-         args.file + ": interrupted; " + std::to_string(plan->from_journal + run.rows.size()) +
-             " of " + rb::counted(static_cast<long long>(plan->rows.size()), "run") + " kept in " +
-             journal_path + "; the same command with --resume runs the rest");
-    return interruptedStatus();
+    return interruptedSweep(args, plan.value(), run, journal.value(), journal_path);
   }
-  // Not one run made: the sweep's values are the input at fault (rows all refused for a missing
-  // contact.stiffness are not a success), and bad input writes nothing: a table of refusals
-  // would replace a good table of that name.
-  if (!plan->done.empty() && plan->counts["refused"] == static_cast<int>(plan->done.size())) {
-    journal->close();
-    tasks::Journal::remove(journal_path);
-    const auto first = std::find_if(run.rows.begin(), run.rows.end(), [](const auto& row) {
-      return row.status == tasks::RowStatus::Refused;
-    });
-    tell(Tone::Error,
-         args.file + ": every run was refused, nothing written" +
-             (first == run.rows.end() ? std::string() : "; the first: " + first->message));
-    return kBadInput;
-  }
+  if (!plan->done.empty() && plan->counts["refused"] == static_cast<int>(plan->done.size()))
+    return everyRunRefused(args, run, journal.value(), journal_path);
   if (auto e = writeOutputs(args, sweep, shard, plan.value(), metric, output.value()); !e)
     return fail(e);
   std::vector<tasks::OutputEntry> entries = {
