@@ -3,14 +3,10 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
-#include <cctype>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
+#include <optional>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -293,28 +289,6 @@ void readKeys(MapReader& reader, Loaded& out) {
   }
 }
 
-// One line, whatever the file holds: control characters (a newline in a quoted key, a NUL
-// byte, an escape yaml-cpp quotes back) are shown escaped.
-std::string printable(const std::string& text) {
-  std::string out;
-  for (unsigned char c : text) {
-    if (c == '\n')
-      out += "\\n";
-    else if (c == '\t')
-      out += "\\t";
-    else if (c == '\r')
-      out += "\\r";
-    else if (c < 0x20 || c == 0x7f) {
-      char hex[8];
-      std::snprintf(hex, sizeof hex, "\\x%02x", c);
-      out += hex;
-    } else {
-      out += static_cast<char>(c);
-    }
-  }
-  return out;
-}
-
 std::string format(const std::string& file, int line, const std::string& key,
                    const std::string& message) {
   std::ostringstream s;
@@ -345,77 +319,6 @@ rb::Error setBy(const std::string& place, const std::string& set_key, const rb::
 }
 
 }  // namespace
-
-std::string yamlContent(const std::string& text) {
-  try {
-    return YAML::Dump(YAML::Load(text));
-  } catch (const YAML::Exception&) {
-    return text;
-  }
-}
-
-int unclosedFlowLine(const std::string& text) {
-  std::vector<int> open;  // the lines of the brackets not yet closed
-  int line = 1;
-  char quote = 0;
-  bool comment = false;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    if (c == '\n') {
-      ++line;
-      comment = false;
-      if (quote == '\'') quote = 0;  // a single-quoted scalar on one line, as scenes write them
-      continue;
-    }
-    if (comment) continue;
-    if (quote) {
-      if (c == quote && !(quote == '"' && i > 0 && text[i - 1] == '\\')) quote = 0;
-    } else if (c == '"' || c == '\'') {
-      quote = c;
-    } else if (c == '#' && (i == 0 || std::isspace(static_cast<unsigned char>(text[i - 1])))) {
-      comment = true;
-    } else if (c == '{' || c == '[') {
-      open.push_back(line);
-    } else if ((c == '}' || c == ']') && !open.empty()) {
-      open.pop_back();
-    }
-  }
-  return open.empty() ? 0 : open.back();
-}
-
-rb::Error malformedYaml(const std::string& name, const std::string& text,
-                        const YAML::Exception& e) {
-  int line = e.mark.is_null() ? 1 : e.mark.line + 1;
-  std::string message = e.msg;
-  if (e.msg.find("flow not found") != std::string::npos)
-    if (const int opened = unclosedFlowLine(text); opened > 0) {
-      line = opened;
-      message = "a { or [ on this line is never closed (" + e.msg + ")";
-    }
-  // A tab in the indentation: yaml-cpp names what it then misreads ("illegal map value").
-  int at = 1;
-  for (std::size_t start = 0; start < text.size() && at <= line; ++at) {
-    const std::size_t end = std::min(text.find('\n', start), text.size());
-    const std::size_t first = text.find_first_not_of(' ', start);
-    if (first < end && text[first] == '\t') {
-      line = at;
-      message = "a tab in this line's indentation: YAML indents with spaces only (" + e.msg + ")";
-      break;
-    }
-    start = end + 1;
-  }
-  // yaml-cpp's words for a key off its column or a line without its colon say neither ("end of map
-  // not found"): the usual causes, where the parser noticed.
-  if (message == e.msg && (e.msg.find("end of map not found") != std::string::npos ||
-                           e.msg.find("illegal map value") != std::string::npos))
-    message +=
-        " (at or just above this line: a key indented unlike its neighbours, or a key "
-        "without its colon, key: value)";
-  rb::Error error{"",
-                  printable(name + ":" + std::to_string(line) + ": malformed YAML: " + message)};
-  error.where = rb::Error::Where{name, line, ""};
-  return error;
-}
 
 namespace {
 
@@ -534,39 +437,6 @@ rb::Result<Loaded> loadWithValues(const std::string& yaml, const std::string& na
     loaded->content = std::move(content);
   }
   return loaded;
-}
-
-rb::Result<std::string> readSceneFile(const std::string& path) {
-  std::error_code ec;
-  auto fail = [&](const std::string& message) {
-    rb::Error e{"", printable(path) + ": " + message};
-    e.where = rb::Error::Where{path, 0, ""};
-    return e;
-  };
-  if (std::filesystem::is_directory(path, ec))
-    return fail("is a folder, not a scene file (give a .yaml file, e.g. scenes/rattleback.yaml)");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    const int error = errno;
-    // A file of a near name beside it: "did you mean base.yaml?" (a teacher typed base.yml).
-    std::string near;
-    if (error == ENOENT) {
-      const std::filesystem::path named(path);
-      const std::filesystem::path folder = named.has_parent_path() ? named.parent_path() : ".";
-      std::vector<std::string> files;
-      for (auto it = std::filesystem::directory_iterator(folder, ec);
-           !ec && it != std::filesystem::directory_iterator() && files.size() < 1000;
-           it.increment(ec))
-        if (it->is_regular_file(ec)) files.push_back(it->path().filename().string());
-      if (const auto nearest = rb::nearestWord(named.filename().string(), files))
-        near = "; did you mean " + printable((named.parent_path() / *nearest).string()) + "?";
-    }
-    return fail(std::string("cannot open the scene file: ") + std::strerror(error) + near);
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) return fail(std::string("cannot read the scene file: ") + std::strerror(errno));
-  return text.str();
 }
 
 rb::Result<Loaded> loadFile(const std::string& path) {

@@ -16,6 +16,10 @@ inline int lineOf(const YAML::Node& node) {
   return node.Mark().is_null() ? 1 : node.Mark().line + 1;
 }
 
+/// `text` on one line, whatever it holds: control characters (a newline in a quoted key, a NUL
+/// byte, an escape yaml-cpp quotes back) shown escaped.
+std::string printable(const std::string& text);
+
 /// "NAME:LINE: malformed YAML: …" for a parse error in `text` (an unclosed bracket named at
 /// the line that opened it).
 rb::Error malformedYaml(const std::string& name, const std::string& text, const YAML::Exception& e);
