@@ -24,6 +24,7 @@
 #include "sim/analysis.hpp"
 #include "sim/rollout.hpp"
 #include "tasks/output.hpp"
+#include "util/arguments.hpp"
 #include "util/format.hpp"
 
 namespace media {
@@ -183,15 +184,16 @@ std::string stem(const std::string& path) {
 
 rb::Status checkEncoderOptions(int crf, const std::string& preset) {
   if (crf < 1 || crf > 51)
-    return rb::Status::fail(
-        "--crf: must be within 1 … 51 (lower is better; 0 would be lossless "
-        "High 4:4:4, which browsers do not play), not " +
-        std::to_string(crf));
+    return rb::Status::fail(rb::argumentName("crf") +
+                            ": must be within 1 … 51 (lower is better; 0 would be lossless "
+                            "High 4:4:4, which browsers do not play), not " +
+                            std::to_string(crf));
   for (std::string_view p : kPresets)
     if (preset == p) return {};
   std::string names;
   for (std::string_view p : kPresets) names.append(names.empty() ? "" : ", ").append(p);
-  return rb::Status::fail("--preset: must be one of x264's: " + names + "; not '" + preset + "'");
+  return rb::Status::fail(rb::argumentName("preset") + ": must be one of x264's: " + names +
+                          "; not '" + preset + "'");
 }
 
 std::jthread preloadDriver(render::Backend backend) {
@@ -207,10 +209,10 @@ rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const Vide
   if (!planned) return planned.error();
   const VideoPlan& plan = planned.value();
   if (request.both && model.initial.spin == 0)
-    return rb::Error{"", request.scene_name +
-                             ": --both renders the spin and its reverse, which "
-                             "at spin 0 are the same run; give a spin (--spin, or initial.spin in "
-                             "the scene)"};
+    return rb::Error{"", request.scene_name + ": " + rb::argumentName("both") +
+                             " renders the spin and its reverse, which at spin 0 are the same "
+                             "run; give a spin (" +
+                             rb::argumentName("spin") + ", or initial.spin in the scene)"};
   auto cancelled = [&] { return request.cancelled && request.cancelled(); };
   // One run per direction, sharing the body.
   std::vector<sim::Rollout> runs;

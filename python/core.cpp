@@ -23,6 +23,7 @@
 #include "tasks/simulate.hpp"
 #include "tasks/sweep.hpp"
 #include "tasks/sweep_jobs.hpp"
+#include "util/arguments.hpp"
 #include "util/output_place.hpp"
 
 namespace py = pybind11;
@@ -209,8 +210,8 @@ std::shared_ptr<Run> simulate(const LoadedScene& loaded, double rate, bool check
       {run->scene, loaded.value.scene.values, loaded.value.scene.content, loaded.has_file}, model,
       rate, result.summary, static_cast<std::int64_t>(run->samples.size()), nullptr);
   if (result.outcome.ending == tasks::Ending::Stopped) {
-    // The run as far as it went goes with the exception; the message names the values put in
-    // (a student's Pool over spins: which of three runs of long.yaml had stopped was not said).
+    // The run as far as it went goes with the exception; the message names the values put in,
+    // so that of a Pool's runs of one scene the one that stopped is told apart.
     std::string named = run->scene;
     for (std::size_t i = 0; i < loaded.value.scene.values.size(); ++i)
       named += (i ? ", " : " (") + loaded.value.scene.values[i].key + " = " +
@@ -375,8 +376,8 @@ void sweepToCsv(const SweepTable& t, const std::string& path) {
   {
     GilReleased release;
     const rb::OutputNamedBy naming("to_csv");  // the way out an error line suggests
-    // Not over the sweep or its base, nor as a picture (a student's to_csv("mine.yaml") had
-    // replaced the scene, where the command line refuses it).
+    // Not over the sweep or its base, nor as a picture, as the command line refuses them
+    // (to_csv("mine.yaml") would replace the scene).
     written = rb::checkDataOutput(path, "a CSV table", ".csv", {t.sweep.file, t.sweep.base});
     if (written) written = tasks::writeSweepTable(path, keys, lines, sidecar);
     if (written)
@@ -393,18 +394,11 @@ void sweepToCsv(const SweepTable& t, const std::string& path) {
 }  // namespace
 }  // namespace pyrb
 
-PYBIND11_MODULE(_core, m) {
-  using namespace pyrb;
-  m.doc() = "rattleback's C++ library: scenes, runs, analysis and sweeps (see rattleback).";
-  m.attr("version") = RATTLEBACK_VERSION;
-  m.attr("default_rate") = tasks::kDefaultRate;
-  py::list names;
-  for (const tasks::Column& c : tasks::telemetryColumns())
-    names.append(py::make_tuple(c.name, c.unit, c.meaning));
-  m.attr("telemetry_columns") = names;
+namespace pyrb {
+namespace {
 
-  bindScene(m);
-
+// A finished run: its columns, what it found, its pickle and to_csv.
+void bindRun(py::module_& m) {
   py::class_<Run, std::shared_ptr<Run>>(m, "Run")
       .def("columns", &columns)
       .def("result", [](const Run& r) { return toPython(r.sidecar.at("result")); })
@@ -423,8 +417,8 @@ PYBIND11_MODULE(_core, m) {
         // finished, replaced the file there and then raised it).
         const rb::Status written = interruptibleHere([&](const std::function<bool()>& cancelled) {
           const rb::OutputNamedBy naming("to_csv");  // the way out an error line suggests
-          // Not over the run's scene, nor as a picture (a student's to_csv("mine.yaml") had
-          // replaced the scene, where the command line refuses it).
+          // Not over the run's scene, nor as a picture, as the command line refuses them
+          // (to_csv("mine.yaml") would replace the scene).
           const nlohmann::json& scene_path = r.sidecar.at("scene_path");
           rb::Status status = rb::checkDataOutput(
               path, "a CSV table", ".csv",
@@ -443,7 +437,10 @@ PYBIND11_MODULE(_core, m) {
         });
         if (!written) raise(written.error());
       });
+}
 
+// A sweep's table and the calls that make one.
+void bindSweep(py::module_& m) {
   py::class_<SweepTable, std::shared_ptr<SweepTable>>(m, "SweepTable")
       .def("columns", &sweepColumns)
       .def("to_csv", &sweepToCsv, py::arg("path"))
@@ -459,6 +456,10 @@ PYBIND11_MODULE(_core, m) {
   m.def("sweep", &sweep, py::arg("path"), py::arg("jobs"), py::arg("resume") = nullptr);
   m.def("sweep_of", &sweepOf, py::arg("vary"), py::arg("name"), py::arg("base_yaml"),
         py::arg("base_name"), py::arg("values"), py::arg("jobs"), py::arg("resume") = nullptr);
+}
+
+// Runs, the player's data and the analysis of a loaded scene.
+void bindCalls(py::module_& m) {
   m.def(
       "player_script",
       [](const LoadedScene& loaded, const Run& run, const std::string& id) {
@@ -500,4 +501,25 @@ PYBIND11_MODULE(_core, m) {
         return toPython(tasks::analysisJson(tasks::analyze(loaded.value.model, spin)));
       },
       py::arg("scene"), py::arg("spin") = py::none());
+}
+
+}  // namespace
+}  // namespace pyrb
+
+PYBIND11_MODULE(_core, m) {
+  using namespace pyrb;
+  m.doc() = "rattleback's C++ library: scenes, runs, analysis and sweeps (see rattleback).";
+  // Messages name "argument dt", not "--dt" (each module holds its own copy of the style).
+  rb::argument_style = rb::ArgumentStyle::Keyword;
+  m.attr("version") = RATTLEBACK_VERSION;
+  m.attr("default_rate") = tasks::kDefaultRate;
+  py::list names;
+  for (const tasks::Column& c : tasks::telemetryColumns())
+    names.append(py::make_tuple(c.name, c.unit, c.meaning));
+  m.attr("telemetry_columns") = names;
+
+  bindScene(m);
+  bindRun(m);
+  bindSweep(m);
+  bindCalls(m);
 }

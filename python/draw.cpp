@@ -17,6 +17,7 @@
 #include "tasks/output.hpp"
 #include "tasks/player_data.hpp"
 #include "tasks/run_json.hpp"
+#include "util/arguments.hpp"
 
 namespace py = pybind11;
 
@@ -155,6 +156,8 @@ PYBIND11_MODULE(_draw, m) {
   m.doc() =
       "rattleback's drawing side: stills and videos (see rattleback.still, rattleback.render).";
   py::module_::import("rattleback._core");  // registers LoadedScene
+  // Messages name "argument crf", not "--crf" (each module holds its own copy of the style).
+  rb::argument_style = rb::ArgumentStyle::Keyword;
   m.def("still", &still, py::arg("scene"), py::arg("t"), py::arg("readouts"),
         py::arg("transparent"), py::arg("backend"));
   m.def("render", &renderVideos, py::arg("scene"), py::arg("output"), py::arg("both"),

@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "util/arguments.hpp"
 #include "util/assets.hpp"
 
 namespace render {
@@ -262,7 +263,8 @@ rb::Result<std::unique_ptr<GlContext>> GlContext::create(Backend backend, int wi
     auto egl = std::make_unique<EglContext>();
     egl_error = egl->create(width, height);
     if (egl_error.empty()) return std::unique_ptr<GlContext>(std::move(egl));
-    if (backend == Backend::Egl) return rb::machineError("--backend egl: " + egl_error);
+    if (backend == Backend::Egl)
+      return rb::machineError(rb::argumentGiven("backend", "egl") + ": " + egl_error);
   }
   auto osmesa = std::make_unique<OsMesaContext>();
   osmesa_error = osmesa->create(width, height);
@@ -270,7 +272,8 @@ rb::Result<std::unique_ptr<GlContext>> GlContext::create(Backend backend, int wi
     osmesa->description_ = "OSMesa: " + osmesa->description_;
     return std::unique_ptr<GlContext>(std::move(osmesa));
   }
-  if (backend == Backend::OsMesa) return rb::machineError("--backend osmesa: " + osmesa_error);
+  if (backend == Backend::OsMesa)
+    return rb::machineError(rb::argumentGiven("backend", "osmesa") + ": " + osmesa_error);
   return rb::machineError("no OpenGL for rendering: EGL: " + egl_error +
                           "; OSMesa: " + osmesa_error);
 }

@@ -10,6 +10,7 @@
 #include "sim/continuum.hpp"
 #include "sim/initial.hpp"
 #include "sim/stability.hpp"
+#include "util/arguments.hpp"
 #include "util/format.hpp"
 #include "util/nearest.hpp"
 
@@ -157,15 +158,15 @@ std::optional<rb::Error> checkSimulation(const SimulationSpec& sim) {
                                 : has_dt                ? Integrator::Symplectic
                                                         : Integrator::Dopri5;
   if (isAdaptive(integrator) && has_dt)
-    return rb::Error{
-        "simulation.integrator",
-        std::string(rb::nameOf(integrator)) +
-            " chooses its own steps: give simulation.tolerance (or --tolerance) instead of dt"};
+    return rb::Error{"simulation.integrator",
+                     std::string(rb::nameOf(integrator)) +
+                         " chooses its own steps: give simulation.tolerance (or " +
+                         rb::argumentName("tolerance") + ") instead of dt"};
   if (!isAdaptive(integrator) && has_tolerance)
-    return rb::Error{
-        "simulation.integrator",
-        std::string(rb::nameOf(integrator)) +
-            " takes a fixed step: give simulation.dt (or --dt), or use dopri5 with the tolerance"};
+    return rb::Error{"simulation.integrator", std::string(rb::nameOf(integrator)) +
+                                                  " takes a fixed step: give simulation.dt (or " +
+                                                  rb::argumentName("dt") +
+                                                  "), or use dopri5 with the tolerance"};
   if (auto e = needPositive("simulation.duration", sim.duration)) return e;
   if (has_dt && sim.duration / sim.dt > kMaxSteps)
     return rb::Error{"simulation.dt",

@@ -143,8 +143,8 @@ std::vector<RunWarning> runWarnings(const sim::Model& model, const sim::RunSumma
   if (model.contact.conservesEnergy() && std::abs(change) > 1e-3)
     w.push_back({"energy_error",
                  "this model keeps the energy exactly: the change is the integrator's error, and "
-                 "the step is too large for this run; try a smaller --dt, or --tolerance with "
-                 "dopri5"});
+                 "the step is too large for this run; try a smaller simulation.dt, or "
+                 "simulation.tolerance with dopri5"});
   if (run.floor_pulled_s) {
     char text[300];
     std::snprintf(text, sizeof text,

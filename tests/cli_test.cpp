@@ -137,6 +137,13 @@ TEST(Cli, BadSceneExitsTwoWithOneLineAndWritesNothing) {
   EXPECT_FALSE(fs::exists(csv));
 }
 
+// The library names an argument as the front end does (util/arguments.hpp): here, its option.
+TEST(Cli, LibraryMessagesNameTheOptions) {
+  const Result r = rattleback("simulate " + scene("rattleback") + " --integrator rk4 -o -");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("give simulation.dt (or --dt)"), std::string::npos) << r.err;
+}
+
 TEST(Cli, BadInputLeavesAnExistingOutputUntouched) {
   const fs::path csv = tempFile("keep.csv");
   std::ofstream(csv) << "precious\n";

@@ -174,6 +174,27 @@ def test_a_bad_fps_is_a_scene_error_as_the_other_video_arguments(tmp_path, fps, 
     assert not (tmp_path / "x.mp4").exists()
 
 
+def test_the_librarys_messages_name_pythons_arguments_not_the_command_lines_options(tmp_path):
+    # The library names an argument as the front end that called it does (util/arguments.hpp):
+    # these read "--crf", "--preset", "--both … (--spin", "(or --dt)" to a Python user.
+    scene = rb.Scene.from_file(scene_path("rattleback.yaml"))
+    calls = [
+        (lambda: rb.render(scene, tmp_path / "x.mp4", crf=60), "argument crf: must be within 1 … 51"),
+        (lambda: rb.render(scene, tmp_path / "x.mp4", preset="bogus"), "argument preset: must be one of"),
+        (lambda: rb.render(scene.with_values({"initial.spin": 0}), tmp_path / "x.mp4", both=True),
+         "argument both renders the spin and its reverse"),
+        (lambda: rb.simulate(scene, integrator="rk4"), "give simulation.dt (or argument dt)"),
+    ]
+    for call, said in calls:
+        with pytest.raises(ValueError) as caught:
+            call()
+        assert said in str(caught.value)
+        assert "--" not in str(caught.value), str(caught.value)
+    assert "give a spin (argument spin, or initial.spin" in str(
+        pytest.raises(ValueError, calls[2][0]).value)
+    assert not list(tmp_path.iterdir())
+
+
 def test_a_dict_has_no_line():
     with pytest.raises(rb.SceneError) as caught:
         rb.Scene.from_dict(DICT_SCENE | {"gravity": -9.81})
