@@ -75,7 +75,8 @@ void defineSimulate(CLI::App& c, Cli& cli) {
   SimulateArgs& s = cli.simulate_args;
   sceneOption(c, s.scene);
   c.add_option("-o,--output", s.output,
-               "CSV telemetry file (default out/<scene>.csv; - for standard output)");
+               "telemetry file: CSV (default out/<scene>.csv; - for standard output), or arrays by "
+               "the name: .npz (NumPy), .h5 (HDF5)");
   keyOption(c, s.overrides, tasks::SceneOption::Duration);
   keyOption(c, s.overrides, tasks::SceneOption::Spin);
   stepOptions(c, s.overrides);

@@ -346,7 +346,10 @@ int simulateCommand(const SimulateArgs& args) {
   const std::string csv = tableOf(args);
   const bool to_stdout = isStandardOutput(csv);
   if (auto ok = checkPlotIsNotTheTable(args.plot_dir, csv); !ok) return fail(ok);
-  if (auto ok = rb::checkDataOutput(args.output, "a CSV table", ".csv", {args.scene}); !ok)
+  const tasks::TelemetryFormat format = tasks::telemetryFormatOf(csv);
+  if (auto ok = rb::checkDataOutput(args.output, tasks::formatName(format),
+                                    tasks::extensionOf(format), {args.scene});
+      !ok)
     return fail(ok);
   // Declared before the writer, so that its temporary files are gone before the folders are
   // removed.

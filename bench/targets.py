@@ -13,6 +13,8 @@
                   either side (3.5e-7, 7e-7: whether 5e-7's is luck)     targets <= 5 ms, 1e-5 s
   output          a 10 s run of the default scene at 10 kHz from Python: the share of
                   to_csv (formatting and writing a new file) in simulate + to_csv  target < 25 %
+  arrays          `simulate -o RUN.npz` and `-o RUN.h5` of 10 s at 10 kHz against the same run at
+                  10 Hz (whole processes, alternating, median)                  target <= 1.25x
   --check         the check's tighter run against the run (its sidecar's cost_ratio)
                                                                                 target <= 2.5x
   first run       (with --first-run) a fresh clone's `bash scripts/run.sh`, wall  target < 120 s
@@ -193,14 +195,23 @@ if os.path.exists(output_bench):
     going = float(re.search(r"writing as it goes \(simulate\)\s+([\d.]+) ms", text).group(1))
     show("  the same as simulate writes it", f"run {alone:.0f} ms, writing as it goes "
          f"{going:.0f} ms: {(going - alone) / going:.0%}", "< 25 %", (going - alone) / going < 0.25)
-# The command line formats while the run goes on: its whole process at 10 kHz against 10 Hz.
+# The command line formats while the run goes on: its whole process at 10 kHz, as CSV and as
+# arrays (.npz, .h5), against the same run at 10 Hz; alternating, so that a busy moment falls
+# on all alike.
 scene = os.path.join(scenes, "rattleback.yaml")
-fast = [wall([rb, "simulate", scene, "--duration", "10", "--rate", "10000", "-q", "-o",
-              os.path.join(work, "cli-fast.csv")]) for _ in range(5)]
-slow = [wall([rb, "simulate", scene, "--duration", "10", "--rate", "10", "-q", "-o",
-              os.path.join(work, "cli-slow.csv")]) for _ in range(5)]
-print(f"{'  (simulate --rate 10000, whole)':<34} {statistics.median(fast) * 1e3:.0f} ms against "
-      f"--rate 10 {statistics.median(slow) * 1e3:.0f} ms")
+walls = {"csv": [], "npz": [], "h5": [], "slow": []}
+for _ in range(7):
+    for kind in walls:
+        rate, ext = ("10", "csv") if kind == "slow" else ("10000", kind)
+        walls[kind].append(wall([rb, "simulate", scene, "--duration", "10", "--rate", rate, "-q",
+                                 "-o", os.path.join(work, f"cli-{kind}.{ext}")]))
+slow = statistics.median(walls["slow"])
+print(f"{'  (simulate --rate 10000, whole)':<34} {statistics.median(walls['csv']) * 1e3:.0f} ms "
+      f"against --rate 10 {slow * 1e3:.0f} ms")
+for kind in ("npz", "h5"):
+    fast = statistics.median(walls[kind])
+    show(f"arrays: -o RUN.{kind}, 10 s at 10 kHz", f"{fast * 1e3:.0f} ms against --rate 10 "
+         f"{slow * 1e3:.0f} ms: {fast / slow:.2f}x (whole process)", "<= 1.25x", fast / slow <= 1.25)
 
 # 6. --check's cost.
 for name in ("rattleback", "kane-levinson"):

@@ -397,7 +397,39 @@ void sweepToCsv(const SweepTable& t, const std::string& path) {
 namespace pyrb {
 namespace {
 
-// A finished run: its columns, what it found, its pickle and to_csv.
+// Writes a finished run as `format` with its sidecar, as simulate -o does. Ctrl-C stops the
+// writing, puts nothing in place and raises KeyboardInterrupt (it finished, replaced the file
+// there and then raised it).
+void writeRun(const Run& r, const std::string& path, const char* method,
+              tasks::TelemetryFormat format) {
+  const rb::Status written = interruptibleHere([&](const std::function<bool()>& cancelled) {
+    const rb::OutputNamedBy naming(method);  // the way out an error line suggests
+    // Not over the run's scene, nor as a picture, as the command line refuses them
+    // (to_csv("mine.yaml") would replace the scene); nor in another format than the method's.
+    const nlohmann::json& scene_path = r.sidecar.at("scene_path");
+    rb::Status status = rb::checkDataOutput(
+        path, tasks::formatName(format), tasks::extensionOf(format),
+        {scene_path.is_string() ? scene_path.get<std::string>() : std::string()});
+    if (status && tasks::telemetryFormatOf(path) != format)
+      status = rb::Status::fail(std::string(method) + " " + path + ": writes " +
+                                tasks::formatName(format) + "; give a name ending in " +
+                                tasks::extensionOf(format));
+    if (status) status = tasks::writeTelemetry(path, r.samples, r.sidecar, cancelled, format);
+    // Listed in the folder's manifest, as the command line lists it (a failure to list loses
+    // nothing: the report then places the file by its name).
+    if (status)
+      (void)tasks::recordOutputs({{path,
+                                   tasks::OutputKind::Telemetry,
+                                   stemOf(r.scene, !scene_path.is_null()),
+                                   "",
+                                   {},
+                                   {}}});
+    return status;
+  });
+  if (!written) raise(written.error());
+}
+
+// A finished run: its columns, what it found, its pickle and its files.
 void bindRun(py::module_& m) {
   py::class_<Run, std::shared_ptr<Run>>(m, "Run")
       .def("columns", &columns)
@@ -412,30 +444,16 @@ void bindRun(py::module_& m) {
                       [](const py::tuple& state) { return runOfState(state); }))
       .def_readonly("scene", &Run::scene)
       .def_readonly("rate", &Run::rate)
-      .def("to_csv", [](const Run& r, const std::string& path) {
-        // Ctrl-C stops the writing, puts nothing in place and raises KeyboardInterrupt (it
-        // finished, replaced the file there and then raised it).
-        const rb::Status written = interruptibleHere([&](const std::function<bool()>& cancelled) {
-          const rb::OutputNamedBy naming("to_csv");  // the way out an error line suggests
-          // Not over the run's scene, nor as a picture, as the command line refuses them
-          // (to_csv("mine.yaml") would replace the scene).
-          const nlohmann::json& scene_path = r.sidecar.at("scene_path");
-          rb::Status status = rb::checkDataOutput(
-              path, "a CSV table", ".csv",
-              {scene_path.is_string() ? scene_path.get<std::string>() : std::string()});
-          if (status) status = tasks::writeTelemetry(path, r.samples, r.sidecar, cancelled);
-          // Listed in the folder's manifest, as the command line lists it (a failure to
-          // list loses nothing: the report then places the file by its name).
-          if (status)
-            (void)tasks::recordOutputs({{path,
-                                         tasks::OutputKind::Telemetry,
-                                         stemOf(r.scene, !r.sidecar.at("scene_path").is_null()),
-                                         "",
-                                         {},
-                                         {}}});
-          return status;
-        });
-        if (!written) raise(written.error());
+      .def("to_csv",
+           [](const Run& r, const std::string& path) {
+             writeRun(r, path, "to_csv", tasks::TelemetryFormat::Csv);
+           })
+      .def("to_npz",
+           [](const Run& r, const std::string& path) {
+             writeRun(r, path, "to_npz", tasks::TelemetryFormat::Npz);
+           })
+      .def("to_hdf5", [](const Run& r, const std::string& path) {
+        writeRun(r, path, "to_hdf5", tasks::TelemetryFormat::Hdf5);
       });
 }
 

@@ -15,6 +15,7 @@ packages=(
   libboost-dev nlohmann-json3-dev
   chromium chromium-driver python3-selenium
   parallel slurm-wlm munge time
+  libhdf5-dev python3-h5py
   pybind11-dev python3-dev python3-numpy python3-pytest python3-pandas python3-matplotlib
   python3-nbclient python3-ipykernel python3-nbformat
   mkdocs mkdocs-material

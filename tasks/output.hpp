@@ -46,6 +46,7 @@ class AtomicOutput {
   ~AtomicOutput();  ///< removes the temporary file unless committed
 
   std::ostream& stream() { return out_; }
+  const std::string& path() const { return path_; }  ///< as given
   /// Flushes, closes and renames into place; an error line when any write failed.
   rb::Status commit();
 

@@ -330,7 +330,8 @@ TelemetryWriter::TelemetryWriter(std::unique_ptr<Pipeline> pipeline,
 TelemetryWriter::TelemetryWriter(TelemetryWriter&&) noexcept = default;
 TelemetryWriter::~TelemetryWriter() = default;
 
-rb::Result<TelemetryWriter> TelemetryWriter::open(const std::string& path) {
+rb::Result<TelemetryWriter> TelemetryWriter::open(const std::string& path,
+                                                  std::optional<TelemetryFormat> format) {
   if (auto made = makeParentFolder(path); !made) return made.error();
   auto csv = AtomicOutput::open(path);
   if (!csv) return csv.error();
@@ -339,6 +340,12 @@ rb::Result<TelemetryWriter> TelemetryWriter::open(const std::string& path) {
     auto opened = AtomicOutput::open(path + ".json");
     if (!opened) return opened.error();
     meta.emplace(std::move(opened).value());
+  }
+  if (const TelemetryFormat f = format.value_or(telemetryFormatOf(path));
+      f != TelemetryFormat::Csv) {
+    TelemetryWriter writer(nullptr, std::move(meta));
+    writer.arrays_.reset(new Arrays{f, std::move(csv).value(), {}});
+    return writer;
   }
   csv->stream() << telemetryHeader();
   // All cores but the run's (one at least).
@@ -349,6 +356,11 @@ rb::Result<TelemetryWriter> TelemetryWriter::open(const std::string& path) {
 }
 
 void TelemetryWriter::row(const sim::Telemetry& sample) {
+  if (arrays_) {
+    arrays_->columns.add(sample);
+    ++rows_;
+    return;
+  }
   if (pending_.capacity() == 0) {
     pending_ = pipeline_->spareRows();
     pending_.reserve(kChunkRows);
@@ -359,13 +371,21 @@ void TelemetryWriter::row(const sim::Telemetry& sample) {
 }
 
 void TelemetryWriter::handOff() {
-  if (pending_.empty()) return;
+  if (pending_.empty() || !pipeline_) return;
   pipeline_->push(std::move(pending_), {});
   pending_ = {};
 }
 
 bool TelemetryWriter::rows(std::span<const sim::Telemetry> samples,
                            const std::function<bool()>& cancelled) {
+  if (arrays_) {
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+      if (k % kChunkRows == 0 && cancelled && cancelled()) return false;
+      arrays_->columns.add(samples[k]);
+    }
+    rows_ += static_cast<std::int64_t>(samples.size());
+    return true;
+  }
   handOff();
   // Chunks formatted straight from the caller's samples, not copied into the writer's own first.
   for (std::size_t at = 0; at < samples.size(); at += kChunkRows) {
@@ -386,6 +406,15 @@ rb::Status TelemetryWriter::commit(const RunScene& scene, const sim::Model& mode
 }
 
 rb::Status TelemetryWriter::commit(const nlohmann::json& sidecar) {
+  if (arrays_) {
+    if (auto e =
+            arrays_->columns.write(arrays_->file.stream(), arrays_->format, arrays_->file.path());
+        !e)
+      return e;
+    if (meta_) meta_->stream() << sidecar.dump(2) << "\n";
+    if (auto e = arrays_->file.commit(); !e) return e;
+    return meta_ ? meta_->commit() : rb::Status();
+  }
   handOff();
   pipeline_->drain();
   if (meta_) meta_->stream() << sidecar.dump(2) << "\n";
@@ -403,8 +432,9 @@ rb::Status writeTelemetry(const std::string& path, const RunScene& scene, const 
 }
 
 rb::Status writeTelemetry(const std::string& path, const std::vector<sim::Telemetry>& samples,
-                          const nlohmann::json& sidecar, const std::function<bool()>& cancelled) {
-  auto writer = TelemetryWriter::open(path);
+                          const nlohmann::json& sidecar, const std::function<bool()>& cancelled,
+                          std::optional<TelemetryFormat> format) {
+  auto writer = TelemetryWriter::open(path, format);
   if (!writer) return writer.error();
   // (Stopped, the writer's files are removed as it goes: the files there before stay.)
   if (!writer->rows(samples, cancelled) || (cancelled && cancelled()))

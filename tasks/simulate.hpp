@@ -20,6 +20,7 @@
 #include "tasks/outcome.hpp"
 #include "tasks/output.hpp"
 #include "tasks/table.hpp"
+#include "tasks/telemetry_arrays.hpp"
 #include "tasks/telemetry_columns.hpp"
 #include "util/result.hpp"
 
@@ -76,11 +77,14 @@ nlohmann::json telemetrySidecar(const RunScene& scene, const sim::Model& model, 
                                 const sim::RunSummary& run, std::int64_t rows,
                                 const nlohmann::json& check = nullptr);
 
-/// The CSV and its sidecar as a run goes: each appears whole at commit() or not at all (no
-/// sidecar beside a device such as /dev/stdout, even when the shell sends it to a file).
+/// The telemetry and its sidecar as a run goes: each appears whole at commit() or not at all (no
+/// sidecar beside a device such as /dev/stdout, even when the shell sends it to a file). CSV is
+/// written as the run goes; arrays (.npz, .h5) are gathered and written at commit().
 class TelemetryWriter {
  public:
-  static rb::Result<TelemetryWriter> open(const std::string& path);
+  /// `format`: by the name's extension when not given (telemetryFormatOf).
+  static rb::Result<TelemetryWriter> open(const std::string& path,
+                                          std::optional<TelemetryFormat> format = {});
   TelemetryWriter(TelemetryWriter&&) noexcept;
   ~TelemetryWriter();
   void row(const sim::Telemetry& sample);
@@ -104,7 +108,13 @@ class TelemetryWriter {
   static constexpr std::size_t kChunkRows = 4096;
   TelemetryWriter(std::unique_ptr<Pipeline> pipeline, std::optional<AtomicOutput> meta);
   void handOff();
-  std::unique_ptr<Pipeline> pipeline_;
+  std::unique_ptr<Pipeline> pipeline_;  ///< CSV; else the arrays below
+  struct Arrays {
+    TelemetryFormat format;
+    AtomicOutput file;
+    TelemetryArrays columns;
+  };
+  std::unique_ptr<Arrays> arrays_;
   std::optional<AtomicOutput> meta_;
   std::int64_t rows_ = 0;
   std::vector<sim::Telemetry> pending_;
@@ -119,8 +129,10 @@ rb::Status writeTelemetry(const std::string& path, const RunScene& scene, const 
 /// The same with the sidecar made already (telemetrySidecar with rows = samples.size()).
 /// `cancelled` (may be empty) is asked as the rows are written: true stops, and neither file is
 /// put in place (what was there stays) — Python's to_csv on Ctrl-C.
+/// `format`: by the name's extension when not given.
 rb::Status writeTelemetry(const std::string& path, const std::vector<sim::Telemetry>& samples,
                           const nlohmann::json& sidecar,
-                          const std::function<bool()>& cancelled = {});
+                          const std::function<bool()>& cancelled = {},
+                          std::optional<TelemetryFormat> format = {});
 
 }  // namespace tasks

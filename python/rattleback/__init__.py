@@ -283,6 +283,22 @@ class Run:
         ``path + ".json"``, each whole or not at all."""
         self._run.to_csv(os.fspath(path))
 
+    @checked
+    def to_npz(self, path: Union[str, os.PathLike]) -> None:
+        """Writes the columns as NumPy arrays at ``path`` (``.npz``: ``np.load(path)["spin"]``,
+        the run's own doubles; ``contacts`` int64, ``mode`` text), with ``columns`` and
+        ``units`` arrays naming each column and its unit, and the sidecar at ``path + ".json"``;
+        as ``rattleback simulate -o RUN.npz``."""
+        self._run.to_npz(os.fspath(path))
+
+    @checked
+    def to_hdf5(self, path: Union[str, os.PathLike]) -> None:
+        """Writes the columns as HDF5 datasets at ``path`` (``.h5`` or ``.hdf5``: h5py's
+        ``f["spin"][:]``, MATLAB's ``h5read(path, "/spin")``), each with ``unit`` and ``meaning``
+        attributes, and the sidecar at ``path + ".json"``; as ``rattleback simulate -o RUN.h5``.
+        """
+        self._run.to_hdf5(os.fspath(path))
+
     def __reduce__(self):
         # Pickled as its samples and sidecar, exactly (every column, result, model and check,
         # and the same to_csv): a multiprocessing.Pool's worker, or joblib's cache, returns one.

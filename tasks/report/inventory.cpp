@@ -110,9 +110,16 @@ void placeRuns(const fs::path& dir, std::map<std::string, std::vector<std::strin
   std::error_code ec;
   for (auto& [scene, files] : runs) {
     std::sort(files.begin(), files.end());
+    // The page reads a CSV's rows: arrays (.npz, .h5) are listed beside it, never the main run.
     auto main = std::find(files.begin(), files.end(), scene + ".csv");
-    if (main == files.end()) main = files.begin();
+    if (main == files.end())
+      main = std::find_if(files.begin(), files.end(),
+                          [](const std::string& file) { return endsWith(file, ".csv"); });
     SceneFiles& f = folder.scenes[scene];
+    if (main == files.end()) {
+      f.more_runs.insert(f.more_runs.end(), files.begin(), files.end());
+      continue;
+    }
     f.by_suffix[".csv"] = *main;
     if (fs::is_regular_file(dir / (*main + ".json"), ec))
       f.by_suffix[".csv.json"] = *main + ".json";
