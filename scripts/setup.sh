@@ -11,7 +11,7 @@ packages=(
   libpng-dev libfreetype-dev fonts-dejavu-core
   ffmpeg gnuplot-nox
   dpkg-dev
-  clang libclang-rt-14-dev clang-format
+  clang libclang-rt-14-dev clang-format black
   libboost-dev nlohmann-json3-dev
   chromium chromium-driver python3-selenium
   parallel slurm-wlm munge time

@@ -68,7 +68,7 @@ struct Scales {
   // ω in body axes is scaled as the angular momentum is, component by component (I_ii ω_i
   // over I_max/τ): a rocking about a light axis is held to the error the same momentum about
   // the heaviest would be. Scaling ω by τ alone, for the same reversal error, cost the default
-  // scene 7 % less and Kane & Levinson 17 % more (docs/speed.md).
+  // scene 7 % less and Kane & Levinson 17 % more (docs/speed.md "Simulation: speed against error").
   std::array<double, 3> spin;
 };
 

@@ -93,8 +93,8 @@ double rollExcess(const Vector& v) {
 
 ModePairs modePairs(const Model& rolling, double spin) {
   // Dynamic sizes: Eigen's eigensolver for a fixed 5×5 (and 4×4 below) took the compiler
-  // 34 s and 1.5 GB for this file, the longest step of a fresh build (docs/speed.md); the
-  // arithmetic is the same.
+  // 34 s and 1.5 GB for this file, the longest step of a fresh build; the arithmetic is the
+  // same (docs/speed.md "A fresh build").
   const Eigen::EigenSolver<Eigen::MatrixXd> solver(Eigen::MatrixXd(jacobianAt(rolling, spin)));
   const Eigen::MatrixXcd vectors = solver.eigenvectors();
   ModePairs out;

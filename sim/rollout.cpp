@@ -79,7 +79,7 @@ Rollout::~Rollout() = default;
 bool Rollout::advanceTo(double t) {
   // Sampled faster than it steps (10 kHz against rk4's 2 kHz), most calls take no step: they
   // read no clock and count nothing (two clock reads and an acos a call were a fifth of a
-  // 10 kHz run; docs/speed.md).
+  // 10 kHz run; docs/speed.md "Simulation: speed against error").
   if (!stopped() && current_.t < t && !sameTime(current_.t, t)) {
     const auto start = std::chrono::steady_clock::now();
     while (!stopped() && current_.t < t && !sameTime(current_.t, t)) {

@@ -56,9 +56,9 @@ bool putArray(hid_t file, const NamedArray& a) {
   // the same bytes.
   Id create(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
   if (!create.ok() || H5Pset_obj_track_times(create.get(), false) < 0) return false;
-  Id set(H5Dcreate2(file, a.name.c_str(), type, space.get(), H5P_DEFAULT, create.get(),
-                    H5P_DEFAULT),
-         H5Dclose);
+  Id set(
+      H5Dcreate2(file, a.name.c_str(), type, space.get(), H5P_DEFAULT, create.get(), H5P_DEFAULT),
+      H5Dclose);
   if (!set.ok()) return false;
   // (An empty array has nothing to write.)
   if (a.length > 0 && H5Dwrite(set.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, a.bytes.data()) < 0)

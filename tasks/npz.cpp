@@ -125,7 +125,8 @@ void common(std::string& out, const Member& m) {
 
 }  // namespace
 
-rb::Status writeNpz(std::ostream& out, std::span<const NamedArray> arrays, const std::string& path) {
+rb::Status writeNpz(std::ostream& out, std::span<const NamedArray> arrays,
+                    const std::string& path) {
   std::vector<std::string> names, units;
   for (const NamedArray& a : arrays) {
     names.push_back(a.name);

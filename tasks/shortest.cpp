@@ -7,7 +7,7 @@
 
 // The shortest decimal that reads back as the same double, written as std::to_chars(…,
 // chars_format::general) writes it, in about three fifths of its time (the 10 kHz CSV's two
-// million numbers; docs/speed.md, the shortest formatter that is kept).
+// million numbers; docs/speed.md "Writing the output").
 //
 // The digits are found by Schubfach (R. Giulietti, "The Schubfach way to render doubles", 2020,
 // cited on that page): v = c·2^q is scaled by 10^−k so that the interval of reals that round

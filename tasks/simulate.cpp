@@ -70,7 +70,7 @@ std::string telemetryHeader() {
 namespace {
 
 // Every number exactly (shortest round trip), written straight into one buffer: at 10 kHz
-// printf's formatting was most of a run's time (docs/speed.md).
+// printf's formatting was most of a run's time (docs/speed.md "Writing the output").
 char* formatRow(char* line, const sim::Telemetry& s) {
   const Eigen::Quaterniond q = attitude(s);
   const SampleView view{s, q};
@@ -184,7 +184,7 @@ nlohmann::json telemetrySidecar(const RunScene& scene, const sim::Model& model, 
 // front chunk, once formatted, is written by whichever is free, so that the file is written in
 // order while later chunks are still being formatted. The caller's thread hands chunks over and
 // goes on with its run: on two cores the run keeps one and formatting and writing the other, and
-// both share the rest once the run is over (docs/speed.md).
+// both share the rest once the run is over (docs/speed.md "Writing the output").
 constexpr unsigned kMaxWorkers = 7;  // more than a few chunks at once gain nothing
 
 class TelemetryWriter::Pipeline {

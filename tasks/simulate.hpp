@@ -103,7 +103,8 @@ class TelemetryWriter {
  private:
   // Rows are formatted in chunks by threads of the writer's own while the run goes on, and
   // written in order by whichever of them has the next chunk; the run's thread lends a hand only
-  // when they fall behind, and at the end (formatting was half of a 10 kHz run; docs/speed.md).
+  // when they fall behind, and at the end (formatting was half of a 10 kHz run:
+  // docs/speed.md "Writing the output").
   class Pipeline;
   static constexpr std::size_t kChunkRows = 4096;
   TelemetryWriter(std::unique_ptr<Pipeline> pipeline, std::optional<AtomicOutput> meta);

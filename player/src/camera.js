@@ -30,7 +30,9 @@ function towardEye(preset) {
   if (Math.hypot(toward.x, toward.y) > 1e-6) return toward;
   const tilt = 1e-4;
   const [ux, uy] = preset.up;
-  return toward.multiplyScalar(Math.cos(tilt)).add(new Vector3(-ux * Math.sin(tilt), -uy * Math.sin(tilt), 0));
+  return toward
+    .multiplyScalar(Math.cos(tilt))
+    .add(new Vector3(-ux * Math.sin(tilt), -uy * Math.sin(tilt), 0));
 }
 
 export const cameraMethods = {
@@ -53,8 +55,12 @@ export const cameraMethods = {
         controls.maxDistance = 40 * this.framing.radius;
       }
       let interacting = false;
-      controls.addEventListener('start', () => { interacting = true; });
-      controls.addEventListener('end', () => { interacting = false; });
+      controls.addEventListener('start', () => {
+        interacting = true;
+      });
+      controls.addEventListener('end', () => {
+        interacting = false;
+      });
       controls.addEventListener('change', () => {
         if (interacting && this.viewName !== 'free') this.makeFree();
         this.dirty = true;
@@ -120,7 +126,8 @@ export const cameraMethods = {
     let exact = this.renderer.getPixelRatio() === dpr;
     if (exact) {
       const box = this.canvas.getBoundingClientRect();
-      const bw = Math.floor(w * dpr), bh = Math.floor(h * dpr); // the buffer, as three sizes it
+      const bw = Math.floor(w * dpr),
+        bh = Math.floor(h * dpr); // the buffer, as three sizes it
       exact = Math.abs(box.width * dpr - bw) < 1 && Math.abs(box.height * dpr - bh) < 1;
     }
     const rendering = exact ? 'pixelated' : '';
@@ -218,9 +225,16 @@ export const cameraMethods = {
     const elevation = preset.elevation_deg * DEG;
     const q = this.points.quaternion;
     const axis = new Vector3(0, 1, 0).applyQuaternion(q); // the long axis, world
-    let hx = axis.x, hy = axis.y;
+    let hx = axis.x,
+      hy = axis.y;
     const norm = Math.hypot(hx, hy);
-    if (norm > 1e-6) { hx /= norm; hy /= norm; } else { hx = 0; hy = 1; }
+    if (norm > 1e-6) {
+      hx /= norm;
+      hy /= norm;
+    } else {
+      hx = 0;
+      hy = 1;
+    }
     const middle = this.points.position.clone();
     middle.z += this.body.middleHeight;
     const framed = this.body.frame > 0 ? 0.5 * this.body.frame : this.body.reach;

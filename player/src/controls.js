@@ -44,16 +44,35 @@ export const controlsMethods = {
     // To the moment the spin passes zero, the picture a lesson stops at (hard to find by
     // stepping with the arrows, or by a click on the plot that lands near it).
     const reversals = this.run.reversals || [];
-    this.reversalButton = button('⟲ Reversal', reversals.length ? 'Go to the next reversal, where the spin passes zero (R)' : 'No reversal in this run',
-                                 () => this.gotoReversal(), 'rbp-reversal');
+    this.reversalButton = button(
+      '⟲ Reversal',
+      reversals.length
+        ? 'Go to the next reversal, where the spin passes zero (R)'
+        : 'No reversal in this run',
+      () => this.gotoReversal(),
+      'rbp-reversal',
+    );
     this.reversalButton.disabled = reversals.length === 0;
     // Full screen, for a projector: the picture and its read-outs as large as the screen allows.
     // (Words, not a symbol: the page's fonts may lack the full-screen glyph, drawn as a box.)
-    this.fullButton = button('Full screen', 'Full screen (F; Esc leaves it)', () => this.toggleFullScreen(), 'rbp-full');
+    this.fullButton = button(
+      'Full screen',
+      'Full screen (F; Esc leaves it)',
+      () => this.toggleFullScreen(),
+      'rbp-full',
+    );
     this.buildSlider();
     this.buildSpeed();
-    bar.append(this.backButton, this.playButton, this.forwardButton, this.reversalButton, this.slider,
-               el('span', 'rbp-label', 'speed'), this.speedSelect, this.fullButton);
+    bar.append(
+      this.backButton,
+      this.playButton,
+      this.forwardButton,
+      this.reversalButton,
+      this.slider,
+      el('span', 'rbp-label', 'speed'),
+      this.speedSelect,
+      this.fullButton,
+    );
     return bar;
   },
 
@@ -81,9 +100,15 @@ export const controlsMethods = {
     // → chose the next speed, space did nothing); one chosen with the keyboard (the menu tabbed
     // to, its arrows) leaves the focus on the menu, so its keys go on choosing.
     this.speedKeyed = false;
-    this.speedSelect.addEventListener('keydown', () => { this.speedKeyed = true; });
-    this.speedSelect.addEventListener('pointerdown', () => { this.speedKeyed = false; });
-    this.speedSelect.addEventListener('blur', () => { this.speedKeyed = false; });
+    this.speedSelect.addEventListener('keydown', () => {
+      this.speedKeyed = true;
+    });
+    this.speedSelect.addEventListener('pointerdown', () => {
+      this.speedKeyed = false;
+    });
+    this.speedSelect.addEventListener('blur', () => {
+      this.speedKeyed = false;
+    });
     this.speedSelect.addEventListener('change', () => {
       this.setSpeed(parseFloat(this.speedSelect.value));
       if (!this.speedKeyed) this.root.focus({ preventScroll: true });
@@ -96,12 +121,22 @@ export const controlsMethods = {
     views.appendChild(el('span', 'rbp-label', 'view'));
     this.viewButtons = {};
     for (const v of this.viewNames) {
-      const b = button(v[0].toUpperCase() + v.slice(1), `View: ${v}`, () => this.setView(v), `rbp-view rbp-view-${v}`);
+      const b = button(
+        v[0].toUpperCase() + v.slice(1),
+        `View: ${v}`,
+        () => this.setView(v),
+        `rbp-view rbp-view-${v}`,
+      );
       b.dataset.view = v;
       this.viewButtons[v] = b;
       views.appendChild(b);
     }
-    this.freeButton = button('Free', 'Drag to orbit, right-drag to pan, wheel to zoom', () => this.setView('free'), 'rbp-view rbp-view-free');
+    this.freeButton = button(
+      'Free',
+      'Drag to orbit, right-drag to pan, wheel to zoom',
+      () => this.setView('free'),
+      'rbp-view rbp-view-free',
+    );
     this.freeButton.dataset.view = 'free';
     this.viewButtons.free = this.freeButton;
     views.appendChild(this.freeButton);
@@ -128,20 +163,31 @@ export const controlsMethods = {
     plotBox.append(this.plot, this.cursorLine, this.cursorDot);
     side.appendChild(plotBox);
     const nrev = (this.run.reversals || []).length;
-    side.appendChild(el('div', 'rbp-help',
-      (nrev ? `${nrev} reversal${nrev === 1 ? '' : 's'} (orange)` : 'No reversal in this run') +
-      (this.forecast ? ', the averaged theory\'s forecast of the first (violet)' : '') +
-      '. Drag: orbit, right-drag: pan, wheel: zoom. ' +
-      'Keys: space play/pause, ← → step one sample (' + formatStep(this.run.t) + '), ' +
-      'Home / End the start / end, R the next reversal, F full screen.'));
+    side.appendChild(
+      el(
+        'div',
+        'rbp-help',
+        (nrev ? `${nrev} reversal${nrev === 1 ? '' : 's'} (orange)` : 'No reversal in this run') +
+          (this.forecast ? ", the averaged theory's forecast of the first (violet)" : '') +
+          '. Drag: orbit, right-drag: pan, wheel: zoom. ' +
+          'Keys: space play/pause, ← → step one sample (' +
+          formatStep(this.run.t) +
+          '), ' +
+          'Home / End the start / end, R the next reversal, F full screen.',
+      ),
+    );
     return side;
   },
 
   bindEvents() {
     this.root.addEventListener('keydown', (e) => this.onKey(e));
     this.canvas.addEventListener('pointerdown', () => this.root.focus({ preventScroll: true }));
-    this.slider.addEventListener('pointerdown', () => { this.sliderDragging = true; });
-    window.addEventListener('pointerup', () => { this.sliderDragging = false; });
+    this.slider.addEventListener('pointerdown', () => {
+      this.sliderDragging = true;
+    });
+    window.addEventListener('pointerup', () => {
+      this.sliderDragging = false;
+    });
     const seek = (e) => {
       const rect = this.plot.getBoundingClientRect();
       this.setTime(this.plotLayout().tAt(e.clientX - rect.left), false);
@@ -151,8 +197,12 @@ export const controlsMethods = {
       this.plot.setPointerCapture(e.pointerId);
       seek(e);
     });
-    this.plot.addEventListener('pointermove', (e) => { if (this.plotDragging) seek(e); });
-    this.plot.addEventListener('pointerup', () => { this.plotDragging = false; });
+    this.plot.addEventListener('pointermove', (e) => {
+      if (this.plotDragging) seek(e);
+    });
+    this.plot.addEventListener('pointerup', () => {
+      this.plotDragging = false;
+    });
     if (typeof ResizeObserver !== 'undefined') {
       new ResizeObserver(() => this.resize()).observe(this.stage);
       this.resizeObserved = true;

@@ -10,7 +10,8 @@ export function problemWith(run) {
   if (!run || typeof run !== 'object') return 'no data';
   const n = run.t && run.t.length;
   if (!n) return 'no samples';
-  for (const k of SERIES) if (!run[k] || run[k].length !== n) return `series ${k} missing or of another length`;
+  for (const k of SERIES)
+    if (!run[k] || run[k].length !== n) return `series ${k} missing or of another length`;
   for (const k of ['top', 'bottom']) if (!run[k] || run[k].length % 3) return `points ${k} missing`;
   if (!Array.isArray(run.views) || !run.views.length) return 'views missing';
   if (run.top.length + run.bottom.length === 0) return 'no points';

@@ -38,10 +38,19 @@ export const drawMethods = {
     const target = this.activeControls().target;
     let same = this.drawnCamera === this.camera && !this.redrawAll && !this.alwaysAll;
     const put = (i, v) => {
-      if (key[i] !== v) { same = false; key[i] = v; }
+      if (key[i] !== v) {
+        same = false;
+        key[i] = v;
+      }
     };
-    for (let i = 0; i < 16; i++) { put(i, m[i]); put(16 + i, pm[i]); }
-    put(32, this.width); put(33, this.height); put(34, target.x); put(35, target.y);
+    for (let i = 0; i < 16; i++) {
+      put(i, m[i]);
+      put(16 + i, pm[i]);
+    }
+    put(32, this.width);
+    put(33, this.height);
+    put(34, target.x);
+    put(35, target.y);
     this.drawnCamera = this.camera;
     this.redrawAll = false;
     const now = this.bodyRect();
@@ -83,7 +92,9 @@ export const drawMethods = {
     }
     // The shadow fades out at 1.15 of the footprint's half extents (FLOOR_FRAGMENT).
     const u = this.floorMaterial.uniforms;
-    const center = u.shadowCenter.value, axis = u.shadowAxis.value, half = u.shadowHalf.value;
+    const center = u.shadowCenter.value,
+      axis = u.shadowAxis.value,
+      half = u.shadowHalf.value;
     for (let c = 0; c < 4; c++) {
       const across = (c & 1 ? SHADOW_REACH : -SHADOW_REACH) * half.x;
       const along = (c & 2 ? SHADOW_REACH : -SHADOW_REACH) * half.y;
@@ -109,8 +120,13 @@ export const drawMethods = {
       this.updateReadouts();
     }
     // (A ResizeObserver follows the stage's size where there is one: no layout read per frame.)
-    if (!this.resizeObserved && !this.fixedSize && this.stage.clientWidth &&
-        Math.round(this.stage.clientWidth) !== this.width) this.resize();
+    if (
+      !this.resizeObserved &&
+      !this.fixedSize &&
+      this.stage.clientWidth &&
+      Math.round(this.stage.clientWidth) !== this.width
+    )
+      this.resize();
     if (this.playing) {
       if (this.lastTick != null) {
         const next = this.time + ((now - this.lastTick) / 1000) * this.speed;

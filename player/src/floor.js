@@ -1,7 +1,19 @@
 // The floor under the body: a checker fading into the background (with distance from the
 // target, or along the floor in the level orthographic views), its contact shadow, and the
 // floor's depth for the points' shader.
-import { CustomBlending, Mesh, OneFactor, PlaneGeometry, ShaderMaterial, SrcColorFactor, Vector2, Vector3, ZeroFactor, BufferAttribute, BufferGeometry } from 'three';
+import {
+  CustomBlending,
+  Mesh,
+  OneFactor,
+  PlaneGeometry,
+  ShaderMaterial,
+  SrcColorFactor,
+  Vector2,
+  Vector3,
+  ZeroFactor,
+  BufferAttribute,
+  BufferGeometry,
+} from 'three';
 import { FLOOR_FRAGMENT, FLOOR_VERTEX, SHADOW_FRAGMENT, SHADOW_REACH, SHADOW_VERTEX } from './shaders.js';
 import { lengthText } from './data.js';
 
@@ -44,7 +56,8 @@ function fogRows() {
   for (let k = 0; k <= FOG_ROWS; k++) position.push(-1, k / FOG_ROWS, 0, 1, k / FOG_ROWS, 0);
   const index = [];
   for (let k = 0; k <= FOG_ROWS; k++) {
-    const a = 2 * k, b = 2 * k + 2; // this row's left vertex, the next row's
+    const a = 2 * k,
+      b = 2 * k + 2; // this row's left vertex, the next row's
     index.push(a, a + 1, b + 1, a, b + 1, b);
   }
   const geometry = new BufferGeometry();
@@ -68,10 +81,15 @@ export const floorMethods = {
   // wander and far enough beyond it to fade out.
   floorReach(size) {
     const run = this.run;
-    let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+    let x0 = Infinity,
+      x1 = -Infinity,
+      y0 = Infinity,
+      y1 = -Infinity;
     for (let i = 0; i < this.n; i++) {
-      x0 = Math.min(x0, run.x[i]); x1 = Math.max(x1, run.x[i]);
-      y0 = Math.min(y0, run.y[i]); y1 = Math.max(y1, run.y[i]);
+      x0 = Math.min(x0, run.x[i]);
+      x1 = Math.max(x1, run.x[i]);
+      y0 = Math.min(y0, run.y[i]);
+      y1 = Math.max(y1, run.y[i]);
     }
     const margin = 14 * size + 20 * this.framing.radius;
     return Math.hypot(x1 - x0 + 2 * margin, y1 - y0 + 2 * margin);
@@ -187,7 +205,8 @@ export const floorMethods = {
     // The floor's programs follow the mode (three keeps both once compiled).
     if (!!this.floorMaterial.defines.FOG !== level) {
       for (const m of [this.floorMaterial, this.floorNearMaterial, this.shadowMaterial]) {
-        if (level) m.defines.FOG = 1; else delete m.defines.FOG;
+        if (level) m.defines.FOG = 1;
+        else delete m.defines.FOG;
         m.needsUpdate = true;
       }
       this.floor.geometry = level ? this.floorGeometries.fog : this.floorGeometries.fade;
@@ -228,10 +247,10 @@ export const floorMethods = {
     if (analytic) {
       const inv = k.invert().elements; // column-major
       const l = [m[2], m[6], m[14]];
-      const c = [0, 1, 2].map((j) => l[0] * inv[3 * j] + l[1] * inv[3 * j + 1] +
-                                     l[2] * inv[3 * j + 2]);
+      const c = [0, 1, 2].map((j) => l[0] * inv[3 * j] + l[1] * inv[3 * j + 1] + l[2] * inv[3 * j + 2]);
       // window: x_ndc = 2 x / W - 1, y_ndc = 2 y / H - 1, depth = (z_ndc + 1) / 2
-      const W = this.bufferSize.x, H = this.bufferSize.y;
+      const W = this.bufferSize.x,
+        H = this.bufferSize.y;
       depth.set(c[0] / W, c[1] / H, 0.5 * (1 + c[2] - c[0] - c[1]));
     } else {
       depth.set(0, 0, 2);
@@ -247,7 +266,9 @@ export const floorMethods = {
   // cos(π / FADE_SIDES), or before fogNear), else the floor's formula with the shadow.
   chooseShadow() {
     const u = this.floorMaterial.uniforms;
-    const center = u.shadowCenter.value, axis = u.shadowAxis.value, half = u.shadowHalf.value;
+    const center = u.shadowCenter.value,
+      axis = u.shadowAxis.value,
+      half = u.shadowHalf.value;
     const fog = !!this.floorMaterial.defines.FOG;
     const d = u.depthDirection.value;
     let near = this.shortcuts;
@@ -256,8 +277,12 @@ export const floorMethods = {
       const along = (c & 2 ? SHADOW_REACH : -SHADOW_REACH) * half.y;
       const x = center.x + across * axis.y + along * axis.x - u.center.value.x;
       const y = center.y - across * axis.x + along * axis.y - u.center.value.y;
-      if (fog ? x * d.x + y * d.y > u.fogNear.value
-              : Math.hypot(x, y) > u.fadeNear.value * Math.cos(Math.PI / FADE_SIDES)) near = false;
+      if (
+        fog
+          ? x * d.x + y * d.y > u.fogNear.value
+          : Math.hypot(x, y) > u.fadeNear.value * Math.cos(Math.PI / FADE_SIDES)
+      )
+        near = false;
     }
     this.shadow.material = near ? this.shadowOverMaterial : this.shadowMaterial;
   },

@@ -8,17 +8,35 @@ export const hookMethods = {
     const mean = (a) => (a.length ? a.reduce((s, v) => s + v, 0) / a.length : NaN);
     return {
       id: this.run.id,
-      setTime(t) { self.setTime(+t, true); return self.time; },
+      setTime(t) {
+        self.setTime(+t, true);
+        return self.time;
+      },
       time: () => self.time,
       range: () => [self.t0, self.tEnd],
       playing: () => self.playing,
-      play() { self.play(); },
-      pause() { self.pause(); },
-      toggle() { self.toggle(); },
-      step(direction) { self.step(direction); self.render(); return self.time; },
-      setSpeed(s) { self.setSpeed(+s); },
+      play() {
+        self.play();
+      },
+      pause() {
+        self.pause();
+      },
+      toggle() {
+        self.toggle();
+      },
+      step(direction) {
+        self.step(direction);
+        self.render();
+        return self.time;
+      },
+      setSpeed(s) {
+        self.setSpeed(+s);
+      },
       speed: () => self.speed,
-      setView(name) { self.setView(name); self.render(); },
+      setView(name) {
+        self.setView(name);
+        self.render();
+      },
       view: () => self.viewName,
       // [w, x, y, z] of the body as drawn now (the mesh's own quaternion).
       quaternion: () => {
@@ -71,21 +89,35 @@ export const hookMethods = {
         self.render();
       },
       canvas: () => self.canvas,
-      render() { self.render(); },
+      render() {
+        self.render();
+      },
       // Draws the whole picture again (not only the part that changed).
-      renderAll() { self.redrawAll = true; self.render(); },
+      renderAll() {
+        self.redrawAll = true;
+        self.render();
+      },
       // Every frame drawn whole (true) or only its changed part (false, the default).
-      setDrawAll(on) { self.alwaysAll = !!on; self.redrawAll = true; self.dirty = true; },
+      setDrawAll(on) {
+        self.alwaysAll = !!on;
+        self.redrawAll = true;
+        self.dirty = true;
+      },
       // The floor drawn without depth, its depth taken by the points' shader, and the contact
       // shadow alone multiplying the floor, where they may be (true, the default), or never
       // (false: the floor's depth and the floor's formula with the shadow, to compare with).
-      setShortcuts(on) { self.shortcuts = !!on; self.redrawAll = true; self.dirty = true; },
+      setShortcuts(on) {
+        self.shortcuts = !!on;
+        self.redrawAll = true;
+        self.dirty = true;
+      },
       // [frames drawn in part, frames drawn] since the player was built.
       drawCounts: () => [self.partialFrames, self.drawnFrames],
       // The forecast first reversal marked on the n(t) plot (s), or null; and where its line
       // is, in the plot canvas's pixels.
       forecast: () => (self.forecast ? self.forecast.time : null),
-      forecastX: () => (self.forecast ? Math.round(self.plotLayout().x(self.forecast.time)) * self.plotLayout().dpr : null),
+      forecastX: () =>
+        self.forecast ? Math.round(self.plotLayout().x(self.forecast.time)) * self.plotLayout().dpr : null,
     };
   },
 };

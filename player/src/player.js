@@ -81,8 +81,17 @@ class Player {
   }
 }
 
-Object.assign(Player.prototype, sceneMethods, floorMethods, cameraMethods, timelineMethods,
-              plotMethods, controlsMethods, drawMethods, hookMethods);
+Object.assign(
+  Player.prototype,
+  sceneMethods,
+  floorMethods,
+  cameraMethods,
+  timelineMethods,
+  plotMethods,
+  controlsMethods,
+  drawMethods,
+  hookMethods,
+);
 
 // ---------------------------------------------------------------------------------------------
 // Building the page's players.
@@ -117,8 +126,11 @@ function initPlayers(root) {
       element.rbPlayer = player.hook();
       players.push(player);
     } catch (e) {
-      showProblem(element, `3D player: cannot show run “${id}” here (${(e && e.message) || e}).` +
-        ' WebGL may be unavailable in this browser.');
+      showProblem(
+        element,
+        `3D player: cannot show run “${id}” here (${(e && e.message) || e}).` +
+          ' WebGL may be unavailable in this browser.',
+      );
       if (window.console) console.warn('rattleback player:', e);
     }
   }
@@ -131,8 +143,14 @@ function onDocumentKey(e) {
   if (target && target !== document.body && target !== document.documentElement) {
     if (target.closest && target.closest('.rbp')) return; // the player's own handler ran
     const tag = target.tagName;
-    if (tag === 'INPUT' || tag === 'TEXTAREA' || tag === 'SELECT' || tag === 'BUTTON' ||
-        target.isContentEditable) return;
+    if (
+      tag === 'INPUT' ||
+      tag === 'TEXTAREA' ||
+      tag === 'SELECT' ||
+      tag === 'BUTTON' ||
+      target.isContentEditable
+    )
+      return;
   }
   players[0].onKey(e);
 }

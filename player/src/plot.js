@@ -7,7 +7,8 @@ export const plotMethods = {
   plotLayout() {
     const dpr = Math.min(window.devicePixelRatio || 1, 2);
     if (this.layout && this.layout.dpr === dpr) return this.layout;
-    const w = 270, h = 130;
+    const w = 270,
+      h = 130;
     this.plot.width = Math.round(w * dpr);
     this.plot.height = Math.round(h * dpr);
     this.plotDrawn = null;
@@ -17,7 +18,11 @@ export const plotMethods = {
     const box = { left: 34, right: w - 8, top: 8, bottom: h - 20 };
     const span = this.tEnd - this.t0 || 1;
     this.layout = {
-      dpr, w, h, m, box,
+      dpr,
+      w,
+      h,
+      m,
+      box,
       x: (t) => box.left + ((t - this.t0) / span) * (box.right - box.left),
       y: (n) => box.top + ((m - n) / (2 * m)) * (box.bottom - box.top),
       tAt: (px) => this.t0 + ((px - box.left) / (box.right - box.left)) * span,
@@ -113,7 +118,8 @@ export const plotMethods = {
     const { t, spin } = this.run;
     const every = Math.max(1, Math.floor(this.n / 600));
     for (let i = 0; i < this.n; i += every) {
-      if (i === 0) g.moveTo(L.x(t[i]), L.y(spin[i])); else g.lineTo(L.x(t[i]), L.y(spin[i]));
+      if (i === 0) g.moveTo(L.x(t[i]), L.y(spin[i]));
+      else g.lineTo(L.x(t[i]), L.y(spin[i]));
     }
     g.lineTo(L.x(t[this.n - 1]), L.y(spin[this.n - 1]));
     g.stroke();

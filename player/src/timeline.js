@@ -7,10 +7,12 @@ export const timelineMethods = {
     const n = this.n;
     if (n === 1 || t <= ts[0]) return [0, 0];
     if (t >= ts[n - 1]) return [n - 2, 1];
-    let lo = 0, hi = n - 1; // ts[lo] <= t < ts[hi]
+    let lo = 0,
+      hi = n - 1; // ts[lo] <= t < ts[hi]
     while (hi - lo > 1) {
       const mid = (lo + hi) >> 1;
-      if (ts[mid] <= t) lo = mid; else hi = mid;
+      if (ts[mid] <= t) lo = mid;
+      else hi = mid;
     }
     return [lo, (t - ts[lo]) / (ts[hi] - ts[lo])];
   },
@@ -22,13 +24,19 @@ export const timelineMethods = {
     const ts = this.run.t;
     const last = this.n - 1;
     const slope = (k) => {
-      const lo = Math.max(0, k - 1), hi = Math.min(last, k + 1);
+      const lo = Math.max(0, k - 1),
+        hi = Math.min(last, k + 1);
       return (s[hi] - s[lo]) / (ts[hi] - ts[lo]);
     };
     const h = ts[j] - ts[i];
-    const a2 = a * a, a3 = a2 * a;
-    return (2 * a3 - 3 * a2 + 1) * s[i] + (a3 - 2 * a2 + a) * h * slope(i) +
-      (3 * a2 - 2 * a3) * s[j] + (a3 - a2) * h * slope(j);
+    const a2 = a * a,
+      a3 = a2 * a;
+    return (
+      (2 * a3 - 3 * a2 + 1) * s[i] +
+      (a3 - 2 * a2 + a) * h * slope(i) +
+      (3 * a2 - 2 * a3) * s[j] +
+      (a3 - a2) * h * slope(j)
+    );
   },
 
   // The pose at time t; the read-outs too, or (hold) at the next animation frame, the one that
@@ -55,7 +63,8 @@ export const timelineMethods = {
     u.shadowCenter.value.set(this.points.position.x, this.points.position.y);
     const axis = this.axis.set(0, 1, 0).applyQuaternion(this.points.quaternion);
     const norm = Math.hypot(axis.x, axis.y);
-    if (norm > 1e-6) u.shadowAxis.value.set(axis.x / norm, axis.y / norm); else u.shadowAxis.value.set(0, 1);
+    if (norm > 1e-6) u.shadowAxis.value.set(axis.x / norm, axis.y / norm);
+    else u.shadowAxis.value.set(0, 1);
     // Its quad: local x across the body's long axis, y along it.
     const along = u.shadowAxis.value;
     this.shadow.position.set(this.points.position.x, this.points.position.y, 0);
@@ -81,7 +90,10 @@ export const timelineMethods = {
     const interval = this.n > 1 ? (ts[this.n - 1] - ts[0]) / (this.n - 1) : 0;
     const eps = Math.max(1e-9 * Math.max(1, Math.abs(this.tEnd)), 0.05 * interval);
     let [i, a] = this.locate(this.time);
-    if (this.time >= this.tEnd) { i = this.n - 1; a = 0; }
+    if (this.time >= this.tEnd) {
+      i = this.n - 1;
+      a = 0;
+    }
     let k;
     if (direction > 0) {
       k = i + 1;
@@ -117,7 +129,8 @@ export const timelineMethods = {
   },
 
   toggle() {
-    if (this.playing) this.pause(); else this.play();
+    if (this.playing) this.pause();
+    else this.play();
   },
 
   // Paused at the next reversal after the time shown (a hair after one counts as at it), or the

@@ -29,8 +29,10 @@ def csv_columns(path):
 def kinds():
     """Each column's expected dtype kind, from the sidecar's declaration of the columns (not
     from the files under test): counts are whole numbers, the mode a word, the rest doubles."""
-    return {name: ("i" if name == "contacts" else "U" if name == "mode" else "f")
-            for name, _, _ in rb._core.telemetry_columns}
+    return {
+        name: ("i" if name == "contacts" else "U" if name == "mode" else "f")
+        for name, _, _ in rb._core.telemetry_columns
+    }
 
 
 @pytest.fixture(scope="module")
@@ -109,11 +111,12 @@ def test_pythons_to_npz_and_to_hdf5_hold_the_runs_arrays(tmp_path):
 
 def test_a_name_of_another_format_is_refused_and_nothing_is_written(tmp_path):
     run = rb.simulate(SCENE, duration=0.05)
-    for method, name, said in [(run.to_npz, "x.h5", "x.h5: writes NumPy arrays; give a name "
-                                                     "ending in .npz"),
-                               (run.to_hdf5, "x.npz", "give a name ending in .h5"),
-                               (run.to_csv, "x.npz", "give a name ending in .csv"),
-                               (run.to_npz, "x.png", "give a name ending in .npz")]:
+    for method, name, said in [
+        (run.to_npz, "x.h5", "x.h5: writes NumPy arrays; give a name " "ending in .npz"),
+        (run.to_hdf5, "x.npz", "give a name ending in .h5"),
+        (run.to_csv, "x.npz", "give a name ending in .csv"),
+        (run.to_npz, "x.png", "give a name ending in .npz"),
+    ]:
         with pytest.raises(ValueError) as caught:
             method(tmp_path / name)
         assert str(caught.value).startswith(method.__name__ + " ") and said in str(caught.value)
