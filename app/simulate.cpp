@@ -329,6 +329,15 @@ void printResults(const SimulateArgs& args, const sim::Model& model,
                  args.plot_dir.c_str(), plotStem(args, csv).c_str());
 }
 
+// The table's name: not the figures' folder, not the scene, not a name of another format's (the
+// format is the name's: CSV, or arrays for .npz and .h5).
+rb::Status checkTable(const SimulateArgs& args, const std::string& csv) {
+  if (auto ok = checkPlotIsNotTheTable(args.plot_dir, csv); !ok) return ok;
+  const tasks::TelemetryFormat format = tasks::telemetryFormatOf(csv);
+  return rb::checkDataOutput(args.output, tasks::formatName(format), tasks::extensionOf(format),
+                             {args.scene});
+}
+
 }  // namespace
 
 int simulateCommand(const SimulateArgs& args) {
@@ -345,12 +354,7 @@ int simulateCommand(const SimulateArgs& args) {
   // summary goes to standard error, so that the table can be piped on whole.
   const std::string csv = tableOf(args);
   const bool to_stdout = isStandardOutput(csv);
-  if (auto ok = checkPlotIsNotTheTable(args.plot_dir, csv); !ok) return fail(ok);
-  const tasks::TelemetryFormat format = tasks::telemetryFormatOf(csv);
-  if (auto ok = rb::checkDataOutput(args.output, tasks::formatName(format),
-                                    tasks::extensionOf(format), {args.scene});
-      !ok)
-    return fail(ok);
+  if (auto ok = checkTable(args, csv); !ok) return fail(ok);
   // Declared before the writer, so that its temporary files are gone before the folders are
   // removed.
   tasks::MadeFolders made;
@@ -362,6 +366,7 @@ int simulateCommand(const SimulateArgs& args) {
   auto writer = tasks::TelemetryWriter::open(csv);
   if (!writer) return fail(writer);
   if (args.verbose) describeModel(model, args.scene);
+  writer->expect(static_cast<std::int64_t>(model.duration * rate) + 2);  // the samples and the end
   Progress progress("simulate", static_cast<std::int64_t>(model.duration * rate) + 1, !args.quiet);
   std::vector<sim::Telemetry> kept;  // for the plots
   std::vector<double> spins;         // for --check

@@ -80,9 +80,12 @@ rb::Result<std::string> hdf5Image(std::span<const NamedArray> arrays, const std:
   const auto failed = [&] {
     return rb::Error{"", path + ": the HDF5 library could not build the file (out of memory?)"};
   };
+  // Grown in one step the size of the data and some room for HDF5's own structures (growing in
+  // small steps copied the image over and over); never written to a file of its own.
+  std::size_t bytes = 1 << 20;
+  for (const NamedArray& a : arrays) bytes += a.bytes.size();
   Id access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
-  // Grown in steps of 1 MiB; never written to a file of its own (backing store off).
-  if (!access.ok() || H5Pset_fapl_core(access.get(), 1 << 20, false) < 0) return failed();
+  if (!access.ok() || H5Pset_fapl_core(access.get(), bytes, false) < 0) return failed();
   std::string image;
   {
     Id file(H5Fcreate("telemetry", H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), H5Fclose);

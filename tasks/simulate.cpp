@@ -370,6 +370,10 @@ void TelemetryWriter::row(const sim::Telemetry& sample) {
   if (pending_.size() >= kChunkRows) handOff();
 }
 
+void TelemetryWriter::expect(std::int64_t rows) {
+  if (arrays_ && rows > 0) arrays_->columns.reserve(static_cast<std::size_t>(rows));
+}
+
 void TelemetryWriter::handOff() {
   if (pending_.empty() || !pipeline_) return;
   pipeline_->push(std::move(pending_), {});
@@ -379,6 +383,7 @@ void TelemetryWriter::handOff() {
 bool TelemetryWriter::rows(std::span<const sim::Telemetry> samples,
                            const std::function<bool()>& cancelled) {
   if (arrays_) {
+    expect(rows_ + static_cast<std::int64_t>(samples.size()));
     for (std::size_t k = 0; k < samples.size(); ++k) {
       if (k % kChunkRows == 0 && cancelled && cancelled()) return false;
       arrays_->columns.add(samples[k]);

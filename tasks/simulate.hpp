@@ -93,6 +93,8 @@ class TelemetryWriter {
   /// and false is returned (the file is then to be dropped, not committed).
   bool rows(std::span<const sim::Telemetry> samples, const std::function<bool()>& cancelled = {});
   std::int64_t rows() const { return rows_; }
+  /// The rows the run will hand over, when known: arrays keep room for them (the CSV needs none).
+  void expect(std::int64_t rows);
   /// Writes the sidecar and puts both files in place.
   /// `check`: the sidecar's "check" (checkJson), or null.
   rb::Status commit(const RunScene& scene, const sim::Model& model, double rate,

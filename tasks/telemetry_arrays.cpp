@@ -46,6 +46,10 @@ const char* extensionOf(TelemetryFormat format) {
 
 TelemetryArrays::TelemetryArrays() : columns_(telemetryTable().size()) {}
 
+void TelemetryArrays::reserve(std::size_t rows) {
+  for (std::vector<double>& c : columns_) c.reserve(rows);
+}
+
 void TelemetryArrays::add(const sim::Telemetry& s) {
   const Eigen::Quaterniond q = attitude(s);
   const SampleView view{s, q};

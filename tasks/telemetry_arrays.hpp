@@ -25,6 +25,8 @@ class TelemetryArrays {
  public:
   TelemetryArrays();
   void add(const sim::Telemetry& s);
+  /// Room for `rows` rows in all: the columns then grow without copying themselves.
+  void reserve(std::size_t rows);
   std::size_t rows() const { return rows_; }
   /// Writes them as `format` (Npz or Hdf5) to `out`; `path` names the file in messages.
   rb::Status write(std::ostream& out, TelemetryFormat format, const std::string& path) const;

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -22,12 +23,15 @@ inline std::string backendName() {
   return backend && *backend ? backend : "auto";
 }
 
-/// A file in the running test's own scratch folder (removed first when it exists).
+/// A file in the running test's own scratch folder (removed first when it exists). The folder
+/// is the process's own: two checkouts tested at once on one machine shared it, and one's
+/// stills were removed under the other.
 inline fs::path scratch(const std::string& name) {
   const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::path(testing::TempDir()) /
-                       std::string("rattleback_render-").append(backendName()) /
-                       (std::string(info->test_suite_name()) + "." + info->name());
+  const fs::path dir =
+      fs::path(testing::TempDir()) /
+      (std::string("rattleback_render-") + backendName() + "-" + std::to_string(::getpid())) /
+      (std::string(info->test_suite_name()) + "." + info->name());
   fs::create_directories(dir);
   fs::remove(dir / name);
   return dir / name;

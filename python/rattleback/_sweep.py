@@ -108,6 +108,43 @@ def _values(values: Any) -> Any:
     return [_value(v) for v in values]
 
 
+def _file_sweep(source, duration, name, jobs, kept):
+    """The call that runs the sweep file at ``source``."""
+    if not isinstance(source, (str, os.PathLike)):
+        raise TypeError(
+            "argument vary: a scene is swept along the values given as vary, "
+            "e.g. vary={'initial.spin': [-5, 5]}; without it, source is a "
+            "sweep file's path"
+        )
+    for given, value in (("duration", duration), ("name", name)):
+        if value is not None:
+            raise TypeError(
+                f"argument {given}: goes with vary (a sweep file sets its own"
+                + (": duration:)" if given == "duration" else ")")
+            )
+    return lambda: _core.sweep(os.fspath(source), jobs, kept)
+
+
+def _scene_sweep(source, vary, duration, name, jobs, kept):
+    """The call that runs the scene ``source`` along ``vary``, as a sweep file would."""
+    base = _scene(source)
+    spec: dict[str, Any] = {"vary": {key: _values(v) for key, v in vary.items()}}
+    if duration is not None:
+        if not (math.isfinite(float(duration)) and float(duration) > 0):
+            # As simulate's: a SceneError naming the key the argument sets.
+            raise SceneError(
+                f"argument duration: must be > 0, not {duration}",
+                "argument duration",
+                None,
+                "simulation.duration",
+            )
+        spec["duration"] = float(duration)
+    if name is None:
+        name = (Path(base._name).stem if base._file else "scene") + "-sweep"
+    text = json.dumps(spec, default=_yaml_value_default)
+    return lambda: _core.sweep_of(text, name, base._yaml, base._name, list(base._values), jobs, kept)
+
+
 @checked
 def sweep(
     source: Union[str, os.PathLike, Scene, Mapping[str, Any]],
@@ -139,38 +176,9 @@ def sweep(
     """
     kept = resume._table if resume is not None else None
     if vary is None:
-        if not isinstance(source, (str, os.PathLike)):
-            raise TypeError(
-                "argument vary: a scene is swept along the values given as vary, "
-                "e.g. vary={'initial.spin': [-5, 5]}; without it, source is a "
-                "sweep file's path"
-            )
-        for given, value in (("duration", duration), ("name", name)):
-            if value is not None:
-                raise TypeError(
-                    f"argument {given}: goes with vary (a sweep file sets its own"
-                    + (": duration:)" if given == "duration" else ")")
-                )
-        run = lambda: _core.sweep(os.fspath(source), int(jobs), kept)  # noqa: E731
+        run = _file_sweep(source, duration, name, int(jobs), kept)
     else:
-        base = _scene(source)
-        spec: dict[str, Any] = {"vary": {key: _values(v) for key, v in vary.items()}}
-        if duration is not None:
-            if not (math.isfinite(float(duration)) and float(duration) > 0):
-                # As simulate's: a SceneError naming the key the argument sets.
-                raise SceneError(
-                    f"argument duration: must be > 0, not {duration}",
-                    "argument duration",
-                    None,
-                    "simulation.duration",
-                )
-            spec["duration"] = float(duration)
-        if name is None:
-            name = (Path(base._name).stem if base._file else "scene") + "-sweep"
-        text = json.dumps(spec, default=_yaml_value_default)
-        run = lambda: _core.sweep_of(
-            text, name, base._yaml, base._name, list(base._values), int(jobs), kept  # noqa: E731
-        )
+        run = _scene_sweep(source, vary, duration, name, int(jobs), kept)
     try:
         table = run()
     except KeyboardInterrupt as interrupt:
