@@ -15,6 +15,7 @@
 
 #include "python/convert.hpp"
 #include "python/scene_value.hpp"
+#include "python/simulation.hpp"
 #include "tasks/analysis.hpp"
 #include "tasks/check.hpp"
 #include "tasks/manifest.hpp"
@@ -404,6 +405,7 @@ PYBIND11_MODULE(_core, m) {
   m.attr("telemetry_columns") = names;
 
   bindScene(m);
+  bindSimulation(m);
 
   py::class_<Run, std::shared_ptr<Run>>(m, "Run")
       .def("columns", &columns)

@@ -37,7 +37,7 @@ from ._errors import RunStopped, RunWarning, SceneError
 __all__ = [
     "Scene", "Run", "Image", "SceneError", "RunStopped", "RunWarning", "simulate", "analyze",
     "still",
-    "render", "sweep", "SweepTable", "__version__",
+    "render", "sweep", "SweepTable", "Simulation", "State", "__version__",
 ]
 
 __version__ = _core.version
@@ -470,3 +470,4 @@ def render(scene: SceneLike, output: Union[str, os.PathLike, None] = None, *,
 
 
 from ._sweep import SweepTable, sweep  # noqa: E402
+from ._simulation import Simulation, State  # noqa: E402
