@@ -40,7 +40,10 @@ TEST(RolloutControl, SteppingOneAtATimeTakesTheStepsOfAdvanceTo) {
     const sim::Model model = rolling(adaptive);
     sim::Rollout whole(model), stepped(model);
     ASSERT_TRUE(whole.advanceTo(2.9));
-    while (stepped.current().t < whole.current().t) ASSERT_TRUE(stepped.advanceOneStep());
+    for (std::int64_t n = 1; stepped.current().t < whole.current().t; ++n) {
+      ASSERT_TRUE(stepped.advanceOneStep());
+      ASSERT_EQ(stepped.current().step, n) << "one step at a time";
+    }
     expectSameState(stepped.current(), whole.current());
     EXPECT_EQ(stepped.reversals(), whole.reversals());
     ASSERT_EQ(whole.reversals().size(), 1u)
