@@ -8,6 +8,7 @@
 
 #include "sim/analysis.hpp"
 #include "support.hpp"
+#include "tasks/report/captions.hpp"
 
 using namespace testing_support;
 
@@ -156,4 +157,19 @@ TEST(InitialState, TappedAboutXAndAboutYTheBodySpinsUpOppositeWaysAsTheTheorySay
 TEST(InitialState, ASpinAlonesReachIsItself) {
   const sim::Model model = build(parse(restingBody("{spin: -5.0}")));
   EXPECT_NEAR(sim::spinReach(model), 5.0, 1e-12);
+}
+
+// The report says how a run started: a body struck about its x or y axis by its ω (the
+// sidecar's model.initial.angular_velocity), not "spun +0 rad/s (no spin)"; a spin alone as
+// before.
+TEST(InitialState, TheReportSaysAStruckBodyWasStruck) {
+  tasks::report::RunRecord struck;
+  struck.initial_spin = 0.0;
+  struck.model_angular_velocity = {3.0, 0.0, 0.0};
+  EXPECT_NE(tasks::report::measuredOf(struck).find("struck at ω = [3, 0, 0] rad/s (body axes)"),
+            std::string::npos);
+  tasks::report::RunRecord spun;
+  spun.initial_spin = -5.0;
+  spun.model_angular_velocity = {0.0, 0.0, -5.0};
+  EXPECT_EQ(tasks::report::measuredOf(spun).find("spun -5 rad/s (clockwise)"), 0u);
 }
