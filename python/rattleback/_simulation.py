@@ -48,8 +48,7 @@ class State:
 
     @classmethod
     def _of(cls, fields: dict) -> "State":
-        for name in ("position", "quaternion", "velocity", "angular_velocity",
-                     "angular_velocity_world"):
+        for name in ("position", "quaternion", "velocity", "angular_velocity", "angular_velocity_world"):
             array = np.array(fields[name], dtype=float)
             array.flags.writeable = False
             fields[name] = array
@@ -69,12 +68,21 @@ class Simulation:
     """
 
     @checked
-    def __init__(self, scene, *, duration: Optional[float] = None,
-                 spin: Optional[float] = None, dt: Optional[float] = None,
-                 tolerance: Optional[float] = None, integrator: Optional[str] = None):
+    def __init__(
+        self,
+        scene,
+        *,
+        duration: Optional[float] = None,
+        spin: Optional[float] = None,
+        dt: Optional[float] = None,
+        tolerance: Optional[float] = None,
+        integrator: Optional[str] = None,
+    ):
         from . import _scene  # (the package imports this module last)
-        loaded = _scene(scene)._load(duration=duration, spin=spin, dt=dt, tolerance=tolerance,
-                                     integrator=integrator)
+
+        loaded = _scene(scene)._load(
+            duration=duration, spin=spin, dt=dt, tolerance=tolerance, integrator=integrator
+        )
         self._run = _core.Simulation(loaded)
 
     @property
@@ -118,8 +126,7 @@ class Simulation:
         return State._of(self._run.step())
 
     @checked
-    def advance(self, t: Optional[float] = None, *,
-                until: Optional[str] = None):
+    def advance(self, t: Optional[float] = None, *, until: Optional[str] = None):
         """Steps on to time ``t`` (s) and returns the state at ``t``; or, with
         ``until="reversal"``, steps until the reversal rule confirms the next reversal.
 
@@ -144,10 +151,14 @@ class Simulation:
         return State._of(self._run.advance_to(float(t)))
 
     @checked
-    def set_state(self, *, position: Optional[Sequence[float]] = None,
-                  quaternion: Optional[Sequence[float]] = None,
-                  velocity: Optional[Sequence[float]] = None,
-                  angular_velocity: Optional[Sequence[float]] = None) -> State:
+    def set_state(
+        self,
+        *,
+        position: Optional[Sequence[float]] = None,
+        quaternion: Optional[Sequence[float]] = None,
+        velocity: Optional[Sequence[float]] = None,
+        angular_velocity: Optional[Sequence[float]] = None,
+    ) -> State:
         """Changes the state at :attr:`t` and goes on from there (a tap, a push, a new pose);
         returns the state the run goes on from.
 
@@ -163,8 +174,11 @@ class Simulation:
         velocity that slides starts the smooth contact). The adaptive stepper starts afresh, and
         the run's watch for energy from nowhere measures from the new state's energy.
         """
-        return State._of(self._run.set_state(_listed(position), _listed(quaternion),
-                                             _listed(velocity), _listed(angular_velocity)))
+        return State._of(
+            self._run.set_state(
+                _listed(position), _listed(quaternion), _listed(velocity), _listed(angular_velocity)
+            )
+        )
 
     def copy(self) -> "Simulation":
         """An independent run from here: the same state, steps, stepper and reversals, each

@@ -25,12 +25,13 @@ def same_as_simulate(scene, **settings):
             sim.advance(0.5 * (t + run.t[k + 1]))
     for name in COLUMNS:
         np.testing.assert_array_equal([getattr(s, name) for s in states], run[name], name)
-    np.testing.assert_array_equal([s.position for s in states],
-                                  np.column_stack([run.x, run.y, run.z]))
-    np.testing.assert_array_equal([s.quaternion for s in states],
-                                  np.column_stack([run.qw, run.qx, run.qy, run.qz]))
-    np.testing.assert_array_equal([s.angular_velocity_world for s in states],
-                                  np.column_stack([run.wx, run.wy, run.wz]))
+    np.testing.assert_array_equal([s.position for s in states], np.column_stack([run.x, run.y, run.z]))
+    np.testing.assert_array_equal(
+        [s.quaternion for s in states], np.column_stack([run.qw, run.qx, run.qy, run.qz])
+    )
+    np.testing.assert_array_equal(
+        [s.angular_velocity_world for s in states], np.column_stack([run.wx, run.wy, run.wz])
+    )
     assert sim.reversals == run.reversals
     # A fixed step ends on the last sample; adaptive steps end at or past it, as simulate's do.
     assert sim.t == run.t[-1] if "dt" in settings else sim.t >= run.t[-1]
@@ -53,8 +54,7 @@ def test_one_step_at_a_time_and_until_the_reversal():
         assert sim.step().t == sim.t == k * 1e-3
     # The reversal rule's time: the zero crossing of n, confirmed 0.2 s later, where the run is.
     t = sim.advance(until="reversal")
-    assert sim.reversals == [t] == rb.simulate(scene_path("rattleback.yaml"), dt=1e-3,
-                                               duration=3.0).reversals
+    assert sim.reversals == [t] == rb.simulate(scene_path("rattleback.yaml"), dt=1e-3, duration=3.0).reversals
     assert sim.t >= t + 0.2
     assert sim.advance(until="reversal") is None and sim.t == 3.0  # none more within the run
 
@@ -84,7 +84,8 @@ def test_a_tap_on_a_smooth_body_adds_the_work_of_its_angular_impulse():
     # Penalty contact: E = ½ ωᵀIω + ½ M v² + M g z + elastic. A tap changes ω alone (the pose and
     # the CM's velocity kept), so ΔE = ½ (ω+Δω)ᵀI(ω+Δω) − ½ ωᵀIω = ωᵀIΔω + ½ ΔωᵀIΔω.
     scene = rb.Scene.from_file(scene_path("rattleback.yaml")).with_values(
-        {"contact.model": "smooth", "contact.stiffness": 2.0e4, "contact.damping": 4})
+        {"contact.model": "smooth", "contact.stiffness": 2.0e4, "contact.damping": 4}
+    )
     inertia, _ = inertia_and_mass(scene)
     sim = rb.Simulation(scene, dt=2e-5, duration=1.0)
     before = sim.advance(0.5)
@@ -110,8 +111,7 @@ def test_a_tap_on_a_rolling_body_at_rest_adds_half_its_square_about_the_contact_
     inertia_p = inertia + mass * (r @ r * np.eye(3) - np.outer(r, r))
     dw = np.array([3.0, 0.0, 0.0])
     after = sim.set_state(angular_velocity=dw)
-    assert after.energy - before.energy == pytest.approx(0.5 * dw @ inertia_p @ dw,
-                                                         rel=1e-12)
+    assert after.energy - before.energy == pytest.approx(0.5 * dw @ inertia_p @ dw, rel=1e-12)
     # Rounding of products of numbers of the body's size (cm, rad/s).
     np.testing.assert_allclose(after.velocity, -np.cross(dw, r), rtol=1e-12, atol=1e-15)
     # As the shipped tap scene starts: the same energy.
@@ -137,8 +137,7 @@ def test_bad_arguments_are_named():
     with pytest.raises(rb.SceneError) as caught:
         rb.Simulation(scene, duration=-3)
     assert caught.value.key == "simulation.duration"
-    with pytest.raises(rb.SceneError, match=r"^argument spin: is given with "
-                                            r"initial.angular_velocity"):
+    with pytest.raises(rb.SceneError, match=r"^argument spin: is given with " r"initial.angular_velocity"):
         rb.Simulation(scene_path("tap-end.yaml"), spin=3)
     sim = rb.Simulation(scene, duration=1.0)
     with pytest.raises(TypeError, match=r"^argument t: takes a number \(s\), not '1' \(str\)$"):
