@@ -43,8 +43,7 @@ rb::Result<StillResult> renderStill(const tasks::LoadedScene& loaded, const Stil
   StillResult result;
   result.view = plan.view;
   render::RenderSettings settings =
-      settingsOf(plan, model.duration, model.initial.spin, request.scene_name, loaded.scene.values,
-                 request.backend);
+      settingsOf(plan, model, request.scene_name, loaded.scene.values, request.backend);
   settings.readouts = request.readouts && !request.transparent;
   settings.transparent = request.transparent;
   if (request.transparent) settings.title.clear();

@@ -270,11 +270,9 @@ rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const Vide
       histories.emplace_back(model.duration, plan.width);
     }
     for (const sim::Rollout& run : runs) {
-      const double spin = run.model().initial.spin;
-      auto created =
-          render::Renderer::create(settingsOf(plan, model.duration, spin, request.scene_name,
-                                              loaded.scene.values, request.backend),
-                                   points);
+      auto created = render::Renderer::create(
+          settingsOf(plan, run.model(), request.scene_name, loaded.scene.values, request.backend),
+          points);
       if (!created) return rb::machineError("render: " + created.error().text());
       if (renderers.empty()) result.opengl = created.value()->description();
       renderers.push_back(std::move(created).value());

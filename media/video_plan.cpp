@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "sim/initial.hpp"
 #include "tasks/analysis.hpp"
 #include "util/format.hpp"
 
@@ -106,16 +107,36 @@ std::string describeSpin(double spin) {
   return text;
 }
 
+// A start with ω about body x or y (a tap): "struck at ω = [3, 0, 0] rad/s (body axes)".
+std::string describeStrike(const sim::Initial& initial) {
+  char text[96];
+  std::snprintf(text, sizeof text, "struck at ω = [%g, %g, %g] rad/s (body axes)", initial.w_x,
+                initial.w_y, initial.spin);
+  return text;
+}
+
+// The inset's ± spin axis, rad/s: 1.1 × the spin (at least 1); struck, the most spin the
+// start's kinetic energy could become (sim::spinReach), which a tap's spin-up stays below,
+// rounded up to half a rad/s for its label ("n ±2 rad/s").
+double spinRange(const sim::Model& run) {
+  if (run.initial.w_x == 0 && run.initial.w_y == 0)
+    return std::max(1.0, 1.1 * std::abs(run.initial.spin));
+  return std::max(1.0, std::ceil(2 * 1.1 * sim::spinReach(run)) / 2);
+}
+
 }  // namespace
 
 // The title of a run's frames, the same in its video and its stills: the scene and the spin.
-render::RenderSettings settingsOf(const VideoPlan& plan, double duration, double spin,
+render::RenderSettings settingsOf(const VideoPlan& plan, const sim::Model& run,
                                   const std::string& scene,
                                   const std::vector<scene::KeyValue>& values,
                                   render::Backend backend) {
   // The values put in name the variant: a class's bodies made with --set all read "mine: spun −5
   // rad/s". The renderer shortens a title too long for the frame.
-  std::string title = std::filesystem::path(scene).stem().string() + ": spun " + describeSpin(spin);
+  const bool struck = run.initial.w_x != 0 || run.initial.w_y != 0;
+  std::string title =
+      std::filesystem::path(scene).stem().string() + ": " +
+      (struck ? describeStrike(run.initial) : "spun " + describeSpin(run.initial.spin));
   for (const scene::KeyValue& kv : values)
     title += (&kv == &values.front() ? "; " : ", ") + kv.key + " = " + kv.yaml;
   render::RenderSettings s;
@@ -124,8 +145,8 @@ render::RenderSettings settingsOf(const VideoPlan& plan, double duration, double
   s.height = plan.height;
   s.view = plan.view;
   s.title = title;
-  s.duration = duration;
-  s.spin_range = std::max(1.0, 1.1 * std::abs(spin));
+  s.duration = run.duration;
+  s.spin_range = spinRange(run);
   s.frame = static_cast<float>(plan.frame);
   return s;
 }

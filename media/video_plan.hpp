@@ -8,6 +8,7 @@
 
 #include "render/frame.hpp"
 #include "scene/loader.hpp"
+#include "sim/model.hpp"
 #include "util/result.hpp"
 
 namespace media {
@@ -37,10 +38,11 @@ rb::Result<VideoPlan> planVideo(const scene::Loaded& scene, const sim::Model& mo
 /// frame").
 std::string frameNamed(const scene::Loaded& scene);
 
-/// The renderer's settings for one run's frames: the plan's size and view, titled with the
-/// scene's name, the values put in over its file (--set, with_values) and the spin (the same in
-/// its video and its stills).
-render::RenderSettings settingsOf(const VideoPlan& plan, double duration, double spin,
+/// The renderer's settings for the frames of `run` (its duration and initial state): the plan's
+/// size and view, titled with the scene's name, the values put in over its file (--set,
+/// with_values) and the spin or the angular velocity it starts with (the same in its video and
+/// its stills).
+render::RenderSettings settingsOf(const VideoPlan& plan, const sim::Model& run,
                                   const std::string& scene,
                                   const std::vector<scene::KeyValue>& values,
                                   render::Backend backend);

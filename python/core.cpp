@@ -15,6 +15,7 @@
 
 #include "python/convert.hpp"
 #include "python/scene_value.hpp"
+#include "python/simulation.hpp"
 #include "tasks/analysis.hpp"
 #include "tasks/check.hpp"
 #include "tasks/manifest.hpp"
@@ -537,6 +538,7 @@ PYBIND11_MODULE(_core, m) {
   m.attr("telemetry_columns") = names;
 
   bindScene(m);
+  bindSimulation(m);
   bindRun(m);
   bindSweep(m);
   bindCalls(m);

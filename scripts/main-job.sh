@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The main job's runs, into OUT (default out): the default scene's preferred, reversed and
-# side-by-side videos and its four still views, the seed body's four still views, telemetry,
+# side-by-side videos and its four still views, the tap experiment's two videos, the seed body's four still views, telemetry,
 # plots and analysis of every shipped scene, the shipped sweeps' tables and heatmaps, a bench of
 # the default scene, and the report page OUT/index.html that shows them all.
 #
@@ -37,6 +37,11 @@ cd "$data"
 echo "== videos of scenes/rattleback.yaml (spun both ways)"
 "$rb" render scenes/rattleback.yaml --both -o "$out/rattleback.mp4"
 
+echo "== the tap experiment: at rest, tapped on one end and pressed on a side, it spins opposite ways"
+for scene in tap-end tap-side; do
+  "$rb" render "scenes/$scene.yaml" -o "$out/$scene.mp4" -q
+done
+
 echo "== stills"
 # Posters for the report page: each video's first frame (spun -5 it reverses, +5 it does not,
 # as render --both above named them).
@@ -54,7 +59,7 @@ pids=()
 # Background jobs of a script start with SIGINT ignored (POSIX), and rattleback keeps it so: the
 # terminal's Ctrl-C stops this script, which stops them (SIGTERM: each keeps its old output).
 trap 'kill -TERM "${pids[@]}" 2>/dev/null; wait; exit 130' INT
-for scene in seed-flip-cw seed-flip-ccw rattleback kane-levinson kane-levinson-long; do
+for scene in seed-flip-cw seed-flip-ccw rattleback kane-levinson kane-levinson-long tap-end tap-side; do
   (
     "$rb" analyze "scenes/$scene.yaml" -o "$out/$scene-analysis.txt"
     "$rb" analyze "scenes/$scene.yaml" --json -o "$out/$scene-analysis.json"

@@ -166,6 +166,7 @@ struct AdaptiveStepper::Impl {
   virtual State step(std::int64_t step_index) = 0;
   virtual State at(double t) const = 0;
   virtual bool keepsRolling() const = 0;
+  virtual std::unique_ptr<Impl> clone() const = 0;
   std::int64_t evaluations = 0;
 };
 
@@ -197,6 +198,10 @@ class Integration final : public AdaptiveStepper::Impl {
   }
 
   bool keepsRolling() const override { return std::is_same_v<Layout, Rolling>; }
+  // Odeint's dense-output stepper holds its states and step size by value: a copy goes on alone.
+  std::unique_ptr<AdaptiveStepper::Impl> clone() const override {
+    return std::make_unique<Integration>(*this);
+  }
 
   State at(double t) const override {
     Vector y;
@@ -233,6 +238,8 @@ std::unique_ptr<AdaptiveStepper::Impl> integrationOf(const Model& model, const S
 
 AdaptiveStepper::AdaptiveStepper(const Model& model, const State& start)
     : impl_(integrationOf(model, start)) {}
+
+AdaptiveStepper::AdaptiveStepper(const AdaptiveStepper& other) : impl_(other.impl_->clone()) {}
 
 AdaptiveStepper::~AdaptiveStepper() = default;
 

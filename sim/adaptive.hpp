@@ -21,7 +21,8 @@ class AdaptiveStepper {
  public:
   AdaptiveStepper(const Model& model, const State& start);
   ~AdaptiveStepper();
-  AdaptiveStepper(const AdaptiveStepper&) = delete;
+  /// An independent copy: the same state, step size and dense output (Rollout's copy).
+  AdaptiveStepper(const AdaptiveStepper& other);
   AdaptiveStepper& operator=(const AdaptiveStepper&) = delete;
 
   /// Takes one accepted step; returns the state at its end (t and step set; the quaternion

@@ -178,10 +178,52 @@ std::optional<rb::Error> checkSimulation(const SimulationSpec& sim) {
   return std::nullopt;
 }
 
+bool given(const std::array<double, 3>& v) {
+  return !std::isnan(v[0]) || !std::isnan(v[1]) || !std::isnan(v[2]);
+}
+
+// initial.spin is the shortcut for angular_velocity [0, 0, spin]: one or the other.
+std::optional<rb::Error> checkInitialMotion(const InitialSpec& init) {
+  const bool spin = !std::isnan(init.spin);
+  if (spin)
+    if (auto e = needFinite("initial.spin", init.spin)) return e;
+  if (given(init.angular_velocity)) {
+    if (spin)
+      return rb::Error{"initial.spin",
+                       "is given with initial.angular_velocity: give one of them (spin n is the "
+                       "shortcut for angular_velocity: [0, 0, n])",
+                       std::nullopt,
+                       {"initial.angular_velocity"}};
+    for (double w : init.angular_velocity)
+      if (auto e = needFinite("initial.angular_velocity", w)) return e;
+  }
+  if (given(init.velocity))
+    for (double v : init.velocity)
+      if (auto e = needFinite("initial.velocity", v)) return e;
+  return std::nullopt;
+}
+
+// The spec's initial state in the model's terms: SI units, radians, ω in body axes.
+Initial initialOf(const SceneSpec& spec) {
+  const InitialSpec& init = spec.initial;
+  Initial out;
+  out.spin = std::isnan(init.spin) ? 0.0 : init.spin;
+  out.tilt_x = init.tilt[0] * M_PI / 180.0;
+  out.tilt_y = init.tilt[1] * M_PI / 180.0;
+  out.height = init.height * spec.units.length;
+  if (given(init.angular_velocity)) {
+    out.w_x = init.angular_velocity[0];
+    out.w_y = init.angular_velocity[1];
+    out.spin = init.angular_velocity[2];
+  }
+  if (given(init.velocity)) out.velocity = Eigen::Vector3d(init.velocity.data());
+  return out;
+}
+
 std::optional<rb::Error> checkRest(const SceneSpec& spec) {
   if (auto e = needPositive("units.length", spec.units.length)) return e;
   if (auto e = needNonNegative("gravity", spec.gravity)) return e;
-  if (auto e = needFinite("initial.spin", spec.initial.spin)) return e;
+  if (auto e = checkInitialMotion(spec.initial)) return e;
   for (double tilt : spec.initial.tilt) {
     if (auto e = needFinite("initial.tilt", tilt)) return e;
     if (std::abs(tilt) > 180)
@@ -404,9 +446,8 @@ rb::Result<Model> compileRun(const SceneSpec& spec, std::shared_ptr<const Body> 
   else
     model.dt = spec.simulation.dt;
   model.duration = spec.simulation.duration;
-  model.initial =
-      Initial{spec.initial.spin, spec.initial.tilt[0] * M_PI / 180.0,
-              spec.initial.tilt[1] * M_PI / 180.0, spec.initial.height * spec.units.length};
+  model.initial = initialOf(spec);
+  if (auto e = checkInitialVelocity(model)) return *e;
 
   if (auto e = checkRockingStep(model)) return *e;
   // Auto runs its smooth phases in steps of their own (sim/switching.hpp: smoothStep).

@@ -114,6 +114,14 @@ struct Initial {
   double tilt_x = 0;  ///< rad, about body x
   double tilt_y = 0;  ///< rad, then about the new body y
   double height = 0;  ///< m, lowest point above the floor at release (0: resting on it)
+  /// rad/s about the body's x and y axes: with `spin`, ω in body axes is (w_x, w_y, spin).
+  double w_x = 0, w_y = 0;
+  /// The CM's velocity at release, world axes, m/s; none: the lowest point does not slide (or,
+  /// released above the floor, the CM at rest). Under rolling it agrees with the constraint.
+  std::optional<Eigen::Vector3d> velocity;
+
+  /// ω at release, body axes, rad/s.
+  Eigen::Vector3d angularVelocityBody() const { return {w_x, w_y, spin}; }
 };
 
 /// One run of a shared body: small, cheap to copy (docs/design.md "Data flow").

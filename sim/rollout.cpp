@@ -72,6 +72,22 @@ Rollout::Rollout(Model model, const State& start)
   }
 }
 
+Rollout::Rollout(const Rollout& other)
+    : model_(other.model_),
+      active_(other.active_),
+      previous_(other.previous_),
+      current_(other.current_),
+      last_step_(other.last_step_),
+      adaptive_(other.adaptive_ ? std::make_unique<AdaptiveStepper>(*other.adaptive_) : nullptr),
+      earlier_(other.earlier_),
+      auto_(other.auto_),
+      summary_(other.summary_),
+      last_due_s_(other.last_due_s_),
+      reversals_(other.reversals_),
+      spin_(other.spin_),
+      min_cos_tilt_(other.min_cos_tilt_),
+      watchdog_(other.watchdog_) {}
+
 Rollout::Rollout(Rollout&&) noexcept = default;
 Rollout& Rollout::operator=(Rollout&&) noexcept = default;
 Rollout::~Rollout() = default;
@@ -96,6 +112,51 @@ bool Rollout::advanceTo(double t) {
   const bool reached = !stopped() || current_.t >= t || sameTime(current_.t, t);
   last_due_s_ = reached ? std::min(t, current_.t) : current_.t;
   return reached;
+}
+
+bool Rollout::advanceOneStep() {
+  if (!stopped() && (stop_.stop_requested() || external_.stop_requested()))
+    summary_.stop_requested = true;
+  if (stopped()) return false;
+  const auto start = std::chrono::steady_clock::now();
+  stepOnce();
+  summary_.wall_s +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  countSteps();
+  last_due_s_ = current_.t;
+  return true;
+}
+
+void Rollout::setState(State s) {
+  s.t = current_.t;
+  s.step = current_.step;
+  s.q.normalize();
+  if (auto_) {  // chosen again as at the start: rolling where it holds, else sliding
+    const ContactModel before = active_.contact.model;
+    auto_.emplace(model_);
+    active_ = auto_->start(s);
+    if (active_.contact.model != before) {
+      ++summary_.switches;
+      summary_.mode_changes.push_back({s.t, active_.contact.model});
+    }
+  } else {
+    holdOnFloor(active_, s);
+  }
+  previous_ = current_ = s;
+  last_step_.stepTaken();  // a step of no length: its ends are s
+  if (adaptive_) restartStepper();
+  const Telemetry now = telemetryOf(active_, current_);
+  spin_ = now.spin;
+  watchdog_.restartEnergy(now.energy);
+  last_due_s_ = current_.t;
+}
+
+void Rollout::restartStepper() {
+  earlier_.evaluations += adaptive_->evaluations();
+  earlier_.rejected += adaptive_->rejected(current_.step - earlier_.start_step);
+  adaptive_ = std::make_unique<AdaptiveStepper>(active_, current_);
+  earlier_.start_step = current_.step;
+  last_step_.denseLost();  // the new stepper has no dense output for the step just ended
 }
 
 void Rollout::stepOnce() {
@@ -230,14 +291,10 @@ void Rollout::changeMode(ModeChange change) {
   summary_.mode_changes.push_back({change.t_s, active_.contact.model});
   State& s = change.start;
   if (adaptive_) {
-    earlier_.evaluations += adaptive_->evaluations();
-    earlier_.rejected += adaptive_->rejected(current_.step - earlier_.start_step);
     s.t = change.t_s;
     s.step = current_.step;
     current_ = s;
-    adaptive_ = std::make_unique<AdaptiveStepper>(active_, current_);
-    earlier_.start_step = current_.step;
-    last_step_.denseLost();  // the new stepper has no dense output for the step just ended
+    restartStepper();
   } else if (change.t_s < current_.t) {
     const double t_end = current_.t;
     const std::int64_t index = current_.step;

@@ -70,6 +70,10 @@ class Rollout {
   explicit Rollout(Model model);
   /// Starts `model` from `start` (its t and step are kept).
   Rollout(Model model, const State& start);
+  /// A run that goes on alone from where `other` is: the same states, stepper, summary and
+  /// reversal rule, and a stop request of its own (a stopWith token is not carried over).
+  Rollout(const Rollout& other);
+  Rollout& operator=(const Rollout&) = delete;
   Rollout(Rollout&&) noexcept;
   Rollout& operator=(Rollout&&) noexcept;
   ~Rollout();
@@ -85,6 +89,17 @@ class Rollout {
   /// Steps until the state reaches time t (current().t ≥ t). False when the run has stopped
   /// (divergence or stop request) before reaching it; then summary() says why.
   bool advanceTo(double t);
+  /// Takes one step (the fixed dt, or the adaptive stepper's next accepted one). False, and
+  /// no step taken, when the run has stopped. summary().last is then the step's end.
+  bool advanceOneStep();
+  /// Goes on from `s` instead of the current state, at the current time and step (s.t and
+  /// s.step are not read), as if the body were struck there: under rolling s is put back on
+  /// the constraint (its height and velocity follow from ω); under auto the mode is chosen
+  /// again as at the start; an adaptive stepper starts afresh from s; the watchdog measures
+  /// energy from s's (a tap adds energy no step did). Reversals go on being counted from the
+  /// sign they had, with the initial spin's threshold.
+  void setState(State s);
+
   /// The state at time t, which must lie within the last step [previous().t, current().t]
   /// (what advanceTo(t) leaves): the steps' own states at their ends; between them the
   /// integrator's dense output (adaptive) or a cubic Hermite interpolant (fixed steps), with
@@ -99,6 +114,11 @@ class Rollout {
   /// Stops the run when `token` is stopped (e.g. a std::jthread's or a signal handler's).
   void stopWith(std::stop_token token) { external_ = std::move(token); }
   bool stopped() const { return summary_.divergence.has_value() || summary_.stop_requested; }
+
+  /// The reversals so far (as summary().reversals, without sampling the last time), s.
+  const std::vector<double>& reversals() const { return summary_.reversals; }
+  /// The start of the last step, s (current().t before its last step; the same at the start).
+  double previousTime() const { return previous_.t; }
 
   /// What the run did so far; its `last` is the telemetry at the time the last advanceTo asked
   /// for (or where the run stopped, when it stopped before it).
@@ -122,6 +142,9 @@ class Rollout {
   /// every step when adaptive).
   std::int64_t checkEvery() const;
   void countSteps() const;  ///< the summary's steps, tilt and evaluations, as they are now
+  /// Adaptive: a new stepper from current_ (a change of mode, a state set), its predecessor's
+  /// counts kept; the last step is then interpolated by Hermite.
+  void restartStepper();
 
   /// Adaptive: what the steppers before the current one did (a change of mode restarts it).
   struct EarlierSteppers {

@@ -72,10 +72,18 @@ struct ContactSpec {
   double air_drag = 0.0;                     ///< σ, N m s: torque −σω
 };
 
+/// initial: the state at release (docs/physics.md P5). Unset members (NaN) were not given.
 struct InitialSpec {
-  double spin = 0.0;  ///< rad/s about the vertical, + = counter-clockwise from above
+  /// rad/s about the body's z axis, + = counter-clockwise from above; unset: 0, or the z of
+  /// angular_velocity (giving both is refused).
+  double spin = kUnset;
   std::array<double, 2> tilt{0.0, 0.0};  ///< degrees, about body x then the new body y
   double height = 0.0;  ///< lowest point above the floor at release, length units; 0: resting
+  /// ω at release, rad/s, body axes; unset: [0, 0, spin].
+  std::array<double, 3> angular_velocity{kUnset, kUnset, kUnset};
+  /// The CM's velocity at release, m/s, world axes; unset: the lowest point does not slide
+  /// (resting), or the CM at rest (released above the floor).
+  std::array<double, 3> velocity{kUnset, kUnset, kUnset};
 };
 
 /// simulation: exactly one of dt (a fixed step) and tolerance (adaptive steps).

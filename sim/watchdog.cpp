@@ -13,6 +13,11 @@ Watchdog::Watchdog(double t0, double e0, bool in_air_at_start, std::string advic
   if (in_air_at_start) last_flight_ = in_air_since_ = t0;
 }
 
+void Watchdog::restartEnergy(double e0) {
+  e0_ = e0;
+  bound_ = e0 + kEnergyGrowthBound * std::abs(e0) + 1e-12;
+}
+
 std::optional<Stop> Watchdog::observe(const StepEnd& end) {
   if (end.non_finite) {
     std::ostringstream msg;

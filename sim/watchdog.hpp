@@ -60,6 +60,10 @@ class Watchdog {
   /// messages of the stops a smaller step can cure ("try a smaller simulation.dt").
   Watchdog(double t0, double e0, bool in_air_at_start, std::string advice);
 
+  /// Measures energy from nowhere from e0 J on: the caller changed the state (a tap adds energy
+  /// that no step did). The last flight is kept.
+  void restartEnergy(double e0);
+
   /// Looks at one step's end: the stop, when the run must stop there (then message() says it).
   std::optional<Stop> observe(const StepEnd& end);
 

@@ -35,7 +35,11 @@ nlohmann::json modelJson(const sim::Model& model) {
   j["initial"] = {
       {"spin", model.initial.spin},
       {"tilt_deg", {model.initial.tilt_x * 180 / M_PI, model.initial.tilt_y * 180 / M_PI}},
-      {"height_m", model.initial.height}};
+      {"height_m", model.initial.height},
+      {"angular_velocity", {model.initial.w_x, model.initial.w_y, model.initial.spin}}};
+  // The CM's velocity as the scene gave it (m/s, world axes); null: from no slip.
+  const std::optional<Eigen::Vector3d>& v = model.initial.velocity;
+  j["initial"]["velocity"] = v ? nlohmann::json{v->x(), v->y(), v->z()} : nlohmann::json(nullptr);
   j["mass_kg"] = model.body->mass;
   j["length_unit_m"] = model.length_unit;
   return j;
@@ -95,8 +99,8 @@ std::vector<RunWarning> runWarnings(const sim::Model& model, const sim::RunSumma
                  "paraboloid"});
   // Not spun, not tilted, not dropped: nothing moves (a student left initial: out, and read
   // "first reversal none" as the body's doing).
-  if (model.initial.spin == 0 && model.initial.tilt_x == 0 && model.initial.tilt_y == 0 &&
-      model.initial.height == 0)
+  if (model.initial.angularVelocityBody().isZero(0) && !model.initial.velocity &&
+      model.initial.tilt_x == 0 && model.initial.tilt_y == 0 && model.initial.height == 0)
     w.push_back({"nothing_moves",
                  "not spun, not tilted (initial.spin 0, initial.tilt [0, 0]): the body rests as "
                  "it is; give initial: {spin: -5, tilt: [0.5, 0.5]}"});

@@ -21,7 +21,7 @@ constexpr SceneOptionRow kOptions[] = {
      [](L& s, const V& v) { s.spec.simulation.tolerance = v.number; }},
     {O::Integrator, "integrator", "simulation.integrator", K::Name, "The integrator", false,
      [](L& s, const V& v) { s.spec.simulation.integrator = v.name; }},
-    {O::Spin, "spin", "initial.spin", K::Number, "Initial spin, rad/s (overrides the scene)", false,
+    {O::Spin, "spin", "initial.spin", K::Number, "Initial spin, rad/s (overrides the scene)", true,
      [](L& s, const V& v) { s.spec.initial.spin = v.number; }},
     {O::Playback, "playback", "video.playback", K::Number,
      "Playback speed: simulated seconds per video second (0.5 = slow motion)", false,

@@ -47,6 +47,8 @@ __all__ = [
     "render",
     "sweep",
     "SweepTable",
+    "Simulation",
+    "State",
     "__version__",
 ]
 
@@ -525,3 +527,4 @@ def render(
 
 
 from ._sweep import SweepTable, sweep  # noqa: E402
+from ._simulation import Simulation, State  # noqa: E402

@@ -61,6 +61,22 @@ def _size(value: Any) -> bool:
         return False
 
 
+def _numbers(count: int) -> Callable[[Any], bool]:
+    """A test for `count` numbers: a list, tuple or 1-d array of them."""
+
+    def test(value: Any) -> bool:
+        if isinstance(value, (str, bytes, Mapping)):
+            return False
+        if isinstance(value, np.ndarray) and value.ndim != 1:
+            return False
+        try:
+            return len(value) == count and all(_number(v) for v in value)
+        except TypeError:  # no length
+            return False
+
+    return test
+
+
 def _scene(value: Any) -> bool:
     global _Scene
     if _Scene is None:
@@ -93,6 +109,11 @@ _TAKES: dict[str, tuple[Callable[[Any], bool], str]] = {
     "dt": (_number, f"{_NUMBER} (s)"),
     "tolerance": (_number, _NUMBER),
     "t": (_number, f"{_NUMBER} (s)"),
+    "until": (_text, "'reversal'"),
+    "position": (_numbers(3), "3 numbers (x, y, z), m"),
+    "velocity": (_numbers(3), "3 numbers (x, y, z), m/s"),
+    "angular_velocity": (_numbers(3), "3 numbers (x, y, z), rad/s"),
+    "quaternion": (_numbers(4), "4 numbers (w, x, y, z)"),
     "playback": (_number, f"{_NUMBER} (times real time)"),
     "frame": (_number, f"{_NUMBER} (a length, in the scene's unit)"),
     # A number, not a whole one: fps=29.97 is refused by the library as the other video

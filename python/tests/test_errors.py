@@ -416,7 +416,7 @@ def test_a_sweep_made_in_python_names_argument_vary_and_the_key():
         (
             {"initial.spn": [1, 2]},
             "argument vary: initial.spn is not a known key; did you mean spin? "
-            "(known here: spin, tilt, height)",
+            "(known here: spin, angular_velocity, tilt, height, velocity)",
         ),
         ({"initial.spin": []}, "argument vary: initial.spin has no values"),
         (

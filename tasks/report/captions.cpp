@@ -106,12 +106,25 @@ std::string reversalOf(const RunRecord& run) {
   return text;
 }
 
+namespace {
+
+// How the run started: its spin, or a body struck about its x or y axis (a tap) by its ω.
+std::string startOf(const RunRecord& run) {
+  const std::vector<Number>& w = run.model_angular_velocity;
+  if (w.size() == 3 && (w[0].value_or(0) != 0 || w[1].value_or(0) != 0))
+    return "struck at ω = [" + number(w[0], "%.3g") + ", " + number(w[1], "%.3g") + ", " +
+           number(w[2], "%.3g") + "] rad/s (body axes)";
+  return "spun " + number(run.initial_spin, "%+.3g") + " rad/s (" +
+         spinWords(run.initial_spin.value_or(0.0)) + ")";
+}
+
+}  // namespace
+
 std::string measuredOf(const RunRecord& run) {
   std::ostringstream out;
   out << valuesOf(run);
   // How long, and how often sampled: runs of one scene told apart by these would say the same.
-  out << "spun " << number(run.initial_spin, "%+.3g") << " rad/s ("
-      << spinWords(run.initial_spin.value_or(0.0)) << ")"
+  out << startOf(run)
       << (run.simulated_s ? ", " + number(run.simulated_s, "%.4g") + " s" : std::string())
       << (run.rate_hz ? " at " + number(run.rate_hz, "%.4g") + " samples/s" : std::string())
       << "<br>" << reversalOf(run) << "<br>final spin " << number(run.final_spin, "%+.3f")

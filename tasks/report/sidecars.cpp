@@ -76,6 +76,8 @@ std::optional<RunRecord> readRunRecord(const fs::path& path) {
   readScene(*j, run);
   run.rate_hz = numberOf(field(*j, "rate_hz"));
   run.model_spin = numberOf(field(field(field(*j, "model"), "initial"), "spin"));
+  run.model_angular_velocity =
+      numbersOf(field(field(field(*j, "model"), "initial"), "angular_velocity"));
   run.mass_kg = numberOf(field(field(*j, "model"), "mass_kg"));
   readResult(field(*j, "result"), run);
   run.check = checkRecordOf(field(*j, "check"));

@@ -35,9 +35,12 @@ struct RunRecord {
   Text scene_fingerprint;  ///< of the scene file's content
   /// The values put in over the scene file (--set, with_values): key, value.
   std::vector<std::pair<Text, Text>> scene_values;
-  std::string made_from;                ///< tasks::madeFrom of the sidecar: its content and values
-  Number rate_hz;                       ///< samples a simulated second
-  Number model_spin;                    ///< rad/s, the model's initial spin (model.initial.spin)
+  std::string made_from;  ///< tasks::madeFrom of the sidecar: its content and values
+  Number rate_hz;         ///< samples a simulated second
+  Number model_spin;      ///< rad/s, the model's initial spin (model.initial.spin)
+  /// rad/s, body axes: the model's initial ω (model.initial.angular_velocity); empty in a
+  /// sidecar from before it was written.
+  std::vector<Number> model_angular_velocity;
   Number mass_kg;                       ///< the body's mass (model.mass_kg)
   Number initial_spin;                  ///< rad/s, result.initial_spin
   Number simulated_s;                   ///< s
