@@ -333,6 +333,7 @@ void printResults(const SimulateArgs& args, const sim::Model& model,
 // format is the name's: CSV, or arrays for .npz and .h5).
 rb::Status checkTable(const SimulateArgs& args, const std::string& csv) {
   if (auto ok = checkPlotIsNotTheTable(args.plot_dir, csv); !ok) return ok;
+  if (auto ok = tasks::checkTelemetryName(args.output, "-o"); !ok) return ok;
   const tasks::TelemetryFormat format = tasks::telemetryFormatOf(csv);
   return rb::checkDataOutput(args.output, tasks::formatName(format), tasks::extensionOf(format),
                              {args.scene});

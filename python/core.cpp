@@ -411,6 +411,7 @@ void writeRun(const Run& r, const std::string& path, const char* method,
     rb::Status status = rb::checkDataOutput(
         path, tasks::formatName(format), tasks::extensionOf(format),
         {scene_path.is_string() ? scene_path.get<std::string>() : std::string()});
+    if (status) status = tasks::checkTelemetryName(path, method);
     if (status && tasks::telemetryFormatOf(path) != format)
       status = rb::Status::fail(std::string(method) + " " + path + ": writes " +
                                 tasks::formatName(format) + "; give a name ending in " +

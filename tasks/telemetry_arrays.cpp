@@ -44,6 +44,20 @@ const char* extensionOf(TelemetryFormat format) {
   return ".csv";
 }
 
+rb::Status checkTelemetryName(const std::string& path, const std::string& named_by) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  for (const char* other : {".npy", ".mat", ".parquet", ".feather", ".arrow", ".xlsx", ".xls",
+                            ".pkl", ".pickle", ".nc", ".hdf", ".he5"})
+    if (ext == other)
+      return rb::Status::fail(named_by + " " + path +
+                              ": writes a CSV table (.csv), NumPy arrays (.npz) or HDF5 (.h5), "
+                              "chosen by the name's ending; not " +
+                              ext);
+  return {};
+}
+
 TelemetryArrays::TelemetryArrays() : columns_(telemetryTable().size()) {}
 
 void TelemetryArrays::reserve(std::size_t rows) {
@@ -68,7 +82,10 @@ struct ColumnBytes {
 };
 
 NamedArray arrayOf(const TelemetryColumn& c, const std::vector<double>& values, ColumnBytes& kept) {
-  NamedArray a{c.column.name, c.column.unit, c.column.meaning};
+  NamedArray a;
+  a.name = c.column.name;
+  a.unit = c.column.unit;
+  a.meaning = c.column.meaning;
   a.length = values.size();
   switch (c.kind) {
     case ColumnKind::Number:

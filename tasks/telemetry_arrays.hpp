@@ -20,6 +20,11 @@ const char* formatName(TelemetryFormat format);
 /// The extension a name of that format ends in: ".csv", ".npz", ".h5".
 const char* extensionOf(TelemetryFormat format);
 
+/// A name whose extension says a data format not written here (.npy, .mat, .parquet, .xlsx, …)
+/// is refused, naming the ones that are: `-o x.npy` had written CSV text that np.load then
+/// called pickled data. `named_by` names the output as the caller does ("-o", "to_csv").
+rb::Status checkTelemetryName(const std::string& path, const std::string& named_by);
+
 /// A run's columns, gathered sample by sample: each the doubles the CSV writes as text.
 class TelemetryArrays {
  public:

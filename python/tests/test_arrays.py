@@ -116,6 +116,7 @@ def test_a_name_of_another_format_is_refused_and_nothing_is_written(tmp_path):
         (run.to_hdf5, "x.npz", "give a name ending in .h5"),
         (run.to_csv, "x.npz", "give a name ending in .csv"),
         (run.to_npz, "x.png", "give a name ending in .npz"),
+        (run.to_csv, "x.npy", "writes a CSV table (.csv), NumPy arrays (.npz) or HDF5 (.h5)"),
     ]:
         with pytest.raises(ValueError) as caught:
             method(tmp_path / name)
@@ -136,3 +137,12 @@ def test_the_report_lists_arrays_beside_the_csv_and_alone(tmp_path):
     html = (folder / "index.html").read_text()
     assert '<a href="rattleback.npz">rattleback.npz</a>' in html
     assert '<a href="rattleback.csv">telemetry (CSV)</a>' in html
+
+
+def test_the_command_line_refuses_a_name_of_a_format_it_does_not_write(tmp_path):
+    # -o x.npy wrote CSV text, which np.load then called pickled data.
+    for name in ("x.npy", "x.parquet", "x.mat"):
+        result = cli("simulate", SCENE, "--duration", "0.05", "-q", "-o", str(tmp_path / name), check=False)
+        assert result.returncode == 2
+        assert "-o " in result.stderr and "NumPy arrays (.npz) or HDF5 (.h5)" in result.stderr
+    assert list(tmp_path.iterdir()) == []
