@@ -112,12 +112,15 @@ std::string describeSpin(double spin) {
 render::RenderSettings settingsOf(const VideoPlan& plan, double duration, double spin,
                                   const std::string& scene,
                                   const std::vector<scene::KeyValue>& values,
-                                  render::Backend backend) {
+                                  render::Backend backend,
+                                  const std::optional<std::string>& given_title) {
   // The values put in name the variant: a class's bodies made with --set all read "mine: spun −5
   // rad/s". The renderer shortens a title too long for the frame.
-  std::string title = std::filesystem::path(scene).stem().string() + ": spun " + describeSpin(spin);
-  for (const scene::KeyValue& kv : values)
-    title += (&kv == &values.front() ? "; " : ", ") + kv.key + " = " + kv.yaml;
+  std::string title = (given_title ? *given_title : std::filesystem::path(scene).stem().string()) +
+                      ": spun " + describeSpin(spin);
+  if (!given_title)
+    for (const scene::KeyValue& kv : values)
+      title += (&kv == &values.front() ? "; " : ", ") + kv.key + " = " + kv.yaml;
   render::RenderSettings s;
   s.backend = backend;
   s.width = plan.width;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "render/frame.hpp"
@@ -39,10 +40,13 @@ std::string frameNamed(const scene::Loaded& scene);
 
 /// The renderer's settings for one run's frames: the plan's size and view, titled with the
 /// scene's name, the values put in over its file (--set, with_values) and the spin (the same in
-/// its video and its stills).
+/// its video and its stills). A `title` given replaces the scene's name and values (a snapshot
+/// case's name: its golden then does not depend on the scene file's path); the spin is said
+/// after it all the same.
 render::RenderSettings settingsOf(const VideoPlan& plan, double duration, double spin,
                                   const std::string& scene,
                                   const std::vector<scene::KeyValue>& values,
-                                  render::Backend backend);
+                                  render::Backend backend,
+                                  const std::optional<std::string>& title = std::nullopt);
 
 }  // namespace media

@@ -293,6 +293,8 @@ void readKeys(MapReader& reader, Loaded& out) {
   }
 }
 
+}  // namespace
+
 // One line, whatever the file holds: control characters (a newline in a quoted key, a NUL
 // byte, an escape yaml-cpp quotes back) are shown escaped.
 std::string printable(const std::string& text) {
@@ -314,6 +316,8 @@ std::string printable(const std::string& text) {
   }
   return out;
 }
+
+namespace {
 
 std::string format(const std::string& file, int line, const std::string& key,
                    const std::string& message) {

@@ -37,7 +37,7 @@ from ._errors import RunStopped, RunWarning, SceneError
 __all__ = [
     "Scene", "Run", "Image", "SceneError", "RunStopped", "RunWarning", "simulate", "analyze",
     "still",
-    "render", "sweep", "SweepTable", "__version__",
+    "render", "sweep", "SweepTable", "compare", "Comparison", "__version__",
 ]
 
 __version__ = _core.version
@@ -391,6 +391,12 @@ class Image:
     def height(self) -> int:
         return self.array.shape[0]
 
+    @property
+    def t(self) -> Optional[float]:
+        """The simulated time drawn, s, for a still of a scene (``t="reversal"`` resolved);
+        None for an image made from an array."""
+        return (self._still or {}).get("t")
+
     def png(self) -> bytes:
         """The image as PNG bytes (libpng, as the command line writes them)."""
         from . import _draw
@@ -413,13 +419,16 @@ class Image:
 
 
 @checked
-def still(scene: SceneLike, t: float = 0.0, *, view: Optional[str] = None,
+def still(scene: SceneLike, t: Union[float, str] = 0.0, *, view: Optional[str] = None,
           size: Optional[tuple[int, int]] = None, spin: Optional[float] = None,
           frame: Optional[float] = None, readouts: bool = True, transparent: bool = False,
-          backend: str = "auto") -> Image:
+          backend: str = "auto", title: Optional[str] = None) -> Image:
     """The scene's run drawn at time ``t`` (s), as ``rattleback still`` draws it.
 
     Args:
+        t: s, or ``"reversal"`` (also ``"first_reversal"``: the first reversal the reversal
+            rule counts, which can be later than n's first zero) or ``"end"`` (the run's end);
+            the image's ``t`` says the time drawn.
         view: ``oblique``, ``above``, ``front``, ``side`` or ``follow`` (default the scene's).
         size: (width, height) in pixels, even (default the scene's, else 1280×720).
         spin: initial spin, rad/s.
@@ -430,11 +439,14 @@ def still(scene: SceneLike, t: float = 0.0, *, view: Optional[str] = None,
         readouts: the title, read-outs and spin inset.
         transparent: an RGBA image with no floor or background.
         backend: ``auto``, ``egl`` or ``osmesa``.
+        title: the frame's title instead of the scene's name and values (the spin is said
+            after it): a golden image then does not depend on the scene file's name.
     """
     from . import _draw
     loaded = _scene(scene)._load(view=view, size=size, spin=spin, frame=frame)
-    array, listed, leaves = _draw.still(loaded, float(t), bool(readouts), bool(transparent),
-                                        backend)
+    when = t if isinstance(t, str) else float(t)
+    array, listed, leaves = _draw.still(loaded, when, bool(readouts), bool(transparent), backend,
+                                        title)
     _warn_leaves(loaded, leaves)
     return Image(array, listed)
 
@@ -470,3 +482,4 @@ def render(scene: SceneLike, output: Union[str, os.PathLike, None] = None, *,
 
 
 from ._sweep import SweepTable, sweep  # noqa: E402
+from ._compare import Comparison, compare  # noqa: E402

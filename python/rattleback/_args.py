@@ -93,7 +93,9 @@ _TAKES: dict[str, tuple[Callable[[Any], bool], str]] = {
     "spin": (_number, f"{_NUMBER} (rad/s)"),
     "dt": (_number, f"{_NUMBER} (s)"),
     "tolerance": (_number, _NUMBER),
-    "t": (_number, f"{_NUMBER} (s)"),
+    "t": (lambda v: _number(v) or isinstance(v, str),
+          f"{_NUMBER} (s), or a moment of the run: 'reversal', 'first_reversal' or 'end'"),
+    "title": (_text, "text"),
     "playback": (_number, f"{_NUMBER} (times real time)"),
     "frame": (_number, f"{_NUMBER} (a length, in the scene's unit)"),
     # A number, not a whole one: fps=29.97 is refused by the library as the other video
