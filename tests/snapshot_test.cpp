@@ -57,8 +57,9 @@ std::string suiteOf(const std::string& scene, const std::string& goldens) {
          ", view: oblique}\n  - {name: turning, scene: " + scene + ", t: reversal, view: above}\n";
 }
 
+// A fresh folder in the test's scratch folder (scratch() removes files, not folders).
 fs::path folder(const std::string& name) {
-  const fs::path dir = scratch(name);
+  const fs::path dir = scratch("said.txt").parent_path() / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
