@@ -1,8 +1,8 @@
 // The command line of `rattleback`, defined once (a table of commands, app/cli.cpp) and read by
 // both programs behind it: the light `rattleback` (simulate, analyze, bench, report, sweep) and
-// `rattleback-render` (render, still, compare), which the first runs in its own place (exec) for
-// the commands that draw — so the commands that only simulate never load OSMesa/EGL (and LLVM
-// behind them) or libav.
+// `rattleback-render` (render, still, compare, snapshot), which the first runs in its own place
+// (exec) for the commands that draw — so the commands that only simulate never load OSMesa/EGL (and
+// LLVM behind them) or libav.
 #pragma once
 
 #include <CLI/CLI.hpp>
