@@ -44,13 +44,16 @@ class Comparison:
         """One line of the figures, as ``rattleback compare`` prints them."""
         if not self.same_size:
             return "the images have different sizes, so no pixel was compared"
-        return (f"{self.differing} of {self.pixels} pixels ({100 * self.fraction:.4f} %) differ "
-                f"by more than {tolerance} in a channel; largest channel difference {self.worst}")
+        return (
+            f"{self.differing} of {self.pixels} pixels ({100 * self.fraction:.4f} %) differ "
+            f"by more than {tolerance} in a channel; largest channel difference {self.worst}"
+        )
 
 
 def _array(image: Any) -> np.ndarray:
     """An image given as a rattleback.Image, an H×W×3/4 uint8 array or a PNG's path."""
     from . import Image, _draw
+
     if isinstance(image, Image):
         return image.array
     if isinstance(image, (str, os.PathLike)):
@@ -58,17 +61,27 @@ def _array(image: Any) -> np.ndarray:
     return Image(image).array  # (checks the array's shape and type)
 
 
-def _defaults(tolerance: Optional[int], pixels: Optional[float],
-              square: Optional[int]) -> tuple[int, float, int]:
+def _defaults(
+    tolerance: Optional[int], pixels: Optional[float], square: Optional[int]
+) -> tuple[int, float, int]:
     from . import _draw
+
     d = _draw.default_tolerance
-    return (d["tolerance"] if tolerance is None else int(tolerance),
-            d["pixels"] if pixels is None else float(pixels),
-            d["square"] if square is None else int(square))
+    return (
+        d["tolerance"] if tolerance is None else int(tolerance),
+        d["pixels"] if pixels is None else float(pixels),
+        d["square"] if square is None else int(square),
+    )
 
 
-def compare(a: ImageLike, b: ImageLike, *, tolerance: Optional[int] = None,
-            pixels: Optional[float] = None, square: Optional[int] = None) -> Comparison:
+def compare(
+    a: ImageLike,
+    b: ImageLike,
+    *,
+    tolerance: Optional[int] = None,
+    pixels: Optional[float] = None,
+    square: Optional[int] = None,
+) -> Comparison:
     """Compares two images as ``rattleback compare`` does; returns its figures and verdict.
 
     ``a`` and ``b`` are :class:`rattleback.Image`, arrays or PNG paths. A pixel differs when a
@@ -77,6 +90,7 @@ def compare(a: ImageLike, b: ImageLike, *, tolerance: Optional[int] = None,
     pixels a side all differ (default 4; 0 off). The defaults are the command line's.
     """
     from . import _draw
+
     tol, frac, side = _defaults(tolerance, pixels, square)
     figures = _draw.compare(_array(a), _array(b), tol, frac, side)
     figures["box"] = tuple(figures["box"])

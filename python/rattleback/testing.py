@@ -21,14 +21,21 @@ _settings: dict[str, Any] = {"update": False, "failures": "snapshot-failures"}
 
 def _write(path: Path, array) -> None:
     from . import _draw
+
     path.parent.mkdir(parents=True, exist_ok=True)
     _draw.write_png(os.fspath(path), array)  # (a temporary file renamed into place)
 
 
-def assert_image_matches(image: ImageLike, golden_path: PathLike, *,
-                         tolerance: Optional[int] = None, pixels: Optional[float] = None,
-                         square: Optional[int] = None, update: Optional[bool] = None,
-                         failures: Optional[PathLike] = None) -> None:
+def assert_image_matches(
+    image: ImageLike,
+    golden_path: PathLike,
+    *,
+    tolerance: Optional[int] = None,
+    pixels: Optional[float] = None,
+    square: Optional[int] = None,
+    update: Optional[bool] = None,
+    failures: Optional[PathLike] = None,
+) -> None:
     """Asserts that ``image`` matches the PNG at ``golden_path`` (as :func:`rattleback.compare`
     judges, with its defaults).
 
@@ -52,11 +59,14 @@ def assert_image_matches(image: ImageLike, golden_path: PathLike, *,
     new = folder / f"{golden.stem}-new.png"
     _write(new, actual)
     if result is None:
-        raise AssertionError(f"{golden}: no golden image; the new image is {new} (pytest "
-                             "--snapshot-update, or update=True, writes it as the golden)")
+        raise AssertionError(
+            f"{golden}: no golden image; the new image is {new} (pytest "
+            "--snapshot-update, or update=True, writes it as the golden)"
+        )
     message = f"{golden}: differs: {result.describe(tol)}; the new image is {new}"
     if result.same_size:
         from . import _draw
+
         diff = folder / f"{golden.stem}-diff.png"
         _write(diff, _draw.diff_image(actual, _array(golden), tol))
         message += f", the diff image {diff}"
@@ -65,11 +75,18 @@ def assert_image_matches(image: ImageLike, golden_path: PathLike, *,
 
 def pytest_addoption(parser) -> None:
     group = parser.getgroup("rattleback", "rattleback snapshot images")
-    group.addoption("--snapshot-update", action="store_true", default=False,
-                    help="write the golden images that differ or are missing instead of failing")
-    group.addoption("--snapshot-failures", default="snapshot-failures", metavar="DIR",
-                    help="folder for the new and diff images of failures "
-                         "(default snapshot-failures)")
+    group.addoption(
+        "--snapshot-update",
+        action="store_true",
+        default=False,
+        help="write the golden images that differ or are missing instead of failing",
+    )
+    group.addoption(
+        "--snapshot-failures",
+        default="snapshot-failures",
+        metavar="DIR",
+        help="folder for the new and diff images of failures " "(default snapshot-failures)",
+    )
 
 
 def pytest_configure(config) -> None:

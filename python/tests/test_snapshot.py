@@ -85,6 +85,7 @@ def test_a_mismatch_names_the_diff_image_it_wrote(tmp_path, picture):
     assert f"the diff image {diff}" in str(caught.value)
     # The diff marks in magenta (255, 0, 255) the pixels that differ, all inside the patch.
     from rattleback import _draw
+
     magenta = np.all(_draw.read_png(str(diff))[..., :3] == [255, 0, 255], axis=2)
     assert magenta.sum() == rb.compare(changed(picture), golden).differing > 0
     rows, columns = np.nonzero(magenta)
@@ -92,21 +93,33 @@ def test_a_mismatch_names_the_diff_image_it_wrote(tmp_path, picture):
 
 
 def test_the_pytest_plugin_writes_goldens_with_snapshot_update(tmp_path):
-    (tmp_path / "test_mine.py").write_text(textwrap.dedent(f"""
+    (tmp_path / "test_mine.py").write_text(
+        textwrap.dedent(
+            f"""
         import rattleback as rb
         from rattleback.testing import assert_image_matches
 
         def test_rest():
             image = rb.still({scene_path("rattleback.yaml")!r}, 0.5, size=(320, 180))
             assert_image_matches(image, "goldens/rest.png")
-        """))
-    run = [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "-p",
-           "rattleback.testing", "test_mine.py"]
+        """
+        )
+    )
+    run = [
+        sys.executable,
+        "-m",
+        "pytest",
+        "-q",
+        "-p",
+        "no:cacheprovider",
+        "-p",
+        "rattleback.testing",
+        "test_mine.py",
+    ]
     first = subprocess.run(run, cwd=tmp_path, capture_output=True, text=True)
     assert first.returncode == 1, first.stdout
     assert "snapshot-failures/rest-new.png" in first.stdout
-    update = subprocess.run(run + ["--snapshot-update"], cwd=tmp_path, capture_output=True,
-                            text=True)
+    update = subprocess.run(run + ["--snapshot-update"], cwd=tmp_path, capture_output=True, text=True)
     assert update.returncode == 0, update.stdout
     assert (tmp_path / "goldens" / "rest.png").is_file()
     again = subprocess.run(run, cwd=tmp_path, capture_output=True, text=True)
@@ -133,5 +146,7 @@ def test_a_titled_still_does_not_depend_on_the_scene_files_name(tmp_path):
     b = rb.still(tmp_path / "sub" / "other-name.yaml", 0.5, size=SIZE, title="case")
     assert np.array_equal(a.array, b.array)
     # Untitled, the file's name is drawn into the title: the pictures differ.
-    assert not np.array_equal(rb.still(tmp_path / "one.yaml", 0.5, size=SIZE).array,
-                              rb.still(tmp_path / "sub" / "other-name.yaml", 0.5, size=SIZE).array)
+    assert not np.array_equal(
+        rb.still(tmp_path / "one.yaml", 0.5, size=SIZE).array,
+        rb.still(tmp_path / "sub" / "other-name.yaml", 0.5, size=SIZE).array,
+    )
