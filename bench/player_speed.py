@@ -69,12 +69,23 @@ except ImportError:
 
 CHROMIUM = "/usr/bin/chromium"
 DRIVER = "/usr/bin/chromedriver"
-BASE_FLAGS = ["--headless=new", "--no-sandbox", "--disable-quic", "--no-first-run",
-              "--disable-background-networking", "--disable-component-update", "--disable-sync",
-              "--force-device-scale-factor=1", "--window-size=1700,1100"]
+BASE_FLAGS = [
+    "--headless=new",
+    "--no-sandbox",
+    "--disable-quic",
+    "--no-first-run",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+    "--force-device-scale-factor=1",
+    "--window-size=1700,1100",
+]
 SWIFTSHADER_GL = ["--use-gl=angle", "--use-angle=swiftshader", "--enable-unsafe-swiftshader"]
-CONFIGS = {"swiftshader-gl": SWIFTSHADER_GL, "as-installed": [],
-           "sw-compositing": SWIFTSHADER_GL + ["--disable-gpu-compositing"]}
+CONFIGS = {
+    "swiftshader-gl": SWIFTSHADER_GL,
+    "as-installed": [],
+    "sw-compositing": SWIFTSHADER_GL + ["--disable-gpu-compositing"],
+}
 FLAGS = BASE_FLAGS + CONFIGS["sw-compositing"]  # the browser tests' (check_player.py)
 TRACE_CATEGORIES = "blink.user_timing,disabled-by-default-display.framedisplayed"
 
@@ -199,8 +210,14 @@ def processes(root):
                 continue
             kind = next((a.split("=", 1)[1] for a in args if a.startswith("--type=")), "browser")
             if kind == "utility":
-                kind = next((a.split("=", 1)[1].rsplit(".", 1)[-1] for a in args
-                             if a.startswith("--utility-sub-type=")), kind)
+                kind = next(
+                    (
+                        a.split("=", 1)[1].rsplit(".", 1)[-1]
+                        for a in args
+                        if a.startswith("--utility-sub-type=")
+                    ),
+                    kind,
+                )
             found[child] = kind
     return found
 
@@ -232,6 +249,7 @@ def displayed(log, marks):
     marks (performance.mark), from chromedriver's performance log: the trace of the whole session,
     which chromedriver collects once, at the first get_log. A mark not in the trace is left out."""
     import json
+
     times, shown = {}, []
     for entry in log:
         message = json.loads(entry["message"])["message"]
@@ -270,8 +288,10 @@ class Bench:
         for flag in BASE_FLAGS + CONFIGS[config] + [f"--user-data-dir={self.scratch / 'profile'}"]:
             options.add_argument(flag)
         options.set_capability("goog:loggingPrefs", {"performance": "ALL"})
-        options.add_experimental_option("perfLoggingPrefs", {
-            "traceCategories": TRACE_CATEGORIES, "enableNetwork": False, "enablePage": False})
+        options.add_experimental_option(
+            "perfLoggingPrefs",
+            {"traceCategories": TRACE_CATEGORIES, "enableNetwork": False, "enablePage": False},
+        )
         self.driver = webdriver.Chrome(service=Service(DRIVER), options=options)
         self.driver.set_script_timeout(120)
         self.records = []  # [(mark, figures)]: the frames displayed filled in by collect()
@@ -324,17 +344,26 @@ class Bench:
             raise RuntimeError(f"no player built on {folder / 'index.html'}")
         element = self.driver.find_element("css selector", ".rb-player")
         self.js("arguments[0].scrollIntoView({block: 'start'});", element)
-        self.js("const h = arguments[0].rbPlayer; h.setSize(arguments[1], arguments[2]); "
-                "h.setView('oblique'); h.setSpeed(1); h.setTime(h.range()[0]);", element, *self.size)
+        self.js(
+            "const h = arguments[0].rbPlayer; h.setSize(arguments[1], arguments[2]); "
+            "h.setView('oblique'); h.setSpeed(1); h.setTime(h.range()[0]);",
+            element,
+            *self.size,
+        )
         return element
 
     def playing(self, element, hide, whole=False):
-        self.js("""const p = window.RattlebackPlayer.players[0];
+        self.js(
+            """const p = window.RattlebackPlayer.players[0];
                    const h = arguments[0].rbPlayer;
                    if (h.setDrawAll) h.setDrawAll(arguments[2]);
                    p.points.visible = !arguments[1]; p.floor.visible = !arguments[1];
                    if (p.shadow) p.shadow.visible = !arguments[1];
-                   p.setTime(p.t0, true); h.play();""", element, hide, whole)
+                   p.setTime(p.t0, true); h.play();""",
+            element,
+            hide,
+            whole,
+        )
         result = self.record()
         self.js("arguments[0].rbPlayer.pause();", element)
         return result
@@ -358,13 +387,18 @@ class Bench:
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     parser.add_argument("dirs", nargs="+", metavar="DIR")
     parser.add_argument("--seconds", type=float, default=5.0)
     parser.add_argument("--size", default="1280x720")
     parser.add_argument("--rounds", type=int, default=2)
-    parser.add_argument("--configs", default="swiftshader-gl,as-installed",
-                        help="Chromium's configurations, from: " + ", ".join(CONFIGS))
+    parser.add_argument(
+        "--configs",
+        default="swiftshader-gl,as-installed",
+        help="Chromium's configurations, from: " + ", ".join(CONFIGS),
+    )
     args = parser.parse_args()
     folders = [pathlib.Path(d).resolve() for d in args.dirs]
     size = [int(v) for v in args.size.split("x")]
@@ -375,18 +409,28 @@ def main():
     if not (pathlib.Path(CHROMIUM).exists() and pathlib.Path(DRIVER).exists()):
         print("chromium or chromedriver is not installed")
         return 77
-    print(f"canvas {size[0]}×{size[1]}, {args.seconds:g} s per case; intervals between animation "
-          f"frames and between frames displayed, ms; load average {open('/proc/loadavg').read().split()[0]}")
+    print(
+        f"canvas {size[0]}×{size[1]}, {args.seconds:g} s per case; intervals between animation "
+        f"frames and between frames displayed, ms; load average {open('/proc/loadavg').read().split()[0]}"
+    )
     summary = collections.defaultdict(list)  # (config, where, case): [(rAF median, displayed median)]
 
     def line(round_, config, where, name, figures):
         median, p90, count, cpu, shown = figures
         use = ", ".join(f"{kind} {ms:.1f}" for kind, ms in cpu.most_common(3) if ms >= 0.05)
-        seen = (f"displayed {shown[1]:5.1f}/s, median {shown[2]:6.1f}" if shown and shown[0] > 1
-                else "displayed none" if shown else "displayed n/a")
+        seen = (
+            f"displayed {shown[1]:5.1f}/s, median {shown[2]:6.1f}"
+            if shown and shown[0] > 1
+            else "displayed none"
+            if shown
+            else "displayed n/a"
+        )
         summary[(config, where, name)].append((median, shown[2] if shown and shown[0] > 1 else float("nan")))
-        print(f"  round {round_ + 1} {config:>14s} {where:>12s} {name:7s} rAF median {median:6.1f}  p90 {p90:6.1f}; "
-              f"{seen}; CPU ms per rAF: {use}", flush=True)
+        print(
+            f"  round {round_ + 1} {config:>14s} {where:>12s} {name:7s} rAF median {median:6.1f}  p90 {p90:6.1f}; "
+            f"{seen}; CPU ms per rAF: {use}",
+            flush=True,
+        )
 
     for round_ in range(args.rounds):
         for config in configs:
@@ -403,17 +447,21 @@ def main():
                 for name, figures in results.items():
                     line(round_, config, where, name, figures)
                 if cost:
-                    print(f"  round {round_ + 1} {config:>14s} {where:>12s} one frame (pose, read-outs, "
-                          f"render) drawn and read back: whole {cost[0]:.1f} ms, the changed part {cost[1]:.1f} ms",
-                          flush=True)
+                    print(
+                        f"  round {round_ + 1} {config:>14s} {where:>12s} one frame (pose, read-outs, "
+                        f"render) drawn and read back: whole {cost[0]:.1f} ms, the changed part {cost[1]:.1f} ms",
+                        flush=True,
+                    )
     print(f"load average {open('/proc/loadavg').read().split()[0]}")
     print("over the rounds: median (min–max) of each round's median interval, ms")
     for (config, where, name), values in summary.items():
         raf = [v[0] for v in values]
         shown = [v[1] for v in values if v[1] == v[1]]
-        seen = (f"{statistics.median(shown):6.1f} ({min(shown):.1f}–{max(shown):.1f})" if shown else "   n/a")
-        print(f"  {config:>14s} {where:>12s} {name:7s} rAF {statistics.median(raf):6.1f} "
-              f"({min(raf):.1f}–{max(raf):.1f})  displayed {seen}")
+        seen = f"{statistics.median(shown):6.1f} ({min(shown):.1f}–{max(shown):.1f})" if shown else "   n/a"
+        print(
+            f"  {config:>14s} {where:>12s} {name:7s} rAF {statistics.median(raf):6.1f} "
+            f"({min(raf):.1f}–{max(raf):.1f})  displayed {seen}"
+        )
     return 0
 
 

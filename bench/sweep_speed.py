@@ -31,8 +31,9 @@ def timed(argv, repeats):
         subprocess.run(argv, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True)
         times.append(time.perf_counter() - start)
     times.sort()
-    rss = subprocess.run(["/usr/bin/time", "-f", "%M"] + argv, stdout=subprocess.DEVNULL,
-                         stderr=subprocess.PIPE, text=True).stderr.split()[-1]
+    rss = subprocess.run(
+        ["/usr/bin/time", "-f", "%M"] + argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True
+    ).stderr.split()[-1]
     return times[len(times) // 2], int(rss) / 1024
 
 
@@ -43,8 +44,10 @@ def libraries(program):
 
 print("== start-up: `--version`, median of 30")
 print(f"{'program':<44} {'time':>9} {'peak RSS':>10} {'libraries':>10}")
-for name, program in [("rattleback (simulating commands)", light),
-                      ("rattleback-render (links the renderer)", heavy)]:
+for name, program in [
+    ("rattleback (simulating commands)", light),
+    ("rattleback-render (links the renderer)", heavy),
+]:
     t, rss = timed([program, "--version"], 30)
     print(f"{name:<44} {t * 1e3:7.1f} ms {rss:7.1f} MB {libraries(program):>10}")
 
@@ -62,8 +65,10 @@ with tempfile.TemporaryDirectory() as work:
 
     print(f"\n== runs per second of that scene")
     print(f"{'how':<52} {'runs/s':>8}")
-    for name, program in [("one process per run: rattleback simulate", light),
-                          ("one process per run: the renderer-linked program", heavy)]:
+    for name, program in [
+        ("one process per run: rattleback simulate", light),
+        ("one process per run: the renderer-linked program", heavy),
+    ]:
         n = 20
         start = time.perf_counter()
         for _ in range(n):
@@ -74,10 +79,14 @@ with tempfile.TemporaryDirectory() as work:
         f.write(f"base: {scene}\nvary:\n  initial.spin: {{from: -5, to: -5, count: {runs}}}\n")
     for jobs in (1, 2):
         start = time.perf_counter()
-        subprocess.run([light, "sweep", sweep, "-q", "-j", str(jobs), "-o",
-                        os.path.join(work, f"j{jobs}.csv")], check=True)
+        subprocess.run(
+            [light, "sweep", sweep, "-q", "-j", str(jobs), "-o", os.path.join(work, f"j{jobs}.csv")],
+            check=True,
+        )
         elapsed = time.perf_counter() - start
         per_run = elapsed * jobs / runs
-        print(f"{'rattleback sweep -j ' + str(jobs) + f' ({runs} runs)':<52} {runs / elapsed:8.1f}"
-              f"   ({per_run * 1e3:.2f} ms per run per thread, {(per_run - integrate) * 1e3:+.2f} ms"
-              f" beside integrating)")
+        print(
+            f"{'rattleback sweep -j ' + str(jobs) + f' ({runs} runs)':<52} {runs / elapsed:8.1f}"
+            f"   ({per_run * 1e3:.2f} ms per run per thread, {(per_run - integrate) * 1e3:+.2f} ms"
+            f" beside integrating)"
+        )

@@ -12,8 +12,20 @@ import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-FOLDERS = ["app", "tasks", "media", "sim", "scene", "render", "util", "python", "tests", "bench",
-           "scripts", "fuzz"]
+FOLDERS = [
+    "app",
+    "tasks",
+    "media",
+    "sim",
+    "scene",
+    "render",
+    "util",
+    "python",
+    "tests",
+    "bench",
+    "scripts",
+    "fuzz",
+]
 CITATION = re.compile(r'docs/([\w-]+\.md)(?:\s+"([^"]+)"|\s+(P\d+))?')
 # What a reader cannot open: the SPEC that is not in the repository, an issue by its number.
 UNREADABLE = re.compile(r"\bSPEC\b|\b[Ii]ssues? #?\d+")
@@ -41,8 +53,10 @@ def main() -> int:
                 continue
             for number, line in enumerate(path.read_text(errors="replace").splitlines(), 1):
                 for m in UNREADABLE.finditer(line):
-                    failures.append(f"{path.relative_to(ROOT)}:{number}: cites \"{m.group(0)}\", "
-                                    "which a reader cannot open: cite a docs section")
+                    failures.append(
+                        f'{path.relative_to(ROOT)}:{number}: cites "{m.group(0)}", '
+                        "which a reader cannot open: cite a docs section"
+                    )
                 for m in CITATION.finditer(line):
                     cited += 1
                     page = ROOT / "docs" / m.group(1)
@@ -52,7 +66,7 @@ def main() -> int:
                         continue
                     section = m.group(2)
                     if section and section not in headings(page):
-                        failures.append(f"{where}: docs/{m.group(1)} has no section \"{section}\"")
+                        failures.append(f'{where}: docs/{m.group(1)} has no section "{section}"')
                     if m.group(3) and not re.search(rf"^#+\s+{m.group(3)}\.", page.read_text(), re.M):
                         failures.append(f"{where}: docs/{m.group(1)} has no section {m.group(3)}")
     for f in failures:

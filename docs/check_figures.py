@@ -33,8 +33,9 @@ class Runs:
         self.binary, self.folder = binary, Path(folder)
 
     def _run(self, *args):
-        return subprocess.run([self.binary, *args], cwd=ROOT, capture_output=True, text=True,
-                              check=True).stdout
+        return subprocess.run(
+            [self.binary, *args], cwd=ROOT, capture_output=True, text=True, check=True
+        ).stdout
 
     @functools.lru_cache(maxsize=None)
     def analyze(self, scene, spin=None):
@@ -67,8 +68,10 @@ class Runs:
     def row(self, name, **axes):
         """The sweep's row whose axes have these values (keys with dots as __: contact__air_drag)."""
         for row in self.sweep(name):
-            if all(float(row[key.replace("__", ".").replace("_0", "[0]")]) == value
-                   for key, value in axes.items()):
+            if all(
+                float(row[key.replace("__", ".").replace("_0", "[0]")]) == value
+                for key, value in axes.items()
+            ):
                 return row
         raise KeyError(f"{name}: no row {axes}")
 
@@ -85,134 +88,268 @@ def status_count(r, name, status):
 
 # (page, phrase with «numbers», one function of the runs a number)
 CLAIMS = [
-    ("README.md",
-     "clockwise at 5 rad/s: at «2.37» s it has stopped rocking and spins back, to «+3.08» rad/s",
-     [lambda r: r.simulate("rattleback")["first_reversal_s"],
-      lambda r: r.simulate("rattleback")["final_spin"]]),
-    ("README.md", "# preferred: «ccw»; roll «3.474» Hz, pitch «6.97» Hz",
-     [lambda r: r.analyze("rattleback")["preferred"],
-      lambda r: r.analyze("rattleback")["frequencies_hz"]["roll"],
-      lambda r: r.analyze("rattleback")["frequencies_hz"]["pitch"]]),
-    ("README.md", "# first reversal «2.3665» s",
-     [lambda r: r.simulate("rattleback")["first_reversal_s"]]),
-    ("docs/index.md", "its rocking grows, passes zero at «2.37» s, and it spins back",
-     [lambda r: r.simulate("rattleback")["first_reversal_s"]]),
-    ("docs/commands.md", "first reversal «2.3665» s (spin -5 rad/s changed sign)",
-     [lambda r: r.simulate("rattleback")["first_reversal_s"]]),
-    ("docs/commands.md", "energy «0.00683868» J -> «0.00605795» J («-11.42» %)",
-     [lambda r: r.simulate("rattleback")["energy_j"]["initial"],
-      lambda r: r.simulate("rattleback")["energy_j"]["final"],
-      lambda r: 100 * (r.simulate("rattleback")["energy_j"]["final"] /
-                       r.simulate("rattleback")["energy_j"]["initial"] - 1)]),
-    ("docs/commands.md", "final spin «+3.0767» rad/s, tilt «0.76» deg",
-     [lambda r: r.simulate("rattleback")["final_spin"],
-      lambda r: r.simulate("rattleback")["final_tilt_deg"]]),
-    ("docs/commands.md", "Richardson, order 4 reversal 1 at «2.807328» s: error about",
-     [lambda r: r.simulate("kane-levinson")["first_reversal_s"]]),
-    ("docs/commands.md", "difference from the tighter run reversal 1 at «2.366476» s: error about",
-     [lambda r: r.simulate("rattleback")["first_reversal_s"]]),
-    ("docs/commands.md",
-     "roll «3.474» Hz, pitch «6.97» Hz at rest; spun −5 rad/s the pitch mode grows at «1.5655» /s "
-     "(it reverses), spun +5 only the roll mode grows, at «0.1638» /s; preferred: «ccw».",
-     [lambda r: r.analyze("rattleback")["frequencies_hz"]["roll"],
-      lambda r: r.analyze("rattleback")["frequencies_hz"]["pitch"],
-      lambda r: r.analyze("rattleback", -5)["growth_rates"]["pitch"],
-      lambda r: r.analyze("rattleback", 5)["growth_rates"]["roll"],
-      lambda r: r.analyze("rattleback")["preferred"]]),
-    ("docs/physics.md",
-     "roll «3.474» Hz and pitch «6.97» Hz at rest; spun −5 rad/s the pitch mode grows at «1.5655» "
-     "/s (it reverses); spun +5 rad/s only the roll mode grows, at «0.1638» /s; first order: "
-     "roll «+0.08051», pitch «−0.3243» per rad; preferred: «ccw».",
-     [lambda r: r.analyze("rattleback")["frequencies_hz"]["roll"],
-      lambda r: r.analyze("rattleback")["frequencies_hz"]["pitch"],
-      lambda r: r.analyze("rattleback", -5)["growth_rates"]["pitch"],
-      lambda r: r.analyze("rattleback", 5)["growth_rates"]["roll"],
-      lambda r: r.analyze("rattleback")["first_order_growth_per_spin"]["roll"],
-      lambda r: r.analyze("rattleback")["first_order_growth_per_spin"]["pitch"],
-      lambda r: r.analyze("rattleback")["preferred"]]),
-    ("docs/physics.md",
-     "The default scene lies «beyond» the range (n²ρ/g = «0.85»): forecast at «2.12» s, it "
-     "reverses at «2.37» s. Kane & Levinson's (n²ρ/g = «5.1») lies «outside» it: it takes «2.81» s",
-     [lambda r: r.analyze("rattleback")["predicted_first_reversal"]["range"],
-      lambda r: r.analyze("rattleback")["predicted_first_reversal"]["spin_parameter"],
-      lambda r: r.analyze("rattleback")["predicted_first_reversal"]["time_s"],
-      lambda r: r.simulate("rattleback")["first_reversal_s"],
-      lambda r: r.analyze("kane-levinson")["predicted_first_reversal"]["spin_parameter"],
-      lambda r: r.analyze("kane-levinson")["predicted_first_reversal"]["range"],
-      lambda r: r.simulate("kane-levinson")["first_reversal_s"]]),
-    ("docs/physics.md",
-     "| the default scene, −5 rad/s, tilt 0.5°, with drag («2.26» s against «2.366» s) | «0.85» | «0.006» | -«4.5» % |",
-     [lambda r: r.analyze("rattleback")["predicted_first_reversal"]["time_s"],
-      lambda r: r.simulate("rattleback")["first_reversal_s"],
-      lambda r: r.analyze("rattleback")["predicted_first_reversal"]["spin_parameter"],
-      lambda r: r.analyze("rattleback")["predicted_first_reversal"]["energy_ratio"],
-      lambda r: 100 * (1 - r.analyze("rattleback")["predicted_first_reversal"]["time_s"] /
-                       r.simulate("rattleback")["first_reversal_s"])]),
-    ("docs/physics.md", "lying at 62.5° («62.49»° today)",
-     [lambda r: r.simulate("seed-flip-ccw")["final_tilt_deg"]]),
-    ("docs/python.md",
-     "print(run.first_reversal, run.spin.max()) # «2.3664759726320312» «3.7575770895596166»",
-     [lambda r: r.simulate("rattleback")["first_reversal_s"],
-      lambda r: max(r.column("rattleback", "spin"))]),
-    ("docs/commands.md", "dopri5, tolerance 1e-08, «2000» steps («40» rejected), 8 s simulated",
-     [lambda r: r.simulate("rattleback")["steps"],
-      lambda r: r.simulate("rattleback")["rejected_steps"]]),
-    ("docs/python.md",
-     "print(pool.map(first_reversal, scenes)) # [«2.3664759726320312», «2.6528510225736284», "
-     "«3.13729750753789»]",
-     [lambda r, spin=spin: float(r.row("spin-drag", initial__spin=spin,
-                                       contact__air_drag=5.9e-6)["first_reversal_s"])
-      for spin in (-5, -4, -3)]),
-    ("docs/python.md", "('«ccw»', {'pitch': «6.970009429469335», 'roll': «3.4738980805453132»})",
-     [lambda r: r.analyze("rattleback")["preferred"],
-      lambda r: r.analyze("rattleback")["frequencies_hz"]["pitch"],
-      lambda r: r.analyze("rattleback")["frequencies_hz"]["roll"]]),
-    ("docs/scenes.md", "misalignment «+2.22»°",
-     [lambda r: r.analyze("rattleback")["misalignment_deg"]]),
-    ("docs/scenes.md", "stops at «2.3665» s and spins back to «+3.08» rad/s",
-     [lambda r: r.simulate("rattleback")["first_reversal_s"],
-      lambda r: r.simulate("rattleback")["final_spin"]]),
-    ("docs/scenes.md", "spun +5 rad/s, reverses at «2.8073» s",
-     [lambda r: r.simulate("kane-levinson")["first_reversal_s"]]),
-    ("docs/scenes.md",
-     "four reversals («2.81», «17.40», «31.94», «46.54» s) with the energy kept to «6e-9»",
-     [lambda r: r.simulate("kane-levinson-long")["reversals_s"][0],
-      lambda r: r.simulate("kane-levinson-long")["reversals_s"][1],
-      lambda r: r.simulate("kane-levinson-long")["reversals_s"][2],
-      lambda r: r.simulate("kane-levinson-long")["reversals_s"][3],
-      lambda r: energy_kept(r, "kane-levinson-long")]),
-    ("docs/scenes.md", "n(t) swinging between ±«5.36» rad/s",
-     [lambda r: max(abs(n) for n in r.column("kane-levinson-long", "spin"))]),
-    ("docs/scenes.md", "it rolls onto its side and ends lying at «62.49»°",
-     [lambda r: r.simulate("seed-flip-ccw")["final_tilt_deg"]]),
-    ("docs/scenes.md", "(«115» ok, «8» stopped;",
-     [lambda r: status_count(r, "spin-drag", "ok"),
-      lambda r: status_count(r, "spin-drag", "stopped")]),
-    ("docs/scenes.md", "without drag «2.10» s at −8 rad/s and «3.29» s at −2.5 rad/s",
-     [lambda r: float(r.row("spin-drag", initial__spin=-8, contact__air_drag=0)["first_reversal_s"]),
-      lambda r: float(r.row("spin-drag", initial__spin=-2.5, contact__air_drag=0)["first_reversal_s"])]),
-    ("docs/scenes.md", "(at −5 rad/s: «2.32», «2.37» and «4.16» s for the three drags)",
-     [lambda r, d=d: float(r.row("spin-drag", initial__spin=-5, contact__air_drag=d)["first_reversal_s"])
-      for d in (0, 5.9e-6, 5.9e-5)]),
-    ("docs/scenes.md", "at −8 rad/s the light drag gives «1.96» s",
-     [lambda r: float(r.row("spin-drag", initial__spin=-8, contact__air_drag=5.9e-6)["first_reversal_s"])]),
-    ("docs/scenes.md", "−5 rad/s reverses at «4.16» s",
-     [lambda r: float(r.row("spin-drag", initial__spin=-5, contact__air_drag=5.9e-5)["first_reversal_s"])]),
-    ("docs/scenes.md", "spins of 5.5 … 8 rad/s reverse after «7.80» … «5.56» s",
-     [lambda r: float(r.row("spin-drag", initial__spin=5.5, contact__air_drag=0)["first_reversal_s"]),
-      lambda r: float(r.row("spin-drag", initial__spin=8, contact__air_drag=0)["first_reversal_s"])]),
-    ("docs/scenes.md", "first-order growth rate «+0.0805»·n per second",
-     [lambda r: r.analyze("rattleback")["first_order_growth_per_spin"]["roll"]]),
-    ("docs/scenes.md", "only +10 rad/s reverses, at «7.74» s (tilt up to «33.6»°)",
-     [lambda r: float(r.row("spin-drag", initial__spin=10, contact__air_drag=5.9e-6)["first_reversal_s"]),
-      lambda r: float(r.row("spin-drag", initial__spin=10, contact__air_drag=5.9e-6)["max_tilt_deg"])]),
-    ("docs/scenes.md", "(«0.57» s at at[0] = 0.75, scale 0.7;",
-     [lambda r: float(r.row("dents", body__dents__at_0=0.75, body__dents__scale=0.7)["first_reversal_s"])]),
-    ("docs/scenes.md", "also 0.5 at −1.25 and −1, late: «7.1» and «7.9» s)",
-     [lambda r: float(r.row("dents", body__dents__at_0=-1.25, body__dents__scale=0.5)["first_reversal_s"]),
-      lambda r: float(r.row("dents", body__dents__at_0=-1, body__dents__scale=0.5)["first_reversal_s"])]),
-    ("docs/scenes.md", "(«78» ok, 2.2 s on 2 threads then",
-     [lambda r: status_count(r, "dents", "ok")]),
+    (
+        "README.md",
+        "clockwise at 5 rad/s: at «2.37» s it has stopped rocking and spins back, to «+3.08» rad/s",
+        [
+            lambda r: r.simulate("rattleback")["first_reversal_s"],
+            lambda r: r.simulate("rattleback")["final_spin"],
+        ],
+    ),
+    (
+        "README.md",
+        "# preferred: «ccw»; roll «3.474» Hz, pitch «6.97» Hz",
+        [
+            lambda r: r.analyze("rattleback")["preferred"],
+            lambda r: r.analyze("rattleback")["frequencies_hz"]["roll"],
+            lambda r: r.analyze("rattleback")["frequencies_hz"]["pitch"],
+        ],
+    ),
+    ("README.md", "# first reversal «2.3665» s", [lambda r: r.simulate("rattleback")["first_reversal_s"]]),
+    (
+        "docs/index.md",
+        "its rocking grows, passes zero at «2.37» s, and it spins back",
+        [lambda r: r.simulate("rattleback")["first_reversal_s"]],
+    ),
+    (
+        "docs/commands.md",
+        "first reversal «2.3665» s (spin -5 rad/s changed sign)",
+        [lambda r: r.simulate("rattleback")["first_reversal_s"]],
+    ),
+    (
+        "docs/commands.md",
+        "energy «0.00683868» J -> «0.00605795» J («-11.42» %)",
+        [
+            lambda r: r.simulate("rattleback")["energy_j"]["initial"],
+            lambda r: r.simulate("rattleback")["energy_j"]["final"],
+            lambda r: 100
+            * (
+                r.simulate("rattleback")["energy_j"]["final"]
+                / r.simulate("rattleback")["energy_j"]["initial"]
+                - 1
+            ),
+        ],
+    ),
+    (
+        "docs/commands.md",
+        "final spin «+3.0767» rad/s, tilt «0.76» deg",
+        [
+            lambda r: r.simulate("rattleback")["final_spin"],
+            lambda r: r.simulate("rattleback")["final_tilt_deg"],
+        ],
+    ),
+    (
+        "docs/commands.md",
+        "Richardson, order 4 reversal 1 at «2.807328» s: error about",
+        [lambda r: r.simulate("kane-levinson")["first_reversal_s"]],
+    ),
+    (
+        "docs/commands.md",
+        "difference from the tighter run reversal 1 at «2.366476» s: error about",
+        [lambda r: r.simulate("rattleback")["first_reversal_s"]],
+    ),
+    (
+        "docs/commands.md",
+        "roll «3.474» Hz, pitch «6.97» Hz at rest; spun −5 rad/s the pitch mode grows at «1.5655» /s "
+        "(it reverses), spun +5 only the roll mode grows, at «0.1638» /s; preferred: «ccw».",
+        [
+            lambda r: r.analyze("rattleback")["frequencies_hz"]["roll"],
+            lambda r: r.analyze("rattleback")["frequencies_hz"]["pitch"],
+            lambda r: r.analyze("rattleback", -5)["growth_rates"]["pitch"],
+            lambda r: r.analyze("rattleback", 5)["growth_rates"]["roll"],
+            lambda r: r.analyze("rattleback")["preferred"],
+        ],
+    ),
+    (
+        "docs/physics.md",
+        "roll «3.474» Hz and pitch «6.97» Hz at rest; spun −5 rad/s the pitch mode grows at «1.5655» "
+        "/s (it reverses); spun +5 rad/s only the roll mode grows, at «0.1638» /s; first order: "
+        "roll «+0.08051», pitch «−0.3243» per rad; preferred: «ccw».",
+        [
+            lambda r: r.analyze("rattleback")["frequencies_hz"]["roll"],
+            lambda r: r.analyze("rattleback")["frequencies_hz"]["pitch"],
+            lambda r: r.analyze("rattleback", -5)["growth_rates"]["pitch"],
+            lambda r: r.analyze("rattleback", 5)["growth_rates"]["roll"],
+            lambda r: r.analyze("rattleback")["first_order_growth_per_spin"]["roll"],
+            lambda r: r.analyze("rattleback")["first_order_growth_per_spin"]["pitch"],
+            lambda r: r.analyze("rattleback")["preferred"],
+        ],
+    ),
+    (
+        "docs/physics.md",
+        "The default scene lies «beyond» the range (n²ρ/g = «0.85»): forecast at «2.12» s, it "
+        "reverses at «2.37» s. Kane & Levinson's (n²ρ/g = «5.1») lies «outside» it: it takes «2.81» s",
+        [
+            lambda r: r.analyze("rattleback")["predicted_first_reversal"]["range"],
+            lambda r: r.analyze("rattleback")["predicted_first_reversal"]["spin_parameter"],
+            lambda r: r.analyze("rattleback")["predicted_first_reversal"]["time_s"],
+            lambda r: r.simulate("rattleback")["first_reversal_s"],
+            lambda r: r.analyze("kane-levinson")["predicted_first_reversal"]["spin_parameter"],
+            lambda r: r.analyze("kane-levinson")["predicted_first_reversal"]["range"],
+            lambda r: r.simulate("kane-levinson")["first_reversal_s"],
+        ],
+    ),
+    (
+        "docs/physics.md",
+        "| the default scene, −5 rad/s, tilt 0.5°, with drag («2.26» s against «2.366» s) | «0.85» | «0.006» | -«4.5» % |",
+        [
+            lambda r: r.analyze("rattleback")["predicted_first_reversal"]["time_s"],
+            lambda r: r.simulate("rattleback")["first_reversal_s"],
+            lambda r: r.analyze("rattleback")["predicted_first_reversal"]["spin_parameter"],
+            lambda r: r.analyze("rattleback")["predicted_first_reversal"]["energy_ratio"],
+            lambda r: 100
+            * (
+                1
+                - r.analyze("rattleback")["predicted_first_reversal"]["time_s"]
+                / r.simulate("rattleback")["first_reversal_s"]
+            ),
+        ],
+    ),
+    (
+        "docs/physics.md",
+        "lying at 62.5° («62.49»° today)",
+        [lambda r: r.simulate("seed-flip-ccw")["final_tilt_deg"]],
+    ),
+    (
+        "docs/python.md",
+        "print(run.first_reversal, run.spin.max()) # «2.3664759726320312» «3.7575770895596166»",
+        [
+            lambda r: r.simulate("rattleback")["first_reversal_s"],
+            lambda r: max(r.column("rattleback", "spin")),
+        ],
+    ),
+    (
+        "docs/commands.md",
+        "dopri5, tolerance 1e-08, «2000» steps («40» rejected), 8 s simulated",
+        [lambda r: r.simulate("rattleback")["steps"], lambda r: r.simulate("rattleback")["rejected_steps"]],
+    ),
+    (
+        "docs/python.md",
+        "print(pool.map(first_reversal, scenes)) # [«2.3664759726320312», «2.6528510225736284», "
+        "«3.13729750753789»]",
+        [
+            lambda r, spin=spin: float(
+                r.row("spin-drag", initial__spin=spin, contact__air_drag=5.9e-6)["first_reversal_s"]
+            )
+            for spin in (-5, -4, -3)
+        ],
+    ),
+    (
+        "docs/python.md",
+        "('«ccw»', {'pitch': «6.970009429469335», 'roll': «3.4738980805453132»})",
+        [
+            lambda r: r.analyze("rattleback")["preferred"],
+            lambda r: r.analyze("rattleback")["frequencies_hz"]["pitch"],
+            lambda r: r.analyze("rattleback")["frequencies_hz"]["roll"],
+        ],
+    ),
+    ("docs/scenes.md", "misalignment «+2.22»°", [lambda r: r.analyze("rattleback")["misalignment_deg"]]),
+    (
+        "docs/scenes.md",
+        "stops at «2.3665» s and spins back to «+3.08» rad/s",
+        [
+            lambda r: r.simulate("rattleback")["first_reversal_s"],
+            lambda r: r.simulate("rattleback")["final_spin"],
+        ],
+    ),
+    (
+        "docs/scenes.md",
+        "spun +5 rad/s, reverses at «2.8073» s",
+        [lambda r: r.simulate("kane-levinson")["first_reversal_s"]],
+    ),
+    (
+        "docs/scenes.md",
+        "four reversals («2.81», «17.40», «31.94», «46.54» s) with the energy kept to «6e-9»",
+        [
+            lambda r: r.simulate("kane-levinson-long")["reversals_s"][0],
+            lambda r: r.simulate("kane-levinson-long")["reversals_s"][1],
+            lambda r: r.simulate("kane-levinson-long")["reversals_s"][2],
+            lambda r: r.simulate("kane-levinson-long")["reversals_s"][3],
+            lambda r: energy_kept(r, "kane-levinson-long"),
+        ],
+    ),
+    (
+        "docs/scenes.md",
+        "n(t) swinging between ±«5.36» rad/s",
+        [lambda r: max(abs(n) for n in r.column("kane-levinson-long", "spin"))],
+    ),
+    (
+        "docs/scenes.md",
+        "it rolls onto its side and ends lying at «62.49»°",
+        [lambda r: r.simulate("seed-flip-ccw")["final_tilt_deg"]],
+    ),
+    (
+        "docs/scenes.md",
+        "(«115» ok, «8» stopped;",
+        [lambda r: status_count(r, "spin-drag", "ok"), lambda r: status_count(r, "spin-drag", "stopped")],
+    ),
+    (
+        "docs/scenes.md",
+        "without drag «2.10» s at −8 rad/s and «3.29» s at −2.5 rad/s",
+        [
+            lambda r: float(r.row("spin-drag", initial__spin=-8, contact__air_drag=0)["first_reversal_s"]),
+            lambda r: float(r.row("spin-drag", initial__spin=-2.5, contact__air_drag=0)["first_reversal_s"]),
+        ],
+    ),
+    (
+        "docs/scenes.md",
+        "(at −5 rad/s: «2.32», «2.37» and «4.16» s for the three drags)",
+        [
+            lambda r, d=d: float(
+                r.row("spin-drag", initial__spin=-5, contact__air_drag=d)["first_reversal_s"]
+            )
+            for d in (0, 5.9e-6, 5.9e-5)
+        ],
+    ),
+    (
+        "docs/scenes.md",
+        "at −8 rad/s the light drag gives «1.96» s",
+        [lambda r: float(r.row("spin-drag", initial__spin=-8, contact__air_drag=5.9e-6)["first_reversal_s"])],
+    ),
+    (
+        "docs/scenes.md",
+        "−5 rad/s reverses at «4.16» s",
+        [lambda r: float(r.row("spin-drag", initial__spin=-5, contact__air_drag=5.9e-5)["first_reversal_s"])],
+    ),
+    (
+        "docs/scenes.md",
+        "spins of 5.5 … 8 rad/s reverse after «7.80» … «5.56» s",
+        [
+            lambda r: float(r.row("spin-drag", initial__spin=5.5, contact__air_drag=0)["first_reversal_s"]),
+            lambda r: float(r.row("spin-drag", initial__spin=8, contact__air_drag=0)["first_reversal_s"]),
+        ],
+    ),
+    (
+        "docs/scenes.md",
+        "first-order growth rate «+0.0805»·n per second",
+        [lambda r: r.analyze("rattleback")["first_order_growth_per_spin"]["roll"]],
+    ),
+    (
+        "docs/scenes.md",
+        "only +10 rad/s reverses, at «7.74» s (tilt up to «33.6»°)",
+        [
+            lambda r: float(
+                r.row("spin-drag", initial__spin=10, contact__air_drag=5.9e-6)["first_reversal_s"]
+            ),
+            lambda r: float(r.row("spin-drag", initial__spin=10, contact__air_drag=5.9e-6)["max_tilt_deg"]),
+        ],
+    ),
+    (
+        "docs/scenes.md",
+        "(«0.57» s at at[0] = 0.75, scale 0.7;",
+        [lambda r: float(r.row("dents", body__dents__at_0=0.75, body__dents__scale=0.7)["first_reversal_s"])],
+    ),
+    (
+        "docs/scenes.md",
+        "also 0.5 at −1.25 and −1, late: «7.1» and «7.9» s)",
+        [
+            lambda r: float(
+                r.row("dents", body__dents__at_0=-1.25, body__dents__scale=0.5)["first_reversal_s"]
+            ),
+            lambda r: float(r.row("dents", body__dents__at_0=-1, body__dents__scale=0.5)["first_reversal_s"]),
+        ],
+    ),
+    ("docs/scenes.md", "(«78» ok, 2.2 s on 2 threads then", [lambda r: status_count(r, "dents", "ok")]),
 ]
 
 
@@ -257,8 +394,10 @@ def check(runs):
         for number, value in zip(found.groups(), values):
             actual = shown(value(runs), number)
             if actual != number:
-                failures.append(f"{page}: {found.group(0)!r} quotes {number}; the program gives "
-                                f"{actual} ({value(runs)!r})")
+                failures.append(
+                    f"{page}: {found.group(0)!r} quotes {number}; the program gives "
+                    f"{actual} ({value(runs)!r})"
+                )
     return failures
 
 
@@ -271,8 +410,11 @@ def main(argv):
     for failure in failures:
         print(failure)
     count = sum(len(values) for _, _, values in CLAIMS)
-    print(f"{len(failures)} problems among {count} quoted figures" if failures
-          else f"all {count} quoted figures are the program's output")
+    print(
+        f"{len(failures)} problems among {count} quoted figures"
+        if failures
+        else f"all {count} quoted figures are the program's output"
+    )
     return 1 if failures else 0
 
 

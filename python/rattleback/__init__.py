@@ -35,9 +35,21 @@ from ._args import checked, refuse
 from ._errors import RunStopped, RunWarning, SceneError
 
 __all__ = [
-    "Scene", "Run", "Image", "SceneError", "RunStopped", "RunWarning", "simulate", "analyze",
+    "Scene",
+    "Run",
+    "Image",
+    "SceneError",
+    "RunStopped",
+    "RunWarning",
+    "simulate",
+    "analyze",
     "still",
-    "render", "sweep", "SweepTable", "compare", "Comparison", "__version__",
+    "render",
+    "sweep",
+    "SweepTable",
+    "compare",
+    "Comparison",
+    "__version__",
 ]
 
 __version__ = _core.version
@@ -62,8 +74,7 @@ class Scene:
     line's message does.
     """
 
-    def __init__(self, yaml: str, name: str, values: Sequence[tuple[str, str]] = (),
-                 _file: bool = False):
+    def __init__(self, yaml: str, name: str, values: Sequence[tuple[str, str]] = (), _file: bool = False):
         self._yaml = yaml
         self._name = name
         self._values = tuple(values)
@@ -101,7 +112,7 @@ class Scene:
                 located = f"{name}:{e.line}: "
                 message = str(e)
                 if e.line is not None and message.startswith(located):
-                    e.args = (f"{name}: " + message[len(located):],)
+                    e.args = (f"{name}: " + message[len(located) :],)
                 e.line = None
             raise
 
@@ -208,8 +219,7 @@ class Run:
         columns = self.__dict__.get("_columns", {})
         if name in columns:
             return columns[name]
-        raise AttributeError(f"Run has no column or attribute {name!r}; columns: "
-                             + ", ".join(columns))
+        raise AttributeError(f"Run has no column or attribute {name!r}; columns: " + ", ".join(columns))
 
     def __getitem__(self, name: str) -> np.ndarray:
         return self._columns[name]
@@ -275,6 +285,7 @@ class Run:
     def to_pandas(self):
         """The columns as a ``pandas.DataFrame`` (needs pandas)."""
         import pandas as pd
+
         return pd.DataFrame(self._columns)
 
     @checked
@@ -302,10 +313,17 @@ class Run:
 
 
 @checked
-def simulate(scene: SceneLike, *, rate: float = _core.default_rate,
-             duration: Optional[float] = None, spin: Optional[float] = None,
-             dt: Optional[float] = None, tolerance: Optional[float] = None,
-             integrator: Optional[str] = None, check: bool = False) -> Run:
+def simulate(
+    scene: SceneLike,
+    *,
+    rate: float = _core.default_rate,
+    duration: Optional[float] = None,
+    spin: Optional[float] = None,
+    dt: Optional[float] = None,
+    tolerance: Optional[float] = None,
+    integrator: Optional[str] = None,
+    check: bool = False,
+) -> Run:
     """Runs the scene, sampled at ``rate`` samples per simulated second (t_k = k / rate, and
     the end), as ``rattleback simulate`` does.
 
@@ -325,8 +343,9 @@ def simulate(scene: SceneLike, *, rate: float = _core.default_rate,
         RunStopped: the run stopped by itself (NaN, energy from nowhere, on its rim).
         KeyboardInterrupt: Ctrl-C.
     """
-    loaded = _scene(scene)._load(duration=duration, spin=spin, dt=dt, tolerance=tolerance,
-                                 integrator=integrator)
+    loaded = _scene(scene)._load(
+        duration=duration, spin=spin, dt=dt, tolerance=tolerance, integrator=integrator
+    )
     try:
         run = Run(_core.simulate(loaded, float(rate), bool(check)))
     except RunStopped as stopped:
@@ -338,14 +357,12 @@ def simulate(scene: SceneLike, *, rate: float = _core.default_rate,
     # What the command line's summary warns of, where a notebook shows it (a mass typed in grams ran
     # in silence, its warning only in run.result["warnings"]).
     for warning in run.result.get("warnings") or []:
-        warnings.warn(RunWarning(f"{run.scene}: {warning['text']}", warning.get("code")),
-                      stacklevel=3)
+        warnings.warn(RunWarning(f"{run.scene}: {warning['text']}", warning.get("code")), stacklevel=3)
     return run
 
 
 @checked
-def analyze(scene: SceneLike, *, spin: Optional[float] = None,
-            duration: Optional[float] = None) -> dict:
+def analyze(scene: SceneLike, *, spin: Optional[float] = None, duration: Optional[float] = None) -> dict:
     """Mass properties, rest, contact limits, the linearised theory and the preferred
     direction: the dict ``rattleback analyze --json`` prints. ``spin`` (rad/s) is where the
     growth rates are evaluated (default: the scene's spin, else 5); ``duration`` (s) is how far
@@ -357,8 +374,9 @@ def _image_array(array: Any) -> np.ndarray:
     """`array` if it is an image the writer takes as it is: the writer cast any other dtype to
     uint8 without a word (0.5 → 0, black; 300 → 44)."""
     if not isinstance(array, np.ndarray):
-        raise TypeError("argument array: takes an H×W×3 or H×W×4 uint8 NumPy array, not "
-                        f"{type(array).__name__}")
+        raise TypeError(
+            "argument array: takes an H×W×3 or H×W×4 uint8 NumPy array, not " f"{type(array).__name__}"
+        )
     what = "argument array: an image is an H×W×3 or H×W×4 uint8 array"
     if array.ndim != 3 or array.shape[2] not in (3, 4):
         raise ValueError(f"{what}, not of shape {array.shape}")
@@ -400,6 +418,7 @@ class Image:
     def png(self) -> bytes:
         """The image as PNG bytes (libpng, as the command line writes them)."""
         from . import _draw
+
         return _draw.encode_png(self.array, (self._still or {}).get("drawn_by", ""))
 
     def _repr_png_(self) -> bytes:
@@ -412,6 +431,7 @@ class Image:
         of a scene is listed in the folder's manifest, as ``rattleback still`` lists its PNG,
         so that ``rattleback report`` shows it under Stills with its view, time and spin."""
         from . import _draw
+
         _draw.write_png(os.fspath(path), self.array, self._still)
 
     def __repr__(self) -> str:
@@ -419,10 +439,19 @@ class Image:
 
 
 @checked
-def still(scene: SceneLike, t: Union[float, str] = 0.0, *, view: Optional[str] = None,
-          size: Optional[tuple[int, int]] = None, spin: Optional[float] = None,
-          frame: Optional[float] = None, readouts: bool = True, transparent: bool = False,
-          backend: str = "auto", title: Optional[str] = None) -> Image:
+def still(
+    scene: SceneLike,
+    t: Union[float, str] = 0.0,
+    *,
+    view: Optional[str] = None,
+    size: Optional[tuple[int, int]] = None,
+    spin: Optional[float] = None,
+    frame: Optional[float] = None,
+    readouts: bool = True,
+    transparent: bool = False,
+    backend: str = "auto",
+    title: Optional[str] = None,
+) -> Image:
     """The scene's run drawn at time ``t`` (s), as ``rattleback still`` draws it.
 
     Args:
@@ -443,10 +472,10 @@ def still(scene: SceneLike, t: Union[float, str] = 0.0, *, view: Optional[str] =
             after it): a golden image then does not depend on the scene file's name.
     """
     from . import _draw
+
     loaded = _scene(scene)._load(view=view, size=size, spin=spin, frame=frame)
     when = t if isinstance(t, str) else float(t)
-    array, listed, leaves = _draw.still(loaded, when, bool(readouts), bool(transparent), backend,
-                                        title)
+    array, listed, leaves = _draw.still(loaded, when, bool(readouts), bool(transparent), backend, title)
     _warn_leaves(loaded, leaves)
     return Image(array, listed)
 
@@ -458,12 +487,22 @@ def _warn_leaves(loaded, leaves: Optional[str]) -> None:
 
 
 @checked
-def render(scene: SceneLike, output: Union[str, os.PathLike, None] = None, *,
-           both: bool = False, fps: Optional[int] = None, size: Optional[tuple[int, int]] = None,
-           view: Optional[str] = None, playback: Optional[float] = None,
-           duration: Optional[float] = None, spin: Optional[float] = None,
-           frame: Optional[float] = None, crf: int = 20, preset: str = "veryfast",
-           backend: str = "auto") -> list[dict]:
+def render(
+    scene: SceneLike,
+    output: Union[str, os.PathLike, None] = None,
+    *,
+    both: bool = False,
+    fps: Optional[int] = None,
+    size: Optional[tuple[int, int]] = None,
+    view: Optional[str] = None,
+    playback: Optional[float] = None,
+    duration: Optional[float] = None,
+    spin: Optional[float] = None,
+    frame: Optional[float] = None,
+    crf: int = 20,
+    preset: str = "veryfast",
+    backend: str = "auto",
+) -> list[dict]:
     """The scene's run as an MP4 video (H.264), as ``rattleback render`` writes it.
 
     ``output`` is the .mp4 (default ``out/<scene>.mp4``; ``out/scene.mp4`` for a dict or YAML
@@ -473,10 +512,13 @@ def render(scene: SceneLike, output: Union[str, os.PathLike, None] = None, *,
     ``frame`` is :func:`still`'s.
     """
     from . import _draw
-    loaded = _scene(scene)._load(fps=fps, size=size, view=view, playback=playback,
-                                 duration=duration, spin=spin, frame=frame)
-    files, leaves = _draw.render(loaded, "" if output is None else os.fspath(output), both,
-                                 int(crf), preset, backend)
+
+    loaded = _scene(scene)._load(
+        fps=fps, size=size, view=view, playback=playback, duration=duration, spin=spin, frame=frame
+    )
+    files, leaves = _draw.render(
+        loaded, "" if output is None else os.fspath(output), both, int(crf), preset, backend
+    )
     _warn_leaves(loaded, leaves)
     return files
 

@@ -65,8 +65,7 @@ def _scene(value: Any) -> bool:
     global _Scene
     if _Scene is None:
         from . import Scene as _Scene  # (the package imports this module first)
-    return (type(value) in (_Scene, str)
-            or isinstance(value, (_Scene, str, os.PathLike, Mapping)))
+    return type(value) in (_Scene, str) or isinstance(value, (_Scene, str, os.PathLike, Mapping))
 
 
 _Scene = None
@@ -93,8 +92,10 @@ _TAKES: dict[str, tuple[Callable[[Any], bool], str]] = {
     "spin": (_number, f"{_NUMBER} (rad/s)"),
     "dt": (_number, f"{_NUMBER} (s)"),
     "tolerance": (_number, _NUMBER),
-    "t": (lambda v: _number(v) or isinstance(v, str),
-          f"{_NUMBER} (s), or a moment of the run: 'reversal', 'first_reversal' or 'end'"),
+    "t": (
+        lambda v: _number(v) or isinstance(v, str),
+        f"{_NUMBER} (s), or a moment of the run: 'reversal', 'first_reversal' or 'end'",
+    ),
     "title": (_text, "text"),
     "playback": (_number, f"{_NUMBER} (times real time)"),
     "frame": (_number, f"{_NUMBER} (a length, in the scene's unit)"),
@@ -116,13 +117,19 @@ _TAKES: dict[str, tuple[Callable[[Any], bool], str]] = {
     "output": (_path, "a path (text or os.PathLike)"),
     "name": (_text, "text"),
     "text": (_text, "YAML text"),
-    "values": (lambda v: isinstance(v, Mapping),
-               "a dict of dotted keys and values, e.g. {'initial.spin': -5}"),
+    "values": (
+        lambda v: isinstance(v, Mapping),
+        "a dict of dotted keys and values, e.g. {'initial.spin': -5}",
+    ),
     "source": (_scene, "a sweep file's path, or with vary a Scene, a scene's path or a dict"),
-    "resume": (lambda v: type(v).__name__ == "SweepTable" and hasattr(v, "interrupted"),
-               "a SweepTable (a KeyboardInterrupt's table)"),
-    "vary": (lambda v: isinstance(v, Mapping),
-             "a dict of dotted keys and their values, e.g. {'initial.spin': [-5, 5]}"),
+    "resume": (
+        lambda v: type(v).__name__ == "SweepTable" and hasattr(v, "interrupted"),
+        "a SweepTable (a KeyboardInterrupt's table)",
+    ),
+    "vary": (
+        lambda v: isinstance(v, Mapping),
+        "a dict of dotted keys and their values, e.g. {'initial.spin': [-5, 5]}",
+    ),
 }
 
 
@@ -154,31 +161,36 @@ def _check(name: str, value: Any) -> None:
                 raise TypeError(f"argument vary: takes dotted keys as text, not {_shown(key)}")
             if isinstance(v, Mapping):
                 continue
-            if isinstance(v, (str, bytes)) or not isinstance(v, (list, tuple, range, np.ndarray)) \
-                    or not all(_scene_value(x) for x in v):
-                raise TypeError(f"argument vary: {key} takes a list of values or a range "
-                                f"{{'from': A, 'to': B, 'count': N}}, not {_shown(v)}")
+            if (
+                isinstance(v, (str, bytes))
+                or not isinstance(v, (list, tuple, range, np.ndarray))
+                or not all(_scene_value(x) for x in v)
+            ):
+                raise TypeError(
+                    f"argument vary: {key} takes a list of values or a range "
+                    f"{{'from': A, 'to': B, 'count': N}}, not {_shown(v)}"
+                )
     if name == "values":  # and each value, named by its key
         for key, v in value.items():
             if not isinstance(key, str):
                 raise TypeError(f"argument values: takes dotted keys as text, not {_shown(key)}")
             if not _scene_value(v):
-                raise TypeError(f"argument values: {key} takes a number, text, True or False, "
-                                f"a list or a dict, not {_shown(v)}")
+                raise TypeError(
+                    f"argument values: {key} takes a number, text, True or False, "
+                    f"a list or a dict, not {_shown(v)}"
+                )
 
 
 def checked(function: Callable) -> Callable:
     """`function` with its arguments' types checked first, each by its name in _TAKES (a
     function with an argument not in it fails at import, so none goes unchecked). An argument
     whose default is None may be None; defaults are not checked."""
-    parameters = [p for p in inspect.signature(function).parameters.values()
-                  if p.name not in ("self", "cls")]
+    parameters = [p for p in inspect.signature(function).parameters.values() if p.name not in ("self", "cls")]
     unknown = [p.name for p in parameters if p.name not in _TAKES]
     if unknown:
         raise AssertionError(f"{function.__qualname__}: no type for {', '.join(unknown)}")
     offset = len(inspect.signature(function).parameters) - len(parameters)
-    positional = [p.name for p in parameters
-                  if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)]
+    positional = [p.name for p in parameters if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)]
     optional = frozenset(p.name for p in parameters if p.default is None)
     names = frozenset(p.name for p in parameters)
 

@@ -75,6 +75,7 @@ class SweepTable:
     def to_pandas(self):
         """The table as a ``pandas.DataFrame`` (needs pandas)."""
         import pandas as pd
+
         return pd.DataFrame(self._columns)
 
     @checked
@@ -108,10 +109,15 @@ def _values(values: Any) -> Any:
 
 
 @checked
-def sweep(source: Union[str, os.PathLike, Scene, Mapping[str, Any]],
-          vary: Optional[Mapping[str, Any]] = None, *, duration: Optional[float] = None,
-          jobs: int = 0, name: Optional[str] = None,
-          resume: Optional[SweepTable] = None) -> SweepTable:
+def sweep(
+    source: Union[str, os.PathLike, Scene, Mapping[str, Any]],
+    vary: Optional[Mapping[str, Any]] = None,
+    *,
+    duration: Optional[float] = None,
+    jobs: int = 0,
+    name: Optional[str] = None,
+    resume: Optional[SweepTable] = None,
+) -> SweepTable:
     """Runs every scene of a sweep on ``jobs`` threads (0: all cores), as ``rattleback sweep``
     does: the sweep file at ``source`` (docs/scenes.md "Sweep files": a base scene and axes of
     values), or, with ``vary``, the scene ``source`` (a Scene, a scene's path or a dict) with
@@ -134,13 +140,17 @@ def sweep(source: Union[str, os.PathLike, Scene, Mapping[str, Any]],
     kept = resume._table if resume is not None else None
     if vary is None:
         if not isinstance(source, (str, os.PathLike)):
-            raise TypeError("argument vary: a scene is swept along the values given as vary, "
-                            "e.g. vary={'initial.spin': [-5, 5]}; without it, source is a "
-                            "sweep file's path")
+            raise TypeError(
+                "argument vary: a scene is swept along the values given as vary, "
+                "e.g. vary={'initial.spin': [-5, 5]}; without it, source is a "
+                "sweep file's path"
+            )
         for given, value in (("duration", duration), ("name", name)):
             if value is not None:
-                raise TypeError(f"argument {given}: goes with vary (a sweep file sets its own"
-                                + (": duration:)" if given == "duration" else ")"))
+                raise TypeError(
+                    f"argument {given}: goes with vary (a sweep file sets its own"
+                    + (": duration:)" if given == "duration" else ")")
+                )
         run = lambda: _core.sweep(os.fspath(source), int(jobs), kept)  # noqa: E731
     else:
         base = _scene(source)
@@ -148,14 +158,19 @@ def sweep(source: Union[str, os.PathLike, Scene, Mapping[str, Any]],
         if duration is not None:
             if not (math.isfinite(float(duration)) and float(duration) > 0):
                 # As simulate's: a SceneError naming the key the argument sets.
-                raise SceneError(f"argument duration: must be > 0, not {duration}",
-                                 "argument duration", None, "simulation.duration")
+                raise SceneError(
+                    f"argument duration: must be > 0, not {duration}",
+                    "argument duration",
+                    None,
+                    "simulation.duration",
+                )
             spec["duration"] = float(duration)
         if name is None:
             name = (Path(base._name).stem if base._file else "scene") + "-sweep"
         text = json.dumps(spec, default=_yaml_value_default)
-        run = lambda: _core.sweep_of(text, name, base._yaml, base._name,  # noqa: E731
-                                     list(base._values), int(jobs), kept)
+        run = lambda: _core.sweep_of(
+            text, name, base._yaml, base._name, list(base._values), int(jobs), kept  # noqa: E731
+        )
     try:
         table = run()
     except KeyboardInterrupt as interrupt:
@@ -168,6 +183,10 @@ def sweep(source: Union[str, os.PathLike, Scene, Mapping[str, Any]],
     result = SweepTable(table)
     status = result["status"]
     if len(status) and bool(np.all(status == "refused")):
-        warnings.warn(RunWarning(f"{table.file}: every run was refused; the first: "
-                                 f"{result['message'][0]}", "all_refused"), stacklevel=3)
+        warnings.warn(
+            RunWarning(
+                f"{table.file}: every run was refused; the first: " f"{result['message'][0]}", "all_refused"
+            ),
+            stacklevel=3,
+        )
     return result

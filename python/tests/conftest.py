@@ -22,8 +22,7 @@ def cli(*args: str, cwd=None, check=True) -> subprocess.CompletedProcess:
     """Runs the command-line program; its output as text."""
     result = subprocess.run([BIN, *args], capture_output=True, text=True, cwd=cwd)
     if check and result.returncode != 0:
-        raise AssertionError(f"rattleback {' '.join(args)} exited {result.returncode}: "
-                             f"{result.stderr}")
+        raise AssertionError(f"rattleback {' '.join(args)} exited {result.returncode}: " f"{result.stderr}")
     return result
 
 

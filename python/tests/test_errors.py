@@ -26,10 +26,12 @@ simulation: {dt: 1e-4, duration: 1}
 
 # The shipped Kane & Levinson body as a dict (scenes/kane-levinson.yaml).
 DICT_SCENE = {
-    "body": {"shape": "ellipsoid",
-             "ellipsoid": {"semi_axes": [0.03, 0.20, 0.02], "center": [0.0, 0.0, 0.01]},
-             "inertia": [[1.6e-3, -2.0e-5, 0.0], [-2.0e-5, 2.0e-4, 0.0], [0.0, 0.0, 1.7e-3]],
-             "mass": 1.0},
+    "body": {
+        "shape": "ellipsoid",
+        "ellipsoid": {"semi_axes": [0.03, 0.20, 0.02], "center": [0.0, 0.0, 0.01]},
+        "inertia": [[1.6e-3, -2.0e-5, 0.0], [-2.0e-5, 2.0e-4, 0.0], [0.0, 0.0, 1.7e-3]],
+        "mass": 1.0,
+    },
     "contact": {"model": "rolling"},
     "initial": {"spin": 5.0, "tilt": [0.5, 0.5]},
     "simulation": {"integrator": "rk4", "dt": 1e-4, "duration": 8.0},
@@ -131,12 +133,15 @@ def test_a_stopped_run_names_its_values_and_carries_the_run_as_far_as_it_went():
     # nothing to plot of the 0.9 s before. The message names the values put in; .run is the Run
     # up to the stop, its result "stopped", its samples those of an unstopped run's start.
     import pickle
+
     scene = rb.Scene.from_file(scene_path("rattleback.yaml")).with_values({"initial.spin": -20})
     with pytest.raises(rb.RunStopped) as caught:
         rb.simulate(scene)
     stopped = caught.value
-    assert str(stopped).startswith(scene_path("rattleback.yaml") + " (initial.spin = -20): "
-                                   "the run stopped: the body tipped onto the edge of its top")
+    assert str(stopped).startswith(
+        scene_path("rattleback.yaml") + " (initial.spin = -20): "
+        "the run stopped: the body tipped onto the edge of its top"
+    )
     assert "use contact.model auto, smooth or points" in str(stopped)
     assert stopped.reason == "on_rim" and isinstance(stopped.run, rb.Run)
     assert stopped.run.result["status"] == "stopped"
@@ -159,10 +164,13 @@ def test_a_bad_video_argument_is_a_scene_error_naming_the_argument():
     assert caught.value.key == "video.view"
 
 
-@pytest.mark.parametrize("fps, message", [
-    (29.97, "argument fps: must be a whole number of frames per second (24, 25, 30, 60 …), not 29.97"),
-    (0, "argument fps: must be within 1 … 240, not 0"),
-])
+@pytest.mark.parametrize(
+    "fps, message",
+    [
+        (29.97, "argument fps: must be a whole number of frames per second (24, 25, 30, 60 …), not 29.97"),
+        (0, "argument fps: must be within 1 … 240, not 0"),
+    ],
+)
 def test_a_bad_fps_is_a_scene_error_as_the_other_video_arguments(tmp_path, fps, message):
     # It was a plain ValueError, while a bad view, size or playback is a SceneError (as
     # docs/python.md lists fps among them).
@@ -245,18 +253,25 @@ def test_a_package_whose_modules_are_not_built_says_how_to_build_them(tmp_path):
     # build command; it had imported an empty namespace package, and `rb.simulate` failed with
     # "module 'rattleback' has no attribute 'simulate'".
     import shutil
+
     package = tmp_path / "rattleback"
     package.mkdir()
     for source in os.scandir(os.path.dirname(rb.__file__)):
         if source.name.endswith((".py", ".pyi")):
             shutil.copy(source.path, package / source.name)
-    result = subprocess.run([sys.executable, "-c", "import rattleback"], capture_output=True,
-                            text=True, env=dict(os.environ, PYTHONPATH=str(tmp_path)))
+    result = subprocess.run(
+        [sys.executable, "-c", "import rattleback"],
+        capture_output=True,
+        text=True,
+        env=dict(os.environ, PYTHONPATH=str(tmp_path)),
+    )
     assert result.returncode == 1
     last = result.stderr.strip().splitlines()[-1]
-    assert last == (f"ImportError: rattleback's compiled modules are not built in {package}: "
-                    "build them with `bash scripts/build.sh rattleback_python` "
-                    "(scripts/run.sh builds only the command)"), result.stderr
+    assert last == (
+        f"ImportError: rattleback's compiled modules are not built in {package}: "
+        "build them with `bash scripts/build.sh rattleback_python` "
+        "(scripts/run.sh builds only the command)"
+    ), result.stderr
 
 
 def test_a_video_name_of_another_kind_is_named_as_python_names_it(tmp_path):
@@ -264,29 +279,33 @@ def test_a_video_name_of_another_kind_is_named_as_python_names_it(tmp_path):
     path = tmp_path / "v.avi"
     with pytest.raises(ValueError) as caught:
         rb.render(scene_path("rattleback.yaml"), path, duration=0.1)
-    assert str(caught.value) == (f"render's output {path}: writes MP4 video; "
-                                 "give a name ending in .mp4")
+    assert str(caught.value) == (f"render's output {path}: writes MP4 video; " "give a name ending in .mp4")
     assert not path.exists()
 
 
-@pytest.mark.parametrize("array,given,way_out", [
-    # A float image in 0…1 (matplotlib's) was cast to 0 or 1: black; 300 as int64 wrapped to 44.
-    (np.full((4, 6, 3), 0.5), "float64", "np.clip(a * 255, 0, 255).astype(np.uint8)"),
-    (np.full((4, 6, 3), 300), "int64", "np.clip(a, 0, 255).astype(np.uint8)"),
-    (np.zeros((4, 6, 3), bool), "bool", "a.astype(np.uint8) * 255"),
-])
+@pytest.mark.parametrize(
+    "array,given,way_out",
+    [
+        # A float image in 0…1 (matplotlib's) was cast to 0 or 1: black; 300 as int64 wrapped to 44.
+        (np.full((4, 6, 3), 0.5), "float64", "np.clip(a * 255, 0, 255).astype(np.uint8)"),
+        (np.full((4, 6, 3), 300), "int64", "np.clip(a, 0, 255).astype(np.uint8)"),
+        (np.zeros((4, 6, 3), bool), "bool", "a.astype(np.uint8) * 255"),
+    ],
+)
 def test_an_image_of_another_dtype_than_uint8_is_refused(array, given, way_out):
     with pytest.raises(ValueError) as caught:
         rb.Image(array)
-    assert str(caught.value) == (f"argument array: an image is an H×W×3 or H×W×4 uint8 array, "
-                                 f"not {given} (give {way_out})")
+    assert str(caught.value) == (
+        f"argument array: an image is an H×W×3 or H×W×4 uint8 array, " f"not {given} (give {way_out})"
+    )
 
 
 def test_an_image_of_another_shape_is_refused_when_made():
     with pytest.raises(ValueError) as caught:
         rb.Image(np.zeros((4, 6), np.uint8))
-    assert str(caught.value) == ("argument array: an image is an H×W×3 or H×W×4 uint8 array, "
-                                 "not of shape (4, 6)")
+    assert str(caught.value) == (
+        "argument array: an image is an H×W×3 or H×W×4 uint8 array, " "not of shape (4, 6)"
+    )
     assert rb.Image(np.zeros((4, 6, 4), np.uint8)).png().startswith(b"\x89PNG")
 
 
@@ -302,8 +321,9 @@ def test_an_empty_output_name_is_refused_as_the_argument(tmp_path, monkeypatch):
         rb.Image(np.zeros((4, 6, 3), np.uint8)).save("")
     with pytest.raises(ValueError) as caught:
         rb.render(rb.Scene.from_dict(DICT_SCENE), "", duration=0.1)
-    assert str(caught.value) == ("argument output: '' names no file; give a file name, or None "
-                                 "for the default")
+    assert str(caught.value) == (
+        "argument output: '' names no file; give a file name, or None " "for the default"
+    )
     assert list(tmp_path.iterdir()) == []
 
 
@@ -317,8 +337,7 @@ def test_an_image_name_of_another_kind_is_refused_as_still_refuses_it(tmp_path):
         assert str(caught.value) == f"save's path {path}: writes PNG; give a name ending in .png"
         assert not path.exists()
     image.save(tmp_path / "x.PNG")  # as the command line takes it, in any case
-    theirs = cli("still", scene_path("rattleback.yaml"), "-o", str(tmp_path / "y.jpg"),
-                 check=False)
+    theirs = cli("still", scene_path("rattleback.yaml"), "-o", str(tmp_path / "y.jpg"), check=False)
     assert theirs.returncode != 0 and "writes PNG; give a name ending in .png" in theirs.stderr
 
 
@@ -328,8 +347,10 @@ def test_a_bad_playback_says_the_value_given(tmp_path, playback, given):
     scene = rb.Scene.from_file(scene_path("rattleback.yaml"))
     with pytest.raises(rb.SceneError) as caught:
         rb.render(scene, tmp_path / "x.mp4", playback=playback, duration=0.1, size=(64, 48))
-    assert str(caught.value) == ("argument playback: must be a speed > 0 (1 real time, "
-                                 "0.5 slow motion, 2 twice as fast), not " + given)
+    assert str(caught.value) == (
+        "argument playback: must be a speed > 0 (1 real time, "
+        "0.5 slow motion, 2 twice as fast), not " + given
+    )
     assert not (tmp_path / "x.mp4").exists()
 
 
@@ -370,18 +391,25 @@ def test_a_sweep_files_errors_name_its_file_line_and_key(tmp_path):
 def test_a_sweep_made_in_python_names_argument_vary_and_the_key():
     base = scene_path("rattleback.yaml")
     for vary, message in [
-        ({"initial.spn": [1, 2]},
-         "argument vary: initial.spn is not a known key; did you mean spin? "
-         "(known here: spin, tilt, height)"),
+        (
+            {"initial.spn": [1, 2]},
+            "argument vary: initial.spn is not a known key; did you mean spin? "
+            "(known here: spin, tilt, height)",
+        ),
         ({"initial.spin": []}, "argument vary: initial.spin has no values"),
-        ({"video.fps": [30]},
-         "argument vary: video.fps: a sweep only simulates; video keys do not change a run"),
-        ({"initial.tilt": [0.5, 1.0]},
-         "argument vary: initial.tilt is a list (the base scene's is [0.5, 0.5]): give lists as "
-         "its values, e.g. [[0.5, 0.5]], or vary one element, as initial.tilt[0]"),
-        ({"body.dents.at[5]": [1]},
-         "argument vary: body.dents.at[5]: the base scene has no list body.dents.at with an "
-         "element 5"),
+        (
+            {"video.fps": [30]},
+            "argument vary: video.fps: a sweep only simulates; video keys do not change a run",
+        ),
+        (
+            {"initial.tilt": [0.5, 1.0]},
+            "argument vary: initial.tilt is a list (the base scene's is [0.5, 0.5]): give lists as "
+            "its values, e.g. [[0.5, 0.5]], or vary one element, as initial.tilt[0]",
+        ),
+        (
+            {"body.dents.at[5]": [1]},
+            "argument vary: body.dents.at[5]: the base scene has no list body.dents.at with an " "element 5",
+        ),
     ]:
         with pytest.raises(rb.SceneError) as caught:
             rb.sweep(base, vary, jobs=1)
@@ -394,13 +422,15 @@ def test_a_sweep_made_in_python_names_argument_vary_and_the_key():
     # number; then its row was refused, which a heatmap shows as "no reversal").
     with pytest.raises(ValueError) as caught:
         rb.sweep(base, {"initial.spin": [-5, "-4"]}, duration=0.1, jobs=1)
-    assert str(caught.value) == ('argument vary: initial.spin has the quoted string "-4": write '
-                                 'the number without quotes (-4)')
+    assert str(caught.value) == (
+        'argument vary: initial.spin has the quoted string "-4": write ' "the number without quotes (-4)"
+    )
     # So is a word where the base has a number (a unit written in), in the scene's words.
     with pytest.raises(ValueError) as caught:
         rb.sweep(base, {"initial.spin": ["5 rad/s", 4]}, duration=0.1, jobs=1)
-    assert str(caught.value) == ('argument vary: initial.spin must be a number, not the quoted '
-                                 'string "5 rad/s"')
+    assert str(caught.value) == (
+        "argument vary: initial.spin must be a number, not the quoted " 'string "5 rad/s"'
+    )
     # A value no scene can take refuses its row, named as the argument's (a file's names its line).
     table = rb.sweep(base, {"body.mass": [-1, 0.059]}, duration=0.1, jobs=1)
     assert list(table["status"]) == ["refused", "ok"]

@@ -13,8 +13,9 @@ def test_the_tour_runs_and_shows_its_plot_and_still(tmp_path):
     (tmp_path / "scenes").symlink_to(SOURCE / "scenes")
     shutil.copy(SOURCE / "examples" / "tour.ipynb", tmp_path / "tour.ipynb")
     nb = nbformat.read(tmp_path / "tour.ipynb", as_version=4)
-    NotebookClient(nb, timeout=300, kernel_name="python3",
-                   resources={"metadata": {"path": str(tmp_path)}}).execute()
+    NotebookClient(
+        nb, timeout=300, kernel_name="python3", resources={"metadata": {"path": str(tmp_path)}}
+    ).execute()
     outputs = [o for cell in nb.cells if cell.cell_type == "code" for o in cell.outputs]
     assert not [o for o in outputs if o.output_type == "error"]
     pngs = [o for o in outputs if "image/png" in o.get("data", {})]

@@ -36,8 +36,17 @@ def test_the_csv_is_the_command_lines_text(tmp_path, name, duration, rate):
     theirs = tmp_path / "cli.csv"
     run = rb.simulate(scene_path(name), duration=duration, rate=rate)
     run.to_csv(ours)
-    cli("simulate", scene_path(name), "--duration", str(duration), "--rate", str(rate), "-q",
-        "-o", str(theirs))
+    cli(
+        "simulate",
+        scene_path(name),
+        "--duration",
+        str(duration),
+        "--rate",
+        str(rate),
+        "-q",
+        "-o",
+        str(theirs),
+    )
     assert ours.read_text() == theirs.read_text()
     a, b = sidecars_without_wall_time(tmp_path)
     assert a == b
@@ -50,8 +59,19 @@ def test_values_put_in_are_the_command_lines_set(tmp_path):
     ours, theirs = tmp_path / "py.csv", tmp_path / "cli.csv"
     scene = rb.Scene.from_file(scene_path("rattleback.yaml")).with_values({"body.paraboloid.a": 1.2})
     rb.simulate(scene, duration=0.3, rate=100).to_csv(ours)
-    cli("simulate", scene_path("rattleback.yaml"), "--set", "body.paraboloid.a=1.2", "--duration",
-        "0.3", "--rate", "100", "-q", "-o", str(theirs))
+    cli(
+        "simulate",
+        scene_path("rattleback.yaml"),
+        "--set",
+        "body.paraboloid.a=1.2",
+        "--duration",
+        "0.3",
+        "--rate",
+        "100",
+        "-q",
+        "-o",
+        str(theirs),
+    )
     assert ours.read_text() == theirs.read_text()
     a, b = sidecars_without_wall_time(tmp_path)
     assert a == b
@@ -72,6 +92,7 @@ def test_the_sidecar_fingerprints_the_scene_as_it_was_read(tmp_path):
 
     def fingerprint(name):
         return json.loads((tmp_path / f"{name}.csv.json").read_text())["scene_fingerprint"]
+
     assert fingerprint("after") == fingerprint("before")
     assert fingerprint("edited") != fingerprint("before")
 
@@ -131,8 +152,7 @@ def test_a_still_is_the_command_lines_png(tmp_path, default_scene):
     image = rb.still(default_scene, 1.0, size=(320, 180))
     assert image.array.shape == (180, 320, 3) and image.array.dtype == np.uint8
     image.save(tmp_path / "py.png")
-    cli("still", default_scene, "--t", "1", "--size", "320x180", "-q", "-o",
-        str(tmp_path / "cli.png"))
+    cli("still", default_scene, "--t", "1", "--size", "320x180", "-q", "-o", str(tmp_path / "cli.png"))
     assert (tmp_path / "py.png").read_bytes() == (tmp_path / "cli.png").read_bytes()
     assert image._repr_png_() == (tmp_path / "cli.png").read_bytes()
     clear = rb.still(default_scene, 0.0, size=(64, 64), transparent=True)
@@ -140,14 +160,24 @@ def test_a_still_is_the_command_lines_png(tmp_path, default_scene):
     assert clear.array[0, 0, 3] == 0  # no background where there is no body
 
 
-def test_a_frame_is_the_command_lines_and_says_when_the_body_leaves_it(tmp_path, default_scene,
-                                                                      recwarn):
+def test_a_frame_is_the_command_lines_and_says_when_the_body_leaves_it(tmp_path, default_scene, recwarn):
     """frame= is --frame: the same picture; a frame too short for the body warns of it, as the
     command line does, pointing at the caller's line."""
     image = rb.still(default_scene, 1.0, size=(320, 180), frame=60)
     image.save(tmp_path / "py.png")
-    cli("still", default_scene, "--t", "1", "--size", "320x180", "--frame", "60", "-q", "-o",
-        str(tmp_path / "cli.png"))
+    cli(
+        "still",
+        default_scene,
+        "--t",
+        "1",
+        "--size",
+        "320x180",
+        "--frame",
+        "60",
+        "-q",
+        "-o",
+        str(tmp_path / "cli.png"),
+    )
     assert (tmp_path / "py.png").read_bytes() == (tmp_path / "cli.png").read_bytes()
     assert not [w for w in recwarn if issubclass(w.category, rb.RunWarning)]
     assert image.array.tobytes() != rb.still(default_scene, 1.0, size=(320, 180)).array.tobytes()
@@ -158,8 +188,7 @@ def test_a_frame_is_the_command_lines_and_says_when_the_body_leaves_it(tmp_path,
 
 
 def test_render_writes_the_videos_the_command_line_names(tmp_path, default_scene):
-    files = rb.render(default_scene, tmp_path / "v", both=True, duration=1.0, size=(160, 96),
-                      fps=10)
+    files = rb.render(default_scene, tmp_path / "v", both=True, duration=1.0, size=(160, 96), fps=10)
     names = sorted(f["path"].rsplit("/", 1)[1] for f in files)
     assert names == ["v-both.mp4", "v-preferred.mp4", "v-reversed.mp4"]
     for f in files:
@@ -172,14 +201,18 @@ def test_render_writes_the_videos_the_command_line_names(tmp_path, default_scene
 
 def default_sweep(path, axes, duration):
     """A sweep file at `path` of the default scene along `axes` (its vary: lines)."""
-    path.write_text(f"base: {scene_path('rattleback.yaml')}\nvary:\n"
-                    + "".join(f"  {axis}\n" for axis in axes) + f"duration: {duration}\n")
+    path.write_text(
+        f"base: {scene_path('rattleback.yaml')}\nvary:\n"
+        + "".join(f"  {axis}\n" for axis in axes)
+        + f"duration: {duration}\n"
+    )
     return path
 
 
 def test_a_sweep_has_the_command_lines_rows(tmp_path):
-    sweep = default_sweep(tmp_path / "s.yaml",
-                          ["initial.spin: [-5, 5]", "contact.air_drag: [0.0, 5.9e-5]"], 3)
+    sweep = default_sweep(
+        tmp_path / "s.yaml", ["initial.spin: [-5, 5]", "contact.air_drag: [0.0, 5.9e-5]"], 3
+    )
     table = rb.sweep(sweep, jobs=2)
     table.to_csv(tmp_path / "py.csv")
     cli("sweep", str(sweep), "-q", "-o", str(tmp_path / "cli.csv"))
@@ -194,19 +227,31 @@ def test_a_sweep_has_the_command_lines_rows(tmp_path):
 
 
 def test_a_sweep_made_in_python_has_the_sweep_files_rows(tmp_path):
-    sweep = default_sweep(tmp_path / "s.yaml", ["initial.spin: {from: -6, to: -2, count: 3}",
-                                                "contact.air_drag: [0.0, 5.9e-5]"], 3)
+    sweep = default_sweep(
+        tmp_path / "s.yaml",
+        ["initial.spin: {from: -6, to: -2, count: 3}", "contact.air_drag: [0.0, 5.9e-5]"],
+        3,
+    )
     cli("sweep", str(sweep), "-q", "-o", str(tmp_path / "cli.csv"))
-    table = rb.sweep(scene_path("rattleback.yaml"),
-                     {"initial.spin": {"from": -6, "to": -2, "count": 3},
-                      "contact.air_drag": np.array([0.0, 5.9e-5])}, duration=3, jobs=2)
+    table = rb.sweep(
+        scene_path("rattleback.yaml"),
+        {"initial.spin": {"from": -6, "to": -2, "count": 3}, "contact.air_drag": np.array([0.0, 5.9e-5])},
+        duration=3,
+        jobs=2,
+    )
     table.to_csv(tmp_path / "py.csv")
 
     def rows(path):
         with open(path, newline="") as f:
             # The axes' values as numbers: Python writes 5.9e-5 as JSON does, 5.9e-05.
-            return [{k: float(v) if k in ("initial.spin", "contact.air_drag") else v
-                     for k, v in r.items() if k != "wall_s"} for r in csv.DictReader(f)]
+            return [
+                {
+                    k: float(v) if k in ("initial.spin", "contact.air_drag") else v
+                    for k, v in r.items()
+                    if k != "wall_s"
+                }
+                for r in csv.DictReader(f)
+            ]
 
     assert rows(tmp_path / "py.csv") == rows(tmp_path / "cli.csv")
     assert repr(table) == "<SweepTable rattleback-sweep: 6 runs, 6 ok>"
@@ -216,8 +261,9 @@ def test_a_sweep_made_in_python_has_the_sweep_files_rows(tmp_path):
 
 def test_a_swept_array_of_whole_numbers_is_written_as_a_sweep_files(tmp_path):
     # np.linspace gives -6.0, which the table wrote "-6.0" where the file's -6 is "-6".
-    table = rb.sweep(scene_path("rattleback.yaml"), {"initial.spin": np.linspace(-6, -5, 3)},
-                     duration=0.1, jobs=1)
+    table = rb.sweep(
+        scene_path("rattleback.yaml"), {"initial.spin": np.linspace(-6, -5, 3)}, duration=0.1, jobs=1
+    )
     table.to_csv(tmp_path / "w.csv")
     with open(tmp_path / "w.csv", newline="") as f:
         assert [r["initial.spin"] for r in csv.DictReader(f)] == ["-6", "-5.5", "-5"]
@@ -227,11 +273,14 @@ def test_a_sweep_of_a_scene_with_values_starts_from_those_values():
     changed = rb.Scene.from_file(scene_path("rattleback.yaml")).with_values({"initial.spin": -4})
     table = rb.sweep(changed, {"contact.air_drag": [0.0, 5.9e-5]}, duration=2, jobs=1)
     # The same runs with the value as an axis of one value: the base's value went into each row.
-    axis = rb.sweep(scene_path("rattleback.yaml"),
-                    {"initial.spin": [-4], "contact.air_drag": [0.0, 5.9e-5]}, duration=2, jobs=1)
+    axis = rb.sweep(
+        scene_path("rattleback.yaml"),
+        {"initial.spin": [-4], "contact.air_drag": [0.0, 5.9e-5]},
+        duration=2,
+        jobs=1,
+    )
     assert list(table["final_spin"]) == list(axis["final_spin"])
-    plain = rb.sweep(scene_path("rattleback.yaml"), {"contact.air_drag": [0.0]}, duration=2,
-                     jobs=1)
+    plain = rb.sweep(scene_path("rattleback.yaml"), {"contact.air_drag": [0.0]}, duration=2, jobs=1)
     assert plain["final_spin"][0] != table["final_spin"][0]  # -5 rad/s, not -4
 
 
@@ -299,8 +348,9 @@ def test_the_attitude_quaternion_is_unit_and_gives_the_tilt(default_scene):
     np.testing.assert_allclose(tilt, run.tilt_deg, atol=1e-9)
     # The yaw rate of the quaternion is the spin: d/dt of the heading of the body's x axis
     # (R e_x projected on the floor) follows n, here within 1 % over the first second.
-    heading = np.unwrap(np.arctan2(2 * (run.qx * run.qy + run.qw * run.qz),
-                                   1 - 2 * (run.qy**2 + run.qz**2)))
+    heading = np.unwrap(
+        np.arctan2(2 * (run.qx * run.qy + run.qw * run.qz), 1 - 2 * (run.qy**2 + run.qz**2))
+    )
     rate = np.gradient(heading, run.t)
     first = run.t < 1
     # (1 %: the heading of the tilted x axis turns at n only to first order in the 0.7° tilt, and
@@ -316,23 +366,46 @@ def test_the_attitude_quaternion_is_unit_and_gives_the_tilt(default_scene):
 def test_python_lists_its_csv_in_the_folders_manifest(tmp_path, default_scene):
     rb.simulate(default_scene, duration=0.2).to_csv(tmp_path / "mine.csv")
     outputs = json.loads((tmp_path / "rattleback-manifest.json").read_text())["outputs"]
-    assert outputs == [{"file": "mine.csv", "kind": "telemetry", "scene": "rattleback", "role": "",
-                        "spin": None, "t": None}]
+    assert outputs == [
+        {"file": "mine.csv", "kind": "telemetry", "scene": "rattleback", "role": "", "spin": None, "t": None}
+    ]
 
 
 def test_a_saved_still_is_listed_as_the_command_lines_still(tmp_path, default_scene):
     # It was not listed at all: the report put it under "other figures", captioned with its file
     # name, not under Stills with its view, time and spin.
     rb.still(default_scene, 0.5, view="above", spin=-4, size=(64, 48)).save(tmp_path / "py.png")
-    cli("still", default_scene, "--t", "0.5", "--view", "above", "--spin", "-4", "--size",
-        "64x48", "-q", "-o", str(tmp_path / "cli.png"))
+    cli(
+        "still",
+        default_scene,
+        "--t",
+        "0.5",
+        "--view",
+        "above",
+        "--spin",
+        "-4",
+        "--size",
+        "64x48",
+        "-q",
+        "-o",
+        str(tmp_path / "cli.png"),
+    )
     outputs = json.loads((tmp_path / "rattleback-manifest.json").read_text())["outputs"]
     by_file = {entry.pop("file"): entry for entry in outputs}
     # made_from: the scene drawn (its content and values), the same from both.
     assert len(by_file["py.png"]["made_from"]) == 16
-    assert by_file["py.png"] == by_file["cli.png"] == {
-        "kind": "still", "scene": "rattleback", "role": "above", "spin": -4.0, "t": 0.5,
-        "made_from": by_file["cli.png"]["made_from"]}
+    assert (
+        by_file["py.png"]
+        == by_file["cli.png"]
+        == {
+            "kind": "still",
+            "scene": "rattleback",
+            "role": "above",
+            "spin": -4.0,
+            "t": 0.5,
+            "made_from": by_file["cli.png"]["made_from"],
+        }
+    )
     # An image made from an array is no still of a scene: saved, it is not listed.
     rb.Image(np.zeros((48, 64, 3), np.uint8)).save(tmp_path / "drawn.png")
     outputs = json.loads((tmp_path / "rattleback-manifest.json").read_text())["outputs"]
@@ -344,8 +417,16 @@ def test_check_is_the_command_lines_check(tmp_path, default_scene):
     sidecar."""
     run = rb.simulate(scene_path("kane-levinson.yaml"), duration=3.0, check=True)
     run.to_csv(tmp_path / "py.csv")
-    cli("simulate", scene_path("kane-levinson.yaml"), "--duration", "3", "--check", "-q",
-        "-o", str(tmp_path / "cli.csv"))
+    cli(
+        "simulate",
+        scene_path("kane-levinson.yaml"),
+        "--duration",
+        "3",
+        "--check",
+        "-q",
+        "-o",
+        str(tmp_path / "cli.csv"),
+    )
     ours = json.loads((tmp_path / "py.csv.json").read_text())["check"]
     theirs = json.loads((tmp_path / "cli.csv.json").read_text())["check"]
     for side in (ours, theirs):
@@ -402,8 +483,8 @@ def test_a_sweep_tables_arrays_are_read_only(tmp_path):
     frame["initial.spin"] *= 2  # the frame is the caller's
     assert table["initial.spin"][0] == first
 
-def test_a_shipped_scene_is_found_from_any_folder_as_the_command_line_finds_it(tmp_path,
-                                                                              monkeypatch):
+
+def test_a_shipped_scene_is_found_from_any_folder_as_the_command_line_finds_it(tmp_path, monkeypatch):
     """`rb.simulate("scenes/rattleback.yaml")` from another folder said "cannot open the scene
     file", while `rattleback simulate scenes/rattleback.yaml` there found the installed copy
     (tasks::findShipped). The installed assets folder is stood for by one holding the build
@@ -425,8 +506,7 @@ def test_a_shipped_scene_is_found_from_any_folder_as_the_command_line_finds_it(t
     assert scene.name == shipped  # named as the command line names it, by the file it read
     run = rb.simulate("scenes/rattleback.yaml", duration=0.2, rate=100)
     run.to_csv("py.csv")
-    cli("simulate", "scenes/rattleback.yaml", "--duration", "0.2", "--rate", "100", "-q", "-o",
-        "cli.csv")
+    cli("simulate", "scenes/rattleback.yaml", "--duration", "0.2", "--rate", "100", "-q", "-o", "cli.csv")
     assert Path("py.csv").read_text() == Path("cli.csv").read_text()
     a, b = sidecars_without_wall_time(elsewhere)
     assert a == b and a["scene_path"] == shipped
@@ -470,7 +550,10 @@ def test_a_scene_with_no_file_gets_a_default_name_of_a_file(tmp_path, monkeypatc
         [video] = rb.render(scene, duration=0.2, size=(64, 48), fps=10)
         assert video["path"] == ("out/mine.mp4" if scene.name == "mine.yaml" else "out/scene.mp4")
     both = rb.render(rb.Scene.from_yaml(text), both=True, duration=0.2, size=(64, 48), fps=10)
-    assert sorted(f["path"] for f in both) == ["out/scene-both.mp4", "out/scene-preferred.mp4",
-                                               "out/scene-reversed.mp4"]
+    assert sorted(f["path"] for f in both) == [
+        "out/scene-both.mp4",
+        "out/scene-preferred.mp4",
+        "out/scene-reversed.mp4",
+    ]
     listed = json.loads((tmp_path / "out" / "rattleback-manifest.json").read_text())
     assert "<yaml>" not in json.dumps(listed)

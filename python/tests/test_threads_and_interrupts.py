@@ -80,8 +80,9 @@ def ctrl_c(script: str, args: list, after: float) -> tuple[str, float]:
     """Runs `script` in a child Python that prints "started", sends it SIGINT `after` seconds
     later, and returns what it printed next and when the signal was sent; the child must exit
     42 (its KeyboardInterrupt caught)."""
-    child = subprocess.Popen([sys.executable, "-c", script, *args],
-                             stdout=subprocess.PIPE, text=True, env=os.environ.copy())
+    child = subprocess.Popen(
+        [sys.executable, "-c", script, *args], stdout=subprocess.PIPE, text=True, env=os.environ.copy()
+    )
     # The child says it has started (or dies: then there is nothing to wait for).
     ready, _, _ = select.select([child.stdout], [], [], 30)
     if not ready:
@@ -149,9 +150,12 @@ def test_ctrl_c_in_to_csv_stops_the_writing(tmp_path):
     (after a pause, so that the writer waits on the pipe as a slow disk would make it)."""
     fifo = tmp_path / "t.csv"
     os.mkfifo(fifo)
-    child = subprocess.Popen([sys.executable, "-c", TO_CSV_CHILD, str(fifo),
-                              scene_path("rattleback.yaml")],
-                             stdout=subprocess.PIPE, text=True, env=os.environ.copy())
+    child = subprocess.Popen(
+        [sys.executable, "-c", TO_CSV_CHILD, str(fifo), scene_path("rattleback.yaml")],
+        stdout=subprocess.PIPE,
+        text=True,
+        env=os.environ.copy(),
+    )
     try:
         ready, _, _ = select.select([child.stdout], [], [], 30)
         assert ready and child.stdout.readline().strip() == "started", "the child could not start"
@@ -240,10 +244,14 @@ def test_scenes_go_to_worker_processes_and_come_back_the_same(tmp_path):
     'rattleback._core.LoadedScene' object"."""
     import multiprocessing
     import pickle
+
     base = rb.Scene.from_file(scene_path("rattleback.yaml"))
-    scenes = [base, base.with_values({"initial.spin": 5}),
-              rb.Scene.from_yaml(base.yaml, name="mine.yaml"),
-              rb.Scene.from_dict(DICT_SCENE)]
+    scenes = [
+        base,
+        base.with_values({"initial.spin": 5}),
+        rb.Scene.from_yaml(base.yaml, name="mine.yaml"),
+        rb.Scene.from_dict(DICT_SCENE),
+    ]
     for scene in scenes:
         back = pickle.loads(pickle.dumps(scene))
         assert (back.name, back.values, back.yaml) == (scene.name, scene.values, scene.yaml)
@@ -264,8 +272,9 @@ def _same_runs(a, b, tmp_path):
     a.to_csv(tmp_path / "a.csv")
     b.to_csv(tmp_path / "b.csv")
     for suffix in ("", ".json"):
-        assert (tmp_path / ("a.csv" + suffix)).read_bytes() == \
-            (tmp_path / ("b.csv" + suffix)).read_bytes(), suffix
+        assert (tmp_path / ("a.csv" + suffix)).read_bytes() == (
+            tmp_path / ("b.csv" + suffix)
+        ).read_bytes(), suffix
 
 
 def test_a_run_pickles_exactly_and_comes_back_from_a_worker(tmp_path):
@@ -275,6 +284,7 @@ def test_a_run_pickles_exactly_and_comes_back_from_a_worker(tmp_path):
     import copy
     import multiprocessing
     import pickle
+
     run = rb.simulate(scene_path("rattleback.yaml"), duration=0.5, check=True)
     assert run.check is not None
     back = pickle.loads(pickle.dumps(run))
@@ -316,9 +326,13 @@ def test_a_script_that_ends_with_a_run_in_a_daemon_thread_exits_cleanly(tmp_path
     """A daemon thread's run still going when the script ends is left to the process's exit,
     as Python's own daemon threads are (not std::terminate, exit 134, as when the run took the
     GIL to look for signals after the interpreter began to exit)."""
-    done = subprocess.run([sys.executable, "-c", DAEMON, what, scene_path("rattleback.yaml"),
-                           str(tmp_path / "v.mp4")], capture_output=True, text=True,
-                          timeout=60, env=os.environ.copy())
+    done = subprocess.run(
+        [sys.executable, "-c", DAEMON, what, scene_path("rattleback.yaml"), str(tmp_path / "v.mp4")],
+        capture_output=True,
+        text=True,
+        timeout=60,
+        env=os.environ.copy(),
+    )
     assert done.returncode == 0, done.stderr
     assert done.stdout == "main done\n"
     assert "terminate" not in done.stderr

@@ -9,9 +9,16 @@ from conftest import scene_path
 
 # The default body on a slippery smooth floor, spun hard: its centre of mass slides ~10 cm in
 # 4 s (in `above` it would run off the frame, in `front` it was cut at the edge).
-SLIDING = {"contact.model": "smooth", "contact.stiffness": 2e4, "contact.damping": 4,
-           "contact.friction": 0.02, "initial.spin": -50, "simulation.integrator": "symplectic",
-           "simulation.dt": 2e-5, "simulation.duration": 4}
+SLIDING = {
+    "contact.model": "smooth",
+    "contact.stiffness": 2e4,
+    "contact.damping": 4,
+    "contact.friction": 0.02,
+    "initial.spin": -50,
+    "simulation.integrator": "symplectic",
+    "simulation.dt": 2e-5,
+    "simulation.duration": 4,
+}
 
 
 def body_pixels(image: np.ndarray) -> np.ndarray:

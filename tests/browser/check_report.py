@@ -34,10 +34,18 @@ def main():
     options = webdriver.ChromeOptions()
     options.binary_location = CHROMIUM
     profile = tempfile.mkdtemp(prefix="rattleback-chromium-")
-    for flag in ["--headless=new", "--no-sandbox", "--disable-gpu", "--disable-quic",
-                 "--no-first-run", "--disable-background-networking",
-                 "--disable-component-update", "--disable-sync",
-                 "--autoplay-policy=no-user-gesture-required", f"--user-data-dir={profile}"]:
+    for flag in [
+        "--headless=new",
+        "--no-sandbox",
+        "--disable-gpu",
+        "--disable-quic",
+        "--no-first-run",
+        "--disable-background-networking",
+        "--disable-component-update",
+        "--disable-sync",
+        "--autoplay-policy=no-user-gesture-required",
+        f"--user-data-dir={profile}",
+    ]:
         options.add_argument(flag)
     options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
     driver = webdriver.Chrome(service=Service(DRIVER), options=options)
@@ -47,19 +55,22 @@ def main():
         driver.get((folder / "index.html").as_uri())
         # Images: every one decoded.
         images = driver.execute_script(
-            "return Array.from(document.images).map(i => [i.getAttribute('src'), i.complete, i.naturalWidth]);")
+            "return Array.from(document.images).map(i => [i.getAttribute('src'), i.complete, i.naturalWidth]);"
+        )
         deadline = time.time() + 20
         while any(not done for _, done, _ in images) and time.time() < deadline:
             time.sleep(0.2)
             images = driver.execute_script(
-                "return Array.from(document.images).map(i => [i.getAttribute('src'), i.complete, i.naturalWidth]);")
+                "return Array.from(document.images).map(i => [i.getAttribute('src'), i.complete, i.naturalWidth]);"
+            )
         if not images:
             failures.append("the page has no images")
         for src, done, width in images:
             if not done or width <= 0:
                 failures.append(f"image {src} does not decode (naturalWidth {width})")
         # Videos: loaded, the right duration, and playing moves them on.
-        results = driver.execute_async_script("""
+        results = driver.execute_async_script(
+            """
             const done = arguments[arguments.length - 1];
             const videos = Array.from(document.querySelectorAll('video'));
             const one = v => new Promise(resolve => {
@@ -78,7 +89,8 @@ def main():
               setTimeout(() => report({timeout: true}), 20000);
             });
             Promise.all(videos.map(one)).then(done);
-        """)
+        """
+        )
         if not results:
             failures.append("the page has no videos")
         for r in results:
@@ -96,9 +108,11 @@ def main():
                 failures.append(f"video {name}: currentTime did not advance ({r['before']} -> {r['after']})")
         # Nothing drawn larger than it is: a 320 × 180 video or still keeps its own size on a
         # wide page (blown up, its pixels blur), and a large one shrinks to fit.
-        sizes = driver.execute_script("""
+        sizes = driver.execute_script(
+            """
             return Array.from(document.querySelectorAll('img, video')).map(e =>
-                [e.getAttribute('src'), e.clientWidth, e.naturalWidth || e.videoWidth || 0]);""")
+                [e.getAttribute('src'), e.clientWidth, e.naturalWidth || e.videoWidth || 0]);"""
+        )
         for src, shown, natural in sizes:
             if natural > 0 and shown > natural + 1:
                 failures.append(f"{src} is drawn {shown} px wide, larger than its own {natural} px")

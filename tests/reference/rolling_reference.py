@@ -49,10 +49,14 @@ def mat_vec(m, v):
 
 def solve3(m, b):
     """Cramer's rule for a 3x3 system."""
+
     def det(a):
-        return (a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1])
-                - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0])
-                + a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]))
+        return (
+            a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1])
+            - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0])
+            + a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0])
+        )
+
     d = det(m)
     out = []
     for col in range(3):
@@ -69,8 +73,9 @@ def contact(gamma):
     s = math.sqrt(dot(gamma, a2g))
     r = tuple(CENTRE[i] - a2g[i] / s for i in range(3))
     # d(a2g/s)/dgamma = diag(A2)/s - a2g a2g^T / s^3
-    jac = tuple(tuple((A2[i] if i == j else 0.0) / s - a2g[i] * a2g[j] / s ** 3 for j in range(3))
-                for i in range(3))
+    jac = tuple(
+        tuple((A2[i] if i == j else 0.0) / s - a2g[i] * a2g[j] / s**3 for j in range(3)) for i in range(3)
+    )
     dr = tuple(tuple(-jac[i][j] for j in range(3)) for i in range(3))
     return r, dr
 
@@ -82,11 +87,12 @@ def rates(state):
     r_rate = mat_vec(dr, gamma_rate)
     iw = mat_vec(INERTIA, w)
     r2 = dot(r, r)
-    a = tuple(tuple(INERTIA[i][j] + MASS * ((r2 if i == j else 0.0) - r[i] * r[j]) for j in range(3))
-              for i in range(3))
+    a = tuple(
+        tuple(INERTIA[i][j] + MASS * ((r2 if i == j else 0.0) - r[i] * r[j]) for j in range(3))
+        for i in range(3)
+    )
     terms = (cross(r, cross(r_rate, w)), cross(r, cross(w, cross(r, w))), cross(r, gamma))
-    rhs = [-cross(w, iw)[i] + MASS * (terms[0][i] + terms[1][i] + G * terms[2][i])
-           for i in range(3)]
+    rhs = [-cross(w, iw)[i] + MASS * (terms[0][i] + terms[1][i] + G * terms[2][i]) for i in range(3)]
     w_rate = solve3(a, rhs)
     return gamma_rate + w_rate
 
@@ -127,8 +133,12 @@ def crossing(state, new, h, sign):
     lo, hi = 0.0, 1.0
     for _ in range(60):
         s = 0.5 * (lo + hi)
-        value = ((2 * s ** 3 - 3 * s ** 2 + 1) * n0 + (s ** 3 - 2 * s ** 2 + s) * d0
-                 + (-2 * s ** 3 + 3 * s ** 2) * n1 + (s ** 3 - s ** 2) * d1)
+        value = (
+            (2 * s**3 - 3 * s**2 + 1) * n0
+            + (s**3 - 2 * s**2 + s) * d0
+            + (-2 * s**3 + 3 * s**2) * n1
+            + (s**3 - s**2) * d1
+        )
         if value * sign > 0:
             lo = s
         else:

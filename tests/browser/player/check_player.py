@@ -167,7 +167,8 @@ const read = () => {
 # points where the footprint ends (ρ = 1: 3 % darker, the shadow fading out by ρ = 1.15). The
 # shadow is a quad of its own around the body (player.js): placed or turned wrongly, it clips the
 # ellipse and some of the four points are not darkened.
-SHADOW_JS = """
+SHADOW_JS = (
+    """
 const element = arguments[0];
 const p = window.RattlebackPlayer.players.find((q) => q.container === element);
 const h = element.rbPlayer;
@@ -183,7 +184,9 @@ for (let k = 0; k < p.n; k += Math.max(1, Math.floor(p.n / 200))) {
 h.setTime(best[0]);
 h.setView('above');
 p.points.visible = false;
-""" + READ_JS + """const strength = u.shadowStrength.value;
+"""
+    + READ_JS
+    + """const strength = u.shadowStrength.value;
 const on = read();
 u.shadowStrength.value = 0;
 const off = read();
@@ -204,18 +207,22 @@ h.setTime(before[0]);
 h.setView(before[1]);
 return result;
 """
+)
 
 # The picture the player draws with its shortcuts (the floor without depth, the points' shader
 # hiding what is below it by the floor plane's depth; the contact shadow alone multiplying the
 # floor) against the one drawn without them (the floor's depth, the floor's formula with the
 # shadow), in each view at the given times: the pixels more than 3 levels apart, the largest
 # difference, and which shortcuts were taken.
-SHORTCUTS_JS = """
+SHORTCUTS_JS = (
+    """
 const element = arguments[0], views = arguments[1], times = arguments[2];
 const p = window.RattlebackPlayer.players.find((q) => q.container === element);
 const h = element.rbPlayer;
 const before = [h.time(), h.view()];
-""" + READ_JS + """const out = [];
+"""
+    + READ_JS
+    + """const out = [];
 for (const view of views) {
   for (const t of times) {
     h.setTime(t);
@@ -241,6 +248,7 @@ h.setTime(before[0]);
 h.setView(before[1]);
 return out;
 """
+)
 
 FRAMES_JS = "const done = arguments[arguments.length - 1]; requestAnimationFrame(() => requestAnimationFrame(() => done(true)));"
 
@@ -269,9 +277,11 @@ def quaternion_error(q, e):
 def rotate(q, v):
     """Rotates vector v by unit quaternion q = [w, x, y, z]."""
     w, x, y, z = q
-    m = [[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-         [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-         [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]]
+    m = [
+        [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+        [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+        [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
+    ]
     return [sum(m[i][k] * v[k] for k in range(3)) for i in range(3)]
 
 
@@ -322,8 +332,10 @@ class Checker:
         self.driver.get((self.folder / name).as_uri())
         deadline = time.time() + 30
         while time.time() < deadline:
-            state = self.js("""return Array.from(document.querySelectorAll('.rb-player')).map(
-                e => [e.getAttribute('data-run'), !!e.rbPlayer, e.rbPlayerError || null]);""")
+            state = self.js(
+                """return Array.from(document.querySelectorAll('.rb-player')).map(
+                e => [e.getAttribute('data-run'), !!e.rbPlayer, e.rbPlayerError || null]);"""
+            )
             if state and all(built or error for _, built, error in state):
                 break
             time.sleep(0.2)
@@ -341,9 +353,13 @@ class Checker:
         return self.js("return window.__rbPixels(arguments[0], arguments[1]);", element, snapshot)
 
     def slider_to(self, element, t):
-        self.js("""const s = arguments[0].querySelector('.rbp-slider');
+        self.js(
+            """const s = arguments[0].querySelector('.rbp-slider');
                    s.value = String(arguments[1]);
-                   s.dispatchEvent(new Event('input', {bubbles: true}));""", element, t)
+                   s.dispatchEvent(new Event('input', {bubbles: true}));""",
+            element,
+            t,
+        )
         self.frames()
 
     # ------------------------------------------------------------------------------------------
@@ -351,9 +367,12 @@ class Checker:
         where = f"run {run_id}"
         self.js("arguments[0].scrollIntoView({block: 'start'});", element)
         self.frames()
-        run = self.js("""const r = window.RATTLEBACK_RUNS[arguments[0]];
+        run = self.js(
+            """const r = window.RATTLEBACK_RUNS[arguments[0]];
             return {t: r.t, x: r.x, y: r.y, z: r.z, qw: r.qw, qx: r.qx, qy: r.qy, qz: r.qz,
-                    spin: r.spin, reversals: r.reversals, reach: r.reach};""", run_id)
+                    spin: r.spin, reversals: r.reversals, reach: r.reach};""",
+            run_id,
+        )
         t = run["t"]
         n = len(t)
         quat = lambda k: [run["qw"][k], run["qx"][k], run["qy"][k], run["qz"][k]]
@@ -369,8 +388,10 @@ class Checker:
                 for row in csv.DictReader(f):
                     rows[round(float(row["t"]), 6)] = row
             if not rows or max(rows) < round(t[-1], 6) or min(rows) > round(t[0], 6):
-                print(f"note: {csv_path.name} does not cover the player's run "
-                      f"[{t[0]}, {t[-1]}]: not compared")
+                print(
+                    f"note: {csv_path.name} does not cover the player's run "
+                    f"[{t[0]}, {t[-1]}]: not compared"
+                )
                 rows = {}
         # The run's (t, n) at the CSV's full rate, for the read-outs.
         series = sorted((float(r["t"]), float(r["spin"])) for r in rows.values())
@@ -394,26 +415,42 @@ class Checker:
         # violet line across the n(t) plot at its time; none otherwise.
         forecast = self.js("return arguments[0].getAttribute('data-forecast');", element)
         forecast = json.loads(forecast) if forecast else None
-        expect = (forecast["time_s"] if forecast and forecast.get("applies") is True
-                  and forecast.get("range") != "outside" and isinstance(forecast.get("time_s"), (int, float))
-                  and t[0] <= forecast["time_s"] <= t[-1] else None)
+        expect = (
+            forecast["time_s"]
+            if forecast
+            and forecast.get("applies") is True
+            and forecast.get("range") != "outside"
+            and isinstance(forecast.get("time_s"), (int, float))
+            and t[0] <= forecast["time_s"] <= t[-1]
+            else None
+        )
         got = self.hook(element, "forecast()")
-        self.check(got == expect, f"{where}: the plot's forecast is {got}, not {expect} (data-forecast {forecast})")
+        self.check(
+            got == expect, f"{where}: the plot's forecast is {got}, not {expect} (data-forecast {forecast})"
+        )
         plot = self.js(PLOT_JS, element, self.hook(element, "forecastX()"))
         if expect is None:
-            self.check(plot["all"] == 0, f"{where}: no forecast, yet {plot['all']} violet pixels on the n(t) plot")
+            self.check(
+                plot["all"] == 0, f"{where}: no forecast, yet {plot['all']} violet pixels on the n(t) plot"
+            )
         else:
             # the line spans the plot box (130 − 28 px tall at 1 px per CSS px)
-            self.check(plot["column"] >= 0.6 * plot["height"],
-                       f"{where}: the forecast line at t = {expect:.3f} s has {plot['column']} violet pixels "
-                       f"in its column of the n(t) plot ({plot['height']} tall)")
-            self.check(plot["all"] > plot["column"] + 20,
-                       f"{where}: the forecast line has no label ({plot['all'] - plot['column']} violet pixels beside it)")
+            self.check(
+                plot["column"] >= 0.6 * plot["height"],
+                f"{where}: the forecast line at t = {expect:.3f} s has {plot['column']} violet pixels "
+                f"in its column of the n(t) plot ({plot['height']} tall)",
+            )
+            self.check(
+                plot["all"] > plot["column"] + 20,
+                f"{where}: the forecast line has no label ({plot['all'] - plot['column']} violet pixels beside it)",
+            )
             # the cursor's line runs below the label: near the reversal it covered it (a
             # teacher's trial)
-            self.check(plot["cursorTop"] > plot["labelBottom"],
-                       f"{where}: the plot's cursor starts at device row {plot['cursorTop']:.0f}, over "
-                       f"the forecast's label (down to row {plot['labelBottom']})")
+            self.check(
+                plot["cursorTop"] > plot["labelBottom"],
+                f"{where}: the plot's cursor starts at device row {plot['cursorTop']:.0f}, over "
+                f"the forecast's label (down to row {plot['labelBottom']})",
+            )
 
         # Colours where the body is, from the side at the start: red top and blue bottom.
         self.hook(element, "setTime(arguments[1])", t[0])
@@ -424,23 +461,35 @@ class Checker:
         self.check(px["blue"] > 100, f"{where}: side view shows {px['blue']} blue pixels")
         cm = self.hook(element, "project(arguments[1])", self.hook(element, "position()"))
         box = px["box"]
-        self.check(box[0] - 2 <= cm[0] <= box[2] + 2 and box[1] - 2 <= cm[1] <= box[3] + 2,
-                   f"{where}: the coloured pixels {box} do not surround the body's centre {cm}")
-        self.check(px["nonBackground"] > 0.2 * px["total"],
-                   f"{where}: the floor is not visible ({px['nonBackground']} of {px['total']} pixels)")
+        self.check(
+            box[0] - 2 <= cm[0] <= box[2] + 2 and box[1] - 2 <= cm[1] <= box[3] + 2,
+            f"{where}: the coloured pixels {box} do not surround the body's centre {cm}",
+        )
+        self.check(
+            px["nonBackground"] > 0.2 * px["total"],
+            f"{where}: the floor is not visible ({px['nonBackground']} of {px['total']} pixels)",
+        )
         self.click_view(element, "above")
         self.frames()
         px = self.pixels(element)
-        self.check(px["red"] > 100 and px["red"] > 3 * px["blue"],
-                   f"{where}: from above the top should be red: {px['red']} red, {px['blue']} blue")
+        self.check(
+            px["red"] > 100 and px["red"] > 3 * px["blue"],
+            f"{where}: from above the top should be red: {px['red']} red, {px['blue']} blue",
+        )
 
         # The contact shadow: under the body and as wide as its footprint (SHADOW_JS).
         shadow = self.js(SHADOW_JS, element)
-        self.check(shadow["centre"] > 40, f"{where}: the contact shadow darkens the floor under the body's "
-                                          f"centre by {shadow['centre']:.1f} levels (t = {shadow['t']:.2f} s)")
-        self.check(min(shadow["ends"]) >= 2, f"{where}: where the footprint ends (long axis at "
-                   f"{shadow['angle']:.0f}°, t = {shadow['t']:.2f} s) the contact shadow darkens the floor "
-                   f"by {[round(v, 1) for v in shadow['ends']]} levels")
+        self.check(
+            shadow["centre"] > 40,
+            f"{where}: the contact shadow darkens the floor under the body's "
+            f"centre by {shadow['centre']:.1f} levels (t = {shadow['t']:.2f} s)",
+        )
+        self.check(
+            min(shadow["ends"]) >= 2,
+            f"{where}: where the footprint ends (long axis at "
+            f"{shadow['angle']:.0f}°, t = {shadow['t']:.2f} s) the contact shadow darkens the floor "
+            f"by {[round(v, 1) for v in shadow['ends']]} levels",
+        )
 
         # The slider: poses between samples, as slerp / lerp of the neighbouring samples.
         self.click_view(element, "oblique")
@@ -458,13 +507,19 @@ class Checker:
             expected = slerp(quat(k), quat(k + 1), u)
             got = self.hook(element, "quaternion()")
             err = quaternion_error(got, expected)
-            self.check(err < 1e-6, f"{where}: at t = {got_t} the drawn quaternion {got} is not the slerp "
-                                   f"{expected} of samples {k} and {k + 1} (error {err:.3g})")
+            self.check(
+                err < 1e-6,
+                f"{where}: at t = {got_t} the drawn quaternion {got} is not the slerp "
+                f"{expected} of samples {k} and {k + 1} (error {err:.3g})",
+            )
             expected_p = [a + u * (b - a) for a, b in zip(pos(k), pos(k + 1))]
             got_p = self.hook(element, "position()")
             err_p = max(abs(a - b) for a, b in zip(got_p, expected_p))
-            self.check(err_p < 1e-9, f"{where}: at t = {got_t} the drawn position {got_p} is not "
-                                     f"{expected_p} (error {err_p:.3g})")
+            self.check(
+                err_p < 1e-9,
+                f"{where}: at t = {got_t} the drawn position {got_p} is not "
+                f"{expected_p} (error {err_p:.3g})",
+            )
             # The run's n at got_t, on the straight line between its CSV's samples where there is
             # a CSV (at 500 a second, its full rate), else between the player's poses. Neither
             # line is n between samples: the CSV's misses Kane & Levinson's n, which swings with
@@ -477,27 +532,38 @@ class Checker:
                 w = (got_t - series[c][0]) / (series[c + 1][0] - series[c][0])
                 spin = series[c][1] + w * (series[c + 1][1] - series[c][1])
             shown_t = self.js("return arguments[0].querySelector('.rbp-time').textContent;", element)
-            shown_n = self.js("return arguments[0].querySelector('.rbp-spin').textContent + ' ' + "
-                              "arguments[0].querySelector('.rbp-sense').textContent;", element)
+            shown_n = self.js(
+                "return arguments[0].querySelector('.rbp-spin').textContent + ' ' + "
+                "arguments[0].querySelector('.rbp-sense').textContent;",
+                element,
+            )
             self.check(f"{got_t:.2f} s" in shown_t, f"{where}: at t = {got_t} the read-out says {shown_t!r}")
             said = re.search(r"([+-]) *(\d+\.\d\d) rad/s", shown_n)
             said_n = (-1 if said and said.group(1) == "-" else 1) * float(said.group(2)) if said else math.nan
             # (The read-out rounds to 0.01: half of that, and the interpolation's room.)
-            self.check(abs(said_n - spin) <= 0.005 + room,
-                       f"{where}: at t = {got_t} (n = {spin:+.4f}) the read-out says {shown_n!r}")
+            self.check(
+                abs(said_n - spin) <= 0.005 + room,
+                f"{where}: at t = {got_t} (n = {spin:+.4f}) the read-out says {shown_n!r}",
+            )
             if target in reversals:
                 # n passes 0 there: the read-out rounds to 0.01, and the poses kept replay n
                 # within 0.005 rad/s (tasks::kPlayerSpin). A teacher's trial: the Reversal button
                 # read +0.04 on Kane & Levinson, whose poses at 100 a second missed its n.
-                self.check(abs(said_n) <= 0.01, f"{where}: at the reversal, t = {got_t}, the "
-                                                f"read-out says {shown_n!r}, not ±0.00")
+                self.check(
+                    abs(said_n) <= 0.01,
+                    f"{where}: at the reversal, t = {got_t}, the " f"read-out says {shown_n!r}, not ±0.00",
+                )
             if said and abs(spin) > 0.05 + room:
                 sense = "(counter-clockwise)" if spin > 0 else "(clockwise)"
-                self.check(sense in shown_n, f"{where}: at t = {got_t} (n = {spin:+.4f}) the read-out "
-                                             f"says {shown_n!r}")
+                self.check(
+                    sense in shown_n,
+                    f"{where}: at t = {got_t} (n = {spin:+.4f}) the read-out " f"says {shown_n!r}",
+                )
             px = self.pixels(element, f"{run_id}-slider")
-            self.check(px["changed"] > 50, f"{where}: moving the slider to t = {target:.4f} changed "
-                                           f"{px['changed']} pixels")
+            self.check(
+                px["changed"] > 50,
+                f"{where}: moving the slider to t = {target:.4f} changed " f"{px['changed']} pixels",
+            )
 
         # Play, pause, and the end of the run.
         play = element.find_element(By.CSS_SELECTOR, ".rbp-play")
@@ -510,20 +576,26 @@ class Checker:
         now = self.hook(element, "time()")
         self.check(self.hook(element, "playing()"), f"{where}: the play button does not play")
         self.check(now > start + 0.3, f"{where}: playing for 1 s moved time from {start} to {now}")
-        self.check(self.pixels(element, f"{run_id}-play")["changed"] > 50, f"{where}: playing changed no pixels")
+        self.check(
+            self.pixels(element, f"{run_id}-play")["changed"] > 50, f"{where}: playing changed no pixels"
+        )
         play.click()
         # (A click returns before the page has handled it on a loaded machine: wait for it.)
         self.until(element, "!h.playing()")
         paused = self.hook(element, "time()")
         time.sleep(0.3)
-        self.check(not self.hook(element, "playing()") and self.hook(element, "time()") == paused,
-                   f"{where}: the pause button does not stop time")
+        self.check(
+            not self.hook(element, "playing()") and self.hook(element, "time()") == paused,
+            f"{where}: the pause button does not stop time",
+        )
         self.pause_holds(element, where, run_id)
         # While the camera stays, a frame redraws only the part where the body and its shadow
         # were and are; the picture then must be the one drawn whole.
         partial, drawn = self.hook(element, "drawCounts()")
-        self.check(drawn > 10 and partial > 0.5 * drawn,
-                   f"{where}: only {partial} of {drawn} frames were drawn in part in a fixed view")
+        self.check(
+            drawn > 10 and partial > 0.5 * drawn,
+            f"{where}: only {partial} of {drawn} frames were drawn in part in a fixed view",
+        )
         for view in ["oblique", "side"]:
             self.click_view(element, view)
             self.hook(element, "play()")
@@ -533,45 +605,63 @@ class Checker:
             self.pixels(element, f"{run_id}-part")
             self.hook(element, "renderAll()")
             px = self.pixels(element, f"{run_id}-part")
-            self.check(px["changed"] == 0, f"{where}: after playing in the {view} view, drawing the "
-                                           f"picture whole changed {px['changed']} pixels")
+            self.check(
+                px["changed"] == 0,
+                f"{where}: after playing in the {view} view, drawing the "
+                f"picture whole changed {px['changed']} pixels",
+            )
         self.click_view(element, "oblique")
         self.hook(element, "setTime(arguments[1])", t[-1] - 0.1)
         self.hook(element, "play()")
         time.sleep(0.6)
-        self.check(not self.hook(element, "playing()") and self.hook(element, "time()") == t[-1],
-                   f"{where}: playback does not stop at the end of the run "
-                   f"(playing {self.hook(element, 'playing()')}, t = {self.hook(element, 'time()')})")
+        self.check(
+            not self.hook(element, "playing()") and self.hook(element, "time()") == t[-1],
+            f"{where}: playback does not stop at the end of the run "
+            f"(playing {self.hook(element, 'playing()')}, t = {self.hook(element, 'time()')})",
+        )
         self.hook(element, "pause()")
 
         # The views: each button moves the camera to the renderer's place for it.
         self.hook(element, "setTime(arguments[1])", times[0])
         previous = None
-        expected_dirs = {"oblique": unit([0.75, -0.55, 0.55]), "above": [0, 0, 1],
-                         "front": [0, -math.cos(ELEVATION), math.sin(ELEVATION)],
-                         "side": [math.cos(ELEVATION), 0, math.sin(ELEVATION)]}
+        expected_dirs = {
+            "oblique": unit([0.75, -0.55, 0.55]),
+            "above": [0, 0, 1],
+            "front": [0, -math.cos(ELEVATION), math.sin(ELEVATION)],
+            "side": [math.cos(ELEVATION), 0, math.sin(ELEVATION)],
+        }
         for view in VIEWS:
             self.click_view(element, view)
-            self.check(self.hook(element, "view()") == view, f"{where}: the {view} button gave view "
-                                                             f"{self.hook(element, 'view()')}")
+            self.check(
+                self.hook(element, "view()") == view,
+                f"{where}: the {view} button gave view " f"{self.hook(element, 'view()')}",
+            )
             cam = self.hook(element, "cameraPosition()")
             if previous is not None:
-                self.check(max(abs(a - b) for a, b in zip(cam, previous)) > 1e-4,
-                           f"{where}: the {view} button did not move the camera ({cam})")
+                self.check(
+                    max(abs(a - b) for a, b in zip(cam, previous)) > 1e-4,
+                    f"{where}: the {view} button did not move the camera ({cam})",
+                )
             previous = cam
             if view in expected_dirs:
                 d = unit([a - b for a, b in zip(cam, center)])
                 err = max(abs(a - b) for a, b in zip(d, expected_dirs[view]))
-                self.check(err < 1e-3, f"{where}: the {view} camera looks from {d}, "
-                                       f"expected {expected_dirs[view]}")
+                self.check(
+                    err < 1e-3,
+                    f"{where}: the {view} camera looks from {d}, " f"expected {expected_dirs[view]}",
+                )
             if view == "above":
                 c0 = self.hook(element, "project(arguments[1])", center)
                 cy = self.hook(element, "project(arguments[1])", [center[0], center[1] + 0.01, center[2]])
                 cx = self.hook(element, "project(arguments[1])", [center[0] + 0.01, center[1], center[2]])
-                self.check(cy[0] > c0[0] + 5 and abs(cy[1] - c0[1]) < 1,
-                           f"{where}: from above +y does not point right ({c0} -> {cy})")
-                self.check(cx[1] > c0[1] + 5 and abs(cx[0] - c0[0]) < 1,
-                           f"{where}: from above +x does not point down the screen ({c0} -> {cx})")
+                self.check(
+                    cy[0] > c0[0] + 5 and abs(cy[1] - c0[1]) < 1,
+                    f"{where}: from above +y does not point right ({c0} -> {cy})",
+                )
+                self.check(
+                    cx[1] > c0[1] + 5 and abs(cx[0] - c0[0]) < 1,
+                    f"{where}: from above +x does not point down the screen ({c0} -> {cx})",
+                )
             if view == "follow":
                 follow = []
                 for target in times[:2]:
@@ -582,44 +672,65 @@ class Checker:
                     away = [a - b for a, b in zip(cam, body)]
                     axis = rotate(q, [0, 1, 0])
                     flat = unit([away[0], away[1], 0])
-                    along = abs(flat[0] * axis[0] + flat[1] * axis[1]) / max(1e-12, math.hypot(axis[0], axis[1]))
-                    self.check(along < 1e-3, f"{where}: the follow camera is not across the long axis "
-                                             f"at t = {target} ({along})")
+                    along = abs(flat[0] * axis[0] + flat[1] * axis[1]) / max(
+                        1e-12, math.hypot(axis[0], axis[1])
+                    )
+                    self.check(
+                        along < 1e-3,
+                        f"{where}: the follow camera is not across the long axis "
+                        f"at t = {target} ({along})",
+                    )
                     follow.append((cam, math.sqrt(sum(a * a for a in away))))
-                self.check(max(abs(a - b) for a, b in zip(follow[0][0], follow[1][0])) > 1e-3,
-                           f"{where}: the follow camera does not move with the body")
-                self.check(abs(follow[0][1] - follow[1][1]) < 0.01 * follow[0][1],
-                           f"{where}: the follow camera's distance changes ({follow})")
+                self.check(
+                    max(abs(a - b) for a, b in zip(follow[0][0], follow[1][0])) > 1e-3,
+                    f"{where}: the follow camera does not move with the body",
+                )
+                self.check(
+                    abs(follow[0][1] - follow[1][1]) < 0.01 * follow[0][1],
+                    f"{where}: the follow camera's distance changes ({follow})",
+                )
         # The shortcuts (the floor without depth, the shadow alone) draw the picture drawn
         # without them: a row of a sphere at the contact may differ, where its depth ties the
         # floor's, and the shadow by a level or two (the floor is rounded before it is darkened).
         # In follow both are taken.
         shortcut_times = [times[0], times[-1]]
         for r in self.js(SHORTCUTS_JS, element, VIEWS, shortcut_times):
-            self.check(r["apart"] <= 30, f"{where}: in the {r['view']} view at t = {r['t']:.3f} s the picture "
-                       f"drawn with the shortcuts differs from the one without in {r['apart']} pixels by more "
-                       f"than 3 levels (at most {r['worst']}; floor without depth {r['floorWithoutDepth']}, "
-                       f"shadow alone {r['shadowAlone']})")
+            self.check(
+                r["apart"] <= 30,
+                f"{where}: in the {r['view']} view at t = {r['t']:.3f} s the picture "
+                f"drawn with the shortcuts differs from the one without in {r['apart']} pixels by more "
+                f"than 3 levels (at most {r['worst']}; floor without depth {r['floorWithoutDepth']}, "
+                f"shadow alone {r['shadowAlone']})",
+            )
             if r["view"] == "follow":
-                self.check(r["floorWithoutDepth"] and r["shadowAlone"],
-                           f"{where}: in follow at t = {r['t']:.3f} s a shortcut was not taken ({r})")
+                self.check(
+                    r["floorWithoutDepth"] and r["shadowAlone"],
+                    f"{where}: in follow at t = {r['t']:.3f} s a shortcut was not taken ({r})",
+                )
         # A drag makes the view free and moves the camera.
         self.click_view(element, "oblique")
         before = self.hook(element, "cameraPosition()")
         canvas = element.find_element(By.CSS_SELECTOR, ".rbp-stage canvas")
-        ActionChains(self.driver).move_to_element(canvas).click_and_hold().move_by_offset(80, 30) \
-            .move_by_offset(40, 10).release().perform()
+        ActionChains(self.driver).move_to_element(canvas).click_and_hold().move_by_offset(
+            80, 30
+        ).move_by_offset(40, 10).release().perform()
         after = self.hook(element, "cameraPosition()")
-        self.check(self.hook(element, "view()") == "free", f"{where}: a drag left the view "
-                                                           f"{self.hook(element, 'view()')}, not free")
-        self.check(max(abs(a - b) for a, b in zip(before, after)) > 1e-4, f"{where}: a drag did not move the camera")
+        self.check(
+            self.hook(element, "view()") == "free",
+            f"{where}: a drag left the view " f"{self.hook(element, 'view()')}, not free",
+        )
+        self.check(
+            max(abs(a - b) for a, b in zip(before, after)) > 1e-4, f"{where}: a drag did not move the camera"
+        )
         self.click_view(element, "oblique")
 
         # Keys, with the player focused (a click on its read-outs).
         self.hook(element, "pause()")
         element.find_element(By.CSS_SELECTOR, ".rbp-title").click()
-        self.check(self.js("return arguments[0].contains(document.activeElement);", element),
-                   f"{where}: a click on the player does not focus it")
+        self.check(
+            self.js("return arguments[0].contains(document.activeElement);", element),
+            f"{where}: a click on the player does not focus it",
+        )
         self.keys(element, where, run)
         self.speed_menu(element, where, run)
         self.teacher_controls(element, where, run)
@@ -662,8 +773,10 @@ class Checker:
             self.until(element, "window.__rbAtPause && !h.playing()")
             at = self.js("return window.__rbAtPause;")
             now = self.hook(element, "time()")
-            if not self.check(at and at["playing"] and not self.hook(element, "playing()"),
-                              f"{where}: pausing with {how} was not seen ({at})"):
+            if not self.check(
+                at and at["playing"] and not self.hook(element, "playing()"),
+                f"{where}: pausing with {how} was not seen ({at})",
+            ):
                 continue
             self.frames()
             self.pixels(element, f"{run_id}-pause")
@@ -671,20 +784,30 @@ class Checker:
             later = self.hook(element, "time()")
             shown = self.js("return window.__rbShown(arguments[0]);", element)
             # (The slider holds its value to 15 significant digits.)
-            self.check(abs(now - at["slider"]) < 1e-9 and later == now,
-                       f"{where}: paused with {how} at t = {at['slider']} (the slider), the time is "
-                       f"{now} right after and {later} 0.6 s later")
+            self.check(
+                abs(now - at["slider"]) < 1e-9 and later == now,
+                f"{where}: paused with {how} at t = {at['slider']} (the slider), the time is "
+                f"{now} right after and {later} 0.6 s later",
+            )
             for key in ["slider", "readouts", "cursor"]:
-                self.check(shown[key] == at[key], f"{where}: paused with {how}, the {key} showed "
-                                                  f"{at[key]!r} and 0.6 s later {shown[key]!r}")
+                self.check(
+                    shown[key] == at[key],
+                    f"{where}: paused with {how}, the {key} showed "
+                    f"{at[key]!r} and 0.6 s later {shown[key]!r}",
+                )
             px = self.pixels(element, f"{run_id}-pause")
-            self.check(px["changed"] == 0, f"{where}: paused with {how}, the picture changed "
-                                           f"{px['changed']} pixels after")
+            self.check(
+                px["changed"] == 0,
+                f"{where}: paused with {how}, the picture changed " f"{px['changed']} pixels after",
+            )
             # ... and it is the picture of the time paused at.
             self.hook(element, "renderAll()")
             px = self.pixels(element, f"{run_id}-pause")
-            self.check(px["changed"] == 0, f"{where}: paused with {how}, the picture is not the one "
-                                           f"of t = {later} ({px['changed']} pixels differ)")
+            self.check(
+                px["changed"] == 0,
+                f"{where}: paused with {how}, the picture is not the one "
+                f"of t = {later} ({px['changed']} pixels differ)",
+            )
         self.hook(element, "setSpeed(arguments[1])", speed)
         self.click_view(element, "oblique")
 
@@ -701,9 +824,11 @@ class Checker:
         self.hook(element, "setTime(arguments[1])", between(t, k, 0.4))
         ActionChains(self.driver).send_keys(Keys.ARROW_RIGHT).perform()
         speed, got = self.hook(element, "speed()"), self.hook(element, "time()")
-        self.check(speed == 0.5 and got == t[k + 1],
-                   f"{where}: → after choosing 0.5× made the speed {speed}× and the time {got}, "
-                   f"not 0.5× and {t[k + 1]}")
+        self.check(
+            speed == 0.5 and got == t[k + 1],
+            f"{where}: → after choosing 0.5× made the speed {speed}× and the time {got}, "
+            f"not 0.5× and {t[k + 1]}",
+        )
         ActionChains(self.driver).send_keys(Keys.SPACE).perform()
         time.sleep(0.3)
         self.check(self.hook(element, "playing()"), f"{where}: space after choosing a speed does not play")
@@ -711,8 +836,10 @@ class Checker:
         self.js("document.activeElement && document.activeElement.blur(); arguments[0].focus();", menu)
         ActionChains(self.driver).send_keys(Keys.ARROW_DOWN).perform()
         speed = self.hook(element, "speed()")
-        self.check(speed == 1 and self.js("return document.activeElement === arguments[0];", menu),
-                   f"{where}: ↓ on the focused menu made the speed {speed}×, not 1×, or moved the focus")
+        self.check(
+            speed == 1 and self.js("return document.activeElement === arguments[0];", menu),
+            f"{where}: ↓ on the focused menu made the speed {speed}×, not 1×, or moved the focus",
+        )
         ActionChains(self.driver).send_keys(Keys.ARROW_DOWN).perform()
         speed = self.hook(element, "speed()")
         self.check(speed == 2, f"{where}: ↓ again on the menu made the speed {speed}×, not 2×")
@@ -737,7 +864,9 @@ class Checker:
 
         self.hook(element, "setTime(arguments[1])", between(t, k, 0.4))
         got = key(Keys.ARROW_RIGHT, t[k + 1])
-        self.check(got == t[k + 1], f"{where}: → from between samples {k} and {k + 1} went to {got}, not {t[k + 1]}")
+        self.check(
+            got == t[k + 1], f"{where}: → from between samples {k} and {k + 1} went to {got}, not {t[k + 1]}"
+        )
         got = key(Keys.ARROW_RIGHT, t[k + 2])
         self.check(got == t[k + 2], f"{where}: → again went to {got}, not {t[k + 2]}")
         key(Keys.ARROW_LEFT, t[k + 1])
@@ -747,12 +876,16 @@ class Checker:
         # to the next one; it went to 1.50, the same picture and read-out, and seemed dead.
         self.hook(element, "setTime(arguments[1])", between(t, k, 0.99))
         got = key(Keys.ARROW_RIGHT, t[k + 2])
-        self.check(got == t[k + 2], f"{where}: → from just before sample {k + 1} went to {got}, "
-                                    f"not on to {t[k + 2]}")
+        self.check(
+            got == t[k + 2],
+            f"{where}: → from just before sample {k + 1} went to {got}, " f"not on to {t[k + 2]}",
+        )
         self.hook(element, "setTime(arguments[1])", between(t, k, 0.01))
         got = key(Keys.ARROW_LEFT, t[k - 1])
-        self.check(got == t[k - 1], f"{where}: ← from just after sample {k} went to {got}, "
-                                    f"not back to {t[k - 1]}")
+        self.check(
+            got == t[k - 1],
+            f"{where}: ← from just after sample {k} went to {got}, " f"not back to {t[k - 1]}",
+        )
 
     def teacher_controls(self, element, where, run):
         # What a lesson needs (a teacher's trial): the moment the spin passes zero at a button
@@ -764,24 +897,36 @@ class Checker:
         if reversals:
             self.hook(element, "setTime(arguments[1])", t0)
             button.click()
-            self.check(self.until(element, f"h.time() === {reversals[0]!r}"),
-                       f"{where}: the reversal button went to {self.hook(element, 'time()')}, "
-                       f"not the first reversal {reversals[0]}")
+            self.check(
+                self.until(element, f"h.time() === {reversals[0]!r}"),
+                f"{where}: the reversal button went to {self.hook(element, 'time()')}, "
+                f"not the first reversal {reversals[0]}",
+            )
             self.check(not self.hook(element, "playing()"), f"{where}: the reversal button left it playing")
             shown = element.find_element(By.CSS_SELECTOR, ".rbp-spin").text
             self.check("0.0" in shown, f"{where}: at the reversal the spin read-out says {shown!r}")
             element.find_element(By.CSS_SELECTOR, ".rbp-title").click()
             ActionChains(self.driver).send_keys("r").perform()
             expect = reversals[1] if len(reversals) > 1 else reversals[0]
-            self.check(self.until(element, f"h.time() === {expect!r}", 5),
-                       f"{where}: R went to {self.hook(element, 'time()')}, not {expect}")
+            self.check(
+                self.until(element, f"h.time() === {expect!r}", 5),
+                f"{where}: R went to {self.hook(element, 'time()')}, not {expect}",
+            )
         else:
-            self.check(not button.is_enabled(), f"{where}: a run without reversals has the reversal button on")
+            self.check(
+                not button.is_enabled(), f"{where}: a run without reversals has the reversal button on"
+            )
         element.find_element(By.CSS_SELECTOR, ".rbp-title").click()
         ActionChains(self.driver).send_keys(Keys.END).perform()
-        self.check(self.until(element, f"h.time() === {t1!r}", 5), f"{where}: End went to {self.hook(element, 'time()')}")
+        self.check(
+            self.until(element, f"h.time() === {t1!r}", 5),
+            f"{where}: End went to {self.hook(element, 'time()')}",
+        )
         ActionChains(self.driver).send_keys(Keys.HOME).perform()
-        self.check(self.until(element, f"h.time() === {t0!r}", 5), f"{where}: Home went to {self.hook(element, 'time()')}")
+        self.check(
+            self.until(element, f"h.time() === {t0!r}", 5),
+            f"{where}: Home went to {self.hook(element, 'time()')}",
+        )
         help_text = element.find_element(By.CSS_SELECTOR, ".rbp-help").text
         said = f"{len(reversals)} reversal" if reversals else "No reversal in this run"
         self.check(said in help_text, f"{where}: the help says {help_text!r}, not {said!r}")
@@ -793,25 +938,33 @@ class Checker:
         pattern = re.compile(r"^floor squares (\d+(?:\.\d+)?) (mm|cm|m)$")
         a, b = pattern.match(oblique), pattern.match(side)
         unit = {"mm": 1e-3, "cm": 1e-2, "m": 1.0}
-        self.check(bool(a and b) and abs(float(b[1]) * unit[b[2]] - 4 * float(a[1]) * unit[a[2]]) < 1e-9,
-                   f"{where}: the floor's scale reads {oblique!r} in oblique and {side!r} in side")
+        self.check(
+            bool(a and b) and abs(float(b[1]) * unit[b[2]] - 4 * float(a[1]) * unit[a[2]]) < 1e-9,
+            f"{where}: the floor's scale reads {oblique!r} in oblique and {side!r} in side",
+        )
         # A long drag down orbits towards the floor and stops above it.
         self.click_view(element, "oblique")
         canvas = element.find_element(By.CSS_SELECTOR, ".rbp-stage canvas")
         # (Up the canvas is down towards the floor: a drag of its whole height turns the camera
         # by a full turn, so two-fifths of it twice is far past the horizon.)
         h = canvas.size["height"]
-        ActionChains(self.driver).move_to_element_with_offset(canvas, 0, int(0.45 * h)) \
-            .click_and_hold().move_by_offset(0, -int(0.4 * h)).move_by_offset(0, -int(0.4 * h)) \
-            .release().perform()
+        ActionChains(self.driver).move_to_element_with_offset(
+            canvas, 0, int(0.45 * h)
+        ).click_and_hold().move_by_offset(0, -int(0.4 * h)).move_by_offset(
+            0, -int(0.4 * h)
+        ).release().perform()
         eye, target = self.hook(element, "cameraPosition()"), self.hook(element, "cameraTarget()")
-        self.check(eye[2] > target[2] and eye[2] > 0, f"{where}: an orbit down took the camera to "
-                                                       f"{eye}, below the floor or the target {target}")
+        self.check(
+            eye[2] > target[2] and eye[2] > 0,
+            f"{where}: an orbit down took the camera to " f"{eye}, below the floor or the target {target}",
+        )
         self.click_view(element, "oblique")
         # Full screen: the player fills the screen and F (or the button) leaves it.
         self.js("arguments[0].querySelector('.rbp-full').click();", element)
         time.sleep(0.5)
-        is_full = self.js("return document.fullscreenElement === arguments[0].querySelector('.rbp');", element)
+        is_full = self.js(
+            "return document.fullscreenElement === arguments[0].querySelector('.rbp');", element
+        )
         self.check(is_full, f"{where}: the full-screen button did not fill the screen")
         if is_full:
             self.js("document.exitFullscreen();")
@@ -828,12 +981,16 @@ class Checker:
         self.console(f"{name} on load")
         self.check(bool(state), f"{name}: no .rb-player on the page")
         for index, (run_id, built, error) in enumerate(state or []):
-            has_data = self.js("return !!(window.RATTLEBACK_RUNS && window.RATTLEBACK_RUNS[arguments[0]]);", run_id)
+            has_data = self.js(
+                "return !!(window.RATTLEBACK_RUNS && window.RATTLEBACK_RUNS[arguments[0]]);", run_id
+            )
             element = self.element(index)
             if not has_data:
                 text = element.text.strip()
-                self.check(not built and error and text,
-                           f"{name}: the player of missing run {run_id} shows {text!r} (built {built}, error {error})")
+                self.check(
+                    not built and error and text,
+                    f"{name}: the player of missing run {run_id} shows {text!r} (built {built}, error {error})",
+                )
                 expect_missing -= 1
                 continue
             if not self.check(built, f"{name}: no player for run {run_id} ({error})"):
@@ -851,7 +1008,9 @@ class Checker:
         run_id = state[0][0]
         run = self.js("return {t: window.RATTLEBACK_RUNS[arguments[0]].t};", run_id)
         self.js("document.activeElement && document.activeElement.blur();")
-        self.check(self.js("return document.activeElement === document.body;"), "single.html: something has focus")
+        self.check(
+            self.js("return document.activeElement === document.body;"), "single.html: something has focus"
+        )
         self.keys(element, "single.html (unfocused)", run)
         self.console("single.html")
 
@@ -871,16 +1030,20 @@ class Checker:
             self.frames()
             box = self.pixels(element)["box"]
             widths[name] = box[2] - box[0]
-            labels[name] = self.js("return arguments[0].querySelector('.rbp-scale').textContent;",
-                                   element)
+            labels[name] = self.js("return arguments[0].querySelector('.rbp-scale').textContent;", element)
             self.console(name)
         ratio = widths["framed.html"] / widths["single.html"]
-        self.check(abs(ratio - 0.5) < 0.05 * 0.5, f"framed.html: framed for 40 cm the 20 cm body is "
-                   f"{widths['framed.html']:.0f} px long from above, {ratio:.3f} of its "
-                   f"{widths['single.html']:.0f} px framed for itself, not half")
-        self.check("2 cm" in labels["framed.html"] and "1 cm" in labels["single.html"],
-                   f"the floor's squares read {labels['single.html']!r} and {labels['framed.html']!r}, "
-                   "not 1 and 2 cm")
+        self.check(
+            abs(ratio - 0.5) < 0.05 * 0.5,
+            f"framed.html: framed for 40 cm the 20 cm body is "
+            f"{widths['framed.html']:.0f} px long from above, {ratio:.3f} of its "
+            f"{widths['single.html']:.0f} px framed for itself, not half",
+        )
+        self.check(
+            "2 cm" in labels["framed.html"] and "1 cm" in labels["single.html"],
+            f"the floor's squares read {labels['single.html']!r} and {labels['framed.html']!r}, "
+            "not 1 and 2 cm",
+        )
 
     def measure(self, screenshots, size):
         self.open("single.html" if (self.folder / "single.html").exists() else "index.html")
@@ -896,13 +1059,17 @@ class Checker:
         render = self.hook(element, "renderMs()")
         self.hook(element, "pause()")
         bench = self.hook(element, "benchmark(30)")
-        print(f"frame time at {size[0]}x{size[1]}: {frame:.1f} ms between drawn frames while playing "
-              f"({1000 / frame:.0f} fps); {bench:.1f} ms per frame drawn and read back; "
-              f"{render:.1f} ms CPU per render call")
+        print(
+            f"frame time at {size[0]}x{size[1]}: {frame:.1f} ms between drawn frames while playing "
+            f"({1000 / frame:.0f} fps); {bench:.1f} ms per frame drawn and read back; "
+            f"{render:.1f} ms CPU per render call"
+        )
         self.check(math.isfinite(frame) and frame > 0, f"frameMs() is {frame}")
         if screenshots:
-            run = self.js("return window.RATTLEBACK_RUNS[arguments[0]].reversals;", self.js(
-                "return arguments[0].getAttribute('data-run');", element))
+            run = self.js(
+                "return window.RATTLEBACK_RUNS[arguments[0]].reversals;",
+                self.js("return arguments[0].getAttribute('data-run');", element),
+            )
             t_rev = run[0] if run else 0
             out = pathlib.Path(screenshots)
             out.mkdir(parents=True, exist_ok=True)
@@ -918,7 +1085,9 @@ class Checker:
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     parser.add_argument("dir")
     parser.add_argument("--screenshots", help="save player-oblique.png and player-side.png here")
     parser.add_argument("--size", default="1280x720", help="the canvas size to measure the frame time at")
@@ -931,23 +1100,35 @@ def main():
     options = webdriver.ChromeOptions()
     options.binary_location = CHROMIUM
     profile = tempfile.mkdtemp(prefix="rattleback-chromium-")
-    for flag in ["--headless=new", "--no-sandbox", "--disable-quic", "--no-first-run",
-                 "--disable-background-networking", "--disable-component-update", "--disable-sync",
-                 # WebGL on the CPU (SwiftShader through ANGLE): no GPU needed; the page
-                 # composited on the CPU, as Chromium does by itself on a machine without a GPU
-                 # (compositing on SwiftShader instead cost ~30 ms of CPU a frame, whole window:
-                 # bench/player_speed.py's swiftshader-gl against as-installed)
-                 "--use-gl=angle", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
-                 "--disable-gpu-compositing",
-                 "--force-device-scale-factor=1", "--window-size=1700,1100",
-                 f"--user-data-dir={profile}"]:
+    for flag in [
+        "--headless=new",
+        "--no-sandbox",
+        "--disable-quic",
+        "--no-first-run",
+        "--disable-background-networking",
+        "--disable-component-update",
+        "--disable-sync",
+        # WebGL on the CPU (SwiftShader through ANGLE): no GPU needed; the page
+        # composited on the CPU, as Chromium does by itself on a machine without a GPU
+        # (compositing on SwiftShader instead cost ~30 ms of CPU a frame, whole window:
+        # bench/player_speed.py's swiftshader-gl against as-installed)
+        "--use-gl=angle",
+        "--use-angle=swiftshader",
+        "--enable-unsafe-swiftshader",
+        "--disable-gpu-compositing",
+        "--force-device-scale-factor=1",
+        "--window-size=1700,1100",
+        f"--user-data-dir={profile}",
+    ]:
         options.add_argument(flag)
     options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
     driver = webdriver.Chrome(service=Service(DRIVER), options=options)
     checker = Checker(driver, folder)
     try:
         driver.set_script_timeout(60)
-        checker.page("index.html", expect_missing=1 if "no-such-run" in (folder / "index.html").read_text() else 0)
+        checker.page(
+            "index.html", expect_missing=1 if "no-such-run" in (folder / "index.html").read_text() else 0
+        )
         if (folder / "missing.html").exists():
             state = checker.page("missing.html", expect_missing=1)
             checker.check(state and not state[0][1], "missing.html: a player was built with no data")

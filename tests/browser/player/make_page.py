@@ -55,17 +55,22 @@ FORECASTS = {
 def player_div(run_id, heading):
     forecast = FORECASTS.get(run_id)
     data = f' data-forecast="{html.escape(json.dumps(forecast))}"' if forecast else ""
-    return (f'<h2>{html.escape(heading)}</h2>\n'
-            f'<div class="rb-player" data-run="{html.escape(run_id)}"{data}></div>')
+    return (
+        f"<h2>{html.escape(heading)}</h2>\n"
+        f'<div class="rb-player" data-run="{html.escape(run_id)}"{data}></div>'
+    )
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     parser.add_argument("dir")
     parser.add_argument("--bundle", help="a built rattleback-player.js to copy (default: build it)")
     parser.add_argument("--python", help="the build's python folder (holds the rattleback package)")
     args = parser.parse_args()
     import os
+
     python_dir = args.python or os.environ.get("RATTLEBACK_PYTHON") or str(REPO / "build" / "python")
     sys.path.insert(0, python_dir)
     import rattleback as rb
@@ -82,25 +87,41 @@ def main():
         shutil.copyfile(args.bundle, bundle)
     else:
         subprocess.run([str(REPO / "player" / "build.sh"), str(bundle)], check=True)
-    (out / "index.html").write_text(page(
-        "Rattleback player: dev page",
-        [player_div("rattleback", "Default scene"), player_div("kl", "Kane & Levinson"),
-         player_div(MISSING, "A run whose data is missing")],
-        # (no script for the missing run: a script that fails to load is the browser's own
-        # console error, not the player's)
-        [f"{run_id}.player.js" for run_id, _ in RUNS]))
-    (out / "single.html").write_text(page(
-        "Rattleback player: one run", [player_div("rattleback", "Default scene")], ["rattleback.player.js"]))
+    (out / "index.html").write_text(
+        page(
+            "Rattleback player: dev page",
+            [
+                player_div("rattleback", "Default scene"),
+                player_div("kl", "Kane & Levinson"),
+                player_div(MISSING, "A run whose data is missing"),
+            ],
+            # (no script for the missing run: a script that fails to load is the browser's own
+            # console error, not the player's)
+            [f"{run_id}.player.js" for run_id, _ in RUNS],
+        )
+    )
+    (out / "single.html").write_text(
+        page(
+            "Rattleback player: one run",
+            [player_div("rattleback", "Default scene")],
+            ["rattleback.player.js"],
+        )
+    )
     # The default scene framed for a body twice its length (video.frame 40 cm): drawn half as
     # long as on single.html (check_player's framed()).
     framed = rb.Scene.from_file(str(REPO / "scenes/rattleback.yaml")).with_values({"video.frame": 40})
     run = rb.simulate(framed, duration=1)
     (out / "framed.player.js").write_text(rb._core.player_script(framed._loaded, run._run, "framed"))
-    (out / "framed.html").write_text(page(
-        "Rattleback player: framed for 40 cm", [player_div("framed", "Framed for 40 cm")],
-        ["framed.player.js"]))
-    (out / "missing.html").write_text(page(
-        "Rattleback player: no run data", [player_div(MISSING, "A run whose data is missing")], []))
+    (out / "framed.html").write_text(
+        page(
+            "Rattleback player: framed for 40 cm",
+            [player_div("framed", "Framed for 40 cm")],
+            ["framed.player.js"],
+        )
+    )
+    (out / "missing.html").write_text(
+        page("Rattleback player: no run data", [player_div(MISSING, "A run whose data is missing")], [])
+    )
     print(f"wrote {out / 'index.html'}")
     return 0
 
