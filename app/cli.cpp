@@ -15,7 +15,9 @@
 #include "app/suggest.hpp"
 #include "media/presets.hpp"
 #include "render/frame.hpp"
+#include "scene/snapshot.hpp"
 #include "sim/model.hpp"
+#include "tasks/still_time.hpp"
 #include "tasks/sweep.hpp"
 #include "util/assets.hpp"
 
@@ -157,7 +159,10 @@ void defineStill(CLI::App& c, Cli& cli) {
   StillArgs& st = cli.still_args;
   sceneOption(c, st.scene);
   c.add_option("-o,--output", st.output, "PNG file (default out/<scene>-<view>.png)");
-  c.add_option("--t,--time", st.t, "Simulated time of the frame, s (default 0)");
+  c.add_option("--t,--time", st.t,
+               "Simulated time of the frame, s (default 0), or " + rb::choices<tasks::NamedTime>() +
+                   ": the first reversal the rule counts (docs/physics.md P7), or the run's end")
+      ->type_name("S");
   videoOptions(c, st.overrides);
   setOption(c, cli.still_set);
   c.add_flag("--no-readouts", st.no_readouts, "No time, spin, inset plot or floor scale");
@@ -185,6 +190,34 @@ void defineCompare(CLI::App& c, Cli& cli) {
   c.add_option("--diff", a.diff, "Write a diff image here when they differ");
   c.add_flag("-q,--quiet", a.quiet,
              "Print nothing: the exit status says same (0) or different (1)");
+}
+
+// The keys of a suite file, from the reader's own table (scene::snapshotKeys).
+std::string snapshotKeysHelp() {
+  std::string out =
+      "Suite file keys (YAML; view, size, backend, tolerance, pixels and square at "
+      "the top are every case's defaults):\n";
+  for (const scene::SnapshotKey& k : scene::snapshotKeys()) {
+    const char* where = k.where == scene::SnapshotWhere::Top    ? "suite"
+                        : k.where == scene::SnapshotWhere::Case ? "case "
+                                                                : "both ";
+    out +=
+        "  " + std::string(where) + "  " + std::string(k.name) + ": " + std::string(k.help) + "\n";
+  }
+  return out;
+}
+
+void defineSnapshot(CLI::App& c, Cli& cli) {
+  SnapshotArgs& s = cli.snapshot_args;
+  c.add_option("suite", s.file, "Snapshot suite file (YAML): goldens, defaults, cases")->required();
+  c.add_flag("--update", s.update,
+             "Write the goldens that differ or are missing (those that match are left alone)");
+  c.add_option("--report", s.report,
+               "Folder for the HTML report of what differs (default snapshot-report beside the "
+               "suite file)");
+  c.add_option("-j,--jobs", s.jobs, "Threads (default: all cores)");
+  c.add_flag("-q,--quiet", s.quiet, "No verdicts and no progress bar: the exit status says it");
+  c.footer(snapshotKeysHelp());
 }
 
 void defineBench(CLI::App& c, Cli& cli) {
@@ -267,6 +300,10 @@ const std::vector<CommandSpec>& commands() {
       {"still", "Render one frame of a scene to a PNG", true, defineStill, runStill},
       {"compare", "Compare two PNG images within a tolerance (exit 0 same, 1 different)", true,
        defineCompare, runCompare},
+      {"snapshot",
+       "Compare stills with golden images, from a suite file (exit 0 all match, 1 any differs); "
+       "--update writes them",
+       true, defineSnapshot, runSnapshot},
       {"bench", "Speed against error: each contact model × integrator × step against a reference",
        false, defineBench, [](Cli& c) { return benchCommand(c.bench_args); }},
       {"sweep",

@@ -1,8 +1,8 @@
 // The command line of `rattleback`, defined once (a table of commands, app/cli.cpp) and read by
 // both programs behind it: the light `rattleback` (simulate, analyze, bench, report, sweep) and
-// `rattleback-render` (render, still, compare), which the first runs in its own place (exec) for
-// the commands that draw — so the commands that only simulate never load OSMesa/EGL (and LLVM
-// behind them) or libav.
+// `rattleback-render` (render, still, compare, snapshot), which the first runs in its own place
+// (exec) for the commands that draw — so the commands that only simulate never load OSMesa/EGL (and
+// LLVM behind them) or libav.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -40,6 +40,7 @@ struct Cli {
   RenderArgs render_args;
   StillArgs still_args;
   CompareArgs compare_args;
+  SnapshotArgs snapshot_args;
   BenchArgs bench_args;
   ReportArgs report_args;
   SweepArgs sweep_args;
@@ -60,10 +61,11 @@ struct Cli {
 /// one line and exit status kMachine, instead of an abort.
 int runGuarded(Cli& cli);
 
-// The drawing commands' runners: defined in rattleback-render (app/video.cpp), absent (null,
-// weak) in rattleback.
+// The drawing commands' runners: defined in rattleback-render (app/video.cpp, app/snapshot.cpp),
+// absent (null, weak) in rattleback.
 [[gnu::weak]] int runRender(Cli& cli);
 [[gnu::weak]] int runStill(Cli& cli);
 [[gnu::weak]] int runCompare(Cli& cli);
+[[gnu::weak]] int runSnapshot(Cli& cli);  ///< app/snapshot.cpp
 
 }  // namespace app

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/tell.hpp"
+#include "render/image_io.hpp"
 #include "tasks/manifest.hpp"
 #include "tasks/scene_args.hpp"
 
@@ -89,7 +90,7 @@ struct StillArgs {
   std::string scene;
   std::string output;  ///< .png path; empty: out/<scene>-<view>.png
   Overrides overrides;
-  double t = 0;                 ///< s
+  std::string t = "0";          ///< s, or a moment of the run: reversal, first_reversal, end
   std::string t_named = "--t";  ///< as typed, for its errors: --t or --time
   bool no_readouts = false;
   bool transparent = false;      ///< PNG with alpha: no floor, no background, no read-outs
@@ -123,14 +124,26 @@ int reportCommand(const ReportArgs& args);
 
 struct CompareArgs {
   std::string actual, expected;
-  int channel_tolerance = 2;      ///< 0–255 per channel
-  double pixel_fraction = 0.002;  ///< of the pixels may differ beyond it
-  int square = 4;      ///< a square of this side all beyond it differs whatever the fraction; 0 off
-  std::string diff;    ///< where to write a diff image when they differ
-  bool quiet = false;  ///< no verdict line: the exit status says it
+  // (render::Tolerance's defaults, which snapshot suites and Python share)
+  int channel_tolerance = render::Tolerance{}.channel;  ///< 0–255 per channel
+  double pixel_fraction = render::Tolerance{}.pixels;   ///< of the pixels may differ beyond it
+  int square = render::Tolerance{}.square;  ///< a square this side all beyond it differs; 0 off
+  std::string diff;                         ///< where to write a diff image when they differ
+  bool quiet = false;                       ///< no verdict line: the exit status says it
 };
 /// Exit 0 when the images match within the tolerance, 1 when they differ.
 int compareCommand(const CompareArgs& args);
+
+struct SnapshotArgs {
+  std::string file;     ///< the suite file (YAML): goldens, defaults, cases
+  bool update = false;  ///< write the goldens that differ or are missing instead of failing
+  std::string report;   ///< the failure report's folder; empty: snapshot-report beside the file
+  int jobs = 0;         ///< threads; 0: all cores
+  bool quiet = false;
+};
+/// Draws each case of a snapshot suite and compares it with its golden: exit 0 all match, 1 any
+/// differs or has no golden (a report written), 2 a bad suite, 3 a run stopped, 4 the machine.
+int snapshotCommand(const SnapshotArgs& args);
 
 struct SweepArgs {
   std::string file;    ///< the sweep file (YAML)

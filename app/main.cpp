@@ -1,6 +1,6 @@
 // rattleback: simulate a rattleback and report what it does. This program never loads the
-// rendering libraries: for render, still and compare it becomes rattleback-render (exec, same
-// process and arguments), found beside it or in the installed libexec folder.
+// rendering libraries: for render, still, compare and snapshot it becomes rattleback-render (exec,
+// same process and arguments), found beside it or in the installed libexec folder.
 #include <unistd.h>
 
 #include <cerrno>

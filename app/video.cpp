@@ -129,13 +129,16 @@ int stillCommand(const StillArgs& args) {
   if (auto ok = media::checkExtension(args.output, ".png", "PNG", false); !ok) return fail(ok);
   const auto backend = parseBackend(args.backend, args.backend_from);
   if (!backend) return kBadInput;
+  const auto time = tasks::parseStillTime(args.t, args.t_named);
+  if (!time) return fail(time);
   std::jthread preload = media::preloadDriver(*backend);
   auto loaded = loadScene(args.scene, args.overrides);
   if (!loaded) return fail(loaded);
   noteShipped(args.scene);
   media::StillRequest request;
   request.scene_name = args.scene;
-  request.t = args.t;
+  request.t = time->seconds;
+  request.t_name = time->named;
   request.t_named = args.t_named;
   request.readouts = !args.no_readouts;
   request.transparent = args.transparent;
@@ -158,11 +161,15 @@ int stillCommand(const StillArgs& args) {
   if (auto made = tasks::makeParentFolder(path); !made) return fail(made);
   if (auto e = render::writePng(path, still.image); !e) return fail(e);
   record({{path, tasks::OutputKind::Still, sceneName(args.scene),
-           std::string(rb::nameOf(still.view)), loaded->model.initial.spin, args.t,
+           std::string(rb::nameOf(still.view)), loaded->model.initial.spin, still.outcome.t,
            tasks::madeFrom(loaded->scene), tasks::listedFrame(loaded->scene, loaded->model)}});
   if (!args.quiet) {
     if (still.leaves) tell(Tone::Warning, *still.leaves);
-    std::printf("%s\n", path.c_str());
+    if (time->named)
+      std::printf("%s  (%s at t = %s s)\n", path.c_str(), rb::nameOf(*time->named).data(),
+                  rb::show(still.outcome.t).c_str());
+    else
+      std::printf("%s\n", path.c_str());
   }
   return kOk;
 }
@@ -261,12 +268,9 @@ int compareCommand(const CompareArgs& args) {
           args.diff.empty() ? "" : " and no diff image was written");
     return 1;
   }
-  // A fraction of the pixels alone lets a small thing changed whole pass (a 40×40 patch is 0.17 %
-  // of a 1280×720 frame, within 0.2 %): a square of differing pixels --square a side differs too.
-  // Another CPU's rasteriser moves pixels on edges, in lines one or two pixels wide, which make no
-  // such square.
-  const bool square = args.square > 0 && c.square >= args.square;
-  const bool same = c.fraction() <= args.pixel_fraction && !square;
+  const render::Tolerance tolerance{args.channel_tolerance, args.pixel_fraction, args.square};
+  const bool square = render::squareDiffers(c, tolerance);
+  const bool same = render::matches(c, tolerance);
   if (!args.quiet) printVerdict(args, a, b, c, same, square);
   if (!same && !args.diff.empty()) {
     const rb::OutputNamedBy naming("--diff");  // the way out an error line suggests

@@ -13,7 +13,31 @@
 
 namespace media {
 
-rb::Result<StillResult> renderStill(const tasks::LoadedScene& loaded, const StillRequest& request) {
+namespace {
+
+// The still's time in s: request.t, or the moment it names in the scene's own run. None (with
+// the run's outcome in `outcome`) when that run stopped or was cancelled first.
+rb::Result<std::optional<double>> stillTime(const tasks::LoadedScene& loaded,
+                                            const StillRequest& request, tasks::Outcome& outcome) {
+  if (!request.t_name) return std::optional<double>(request.t);
+  sim::Rollout run(loaded.model);
+  auto t = tasks::resolveStillTime({0, request.t_name}, run, request.t_named, request.cancelled);
+  outcome = tasks::outcomeOf(run.summary());
+  if (request.cancelled && request.cancelled()) outcome.ending = tasks::Ending::Interrupted;
+  if (outcome.ending != tasks::Ending::Completed) return std::optional<double>();
+  if (!t) return t.error();
+  return std::optional<double>(t.value());
+}
+
+}  // namespace
+
+rb::Result<StillResult> renderStill(const tasks::LoadedScene& loaded, const StillRequest& given) {
+  StillResult stopped_early;
+  auto resolved = stillTime(loaded, given, stopped_early.outcome);
+  if (!resolved) return resolved.error();
+  if (!resolved.value()) return stopped_early;
+  StillRequest request = given;
+  request.t = *resolved.value();
   if (!(request.t >= 0) || !std::isfinite(request.t))
     return rb::Error{"", request.t_named + ": must be a time ≥ 0 s, not " + rb::show(request.t)};
   sim::Model model = loaded.model;
@@ -43,7 +67,8 @@ rb::Result<StillResult> renderStill(const tasks::LoadedScene& loaded, const Stil
   StillResult result;
   result.view = plan.view;
   render::RenderSettings settings =
-      settingsOf(plan, model, request.scene_name, loaded.scene.values, request.backend);
+      settingsOf(plan, model, request.scene_name, loaded.scene.values, request.backend,
+                 request.title);
   settings.readouts = request.readouts && !request.transparent;
   settings.transparent = request.transparent;
   if (request.transparent) settings.title.clear();

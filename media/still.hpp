@@ -11,13 +11,19 @@
 #include "render/image_io.hpp"
 #include "tasks/outcome.hpp"
 #include "tasks/scene_args.hpp"
+#include "tasks/still_time.hpp"
 #include "util/result.hpp"
 
 namespace media {
 
 struct StillRequest {
-  std::string scene_name;       ///< the scene's path or name: its stem titles the frame
-  double t = 0;                 ///< s; past the scene's duration the run goes on to it
+  std::string scene_name;  ///< the scene's path or name: its stem titles the frame
+  double t = 0;            ///< s; past the scene's duration the run goes on to it
+  /// A moment of the run instead of `t` (still --t reversal): found by running the scene first.
+  std::optional<tasks::NamedTime> t_name;
+  /// The frame's title instead of the scene's stem and its values (a snapshot case's name, so
+  /// that its golden does not depend on where the scene file is); the spin is still said.
+  std::optional<std::string> title;
   std::string t_named = "--t";  ///< t as messages name it: the option, "argument t" in Python
   bool readouts = true;         ///< title, read-outs and the spin inset
   bool transparent = false;     ///< alpha: no floor, no background, no read-outs
@@ -29,9 +35,9 @@ struct StillRequest {
 };
 
 struct StillResult {
-  render::Image image;  ///< RGBA; empty unless outcome.ending is Completed
-  tasks::Outcome outcome;
-  std::string opengl;  ///< the OpenGL in use
+  render::Image image;     ///< RGBA; empty unless outcome.ending is Completed
+  tasks::Outcome outcome;  ///< outcome.t: the time drawn (a named time resolved)
+  std::string opengl;      ///< the OpenGL in use
   render::View view = render::View::Oblique;
   /// Where the body goes out of the frame asked for (video.frame): what to say (leavesNote).
   std::optional<std::string> leaves;

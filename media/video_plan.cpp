@@ -130,15 +130,17 @@ double spinRange(const sim::Model& run) {
 render::RenderSettings settingsOf(const VideoPlan& plan, const sim::Model& run,
                                   const std::string& scene,
                                   const std::vector<scene::KeyValue>& values,
-                                  render::Backend backend) {
+                                  render::Backend backend,
+                                  const std::optional<std::string>& given_title) {
   // The values put in name the variant: a class's bodies made with --set all read "mine: spun −5
   // rad/s". The renderer shortens a title too long for the frame.
   const bool struck = run.initial.w_x != 0 || run.initial.w_y != 0;
   std::string title =
-      std::filesystem::path(scene).stem().string() + ": " +
+      (given_title ? *given_title : std::filesystem::path(scene).stem().string()) + ": " +
       (struck ? describeStrike(run.initial) : "spun " + describeSpin(run.initial.spin));
-  for (const scene::KeyValue& kv : values)
-    title += (&kv == &values.front() ? "; " : ", ") + kv.key + " = " + kv.yaml;
+  if (!given_title)
+    for (const scene::KeyValue& kv : values)
+      title += (&kv == &values.front() ? "; " : ", ") + kv.key + " = " + kv.yaml;
   render::RenderSettings s;
   s.backend = backend;
   s.width = plan.width;

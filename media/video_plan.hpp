@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "render/frame.hpp"
@@ -41,10 +42,13 @@ std::string frameNamed(const scene::Loaded& scene);
 /// The renderer's settings for the frames of `run` (its duration and initial state): the plan's
 /// size and view, titled with the scene's name, the values put in over its file (--set,
 /// with_values) and the spin or the angular velocity it starts with (the same in its video and
-/// its stills).
+/// its stills). A `title` given replaces the scene's name and values (a snapshot case's name: its
+/// golden then does not depend on the scene file's path); the start is said after it all the
+/// same.
 render::RenderSettings settingsOf(const VideoPlan& plan, const sim::Model& run,
                                   const std::string& scene,
                                   const std::vector<scene::KeyValue>& values,
-                                  render::Backend backend);
+                                  render::Backend backend,
+                                  const std::optional<std::string>& title = std::nullopt);
 
 }  // namespace media

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <variant>
 
 #include "media/presets.hpp"
 #include "media/still.hpp"
@@ -18,6 +19,7 @@
 #include "tasks/player_data.hpp"
 #include "tasks/run_json.hpp"
 #include "util/arguments.hpp"
+#include "util/format.hpp"
 
 namespace py = pybind11;
 
@@ -72,12 +74,24 @@ render::Image imageOf(
 
 // The still drawn, and what the folder's manifest lists of it when it is saved (as `rattleback
 // still` lists its PNG): the scene's name, the view, the initial spin and t.
-py::tuple still(const LoadedScene& loaded, double t, bool readouts, bool transparent,
-                const std::string& backend) {
+py::tuple still(const LoadedScene& loaded, const std::variant<double, std::string>& t,
+                bool readouts, bool transparent, const std::string& backend,
+                const std::optional<std::string>& title) {
   media::StillRequest request;
+  request.title = title;
   request.scene_name = loaded.value.scene.file;
-  request.t = t;
   request.t_named = "argument t";
+  if (const auto* name = std::get_if<std::string>(&t)) {
+    // A word names a moment of the run ("reversal"); a number's text is refused (t="1.5"), as a
+    // Python number is what a time in seconds is given as.
+    const auto parsed = tasks::parseStillTime(*name, request.t_named);
+    if (!parsed || !parsed->named)
+      throw py::value_error(request.t_named + ": a time in s (e.g. 1.5) or " +
+                            rb::choices<tasks::NamedTime>() + ", not '" + *name + "'");
+    request.t_name = parsed->named;
+  } else {
+    request.t = std::get<double>(t);
+  }
   request.readouts = readouts;
   request.transparent = transparent;
   request.backend = backendOf(backend);
@@ -93,7 +107,7 @@ py::tuple still(const LoadedScene& loaded, double t, bool readouts, bool transpa
   listed["scene"] = stemOf(request.scene_name, loaded.has_file);
   listed["view"] = std::string(rb::nameOf(still.view));
   listed["spin"] = loaded.value.model.initial.spin;
-  listed["t"] = t;
+  listed["t"] = still.outcome.t;
   listed["made_from"] = tasks::madeFrom(loaded.value.scene);
   listed["drawn_by"] = still.image.drawn_by;  // (its PNG's Software, as the command line's)
   const std::optional<double> frame = tasks::listedFrame(loaded.value.scene, loaded.value.model);
@@ -148,6 +162,33 @@ py::tuple renderVideos(const LoadedScene& loaded, const std::string& output, boo
   return py::make_tuple(files, leaves);
 }
 
+using U8Array = py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>;
+
+// The figures of `rattleback compare` and the verdict under the tolerance, as a dict.
+py::dict compareArrays(const U8Array& a, const U8Array& b, int channel, double pixels, int square) {
+  if (channel < 0 || channel > 255)
+    throw py::value_error("argument tolerance: a channel difference within 0 … 255, not " +
+                          std::to_string(channel));
+  if (!(pixels >= 0 && pixels <= 1))
+    throw py::value_error("argument pixels: a fraction within 0 … 1, not " + rb::show(pixels));
+  if (square < 0)
+    throw py::value_error("argument square: 0 (off) or more, not " + std::to_string(square));
+  const render::Image x = imageOf(a), y = imageOf(b);
+  const render::Comparison c = render::compareImages(x, y, channel);
+  const render::Tolerance tolerance{channel, pixels, square};
+  py::dict d;
+  d["same"] = render::matches(c, tolerance);
+  d["same_size"] = c.same_size;
+  d["pixels"] = c.pixels;
+  d["differing"] = c.differing;
+  d["fraction"] = c.same_size ? c.fraction() : 1.0;
+  d["worst"] = c.max_channel_delta;
+  d["box"] = py::make_tuple(c.box[0], c.box[1], c.box[2], c.box[3]);
+  d["square"] = c.square;
+  d["square_failed"] = render::squareDiffers(c, tolerance);
+  return d;
+}
+
 }  // namespace
 }  // namespace pyrb
 
@@ -159,7 +200,7 @@ PYBIND11_MODULE(_draw, m) {
   // Messages name "argument crf", not "--crf" (each module holds its own copy of the style).
   rb::argument_style = rb::ArgumentStyle::Keyword;
   m.def("still", &still, py::arg("scene"), py::arg("t"), py::arg("readouts"),
-        py::arg("transparent"), py::arg("backend"));
+        py::arg("transparent"), py::arg("backend"), py::arg("title") = py::none());
   m.def("render", &renderVideos, py::arg("scene"), py::arg("output"), py::arg("both"),
         py::arg("crf"), py::arg("preset"), py::arg("backend"));
   m.def(
@@ -203,6 +244,31 @@ PYBIND11_MODULE(_draw, m) {
                     : std::nullopt}});
       },
       py::arg("path"), py::arg("array"), py::arg("still") = py::none());
+  m.def("compare", &compareArrays, py::arg("a"), py::arg("b"), py::arg("tolerance"),
+        py::arg("pixels"), py::arg("square"));
+  m.def(
+      "diff_image",
+      [](const U8Array& a, const U8Array& b, int channel) {
+        return arrayOf(render::diffImage(imageOf(a), imageOf(b), channel), false);
+      },
+      py::arg("a"), py::arg("b"), py::arg("tolerance"));
+  m.def(
+      "read_png",
+      [](const std::string& path) {
+        render::Image image;
+        if (auto e = render::readPng(path, image); !e) raise(e.error());
+        bool opaque = true;
+        for (std::size_t i = 3; i < image.rgba.size() && opaque; i += 4)
+          opaque = image.rgba[i] == 255;
+        return arrayOf(image, !opaque);
+      },
+      py::arg("path"));
+  // render::Tolerance's defaults: the one place `compare`, snapshot suites and Python take them.
+  py::dict tolerance;
+  tolerance["tolerance"] = render::Tolerance{}.channel;
+  tolerance["pixels"] = render::Tolerance{}.pixels;
+  tolerance["square"] = render::Tolerance{}.square;
+  m.attr("default_tolerance") = tolerance;
   py::list presets;
   for (std::string_view p : media::kPresets) presets.append(std::string(p));
   m.attr("presets") = presets;

@@ -200,4 +200,16 @@ Image diffImage(const Image& a, const Image& b, int channel_tolerance) {
   return out;
 }
 
+// A fraction of the pixels alone lets a small thing changed whole pass (a 40×40 patch is 0.17 % of
+// a 1280×720 frame, within 0.2 %): a square of differing pixels `square` a side differs too.
+// Another CPU's rasteriser moves pixels on edges, in lines one or two pixels wide, which make no
+// such square.
+bool squareDiffers(const Comparison& c, const Tolerance& tolerance) {
+  return tolerance.square > 0 && c.square >= tolerance.square;
+}
+
+bool matches(const Comparison& c, const Tolerance& tolerance) {
+  return c.same_size && c.fraction() <= tolerance.pixels && !squareDiffers(c, tolerance);
+}
+
 }  // namespace render

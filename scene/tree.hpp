@@ -24,6 +24,9 @@ std::string printable(const std::string& text);
 /// the line that opened it).
 rb::Error malformedYaml(const std::string& name, const std::string& text, const YAML::Exception& e);
 
+/// `text` as one line: control characters (a newline in a quoted key, a NUL byte) escaped.
+std::string printable(const std::string& text);
+
 /// As loadString, from a parsed tree. `places` maps dotted keys that were set from elsewhere
 /// to where ("sweeps/x.yaml:4"): an error in such a key (or inside it) names that place.
 /// `lines` gives the lines of the keys of a tree copied from a file (the copy has none).

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Fuzzes the scene loader and compile() with libFuzzer (clang, ASan + UBSan) for a bounded
-# time, starting from the corpus in tests/fuzz-corpus (copied: the run adds inputs to a scratch
-# corpus, never to the repository). Usage: scripts/fuzz.sh [seconds, default 60]
+# Fuzzes the scene loader and compile(), then the snapshot suite reader, with libFuzzer (clang,
+# ASan + UBSan) for a bounded time each (the reader a third of it, at least 10 s), starting from
+# the corpora in tests/fuzz-corpus and tests/fuzz-corpus-snapshot (copied: the run adds inputs to
+# a scratch corpus, never to the repository). Usage: scripts/fuzz.sh [seconds, default 60]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
@@ -11,20 +12,33 @@ if [ ! -f build-fuzz/CMakeCache.txt ]; then
   cmake -S . -B build-fuzz "${generator[@]}" -DRATTLEBACK_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCMAKE_CXX_COMPILER=clang++ >/dev/null
 fi
-cmake --build build-fuzz --parallel "$(nproc)" --target loader_fuzz
-corpus=$(mktemp -d)
-trap 'rm -rf "$corpus"' EXIT
-cp tests/fuzz-corpus/* "$corpus"/
-# -timeout: one input taking longer than 10 s is a hang and fails the run, as a crash does.
-./build-fuzz/fuzz/loader_fuzz "$corpus" -dict=fuzz/scene.dict -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 \
-  -print_final_stats=1 -artifact_prefix="$corpus/" 2>&1 | tail -n 25
-status=${PIPESTATUS[0]}
-if [ "$status" -ne 0 ]; then
-  echo "fuzz: FAILED (status $status); the input that failed:" >&2
-  ls "$corpus"/crash-* "$corpus"/timeout-* "$corpus"/oom-* 2>/dev/null | head -3 | while read -r f; do
-    echo "--- $f" >&2; head -c 2000 "$f" >&2; echo >&2
-    mkdir -p fuzz-failures && cp "$f" fuzz-failures/
-  done
-  exit 1
-fi
-echo "fuzz: ${seconds} s, no crashes"
+cmake --build build-fuzz --parallel "$(nproc)" --target loader_fuzz snapshot_fuzz
+
+# fuzz TARGET CORPUS SECONDS [libFuzzer options…]
+fuzz() {
+  local target=$1 source=$2 time=$3
+  shift 3
+  local corpus
+  corpus=$(mktemp -d)
+  cp "$source"/* "$corpus"/
+  # -timeout: one input taking longer than 10 s is a hang and fails the run, as a crash does.
+  set +e
+  "./build-fuzz/fuzz/$target" "$corpus" "$@" -max_total_time="$time" -timeout=10 \
+    -rss_limit_mb=4096 -print_final_stats=1 -artifact_prefix="$corpus/" 2>&1 | tail -n 25
+  local status=${PIPESTATUS[0]}
+  set -e
+  if [ "$status" -ne 0 ]; then
+    echo "fuzz: $target FAILED (status $status); the input that failed:" >&2
+    ls "$corpus"/crash-* "$corpus"/timeout-* "$corpus"/oom-* 2>/dev/null | head -3 | while read -r f; do
+      echo "--- $f" >&2; head -c 2000 "$f" >&2; echo >&2
+      mkdir -p fuzz-failures && cp "$f" fuzz-failures/
+    done
+    rm -rf "$corpus"
+    exit 1
+  fi
+  rm -rf "$corpus"
+  echo "fuzz: $target ${time} s, no crashes"
+}
+
+fuzz loader_fuzz tests/fuzz-corpus "$seconds" -dict=fuzz/scene.dict
+fuzz snapshot_fuzz tests/fuzz-corpus-snapshot "$(( seconds / 3 > 10 ? seconds / 3 : 10 ))"

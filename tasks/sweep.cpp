@@ -12,6 +12,7 @@
 #include "scene/keys.hpp"
 #include "sim/compile.hpp"
 #include "sim/rollout.hpp"
+#include "tasks/job_pool.hpp"
 #include "tasks/output.hpp"
 #include "util/assets.hpp"
 
@@ -195,73 +196,50 @@ nlohmann::json sweepAxesJson(const scene::Sweep& sweep) {
   return axes;
 }
 
+namespace {
+
+// A row that threw is a stopped row, with its values and the exception's words.
+SweepRow thrownRow(const scene::Sweep& sweep, std::int64_t index, const std::exception& e) {
+  SweepRow row;
+  row.row = index;
+  const std::vector<int> at = sweep.coordinates(index);
+  for (std::size_t a = 0; a < sweep.axes.size(); ++a)
+    row.values.push_back(sweep.axes[a].values[at[a]]);
+  row.status = RowStatus::Stopped;
+  row.message = e.what();
+  return row;
+}
+
+}  // namespace
+
 SweepRun runSweep(const scene::Sweep& sweep, const scene::SweepScenes& scenes,
                   const std::vector<std::int64_t>& rows, const SweepOptions& options) {
   SweepRun out;
-  const int jobs = options.jobs > 0
-                       ? options.jobs
-                       : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   Bodies bodies(sweep, rows);
   std::vector<std::optional<SweepRow>> results(rows.size());
-  std::atomic<std::size_t> next{0}, finished{0};
-  int running = 0;  // workers not yet done, under done_mutex
-  std::mutex done_mutex;
-  std::condition_variable done;
-  std::stop_source stop;
   std::mutex finished_mutex;
   const auto start = std::chrono::steady_clock::now();
-  {
-    std::vector<std::jthread> pool;
-    out.threads =
-        static_cast<int>(std::min<std::size_t>(jobs, std::max<std::size_t>(1, rows.size())));
-    running = out.threads;
-    for (int j = 0; j < out.threads; ++j) {
-      pool.emplace_back([&] {
-        while (!stop.stop_requested()) {
-          const std::size_t i = next++;
-          if (i >= rows.size()) break;
-          std::optional<SweepRow> row;
-          try {
-            row = runRow(sweep, scenes, bodies, rows[i], stop.get_token());
-          } catch (const std::exception& e) {
-            row = SweepRow{};
-            row->row = rows[i];
-            row->values = {};
-            const std::vector<int> at = sweep.coordinates(rows[i]);
-            for (std::size_t a = 0; a < sweep.axes.size(); ++a)
-              row->values.push_back(sweep.axes[a].values[at[a]]);
-            row->status = RowStatus::Stopped;
-            row->message = e.what();
-          }
-          if (!row) break;
-          if (options.finished) {
-            std::lock_guard lock(finished_mutex);
-            options.finished(*row);
-          }
-          results[i] = std::move(row);
-          ++finished;
+  const PoolRun pool = runJobs(
+      rows.size(), options.jobs,
+      [&](std::size_t i, std::stop_token stop) {
+        std::optional<SweepRow> row;
+        try {
+          row = runRow(sweep, scenes, bodies, rows[i], stop);
+        } catch (const std::exception& e) {
+          row = thrownRow(sweep, rows[i], e);
         }
-        {
-          std::lock_guard lock(done_mutex);
-          --running;
+        if (!row) return false;
+        if (options.finished) {
+          std::lock_guard lock(finished_mutex);
+          options.finished(*row);
         }
-        done.notify_one();
-      });
-    }
-    // Every 50 ms: Ctrl-C and the progress line; the last worker's end wakes this at once (a
-    // plain 50 ms sleep here had cost a sweep of 0.1 s a quarter of its time).
-    std::unique_lock lock(done_mutex);
-    while (!done.wait_for(lock, std::chrono::milliseconds(50), [&] { return running == 0; })) {
-      lock.unlock();
-      if (options.cancelled && options.cancelled()) stop.request_stop();
-      if (options.progress) options.progress(static_cast<std::int64_t>(finished));
-      lock.lock();
-    }
-    lock.unlock();
-    if (options.progress) options.progress(static_cast<std::int64_t>(finished));
-  }
+        results[i] = std::move(row);
+        return true;
+      },
+      options.cancelled, options.progress);
+  out.threads = pool.threads;
   out.wall_s = since(start);
-  out.interrupted = stop.stop_requested();
+  out.interrupted = pool.interrupted;
   for (auto& r : results)
     if (r) out.rows.push_back(std::move(*r));
   return out;

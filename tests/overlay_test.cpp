@@ -20,6 +20,7 @@
 #include "render/image_io.hpp"
 #include "render/renderer.hpp"
 #include "render_support.hpp"
+#include "scene/snapshot.hpp"
 
 namespace fs = std::filesystem;
 using namespace render_support;
@@ -56,15 +57,16 @@ bool twins(const std::string& args, Twins& out) {
 }  // namespace
 
 TEST(Snapshots, ReadoutsAndInsetMatchTheGoldensToOneStep) {
-  std::ifstream list(kSource / "tests/golden/stills.txt");
-  std::string line;
+  // The project's golden suite, each case as the `still` arguments that draw it.
+  auto suite = scene::loadSnapshotSuite((kSource / "tests/golden/suite.yaml").string());
+  ASSERT_TRUE(suite) << suite.error().text();
   int checked = 0;
-  while (std::getline(list, line)) {
-    if (line.empty() || line[0] == '#' || line.find("--no-readouts") != std::string::npos) continue;
-    std::istringstream fields(line);
-    std::string name, args;
-    fields >> name;
-    std::getline(fields, args);
+  for (const scene::SnapshotCase& c : suite->cases) {
+    const std::string name = c.name;
+    const std::string args = " " + fs::path(c.scene).lexically_relative(kSource).string() +
+                             " --view " + std::string(rb::nameOf(*c.view)) + " --size " +
+                             std::to_string((*c.size)[0]) + "x" + std::to_string((*c.size)[1]) +
+                             " --t " + c.t_text;
     const fs::path with = scratch(name + ".png"), without = scratch(name + "-bare.png");
     ASSERT_EQ(rattleback("still" + args + " -q -o " + with.string()), 0) << name;
     ASSERT_EQ(rattleback("still" + args + " --no-readouts -q -o " + without.string()), 0) << name;

@@ -25,60 +25,8 @@ extern "C" {
 namespace fs = std::filesystem;
 using namespace render_support;
 
-namespace {
-
-// Snapshot tolerance. The same build draws byte-identical pixels run after run; another CPU
-// can move ~0.1% of pixels by one step (DEVELOPERS.md, measured on llvmpipe), and the PNG
-// round trip is exact. So a pixel counts as different beyond 2 steps in a channel, and at
-// most 0.5% of pixels may differ: a moved body, a wrong colour or a missing floor changes
-// far more (the seed's 602 points alone cover ~8% of a 320×180 frame).
-constexpr int kChannelTolerance = 2;
-constexpr double kPixelFraction = 0.005;
-
-struct Still {
-  std::string name, args;
-};
-
-std::vector<Still> stills() {
-  std::ifstream in(kSource / "tests/golden/stills.txt");
-  std::vector<Still> out;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream s(line);
-    Still still;
-    s >> still.name;
-    std::getline(s, still.args);
-    out.push_back(still);
-  }
-  return out;
-}
-
-}  // namespace
-
-// Each golden still, re-rendered, matches within the tolerance. On a mismatch the actual
-// image and a diff (differing pixels magenta) are written beside the test's scratch files
-// and named. Re-bless with scripts/bless-goldens.sh.
-TEST(Snapshots, StillsMatchTheGoldens) {
-  const auto list = stills();
-  ASSERT_EQ(list.size(), 5u);
-  for (const Still& still : list) {
-    const fs::path actual = scratch(still.name + "-actual.png");
-    ASSERT_EQ(rattleback("still " + still.args + " -o " + actual.string()), 0) << still.name;
-    render::Image a, b;
-    ASSERT_TRUE(render::readPng(actual.string(), a));
-    ASSERT_TRUE(render::readPng((kSource / "tests/golden" / (still.name + ".png")).string(), b));
-    const render::Comparison c = render::compareImages(a, b, kChannelTolerance);
-    ASSERT_TRUE(c.same_size) << still.name;
-    if (c.fraction() > kPixelFraction) {
-      const fs::path diff = scratch(still.name + "-diff.png");
-      EXPECT_TRUE(render::writePng(diff.string(), render::diffImage(a, b, kChannelTolerance)));
-      ADD_FAILURE() << still.name << ": " << c.differing << " pixels (" << 100 * c.fraction()
-                    << "%) differ, within x " << c.box[0] << "–" << c.box[2] << ", y " << c.box[1]
-                    << "–" << c.box[3] << "; actual " << actual << ", diff " << diff;
-    }
-  }
-}
+// The golden stills themselves are checked by `rattleback snapshot tests/golden/suite.yaml`
+// (CTest: Golden.StillsMatchTheSuite), as a user's suite is.
 
 // The seed's views are what the seed's figures show: red on top, blue below. In the side
 // view (looking across the body, 10° from above) the upper half of the body's pixels are

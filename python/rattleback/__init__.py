@@ -47,6 +47,8 @@ __all__ = [
     "render",
     "sweep",
     "SweepTable",
+    "compare",
+    "Comparison",
     "Simulation",
     "State",
     "__version__",
@@ -425,6 +427,12 @@ class Image:
     def height(self) -> int:
         return self.array.shape[0]
 
+    @property
+    def t(self) -> Optional[float]:
+        """The simulated time drawn, s, for a still of a scene (``t="reversal"`` resolved);
+        None for an image made from an array."""
+        return (self._still or {}).get("t")
+
     def png(self) -> bytes:
         """The image as PNG bytes (libpng, as the command line writes them)."""
         from . import _draw
@@ -451,7 +459,7 @@ class Image:
 @checked
 def still(
     scene: SceneLike,
-    t: float = 0.0,
+    t: Union[float, str] = 0.0,
     *,
     view: Optional[str] = None,
     size: Optional[tuple[int, int]] = None,
@@ -460,10 +468,14 @@ def still(
     readouts: bool = True,
     transparent: bool = False,
     backend: str = "auto",
+    title: Optional[str] = None,
 ) -> Image:
     """The scene's run drawn at time ``t`` (s), as ``rattleback still`` draws it.
 
     Args:
+        t: s, or ``"reversal"`` (also ``"first_reversal"``: the first reversal the reversal
+            rule counts, which can be later than n's first zero) or ``"end"`` (the run's end);
+            the image's ``t`` says the time drawn.
         view: ``oblique``, ``above``, ``front``, ``side`` or ``follow`` (default the scene's).
         size: (width, height) in pixels, even (default the scene's, else 1280×720).
         spin: initial spin, rad/s.
@@ -474,11 +486,14 @@ def still(
         readouts: the title, read-outs and spin inset.
         transparent: an RGBA image with no floor or background.
         backend: ``auto``, ``egl`` or ``osmesa``.
+        title: the frame's title instead of the scene's name and values (the spin is said
+            after it): a golden image then does not depend on the scene file's name.
     """
     from . import _draw
 
     loaded = _scene(scene)._load(view=view, size=size, spin=spin, frame=frame)
-    array, listed, leaves = _draw.still(loaded, float(t), bool(readouts), bool(transparent), backend)
+    when = t if isinstance(t, str) else float(t)
+    array, listed, leaves = _draw.still(loaded, when, bool(readouts), bool(transparent), backend, title)
     _warn_leaves(loaded, leaves)
     return Image(array, listed)
 
@@ -527,4 +542,5 @@ def render(
 
 
 from ._sweep import SweepTable, sweep  # noqa: E402
+from ._compare import Comparison, compare  # noqa: E402
 from ._simulation import Simulation, State  # noqa: E402

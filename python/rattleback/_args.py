@@ -108,7 +108,11 @@ _TAKES: dict[str, tuple[Callable[[Any], bool], str]] = {
     "spin": (_number, f"{_NUMBER} (rad/s)"),
     "dt": (_number, f"{_NUMBER} (s)"),
     "tolerance": (_number, _NUMBER),
-    "t": (_number, f"{_NUMBER} (s)"),
+    "t": (
+        lambda v: _number(v) or isinstance(v, str),
+        f"{_NUMBER} (s), or a moment of the run: 'reversal', 'first_reversal' or 'end'",
+    ),
+    "title": (_text, "text"),
     "until": (_text, "'reversal'"),
     "position": (_numbers(3), "3 numbers (x, y, z), m"),
     "velocity": (_numbers(3), "3 numbers (x, y, z), m/s"),

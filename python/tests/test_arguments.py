@@ -49,7 +49,16 @@ def test_every_public_function_checks_its_arguments(scene, tmp_path):
         "argument integrator: takes a name (text), e.g. 'rk4', not 4 (int)",
     )
     refused(lambda: rb.simulate(scene, check="no"), "argument check: takes True or False, not 'no' (str)")
-    refused(lambda: rb.still(scene, "1"), "argument t: takes a number (s), not '1' (str)")
+    # Text is a moment of the run ("reversal"): a number in text is a wrong value, not type.
+    with pytest.raises(
+        ValueError, match="^argument t: a time in s .e.g. 1.5. or reversal, first_reversal or end, not '1'$"
+    ):
+        rb.still(scene, "1")
+    refused(
+        lambda: rb.still(scene, [1]),
+        "argument t: takes a number (s), or a moment of the run: 'reversal', "
+        "'first_reversal' or 'end', not [1] (list)",
+    )
     refused(
         lambda: rb.still(scene, size=(640, 360, 3)),
         "argument size: takes (width, height) in pixels, e.g. (640, 360), not (640, 360, 3) " "(tuple)",

@@ -1,0 +1,94 @@
+"""Snapshot tests of images in a pytest suite: :func:`assert_image_matches`, and a pytest plugin
+(``pytest -p rattleback.testing``, or ``pytest_plugins = ["rattleback.testing"]`` in a
+conftest.py) whose ``--snapshot-update`` writes the goldens instead of comparing.
+
+A failure writes the new image and a diff image (differing pixels in magenta) into
+``snapshot-failures/`` (``--snapshot-failures DIR``, or ``failures=``) and names them."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+from typing import Any, Optional, Union
+
+from ._compare import ImageLike, _array, _defaults, compare
+
+PathLike = Union[str, os.PathLike]
+
+# What the pytest plugin sets from its options (and what a caller's own arguments override).
+_settings: dict[str, Any] = {"update": False, "failures": "snapshot-failures"}
+
+
+def _write(path: Path, array) -> None:
+    from . import _draw
+
+    path.parent.mkdir(parents=True, exist_ok=True)
+    _draw.write_png(os.fspath(path), array)  # (a temporary file renamed into place)
+
+
+def assert_image_matches(
+    image: ImageLike,
+    golden_path: PathLike,
+    *,
+    tolerance: Optional[int] = None,
+    pixels: Optional[float] = None,
+    square: Optional[int] = None,
+    update: Optional[bool] = None,
+    failures: Optional[PathLike] = None,
+) -> None:
+    """Asserts that ``image`` matches the PNG at ``golden_path`` (as :func:`rattleback.compare`
+    judges, with its defaults).
+
+    With ``update`` (default: pytest's ``--snapshot-update``) the golden is written when it is
+    missing or differs, and left alone when it matches. Otherwise a missing golden or a
+    mismatch raises AssertionError naming the new image and the diff image written into
+    ``failures`` (default ``snapshot-failures``, or pytest's ``--snapshot-failures``).
+    """
+    golden = Path(golden_path)
+    actual = _array(image)
+    tol, frac, side = _defaults(tolerance, pixels, square)
+    exists = golden.is_file()
+    result = compare(actual, golden, tolerance=tol, pixels=frac, square=side) if exists else None
+    if update if update is not None else _settings["update"]:
+        if result is None or not result.same:
+            _write(golden, actual)
+        return
+    if result is not None and result.same:
+        return
+    folder = Path(failures if failures is not None else _settings["failures"])
+    new = folder / f"{golden.stem}-new.png"
+    _write(new, actual)
+    if result is None:
+        raise AssertionError(
+            f"{golden}: no golden image; the new image is {new} (pytest "
+            "--snapshot-update, or update=True, writes it as the golden)"
+        )
+    message = f"{golden}: differs: {result.describe(tol)}; the new image is {new}"
+    if result.same_size:
+        from . import _draw
+
+        diff = folder / f"{golden.stem}-diff.png"
+        _write(diff, _draw.diff_image(actual, _array(golden), tol))
+        message += f", the diff image {diff}"
+    raise AssertionError(message + " (pytest --snapshot-update writes the new one as the golden)")
+
+
+def pytest_addoption(parser) -> None:
+    group = parser.getgroup("rattleback", "rattleback snapshot images")
+    group.addoption(
+        "--snapshot-update",
+        action="store_true",
+        default=False,
+        help="write the golden images that differ or are missing instead of failing",
+    )
+    group.addoption(
+        "--snapshot-failures",
+        default="snapshot-failures",
+        metavar="DIR",
+        help="folder for the new and diff images of failures " "(default snapshot-failures)",
+    )
+
+
+def pytest_configure(config) -> None:
+    _settings["update"] = bool(config.getoption("snapshot_update"))
+    _settings["failures"] = config.getoption("snapshot_failures")

@@ -1,0 +1,152 @@
+"""Snapshot testing from Python: rb.compare's figures, rattleback.testing.assert_image_matches,
+the pytest plugin's --snapshot-update, and still(t="reversal")."""
+
+import subprocess
+import sys
+import textwrap
+
+import numpy as np
+import pytest
+
+import rattleback as rb
+from rattleback.testing import assert_image_matches
+
+from conftest import cli, scene_path
+
+SIZE = (320, 180)
+
+
+@pytest.fixture(scope="module")
+def picture():
+    return rb.still(scene_path("rattleback.yaml"), 1.0, size=SIZE)
+
+
+def changed(image, box=(slice(40, 60), slice(100, 130)), by=60):
+    """The image with a patch brightened by `by` levels: a thing changed whole."""
+    array = image.array.copy() if hasattr(image, "array") else image.copy()
+    patch = array[box].astype(int) + by
+    array[box] = np.clip(patch, 0, 255).astype(np.uint8)
+    return array
+
+
+def test_compare_gives_the_figures_counted_independently(picture):
+    other = changed(picture)
+    result = rb.compare(picture, other)
+    # Counted here with NumPy: a pixel differs when any channel differs by more than 2.
+    delta = np.abs(picture.array.astype(int) - other.astype(int)).max(axis=2)
+    assert result.differing == int((delta > 2).sum())
+    assert result.pixels == SIZE[0] * SIZE[1]
+    assert result.worst == int(delta.max())
+    assert result.fraction == pytest.approx(result.differing / result.pixels)
+    assert not result.same and not result
+    assert rb.compare(picture, picture).same
+    # A fraction allowed above the changed share still fails on the square rule; with the
+    # square rule off it passes.
+    assert not rb.compare(picture, other, pixels=0.5).same
+    assert rb.compare(picture, other, pixels=0.5, square=0).same
+    # Levels within the tolerance are no difference (one step: what another CPU moves).
+    assert rb.compare(picture, changed(picture, by=1)).differing == 0
+
+
+def test_compare_reads_paths_and_says_the_command_lines_verdict(tmp_path, picture):
+    picture.save(tmp_path / "a.png")
+    rb.Image(changed(picture)).save(tmp_path / "b.png")
+    result = rb.compare(tmp_path / "a.png", str(tmp_path / "b.png"))
+    said = cli("compare", str(tmp_path / "a.png"), str(tmp_path / "b.png"), check=False)
+    assert said.returncode == 1 and not result.same
+    assert f"{result.differing} of {result.pixels} pixels" in said.stdout
+    assert f"largest channel difference {result.worst}" in said.stdout
+    with pytest.raises(ValueError, match="argument tolerance"):
+        rb.compare(picture, picture, tolerance=300)
+
+
+def test_assert_image_matches_fails_missing_then_updates_then_passes(tmp_path, picture):
+    golden = tmp_path / "goldens" / "rest.png"
+    failures = tmp_path / "failures"
+    with pytest.raises(AssertionError, match="no golden image") as caught:
+        assert_image_matches(picture, golden, failures=failures)
+    assert str(failures / "rest-new.png") in str(caught.value)
+    assert not golden.exists()
+    assert_image_matches(picture, golden, update=True)
+    assert golden.is_file()
+    before = golden.stat().st_mtime_ns
+    assert_image_matches(picture, golden, failures=failures)
+    assert_image_matches(picture, golden, update=True)  # matches: left alone
+    assert golden.stat().st_mtime_ns == before
+
+
+def test_a_mismatch_names_the_diff_image_it_wrote(tmp_path, picture):
+    golden = tmp_path / "rest.png"
+    picture.save(golden)
+    failures = tmp_path / "failures"
+    with pytest.raises(AssertionError) as caught:
+        assert_image_matches(changed(picture), golden, failures=failures)
+    diff = failures / "rest-diff.png"
+    assert f"the diff image {diff}" in str(caught.value)
+    # The diff marks in magenta (255, 0, 255) the pixels that differ, all inside the patch.
+    from rattleback import _draw
+
+    magenta = np.all(_draw.read_png(str(diff))[..., :3] == [255, 0, 255], axis=2)
+    assert magenta.sum() == rb.compare(changed(picture), golden).differing > 0
+    rows, columns = np.nonzero(magenta)
+    assert rows.min() >= 40 and rows.max() < 60 and columns.min() >= 100 and columns.max() < 130
+
+
+def test_the_pytest_plugin_writes_goldens_with_snapshot_update(tmp_path):
+    (tmp_path / "test_mine.py").write_text(
+        textwrap.dedent(
+            f"""
+        import rattleback as rb
+        from rattleback.testing import assert_image_matches
+
+        def test_rest():
+            image = rb.still({scene_path("rattleback.yaml")!r}, 0.5, size=(320, 180))
+            assert_image_matches(image, "goldens/rest.png")
+        """
+        )
+    )
+    run = [
+        sys.executable,
+        "-m",
+        "pytest",
+        "-q",
+        "-p",
+        "no:cacheprovider",
+        "-p",
+        "rattleback.testing",
+        "test_mine.py",
+    ]
+    first = subprocess.run(run, cwd=tmp_path, capture_output=True, text=True)
+    assert first.returncode == 1, first.stdout
+    assert "snapshot-failures/rest-new.png" in first.stdout
+    update = subprocess.run(run + ["--snapshot-update"], cwd=tmp_path, capture_output=True, text=True)
+    assert update.returncode == 0, update.stdout
+    assert (tmp_path / "goldens" / "rest.png").is_file()
+    again = subprocess.run(run, cwd=tmp_path, capture_output=True, text=True)
+    assert again.returncode == 0, again.stdout
+
+
+def test_a_still_at_the_reversal_is_at_the_runs_first_reversal():
+    scene = scene_path("rattleback.yaml")
+    reversal = rb.simulate(scene).first_reversal
+    image = rb.still(scene, "reversal", size=SIZE)
+    assert image.t == reversal
+    assert np.array_equal(image.array, rb.still(scene, reversal, size=SIZE).array)
+    assert rb.still(scene, "end", size=SIZE).t == 8.0  # the scene's simulation.duration
+    with pytest.raises(ValueError, match="argument t: a time in s"):
+        rb.still(scene, "soon")
+
+
+def test_a_titled_still_does_not_depend_on_the_scene_files_name(tmp_path):
+    text = open(scene_path("rattleback.yaml")).read()
+    (tmp_path / "one.yaml").write_text(text)
+    (tmp_path / "sub").mkdir()
+    (tmp_path / "sub" / "other-name.yaml").write_text(text)
+    a = rb.still(tmp_path / "one.yaml", 0.5, size=SIZE, title="case")
+    b = rb.still(tmp_path / "sub" / "other-name.yaml", 0.5, size=SIZE, title="case")
+    assert np.array_equal(a.array, b.array)
+    # Untitled, the file's name is drawn into the title: the pictures differ.
+    assert not np.array_equal(
+        rb.still(tmp_path / "one.yaml", 0.5, size=SIZE).array,
+        rb.still(tmp_path / "sub" / "other-name.yaml", 0.5, size=SIZE).array,
+    )
