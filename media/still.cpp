@@ -66,9 +66,8 @@ rb::Result<StillResult> renderStill(const tasks::LoadedScene& loaded, const Stil
   const VideoPlan& plan = planned.value();
   StillResult result;
   result.view = plan.view;
-  render::RenderSettings settings =
-      settingsOf(plan, model, request.scene_name, loaded.scene.values, request.backend,
-                 request.title);
+  render::RenderSettings settings = settingsOf(plan, model, request.scene_name, loaded.scene.values,
+                                               request.backend, request.title);
   settings.readouts = request.readouts && !request.transparent;
   settings.transparent = request.transparent;
   if (request.transparent) settings.title.clear();
