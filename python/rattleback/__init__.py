@@ -456,7 +456,7 @@ class Image:
         return f"<Image {self.width}x{self.height}>"
 
 
-@checked
+@checked(t="moment")
 def still(
     scene: SceneLike,
     t: Union[float, str] = 0.0,

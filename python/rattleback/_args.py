@@ -14,7 +14,7 @@ import inspect
 import numbers
 import os
 from collections.abc import Mapping
-from typing import Any, Callable
+from typing import Any, Callable, Optional
 
 import numpy as np
 
@@ -108,7 +108,9 @@ _TAKES: dict[str, tuple[Callable[[Any], bool], str]] = {
     "spin": (_number, f"{_NUMBER} (rad/s)"),
     "dt": (_number, f"{_NUMBER} (s)"),
     "tolerance": (_number, _NUMBER),
-    "t": (
+    "t": (_number, f"{_NUMBER} (s)"),
+    # still's t: a time, or a moment the run finds (checked by the library, which names the three)
+    "moment": (
         lambda v: _number(v) or isinstance(v, str),
         f"{_NUMBER} (s), or a moment of the run: 'reversal', 'first_reversal' or 'end'",
     ),
@@ -162,15 +164,16 @@ def _shown(value: Any) -> str:
     return f"{text} ({type(value).__name__})"
 
 
-def refuse(name: str, value: Any) -> None:
-    """Raises the TypeError for `value` given as argument `name`."""
-    raise TypeError(f"argument {name}: takes {_TAKES[name][1]}, not {_shown(value)}")
+def refuse(name: str, value: Any, kind: Optional[str] = None) -> None:
+    """Raises the TypeError for `value` given as argument `name` (of _TAKES's `kind`, when the
+    function's argument means another kind than the name's)."""
+    raise TypeError(f"argument {name}: takes {_TAKES[kind or name][1]}, not {_shown(value)}")
 
 
-def _check(name: str, value: Any) -> None:
-    test, _ = _TAKES[name]
+def _check(name: str, value: Any, kind: Optional[str] = None) -> None:
+    test, _ = _TAKES[kind or name]
     if not test(value):
-        refuse(name, value)
+        refuse(name, value, kind)
     if name in ("path", "output") and os.fspath(value) == "":
         # A wrong value, not a wrong type: to_csv("") failed on moving its file into place, and
         # render(output="") wrote its default name as if none had been given.
@@ -202,12 +205,15 @@ def _check(name: str, value: Any) -> None:
                 )
 
 
-def checked(function: Callable) -> Callable:
+def checked(function: Optional[Callable] = None, **kinds: str) -> Callable:
     """`function` with its arguments' types checked first, each by its name in _TAKES (a
-    function with an argument not in it fails at import, so none goes unchecked). An argument
-    whose default is None may be None; defaults are not checked."""
+    function with an argument not in it fails at import, so none goes unchecked), or by the
+    kind `kinds` gives it (``@checked(t="moment")``: still's t takes a moment's name too). An
+    argument whose default is None may be None; defaults are not checked."""
+    if function is None:
+        return functools.partial(checked, **kinds)
     parameters = [p for p in inspect.signature(function).parameters.values() if p.name not in ("self", "cls")]
-    unknown = [p.name for p in parameters if p.name not in _TAKES]
+    unknown = [p.name for p in parameters if kinds.get(p.name, p.name) not in _TAKES]
     if unknown:
         raise AssertionError(f"{function.__qualname__}: no type for {', '.join(unknown)}")
     offset = len(inspect.signature(function).parameters) - len(parameters)
@@ -219,11 +225,11 @@ def checked(function: Callable) -> Callable:
     def call(*args, **kwargs):
         for name, value in zip(positional, args[offset:]):
             if value is not None or name not in optional:
-                _check(name, value)
+                _check(name, value, kinds.get(name))
         for name, value in kwargs.items():
             # A name the function has not is left to the call itself, whose TypeError names it.
             if name in names and (value is not None or name not in optional):
-                _check(name, value)
+                _check(name, value, kinds.get(name))
         return function(*args, **kwargs)
 
     return call
