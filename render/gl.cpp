@@ -74,6 +74,7 @@ class OsMesaContext final : public GlContext {
  public:
   ~OsMesaContext() override {
     if (!context_) return;
+    GlWork work;
     {
       CurrentContext current(*this);
       if (current.ok()) destroyFramebuffer();
@@ -193,6 +194,7 @@ class EglContext final : public GlContext {
  public:
   ~EglContext() override {
     if (context_ == EGL_NO_CONTEXT) return;
+    GlWork work;
     {
       CurrentContext current(*this);
       if (current.ok()) destroyFramebuffer();
@@ -249,6 +251,7 @@ class EglContext final : public GlContext {
 }  // namespace
 
 void preloadBackend(Backend backend) {
+  GlWork work;
   if (backend != Backend::OsMesa) {
     EGLDisplay display = EGL_NO_DISPLAY;
     std::string platform;
@@ -258,17 +261,22 @@ void preloadBackend(Backend backend) {
 }
 
 rb::Result<std::unique_ptr<GlContext>> GlContext::create(Backend backend, int width, int height) {
+  GlWork work;
   std::string egl_error, osmesa_error;
   if (backend != Backend::OsMesa) {
     auto egl = std::make_unique<EglContext>();
     egl_error = egl->create(width, height);
-    if (egl_error.empty()) return std::unique_ptr<GlContext>(std::move(egl));
+    if (egl_error.empty()) {
+      holdExitForGlWork(Backend::Egl);
+      return std::unique_ptr<GlContext>(std::move(egl));
+    }
     if (backend == Backend::Egl)
       return rb::machineError(rb::argumentGiven("backend", "egl") + ": " + egl_error);
   }
   auto osmesa = std::make_unique<OsMesaContext>();
   osmesa_error = osmesa->create(width, height);
   if (osmesa_error.empty()) {
+    holdExitForGlWork(Backend::OsMesa);
     osmesa->description_ = "OSMesa: " + osmesa->description_;
     return std::unique_ptr<GlContext>(std::move(osmesa));
   }

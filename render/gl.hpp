@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "render/exit_gate.hpp"
 #include "render/frame.hpp"
 #include "util/result.hpp"
 
@@ -102,7 +103,8 @@ class GlContext {
 /// guard's scope: every draw and every destruction takes one, so two renderers on one thread
 /// each draw with their own context, whatever the order. The context stays current after the
 /// scope, until another guard takes the thread or the context is destroyed (which unbinds it):
-/// one renderer drawing frame after frame switches nothing.
+/// one renderer drawing frame after frame switches nothing. It holds a GlWork: the process's
+/// exit waits for the scope's end.
 class CurrentContext {
  public:
   explicit CurrentContext(GlContext& context);
@@ -112,6 +114,7 @@ class CurrentContext {
   bool ok() const { return ok_; }
 
  private:
+  GlWork work_;  // first: taken before the context is made current
   GlContext& context_;
   bool ok_ = false;
 };

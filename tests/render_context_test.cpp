@@ -1,7 +1,11 @@
 // Renderers as the library's users hold them: several on one thread, each drawing with its own
 // OpenGL context whatever the order (CurrentContext), on either backend.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <memory>
 #include <thread>
@@ -268,4 +272,44 @@ TEST(Renderer, ADriverLoadedOnAnotherThreadDrawsTheSameFrames) {
     r->draw(pose(0.3), with);
     EXPECT_EQ(with.rgba, without.rgba) << rb::nameOf(backend);
   }
+}
+
+namespace {
+
+// A child process whose other thread draws frame after frame while the main thread calls
+// exit(): Mesa's exit handlers free the driver's state then, and a frame still being drawn
+// crashed (SIGSEGV in llvmpipe) or hung (an exit handler joining llvmpipe's threads). The
+// child's exit status: 0 when the exit went cleanly; 128 + the signal that ended it (SIGALRM
+// when it hung).
+int exitWhileAnotherThreadDraws(render::Backend backend) {
+  const pid_t child = fork();
+  if (child == 0) {
+    alarm(30);  // a frame takes milliseconds: 30 s is a hang, also on a loaded machine
+    render::RenderSettings s;
+    s.width = 640;
+    s.height = 480;
+    s.backend = backend;
+    auto created = render::Renderer::create(s, row());
+    if (!created) _exit(3);
+    std::atomic<int> frames{0};
+    std::thread([&] {
+      render::Image image;
+      for (int i = 0;; ++i, ++frames) created.value()->draw(pose(0.01 * i), image);
+    }).detach();
+    while (frames < 2) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    std::exit(0);
+  }
+  int status = 0;
+  waitpid(child, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+}  // namespace
+
+// Fifteen exits a backend. Without the wait at exit, 18 of 30 exits with OSMesa crashed or hung
+// (measured), 1 of 30 with EGL: fifteen clean exits by chance are 1 in 10^6 with OSMesa.
+TEST(Renderer, TheProcessExitsCleanlyWhileAnotherThreadDraws) {
+  for (render::Backend backend : {render::Backend::Egl, render::Backend::OsMesa})
+    for (int i = 0; i < 15; ++i)
+      ASSERT_EQ(exitWhileAnotherThreadDraws(backend), 0) << rb::nameOf(backend) << ", exit " << i;
 }

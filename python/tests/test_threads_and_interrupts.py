@@ -320,7 +320,7 @@ def work():
     if what == "simulate":
         rb.simulate(scene, dt=2e-6, duration=200)
     else:
-        rb.render(scene, sys.argv[3], duration=600, size=(64, 48))
+        rb.render(scene, sys.argv[3], duration=600, size=(640, 480))
 threading.Thread(target=work, daemon=True).start()
 time.sleep(1)
 print("main done", flush=True)
