@@ -521,6 +521,15 @@ void bindCalls(py::module_& m) {
         return toPython(tasks::analysisJson(tasks::analyze(loaded.value.model, spin)));
       },
       py::arg("scene"), py::arg("spin") = py::none());
+  m.def(
+      "linearize",
+      [](const LoadedScene& loaded, std::optional<double> spin) {
+        if (auto ok = tasks::checkAnalysisSpin(spin, "argument spin"); !ok) raise(ok.error());
+        const sim::Model& model = loaded.value.model;
+        return toPython(
+            tasks::linearisationJson(sim::linearise(model, tasks::analysisSpin(model, spin))));
+      },
+      py::arg("scene"), py::arg("spin") = py::none());
 }
 
 }  // namespace

@@ -62,6 +62,7 @@ namespace {
 // pairs sorted by frequency (|Im λ|), and whether the lower pair tilts the body mainly about
 // its long axis (roll: u_x, ω_y) rather than its short axis (pitch: u_y, ω_x).
 struct ModePairs {
+  Matrix5d matrix;
   std::vector<std::complex<double>> all;
   std::array<std::complex<double>, 2> low, high;
   bool low_is_roll = true;
@@ -95,9 +96,10 @@ ModePairs modePairs(const Model& rolling, double spin) {
   // Dynamic sizes: Eigen's eigensolver for a fixed 5×5 (and 4×4 below) took the compiler
   // 34 s and 1.5 GB for this file, the longest step of a fresh build; the arithmetic is the
   // same (docs/speed.md "A fresh build").
-  const Eigen::EigenSolver<Eigen::MatrixXd> solver(Eigen::MatrixXd(jacobianAt(rolling, spin)));
-  const Eigen::MatrixXcd vectors = solver.eigenvectors();
   ModePairs out;
+  out.matrix = jacobianAt(rolling, spin);
+  const Eigen::EigenSolver<Eigen::MatrixXd> solver(Eigen::MatrixXd(out.matrix));
+  const Eigen::MatrixXcd vectors = solver.eigenvectors();
   // The spin mode moves ω_z alone.
   int spin_mode = 0;
   double best = -1;
@@ -128,6 +130,7 @@ Linearisation linearise(const Model& model, double spin) {
   const bool low_is_roll = modePairs(rolling, 0).low_is_roll;
   Linearisation out;
   out.spin = spin;
+  out.matrix = pairs.matrix;
   out.eigenvalues = pairs.all;
   auto growth = [](const std::array<std::complex<double>, 2>& p) {
     return std::max(p[0].real(), p[1].real());

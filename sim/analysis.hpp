@@ -2,8 +2,10 @@
 // rolling model about steady upright spin.
 #pragma once
 
+#include <array>
 #include <complex>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include "sim/model.hpp"
@@ -19,12 +21,30 @@ struct Rest {
 };
 Rest restOf(const Model& model);
 
-/// The rolling model linearised about upright spin n: five eigenvalues of the tilt
-/// (u = Rᵀẑ, two components) and ω_body (three); one is zero (the spin itself), the other
-/// four are the roll (rocking about the long axis) and pitch (about the short axis) modes.
+/// The state of the linearised rolling model, in the order of Linearisation::matrix's rows and
+/// columns: the tilt u = Rᵀẑ (the world's up in body axes; two components, the third follows)
+/// and the angular velocity in body axes. Yaw and the position drop out (the floor is the same
+/// everywhere and every way round).
+struct LinearState {
+  std::string_view name, unit, meaning;
+};
+inline constexpr std::array<LinearState, 5> kLinearStates{{
+    {"u_x", "1", "the world's up along body x (tilt about body y)"},
+    {"u_y", "1", "the world's up along body y (tilt about body x)"},
+    {"w_x", "rad/s", "angular velocity about body x"},
+    {"w_y", "rad/s", "angular velocity about body y"},
+    {"w_z", "rad/s", "angular velocity about body z (n at steady spin)"},
+}};
+
+/// The rolling model linearised about upright spin n: d/dt (x − x̄) = A (x − x̄) with x the
+/// state above and x̄ = (0, 0, 0, 0, n). Five eigenvalues; one is the spin's own: zero without
+/// air drag (every n is a steady state), −σ/C with it (the drag's slowing of n, C the moment of
+/// inertia about the vertical); the other four are the roll (rocking about the long axis) and
+/// pitch (about the short axis) modes.
 struct Linearisation {
   double spin = 0;                                ///< rad/s
-  std::vector<std::complex<double>> eigenvalues;  ///< 1/s
+  Eigen::Matrix<double, 5, 5> matrix;             ///< A, 1/s (entries in the states' units)
+  std::vector<std::complex<double>> eigenvalues;  ///< of A, 1/s
   double roll_growth = 0, pitch_growth = 0;       ///< largest real part in each mode, 1/s
   double roll_hz = 0, pitch_hz = 0;               ///< |imaginary part| / 2π, Hz
 };

@@ -253,6 +253,12 @@ nlohmann::json bodyJson(const Analysis& a) {
   return j;
 }
 
+nlohmann::json eigenvaluesJson(const sim::Linearisation& l) {
+  nlohmann::json eigenvalues = nlohmann::json::array();
+  for (const auto& lambda : l.eigenvalues) eigenvalues.push_back({lambda.real(), lambda.imag()});
+  return eigenvalues;
+}
+
 nlohmann::json forecastJson(const Analysis& a) {
   const sim::ReversalForecast& forecast = a.forecast;
   return {{"theory", "averaged small-oscillation (Garcia & Hubbard 1988; docs/physics.md P8.5)"},
@@ -270,6 +276,22 @@ nlohmann::json forecastJson(const Analysis& a) {
 
 }  // namespace
 
+nlohmann::json linearisationJson(const sim::Linearisation& l) {
+  nlohmann::json states = nlohmann::json::array(), matrix = nlohmann::json::array();
+  for (const sim::LinearState& s : sim::kLinearStates)
+    states.push_back({{"name", s.name}, {"unit", s.unit}, {"meaning", s.meaning}});
+  for (int i = 0; i < l.matrix.rows(); ++i) {
+    nlohmann::json row = nlohmann::json::array();
+    for (int k = 0; k < l.matrix.cols(); ++k) row.push_back(l.matrix(i, k));
+    matrix.push_back(row);
+  }
+  return {{"model", "rolling, about steady upright spin (docs/physics.md P8)"},
+          {"spin", l.spin},
+          {"states", states},
+          {"matrix", matrix},
+          {"eigenvalues", eigenvaluesJson(l)}};
+}
+
 nlohmann::json analysisJson(const Analysis& a) {
   nlohmann::json j = bodyJson(a);
   j["h"] = a.rest.h;
@@ -282,10 +304,8 @@ nlohmann::json analysisJson(const Analysis& a) {
   j["spin"] = a.spin;
   j["growth_rates"] = {{"roll", a.at_spin.roll_growth}, {"pitch", a.at_spin.pitch_growth}};
   j["first_order_growth_per_spin"] = {{"roll", a.first_order.roll}, {"pitch", a.first_order.pitch}};
-  nlohmann::json eigenvalues = nlohmann::json::array();
-  for (const auto& lambda : a.at_spin.eigenvalues)
-    eigenvalues.push_back({lambda.real(), lambda.imag()});
-  j["eigenvalues"] = eigenvalues;
+  j["eigenvalues"] = eigenvaluesJson(a.at_spin);
+  j["linearised"] = linearisationJson(a.at_spin);
   // A body that cannot stand has no rocking about upright for a spin direction to favour.
   j["preferred"] = orNull(a.rest.stable, std::string(rb::nameOf(a.preferred)));
   j["predicted_first_reversal"] = forecastJson(a);

@@ -117,6 +117,10 @@ Analysis analyze(const sim::Model& model, const std::optional<double>& spin);
 
 /// The analysis as one JSON value (docs/commands.md "rattleback analyze").
 nlohmann::json analysisJson(const Analysis& analysis);
+/// The linearised rolling model as JSON: its spin, the states' names, units and meanings
+/// (sim::kLinearStates), the state matrix by rows and its eigenvalues as [re, im] pairs: the
+/// `linearised` entry of analysisJson, and Python's rb.linearize.
+nlohmann::json linearisationJson(const sim::Linearisation& linearisation);
 /// The analysis of `model` at `spin` rad/s as JSON.
 inline nlohmann::json analysisJson(const sim::Model& model, double spin) {
   return analysisJson(analyze(model, spin));

@@ -2,6 +2,7 @@
 // the smooth penalty model against rolling, the linearised theory against runs.
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <complex>
 #include <fstream>
@@ -637,4 +638,37 @@ TEST(Forecast, ASpinThatDiesAwayIsNoReversal) {
   const sim::Model model = build(spec);
   EXPECT_FALSE(sim::forecastFirstReversal(model, 5, 1e5).time);
   EXPECT_TRUE(sim::forecastFirstReversal(model, -5, 1e5).time);  // the other way it reverses
+}
+
+// The linearised model's state matrix (rb.linearize, analyze --json "linearised"). Its tilt rows
+// are kinematics alone: u̇ = −ω × u with u = (u_x, u_y, 1) and ω = (w_x, w_y, n) gives
+// u̇_x = n u_y − w_y and u̇_y = w_x − n u_x, whatever the body. Its spin column is zero without
+// air drag (this scene has none): every spin is a steady state, so nothing changes to first
+// order when n does. And its
+// eigenvalues are the ones analyze prints. 1e-8: the central differences' error is near 1e-9 of
+// the entries (sim/analysis.cpp), and these entries are of order n and 1.
+TEST(Theory, TheStateMatrixHasTheKinematicsOfTiltAndAnalyzesEigenvalues) {
+  const sim::Model model = build(parse(kRollingScene));
+  for (const double n : {-5.0, 0.0, 3.0}) {
+    const sim::Linearisation l = sim::linearise(model, n);
+    const Eigen::Matrix<double, 5, 5>& A = l.matrix;
+    const double expected_u_x[5] = {0, n, 0, -1, 0}, expected_u_y[5] = {-n, 0, 1, 0, 0};
+    for (int k = 0; k < 5; ++k) {
+      EXPECT_NEAR(A(0, k), expected_u_x[k], 1e-8) << "n " << n << ", row u_x, column " << k;
+      EXPECT_NEAR(A(1, k), expected_u_y[k], 1e-8) << "n " << n << ", row u_y, column " << k;
+      EXPECT_NEAR(A(k, 4), 0, 1e-8 * A.norm()) << "n " << n << ", the spin's column, row " << k;
+    }
+    // The matrix's own eigenvalues, matched to the printed ones one by one (each nearest).
+    const Eigen::VectorXcd mine =
+        Eigen::EigenSolver<Eigen::MatrixXd>(Eigen::MatrixXd(A)).eigenvalues();
+    ASSERT_EQ(l.eigenvalues.size(), 5u);
+    for (const auto& printed : l.eigenvalues) {
+      double nearest = INFINITY;
+      for (int i = 0; i < 5; ++i) nearest = std::min(nearest, std::abs(mine(i) - printed));
+      EXPECT_LT(nearest, 1e-9 * std::max(1.0, std::abs(printed))) << "n " << n << ": " << printed;
+    }
+  }
+  // The rows of the state table are the matrix's: five, names as Python and the JSON give them.
+  EXPECT_EQ(sim::kLinearStates.size(), 5u);
+  EXPECT_EQ(sim::kLinearStates[4].name, "w_z");
 }

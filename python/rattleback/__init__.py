@@ -51,6 +51,8 @@ __all__ = [
     "Comparison",
     "Simulation",
     "State",
+    "linearize",
+    "Linearization",
     "__version__",
 ]
 
@@ -544,3 +546,4 @@ def render(
 from ._sweep import SweepTable, sweep  # noqa: E402
 from ._compare import Comparison, compare  # noqa: E402
 from ._simulation import Simulation, State  # noqa: E402
+from ._linearize import Linearization, linearize  # noqa: E402

@@ -24,3 +24,21 @@ def test_the_tour_runs_and_shows_its_plot_and_still(tmp_path):
     assert "first reversal at 2.36" in text
     assert "<SweepTable rattleback-sweep: 45 runs, 45 ok>" in text
     assert (tmp_path / "out" / "tour.mp4").stat().st_size > 10_000
+
+
+def test_the_laboratory_runs_steps_taps_keeps_hdf5_and_checks_the_growth(tmp_path):
+    """examples/laboratory.ipynb: its own asserts hold the stepped reversal to simulate's and the
+    run's growth to the linearised model's (3 %); here, that it ran and said what it found."""
+    (tmp_path / "scenes").symlink_to(SOURCE / "scenes")
+    shutil.copy(SOURCE / "examples" / "laboratory.ipynb", tmp_path / "laboratory.ipynb")
+    nb = nbformat.read(tmp_path / "laboratory.ipynb", as_version=4)
+    NotebookClient(
+        nb, timeout=300, kernel_name="python3", resources={"metadata": {"path": str(tmp_path)}}
+    ).execute()
+    outputs = [o for cell in nb.cells if cell.cell_type == "code" for o in cell.outputs]
+    assert not [o for o in outputs if o.output_type == "error"]
+    assert len([o for o in outputs if "image/png" in o.get("data", {})]) == 2  # the tap, the pair
+    text = "".join(o.get("text", "") for o in outputs if o.output_type == "stream")
+    assert "opposite directions: True" in text
+    assert "read back equal: True" in text
+    assert "growth: eigenvalue" in text
