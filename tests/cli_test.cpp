@@ -2206,6 +2206,15 @@ TEST(Cli, ReportCaptionsSayWhatIsPredictedAndWhatWasMeasured) {
   ASSERT_EQ(said.size(), 2u);
   EXPECT_EQ(said[0].find("measured"), std::string::npos) << said[0];
   EXPECT_NE(said[1].find("no reversal in 1 s"), std::string::npos) << said[1];
+  EXPECT_EQ(said[1].find("although"), std::string::npos) << said[1];  // as the caption predicts
+
+  // Where the run does not do what its video's caption predicts, the caption says so plainly:
+  // spun the reversing way for 1 s, it has not reversed yet.
+  said = runAndReport(" --spin -5 --duration 1");
+  ASSERT_EQ(said.size(), 2u);
+  EXPECT_NE(said[0].find("no reversal in 1 s: <b>no reversal, although the theory predicts one"),
+            std::string::npos)
+      << said[0];
 
   // The pair's captions give each video's spin as the manifest lists it, and a video alone is
   // captioned as the pair's are, by its spin ("The scene as rendered" said neither which way
@@ -2243,6 +2252,32 @@ TEST(Cli, ReportCaptionsSayWhatIsPredictedAndWhatWasMeasured) {
   const Result odd = rattleback("report " + dir.string() + " -q");
   EXPECT_EQ(odd.status, 0) << odd.err;
   EXPECT_EQ(captions(page).size(), 3u);
+}
+
+// A teacher's body, its dents mirrored and deeper (scale 0.6 at (−0.73, 4.50) cm), prefers
+// clockwise and still reverses spun −5 rad/s that way (5.77 s; the averaged theory forecasts
+// 6.21 s): the preferred video's caption, whose prediction is only that the rocking grows more
+// slowly, says it reversed although preferred (it once said "turns longer before any reversal"
+// and nothing more).
+TEST(Cli, ReportCaptionsSayWhenAPreferredSpinReversedToo) {
+  const fs::path dir = emptyDir("page-preferred-reversed");
+  const std::string dents = " --set \"body.dents={scale: 0.6, at: [-0.73, 4.50], inset: 0.1}\"";
+  const Result theory = rattleback("analyze " + scene("rattleback") + dents + " --json");
+  ASSERT_EQ(theory.status, 0) << theory.err;
+  ASSERT_EQ(nlohmann::json::parse(theory.out)["preferred"], "cw");
+  std::ofstream(dir / "rattleback-analysis.json") << theory.out;
+  std::ofstream(dir / "rattleback-reversed.mp4");
+  std::ofstream(dir / "rattleback-preferred.mp4");
+  const std::string csv = (dir / "rattleback.csv").string();
+  ASSERT_EQ(rattleback("simulate " + scene("rattleback") + dents + " -q -o " + csv).status, 0);
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  const std::vector<std::string> said = captions((dir / "index.html").string());
+  ASSERT_EQ(said.size(), 2u);
+  EXPECT_NE(said[1].find("Spun the <b>preferred</b> way"), std::string::npos) << said[1];
+  EXPECT_NE(said[1].find("reversed at 5.77"), std::string::npos) << said[1];
+  EXPECT_NE(said[1].find("<b>it reversed although the theory prefers this direction</b>"),
+            std::string::npos)
+      << said[1];
 }
 
 // A backend from the environment that is not one is named as the environment's, not as an

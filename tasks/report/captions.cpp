@@ -138,12 +138,23 @@ std::string measuredOf(const RunRecord& run) {
   return out.str();
 }
 
-std::string measuredAs(const std::optional<RunRecord>& run, bool ccw) {
+std::string measuredAs(const std::optional<RunRecord>& run, bool ccw,
+                       std::optional<bool> preferred) {
   if (!run) return "";
   const Number& spin = run->initial_spin;
   if (!spin || *spin == 0 || (*spin > 0) != ccw) return "";
-  return "<br>measured (<code>simulate</code>, " + number(spin, "%+.3g") +
-         " rad/s): " + reversalOf(*run);
+  std::string text = "<br>measured (<code>simulate</code>, " + number(spin, "%+.3g") +
+                     " rad/s): " + reversalOf(*run);
+  const bool reversed = !run->reversals_s.empty() || run->first_reversal_s.has_value();
+  if (preferred && *preferred && reversed)
+    text +=
+        ": <b>it reversed although the theory prefers this direction</b> (its rocking grew "
+        "more slowly than the other way's, but it grew)";
+  else if (preferred && !*preferred && !reversed)
+    text +=
+        ": <b>no reversal, although the theory predicts one this way</b> (a longer run "
+        "may show it)";
+  return text;
 }
 
 std::string predictedOf(const nlohmann::json& t) {

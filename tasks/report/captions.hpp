@@ -29,8 +29,12 @@ std::string reversalOf(const RunRecord& run);
 std::string measuredOf(const RunRecord& run);
 
 /// What simulate measured, when its run was spun counter-clockwise (`ccw`) or clockwise as a
-/// video was; empty otherwise.
-std::string measuredAs(const std::optional<RunRecord>& run, bool ccw);
+/// video was; empty otherwise. Where `preferred` says whether that is the theory's preferred
+/// direction, a run that disagrees with the caption's prediction is said to, plainly: reversed
+/// although preferred (a preferred spin's rocking grows more slowly, and may still grow), or no
+/// reversal the reversing way within the run.
+std::string measuredAs(const std::optional<RunRecord>& run, bool ccw,
+                       std::optional<bool> preferred = std::nullopt);
 
 /// The theory's column (analyze --json): the preferred direction, growth rates, the rocking at
 /// rest, the misalignment and the forecast first reversal.

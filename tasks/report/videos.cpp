@@ -30,7 +30,7 @@ struct Videos {
 
   // What the run measured, where it was spun the way (`preferred` or not) a video was.
   std::string measured(bool preferred) const {
-    return ccw_preferred ? measuredAs(run, preferred == *ccw_preferred) : std::string();
+    return ccw_preferred ? measuredAs(run, preferred == *ccw_preferred, preferred) : std::string();
   }
 
   // A video's spin as the manifest lists it: none where it does not (or says 0).
@@ -85,7 +85,8 @@ struct Videos {
       caption = "Spun <b>" + spinWords(*spin) + "</b> (" + rads(*spin) + ")";
       if (ccw_preferred)
         caption += ": " + std::string(ccw == *ccw_preferred ? kPreferredWay : kReversingWay);
-      caption += measuredAs(run, ccw);
+      caption += measuredAs(
+          run, ccw, ccw_preferred ? std::optional<bool>(ccw == *ccw_preferred) : std::nullopt);
     }
     video(f.at(".mp4"), "-single.png", caption);
   }
