@@ -12,6 +12,7 @@ import re
 import subprocess
 import sys
 
+import pytest
 import rattleback
 from conftest import SOURCE
 
@@ -59,3 +60,24 @@ def test_every_rb_name_the_docs_use_is_in_all():
     used = set(re.findall(r"(?<![\w/.])rb\.(\w+)", PAGE.read_text()))
     assert used, "no rb. names found on the page"
     assert used - set(rattleback.__all__) - {"__all__"} == set()
+
+
+def test_ipython_completes_the_api():
+    # What a notebook's Tab after `rb.` lists, with Jedi (IPython's default) and without.
+    pytest.importorskip("IPython")
+    code = """if True:
+        from IPython.core.interactiveshell import InteractiveShell
+        from IPython.core.completer import provisionalcompleter
+        shell = InteractiveShell.instance()
+        shell.run_cell("import rattleback as rb")
+        for jedi in (True, False):
+            shell.Completer.use_jedi = jedi
+            with provisionalcompleter():
+                found = shell.Completer.completions("rb.", 3)
+                print(" ".join(sorted({c.text.rsplit(".", 1)[-1] for c in found})))
+    """
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    lines = out.stdout.strip().splitlines()
+    assert len(lines) == 2, out.stdout + out.stderr
+    for line in lines:
+        assert sorted(line.split()) == sorted(set(rattleback.__all__) - {"__version__"})
