@@ -220,13 +220,13 @@ class Run:
             self._model = self._run.model()
         return self._model
 
-    def __getattr__(self, name: str) -> _np.ndarray:
+    def __getattr__(self, name: str) -> np.ndarray:
         columns = self.__dict__.get("_columns", {})
         if name in columns:
             return columns[name]
         raise AttributeError(f"Run has no column or attribute {name!r}; columns: " + ", ".join(columns))
 
-    def __getitem__(self, name: str) -> _np.ndarray:
+    def __getitem__(self, name: str) -> np.ndarray:
         return self._columns[name]
 
     def __len__(self) -> int:
@@ -391,7 +391,7 @@ def analyze(scene: SceneLike, *, spin: Optional[float] = None, duration: Optiona
     return _core.analyze(_scene(scene)._load(duration=duration), spin)
 
 
-def _image_array(array: Any) -> _np.ndarray:
+def _image_array(array: Any) -> np.ndarray:
     """`array` if it is an image the writer takes as it is: the writer cast any other dtype to
     uint8 without a word (0.5 → 0, black; 300 → 44)."""
     if not isinstance(array, _np.ndarray):
@@ -403,11 +403,11 @@ def _image_array(array: Any) -> _np.ndarray:
         raise ValueError(f"{what}, not of shape {array.shape}")
     if array.dtype != _np.uint8:
         if array.dtype.kind == "f":  # 0…1, as matplotlib's images are
-            way_out = "_np.clip(a * 255, 0, 255).astype(_np.uint8)"
+            way_out = "np.clip(a * 255, 0, 255).astype(np.uint8)"
         elif array.dtype.kind == "b":
-            way_out = "a.astype(_np.uint8) * 255"
+            way_out = "a.astype(np.uint8) * 255"
         else:
-            way_out = "_np.clip(a, 0, 255).astype(_np.uint8)"
+            way_out = "np.clip(a, 0, 255).astype(np.uint8)"
         raise ValueError(f"{what}, not {array.dtype} (give {way_out})")
     return array
 
@@ -416,7 +416,7 @@ class Image:
     """A drawn frame: ``array`` is H×W×3 (or H×W×4 with transparency) ``uint8``, rows from
     the top. Shows itself in Jupyter; ``save(path)`` writes PNG."""
 
-    def __init__(self, array: _np.ndarray, _still: Optional[dict] = None):
+    def __init__(self, array: np.ndarray, _still: Optional[dict] = None):
         self.array = _image_array(array)
         # For a still of a scene (rb.still), what the folder's manifest lists of it when saved:
         # its scene, view, initial spin and t.
