@@ -31,6 +31,7 @@ class Runs:
 
     def __init__(self, binary, folder):
         self.binary, self.folder = binary, Path(folder)
+        self._tables = []
 
     def _run(self, *args):
         return subprocess.run(
@@ -38,22 +39,29 @@ class Runs:
         ).stdout
 
     @functools.lru_cache(maxsize=None)
-    def analyze(self, scene, spin=None):
+    def analyze(self, scene, spin=None, sets=()):
+        """`rattleback analyze --json`; `sets` are --set's KEY=VALUE, as a page's commands give them."""
         extra = ["--spin", str(spin)] if spin is not None else []
+        for key_value in sets:
+            extra += ["--set", key_value]
         return json.loads(self._run("analyze", "--json", f"scenes/{scene}.yaml", *extra))
 
     @functools.lru_cache(maxsize=None)
-    def _simulate(self, scene):
-        table = self.folder / f"{scene}.csv"
-        self._run("simulate", "-q", f"scenes/{scene}.yaml", "-o", str(table))
+    def _simulate(self, scene, spin=None, sets=()):
+        table = self.folder / f"{scene}-{len(self._tables)}.csv"
+        self._tables.append(table)
+        extra = ["--spin", str(spin)] if spin is not None else []
+        for key_value in sets:
+            extra += ["--set", key_value]
+        self._run("simulate", "-q", f"scenes/{scene}.yaml", *extra, "-o", str(table))
         sidecar = json.loads(Path(str(table) + ".json").read_text())
         with open(table, newline="") as f:
             rows = list(csv.DictReader(f))
         return sidecar["result"], rows
 
-    def simulate(self, scene):
+    def simulate(self, scene, spin=None, sets=()):
         """The summary of `rattleback simulate` (its sidecar's "result")."""
-        return self._simulate(scene)[0]
+        return self._simulate(scene, spin, sets)[0]
 
     def column(self, scene, name):
         return [float(row[name]) for row in self._simulate(scene)[1]]
@@ -82,6 +90,18 @@ def energy_kept(r, scene):
     return max(abs(e - energy[0]) for e in energy) / abs(energy[0])
 
 
+def reversal(result):
+    """A first reversal as a page quotes it: its time, or "none"."""
+    first = result["first_reversal_s"]
+    return "none" if first is None else first
+
+
+# docs/getting-started.md "Make your own rattleback": the shipped body, mirrored, and deeper,
+# as the page's commands set them.
+MIRRORED = ("body.dents.at=[-0.73, 4.50]",)
+DEEPER = MIRRORED + ("body.dents.scale=0.6",)
+
+
 def status_count(r, name, status):
     return sum(1 for row in r.sweep(name) if row["status"].split(":")[0] == status)
 
@@ -103,6 +123,17 @@ CLAIMS = [
             lambda r: r.analyze("rattleback")["preferred"],
             lambda r: r.analyze("rattleback")["frequencies_hz"]["roll"],
             lambda r: r.analyze("rattleback")["frequencies_hz"]["pitch"],
+        ],
+    ),
+    (
+        "README.md",
+        "Spun clockwise at 5 rad/s, as here, it reverses at «2.3665» s; mirror the dents "
+        "(`at: [-0.73, 4.50]`) and it prefers «clockwise» instead",
+        [
+            lambda r: r.simulate("rattleback")["first_reversal_s"],
+            lambda r: {"cw": "clockwise", "ccw": "anticlockwise"}.get(
+                r.analyze("rattleback", sets=MIRRORED)["preferred"], "neither"
+            ),
         ],
     ),
     ("README.md", "# first reversal «2.3665» s", [lambda r: r.simulate("rattleback")["first_reversal_s"]]),
@@ -243,6 +274,39 @@ CLAIMS = [
             lambda r: r.analyze("rattleback")["frequencies_hz"]["roll"],
         ],
     ),
+    (
+        "docs/getting-started.md",
+        "| shipped: `at: [0.73, 4.50]`, `scale: 0.45` | «+2.22»° | «ccw» | first reversal «2.37» s | "
+        "«none» in 8 s |",
+        [
+            lambda r: r.analyze("rattleback")["misalignment_deg"],
+            lambda r: r.analyze("rattleback")["preferred"],
+            lambda r: reversal(r.simulate("rattleback")),
+            lambda r: reversal(r.simulate("rattleback", 5)),
+        ],
+    ),
+    (
+        "docs/getting-started.md",
+        "| mirrored: `at: [-0.73, 4.50]` | «−2.22»° | «cw» | «none» in 8 s | first reversal «2.32» s |",
+        [
+            lambda r: r.analyze("rattleback", sets=MIRRORED)["misalignment_deg"],
+            lambda r: r.analyze("rattleback", sets=MIRRORED)["preferred"],
+            lambda r: reversal(r.simulate("rattleback", -5, MIRRORED)),
+            lambda r: reversal(r.simulate("rattleback", 5, MIRRORED)),
+        ],
+    ),
+    (
+        "docs/getting-started.md",
+        "| mirrored and deeper: `scale: 0.6` | «−6.35»° | «cw» | first reversal «5.77» s (forecast «6.21» s) "
+        "| first reversal «0.83» s |",
+        [
+            lambda r: r.analyze("rattleback", sets=DEEPER)["misalignment_deg"],
+            lambda r: r.analyze("rattleback", sets=DEEPER)["preferred"],
+            lambda r: reversal(r.simulate("rattleback", -5, DEEPER)),
+            lambda r: r.analyze("rattleback", -5, DEEPER)["predicted_first_reversal"]["time_s"],
+            lambda r: reversal(r.simulate("rattleback", 5, DEEPER)),
+        ],
+    ),
     ("docs/scenes.md", "misalignment «+2.22»°", [lambda r: r.analyze("rattleback")["misalignment_deg"]]),
     (
         "docs/scenes.md",
@@ -353,6 +417,46 @@ CLAIMS = [
 ]
 
 
+# Scenes the pages show as a shipped scene's (page, the heading the ```yaml block follows, the
+# scene file): the block must be that file's scene, key for key and value for value (comments and
+# layout aside), so that the figures quoted beside it are its figures.
+SCENES = [("README.md", "## Scene files", "scenes/rattleback.yaml")]
+
+
+def numbers_as_floats(value):
+    if isinstance(value, dict):
+        return {k: numbers_as_floats(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [numbers_as_floats(v) for v in value]
+    if isinstance(value, int) and not isinstance(value, bool):
+        return float(value)
+    return value
+
+
+def check_scenes():
+    try:
+        import yaml
+    except ImportError:
+        return ["PyYAML is missing (Debian: python3-yaml; scripts/setup.sh installs it)"]
+    failures = []
+    for page, heading, scene in SCENES:
+        text = (ROOT / page).read_text()
+        found = re.search(re.escape(heading) + r"\n.*?```yaml\n(.*?)```", text, re.S)
+        if not found:
+            failures.append(f"{page}: no ```yaml block after {heading!r}")
+            continue
+        shown_scene = numbers_as_floats(yaml.safe_load(found.group(1)))
+        shipped = numbers_as_floats(yaml.safe_load((ROOT / scene).read_text()))
+        if shown_scene != shipped:
+            differ = sorted(
+                key for key in set(shown_scene) | set(shipped) if shown_scene.get(key) != shipped.get(key)
+            )
+            failures.append(
+                f"{page}: the scene after {heading!r} is not {scene}'s: they differ in {', '.join(differ)}"
+            )
+    return failures
+
+
 def shown(value, quoted):
     """`value` written as `quoted` is: the same digits, sign style and notation."""
     if isinstance(value, str):
@@ -406,14 +510,15 @@ def main(argv):
         print(__doc__)
         return 2
     with tempfile.TemporaryDirectory() as folder:
-        failures = check(Runs(str(Path(argv[0]).resolve()), folder))
+        failures = check(Runs(str(Path(argv[0]).resolve()), folder)) + check_scenes()
     for failure in failures:
         print(failure)
     count = sum(len(values) for _, _, values in CLAIMS)
     print(
-        f"{len(failures)} problems among {count} quoted figures"
+        f"{len(failures)} problems among {count} quoted figures and {len(SCENES)} quoted scenes"
         if failures
-        else f"all {count} quoted figures are the program's output"
+        else f"all {count} quoted figures are the program's output, and the {len(SCENES)} quoted "
+        "scenes the shipped ones"
     )
     return 1 if failures else 0
 

@@ -17,7 +17,7 @@ packages=(
   parallel slurm-wlm munge time
   libhdf5-dev python3-h5py
   pybind11-dev python3-dev python3-numpy python3-pytest python3-pandas python3-matplotlib
-  python3-nbclient python3-ipykernel python3-nbformat
+  python3-nbclient python3-ipykernel python3-nbformat python3-yaml
   mkdocs mkdocs-material
 )
 # The report's 3D player is bundled with node and npm (player/build.sh). Debian's nodejs and npm,

@@ -14,24 +14,27 @@ with ``KeyboardInterrupt``, leaving no temporary file.
 
 from __future__ import annotations
 
-import json
-import os
-import warnings
+# The modules and names this file uses go by private names, or are deleted at its end: the
+# package's namespace is its API (__all__), as dir() and an editor's completion list it.
+import json as _json
+import os as _os
+import warnings as _warnings
+from collections.abc import Mapping as _Mapping
 from typing import Any, Mapping, Optional, Sequence, Union
 
-import numpy as np
+import numpy as _np
 
 try:
     from . import _core
 except ImportError:  # the package's files laid out (at configure time), its modules not built
-    _here = os.path.dirname(os.path.abspath(__file__))
-    if any(name.startswith("_core.") and not name.endswith(".pyi") for name in os.listdir(_here)):
+    _here = _os.path.dirname(_os.path.abspath(__file__))
+    if any(name.startswith("_core.") and not name.endswith(".pyi") for name in _os.listdir(_here)):
         raise
     raise ImportError(
         f"rattleback's compiled modules are not built in {_here}: build them with "
         "`bash scripts/build.sh rattleback_python` (scripts/run.sh builds only the command)"
     ) from None
-from ._args import checked, refuse
+from ._args import checked as _checked, refuse as _refuse
 from ._errors import RunStopped, RunWarning, SceneError
 
 __all__ = [
@@ -58,16 +61,16 @@ __all__ = [
 
 __version__ = _core.version
 
-SceneLike = Union["Scene", str, os.PathLike, Mapping[str, Any]]
+SceneLike = Union["Scene", str, _os.PathLike, Mapping[str, Any]]
 
 
 def _yaml_value(value: Any) -> str:
     """A Python value as YAML flow text (JSON is YAML): numbers, strings, lists, dicts."""
-    if isinstance(value, np.generic):
+    if isinstance(value, _np.generic):
         value = value.item()
-    if isinstance(value, np.ndarray):
+    if isinstance(value, _np.ndarray):
         value = value.tolist()
-    return json.dumps(value, default=_yaml_value_default)
+    return _json.dumps(value, default=_yaml_value_default)
 
 
 class Scene:
@@ -88,27 +91,27 @@ class Scene:
         self._loaded = _core.load(yaml, name, list(self._values), {}, _file)
 
     @classmethod
-    @checked
+    @_checked
     def from_file(cls, path: Union[str, os.PathLike]) -> "Scene":
         """The scene in a YAML file (``scenes/rattleback.yaml``). A relative path that is not
         here is the installed copy's, as the command line finds it: the shipped scenes load by
         their names from any folder, and are named by the file read."""
-        path = _core.find_shipped(os.fspath(path))
+        path = _core.find_shipped(_os.fspath(path))
         return cls(_core.read_scene_file(path), path, _file=True)
 
     @classmethod
-    @checked
+    @_checked
     def from_yaml(cls, text: str, name: str = "<yaml>") -> "Scene":
         """A scene written as YAML text; ``name`` stands for the file in messages."""
         return cls(text, name)
 
     @classmethod
-    @checked
+    @_checked
     def from_dict(cls, scene: Mapping[str, Any], name: str = "<dict>") -> "Scene":
         """A scene as nested dicts, keyed as the file is (``{"body": {...}, ...}``). Its errors
         name ``name`` and the key; ``line`` is None (a dict has no lines)."""
         try:
-            return cls(json.dumps(scene, default=_yaml_value_default), name)
+            return cls(_json.dumps(scene, default=_yaml_value_default), name)
         except SceneError as e:
             if e.file == name:
                 # The dict was read as one line of JSON: neither the attribute nor the message
@@ -120,7 +123,7 @@ class Scene:
                 e.line = None
             raise
 
-    @checked
+    @_checked
     def with_values(self, values: Mapping[str, Any]) -> "Scene":
         """A copy with values put at dotted keys: ``{"initial.spin": -5,
         "contact.air_drag": 1e-5, "body.dents.at[0]": 0.3}``. A wrong key or value raises
@@ -136,7 +139,7 @@ class Scene:
     @property
     def values(self) -> dict[str, Any]:
         """The values put in with :meth:`with_values`, by key."""
-        return {k: json.loads(v) for k, v in self._values}
+        return {k: _json.loads(v) for k, v in self._values}
 
     @property
     def yaml(self) -> str:
@@ -172,9 +175,9 @@ class Scene:
 
 
 def _yaml_value_default(value: Any) -> Any:
-    if isinstance(value, np.generic):
+    if isinstance(value, _np.generic):
         return value.item()
-    if isinstance(value, np.ndarray):
+    if isinstance(value, _np.ndarray):
         return value.tolist()
     raise TypeError(f"{type(value).__name__} is not a scene value")
 
@@ -182,11 +185,11 @@ def _yaml_value_default(value: Any) -> Any:
 def _scene(scene: SceneLike) -> Scene:
     if isinstance(scene, Scene):
         return scene
-    if isinstance(scene, Mapping):
+    if isinstance(scene, _Mapping):
         return Scene.from_dict(scene)
-    if isinstance(scene, (str, os.PathLike)):
+    if isinstance(scene, (str, _os.PathLike)):
         return Scene.from_file(scene)
-    refuse("scene", scene)
+    _refuse("scene", scene)
 
 
 class Run:
@@ -292,27 +295,27 @@ class Run:
 
         return pd.DataFrame(self._columns)
 
-    @checked
+    @_checked
     def to_csv(self, path: Union[str, os.PathLike]) -> None:
         """Writes the command line's exact CSV at ``path`` and its sidecar at
         ``path + ".json"``, each whole or not at all."""
-        self._run.to_csv(os.fspath(path))
+        self._run.to_csv(_os.fspath(path))
 
-    @checked
+    @_checked
     def to_npz(self, path: Union[str, os.PathLike]) -> None:
         """Writes the columns as NumPy arrays at ``path`` (``.npz``: ``np.load(path)["spin"]``,
         the run's own doubles; ``contacts`` int64, ``mode`` text), with ``columns`` and
         ``units`` arrays naming each column and its unit, and the sidecar at ``path + ".json"``;
         as ``rattleback simulate -o RUN.npz``."""
-        self._run.to_npz(os.fspath(path))
+        self._run.to_npz(_os.fspath(path))
 
-    @checked
+    @_checked
     def to_hdf5(self, path: Union[str, os.PathLike]) -> None:
         """Writes the columns as HDF5 datasets at ``path`` (``.h5`` or ``.hdf5``: h5py's
         ``f["spin"][:]``, MATLAB's ``h5read(path, "/spin")``), each with ``unit`` and ``meaning``
         attributes, and the sidecar at ``path + ".json"``; as ``rattleback simulate -o RUN.h5``.
         """
-        self._run.to_hdf5(os.fspath(path))
+        self._run.to_hdf5(_os.fspath(path))
 
     def __reduce__(self):
         # Pickled as its samples and sidecar, exactly (every column, result, model and check,
@@ -332,7 +335,7 @@ class Run:
         return f"<Run {self.scene}: {len(self)} samples, {rev}>"
 
 
-@checked
+@_checked
 def simulate(
     scene: SceneLike,
     *,
@@ -377,11 +380,11 @@ def simulate(
     # What the command line's summary warns of, where a notebook shows it (a mass typed in grams ran
     # in silence, its warning only in run.result["warnings"]).
     for warning in run.result.get("warnings") or []:
-        warnings.warn(RunWarning(f"{run.scene}: {warning['text']}", warning.get("code")), stacklevel=3)
+        _warnings.warn(RunWarning(f"{run.scene}: {warning['text']}", warning.get("code")), stacklevel=3)
     return run
 
 
-@checked
+@_checked
 def analyze(scene: SceneLike, *, spin: Optional[float] = None, duration: Optional[float] = None) -> dict:
     """Mass properties, rest, contact limits, the linearised theory and the preferred
     direction: the dict ``rattleback analyze --json`` prints. ``spin`` (rad/s) is where the
@@ -393,14 +396,14 @@ def analyze(scene: SceneLike, *, spin: Optional[float] = None, duration: Optiona
 def _image_array(array: Any) -> np.ndarray:
     """`array` if it is an image the writer takes as it is: the writer cast any other dtype to
     uint8 without a word (0.5 → 0, black; 300 → 44)."""
-    if not isinstance(array, np.ndarray):
+    if not isinstance(array, _np.ndarray):
         raise TypeError(
             "argument array: takes an H×W×3 or H×W×4 uint8 NumPy array, not " f"{type(array).__name__}"
         )
     what = "argument array: an image is an H×W×3 or H×W×4 uint8 array"
     if array.ndim != 3 or array.shape[2] not in (3, 4):
         raise ValueError(f"{what}, not of shape {array.shape}")
-    if array.dtype != np.uint8:
+    if array.dtype != _np.uint8:
         if array.dtype.kind == "f":  # 0…1, as matplotlib's images are
             way_out = "np.clip(a * 255, 0, 255).astype(np.uint8)"
         elif array.dtype.kind == "b":
@@ -444,7 +447,7 @@ class Image:
     def _repr_png_(self) -> bytes:
         return self.png()
 
-    @checked
+    @_checked
     def save(self, path: Union[str, os.PathLike]) -> None:
         """Writes the image as PNG, whole or not at all (the command line's writer), at a name
         ending in ``.png`` (another raises ValueError, as ``still -o`` refuses it). A still
@@ -452,13 +455,13 @@ class Image:
         so that ``rattleback report`` shows it under Stills with its view, time and spin."""
         from . import _draw
 
-        _draw.write_png(os.fspath(path), self.array, self._still)
+        _draw.write_png(_os.fspath(path), self.array, self._still)
 
     def __repr__(self) -> str:
         return f"<Image {self.width}x{self.height}>"
 
 
-@checked(t="moment")
+@_checked(t="moment")
 def still(
     scene: SceneLike,
     t: Union[float, str] = 0.0,
@@ -503,10 +506,10 @@ def still(
 def _warn_leaves(loaded, leaves: Optional[str]) -> None:
     # What the command line warns of when the body goes out of the frame asked for.
     if leaves:
-        warnings.warn(RunWarning(f"{loaded.file}: {leaves}", "body_leaves_frame"), stacklevel=4)
+        _warnings.warn(RunWarning(f"{loaded.file}: {leaves}", "body_leaves_frame"), stacklevel=4)
 
 
-@checked
+@_checked
 def render(
     scene: SceneLike,
     output: Union[str, os.PathLike, None] = None,
@@ -537,7 +540,7 @@ def render(
         fps=fps, size=size, view=view, playback=playback, duration=duration, spin=spin, frame=frame
     )
     files, leaves = _draw.render(
-        loaded, "" if output is None else os.fspath(output), both, int(crf), preset, backend
+        loaded, "" if output is None else _os.fspath(output), both, int(crf), preset, backend
     )
     _warn_leaves(loaded, leaves)
     return files
@@ -547,3 +550,7 @@ from ._sweep import SweepTable, sweep  # noqa: E402
 from ._compare import Comparison, compare  # noqa: E402
 from ._simulation import Simulation, State  # noqa: E402
 from ._linearize import Linearization, linearize  # noqa: E402
+
+# The annotations above are text (from __future__ import annotations), read by editors and
+# help(); the names they use are not the API.
+del annotations, Any, Mapping, Optional, Sequence, Union, SceneLike
