@@ -172,7 +172,9 @@ void bindSimulation(py::module_& m) {
                  !(t <= s.run.current().t || sim::sameTime(t, s.run.current().t)))
                throw py::value_error(
                    "argument t: " + rb::show(t) + " s is outside the last step, [" +
-                   rb::show(s.run.previousTime()) + ", " + rb::show(s.run.current().t) + "] s");
+                   rb::show(s.run.previousTime()) + ", " + rb::show(s.run.current().t) +
+                   "] s: advance(t) goes on to a later time; copy() before stepping keeps a run "
+                   "to read earlier times from");
              return stateDict(s.run, t);
            })
       .def("step",

@@ -133,6 +133,14 @@ rb::Result<std::string> readSceneFile(const std::string& path) {
         if (it->is_regular_file(ec)) files.push_back(it->path().filename().string());
       if (const auto nearest = rb::nearestWord(named.filename().string(), files))
         near = "; did you mean " + printable((named.parent_path() / *nearest).string()) + "?";
+      // A relative name read from elsewhere than the user thought: say where it was looked
+      // for, and that the shipped scenes are found by name from any folder only where
+      // rattleback is installed (a build tree's Python did not find scenes/rattleback.yaml
+      // from another folder). ./ and ../ name this folder's only, as the user meant.
+      else if (named.is_relative() && !path.starts_with("./") && !path.starts_with("../"))
+        near = " (looked for in " + printable(std::filesystem::current_path(ec).string()) +
+               "; an installed rattleback also finds its shipped scenes/… and sweeps/… by name "
+               "from any folder: else give the file's full path)";
     }
     return fail(std::string("cannot open the scene file: ") + std::strerror(error) + near);
   }

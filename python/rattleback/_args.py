@@ -9,6 +9,7 @@ right type that the scene cannot use (``duration=-3``) is left to the library, w
 
 from __future__ import annotations
 
+import difflib
 import functools
 import inspect
 import numbers
@@ -205,6 +206,16 @@ def _check(name: str, value: Any, kind: Optional[str] = None) -> None:
                 )
 
 
+def _unknown_keyword(function: Callable, name: str, names: frozenset) -> None:
+    """Raises Python's own TypeError for a keyword `function` has not, with the nearest it has
+    (``analyze(spinn=3)``: did you mean spin?); without a near one, the call itself raises it."""
+    near = difflib.get_close_matches(name, sorted(names), n=1)
+    if near:
+        raise TypeError(
+            f"{function.__name__}() got an unexpected keyword argument {name!r}; did you mean {near[0]!r}?"
+        )
+
+
 def checked(function: Optional[Callable] = None, **kinds: str) -> Callable:
     """`function` with its arguments' types checked first, each by its name in _TAKES (a
     function with an argument not in it fails at import, so none goes unchecked), or by the
@@ -220,6 +231,7 @@ def checked(function: Optional[Callable] = None, **kinds: str) -> Callable:
     positional = [p.name for p in parameters if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)]
     optional = frozenset(p.name for p in parameters if p.default is None)
     names = frozenset(p.name for p in parameters)
+    open_ended = any(p.kind == p.VAR_KEYWORD for p in parameters)
 
     @functools.wraps(function)
     def call(*args, **kwargs):
@@ -227,7 +239,8 @@ def checked(function: Optional[Callable] = None, **kinds: str) -> Callable:
             if value is not None or name not in optional:
                 _check(name, value, kinds.get(name))
         for name, value in kwargs.items():
-            # A name the function has not is left to the call itself, whose TypeError names it.
+            if name not in names and not open_ended:
+                _unknown_keyword(function, name, names)
             if name in names and (value is not None or name not in optional):
                 _check(name, value, kinds.get(name))
         return function(*args, **kwargs)

@@ -119,6 +119,34 @@ def test_a_missing_file_is_a_scene_error():
         rb.simulate("no/such/scene.yaml")
 
 
+def test_a_relative_scene_not_found_says_where_it_was_looked_for(tmp_path, monkeypatch):
+    # A new user's first paste, scenes/rattleback.yaml, run from a folder of their own with a
+    # build tree's package (which has no installed scenes to fall back on).
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setenv("RATTLEBACK_ASSETS", str(tmp_path / "no-assets"))
+    with pytest.raises(rb.SceneError) as caught:
+        rb.Scene.from_file("scenes/mine.yaml")
+    assert f"(looked for in {tmp_path}; an installed rattleback also finds its shipped" in str(caught.value)
+    assert "else give the file's full path)" in str(caught.value)
+
+
+def test_an_unknown_keyword_names_the_nearest_one():
+    with pytest.raises(
+        TypeError, match=r"^analyze\(\) got an unexpected keyword argument 'spinn'; did you mean 'spin'\?$"
+    ):
+        rb.analyze(scene_path("rattleback.yaml"), spinn=3)
+    # Without a near one, Python's own message.
+    with pytest.raises(TypeError, match=r"unexpected keyword argument 'colour'$"):
+        rb.analyze(scene_path("rattleback.yaml"), colour=3)
+
+
+def test_reading_outside_the_last_step_says_the_way_out():
+    sim = rb.Simulation(scene_path("rattleback.yaml"), duration=1.0)
+    sim.advance(0.5)
+    with pytest.raises(ValueError, match=r"advance\(t\) goes on to a later time; copy\(\) before"):
+        sim.state_at(0.1)
+
+
 def test_a_run_that_stops_itself_raises_run_stopped():
     # Forward Euler at 5 ms on the rolling body gains energy until the watchdog stops it
     # (README: euler trips the 10 % energy bound at steps ≥ 0.5 ms).
