@@ -2278,6 +2278,25 @@ TEST(Cli, ReportCaptionsSayWhenAPreferredSpinReversedToo) {
   EXPECT_NE(said[1].find("<b>it reversed although the theory prefers this direction</b>"),
             std::string::npos)
       << said[1];
+  EXPECT_EQ(said[0].find("measured"), std::string::npos) << said[0];  // no run spun +5 yet
+
+  // Run the other way too, under another name: the reversing video's caption gives its result
+  // (a teacher simulated both ways and found it only under "Other runs"). A run of the scene
+  // with other values is another body, and never captions these videos.
+  const std::string other = (dir / "spun-the-other-way.csv").string();
+  ASSERT_EQ(
+      rattleback("simulate " + scene("rattleback") + dents + " --spin 5 -q -o " + other).status, 0);
+  ASSERT_EQ(rattleback("simulate " + scene("rattleback") + " --spin 4 -q -o " +
+                       (dir / "another-body.csv").string())
+                .status,
+            0);
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  const std::vector<std::string> both = captions((dir / "index.html").string());
+  ASSERT_EQ(both.size(), 2u);
+  EXPECT_NE(both[0].find("measured (<code>simulate</code>, +5 rad/s): <b>reversed at 0.828 s"),
+            std::string::npos)
+      << both[0];
+  EXPECT_NE(both[1].find("reversed at 5.77"), std::string::npos) << both[1];
 }
 
 // A backend from the environment that is not one is named as the environment's, not as an

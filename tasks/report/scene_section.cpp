@@ -63,6 +63,21 @@ void writeMoreRuns(std::ostream& out, const fs::path& dir, const SceneFiles& f) 
   out << "</table>\n";
 }
 
+// The main run and the other runs of the same scene file and values (another file's, or one
+// with other values, is another body), the main one first.
+std::vector<RunRecord> runsOfTheScene(const fs::path& dir, const SceneFiles& f,
+                                      const std::optional<RunRecord>& main) {
+  std::vector<RunRecord> runs;
+  if (main) runs.push_back(*main);
+  for (const std::string& csv : f.more_runs) {
+    std::optional<RunRecord> run = readRunRecord(dir / (csv + ".json"));
+    if (run && (!main || (run->scene_fingerprint == main->scene_fingerprint &&
+                          run->scene_values == main->scene_values)))
+      runs.push_back(std::move(*run));
+  }
+  return runs;
+}
+
 // Theory (analyze --json) beside what the run measured (simulate's sidecar).
 void writeAnalysis(std::ostream& out, const SceneFiles& f,
                    const std::optional<nlohmann::json>& theory,
@@ -166,7 +181,7 @@ void writeScene(std::ostream& out, const fs::path& dir, const std::string& name,
   if (f.has(".csv.json")) run = readRunRecord(dir / f.at(".csv.json"));
   const std::optional<nlohmann::json> theory = theoryOf(dir, f, run);
   writeOtherVersions(out, f, run);
-  writeVideos(out, f, theory, run);
+  writeVideos(out, f, theory, runsOfTheScene(dir, f, run));
   if (player) writePlayerPlace(out, name, theory);
   writeAnalysis(out, f, theory, run);
   writeMoreRuns(out, dir, f);

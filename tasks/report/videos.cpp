@@ -14,8 +14,16 @@ constexpr const char* kReversingWay = "the theory predicts it rocks, stops and s
 struct Videos {
   std::ostream& out;
   const SceneFiles& f;
-  const std::optional<RunRecord>& run;
+  const std::vector<RunRecord>& runs;
   std::optional<bool> ccw_preferred;  ///< the preferred direction as analyze found it
+
+  // The first run spun counter-clockwise (`ccw`) or clockwise: a teacher who simulated both
+  // ways under two names found the reversing video's caption without its run's result.
+  std::optional<RunRecord> runSpun(bool ccw) const {
+    for (const RunRecord& r : runs)
+      if (r.initial_spin && *r.initial_spin != 0 && (*r.initial_spin > 0) == ccw) return r;
+    return std::nullopt;
+  }
 
   // A video's poster is its own first frame (NAME-reversed.png for NAME-reversed.mp4, as the
   // main job renders with `still --spin`), when the run left one; otherwise the browser shows
@@ -30,7 +38,9 @@ struct Videos {
 
   // What the run measured, where it was spun the way (`preferred` or not) a video was.
   std::string measured(bool preferred) const {
-    return ccw_preferred ? measuredAs(run, preferred == *ccw_preferred, preferred) : std::string();
+    if (!ccw_preferred) return "";
+    const bool ccw = preferred == *ccw_preferred;
+    return measuredAs(runSpun(ccw), ccw, preferred);
   }
 
   // A video's spin as the manifest lists it: none where it does not (or says 0).
@@ -71,7 +81,7 @@ struct Videos {
       if (f.has(std::string(suffix) + ".mp4"))
         video(f.at(std::string(suffix) + ".mp4"), std::string(suffix) + ".png",
               std::string("Spun <b>") + (ccw ? "counter-clockwise" : "clockwise") +
-                  "</b>: the theory prefers neither direction" + measuredAs(run, ccw));
+                  "</b>: the theory prefers neither direction" + measuredAs(runSpun(ccw), ccw));
     out << "</div>\n";
   }
 
@@ -85,8 +95,9 @@ struct Videos {
       caption = "Spun <b>" + spinWords(*spin) + "</b> (" + rads(*spin) + ")";
       if (ccw_preferred)
         caption += ": " + std::string(ccw == *ccw_preferred ? kPreferredWay : kReversingWay);
-      caption += measuredAs(
-          run, ccw, ccw_preferred ? std::optional<bool>(ccw == *ccw_preferred) : std::nullopt);
+      caption +=
+          measuredAs(runSpun(ccw), ccw,
+                     ccw_preferred ? std::optional<bool>(ccw == *ccw_preferred) : std::nullopt);
     }
     video(f.at(".mp4"), "-single.png", caption);
   }
@@ -95,8 +106,8 @@ struct Videos {
 }  // namespace
 
 void writeVideos(std::ostream& out, const SceneFiles& f,
-                 const std::optional<nlohmann::json>& theory, const std::optional<RunRecord>& run) {
-  Videos videos{out, f, run, std::nullopt};
+                 const std::optional<nlohmann::json>& theory, const std::vector<RunRecord>& runs) {
+  Videos videos{out, f, runs, std::nullopt};
   // The preferred direction as analyze found it (render --both names its videos the same way).
   if (theory) {
     const nlohmann::json& preferred = field(*theory, "preferred");

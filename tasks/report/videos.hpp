@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <ostream>
+#include <vector>
 
 #include "tasks/report/inventory.hpp"
 #include "tasks/report/sidecars.hpp"
@@ -14,8 +15,10 @@
 namespace tasks::report {
 
 /// The scene's videos: the preferred and reversed pair, the clockwise and counter-clockwise
-/// pair, a video alone, and a link to both side by side. `theory` is analyze --json's.
+/// pair, a video alone, and a link to both side by side. `theory` is analyze --json's; `runs`
+/// are simulate's runs of the scene as it was rendered, the main one first: each video's
+/// caption gives what the first run spun its way measured.
 void writeVideos(std::ostream& out, const SceneFiles& f,
-                 const std::optional<nlohmann::json>& theory, const std::optional<RunRecord>& run);
+                 const std::optional<nlohmann::json>& theory, const std::vector<RunRecord>& runs);
 
 }  // namespace tasks::report
