@@ -12,7 +12,14 @@ namespace {
 using rb::show;
 
 std::string at(const Eigen::Vector3d& p) {
-  return "(" + show(p.x()) + ", " + show(p.y()) + ", " + show(p.z()) + ")";
+  // Appended piece by piece: GCC 12's -Wrestrict misreads "(" + std::string.
+  std::string out = "(";
+  out += show(p.x());
+  out += ", ";
+  out += show(p.y());
+  out += ", ";
+  out += show(p.z());
+  return out += ")";
 }
 
 }  // namespace

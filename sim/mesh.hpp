@@ -1,4 +1,4 @@
-// A body given as a closed triangle mesh (issue 46): its exact mass properties by the divergence
+// A body given as a closed triangle mesh: its exact mass properties by the divergence
 // theorem (docs/physics.md §P11) and the checks a mesh must pass before they mean anything.
 // Lengths are whatever the vertices are in (the scene's file units until scaled to metres).
 #pragma once
