@@ -153,6 +153,9 @@ void printBody(std::FILE* out, const std::string& scene, const tasks::Analysis& 
   if (a.paraboloid)
     std::fprintf(out, "points           %lld in all, %zu on the surface (%zu top, %zu bottom)\n",
                  static_cast<long long>(a.census.points), top + bottom, top, bottom);
+  else if (a.mesh)
+    std::fprintf(out, "points           %zu sampled from the mesh (%zu top, %zu bottom)\n",
+                 top + bottom, top, bottom);
   else
     std::fprintf(out,
                  "points           %zu drawn on the surface (%zu top, %zu bottom); the mass "
@@ -244,6 +247,12 @@ void writeAnalysis(std::FILE* out, const AnalyzeArgs& args, const sim::Model& mo
   printBody(out, args.scene, a);
   printInertia(out, a);
   printContact(out, a);
+  if (a.mesh) {
+    std::fprintf(out,
+                 "theory           none for a mesh body yet: the rest, frequencies, growth rates "
+                 "and forecast need a smooth bottom (docs/physics.md §P11)\n");
+    return;
+  }
   printRest(out, a);
   printGrowth(out, a);
   printPreferred(out, a);

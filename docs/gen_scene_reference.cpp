@@ -30,6 +30,8 @@ std::string defaultColumn(const scene::Key& key) {
       return "required (paraboloid)";
     case scene::Need::Ellipsoid:
       return "required (ellipsoid)";
+    case scene::Need::Mesh:
+      return "required (mesh)";
     case scene::Need::UnlessRolling:
       return "required unless `model: rolling`";
     case scene::Need::Optional:
@@ -51,7 +53,9 @@ std::string checkColumn(const scene::Key& key) {
   if (!key.check.empty()) out += (out.empty() ? "" : "; ") + std::string(key.check);
   if (key.shape != scene::Shape::Any)
     out += (out.empty() ? "" : "; ") + std::string("only with ") +
-           code(key.shape == scene::Shape::Paraboloid ? "shape: paraboloid" : "shape: ellipsoid");
+           (key.shape == scene::Shape::EllipsoidOrMesh
+                ? code("shape: ellipsoid") + " or " + code("shape: mesh")
+                : code("shape: " + scene::shapeWords(key.shape)));
   return out;
 }
 

@@ -20,9 +20,9 @@ std::vector<std::string_view> namesOf() {
   return names;
 }
 
-// body.shape has no enum: sim/compile.cpp compares the word with these two.
+// body.shape has no enum: sim/compile.cpp compares the word with these three.
 std::vector<std::string_view> shapeNames() {
-  return {"paraboloid", "ellipsoid"};
+  return {"paraboloid", "ellipsoid", "mesh"};
 }
 
 // The member of a scene that a key fills: `FIELD(spec.body.mass)`.
@@ -178,12 +178,35 @@ const std::vector<Key>& table() {
        .doc = "the ellipsoid's centre relative to the CM",
        .check = "finite; the CM within the ellipsoid: Σ (center / semi_axes)² < 1",
        .sample = "[0, 0, 0.01]"},
+      {.path = "body.mesh",
+       .need = Need::Mesh,
+       .shape = Shape::Mesh,
+       .doc = "a closed triangle mesh from a file (§P11); contact.model points only, for now",
+       .example = "mesh: {file: toy.stl} (binary or ASCII STL, or OBJ)"},
+      {.path = "body.mesh.file",
+       .field = FIELD(spec.body.mesh.file),
+       .need = Need::Always,
+       .unit = "its numbers in file units",
+       .doc = "the mesh file, STL (binary or ASCII) or OBJ, relative to the scene file; uniform "
+              "density unless `center_of_mass` and `inertia` are given",
+       .check = "closed, wound outwards (refused inside out), no faces of zero area, 5 mm … 2 m "
+                "long in metres (§P11.2)",
+       .sample = "meshes/box.obj"},
+      {.path = "body.center_of_mass",
+       .field = FIELD(spec.body.center_of_mass),
+       .shape = Shape::Mesh,
+       .unit = "file units, the mesh's frame",
+       .doc = "the CM of a weighted body",
+       .check = "finite; within the mesh's box",
+       .sample = "[0.1, 0.2, 0.3]",
+       .default_note = "the uniform solid's"},
       {.path = "body.inertia",
        .field = FIELD(spec.body.inertia),
        .need = Need::Ellipsoid,
-       .shape = Shape::Ellipsoid,
+       .shape = Shape::EllipsoidOrMesh,
        .unit = "kg m², about the CM, body axes",
-       .doc = "the inertia tensor",
+       .doc = "the inertia tensor (a mesh body: optional, for a weighted body; all zeros: the "
+              "uniform solid's)",
        .check = "finite; symmetric, positive definite, each principal moment at most the sum of "
                 "the others",
        .sample = "[[1.6e-3, -2.0e-5, 0.0], [-2.0e-5, 2.0e-4, 0.0], [0.0, 0.0, 1.7e-3]]",
@@ -456,9 +479,11 @@ bool requiredIn(const Key& key, const sim::SceneSpec& spec) {
     case Need::Always:
       return true;
     case Need::Paraboloid:
-      return spec.body.shape != "ellipsoid";
+      return spec.body.shape != "ellipsoid" && spec.body.shape != "mesh";
     case Need::Ellipsoid:
       return spec.body.shape == "ellipsoid";
+    case Need::Mesh:
+      return spec.body.shape == "mesh";
     case Need::UnlessRolling: {
       const auto model = rb::parseName<sim::ContactModel>(spec.contact.model);
       return model && !sim::heldOnFloor(*model);
@@ -474,8 +499,36 @@ std::string requiredMessage(const Key& key) {
 }
 
 bool belongsTo(const Key& key, const sim::BodySpec& body) {
-  const bool ellipsoid = body.shape == "ellipsoid";
-  return key.shape == Shape::Any || ellipsoid == (key.shape == Shape::Ellipsoid);
+  const bool ellipsoid = body.shape == "ellipsoid", mesh = body.shape == "mesh";
+  switch (key.shape) {
+    case Shape::Any:
+      return true;
+    case Shape::Paraboloid:
+      return !ellipsoid && !mesh;  // a misspelt shape is taken for the default
+    case Shape::Ellipsoid:
+      return ellipsoid;
+    case Shape::Mesh:
+      return mesh;
+    case Shape::EllipsoidOrMesh:
+      return ellipsoid || mesh;
+  }
+  return false;
+}
+
+std::string shapeWords(Shape shape) {
+  switch (shape) {
+    case Shape::Any:
+      return "any";
+    case Shape::Paraboloid:
+      return "paraboloid";
+    case Shape::Ellipsoid:
+      return "ellipsoid";
+    case Shape::Mesh:
+      return "mesh";
+    case Shape::EllipsoidOrMesh:
+      return "ellipsoid or mesh";
+  }
+  return "";
 }
 
 }  // namespace scene

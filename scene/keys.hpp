@@ -28,11 +28,14 @@ enum class Need {
   Always,
   Paraboloid,     ///< with body.shape paraboloid (the default)
   Ellipsoid,      ///< with body.shape: ellipsoid
+  Mesh,           ///< with body.shape: mesh
   UnlessRolling,  ///< unless contact.model: rolling (a misspelt model is reported as such)
 };
 
-/// The shape a body key belongs to: the other shape's keys are refused ("belongs to shape: …").
-enum class Shape { Any, Paraboloid, Ellipsoid };
+/// The shape a body key belongs to: the other shapes' keys are refused ("belongs to shape: …").
+enum class Shape { Any, Paraboloid, Ellipsoid, Mesh, EllipsoidOrMesh };
+/// The words of body.shape a key of `shape` belongs to: "paraboloid", "ellipsoid or mesh", ….
+std::string shapeWords(Shape shape);
 
 /// One key of the scene file.
 struct Key {

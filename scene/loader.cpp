@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
+#include <memory>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -12,6 +14,7 @@
 
 #include "scene/key_path.hpp"
 #include "scene/keys.hpp"
+#include "scene/mesh_file.hpp"
 #include "scene/tree.hpp"
 #include "sim/model.hpp"
 #include "util/nearest.hpp"
@@ -265,8 +268,7 @@ class MapReader {
 void checkKey(MapReader& reader, const Key& key, Loaded& out) {
   const std::string name(nameIn(key.path));
   if (reader.has(name) && !belongsTo(key, out.spec.body))
-    reader.fail(name, key.shape == Shape::Ellipsoid ? "belongs to shape: ellipsoid"
-                                                    : "belongs to shape: paraboloid");
+    reader.fail(name, "belongs to shape: " + shapeWords(key.shape));
   if (requiredIn(key, out.spec)) reader.require(key);
   reader.read(name, key.field);
 }
@@ -316,6 +318,25 @@ rb::Error setBy(const std::string& place, const std::string& set_key, const rb::
   rb::Error e{"", printable(place + ": " + (alone ? "" : error.key + " ") + error.message)};
   e.where = rb::Error::Where{place, 0, error.key};
   return e;
+}
+
+// body.mesh.file, relative to the scene file, read into the spec (scene/mesh_file.hpp): an error
+// names the scene's file, line and key, then the mesh file and its cause.
+std::optional<rb::Error> readBodyMesh(Loaded& out,
+                                      const std::map<std::string, std::string>& places) {
+  sim::MeshSpec& mesh = out.spec.body.mesh;
+  std::filesystem::path path(mesh.file);
+  if (path.is_relative()) path = std::filesystem::path(out.file).parent_path() / path;
+  auto read = readMesh(path.string());
+  if (read) {
+    mesh.data = std::make_shared<const sim::TriangleMesh>(std::move(read).value());
+    return std::nullopt;
+  }
+  const rb::Error error{"body.mesh.file", read.error().message};
+  if (const auto place = places.find(error.key); place != places.end())
+    return setBy(place->second, error.key, error);
+  const auto line = out.lines.find(error.key);
+  return located(out.file, line == out.lines.end() ? 0 : line->second, error.key, error.message);
 }
 
 }  // namespace
@@ -374,6 +395,8 @@ rb::Result<Loaded> loadTree(const YAML::Node& root_node, const std::string& name
   } catch (const YAML::Exception& e) {
     return malformed(name, e);
   }
+  if (out.spec.body.shape == "mesh")
+    if (auto e = readBodyMesh(out, places)) return *e;
   return out;
 }
 

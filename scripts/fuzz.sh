@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Fuzzes the scene loader and compile(), then the snapshot suite reader, with libFuzzer (clang,
-# ASan + UBSan) for a bounded time each (the reader a third of it, at least 10 s), starting from
-# the corpora in tests/fuzz-corpus and tests/fuzz-corpus-snapshot (copied: the run adds inputs to
-# a scratch corpus, never to the repository). Usage: scripts/fuzz.sh [seconds, default 60]
+# Fuzzes the scene loader and compile(), then the snapshot suite reader and the mesh reader, with
+# libFuzzer (clang, ASan + UBSan) for a bounded time each (each reader a third of it, at least
+# 10 s), starting from the corpora in tests/fuzz-corpus, tests/fuzz-corpus-snapshot and
+# tests/fuzz-corpus-mesh (copied: the run adds inputs to a scratch corpus, never to the
+# repository). Usage: scripts/fuzz.sh [seconds, default 60]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
@@ -12,7 +13,7 @@ if [ ! -f build-fuzz/CMakeCache.txt ]; then
   cmake -S . -B build-fuzz "${generator[@]}" -DRATTLEBACK_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCMAKE_CXX_COMPILER=clang++ >/dev/null
 fi
-cmake --build build-fuzz --parallel "$(nproc)" --target loader_fuzz snapshot_fuzz
+cmake --build build-fuzz --parallel "$(nproc)" --target loader_fuzz snapshot_fuzz mesh_fuzz
 
 # fuzz TARGET CORPUS SECONDS [libFuzzer options…]
 fuzz() {
@@ -42,3 +43,4 @@ fuzz() {
 
 fuzz loader_fuzz tests/fuzz-corpus "$seconds" -dict=fuzz/scene.dict
 fuzz snapshot_fuzz tests/fuzz-corpus-snapshot "$(( seconds / 3 > 10 ? seconds / 3 : 10 ))"
+fuzz mesh_fuzz tests/fuzz-corpus-mesh "$(( seconds / 3 > 10 ? seconds / 3 : 10 ))"

@@ -12,7 +12,7 @@ packages=(
   ffmpeg gnuplot-nox
   dpkg-dev
   clang libclang-rt-14-dev clang-format black
-  libboost-dev nlohmann-json3-dev
+  libboost-dev nlohmann-json3-dev libtinyobjloader-dev
   chromium chromium-driver python3-selenium
   parallel slurm-wlm munge time
   libhdf5-dev python3-h5py

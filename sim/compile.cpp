@@ -9,6 +9,7 @@
 #include "sim/contact_model.hpp"
 #include "sim/continuum.hpp"
 #include "sim/initial.hpp"
+#include "sim/mesh_body.hpp"
 #include "sim/stability.hpp"
 #include "util/arguments.hpp"
 #include "util/format.hpp"
@@ -98,10 +99,14 @@ std::optional<rb::Error> checkEllipsoid(const BodySpec& b) {
 
 std::optional<rb::Error> checkBody(const BodySpec& b) {
   if (b.shape == "ellipsoid") return checkEllipsoid(b);
+  if (b.shape == "mesh") {
+    if (auto e = checkMeshBody(b)) return e;
+    return b.inertia == Matrix3Spec{} ? std::nullopt : checkInertia(b.inertia);
+  }
   if (b.shape != "paraboloid") {
-    const std::vector<std::string_view> shapes = {"paraboloid", "ellipsoid"};
+    const std::vector<std::string_view> shapes = {"paraboloid", "ellipsoid", "mesh"};
     const std::optional<std::string> nearest = rb::nearestWord(b.shape, shapes);
-    return rb::Error{"body.shape", "must be paraboloid or ellipsoid, not '" + b.shape + "'" +
+    return rb::Error{"body.shape", "must be paraboloid, ellipsoid or mesh, not '" + b.shape + "'" +
                                        (nearest ? "; did you mean " + *nearest + "?" : "")};
   }
   if (auto e = checkParaboloid(b.paraboloid)) return e;
@@ -322,6 +327,7 @@ Body buildEllipsoid(const BodySpec& b, double unit) {
 // Mass properties from the shape or the grid; surface points moved to the CM, in SI units.
 rb::Result<Body> buildBody(const BodySpec& b, double unit, MassSource source, bool contact_points) {
   if (b.shape == "ellipsoid") return buildEllipsoid(b, unit);
+  if (b.shape == "mesh") return buildMeshBody(b, unit);
   const ParaboloidSpec& p = b.paraboloid;
   const Paraboloid shape(p.a * unit, p.p, p.q * unit, p.s, p.top * unit);
   const Grid grid{b.grid.dx * unit, b.grid.dy * unit, b.grid.dz * unit};
@@ -421,6 +427,13 @@ rb::Result<Model> compileRun(const SceneSpec& spec, std::shared_ptr<const Body> 
   if (auto e = checkContact(spec.contact)) return *e;
   if (auto e = checkRest(spec)) return *e;
 
+  // A mesh body is faceted: the smooth models need a smooth bottom, which it does not have yet
+  // (docs/physics.md §P11).
+  if (body->surface.kind == Surface::Kind::Mesh && spec.contact.model != "points")
+    return rb::Error{"contact.model",
+                     "must be points for a mesh body (body.shape: mesh): " + spec.contact.model +
+                         " touches a smooth bottom, and a mesh has none yet; use contact.model: "
+                         "points"};
   Model model;
   model.body = std::move(body);
   model.length_unit = spec.units.length;

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -48,11 +49,26 @@ struct EllipsoidSpec {
 
 using Matrix3Spec = std::array<std::array<double, 3>, 3>;
 
+struct TriangleMesh;
+
+/// body.mesh: a closed triangle mesh from a file (docs/physics.md §P11).
+struct MeshSpec {
+  std::string file;  ///< STL or OBJ, relative to the scene file; its numbers in file units
+  /// The file's mesh as the scene loader read it (scene/mesh_file.hpp), file units; null until
+  /// read.
+  std::shared_ptr<const TriangleMesh> data;
+};
+
 struct BodySpec {
-  std::string shape = "paraboloid";  ///< paraboloid | ellipsoid
+  std::string shape = "paraboloid";  ///< paraboloid | ellipsoid | mesh
   ParaboloidSpec paraboloid;
   EllipsoidSpec ellipsoid;
-  Matrix3Spec inertia{};           ///< ellipsoid: kg m², about the CM, body axes
+  MeshSpec mesh;
+  /// mesh: the CM of a weighted toy, file units in the mesh's frame; unset: the uniform solid's.
+  std::array<double, 3> center_of_mass{kUnset, kUnset, kUnset};
+  /// ellipsoid, and optionally mesh (all zeros: the uniform solid's): kg m², about the CM, body
+  /// axes.
+  Matrix3Spec inertia{};
   std::optional<DentsSpec> dents;  ///< absent: no dents
   GridSpec grid;
   /// paraboloid: where the mass properties come from: "continuum" (the shape's volume, exact)

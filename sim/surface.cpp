@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <limits>
 
 namespace sim {
 
@@ -22,17 +23,33 @@ PointAndRate Ellipsoid::lowestPointMoving(const Eigen::Vector3d& down,
   return out;
 }
 
+Eigen::Vector3d MeshSurface::lowestPoint(const Eigen::Vector3d& down) const {
+  Eigen::Vector3d lowest = Eigen::Vector3d::Zero();
+  double reach = -std::numeric_limits<double>::infinity();
+  for (const Eigen::Vector3d& p : points)
+    if (p.dot(down) > reach) {
+      reach = p.dot(down);
+      lowest = p;
+    }
+  return lowest;
+}
+
 Eigen::Vector3d Surface::lowestPoint(const Eigen::Vector3d& down) const {
+  if (kind == Kind::Mesh) return mesh.lowestPoint(down);
   return kind == Kind::Ellipsoid ? ellipsoid.lowestPoint(down) : paraboloid.lowestPointOfBody(down);
 }
 
 PointAndRate Surface::lowestPointMoving(const Eigen::Vector3d& down,
                                         const Eigen::Vector3d& down_rate) const {
+  // A mesh's lowest point jumps from sample to sample: no rate (no smooth contact uses it).
+  if (kind == Kind::Mesh) return {mesh.lowestPoint(down), Eigen::Vector3d::Zero()};
   return kind == Kind::Ellipsoid ? ellipsoid.lowestPointMoving(down, down_rate)
                                  : paraboloid.lowestPointMoving(down, down_rate);
 }
 
 Eigen::Vector2d Surface::radiiAtBottom() const {
+  if (kind == Kind::Mesh)
+    return Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN());
   if (kind == Kind::Ellipsoid) {
     // At (0, 0, −c) the radii are a²/c and b²/c.
     const Eigen::Vector3d& e = ellipsoid.semi_axes;
@@ -49,11 +66,14 @@ Eigen::Vector2d Surface::radiiAtBottom() const {
 }
 
 Eigen::Vector2d Surface::footprintHalf() const {
+  if (kind == Kind::Mesh)
+    return mesh.low.head<2>().cwiseAbs().cwiseMax(mesh.high.head<2>().cwiseAbs());
   return kind == Kind::Ellipsoid ? Eigen::Vector2d(ellipsoid.semi_axes.head<2>())
                                  : paraboloid.rimHalfWidths();
 }
 
 Eigen::Vector3d Surface::boxLow() const {
+  if (kind == Kind::Mesh) return mesh.low;
   // The paraboloid's lowest point is its apex, z = −a, at the origin (H is positive definite).
   return kind == Kind::Ellipsoid
              ? Eigen::Vector3d(-ellipsoid.semi_axes)
@@ -61,6 +81,7 @@ Eigen::Vector3d Surface::boxLow() const {
 }
 
 Eigen::Vector3d Surface::boxHigh() const {
+  if (kind == Kind::Mesh) return mesh.high;
   return kind == Kind::Ellipsoid
              ? Eigen::Vector3d(ellipsoid.semi_axes)
              : Eigen::Vector3d(footprintHalf().x(), footprintHalf().y(), paraboloid.top);

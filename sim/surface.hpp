@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <vector>
 
 #include "sim/body.hpp"
 
@@ -18,11 +19,23 @@ struct Ellipsoid {
                                  const Eigen::Vector3d& down_rate) const;
 };
 
+/// A mesh body's surface (docs/physics.md §P11): the points sampled from it (sim/mesh_body.hpp),
+/// its box and its volume; geometric frame (the mesh file's, in metres), m and m³. Faceted: the
+/// smooth contacts do not touch it (compile refuses them), only `points` does.
+struct MeshSurface {
+  std::vector<Eigen::Vector3d> points;
+  Eigen::Vector3d low = Eigen::Vector3d::Zero(), high = Eigen::Vector3d::Zero();
+  double volume = 0;
+  /// The sampled point lowest along `down` (the largest p·down), m.
+  Eigen::Vector3d lowestPoint(const Eigen::Vector3d& down) const;
+};
+
 struct Surface {
-  enum class Kind { Paraboloid, Ellipsoid };
+  enum class Kind { Paraboloid, Ellipsoid, Mesh };
   Kind kind = Kind::Paraboloid;
   Paraboloid paraboloid{1, 1, 0, 1, 0};
   Ellipsoid ellipsoid{Eigen::Vector3d::Ones()};
+  MeshSurface mesh;
 
   /// The point lowest along `down` (unit, geometric frame), m.
   Eigen::Vector3d lowestPoint(const Eigen::Vector3d& down) const;
@@ -35,7 +48,8 @@ struct Surface {
   /// two share their divisions), m and m/s.
   PointAndRate lowestPointMoving(const Eigen::Vector3d& down,
                                  const Eigen::Vector3d& down_rate) const;
-  /// Principal radii of curvature at the point lowest when upright, ascending, m.
+  /// Principal radii of curvature at the point lowest when upright, ascending, m (NaN for a mesh,
+  /// which has no smooth bottom yet).
   Eigen::Vector2d radiiAtBottom() const;
   /// Half extents of the outline seen from above, across (x) and along (y), m.
   Eigen::Vector2d footprintHalf() const;

@@ -77,8 +77,9 @@ struct GrowthAt {
 /// (analysisJson) and Python's analyze() only format it. Lengths in m unless said.
 struct Analysis {
   // The body.
-  double length_unit = 1;                 ///< m per file unit (units.length)
-  bool paraboloid = false;                ///< points on a grid; else an ellipsoid's (scene's)
+  double length_unit = 1;   ///< m per file unit (units.length)
+  bool paraboloid = false;  ///< points on a grid; else an ellipsoid's (scene's)
+  bool mesh = false;  ///< a mesh body: points sampled from it, and no theory (no smooth bottom yet)
   sim::GridCensus census;                 ///< the grid's points (total for a paraboloid only)
   std::string mass_source;                ///< massSourceText
   std::optional<double> dents_cut_share;  ///< dentsCutShare

@@ -483,7 +483,7 @@ TEST(Cli, TyposGetTheHintsTheyNeed) {
   EXPECT_EQ(typo.err, bare.string() +
                           ":2: body.mas is not a known key; did you mean mass? (known "
                           "here: shape, paraboloid, dents, grid, mass_properties, "
-                          "mass, ellipsoid, inertia)\n");
+                          "mass, ellipsoid, mesh, center_of_mass, inertia)\n");
   std::ofstream(bare) << "units: {length: 0.01}\n";
   const Result missing = rattleback("analyze " + bare.string());
   EXPECT_NE(missing.err.find("body is required"), std::string::npos) << missing.err;

@@ -29,8 +29,9 @@ bool excluded(const std::string& path, const std::string& shape,
     const std::string prefix = path.substr(0, end);
     if (leave_out.count(prefix)) return true;
     const scene::Key* key = scene::findKey(prefix);
-    const bool other = key->shape != scene::Shape::Any &&
-                       (key->shape == scene::Shape::Ellipsoid) != (shape == "ellipsoid");
+    sim::BodySpec body;
+    body.shape = shape;
+    const bool other = !scene::belongsTo(*key, body);
     if (other && prefix != also) return true;
     if (end == std::string::npos) return false;
   }
@@ -77,9 +78,12 @@ std::string sampleScene(const std::string& shape, const std::set<std::string>& l
 std::string normal(const std::string& yaml) {
   std::string out;
   for (std::size_t i = 0; i < yaml.size();) {
-    if (std::string("+-.0123456789").find(yaml[i]) != std::string::npos) {
-      char* end = nullptr;
-      const double v = std::strtod(yaml.c_str() + i, &end);
+    char* end = nullptr;
+    const double v = std::strtod(yaml.c_str() + i, &end);
+    // A number where one starts; a '.' or '-' that starts none (a file's ".obj") is a letter:
+    // taken as a number that read nothing, it held i in place forever.
+    if (std::string("+-.0123456789").find(yaml[i]) != std::string::npos &&
+        end != yaml.c_str() + i) {
       char text[32];
       out.append(text, std::to_chars(text, text + sizeof text, v).ptr);
       i = end - yaml.c_str();
@@ -96,10 +100,22 @@ bool endsWith(const std::string& text, const std::string& end) {
 }
 
 std::string shapeOf(const scene::Key& key) {
-  return key.shape == scene::Shape::Ellipsoid || key.need == scene::Need::Ellipsoid ||
-                 key.path.starts_with("body.ellipsoid")
+  if (key.shape == scene::Shape::Mesh || key.need == scene::Need::Mesh ||
+      key.path.starts_with("body.mesh"))
+    return "mesh";
+  return key.shape == scene::Shape::Ellipsoid || key.shape == scene::Shape::EllipsoidOrMesh ||
+                 key.need == scene::Need::Ellipsoid || key.path.starts_with("body.ellipsoid")
              ? "ellipsoid"
              : "paraboloid";
+}
+
+// The values a sample scene of `shape` needs beyond the samples: a mesh body touches only by its
+// points (contact.model points), 1440 of them on the sample's flat bottom (tests/meshes/box.obj),
+// so a spring of 20 N/m and a damper of 0.005 N s/m each (2.9e4 N/m and 7.2 N s/m in all) where
+// one point of the paraboloid's grid has 2e4 and 4: the sample's step stays stable.
+std::map<std::string, std::string> valuesFor(const std::string& shape) {
+  if (shape != "mesh") return {};
+  return {{"contact.model", "points"}, {"contact.stiffness", "20"}, {"contact.damping", "0.005"}};
 }
 
 }  // namespace
@@ -109,12 +125,12 @@ std::string shapeOf(const scene::Key& key) {
 // video, and each key's member holds its own sample (the samples differ from the defaults and
 // from each other where a mix-up could hide).
 TEST(SceneKeys, EveryKeyLoadsItsValueIntoItsOwnMember) {
-  for (const std::string shape : {"paraboloid", "ellipsoid"})
+  for (const std::string shape : {"paraboloid", "ellipsoid", "mesh"})
     for (const bool adaptive : {false, true}) {
       const std::set<std::string> leave_out =
           adaptive ? std::set<std::string>{"simulation.dt", "simulation.integrator", "initial.spin"}
                    : std::set<std::string>{};
-      const std::string yaml = sampleScene(shape, leave_out);
+      const std::string yaml = sampleScene(shape, leave_out, valuesFor(shape));
       ASSERT_EQ(testing_support::errorFor(yaml), "") << yaml;
       auto loaded = scene::loadString(yaml, "inline.yaml");
       int checked = 0;
@@ -123,7 +139,9 @@ TEST(SceneKeys, EveryKeyLoadsItsValueIntoItsOwnMember) {
         if (scene::isMap(key) || excluded(path, shape, leave_out, "") ||
             ((path == "simulation.tolerance" || path == "initial.angular_velocity") && !adaptive))
           continue;
-        const std::string sample = path == "body.shape" ? shape : std::string(key.sample);
+        const std::string sample = path == "body.shape"           ? shape
+                                   : valuesFor(shape).count(path) ? valuesFor(shape).at(path)
+                                                                  : std::string(key.sample);
         EXPECT_EQ(normal(scene::valueOf(key, loaded.value())), normal(sample)) << path;
         ++checked;
       }
@@ -169,7 +187,13 @@ TEST(SceneKeys, ARequiredKeyLeftOutIsNamedWithTheTablesExample) {
             key.need == scene::Need::UnlessRolling ? points : std::map<std::string, std::string>{}),
         "inline.yaml");
     ASSERT_FALSE(loaded) << path << " left out loads";
-    EXPECT_TRUE(endsWith(loaded.error().text(), ": " + path + " " + scene::requiredMessage(key)))
+    // The only key of a required map (body.mesh.file) leaves no map behind: the map is named.
+    const scene::Key* map = scene::findKey(scene::parentOf(key.path));
+    const scene::Key& named =
+        map && map->need != scene::Need::Optional && scene::keysIn(map->path).size() == 1 ? *map
+                                                                                          : key;
+    EXPECT_TRUE(endsWith(loaded.error().text(),
+                         ": " + std::string(named.path) + " " + scene::requiredMessage(named)))
         << loaded.error().text();
     if (key.need == scene::Need::UnlessRolling) {
       EXPECT_TRUE(scene::loadString(
@@ -186,16 +210,23 @@ TEST(SceneKeys, AKeyOfTheOtherShapeIsRefused) {
   for (const scene::Key& key : scene::keys()) {
     const std::string path(key.path);
     if (key.shape == scene::Shape::Any) continue;
-    const bool paraboloid = key.shape == scene::Shape::Paraboloid;
-    auto loaded = scene::loadString(
-        sampleScene(paraboloid ? "ellipsoid" : "paraboloid", {}, {}, path), "inline.yaml");
-    ASSERT_FALSE(loaded) << path;
-    EXPECT_TRUE(endsWith(loaded.error().text(), ": " + path + " belongs to shape: " +
-                                                    (paraboloid ? "paraboloid" : "ellipsoid")))
-        << loaded.error().text();
-    ++checked;
+    // Every shape the key does not belong to.
+    for (const std::string other : {"paraboloid", "ellipsoid", "mesh"}) {
+      sim::BodySpec body;
+      body.shape = other;
+      if (scene::belongsTo(key, body)) continue;
+      auto loaded =
+          scene::loadString(sampleScene(other, {}, valuesFor(other), path), "inline.yaml");
+      ASSERT_FALSE(loaded) << path;
+      EXPECT_TRUE(endsWith(loaded.error().text(),
+                           ": " + path + " belongs to shape: " + scene::shapeWords(key.shape)))
+          << loaded.error().text();
+      ++checked;
+    }
   }
-  EXPECT_EQ(checked, 6);  // paraboloid, dents, grid, mass_properties; ellipsoid, inertia
+  // paraboloid, dents, grid, mass_properties (each refused for two shapes); ellipsoid (two);
+  // mesh, center_of_mass (two each); inertia (one: the paraboloid)
+  EXPECT_EQ(checked, 4 * 2 + 2 + 2 * 2 + 1);
 }
 
 // Every map (and the top level) refuses a key the table does not list, and names the ones it
@@ -216,7 +247,7 @@ TEST(SceneKeys, EveryMapRefusesAnUnknownKeyNamingTheTablesKeys) {
     EXPECT_EQ(loaded.error().text(),
               "with_values: " + unknown + " is not a known key (known here: " + known + ")");
   }
-  EXPECT_EQ(maps.size(), 11u);  // the top level, units, body and its four, contact, … video
+  EXPECT_EQ(maps.size(), 12u);  // the top level, units, body and its five, contact, … video
 }
 
 // A misspelt map above the key set ("intial" of intial.spin) is the setting's mistake, named by

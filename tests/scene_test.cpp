@@ -43,7 +43,8 @@ const BadCase kBadCases[] = {
      "8: contact.model must be points, smooth, rolling or auto, not 'pionts'; did you mean "
      "points?"},
     {"shape: paraboloid", "shape: parabolid",
-     "3: body.shape must be paraboloid or ellipsoid, not 'parabolid'; did you mean paraboloid?"},
+     "3: body.shape must be paraboloid, ellipsoid or mesh, not 'parabolid'; did you mean "
+     "paraboloid?"},
     {"mass: 0.5", "mass: 0,5",
      "7: body.mass must be a number, not '0,5' (a decimal comma: write 0.5)"},
     {"mass: 0.5", "mass: 500 g",
@@ -105,7 +106,7 @@ const BadCase kBadCases[] = {
     // A misspelt model without a stiffness: the model is what is wrong, not a missing stiffness.
     {"model: points, stiffness: 2.0e4,", "model: rollin,",
      "8: contact.model must be points, smooth, rolling or auto, not 'rollin'"},
-    {"shape: paraboloid", "shape: cube", "3: body.shape must be paraboloid or ellipsoid"},
+    {"shape: paraboloid", "shape: cube", "3: body.shape must be paraboloid, ellipsoid or mesh"},
     {"a: 4,", "a: 0,", "4: body.paraboloid.a must be > 0"},
     {"top: 2}", "top: -5}", "4: body.paraboloid.top must be above the apex"},
     {"dz: 0.2}", "dz: -0.2}", "6: body.grid.dz must be > 0"},
