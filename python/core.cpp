@@ -526,6 +526,11 @@ void bindCalls(py::module_& m) {
       [](const LoadedScene& loaded, std::optional<double> spin) {
         if (auto ok = tasks::checkAnalysisSpin(spin, "argument spin"); !ok) raise(ok.error());
         const sim::Model& model = loaded.value.model;
+        if (model.body->surface.kind == sim::Surface::Kind::Mesh)
+          throw py::value_error(
+              "linearize: a mesh body has no smooth bottom to roll on yet, so no linearised "
+              "rolling model (docs/scenes.md \"A body from a mesh\"); a paraboloid or "
+              "ellipsoid body has one");
         return toPython(
             tasks::linearisationJson(sim::linearise(model, tasks::analysisSpin(model, spin))));
       },

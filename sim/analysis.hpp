@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <complex>
 #include <optional>
 #include <string_view>
@@ -42,8 +43,9 @@ inline constexpr std::array<LinearState, 5> kLinearStates{{
 /// inertia about the vertical); the other four are the roll (rocking about the long axis) and
 /// pitch (about the short axis) modes.
 struct Linearisation {
-  double spin = 0;                                ///< rad/s
-  Eigen::Matrix<double, 5, 5> matrix;             ///< A, 1/s (entries in the states' units)
+  double spin = 0;  ///< rad/s
+  /// A, 1/s (entries in the states' units); NaN until linearise fills it
+  Eigen::Matrix<double, 5, 5> matrix = Eigen::Matrix<double, 5, 5>::Constant(NAN);
   std::vector<std::complex<double>> eigenvalues;  ///< of A, 1/s
   double roll_growth = 0, pitch_growth = 0;       ///< largest real part in each mode, 1/s
   double roll_hz = 0, pitch_hz = 0;               ///< |imaginary part| / 2π, Hz

@@ -310,7 +310,8 @@ nlohmann::json analysisJson(const Analysis& a) {
   j["growth_rates"] = {{"roll", a.at_spin.roll_growth}, {"pitch", a.at_spin.pitch_growth}};
   j["first_order_growth_per_spin"] = {{"roll", a.first_order.roll}, {"pitch", a.first_order.pitch}};
   j["eigenvalues"] = eigenvaluesJson(a.at_spin);
-  j["linearised"] = linearisationJson(a.at_spin);
+  // A mesh body has no theory yet (§P11): null, not a matrix never computed.
+  j["linearised"] = a.mesh ? nlohmann::json(nullptr) : linearisationJson(a.at_spin);
   // A body that cannot stand has no rocking about upright for a spin direction to favour.
   j["preferred"] = orNull(a.rest.stable, std::string(rb::nameOf(a.preferred)));
   j["predicted_first_reversal"] = forecastJson(a);

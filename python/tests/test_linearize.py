@@ -50,3 +50,23 @@ def test_bad_spins_are_named():
         rb.linearize(scene_path("rattleback.yaml"), spin="5")
     with pytest.raises(ValueError, match=r"^argument spin: must be a finite number"):
         rb.linearize(scene_path("rattleback.yaml"), spin=float("nan"))
+
+
+def test_a_mesh_body_has_no_linearised_model_yet():
+    # A mesh's lowest point is a corner, with no curvature to roll on: refused, not a matrix of
+    # noise (it gave eigenvalues near ±1e4 i), and analyze --json's linearised is null.
+    from conftest import SOURCE
+
+    mesh = {
+        "units": {"length": 0.01},
+        "body": {
+            "shape": "mesh",
+            "mesh": {"file": str(SOURCE / "tests" / "meshes" / "box.obj")},
+            "mass": 0.1,
+        },
+        "contact": {"model": "points", "stiffness": 20, "damping": 0.05},
+        "simulation": {"dt": 1.0e-4, "duration": 0.1},
+    }
+    with pytest.raises(ValueError, match=r"^linearize: a mesh body has no smooth bottom"):
+        rb.linearize(mesh)
+    assert rb.analyze(mesh)["linearised"] is None
