@@ -43,10 +43,11 @@ struct Cli {
   SnapshotArgs snapshot_args;
   BenchArgs bench_args;
   ReportArgs report_args;
+  ExportArgs export_args;
   SweepArgs sweep_args;
   SweepMergeArgs merge_args;
-  std::vector<std::string> render_set, still_set, analyze_set;  ///< --set, put in by parse()
-  CLI::App* merge = nullptr;                                    ///< `sweep merge`
+  std::vector<std::string> render_set, still_set, analyze_set, export_set;  ///< --set, by parse()
+  CLI::App* merge = nullptr;                                                ///< `sweep merge`
 
   /// Reads argv. Returns the exit status when that ends the program (--help, --version, a
   /// command-line error, already printed); nothing when a command is to run.

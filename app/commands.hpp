@@ -115,6 +115,17 @@ struct BenchArgs {
 /// Speed against error: prints a table, writes CSV and a log–log plot.
 int benchCommand(const BenchArgs& args);
 
+struct ExportArgs {
+  std::string scene;
+  std::string output;        ///< .stl path; empty: out/<scene name>.stl
+  std::string units = "mm";  ///< mm | cm | m: the numbers the file holds
+  int segments = 192;        ///< around the body (sim/tessellate.hpp)
+  Overrides overrides;       ///< --set's values
+  bool quiet = false;
+};
+/// Writes the scene's body as a binary STL, closed and wound outwards.
+int exportCommand(const ExportArgs& args);
+
 struct ReportArgs {
   std::string dir;  ///< the folder the runs wrote into; index.html is written there
   bool quiet = false;

@@ -227,6 +227,30 @@ rb::Result<sim::TriangleMesh> parseMesh(std::string_view bytes, std::string_view
   return format == MeshFormat::Stl ? parseStl(bytes, name) : parseObj(bytes, name);
 }
 
+std::string binaryStl(const sim::TriangleMesh& mesh, double scale, std::string_view header) {
+  static_assert(std::endian::native == std::endian::little, "STL's numbers are little-endian");
+  std::string out(84 + 50 * mesh.faces.size(), '\0');
+  std::string text(header.substr(0, 80));
+  text.resize(80, ' ');
+  std::memcpy(out.data(), text.data(), 80);
+  const auto count = static_cast<std::uint32_t>(mesh.faces.size());
+  std::memcpy(out.data() + 80, &count, 4);
+  char* at = out.data() + 84;
+  for (const auto& face : mesh.faces) {
+    Eigen::Vector3f corner[3];
+    for (int k = 0; k < 3; ++k)
+      corner[k] =
+          (mesh.vertices[static_cast<std::size_t>(face[static_cast<std::size_t>(k)])] * scale)
+              .cast<float>();
+    Eigen::Vector3f normal = (corner[1] - corner[0]).cross(corner[2] - corner[0]);
+    if (normal.norm() > 0) normal.normalize();
+    std::memcpy(at, normal.data(), 12);
+    for (int k = 0; k < 3; ++k) std::memcpy(at + 12 + 12 * k, corner[k].data(), 12);
+    at += 50;  // the last two bytes, the "attribute byte count", stay 0
+  }
+  return out;
+}
+
 rb::Result<sim::TriangleMesh> readMesh(const std::string& path) {
   auto format = meshFormatOf(path);
   if (!format) return format.error();

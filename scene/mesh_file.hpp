@@ -31,6 +31,12 @@ rb::Result<sim::TriangleMesh> parseMesh(std::string_view bytes, std::string_view
 /// Reads and parses the file at `path` (its format by its extension).
 rb::Result<sim::TriangleMesh> readMesh(const std::string& path);
 
+/// The mesh as binary STL, every coordinate multiplied by `scale` (the file's units per vertex
+/// unit) and rounded to single precision as the format has it; each facet's normal is that of its
+/// rounded corners. `header` fills the 80-byte header (cut or padded with spaces): STL has no
+/// unit, so the header is where a reader of the file can see it.
+std::string binaryStl(const sim::TriangleMesh& mesh, double scale, std::string_view header);
+
 /// Triangles given corner by corner (three positions a face) as a mesh with each distinct
 /// position once: two corners are one vertex when their coordinates are equal to the bit (−0 and
 /// +0 alike).

@@ -1,0 +1,85 @@
+// rattleback export: a scene's body as a binary STL (docs/commands.md "rattleback export"; the
+// surface is sim/tessellate.hpp's, or a mesh body's own triangles in the units asked for).
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "app/commands.hpp"
+#include "scene/loader.hpp"
+#include "scene/mesh_file.hpp"
+#include "sim/mesh.hpp"
+#include "sim/tessellate.hpp"
+#include "tasks/output.hpp"
+#include "util/output_place.hpp"
+
+namespace app {
+namespace {
+
+// Metres per unit of the file: what units.length must say to read it back.
+double metresPer(const std::string& units) {
+  return units == "mm" ? 1e-3 : units == "cm" ? 1e-2 : 1.0;
+}
+
+std::string defaultOutput(const std::string& scene) {
+  return "out/" + std::filesystem::path(scene).stem().string() + ".stl";
+}
+
+}  // namespace
+
+int exportCommand(const ExportArgs& args) {
+  auto loaded = loadScene(args.scene, args.overrides);
+  if (!loaded) return fail(loaded);
+  noteShipped(args.scene);
+  const std::string output = args.output.empty() ? defaultOutput(args.scene) : args.output;
+  if (auto ok = rb::checkDataOutput(output, "an STL mesh", ".stl", {args.scene}); !ok)
+    return fail(ok);
+  if (std::filesystem::path(output).extension() != ".stl")
+    return fail(rb::Status::fail("-o " + output +
+                                 ": export writes binary STL; give a name ending in .stl"));
+  const sim::SceneSpec& spec = loaded->scene.spec;
+  sim::TriangleMesh mesh;
+  if (spec.body.shape == "mesh") {
+    // Its own triangles, in metres: the file's numbers times units.length.
+    mesh = *spec.body.mesh.data;
+    for (auto& v : mesh.vertices) v *= spec.units.length;
+  } else {
+    const sim::Body& body = *loaded->model.body;
+    auto made = sim::tessellate(body.surface, body.dents, args.segments);
+    if (!made) {
+      rb::Error e = made.error();
+      if (e.key.empty()) e.message = "--segments: " + e.message;
+      return fail(e.key.empty() ? e : scene::locate(loaded->scene, e));
+    }
+    mesh = std::move(made.value());
+  }
+  // What export writes passes what import checks: a fault here is ours, not the scene's.
+  if (auto problem = sim::checkMesh(mesh, output, 1.0);
+      problem && problem->fault != sim::MeshFault::WrongSize)
+    return fail(rb::Status::fail("rattleback export made a mesh that fails its own check (" +
+                                 problem->message + "): please report it with the scene"));
+  const double per = metresPer(args.units);
+  const std::string bytes = scene::binaryStl(
+      mesh, 1.0 / per,
+      "rattleback export of " + std::filesystem::path(args.scene).filename().string() +
+          "; units: " + args.units + " (units.length: " +
+          (args.units == "mm"   ? "0.001"
+           : args.units == "cm" ? "0.01"
+                                : "1") +
+          ")");
+  if (auto made = tasks::makeParentFolder(output); !made) return fail(made);
+  auto file = tasks::AtomicOutput::open(output);
+  if (!file) return fail(file);
+  file->stream().write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  if (auto ok = file->commit(); !ok) return fail(ok);
+  if (!args.quiet) {
+    const sim::MeshMoments m = sim::meshMoments(mesh);
+    std::printf(
+        "wrote %s: %zu triangles, %.4g cm³, binary STL in %s (read it back with "
+        "body.shape: mesh, units.length: %g)\n",
+        output.c_str(), mesh.faces.size(), m.volume * 1e6, args.units.c_str(), per);
+  }
+  return kOk;
+}
+
+}  // namespace app

@@ -1,0 +1,149 @@
+#include "sim/tessellate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace sim {
+namespace {
+
+using Face = std::array<int, 3>;
+
+// Two triangles for the cell between an inner ring's spokes j, j+1 (a, b) and an outer ring's
+// (c, d): counter-clockwise seen from above when `up`, so that a top faces up and a bottom down
+// (the ellipse map below keeps orientation: its determinant is positive).
+void addCell(std::vector<Face>& faces, int a, int b, int c, int d, bool up) {
+  if (up) {
+    faces.push_back({a, c, d});
+    faces.push_back({a, d, b});
+  } else {
+    faces.push_back({a, d, c});
+    faces.push_back({a, b, d});
+  }
+}
+
+rb::Result<TriangleMesh> paraboloidMesh(const Paraboloid& shape, const std::optional<Dents>& dents,
+                                        int segments) {
+  // ½ uᵀHu = top + a is the rim; with H = L Lᵀ, u = √(2(top + a)) r L⁻ᵀ(cos θ, sin θ) puts the
+  // rim at r = 1 and the apex at r = 0.
+  Eigen::Matrix2d h;
+  h << shape.p / shape.a, shape.q / (shape.a * shape.a), shape.q / (shape.a * shape.a),
+      shape.s / shape.a;
+  const Eigen::LLT<Eigen::Matrix2d> llt(h);
+  const Eigen::Matrix2d map =
+      std::sqrt(2 * (shape.top + shape.a)) *
+      llt.matrixU().solve(Eigen::Matrix2d::Identity());  // L⁻ᵀ = U⁻¹ with U = Lᵀ
+  const int rings = std::max(2, (segments + 5) / 6);
+  const auto upper = [&](double x, double y) {
+    return dents ? std::min(shape.top, dents->surface(shape, x, y)) : shape.top;
+  };
+  TriangleMesh mesh;
+  std::vector<Eigen::Vector3d>& v = mesh.vertices;
+  // Vertices: the bottom's apex, its rings 1 … rings−1, the rim, the top's rings rings−1 … 1,
+  // the top's centre. ring(i, j) below is the index of spoke j on ring i (i = rings: the rim).
+  v.emplace_back(0, 0, shape.bottom(0, 0));
+  std::vector<Eigen::Vector2d> at;
+  for (int i = 1; i <= rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const double r = static_cast<double>(i) / rings;
+      const double theta = 2 * std::numbers::pi * j / segments;
+      at.push_back(map * Eigen::Vector2d(r * std::cos(theta), r * std::sin(theta)));
+    }
+  const auto ring = [&](int i, int j) { return 1 + (i - 1) * segments + (j % segments); };
+  for (int i = 1; i <= rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const Eigen::Vector2d& u = at[static_cast<std::size_t>(ring(i, j) - 1)];
+      v.emplace_back(u.x(), u.y(), i == rings ? shape.top : shape.bottom(u.x(), u.y()));
+    }
+  const int top_base = static_cast<int>(v.size());
+  const auto top_ring = [&](int i, int j) {
+    return i == rings ? ring(i, j) : top_base + (i - 1) * segments + (j % segments);
+  };
+  for (int i = 1; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const Eigen::Vector2d& u = at[static_cast<std::size_t>(ring(i, j) - 1)];
+      const double z = upper(u.x(), u.y());
+      if (!(z > shape.bottom(u.x(), u.y())))
+        return rb::Error{"body.dents",
+                         "a dent reaches the bottom at (" + std::to_string(u.x()) + ", " +
+                             std::to_string(u.y()) +
+                             ") m: export draws bodies whose dents lie within the top (make "
+                             "body.dents.scale or its inset smaller)"};
+      v.emplace_back(u.x(), u.y(), z);
+    }
+  for (int j = 0; j < segments; ++j) {
+    const Eigen::Vector2d& u = at[static_cast<std::size_t>(ring(rings, j) - 1)];
+    if (upper(u.x(), u.y()) < shape.top)
+      return rb::Error{
+          "body.dents",
+          "a dent cuts the rim: export draws bodies whose dents lie within the top (make "
+          "body.dents.scale smaller, or move body.dents.at inwards)"};
+  }
+  const int top_centre = static_cast<int>(v.size());
+  v.emplace_back(0, 0, upper(0, 0));
+  if (!(v.back().z() > v.front().z()))
+    return rb::Error{"body.dents",
+                     "a dent reaches the bottom at the centre: export draws bodies whose dents "
+                     "lie within the top"};
+  std::vector<Face>& f = mesh.faces;
+  for (int j = 0; j < segments; ++j) {
+    f.push_back({0, ring(1, j + 1), ring(1, j)});
+    f.push_back({top_centre, top_ring(1, j), top_ring(1, j + 1)});
+    for (int i = 1; i < rings; ++i) {
+      addCell(f, ring(i, j), ring(i, j + 1), ring(i + 1, j), ring(i + 1, j + 1), false);
+      addCell(f, top_ring(i, j), top_ring(i, j + 1), top_ring(i + 1, j), top_ring(i + 1, j + 1),
+              true);
+    }
+  }
+  return mesh;
+}
+
+TriangleMesh ellipsoidMesh(const Ellipsoid& shape, int segments) {
+  const int bands = std::max(2, segments / 2);
+  const Eigen::Vector3d& axes = shape.semi_axes;
+  TriangleMesh mesh;
+  mesh.vertices.emplace_back(0, 0, -axes.z());
+  for (int k = 1; k < bands; ++k) {
+    const double phi = -std::numbers::pi / 2 + std::numbers::pi * k / bands;
+    for (int j = 0; j < segments; ++j) {
+      const double theta = 2 * std::numbers::pi * j / segments;
+      mesh.vertices.emplace_back(axes.x() * std::cos(phi) * std::cos(theta),
+                                 axes.y() * std::cos(phi) * std::sin(theta),
+                                 axes.z() * std::sin(phi));
+    }
+  }
+  const int north = static_cast<int>(mesh.vertices.size());
+  mesh.vertices.emplace_back(0, 0, axes.z());
+  const auto at = [&](int k, int j) { return 1 + (k - 1) * segments + (j % segments); };
+  // Outwards is ∂θ × ∂φ (east then north): a band's cell is (lower j, lower j+1, upper j+1).
+  for (int j = 0; j < segments; ++j) {
+    mesh.faces.push_back({0, at(1, j + 1), at(1, j)});
+    for (int k = 1; k + 1 < bands; ++k) {
+      mesh.faces.push_back({at(k, j), at(k, j + 1), at(k + 1, j + 1)});
+      mesh.faces.push_back({at(k, j), at(k + 1, j + 1), at(k + 1, j)});
+    }
+    mesh.faces.push_back({at(bands - 1, j), at(bands - 1, j + 1), north});
+  }
+  return mesh;
+}
+
+}  // namespace
+
+rb::Result<TriangleMesh> tessellate(const Surface& surface, const std::optional<Dents>& dents,
+                                    int segments) {
+  if (segments < kMinSegments || segments > kMaxSegments)
+    return rb::Error{"", "segments must be " + std::to_string(kMinSegments) + " to " +
+                             std::to_string(kMaxSegments) + ", not " + std::to_string(segments)};
+  switch (surface.kind) {
+    case Surface::Kind::Paraboloid:
+      return paraboloidMesh(surface.paraboloid, dents, segments);
+    case Surface::Kind::Ellipsoid:
+      return ellipsoidMesh(surface.ellipsoid, segments);
+    case Surface::Kind::Mesh:
+      break;
+  }
+  return rb::Error{"", "a mesh body is exported from its own triangles, not tessellated"};
+}
+
+}  // namespace sim
