@@ -286,10 +286,12 @@ void defineExport(CLI::App& c, Cli& cli) {
                "The file's unit: mm (default; what slicers assume), cm or m. Read it back with "
                "units.length 0.001, 0.01 or 1")
       ->check(CLI::IsMember({"mm", "cm", "m"}));
-  c.add_option("--segments", e.segments,
-               "Segments around the body: finer is smoother and larger (default 192: 24,192 "
-               "triangles, 1.2 MB, mass properties within 1e-3 of the body's; the error "
-               "falls as 1/segments²)")
+  c.add_option(
+       "--segments", e.segments,
+       "Segments around the body: finer is smoother and larger (default " +
+           std::to_string(sim::kDefaultSegments) +
+           ": 24,192 triangles, 1.2 MB, mass properties within 1e-3 of the body's; the error "
+           "falls as 1/segments²)")
       ->check(CLI::Range(sim::kMinSegments, sim::kMaxSegments));
   setOption(c, cli.export_set);
   c.add_flag("-q,--quiet", e.quiet, "Print nothing");

@@ -7,6 +7,7 @@
 
 #include "app/tell.hpp"
 #include "render/image_io.hpp"
+#include "sim/tessellate.hpp"
 #include "tasks/manifest.hpp"
 #include "tasks/scene_args.hpp"
 

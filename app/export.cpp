@@ -6,10 +6,9 @@
 #include <string>
 
 #include "app/commands.hpp"
-#include "scene/loader.hpp"
 #include "scene/mesh_file.hpp"
 #include "sim/mesh.hpp"
-#include "sim/tessellate.hpp"
+#include "tasks/body_mesh.hpp"
 #include "tasks/output.hpp"
 #include "util/output_place.hpp"
 
@@ -37,22 +36,13 @@ int exportCommand(const ExportArgs& args) {
   if (std::filesystem::path(output).extension() != ".stl")
     return fail(rb::Status::fail("-o " + output +
                                  ": export writes binary STL; give a name ending in .stl"));
-  const sim::SceneSpec& spec = loaded->scene.spec;
-  sim::TriangleMesh mesh;
-  if (spec.body.shape == "mesh") {
-    // Its own triangles, in metres: the file's numbers times units.length.
-    mesh = *spec.body.mesh.data;
-    for (auto& v : mesh.vertices) v *= spec.units.length;
-  } else {
-    const sim::Body& body = *loaded->model.body;
-    auto made = sim::tessellate(body.surface, body.dents, args.segments);
-    if (!made) {
-      rb::Error e = made.error();
-      if (e.key.empty()) e.message = "--segments: " + e.message;
-      return fail(e.key.empty() ? e : scene::locate(loaded->scene, e));
-    }
-    mesh = std::move(made.value());
+  auto made = tasks::bodyMesh(loaded.value(), args.segments);
+  if (!made) {
+    rb::Error e = made.error();
+    if (e.key.empty() && !e.where) e.message = "--segments: " + e.message;
+    return fail(e);
   }
+  const sim::TriangleMesh& mesh = made.value();
   // What export writes passes what import checks: a fault here is ours, not the scene's.
   if (auto problem = sim::checkMesh(mesh, output, 1.0);
       problem && problem->fault != sim::MeshFault::WrongSize)

@@ -133,7 +133,7 @@ TriangleMesh ellipsoidMesh(const Ellipsoid& shape, int segments) {
 rb::Result<TriangleMesh> tessellate(const Surface& surface, const std::optional<Dents>& dents,
                                     int segments) {
   if (segments < kMinSegments || segments > kMaxSegments)
-    return rb::Error{"", "segments must be " + std::to_string(kMinSegments) + " to " +
+    return rb::Error{"", "must be " + std::to_string(kMinSegments) + " to " +
                              std::to_string(kMaxSegments) + ", not " + std::to_string(segments)};
   switch (surface.kind) {
     case Surface::Kind::Paraboloid:

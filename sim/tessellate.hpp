@@ -14,6 +14,9 @@ namespace sim {
 /// The finest and coarsest `segments` tessellate takes: 8 around is still a closed solid; 4,096
 /// around makes about 5.6 million triangles for the paraboloid, 280 MB of STL.
 inline constexpr int kMinSegments = 8, kMaxSegments = 4096;
+/// Export's default: 24,192 triangles for the paraboloid (1.2 MB of STL), its mass properties
+/// within 1e-3 of the body's (docs/commands.md "rattleback export").
+inline constexpr int kDefaultSegments = 192;
 
 /// The body's closed surface, wound outwards, geometric frame, metres.
 /// - Paraboloid: the bottom and the top are each a height over the rim's ellipse, sampled on

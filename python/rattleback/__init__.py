@@ -156,6 +156,16 @@ class Scene:
         """initial.spin, rad/s (+ counter-clockwise seen from above)."""
         return self._loaded.spin
 
+    @_checked
+    def mesh(self, segments: Optional[int] = None) -> tuple[_np.ndarray, _np.ndarray]:
+        """The body's closed surface as triangles: ``(vertices, faces)``, vertices an (N, 3)
+        float array in metres in the body's geometric frame (z up, the long axis along y), faces
+        an (M, 3) integer array of vertex indices, each counter-clockwise seen from outside.
+        What ``rattleback export`` writes as STL: the paraboloid and the ellipsoid on
+        ``segments`` around (default 192; finer converges as 1/segments²), a mesh body its own
+        triangles. For trimesh: ``trimesh.Trimesh(*scene.mesh())``."""
+        return _core.body_mesh(self._loaded, segments)
+
     def _load(self, **overrides: Any):
         overrides = {k: v for k, v in overrides.items() if v is not None}
         if "size" in overrides:  # NumPy's integers too, as the ints the library casts to

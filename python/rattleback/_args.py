@@ -128,6 +128,7 @@ _TAKES: dict[str, tuple[Callable[[Any], bool], str]] = {
     "fps": (_number, f"{_NUMBER} (frames per second)"),
     "crf": (_whole, "a whole number"),
     "jobs": (_whole, "a whole number"),
+    "segments": (_whole, "a whole number (8 to 4096)"),
     "size": (_size, "(width, height) in pixels, e.g. (640, 360)"),
     "integrator": (_text, "a name (text), e.g. 'rk4'"),
     "view": (_text, "a name (text), e.g. 'oblique'"),

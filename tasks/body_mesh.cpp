@@ -1,0 +1,21 @@
+#include "tasks/body_mesh.hpp"
+
+#include "scene/loader.hpp"
+#include "sim/tessellate.hpp"
+
+namespace tasks {
+
+rb::Result<sim::TriangleMesh> bodyMesh(const LoadedScene& loaded, int segments) {
+  const sim::SceneSpec& spec = loaded.scene.spec;
+  if (spec.body.shape == "mesh") {
+    sim::TriangleMesh mesh = *spec.body.mesh.data;
+    for (auto& v : mesh.vertices) v *= spec.units.length;
+    return mesh;
+  }
+  const sim::Body& body = *loaded.model.body;
+  auto made = sim::tessellate(body.surface, body.dents, segments);
+  if (!made && !made.error().key.empty()) return scene::locate(loaded.scene, made.error());
+  return made;
+}
+
+}  // namespace tasks

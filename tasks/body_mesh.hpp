@@ -1,0 +1,16 @@
+// A scene's body as triangles, in metres: what `rattleback export` writes and Python's
+// Scene.mesh() gives (docs/commands.md "rattleback export").
+#pragma once
+
+#include "sim/mesh.hpp"
+#include "tasks/scene_args.hpp"
+#include "util/result.hpp"
+
+namespace tasks {
+
+/// The body's closed surface in its geometric frame, metres, wound outwards: the analytic bodies
+/// tessellated on `segments` (sim/tessellate.hpp), a mesh body's own triangles scaled by
+/// units.length. An error of the scene's keys names its file, line and key.
+rb::Result<sim::TriangleMesh> bodyMesh(const LoadedScene& loaded, int segments);
+
+}  // namespace tasks
