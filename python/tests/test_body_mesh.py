@@ -1,4 +1,4 @@
-"""Scene.mesh(): the body's closed surface as NumPy arrays (docs/python.md "Scene.mesh"). Its
+"""Scene.mesh(): the body's closed surface as NumPy arrays (docs/python.md "Scenes"). Its
 mass properties are computed here independently of the library (the signed tetrahedra of each
 face with the origin, Tonon 2004's closed forms for a tetrahedron's second moment) and held
 against analyze's continuum figures; the surface is checked closed and wound outwards by its
