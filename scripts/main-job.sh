@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The main job's runs, into OUT (default out): the default scene's preferred, reversed and
-# side-by-side videos and its four still views, the tap experiment's two videos, the seed body's four still views, telemetry,
+# side-by-side videos and its four still views, the tap experiment's two videos, the printable
+# mesh body's video and still, the seed body's four still views, telemetry,
 # plots and analysis of every shipped scene, the shipped sweeps' tables and heatmaps, a bench of
 # the default scene, and the report page OUT/index.html that shows them all.
 #
@@ -42,6 +43,9 @@ for scene in tap-end tap-side; do
   "$rb" render "scenes/$scene.yaml" -o "$out/$scene.mp4" -q
 done
 
+echo "== a printable rattleback: the default body exported as STL and read back as a mesh body"
+"$rb" render scenes/printed.yaml -o "$out/printed.mp4" -q
+
 echo "== stills"
 # Posters for the report page: each video's first frame (spun -5 it reverses, +5 it does not,
 # as render --both above named them).
@@ -51,6 +55,7 @@ for view in oblique above front side; do
   "$rb" still scenes/rattleback.yaml --view "$view" --t 1.0 -o "$out/rattleback-$view.png" -q
   "$rb" still scenes/seed-flip-ccw.yaml --view "$view" -o "$out/seed-$view.png" -q
 done
+"$rb" still scenes/printed.yaml --t 0.5 -o "$out/printed-oblique.png" -q
 
 echo "== telemetry and analysis"
 # The scenes side by side (the seed's two, with their checks, take most of it); any failure fails
@@ -59,7 +64,7 @@ pids=()
 # Background jobs of a script start with SIGINT ignored (POSIX), and rattleback keeps it so: the
 # terminal's Ctrl-C stops this script, which stops them (SIGTERM: each keeps its old output).
 trap 'kill -TERM "${pids[@]}" 2>/dev/null; wait; exit 130' INT
-for scene in seed-flip-cw seed-flip-ccw rattleback kane-levinson kane-levinson-long tap-end tap-side; do
+for scene in seed-flip-cw seed-flip-ccw rattleback kane-levinson kane-levinson-long tap-end tap-side printed; do
   (
     "$rb" analyze "scenes/$scene.yaml" -o "$out/$scene-analysis.txt"
     "$rb" analyze "scenes/$scene.yaml" --json -o "$out/$scene-analysis.json"
