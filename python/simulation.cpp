@@ -40,23 +40,26 @@ py::dict stateDict(const sim::Rollout& run, double t) {
   const sim::State s = run.stateAt(t);
   const sim::Telemetry m = run.sampleAt(t);
   const Eigen::Quaterniond q = tasks::attitude(m);  // as the telemetry's qw … qz columns
-  const Eigen::Matrix3d R = q.toRotationMatrix();
   py::dict d;
+  // Every telemetry column's value at t, from the one table (rb.State keeps those it declares:
+  // spin, tilt_deg, mode, contacts, normal_force and the energies), as simulate's arrays give it.
+  const auto& modes = rb::NameTable<sim::ContactModel>::entries;
+  for (const tasks::TelemetryColumn& c : tasks::telemetryTable()) {
+    const double value = c.value({m, q});
+    if (c.kind == tasks::ColumnKind::Number)
+      d[c.column.name] = value;
+    else if (c.kind == tasks::ColumnKind::Count)
+      d[c.column.name] = static_cast<std::int64_t>(value);
+    else
+      d[c.column.name] = std::string(modes[static_cast<std::size_t>(value)].second);
+  }
+  // The vectors the columns hold in parts, and those they do not hold (body-axes ω, velocity).
   d["t"] = t;
   d["position"] = listOf(s.x_world);
   d["quaternion"] = py::cast(std::vector<double>{q.w(), q.x(), q.y(), q.z()});
   d["velocity"] = listOf(s.v_world);
-  d["angular_velocity"] = listOf(R.transpose() * m.w_world);
+  d["angular_velocity"] = listOf(q.toRotationMatrix().transpose() * m.w_world);
   d["angular_velocity_world"] = listOf(m.w_world);
-  d["spin"] = m.spin;
-  d["tilt_deg"] = m.tilt_deg;
-  d["mode"] = std::string(rb::nameOf(m.mode));
-  d["contacts"] = m.contacts;
-  d["normal_force"] = m.normal_force;
-  d["kinetic"] = m.kinetic;
-  d["potential"] = m.potential;
-  d["elastic"] = m.elastic;
-  d["energy"] = m.energy;
   return d;
 }
 

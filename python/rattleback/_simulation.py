@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 from typing import Optional, Sequence
 
@@ -48,6 +49,8 @@ class State:
 
     @classmethod
     def _of(cls, fields: dict) -> "State":
+        # The library gives every telemetry column at t (one table): the State keeps its own.
+        fields = {f.name: fields[f.name] for f in dataclasses.fields(cls)}
         for name in ("position", "quaternion", "velocity", "angular_velocity", "angular_velocity_world"):
             array = np.array(fields[name], dtype=float)
             array.flags.writeable = False
