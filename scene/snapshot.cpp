@@ -2,14 +2,19 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <set>
+#include <string_view>
+#include <vector>
 
 #include "scene/tree.hpp"
+#include "util/nearest.hpp"
 
 namespace scene {
 namespace {
@@ -176,15 +181,19 @@ void readMap(const YAML::Node& node, W where, int line, const std::string& prefi
     if (!seen.insert(name).second) throw Bad{at, key, "is given twice"};
     const SnapshotKey* row = nullptr;
     std::string known;
+    std::vector<std::string_view> names;
     for (const SnapshotKey& k : kKeys) {
       if (!allowedIn(k, where)) continue;
       known += (known.empty() ? "" : ", ") + std::string(k.name);
+      names.push_back(k.name);
       if (k.name == name) row = &k;
     }
-    if (!row)
+    if (!row) {
+      const auto nearest = rb::nearestWord(name, names);
       throw Bad{at, key,
                 std::string("is not a key of ") + (where == W::Top ? "a suite" : "a case") + " (" +
-                    known + ")"};
+                    known + ")" + (nearest ? "; did you mean " + *nearest + "?" : "")};
+    }
     take(*row, entry.second, at, key);
   }
 }
@@ -232,12 +241,21 @@ SnapshotSuite readSuite(const YAML::Node& root, const std::string& path) {
   if (!cases || !cases.IsSequence() || cases.size() == 0)
     throw Bad{cases_line, "cases",
               "must be a list of one case or more (cases: [{name: NAME, scene: FILE.yaml}])"};
-  std::set<std::string> names;
+  // Names as a folder of goldens tells them apart: on macOS's and Windows' file systems A.png and
+  // a.png are one file, so names that differ only by case would share a golden there.
+  std::map<std::string, std::string> names;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     SnapshotCase c = readCase(cases[i], defaults, static_cast<int>(i), path);
-    if (!names.insert(c.name).second)
-      throw Bad{lineOf(cases[i]), "cases[" + std::to_string(i) + "].name",
-                "'" + c.name + "' names an earlier case too: each case needs its own golden"};
+    std::string folded = c.name;
+    for (char& ch : folded) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (const auto [earlier, fresh] = names.emplace(folded, c.name); !fresh)
+      throw Bad{
+          lineOf(cases[i]), "cases[" + std::to_string(i) + "].name",
+          "'" + c.name + "' names an earlier case too" +
+              (earlier->second == c.name
+                   ? ""
+                   : " ('" + earlier->second + "', as a file system that ignores case reads it)") +
+              ": each case needs its own golden"};
     c.scene = resolved(folder, c.scene_as_written);
     suite.cases.push_back(std::move(c));
   }

@@ -71,6 +71,13 @@ TEST(SnapshotSuite, ABadFileIsOneLineNamingFileLineAndKey) {
       {"goldens: g\ngoldens: h\ncases: [{name: a, scene: s.yaml}]",
        "s.yaml:2: goldens is given twice"},
       {"name: a\ncases: [{name: a, scene: s.yaml}]", "s.yaml:1: name is not a key of a suite"},
+      // A typo is offered the key it is near; names that one file system reads as one collide.
+      {"tolerence: 3\ncases: [{name: a, scene: s.yaml}]",
+       "s.yaml:1: tolerence is not a key of a suite (goldens, cases, view, size, backend, "
+       "tolerance, pixels, square); did you mean tolerance?"},
+      {"cases:\n  - {name: Front, scene: s.yaml}\n  - {name: front, scene: t.yaml}",
+       "s.yaml:3: cases[1].name 'front' names an earlier case too ('Front', as a file system that "
+       "ignores case reads it)"},
       {"goldens: g", "s.yaml:1: cases must be a list"},
       {"cases: [{name: a, scene: s.yaml}", "s.yaml:1: malformed YAML"},
   };
