@@ -192,9 +192,9 @@ export const controlsMethods = {
         (nrev
           ? `${nrev} reversal${nrev === 1 ? '' : 's'} (dashed lines; ticks on the time slider)`
           : 'No reversal in this run') +
-          '. The arrow around the body turns as it does: orange counter-clockwise, green clockwise' +
           (this.forecast ? ", the averaged theory's forecast of the first (violet)" : '') +
-          '. Drag: orbit, right-drag: pan, wheel: zoom. ' +
+          '. The arrow around the body turns as it does: orange counter-clockwise, green clockwise.' +
+          ' Drag: orbit, right-drag: pan, wheel: zoom. ' +
           'Keys: space play/pause, ← → step one sample (' +
           formatStep(this.run.t) +
           '), ' +
