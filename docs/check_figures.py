@@ -49,9 +49,7 @@ class Runs:
     @functools.lru_cache(maxsize=None)
     def analyze(self, scene, spin=None, sets=()):
         """`rattleback analyze --json`."""
-        return json.loads(
-            self._run("analyze", "--json", f"scenes/{scene}.yaml", *self._options(spin, sets))
-        )
+        return json.loads(self._run("analyze", "--json", f"scenes/{scene}.yaml", *self._options(spin, sets)))
 
     @functools.lru_cache(maxsize=None)
     def _simulate(self, scene, spin=None, sets=()):

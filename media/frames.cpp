@@ -59,6 +59,7 @@ RunFraming framingOfRun(const sim::Model& model, const render::BodyPoints& point
   const float path = 0.5f * static_cast<float>((high - low).norm());
   RunFraming result;
   result.framing = near;
+  result.reversals = run.reversals();
   const bool wanders = wander > 0.25 * reach;  // past the quarter's margin
   if (wanders) {
     result.framing.center = Eigen::Vector3f(0.5f * static_cast<float>(low.x() + high.x()),

@@ -4,6 +4,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "render/frame.hpp"
 #include "sim/model.hpp"
@@ -28,13 +29,16 @@ struct RunFraming {
   render::Framing framing;
   bool body_leaves = false;
   float needs = 0;  ///< m: the length of frame that would hold the body over the run
+  /// The run's spin reversals (docs/physics.md P7), s: found by the same pass, so that each
+  /// frame can mark a reversal when it comes (the video's own run counts one only 0.2 s on).
+  std::vector<double> reversals;
 };
 
-/// The same for a whole run, known before a frame is drawn: where the centre of mass wanders
-/// further than that quarter (a body sliding on a slippery floor), the sphere holds the path of
-/// the body over the run instead (a body spun −50 rad/s on friction 0.02 slid 10 cm,
-/// off the frame of the fixed views); with a `frame`, the sphere keeps its size and is centred
-/// on the path. Runs `model` to its end, sampling every 10 ms, or until `cancelled` (when
+/// The same for a whole run, known before a frame is drawn (with the run's reversals): where the
+/// centre of mass wanders further than that quarter (a body sliding on a slippery floor), the
+/// sphere holds the path of the body over the run instead (a body spun −50 rad/s on friction 0.02
+/// slid 10 cm, off the frame of the fixed views); with a `frame`, the sphere keeps its size and is
+/// centred on the path. Runs `model` to its end, sampling every 10 ms, or until `cancelled` (when
 /// given) says to stop; `reached` (when given) hears each sample's time.
 RunFraming framingOfRun(const sim::Model& model, const render::BodyPoints& points, float frame,
                         const std::function<bool()>& cancelled = {},

@@ -112,6 +112,7 @@ rb::Result<StillResult> renderStill(const tasks::LoadedScene& loaded, const Stil
   result.leaves = leavesNote(framing, points, plan.view, static_cast<float>(plan.frame),
                              model.length_unit, frameNamed(loaded.scene));
   frame.history = history.with(sample);
+  frame.reversals = framing.reversals;
   renderer.draw(frame, result.image);
   result.image.drawn_by = renderer.rasteriser();
   result.outcome.t = request.t;

@@ -259,11 +259,13 @@ rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const Vide
     // Each run's camera for the fixed views, and the spin of its frames so far for the inset:
     // the frame values the renderers draw from.
     std::vector<render::Framing> framings;
+    std::vector<std::vector<double>> reversals;
     std::vector<SpinHistory> histories;
     for (const sim::Rollout& run : runs) {
       const RunFraming framing =
           framingOfRun(run.model(), points, static_cast<float>(plan.frame), request.cancelled);
       framings.push_back(framing.framing);
+      reversals.push_back(framing.reversals);
       if (!result.leaves)  // (the first run's, with --both: one line is enough)
         result.leaves = leavesNote(framing, points, plan.view, static_cast<float>(plan.frame),
                                    model.length_unit, frameNamed(loaded.scene));
@@ -299,6 +301,7 @@ rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const Vide
         render::FrameInput frame = frameOf(sample);
         frame.framing = framings[i];
         frame.history = histories[i].with(sample);
+        frame.reversals = reversals[i];
         renderers[i]->draw(frame, images[i]);
       }
       if (running && request.both) {

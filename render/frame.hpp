@@ -52,6 +52,9 @@ struct FrameInput {
   Framing framing;  ///< the fixed views' camera: the same for every frame of a run
   /// (t, n) of the run's frames so far, this one included: the inset's curve.
   std::span<const std::array<float, 2>> history;
+  /// The run's spin reversals (docs/physics.md P7), s, all of them: a frame marks those at or
+  /// before its time (a tick on the inset, and "reversal" for a while after one).
+  std::span<const double> reversals;
 };
 
 /// How OpenGL is reached (render/gl.hpp): EGL (a GPU, or Mesa's surfaceless llvmpipe) or OSMesa;

@@ -185,7 +185,7 @@ void drawScaleLabel(Image& image, Overlay& font, const std::string& text) {
 }
 
 void drawSpinInset(Image& image, Overlay& font, std::span<const std::array<float, 2>> history,
-                   double duration, double range) {
+                   double duration, double range, std::span<const double> reversals) {
   char label[64];
   std::snprintf(label, sizeof label, "n ±%g rad/s, 0–%g s", range, duration);
   const int pad = font.lineHeight() / 2;
@@ -211,10 +211,94 @@ void drawSpinInset(Image& image, Overlay& font, std::span<const std::array<float
         mid - (bottom - top) / 2 * static_cast<float>(std::clamp(p[1] / range, -1.0, 1.0));
     return std::array<float, 2>{x, y};
   };
+  // A reversal the curve has reached: a dark tick across the band, under the curve, where n
+  // crosses zero for good.
+  const double now = history.empty() ? 0 : history.back()[0];
+  for (double t : reversals) {
+    if (t > now || t > duration) continue;
+    const float x = to_screen({static_cast<float>(t), 0})[0];
+    drawLine(image, x, top, x, bottom, 2, {30, 30, 30, 255});
+  }
   for (std::size_t i = 1; i < history.size(); ++i) {
     const auto a = to_screen(history[i - 1]), b = to_screen(history[i]);
     drawLine(image, a[0], a[1], b[0], b[1], 2, {20, 60, 160, 255});
   }
+}
+
+void fillTriangle(Image& image, const std::array<std::array<float, 2>, 3>& corners, Rgba color) {
+  // Coverage from the signed distance to the nearest edge: a one-pixel soft edge, as drawLine's.
+  float area = 0;
+  for (int i = 0; i < 3; ++i) {
+    const auto &a = corners[i], &b = corners[(i + 1) % 3];
+    area += a[0] * b[1] - b[0] * a[1];
+  }
+  if (area == 0) return;
+  const float sign = area > 0 ? 1.0f : -1.0f;
+  float xa = 1e9f, xb = -1e9f, ya = 1e9f, yb = -1e9f;
+  for (const auto& c : corners) {
+    xa = std::min(xa, c[0]), xb = std::max(xb, c[0]);
+    ya = std::min(ya, c[1]), yb = std::max(yb, c[1]);
+  }
+  for (int y = static_cast<int>(std::floor(ya)) - 1; y <= static_cast<int>(std::ceil(yb)); ++y)
+    for (int x = static_cast<int>(std::floor(xa)) - 1; x <= static_cast<int>(std::ceil(xb)); ++x) {
+      float inside = 1e9f;  // pixels from the nearest edge, > 0 inside
+      for (int i = 0; i < 3; ++i) {
+        const auto &a = corners[i], &b = corners[(i + 1) % 3];
+        const float ex = b[0] - a[0], ey = b[1] - a[1];
+        const float cross = ex * (y + 0.5f - a[1]) - ey * (x + 0.5f - a[0]);
+        inside = std::min(inside, sign * cross / std::sqrt(ex * ex + ey * ey));
+      }
+      blend(image, x, y, color, std::clamp(inside + 0.5f, 0.0f, 1.0f));
+    }
+}
+
+namespace {
+// The arrow's head at the end of `arc`: a triangle `length` long pointing along its last segment.
+std::array<std::array<float, 2>, 3> arrowHead(std::span<const std::array<float, 2>> arc,
+                                              float length) {
+  const auto &a = arc[arc.size() - 2], &b = arc.back();
+  float dx = b[0] - a[0], dy = b[1] - a[1];
+  const float norm = std::max(std::sqrt(dx * dx + dy * dy), 1e-6f);
+  dx /= norm, dy /= norm;
+  const float half = 0.6f * length;
+  return {{{b[0] + dx * length, b[1] + dy * length},
+           {b[0] - dy * half, b[1] + dx * half},
+           {b[0] + dy * half, b[1] - dx * half}}};
+}
+}  // namespace
+
+void drawArrow(Image& image, std::span<const std::array<float, 2>> arc, float width, Rgba color) {
+  if (arc.size() < 2) return;
+  const float head = 3.5f * width;
+  // A dark edge a pixel wide each side first, then the colour: orange on the light floor alone
+  // has too little contrast to read at a distance.
+  const Rgba edge{30, 30, 30, 200};
+  for (int pass = 0; pass < 2; ++pass) {
+    const float w = pass == 0 ? width + 2 : width;
+    const Rgba c = pass == 0 ? edge : color;
+    for (std::size_t i = 1; i < arc.size(); ++i)
+      drawLine(image, arc[i - 1][0], arc[i - 1][1], arc[i][0], arc[i][1], w, c);
+    auto corners = arrowHead(arc, pass == 0 ? head + 2 : head);
+    if (pass == 0) {  // the edge's triangle a pixel larger all round: from its centroid
+      const float cx = (corners[0][0] + corners[1][0] + corners[2][0]) / 3;
+      const float cy = (corners[0][1] + corners[1][1] + corners[2][1]) / 3;
+      for (auto& p : corners) {
+        const float dx = p[0] - cx, dy = p[1] - cy, d = std::sqrt(dx * dx + dy * dy);
+        if (d > 0) p = {p[0] + 1.5f * dx / d, p[1] + 1.5f * dy / d};
+      }
+    }
+    fillTriangle(image, corners, c);
+  }
+}
+
+void drawReversalLabel(Image& image, Overlay& font, int right, int baseline, double t_reversal) {
+  char text[64];
+  std::snprintf(text, sizeof text, "reversal at %.2f s", t_reversal);
+  const int pad = font.lineHeight() / 2;
+  const int w = font.width(text) + 2 * pad;
+  const int x0 = right - w, y0 = baseline - font.lineHeight() - pad / 2;
+  fillRect(image, x0, y0, right, baseline + pad, kReversalColor);
+  font.text(image, x0 + pad, baseline, text, {20, 20, 20, 255});
 }
 
 }  // namespace render

@@ -54,8 +54,29 @@ std::string lengthText(double metres);
 /// One line in a box at the bottom left, level with the inset's bottom (the floor's scale).
 void drawScaleLabel(Image& image, Overlay& font, const std::string& text);
 
-/// The inset: n(t) so far against a fixed time axis [0, duration] and spin axis ±range.
+/// The inset: n(t) so far against a fixed time axis [0, duration] and spin axis ±range, with a
+/// tick at each of `reversals` (s) that lies within the curve drawn so far.
 void drawSpinInset(Image& image, Overlay& font, std::span<const std::array<float, 2>> history,
-                   double duration, double range);
+                   double duration, double range, std::span<const double> reversals = {});
+
+/// The spin cue's colours (docs/commands.md "The spin cue"): from Okabe and Ito's palette, told
+/// apart with any colour vision and unlike the body's red top and blue bottom.
+inline constexpr Rgba kCounterClockwiseColor{230, 159, 0, 255};  ///< orange: n > 0
+inline constexpr Rgba kClockwiseColor{0, 158, 115, 255};         ///< bluish green: n < 0
+/// The reversal label's background: Okabe and Ito's yellow, under dark text.
+inline constexpr Rgba kReversalColor{240, 228, 66, 255};
+/// The slowest spin given a direction (the read-out's words, the cue's arrow), rad/s.
+inline constexpr double kSlowestShownSpin = 0.05;
+/// How long a frame says "reversal" after one, s: about two rocking periods of the default
+/// body, long enough to read at the back of a classroom.
+inline constexpr double kReversalShownFor = 1.5;
+
+/// An arrow along `arc` (pixels, in the order of travel), `width` pixels wide, with a dark
+/// edge for contrast on the light floor and a head at the arc's end.
+void drawArrow(Image& image, std::span<const std::array<float, 2>> arc, float width, Rgba color);
+/// A filled, anti-aliased triangle.
+void fillTriangle(Image& image, const std::array<std::array<float, 2>, 3>& corners, Rgba color);
+/// "reversal at T s" in a yellow box whose right edge is at `right`, text on `baseline`.
+void drawReversalLabel(Image& image, Overlay& font, int right, int baseline, double t_reversal);
 
 }  // namespace render

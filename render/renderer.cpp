@@ -398,7 +398,42 @@ Renderer::ReadoutLayout Renderer::readoutLayout() const {
   return l;
 }
 
-void Renderer::drawReadouts(const FrameInput& frame, Image& out) {
+void Renderer::drawSpinCue(const FrameInput& frame, const Camera& camera, Image& out) {
+  if (!(std::abs(frame.spin) >= kSlowestShownSpin)) return;
+  // On the floor, a quarter beyond the sphere that holds the body in any orientation, and on
+  // the half of that circle nearer the camera: it passes in front of the body, never over it.
+  const float radius = 1.25f * radius_;
+  const Eigen::Vector3f centre(static_cast<float>(frame.position_world.x()),
+                               static_cast<float>(frame.position_world.y()), 0);
+  // Towards the camera along the floor: its back axis less its up axis (the view's rows), so
+  // that seen from above, where the back axis is vertical, it is towards the frame's bottom.
+  const Eigen::Vector3f towards =
+      camera.view.block<1, 3>(2, 0).transpose() - camera.view.block<1, 3>(1, 0).transpose();
+  const float facing = std::atan2(towards.y(), towards.x());
+  // The sweep is |n| over the inset's range, up to the half circle; n > 0 turns counter-
+  // clockwise seen from above (docs/physics.md, sign convention), the angle's own sense.
+  const double share = std::min(1.0, std::abs(frame.spin) / settings_.spin_range);
+  const float sweep = static_cast<float>(M_PI * share);
+  const float sense = frame.spin > 0 ? 1.0f : -1.0f;
+  const Eigen::Matrix4f to_clip = camera.proj * camera.view;
+  constexpr int kPoints = 48;
+  std::vector<std::array<float, 2>> arc;
+  for (int k = 0; k <= kPoints; ++k) {
+    const float angle = facing + sense * sweep * (static_cast<float>(k) / kPoints - 0.5f);
+    const Eigen::Vector3f p =
+        centre + radius * Eigen::Vector3f(std::cos(angle), std::sin(angle), 0);
+    const Eigen::Vector4f clip = to_clip * p.homogeneous();
+    if (!(clip.w() > 1e-6f)) return;  // behind the camera: no cue rather than a wrong one
+    // (The picture is drawn flipped: its rows read back top first, as the image's rows.)
+    arc.push_back({(clip.x() / clip.w() * 0.5f + 0.5f) * settings_.width,
+                   (clip.y() / clip.w() * 0.5f + 0.5f) * settings_.height});
+  }
+  // A 120th of the height wide (6 px at 720p, 3 at 360p), at least 2.
+  const float width = std::max(2.0f, settings_.height / 120.0f);
+  drawArrow(out, arc, width, frame.spin > 0 ? kCounterClockwiseColor : kClockwiseColor);
+}
+
+void Renderer::drawReadouts(const FrameInput& frame, const Camera& camera, Image& out) {
   if (!readoutsShown()) return;
   const ReadoutLayout layout = readoutLayout();
   const int x = layout.x;
@@ -409,9 +444,9 @@ void Renderer::drawReadouts(const FrameInput& frame, Image& out) {
   const double spin = std::abs(frame.spin) < 0.005 ? 0.0 : frame.spin;
   std::snprintf(time, sizeof time, "t = %6.2f s", frame.t);
   std::snprintf(spin_text, sizeof spin_text, "spin n = %+6.2f rad/s  %s", spin,
-                spin > 0.05    ? "(counter-clockwise)"
-                : spin < -0.05 ? "(clockwise)"
-                               : "");
+                spin > kSlowestShownSpin    ? "(counter-clockwise)"
+                : spin < -kSlowestShownSpin ? "(clockwise)"
+                                            : "");
   const std::string one_line = std::string(time) + "    " + spin_text;
   if (x + font_.width(one_line) <= settings_.width - x) {
     font_.text(out, x, layout.first, one_line, {30, 30, 30, 255});
@@ -419,8 +454,17 @@ void Renderer::drawReadouts(const FrameInput& frame, Image& out) {
     font_.text(out, x, layout.first, time, {30, 30, 30, 255});
     font_.text(out, x, layout.second, spin_text, {30, 30, 30, 255});
   }
-  drawSpinInset(out, font_, frame.history, settings_.duration, settings_.spin_range);
+  drawSpinCue(frame, camera, out);
+  drawSpinInset(out, font_, frame.history, settings_.duration, settings_.spin_range,
+                frame.reversals);
   drawScaleLabel(out, font_, scale_label_);
+  // The latest reversal at or before this frame, for a while after it: at the top right.
+  for (auto it = frame.reversals.rbegin(); it != frame.reversals.rend(); ++it) {
+    if (*it > frame.t) continue;
+    if (frame.t - *it < kReversalShownFor)
+      drawReversalLabel(out, font_, settings_.width - x, layout.first, *it);
+    break;
+  }
 }
 
 void Renderer::draw(const FrameInput& frame, Image& out) {
@@ -472,7 +516,7 @@ void Renderer::draw(const FrameInput& frame, Image& out) {
   out.rgba.resize(static_cast<std::size_t>(out.width) * out.height * 4);
   context_->readPixels(out.rgba.data());
   if (settings_.transparent) straightenAlpha(out);
-  drawReadouts(frame, out);
+  drawReadouts(frame, camera, out);
 }
 
 }  // namespace render

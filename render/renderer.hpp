@@ -77,7 +77,10 @@ class Renderer {
   /// The radius in pixels of the largest sphere any point of the body could be drawn with.
   float largestSpherePx(const Camera& camera, const FrameInput& frame) const;
   void drawPoints(const Camera& camera, const FrameInput& frame);
-  void drawReadouts(const FrameInput& frame, Image& out);
+  void drawReadouts(const FrameInput& frame, const Camera& camera, Image& out);
+  /// The spin cue: an arrow around the body on the floor, its sense the spin's, its colour by
+  /// the direction, its sweep by |n| (docs/commands.md "The spin cue").
+  void drawSpinCue(const FrameInput& frame, const Camera& camera, Image& out);
   bool readoutsShown() const;
   /// Baselines of the title and of the read-outs' first and (in a narrow frame) second line.
   struct ReadoutLayout {

@@ -28,6 +28,7 @@ export const controlsMethods = {
     this.stage.appendChild(this.canvas);
     main.appendChild(this.stage);
     main.appendChild(this.buildBar());
+    if (this.ticks) main.appendChild(this.ticks);
     main.appendChild(this.buildViews());
     root.append(main, this.buildSide());
     c.appendChild(root);
@@ -61,6 +62,13 @@ export const controlsMethods = {
       () => this.toggleFullScreen(),
       'rbp-full',
     );
+    // Present: full screen with large read-outs over the picture (present.js).
+    this.presentButton = button(
+      'Present',
+      'Present: full screen, large read-outs (P; Esc leaves it)',
+      () => this.togglePresent(),
+      'rbp-present-button',
+    );
     this.buildSlider();
     this.buildSpeed();
     bar.append(
@@ -72,6 +80,7 @@ export const controlsMethods = {
       el('span', 'rbp-label', 'speed'),
       this.speedSelect,
       this.fullButton,
+      this.presentButton,
     );
     return bar;
   },
@@ -84,6 +93,19 @@ export const controlsMethods = {
     this.slider.step = 'any';
     this.slider.value = String(this.t0);
     this.slider.setAttribute('aria-label', 'time (s)');
+    // The reversals as ticks on the slider's track (a datalist: the browser draws them where
+    // the thumb would stand, and the thumb snaps to one it comes near).
+    const reversals = this.run.reversals || [];
+    if (reversals.length) {
+      this.ticks = el('datalist');
+      this.ticks.id = `rbp-reversals-${this.run.id || 'run'}-${Math.random().toString(36).slice(2)}`;
+      for (const r of reversals) {
+        const o = el('option');
+        o.value = String(r);
+        this.ticks.appendChild(o);
+      }
+      this.slider.setAttribute('list', this.ticks.id);
+    }
     this.slider.addEventListener('input', () => this.setTime(parseFloat(this.slider.value), false));
   },
 
@@ -167,13 +189,17 @@ export const controlsMethods = {
       el(
         'div',
         'rbp-help',
-        (nrev ? `${nrev} reversal${nrev === 1 ? '' : 's'} (orange)` : 'No reversal in this run') +
+        (nrev
+          ? `${nrev} reversal${nrev === 1 ? '' : 's'} (dashed lines; ticks on the time slider)`
+          : 'No reversal in this run') +
           (this.forecast ? ", the averaged theory's forecast of the first (violet)" : '') +
-          '. Drag: orbit, right-drag: pan, wheel: zoom. ' +
+          '. The arrow around the body turns as it does: orange counter-clockwise, green clockwise.' +
+          ' Drag: orbit, right-drag: pan, wheel: zoom. ' +
           'Keys: space play/pause, ← → step one sample (' +
           formatStep(this.run.t) +
           '), ' +
-          'Home / End the start / end, R the next reversal, F full screen.',
+          'Home / End the start / end, R the next reversal, F full screen, ' +
+          'P present (full screen, large read-outs; Esc leaves).',
       ),
     );
     return side;
@@ -181,6 +207,7 @@ export const controlsMethods = {
 
   bindEvents() {
     this.root.addEventListener('keydown', (e) => this.onKey(e));
+    this.bindPresent();
     this.canvas.addEventListener('pointerdown', () => this.root.focus({ preventScroll: true }));
     this.slider.addEventListener('pointerdown', () => {
       this.sliderDragging = true;
@@ -232,6 +259,10 @@ export const controlsMethods = {
       this.gotoReversal();
     } else if (e.key === 'f' || e.key === 'F') {
       this.toggleFullScreen();
+    } else if (e.key === 'p' || e.key === 'P') {
+      this.togglePresent();
+    } else if (e.key === 'Escape' && this.presenting) {
+      this.setPresent(false);
     } else {
       return false;
     }

@@ -21,6 +21,7 @@ export const drawMethods = {
     }
     renderer.render(this.scene, this.camera);
     if (rect) renderer.setScissorTest(false);
+    this.updateCue();
     this.partialFrames += rect ? 1 : 0;
     this.drawnFrames += 1;
     this.renderTimes.push(performance.now() - started);

@@ -45,6 +45,18 @@ export const hookMethods = {
       },
       position: () => self.points.position.toArray(),
       spin: () => self.spinNow,
+      // The spin cue as drawn now: its sense (+1 counter-clockwise, −1 clockwise, 0 none), its
+      // colour, and the reversal label's text ('' when hidden).
+      cue: () => ({
+        sense: self.cueSense,
+        color: self.cueSense ? self.cueLine.getAttribute('stroke') : '',
+        label: self.reversalLabel.hidden ? '' : self.reversalLabel.textContent,
+      }),
+      present(on) {
+        self.setPresent(on);
+        self.render();
+      },
+      presenting: () => !!self.presenting,
       cameraPosition: () => self.camera.position.toArray(),
       cameraTarget: () => self.activeControls().target.toArray(),
       // Where world point p (m) shows on the canvas: CSS pixels from its top left corner.

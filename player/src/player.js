@@ -4,7 +4,7 @@
 // script ID.player.js that stores the run in window.RATTLEBACK_RUNS[ID] (see README.md beside
 // this folder's package.json for the fields); this script, loaded last, builds a player in each
 // such element. Its modules (one job each: scene, floor, camera, timeline, plot, controls, draw,
-// hook) are bundled with three.js into one classic script (build.sh): no module imports, no
+// hook, cue, present) are bundled with three.js into one classic script (build.sh): no module imports, no
 // fetch, nothing from the network, so the page works from file://.
 //
 // Frames: world z is up and the floor is the plane z = 0, as in the data; the body's points are
@@ -23,6 +23,8 @@ import { plotMethods } from './plot.js';
 import { controlsMethods } from './controls.js';
 import { drawMethods } from './draw.js';
 import { hookMethods } from './hook.js';
+import { cueMethods } from './cue.js';
+import { presentMethods } from './present.js';
 
 const players = [];
 
@@ -67,6 +69,7 @@ class Player {
     this.qb = new Quaternion();
     this.buildDom();
     this.buildScene();
+    this.buildCue();
     this.bindEvents();
     this.setView('oblique');
     this.applyTime(this.t0);
@@ -91,6 +94,8 @@ Object.assign(
   controlsMethods,
   drawMethods,
   hookMethods,
+  cueMethods,
+  presentMethods,
 );
 
 // ---------------------------------------------------------------------------------------------

@@ -1,5 +1,8 @@
-// The n(t) plot beside the picture: drawn once, with the reversals (orange) and the averaged
-// theory's forecast (violet); a cursor over it follows the time.
+// The n(t) plot beside the picture: drawn once, with the reversals (dark dashed lines, yellow
+// dots: as the videos' ticks and label, and not the spin cue's orange) and the averaged theory's
+// forecast (violet); a cursor over it follows the time.
+const REVERSAL_LINE = '#333';
+const REVERSAL_DOT = '#f0e442';
 const FORECAST_COLOR = '#7a3fd0'; // the forecast first reversal on the n(t) plot (violet)
 const FORECAST_LABEL_HEIGHT = 12; // px at the plot's top: its label, 9 px type from 2 px down
 
@@ -40,7 +43,7 @@ export const plotMethods = {
     if (x === this.cursorX && y === this.cursorY) return;
     if (this.cursorX === undefined) {
       // Below the forecast's label, which it would cover near the reversal; see-through, so
-      // that the reversal's orange line under it stays orange.
+      // that the reversal's dashed line under it stays dark.
       const top = L.box.top + (this.forecast ? FORECAST_LABEL_HEIGHT : 0);
       this.cursorLine.style.top = `${1 + top}px`;
       this.cursorLine.style.height = `${L.box.bottom - top}px`;
@@ -74,10 +77,10 @@ export const plotMethods = {
     this.plotDrawn = true;
   },
 
-  // Reversals: dashed orange lines.
+  // Reversals: dashed dark lines.
   drawReversalLines(g, L) {
     const { box } = L;
-    g.strokeStyle = '#e08a00';
+    g.strokeStyle = REVERSAL_LINE;
     g.setLineDash([3, 3]);
     for (const tr of this.run.reversals || []) {
       g.beginPath();
@@ -109,7 +112,7 @@ export const plotMethods = {
     g.fillText('forecast', x + (left ? -2 : 2), box.top + 2);
   },
 
-  // n(t), at most about 600 points, and the reversals on it: orange dots.
+  // n(t), at most about 600 points, and the reversals on it: yellow dots.
   drawCurve(g, L) {
     const { box } = L;
     g.strokeStyle = '#2a2a2a';
@@ -123,11 +126,14 @@ export const plotMethods = {
     }
     g.lineTo(L.x(t[this.n - 1]), L.y(spin[this.n - 1]));
     g.stroke();
-    g.fillStyle = '#e08a00';
+    g.fillStyle = REVERSAL_DOT;
+    g.strokeStyle = REVERSAL_LINE;
+    g.lineWidth = 1;
     for (const tr of this.run.reversals || []) {
       g.beginPath();
-      g.arc(L.x(tr), L.y(0), 3, 0, 2 * Math.PI);
+      g.arc(L.x(tr), L.y(0), 3.5, 0, 2 * Math.PI);
       g.fill();
+      g.stroke();
     }
   },
 

@@ -32,6 +32,18 @@ export const STYLE = `
 .rbp:fullscreen .rbp-stage{width:min(100%,calc((100vh - 120px) * 16 / 9))}
 .rbp:fullscreen .rbp-side{flex:0 0 300px}
 .rbp:fullscreen .rbp-read{font-size:20px}
+.rbp-cue{position:absolute;left:0;top:0;width:100%;height:100%;pointer-events:none;overflow:visible}
+.rbp-cue path{stroke-linecap:round;stroke-linejoin:round}
+.rbp-reversal-label{position:absolute;top:8px;right:8px;background:#f0e442;color:#141414;padding:2px 8px;font:600 15px/1.4 system-ui,sans-serif;pointer-events:none}
+.rbp.rbp-present{position:fixed;inset:0;z-index:1000;background:#fff;margin:0;padding:12px;box-sizing:border-box;flex-wrap:nowrap;overflow:hidden}
+.rbp.rbp-present .rbp-main{flex:1 1 auto;min-width:0;display:flex;flex-direction:column;align-items:center}
+.rbp.rbp-present .rbp-stage{width:min(100%,calc((100vh - 110px) * 16 / 9))}
+.rbp.rbp-present .rbp-bar,.rbp.rbp-present .rbp-views{width:min(100%,calc((100vh - 110px) * 16 / 9))}
+.rbp.rbp-present .rbp-side{position:absolute;left:28px;top:24px;flex:none;width:auto;background:rgba(255,255,255,.82);padding:6px 14px;border-radius:4px;pointer-events:none}
+.rbp.rbp-present .rbp-title{font-size:max(20px,2.4vh)}
+.rbp.rbp-present .rbp-read{font-size:max(26px,3.6vh)}
+.rbp.rbp-present .rbp-plotbox,.rbp.rbp-present .rbp-help{display:none}
+.rbp.rbp-present .rbp-reversal-label{font-size:max(24px,3.4vh);top:16px;right:16px}
 .rbp-missing{padding:10px 12px;border:1px dashed #c9a0a0;border-radius:4px;color:#7a2e2e;background:#fbf4f4;font:14px system-ui,sans-serif;margin:8px 0}
 `;
 

@@ -61,5 +61,58 @@ void writeFigure(std::ostream& out, const std::string& file, const std::string& 
       << "</figcaption></figure>\n";
 }
 
+void writeVideoFigure(std::ostream& out, const std::string& file, const std::string& poster,
+                      const char* preload, const std::string& caption) {
+  out << "<figure class=\"vid\"><video src=\"" << url(file)
+      << "\" muted loop playsinline controls preload=\"" << preload << "\""
+      << (poster.empty() ? "" : " poster=\"" + url(poster) + "\"")
+      << "></video><div class=\"vbar\" hidden><button type=\"button\" class=\"vplay\">"
+         "▶ Play</button><input type=\"range\" class=\"vseek\" min=\"0\" max=\"1\" "
+         "step=\"any\" value=\"0\" aria-label=\"time (s)\"><span class=\"vtime\">0.00 s"
+         "</span><button type=\"button\" class=\"vfull\">Full screen</button></div>"
+         "<figcaption>"
+      << caption << "</figcaption></figure>\n";
+}
+
+const char* const kVideoStyle = R"(
+.vbar{display:flex;gap:.4em;align-items:center;margin:.3em 0 .2em;font-size:.9em}
+.vbar button{font:inherit;padding:.1em .6em}.vseek{flex:1 1 auto;min-width:60px}
+.vtime{font-family:"DejaVu Sans Mono",monospace;min-width:5.5em;text-align:right}
+figure.vid:fullscreen{background:#000;display:flex;flex-direction:column;justify-content:center;margin:0;padding:1em;box-sizing:border-box}
+figure.vid:fullscreen video{max-height:calc(100vh - 5em);width:auto;max-width:100%;margin:0 auto;background:#000}
+figure.vid:fullscreen .vbar,figure.vid:fullscreen figcaption{color:#eee}
+)";
+
+// The bars replace the browser's controls, which lie over the video's bottom edge where the
+// inset and the floor's scale are drawn (docs/commands.md "rattleback report"); a click on the
+// picture plays or pauses, as the browser's own does.
+const char* const kVideoScript = R"(
+document.querySelectorAll('figure.vid').forEach(function (f) {
+  var v = f.querySelector('video'), bar = f.querySelector('.vbar');
+  var play = bar.querySelector('.vplay'), seek = bar.querySelector('.vseek');
+  var time = bar.querySelector('.vtime'), full = bar.querySelector('.vfull');
+  v.removeAttribute('controls');
+  bar.hidden = false;
+  function toggle() { if (v.paused) v.play().catch(function () {}); else v.pause(); }
+  function shown() {
+    play.textContent = v.paused ? '\u25b6 Play' : '\u275a\u275a Pause';
+    time.textContent = v.currentTime.toFixed(2) + ' s';
+    if (v.duration > 0 && document.activeElement !== seek) seek.value = v.currentTime / v.duration;
+  }
+  play.addEventListener('click', toggle);
+  v.addEventListener('click', toggle);
+  ['play', 'pause', 'timeupdate', 'seeked', 'loadedmetadata'].forEach(function (e) {
+    v.addEventListener(e, shown);
+  });
+  seek.addEventListener('input', function () {
+    if (v.duration > 0) v.currentTime = seek.value * v.duration;
+  });
+  full.addEventListener('click', function () {
+    if (document.fullscreenElement) document.exitFullscreen();
+    else if (f.requestFullscreen) f.requestFullscreen().catch(function () {});
+  });
+});
+)";
+
 }  // namespace report
 }  // namespace tasks

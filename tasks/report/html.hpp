@@ -21,4 +21,17 @@ bool endsWith(const std::string& s, const std::string& suffix);
 void writeFigure(std::ostream& out, const std::string& file, const std::string& caption,
                  const char* loading = "eager");
 
+/// A video, captioned, with the page's own controls in a bar below it (play, time, full screen:
+/// kVideoScript wires them), so that nothing covers the picture's read-outs and inset, which
+/// the browser's controls, drawn over the video's bottom, did. Without scripts the browser's
+/// own controls stay. `preload`: "auto" or "metadata"; `poster`: a URL, or "" for none.
+void writeVideoFigure(std::ostream& out, const std::string& file, const std::string& poster,
+                      const char* preload, const std::string& caption);
+
+/// The page's script for writeVideoFigure's bars: a classic script (the page may be opened
+/// from disk), run once at the end of the page.
+extern const char* const kVideoScript;
+/// Their style.
+extern const char* const kVideoStyle;
+
 }  // namespace tasks::report

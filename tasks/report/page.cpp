@@ -71,7 +71,7 @@ void writePage(std::ostream& out, const fs::path& dir, const Folder& folder,
   out << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
          "<meta name=\"viewport\" content=\"width=device-width\">"
          "<title>rattleback: results</title><style>"
-      << kStyle << "</style></head><body>\n<h1>rattleback: results</h1>\n"
+      << kStyle << kVideoStyle << "</style></head><body>\n<h1>rattleback: results</h1>\n"
       << "<p>What the runs left in this folder, by scene. Made by rattleback " RATTLEBACK_VERSION
          " (<code>rattleback report</code>). What each figure means: the documentation, "
       << documentationWhere() << ".</p>\n";
@@ -85,7 +85,7 @@ void writePage(std::ostream& out, const fs::path& dir, const Folder& folder,
   for (const std::string& id : players)
     out << "<script src=\"" << url(id + ".player.js") << "\"></script>\n";
   if (!players.empty()) out << "<script src=\"" << url(kPlayerBundle) << "\"></script>\n";
-  out << "</body></html>\n";
+  out << "<script>" << kVideoScript << "</script>\n</body></html>\n";
 }
 
 }  // namespace

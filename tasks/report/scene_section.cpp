@@ -167,8 +167,12 @@ void writePlayerPlace(std::ostream& out, const std::string& name,
   if (theory && field(*theory, "predicted_first_reversal").is_object())
     forecast =
         " data-forecast=\"" + escape(field(*theory, "predicted_first_reversal").dump()) + "\"";
-  out << "<h3>Turn it around</h3><p>The run replayed in 3D: drag to orbit, scroll to zoom, "
-         "space plays and pauses, arrows step.</p><div class=\"rb-player\" data-run=\""
+  out << "<h3>Turn it around</h3><p>The run replayed in 3D: drag to orbit, scroll to zoom. "
+         "Keys: <kbd>space</kbd> plays and pauses, <kbd>←</kbd> <kbd>→</kbd> step, "
+         "<kbd>R</kbd> the next reversal, <kbd>F</kbd> full screen, <kbd>P</kbd> present (full "
+         "screen, large read-outs, for a classroom), <kbd>Esc</kbd> leaves either. The arrow "
+         "around the body turns as it does: orange counter-clockwise, green clockwise.</p>"
+         "<div class=\"rb-player\" data-run=\""
       << escape(name) << "\"" << forecast << "></div>\n";
 }
 
@@ -186,9 +190,7 @@ void writeScene(std::ostream& out, const fs::path& dir, const std::string& name,
   writeAnalysis(out, f, theory, run);
   writeMoreRuns(out, dir, f);
   for (const std::string& file : f.more_videos)
-    out << "<figure><video src=\"" << url(file) << "\" muted loop playsinline controls "
-        << "preload=\"metadata\"></video><figcaption>" << escape(file)
-        << "</figcaption></figure>\n";
+    writeVideoFigure(out, file, "", "metadata", escape(file));
   writeImages(out, f, kStillSuffixes, "Stills", f.more_stills);
   writeImages(out, f, kPlotSuffixes, "Against time");
   out << "</section>\n";

@@ -30,10 +30,7 @@ struct Videos {
   // the video's first frame once loaded.
   void video(const std::string& file, const std::string& poster_suffix,
              const std::string& caption) const {
-    const std::string poster = f.has(poster_suffix) ? f.at(poster_suffix) : "";
-    out << "<figure><video src=\"" << url(file) << "\" muted loop playsinline controls "
-        << "preload=\"auto\"" << (poster.empty() ? "" : " poster=\"" + url(poster) + "\"")
-        << "></video><figcaption>" << caption << "</figcaption></figure>\n";
+    writeVideoFigure(out, file, f.has(poster_suffix) ? f.at(poster_suffix) : "", "auto", caption);
   }
 
   // What the run measured, where it was spun the way (`preferred` or not) a video was.

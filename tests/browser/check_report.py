@@ -4,7 +4,14 @@ and checks what a reader would see: the page loads with no console errors, every
 (naturalWidth > 0), every video reaches readyState >= 2 with the expected duration, and its
 currentTime advances when it plays; and no image or video is drawn larger than its own size.
 
-Usage: check_report.py DIR EXPECTED_VIDEO_SECONDS
+For a classroom, at a 1280 × 720 and a 1920 × 1080 viewport: no video has the
+browser's controls (they lie over its bottom edge, where the inset is drawn) and each has the
+page's own bar below it, not over it; the player's keys, P (present) among them, are listed on
+the page; present mode (P) fills the viewport with the picture, whole, and large read-outs that
+lie inside it, and Esc leaves it. With SCREENSHOT_DIR, the page at its first video and the player
+in present mode are saved there at both sizes (report-WxH.png, present-WxH.png), to look at.
+
+Usage: check_report.py DIR EXPECTED_VIDEO_SECONDS [SCREENSHOT_DIR]
 Exit status 0 when every check passes, 1 when one fails (each failure printed), 77 when
 Selenium or Chromium is not installed (CTest's "skipped")."""
 import os
@@ -23,6 +30,108 @@ except ImportError:
 
 CHROMIUM = "/usr/bin/chromium"
 DRIVER = "/usr/bin/chromedriver"
+
+
+def classroom(driver, size, failures, screenshots):
+    """The page's layout for a classroom at a viewport of `size` (module docstring)."""
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.common.action_chains import ActionChains
+    from selenium.webdriver.common.keys import Keys
+
+    w, h = size
+    where = f"{w}x{h}"
+    driver.execute_cdp_cmd(
+        "Emulation.setDeviceMetricsOverride",
+        {"width": w, "height": h, "deviceScaleFactor": 1, "mobile": False},
+    )
+    time.sleep(0.3)
+    videos = driver.execute_script(
+        """return Array.from(document.querySelectorAll('video')).map(v => {
+            const r = v.getBoundingClientRect();
+            const bar = v.parentElement.querySelector('.vbar');
+            const b = bar && !bar.hidden ? bar.getBoundingClientRect() : null;
+            return {src: v.getAttribute('src'), controls: v.hasAttribute('controls'),
+                    bottom: r.bottom, left: r.left, right: r.right,
+                    bar: b && {top: b.top, height: b.height}};
+        });"""
+    )
+    for v in videos:
+        if v["controls"]:
+            failures.append(f"{where}: video {v['src']} has the browser's controls, over its inset")
+        if not v["bar"] or v["bar"]["height"] <= 0:
+            failures.append(f"{where}: video {v['src']} has no controls of the page's own")
+        elif v["bar"]["top"] < v["bottom"] - 0.5:
+            failures.append(
+                f"{where}: video {v['src']}: its bar (top {v['bar']['top']}) lies over it (bottom {v['bottom']})"
+            )
+    # The page's own bar works: its play button plays the video.
+    played = driver.execute_async_script(
+        """const done = arguments[arguments.length - 1];
+        const f = document.querySelector('figure.vid'); if (!f) { done(null); return; }
+        const v = f.querySelector('video'); v.pause();
+        f.querySelector('.vplay').click();
+        setTimeout(() => done([!v.paused, f.querySelector('.vplay').textContent]), 500);"""
+    )
+    if played is None or not played[0] or "Pause" not in played[1]:
+        failures.append(f"{where}: the page's play button did not play the first video ({played})")
+    driver.execute_script("document.querySelectorAll('video').forEach(v => v.pause());")
+    if screenshots:
+        out = pathlib.Path(screenshots)
+        out.mkdir(parents=True, exist_ok=True)
+        driver.execute_script("document.querySelector('figure.vid').scrollIntoView({block: 'start'});")
+        time.sleep(0.5)
+        driver.save_screenshot(str(out / f"report-{where}.png"))
+    players = driver.find_elements(By.CSS_SELECTOR, ".rb-player")
+    if not players or not driver.execute_script("return !!arguments[0].rbPlayer;", players[0]):
+        return
+    player = players[0]
+    keys = driver.execute_script(
+        "return arguments[0].previousElementSibling ? arguments[0].previousElementSibling.textContent : '';",
+        player,
+    )
+    for said in ["P present", "Esc", "F full screen", "R the next reversal"]:
+        if said not in keys:
+            failures.append(f"{where}: the page does not say the player's key {said!r} ({keys!r})")
+    driver.execute_script("arguments[0].scrollIntoView({block: 'start'});", player)
+    player.find_element(By.CSS_SELECTOR, ".rbp-title").click()
+    ActionChains(driver).send_keys("p").perform()
+    time.sleep(0.8)
+    got = driver.execute_script(
+        """const root = arguments[0].querySelector('.rbp');
+        const box = e => { const r = e.getBoundingClientRect();
+                           return [r.left, r.top, r.right, r.bottom]; };
+        return {present: root.classList.contains('rbp-present'),
+                stage: box(root.querySelector('.rbp-stage')),
+                read: box(root.querySelector('.rbp-spin')),
+                font: parseFloat(getComputedStyle(root.querySelector('.rbp-spin')).fontSize),
+                vw: document.documentElement.clientWidth, vh: document.documentElement.clientHeight};""",
+        player,
+    )
+    if not got["present"]:
+        failures.append(f"{where}: P did not enter present mode")
+    else:
+        vw, vh = got["vw"], got["vh"]
+        left, top, right, bottom = got["stage"]
+        inside = lambda b: b[0] >= -0.5 and b[1] >= -0.5 and b[2] <= vw + 0.5 and b[3] <= vh + 0.5
+        # The picture, whole, as large as 16:9 allows with the bar and views below it (110 px).
+        largest = min(vw - 24, (vh - 110) * 16 / 9)
+        if not inside(got["stage"]) or right - left < 0.95 * largest:
+            failures.append(
+                f"{where}: in present mode the picture is {got['stage']}, not whole in a "
+                f"{vw}x{vh} viewport at {largest:.0f} px wide"
+            )
+        if not inside(got["read"]) or got["font"] < 26:
+            failures.append(
+                f"{where}: in present mode the spin read-out is {got['font']} px at {got['read']}"
+            )
+        if screenshots:
+            driver.save_screenshot(str(pathlib.Path(screenshots) / f"present-{where}.png"))
+    ActionChains(driver).send_keys(Keys.ESCAPE).perform()
+    time.sleep(0.5)
+    if driver.execute_script(
+        "return arguments[0].querySelector('.rbp').classList.contains('rbp-present');", player
+    ):
+        failures.append(f"{where}: Esc did not leave present mode")
 
 
 def main():
@@ -116,6 +225,8 @@ def main():
         for src, shown, natural in sizes:
             if natural > 0 and shown > natural + 1:
                 failures.append(f"{src} is drawn {shown} px wide, larger than its own {natural} px")
+        for size in [(1280, 720), (1920, 1080)]:
+            classroom(driver, size, failures, sys.argv[3] if len(sys.argv) > 3 else "")
         # The console: no errors.
         for entry in driver.get_log("browser"):
             if entry["level"] == "SEVERE":

@@ -32,7 +32,8 @@ mkdir -p "$dir/scenes" && cp "$scene" "$odd"
 test -s "$dir/index.html"
 # Relative paths only: the page must not name the folder it was made in.
 if grep -q "$dir" "$dir/index.html"; then echo "FAIL: index.html holds absolute paths"; exit 1; fi
-/usr/bin/python3 "$source_dir/tests/browser/check_report.py" "$dir" 2.0
+# RATTLEBACK_SCREENSHOTS=DIR keeps the classroom layout's screenshots there, to look at.
+/usr/bin/python3 "$source_dir/tests/browser/check_report.py" "$dir" 2.0 ${RATTLEBACK_SCREENSHOTS:+"$RATTLEBACK_SCREENSHOTS"}
 # The 3D player of the run simulate left, when the build bundled one (node and npm).
 if [ -f "$dir/rattleback-player.js" ]; then
   grep -q 'class="rb-player" data-run="rattleback"' "$dir/index.html" ||

@@ -734,6 +734,7 @@ class Checker:
         self.keys(element, where, run)
         self.speed_menu(element, where, run)
         self.teacher_controls(element, where, run)
+        self.spin_cue(element, where, run)
 
     def pause_holds(self, element, where, run_id):
         # Pause stops at what is shown when it is pressed: the time, the slider, the read-outs,
@@ -969,6 +970,74 @@ class Checker:
         if is_full:
             self.js("document.exitFullscreen();")
             time.sleep(0.3)
+
+    def spin_cue(self, element, where, run):
+        # The spin cue over the picture, as the videos draw it (docs/commands.md "The spin cue"):
+        # at a sample where n < -0.05 an arrow in bluish green whose head is left of the arc's
+        # middle (a clockwise turn seen from above moves the side nearer the camera to the
+        # viewer's left), where n > 0.05 orange with its head on the right; none where |n| is
+        # below 0.05; "reversal at T s" from each reversal on for 1.5 s, and not before it.
+        t, spin = run["t"], run["spin"]
+        self.click_view(element, "oblique")
+        picks = {}
+        for k in range(len(t)):
+            if spin[k] < -0.5 and -1 not in picks:
+                picks[-1] = t[k]
+            if spin[k] > 0.5 and 1 not in picks:
+                picks[1] = t[k]
+        colours = {1: "#e69f00", -1: "#009e73"}
+        for sense, at in picks.items():
+            self.hook(element, "setTime(arguments[1])", at)
+            self.frames()
+            cue = self.hook(element, "cue()")
+            geometry = self.js(
+                """const svg = arguments[0].querySelector('.rbp-cue');
+                const d = svg.querySelector('path:nth-of-type(2)').getAttribute('d');
+                const points = d.slice(1).split('L').map(p => p.split(',').map(Number));
+                const tip = svg.querySelector('polygon:last-of-type').getAttribute('points')
+                    .split(' ')[0].split(',').map(Number);
+                return {middle: points[points.length >> 1], tip,
+                        shown: getComputedStyle(svg).display !== 'none'};""",
+                element,
+            )
+            self.check(
+                cue["sense"] == sense and cue["color"] == colours[sense] and geometry["shown"],
+                f"{where}: at t = {at} (n {'>' if sense > 0 else '<'} 0) the cue is {cue}",
+            )
+            right = geometry["tip"][0] > geometry["middle"][0]
+            self.check(
+                right == (sense > 0),
+                f"{where}: at t = {at} the arrow's head {geometry['tip']} is on the "
+                f"{'right' if right else 'left'} of its middle {geometry['middle']}",
+            )
+        slow = [t[k] for k in range(len(t)) if abs(spin[k]) < 0.02]
+        if slow:
+            self.hook(element, "setTime(arguments[1])", slow[0])
+            self.frames()
+            self.check(self.hook(element, "cue()")["sense"] == 0, f"{where}: an arrow at n ≈ 0")
+        t0, t1 = self.hook(element, "range()")
+        for r in run.get("reversals") or []:
+            for offset, expect in [(-0.1, False), (0.1, True), (1.4, True), (1.6, False)]:
+                at = r + offset
+                if not t0 <= at <= t1 or any(0 < at - q < 1.5 for q in run["reversals"] if q != r):
+                    continue
+                self.hook(element, "setTime(arguments[1])", at)
+                self.frames()
+                label = self.hook(element, "cue()")["label"]
+                self.check(
+                    (label == f"reversal at {r:.2f} s") == expect and (bool(label) == expect),
+                    f"{where}: at t = {at:.3f} ({offset:+} s from the reversal at {r}) the label "
+                    f"reads {label!r}",
+                )
+        ticks = self.js(
+            """const s = arguments[0].querySelector('.rbp-slider');
+            return s.list ? Array.from(s.list.options).map(o => +o.value) : [];""",
+            element,
+        )
+        self.check(
+            ticks == list(run.get("reversals") or []),
+            f"{where}: the time slider's ticks {ticks} are not the reversals {run.get('reversals')}",
+        )
 
     def click_view(self, element, view):
         button = element.find_element(By.CSS_SELECTOR, f".rbp-view-{view}")
