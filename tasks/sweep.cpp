@@ -131,10 +131,10 @@ std::optional<SweepRow> runRow(const scene::Sweep& sweep, const scene::SweepScen
   rollout.stopWith(stop);
   const double end = rollout.endTime();
   const bool went = advanceAsNeeded(rollout, work.needs);
-  if (rollout.summary().stop_requested) return std::nullopt;
-  // What the run knows so far: the rest only of a whole run (a run stopped early leaves them
-  // empty, not as they stood when it stopped).
   const sim::RunSummary& run = rollout.summary();
+  if (run.stop_requested) return std::nullopt;
+  // The first reversal as far as the run went; the rest only of a whole run (a run stopped
+  // early leaves them empty, not as they stood when it stopped).
   row.first_reversal_s = run.first_reversal_s;
   if (work.needs == ColumnNeeds::WholeRun) {
     row.reversals = static_cast<std::int64_t>(run.reversals.size());
