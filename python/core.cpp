@@ -483,6 +483,15 @@ void bindSweep(py::module_& m) {
       .def_property_readonly("notes", [](const SweepTable& t) { return t.notes; })
       .def_property_readonly("interrupted", [](const SweepTable& t) { return t.interrupted; })
       .def_property_readonly("base", [](const SweepTable& t) { return t.sweep.base; })
+      // Where every row was refused, the first one's reason (whether or not the table's columns
+      // list status and message): rattleback.sweep warns of it, as the command line exits 2.
+      .def_property_readonly("first_refusal",
+                             [](const SweepTable& t) -> std::optional<std::string> {
+                               if (t.rows.empty()) return std::nullopt;
+                               for (const tasks::SweepRow& r : t.rows)
+                                 if (r.status != tasks::RowStatus::Refused) return std::nullopt;
+                               return t.rows.front().message;
+                             })
       .def_property_readonly("keys", [](const SweepTable& t) {
         std::vector<std::string> keys;
         for (const auto& axis : t.sweep.axes) keys.push_back(axis.key);

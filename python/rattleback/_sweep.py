@@ -203,13 +203,10 @@ def sweep(
     for note in table.notes:
         warnings.warn(RunWarning(note, "axis_unused"), stacklevel=3)
     result = SweepTable(table)
-    status = result.columns.get("status")
-    if status is not None and len(status) and bool(np.all(status == "refused")):
+    if table.first_refusal is not None:
         warnings.warn(
             RunWarning(
-                f"{table.file}: every run was refused; the first: "
-                f"{result.columns.get('message', [''])[0]}",
-                "all_refused",
+                f"{table.file}: every run was refused; the first: {table.first_refusal}", "all_refused"
             ),
             stacklevel=3,
         )

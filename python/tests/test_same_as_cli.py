@@ -583,3 +583,6 @@ def test_a_sweep_given_columns_holds_them_with_the_command_lines_values(tmp_path
         match="argument columns: columns: forcast_s is not a column of the table; did you mean forecast_s",
     ):
         rb.sweep(base, vary, columns=["forcast_s"])
+    # A table without status still warns when every run was refused (the CLI exits 2).
+    with pytest.warns(rb.RunWarning, match="every run was refused; the first: argument vary: body.mass"):
+        rb.sweep(base, {"body.mass": [-1.0]}, duration=0.1, columns=["first_reversal_s"])
