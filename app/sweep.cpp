@@ -96,18 +96,36 @@ rb::Status metricProblem(const std::string& name) {
                           rb::choices<tasks::SweepMetric>(", ") + ")");
 }
 
-// The metric from a line of a shard's table (the merge reads the files the shards wrote).
-double metricOf(const std::string& line, std::size_t axes, tasks::SweepMetric metric) {
-  std::size_t column = 1 + axes;
-  for (const tasks::Column& c : tasks::sweepResultColumns()) {
-    if (c.name == rb::nameOf(metric)) break;
-    ++column;
-  }
+// The field of `name` in a line of a table of these result columns, or none.
+std::optional<std::string> fieldOf(const std::vector<std::string>& fields, std::size_t axes,
+                                   const tasks::SweepColumns& columns, std::string_view name) {
+  for (std::size_t i = 0; i < columns.size(); ++i)
+    if (columns[i]->column.name == name)
+      return 1 + axes + i < fields.size() ? std::optional(fields[1 + axes + i]) : std::nullopt;
+  return std::nullopt;
+}
+
+// The metric from a line of a shard's table (the merge reads the files the shards wrote): none
+// where the run was not ok (a table without the status column: where the field is empty).
+double metricOf(const std::string& line, std::size_t axes, const tasks::SweepColumns& columns,
+                tasks::SweepMetric metric) {
   const auto fields = splitCsv(line);
-  if (!fields || fields->size() <= column || (*fields)[column].empty() ||
-      (*fields)[1 + axes] != "ok")
-    return std::nan("");
-  return std::strtod((*fields)[column].c_str(), nullptr);
+  if (!fields) return std::nan("");
+  const auto value = fieldOf(*fields, axes, columns, rb::nameOf(metric));
+  const auto status = fieldOf(*fields, axes, columns, "status");
+  if (!value || value->empty() || (status && *status != "ok")) return std::nan("");
+  return std::strtod(value->c_str(), nullptr);
+}
+
+// Why --metric cannot be plotted from a table of these columns, or nothing.
+rb::Status metricListed(const std::string& name, const tasks::SweepColumns& columns) {
+  for (const tasks::SweepResultColumn* c : columns)
+    if (c->column.name == name) return {};
+  std::string listed;
+  for (const tasks::SweepResultColumn* c : columns)
+    listed += (listed.empty() ? "" : ", ") + std::string(c->column.name);
+  return rb::Status::fail("--metric " + name + ": the sweep's columns: does not list it (" +
+                          listed + "); add it there to plot it");
 }
 
 // The metric along one axis (the line plot of plotTable): the figure titled `title`, its panel
@@ -250,10 +268,13 @@ struct Plan {
   std::map<std::string, int> counts;  // of each status ("ok", "stopped", "refused")
 };
 
-// "ok", "stopped", "refused": of the status field of a line (rows kept by a journal).
-std::string statusOf(const std::string& line, std::size_t axes) {
+// "ok", "stopped", "refused": of the status field of a line (rows kept by a journal); "" in a
+// table that does not list it.
+std::string statusOf(const std::string& line, std::size_t axes,
+                     const tasks::SweepColumns& columns) {
   const auto fields = splitCsv(line);
-  const std::string status = fields && fields->size() > 1 + axes ? (*fields)[1 + axes] : "";
+  const std::string status =
+      fields ? fieldOf(*fields, axes, columns, "status").value_or("") : std::string();
   return status.substr(0, status.find(':'));
 }
 
@@ -280,7 +301,8 @@ rb::Result<Plan> planRows(const SweepArgs& args, const scene::Sweep& sweep,
   for (std::int64_t r : plan.rows)
     if (!plan.done.count(r)) plan.todo.push_back(r);
   plan.from_journal = plan.done.size();
-  for (const auto& [r, line] : plan.done) ++plan.counts[statusOf(line, sweep.axes.size())];
+  const tasks::SweepColumns columns = tasks::tableColumns(sweep);
+  for (const auto& [r, line] : plan.done) ++plan.counts[statusOf(line, sweep.axes.size(), columns)];
   return plan;
 }
 
@@ -288,10 +310,13 @@ rb::Result<Plan> planRows(const SweepArgs& args, const scene::Sweep& sweep,
 bool runRows(const SweepArgs& args, const scene::Sweep& sweep, const scene::SweepScenes& scenes,
              Plan& plan, tasks::Journal& journal, std::map<std::int64_t, double>& metric,
              tasks::SweepRun& run) {
+  const tasks::SweepColumns columns = tasks::tableColumns(sweep);
   tasks::SweepOptions options;
   options.jobs = args.jobs;
   options.cancelled = [] { return interruptSignal() != 0; };
-  options.finished = [&](const tasks::SweepRow& row) { journal.append(tasks::sweepLine(row)); };
+  options.finished = [&](const tasks::SweepRow& row) {
+    journal.append(tasks::sweepLine(row, columns));
+  };
   Progress progress("sweep", static_cast<std::int64_t>(plan.rows.size()), !args.quiet);
   options.progress = [&](std::int64_t finished) {
     progress.update(static_cast<std::int64_t>(plan.from_journal) + finished);
@@ -301,7 +326,7 @@ bool runRows(const SweepArgs& args, const scene::Sweep& sweep, const scene::Swee
   journal.close();
   if (run.interrupted) return false;
   for (const tasks::SweepRow& row : run.rows) {
-    plan.done[row.row] = tasks::sweepLine(row);
+    plan.done[row.row] = tasks::sweepLine(row, columns);
     metric[row.row] = tasks::metricOf(row, metricNamed(args.metric));
     ++plan.counts[std::string(rb::nameOf(row.status))];
   }
@@ -342,9 +367,12 @@ rb::Status writeOutputs(const SweepArgs& args, const scene::Sweep& sweep,
                         const std::optional<tasks::Shard>& shard, const Plan& plan,
                         const std::map<std::int64_t, double>& metric, const std::string& output) {
   const std::vector<std::string> keys = axisKeys(sweep);
+  const tasks::SweepColumns columns = tasks::tableColumns(sweep);
   std::vector<std::string> lines;
   for (const auto& [r, line] : plan.done) lines.push_back(line);
-  if (auto e = tasks::writeSweepTable(output, keys, lines, tasks::sweepSidecar(sweep, shard)); !e)
+  if (auto e =
+          tasks::writeSweepTable(output, keys, columns, lines, tasks::sweepSidecar(sweep, shard));
+      !e)
     return e;
   tasks::Journal::remove(tasks::Journal::pathOf(output));
   if (args.plot.empty()) return {};
@@ -352,8 +380,9 @@ rb::Status writeOutputs(const SweepArgs& args, const scene::Sweep& sweep,
   for (const auto& axis : sweep.axes) table.axis_values.push_back(axis.values);
   for (const auto& [r, line] : plan.done) {
     const auto it = metric.find(r);
-    table.values.push_back(
-        it != metric.end() ? it->second : metricOf(line, keys.size(), metricNamed(args.metric)));
+    table.values.push_back(it != metric.end()
+                               ? it->second
+                               : metricOf(line, keys.size(), columns, metricNamed(args.metric)));
   }
   return plotTable(args.plot, metricNamed(args.metric), fs::path(args.file).stem().string(), table);
 }
@@ -417,12 +446,14 @@ int sweepCommand(const SweepArgs& args) {
     return fail(
         rb::Status::fail("sweep: give a sweep file (e.g. rattleback sweep "
                          "sweeps/spin-drag.yaml), or 'sweep merge OUT.csv SHARD…'"));
-  auto loaded = scene::loadSweep(tasks::findShipped(args.file));
+  auto loaded = tasks::loadSweep(tasks::findShipped(args.file));
   if (!loaded) return fail(loaded);
   noteShipped(args.file);
   const scene::Sweep& sweep = loaded.value();
   std::optional<tasks::Shard> shard;
   if (auto ok = checkOptions(args, shard); !ok) return fail(ok);
+  if (!args.plot.empty())
+    if (auto ok = metricListed(args.metric, tasks::tableColumns(sweep)); !ok) return fail(ok);
   tasks::MadeFolders made;
   auto output = outputOf(args, sweep, shard, made);
   if (!output) return fail(output);
@@ -434,8 +465,9 @@ int sweepCommand(const SweepArgs& args) {
   auto plan = planRows(args, sweep, shard, output.value());
   if (!plan) return fail(plan);
   const std::string journal_path = tasks::Journal::pathOf(output.value());
-  auto journal = tasks::Journal::open(output.value(), tasks::sweepHeader(axisKeys(sweep)),
-                                      plan->done, tasks::sweepFingerprint(sweep));
+  auto journal = tasks::Journal::open(
+      output.value(), tasks::sweepHeader(axisKeys(sweep), tasks::tableColumns(sweep)), plan->done,
+      tasks::sweepFingerprint(sweep));
   if (!journal) return fail(journal);
   std::map<std::int64_t, double> metric;
   tasks::SweepRun run;
@@ -472,14 +504,17 @@ int sweepMergeCommand(const SweepMergeArgs& args) {
   auto merged = tasks::mergeShards(args.shards);
   if (!merged) return fail(merged);
   const tasks::Merged& m = merged.value();
-  if (auto e = tasks::writeSweepTable(args.output, m.keys, m.lines, m.sidecar); !e) return fail(e);
+  if (!args.plot.empty())
+    if (auto ok = metricListed(args.metric, m.columns); !ok) return fail(ok);
+  if (auto e = tasks::writeSweepTable(args.output, m.keys, m.columns, m.lines, m.sidecar); !e)
+    return fail(e);
   const std::string sweep_file = m.sidecar.value("sweep", "sweep");
   if (!args.plot.empty()) {
     const nlohmann::json& unit =
         m.sidecar.contains("length_unit_m") ? m.sidecar["length_unit_m"] : nlohmann::json();
     Table table{m.keys, m.axis_values, {}, unit.is_number() ? unit.get<double>() : 0.0};
     for (const std::string& line : m.lines)
-      table.values.push_back(metricOf(line, m.keys.size(), metricNamed(args.metric)));
+      table.values.push_back(metricOf(line, m.keys.size(), m.columns, metricNamed(args.metric)));
     const std::string title = fs::path(sweep_file).stem().string();
     if (auto e = plotTable(args.plot, metricNamed(args.metric), title, table); !e) return fail(e);
   }

@@ -255,7 +255,10 @@ void checkJobs(int jobs) {
 
 // Whether two sweeps run the same scenes: the same base, values, axes and duration.
 bool sameSweep(const scene::Sweep& a, const scene::Sweep& b) {
-  if (a.base_text != b.base_text || a.duration != b.duration ||
+  std::vector<std::string> a_columns, b_columns;
+  for (const auto& c : a.columns) a_columns.push_back(c.name);
+  for (const auto& c : b.columns) b_columns.push_back(c.name);
+  if (a.base_text != b.base_text || a.duration != b.duration || a_columns != b_columns ||
       a.base_values.size() != b.base_values.size() || a.axes.size() != b.axes.size())
     return false;
   for (std::size_t i = 0; i < a.base_values.size(); ++i)
@@ -316,10 +319,19 @@ std::shared_ptr<SweepTable> runSweepTable(scene::Sweep sweep, int jobs,
   return table;
 }
 
+// The argument columns= (Python's: a sweep file's columns: is its own), put over the sweep's.
+void putColumns(scene::Sweep& sweep, const std::optional<std::vector<std::string>>& columns) {
+  if (!columns) return;
+  if (auto ok = tasks::setColumns(sweep, *columns, "argument columns"); !ok) raise(ok.error());
+}
+
 std::shared_ptr<SweepTable> sweep(const std::string& path, int jobs,
-                                  const std::shared_ptr<SweepTable>& resume) {
+                                  const std::shared_ptr<SweepTable>& resume,
+                                  const std::optional<std::vector<std::string>>& columns) {
   checkJobs(jobs);
-  return runSweepTable(take(scene::loadSweep(tasks::findShipped(path))), jobs, resume);
+  scene::Sweep made = take(tasks::loadSweep(tasks::findShipped(path)));
+  putColumns(made, columns);
+  return runSweepTable(std::move(made), jobs, resume);
 }
 
 // A sweep made in Python: `vary` (and `duration`) as a sweep file's YAML, over a scene's text
@@ -327,11 +339,13 @@ std::shared_ptr<SweepTable> sweep(const std::string& path, int jobs,
 std::shared_ptr<SweepTable> sweepOf(const std::string& vary, const std::string& name,
                                     const std::string& base_yaml, const std::string& base_name,
                                     const std::vector<std::pair<std::string, std::string>>& values,
-                                    int jobs, const std::shared_ptr<SweepTable>& resume) {
+                                    int jobs, const std::shared_ptr<SweepTable>& resume,
+                                    const std::optional<std::vector<std::string>>& columns) {
   checkJobs(jobs);
   scene::SweepBase base{base_yaml, base_name, {}};
   for (const auto& [key, yaml] : values) base.values.push_back({key, yaml});
-  scene::Sweep made = take(scene::loadSweepText(vary, "argument vary", base));
+  scene::Sweep made = take(tasks::loadSweepText(vary, "argument vary", base));
+  putColumns(made, columns);
   made.file = name;
   return runSweepTable(std::move(made), jobs, resume);
 }
@@ -350,15 +364,15 @@ py::dict sweepColumns(const SweepTable& t) {
     for (const tasks::SweepRow& r : t.rows) values.append(r.values[a]);
     d[py::str(t.sweep.axes[a].key)] = values;
   }
-  for (const tasks::SweepResultColumn& c : tasks::sweepResultTable()) {
-    if (c.value) {
+  for (const tasks::SweepResultColumn* c : tasks::tableColumns(t.sweep)) {
+    if (c->value) {
       py::array_t<double> out(n);
-      for (py::ssize_t i = 0; i < n; ++i) out.mutable_data()[i] = c.value(t.rows[i]);
-      d[c.column.name] = out;
+      for (py::ssize_t i = 0; i < n; ++i) out.mutable_data()[i] = c->value(t.rows[i]);
+      d[c->column.name] = out;
     } else {
       py::list text;
-      for (const tasks::SweepRow& r : t.rows) text.append(c.text(r));
-      d[c.column.name] = text;
+      for (const tasks::SweepRow& r : t.rows) text.append(c->text(r));
+      d[c->column.name] = text;
     }
   }
   return d;
@@ -366,8 +380,9 @@ py::dict sweepColumns(const SweepTable& t) {
 
 void sweepToCsv(const SweepTable& t, const std::string& path) {
   std::vector<std::string> keys, lines;
+  const tasks::SweepColumns columns = tasks::tableColumns(t.sweep);
   for (const auto& axis : t.sweep.axes) keys.push_back(axis.key);
-  for (const tasks::SweepRow& r : t.rows) lines.push_back(tasks::sweepLine(r));
+  for (const tasks::SweepRow& r : t.rows) lines.push_back(tasks::sweepLine(r, columns));
   nlohmann::json sidecar = tasks::sweepSidecar(t.sweep, std::nullopt);
   // A table kept from Ctrl-C says so, and counts its own rows, not the sweep's (its sidecar claimed
   // all 40,000 for 3,802 rows).
@@ -382,7 +397,7 @@ void sweepToCsv(const SweepTable& t, const std::string& path) {
     // Not over the sweep or its base, nor as a picture, as the command line refuses them
     // (to_csv("mine.yaml") would replace the scene).
     written = rb::checkDataOutput(path, "a CSV table", ".csv", {t.sweep.file, t.sweep.base});
-    if (written) written = tasks::writeSweepTable(path, keys, lines, sidecar);
+    if (written) written = tasks::writeSweepTable(path, keys, columns, lines, sidecar);
     if (written)
       (void)tasks::recordOutputs({{path,
                                    tasks::OutputKind::Sweep,
@@ -470,14 +485,25 @@ void bindSweep(py::module_& m) {
       .def_property_readonly("notes", [](const SweepTable& t) { return t.notes; })
       .def_property_readonly("interrupted", [](const SweepTable& t) { return t.interrupted; })
       .def_property_readonly("base", [](const SweepTable& t) { return t.sweep.base; })
+      // Where every row was refused, the first one's reason (whether or not the table's columns
+      // list status and message): rattleback.sweep warns of it, as the command line exits 2.
+      .def_property_readonly("first_refusal",
+                             [](const SweepTable& t) -> std::optional<std::string> {
+                               if (t.rows.empty()) return std::nullopt;
+                               for (const tasks::SweepRow& r : t.rows)
+                                 if (r.status != tasks::RowStatus::Refused) return std::nullopt;
+                               return t.rows.front().message;
+                             })
       .def_property_readonly("keys", [](const SweepTable& t) {
         std::vector<std::string> keys;
         for (const auto& axis : t.sweep.axes) keys.push_back(axis.key);
         return keys;
       });
-  m.def("sweep", &sweep, py::arg("path"), py::arg("jobs"), py::arg("resume") = nullptr);
+  m.def("sweep", &sweep, py::arg("path"), py::arg("jobs"), py::arg("resume") = nullptr,
+        py::arg("columns") = py::none());
   m.def("sweep_of", &sweepOf, py::arg("vary"), py::arg("name"), py::arg("base_yaml"),
-        py::arg("base_name"), py::arg("values"), py::arg("jobs"), py::arg("resume") = nullptr);
+        py::arg("base_name"), py::arg("values"), py::arg("jobs"), py::arg("resume") = nullptr,
+        py::arg("columns") = py::none());
 }
 
 // Runs, the player's data and the analysis of a loaded scene.

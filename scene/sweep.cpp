@@ -13,6 +13,7 @@
 
 #include "scene/key_path.hpp"
 #include "scene/tree.hpp"
+#include "util/nearest.hpp"
 
 namespace scene {
 namespace {
@@ -103,6 +104,42 @@ std::vector<std::string> rangeValues(const YAML::Node& spec, const std::string& 
     values.push_back(rangeValue(v));
   }
   return values;
+}
+
+// An unknown key of a sweep, with the nearest known one. (Python's sweep gives its columns as
+// an argument of their own: its text has no columns key.)
+std::string unknownKey(const std::string& at, const std::string& key, bool given) {
+  const std::vector<std::string> known =
+      given ? std::vector<std::string>{"vary", "duration"}
+            : std::vector<std::string>{"base", "vary", "duration", "columns"};
+  std::string known_list;
+  for (const std::string& k : known) known_list += (known_list.empty() ? "" : ", ") + k;
+  const std::optional<std::string> nearest = rb::nearestWord(key, known);
+  return at + ": " + key + " is not a key of a sweep" +
+         (nearest ? "; did you mean " + *nearest + "?" : "") + " (known: " + known_list + ")";
+}
+
+// `columns:`, a list of column names, each once: its form only (which names are columns is the
+// table's to say, tasks::checkColumns). `where` names the file and the key, its line each name's.
+std::vector<SweepColumnName> columnNames(const YAML::Node& node, const std::string& at,
+                                         rb::Error::Where where, bool lines) {
+  if (!node.IsSequence() || node.size() == 0)
+    throw SweepFailure{at +
+                       ": columns must be a list of the table's columns, e.g. "
+                       "[first_reversal_s, forecast_s]"};
+  std::vector<SweepColumnName> out;
+  std::set<std::string> seen;
+  for (const auto& entry : node) {
+    where.line = lines ? lineOf(entry) : 0;
+    const std::string here = lines ? where.file + ":" + std::to_string(where.line) : where.file;
+    if (!entry.IsScalar() || entry.Scalar().empty())
+      throw SweepFailure{here + ": columns: each entry is a column's name, e.g. first_reversal_s",
+                         where};
+    if (!seen.insert(entry.Scalar()).second)
+      throw SweepFailure{here + ": columns: " + entry.Scalar() + " is listed twice", where};
+    out.push_back({entry.Scalar(), where});
+  }
+  return out;
 }
 
 }  // namespace
@@ -232,11 +269,11 @@ rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, b
   };
   try {
     if (!root.IsMap())
-      throw SweepFailure{top + ": a sweep is a map with the keys base, vary and duration"};
+      throw SweepFailure{top + ": a sweep is a map with the keys base, vary, duration and columns"};
     // (A default-constructed YAML::Node is a defined null, so presence is kept apart.)
-    YAML::Node base_key, vary_key, duration_key;
-    YAML::Node base_node, vary, duration;
-    bool has_base = false, has_vary = false, has_duration = false;
+    YAML::Node base_key, vary_key, duration_key, columns_key;
+    YAML::Node base_node, vary, duration, columns;
+    bool has_base = false, has_vary = false, has_duration = false, has_columns = false;
     for (const auto& entry : root) {
       const std::string key = entry.first.as<std::string>();
       reading(entry.first, key);
@@ -246,9 +283,10 @@ rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, b
         vary_key = entry.first, vary = entry.second, has_vary = true;
       else if (key == "duration")
         duration_key = entry.first, duration = entry.second, has_duration = true;
+      else if (key == "columns" && !given)
+        columns_key = entry.first, columns = entry.second, has_columns = true;
       else
-        throw SweepFailure{at(entry.first) + ": " + key + " is not a key of a sweep (known: " +
-                           (given ? "vary, duration" : "base, vary, duration") + ")"};
+        throw SweepFailure{unknownKey(at(entry.first), key, given != nullptr)};
     }
     place = {path, lines ? 1 : 0, ""};
     if (given) {
@@ -287,6 +325,10 @@ rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, b
       const double d = number(duration, at(duration_key) + ":", "duration");
       if (!(d > 0)) throw SweepFailure{at(duration_key) + ": duration must be above 0 s"};
       sweep.duration = d;
+    }
+    if (has_columns) {
+      reading(columns_key, "columns");
+      sweep.columns = columnNames(columns, at(columns_key), {path, 0, "columns"}, lines);
     }
     if (has_vary)
       reading(vary_key, "vary");

@@ -8,6 +8,7 @@
 //     contact.air_drag: [0.0, 5.9e-6, 5.9e-5]
 //     body.dents.at[0]: {from: 0.1, to: 1.0, count: 10, scale: log}
 //   duration: 8.0                           # optional: simulation.duration of every run
+//   columns: [first_reversal_s]             # optional: the result columns to compute
 #pragma once
 
 #include <cstdint>
@@ -31,6 +32,13 @@ struct SweepAxis {
   bool body = false;
 };
 
+/// A result column a sweep lists (`columns:`), where it is listed. Which names are columns is
+/// the table's to say (tasks/sweep_columns.hpp): the reader checks the list's form only.
+struct SweepColumnName {
+  std::string name;
+  rb::Error::Where where;  ///< the file (or "argument columns"), the line (0: none), "columns"
+};
+
 struct Sweep {
   std::string file;  ///< as given
   std::string base;  ///< the base scene's path (resolved against the sweep file's folder)
@@ -41,7 +49,9 @@ struct Sweep {
   std::string base_text;
   std::vector<KeyValue> base_values;
   std::optional<double> duration;  ///< s; overrides simulation.duration
-  double length_unit = 1;          ///< m per length unit of the base scene (units.length)
+  /// The result columns the table holds, as `columns:` lists them; empty: the default table.
+  std::vector<SweepColumnName> columns;
+  double length_unit = 1;  ///< m per length unit of the base scene (units.length)
 
   /// The number of runs: the product of the axes' sizes.
   std::int64_t rows() const;

@@ -89,6 +89,10 @@ class Rollout {
   /// Steps until the state reaches time t (current().t ≥ t). False when the run has stopped
   /// (divergence or stop request) before reaching it; then summary() says why.
   bool advanceTo(double t);
+  /// Steps as advanceTo(t) does, and stops too after the step at which the reversal rule
+  /// confirms a reversal (reversals() grows): the steps are advanceTo's, so what is known when it
+  /// stops is what a run to t knows at that step. False when the run has stopped before either.
+  bool advanceToReversal(double t);
   /// Takes one step (the fixed dt, or the adaptive stepper's next accepted one). False, and
   /// no step taken, when the run has stopped. summary().last is then the step's end.
   bool advanceOneStep();
@@ -129,6 +133,8 @@ class Rollout {
 
  private:
   void stepOnce();
+  /// advanceTo(t), or advanceToReversal(t) when `until_reversal`.
+  bool advance(double t, bool until_reversal);
   /// Feeds the watchdog the end of the last step (its rotation R and ω w, world axes);
   /// records its stop.
   void watch(const Eigen::Matrix3d& R, const Eigen::Vector3d& w);

@@ -228,6 +228,14 @@ Analysis analyze(const sim::Model& model, const std::optional<double>& spin) {
   return a;
 }
 
+std::optional<double> forecastReversal(const sim::Model& model) {
+  if (model.body->surface.kind == sim::Surface::Kind::Mesh || model.initial.spin == 0) return {};
+  const sim::ReversalForecast forecast =
+      sim::forecastFirstReversal(model, analysisSpin(model, std::nullopt), model.duration);
+  if (!forecast.applies || forecast.range == sim::ForecastRange::Outside) return {};
+  return forecast.time;
+}
+
 namespace {
 
 nlohmann::json bodyJson(const Analysis& a) {

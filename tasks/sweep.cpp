@@ -1,5 +1,6 @@
 #include "tasks/sweep.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -12,21 +13,47 @@
 #include "scene/keys.hpp"
 #include "sim/compile.hpp"
 #include "sim/rollout.hpp"
+#include "tasks/analysis.hpp"
 #include "tasks/job_pool.hpp"
 #include "tasks/output.hpp"
 #include "util/assets.hpp"
+#include "util/nearest.hpp"
 
 namespace tasks {
 namespace {
 
-// The result columns' names, units and meanings (the sidecar's, the header's): the table's.
+// The default table's result columns' names, units and meanings.
 const std::vector<Column>& resultColumns() {
   static const std::vector<Column> columns = [] {
     std::vector<Column> out;
-    for (const SweepResultColumn& c : sweepResultTable()) out.push_back(c.column);
+    for (const SweepResultColumn& c : sweepResultTable())
+      if (c.by_default) out.push_back(c.column);
     return out;
   }();
   return columns;
+}
+
+std::vector<Column> namesOf(const SweepColumns& columns) {
+  std::vector<Column> out;
+  for (const SweepResultColumn* c : columns) out.push_back(c->column);
+  return out;
+}
+
+// Takes the run as far as its columns need: to its end; until the reversal rule has confirmed
+// the first reversal (sim/reversals.hpp: a reversal once counted stays, so the value is the one
+// the whole run gives: the same steps, fed to the same rule); or not at all. False when it
+// stopped before (a divergence or a stop request).
+bool advanceAsNeeded(sim::Rollout& rollout, ColumnNeeds needs) {
+  const double end = rollout.endTime();
+  switch (needs) {
+    case ColumnNeeds::WholeRun:
+      return rollout.advanceTo(end);
+    case ColumnNeeds::FirstReversal:
+      return rollout.advanceToReversal(end);
+    case ColumnNeeds::Nothing:
+      break;
+  }
+  return true;
 }
 
 double since(std::chrono::steady_clock::time_point start) {
@@ -65,9 +92,16 @@ class Bodies {
   std::vector<Slot> slots_;
 };
 
+// What a row computes: how far its run goes, and whether the theory's forecast is asked for.
+struct RowWork {
+  ColumnNeeds needs = ColumnNeeds::WholeRun;
+  bool forecast = false;
+};
+
 // One run of the sweep, or nothing when it was stopped on request.
 std::optional<SweepRow> runRow(const scene::Sweep& sweep, const scene::SweepScenes& scenes,
-                               Bodies& bodies, std::int64_t index, std::stop_token stop) {
+                               Bodies& bodies, std::int64_t index, std::stop_token stop,
+                               const RowWork& work) {
   const auto start = std::chrono::steady_clock::now();
   SweepRow row;
   row.row = index;
@@ -92,21 +126,26 @@ std::optional<SweepRow> runRow(const scene::Sweep& sweep, const scene::SweepScen
   auto model = sim::compileRun(loaded->spec, body.value());
   if (!model) return refused(scene::describe(loaded.value(), model.error()));
 
+  if (work.forecast) row.forecast_s = forecastReversal(model.value());
   sim::Rollout rollout(std::move(model).value());
   rollout.stopWith(stop);
   const double end = rollout.endTime();
-  const bool reached = rollout.advanceTo(end);
+  const bool went = advanceAsNeeded(rollout, work.needs);
   const sim::RunSummary& run = rollout.summary();
   if (run.stop_requested) return std::nullopt;
+  // The first reversal as far as the run went; the rest only of a whole run (a run stopped
+  // early leaves them empty, not as they stood when it stopped).
   row.first_reversal_s = run.first_reversal_s;
-  row.reversals = static_cast<std::int64_t>(run.reversals.size());
-  // A stopped run's largest tilt too: how far it went over is often why it stopped.
-  row.max_tilt_deg = run.max_tilt_deg;
-  if (reached) {
+  if (work.needs == ColumnNeeds::WholeRun) {
+    row.reversals = static_cast<std::int64_t>(run.reversals.size());
+    // A stopped run's largest tilt too: how far it went over is often why it stopped.
+    row.max_tilt_deg = run.max_tilt_deg;
+  }
+  if (went && work.needs == ColumnNeeds::WholeRun) {
     const sim::Telemetry last = rollout.sampleAt(end);
     row.final_spin = last.spin;
     row.energy_lost = (run.first.energy - last.energy) / std::abs(run.first.energy);
-  } else {
+  } else if (!went) {
     row.status = RowStatus::Stopped;
     row.message = run.divergence.value_or("the run did not reach its end");
     if (run.stop) row.stop = run.stop->reason;
@@ -143,6 +182,82 @@ std::span<const Column> sweepResultColumns() {
   return resultColumns();
 }
 
+namespace {
+
+// The columns a sweep lists, each one of the table's: an unknown name is said where it is
+// listed, with the nearest column's and the list of them.
+rb::Status checkColumns(const scene::Sweep& sweep) {
+  const std::vector<std::string> names = sweepColumnNames();
+  for (const scene::SweepColumnName& c : sweep.columns) {
+    if (findSweepColumn(c.name)) continue;
+    std::string known;
+    for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
+    const std::optional<std::string> nearest = rb::nearestWord(c.name, names);
+    const std::string at =
+        c.where.line > 0 ? c.where.file + ":" + std::to_string(c.where.line) : c.where.file;
+    rb::Error e{"", at + ": columns: " + c.name + " is not a column of the table" +
+                        (nearest ? "; did you mean " + *nearest + "?" : "") +
+                        " (the columns: " + known + ")"};
+    e.where = c.where;
+    return e;
+  }
+  return {};
+}
+
+rb::Result<scene::Sweep> checked(rb::Result<scene::Sweep> sweep) {
+  if (!sweep) return sweep;
+  if (auto ok = checkColumns(sweep.value()); !ok) return ok.error();
+  return sweep;
+}
+
+}  // namespace
+
+rb::Result<scene::Sweep> loadSweep(const std::string& path) {
+  return checked(scene::loadSweep(path));
+}
+
+rb::Result<scene::Sweep> loadSweepText(const std::string& yaml, const std::string& name,
+                                       const scene::SweepBase& base) {
+  return checked(scene::loadSweepText(yaml, name, base));
+}
+
+rb::Status setColumns(scene::Sweep& sweep, const std::vector<std::string>& names,
+                      const std::string& named) {
+  const rb::Error::Where where{named, 0, "columns"};
+  auto refused = [&](const std::string& why) {
+    rb::Error e{"", named + ": " + why};
+    e.where = where;
+    return e;
+  };
+  if (names.empty()) return refused("give at least one column, e.g. [\"first_reversal_s\"]");
+  sweep.columns.clear();
+  for (const std::string& name : names) {
+    for (const scene::SweepColumnName& c : sweep.columns)
+      if (c.name == name) return refused(name + " is listed twice");
+    sweep.columns.push_back({name, where});
+  }
+  return checkColumns(sweep);
+}
+
+SweepColumns tableColumns(const scene::Sweep& sweep) {
+  SweepColumns out;
+  if (sweep.columns.empty()) {
+    for (const SweepResultColumn& c : sweepResultTable())
+      if (c.by_default) out.push_back(&c);
+    return out;
+  }
+  for (const scene::SweepColumnName& c : sweep.columns)
+    if (const SweepResultColumn* column = findSweepColumn(c.name)) out.push_back(column);
+  return out;
+}
+
+SweepColumns columnsNamed(const std::vector<std::string>& names) {
+  SweepColumns out;
+  for (const std::string& name : names)
+    if (const SweepResultColumn* column = findSweepColumn(name)) out.push_back(column);
+  return out;
+}
+
 std::string sweepColumnUnit(const std::string& name) {
   for (const Column& c : resultColumns())
     if (name == c.name) return c.unit;
@@ -150,11 +265,11 @@ std::string sweepColumnUnit(const std::string& name) {
   return key ? std::string(key->unit) : "";
 }
 
-std::string sweepHeader(const std::vector<std::string>& keys) {
+std::string sweepHeader(const std::vector<std::string>& keys, const SweepColumns& columns) {
   std::string line = "row";
   // (Appended piece by piece: `"," + string` trips a false -Wrestrict of GCC 12.)
   for (const std::string& key : keys) line.append(",").append(csvField(key));
-  return line + "," + csvHeader(resultColumns());
+  return line + "," + csvHeader(namesOf(columns));
 }
 
 std::string sweepRowPrefix(const scene::Sweep& sweep, std::int64_t row) {
@@ -165,15 +280,14 @@ std::string sweepRowPrefix(const scene::Sweep& sweep, std::int64_t row) {
   return line + ",";
 }
 
-std::string sweepLine(const SweepRow& row) {
+std::string sweepLine(const SweepRow& row, const SweepColumns& columns) {
   std::string line = std::to_string(row.row);
   for (const std::string& v : row.values) line.append(",").append(csvField(v));
-  for (const SweepResultColumn& c : sweepResultTable())
-    line.append(",").append(csvField(c.text(row)));
+  for (const SweepResultColumn* c : columns) line.append(",").append(csvField(c->text(row)));
   return line;
 }
 
-nlohmann::json sweepColumnsJson(const std::vector<std::string>& keys) {
+nlohmann::json sweepColumnsJson(const std::vector<std::string>& keys, const SweepColumns& results) {
   nlohmann::json columns = nlohmann::json::array();
   columns.push_back({{"name", "row"},
                      {"unit", ""},
@@ -186,7 +300,7 @@ nlohmann::json sweepColumnsJson(const std::vector<std::string>& keys) {
                        {"meaning", "the value put into the scene" +
                                        (k ? ": " + std::string(k->doc) : std::string())}});
   }
-  for (const auto& c : columnsJson(resultColumns())) columns.push_back(c);
+  for (const auto& c : columnsJson(namesOf(results))) columns.push_back(c);
   return columns;
 }
 
@@ -216,6 +330,11 @@ SweepRun runSweep(const scene::Sweep& sweep, const scene::SweepScenes& scenes,
                   const std::vector<std::int64_t>& rows, const SweepOptions& options) {
   SweepRun out;
   Bodies bodies(sweep, rows);
+  const SweepColumns columns = tableColumns(sweep);
+  RowWork work;
+  work.needs = needsOf(columns);
+  work.forecast =
+      std::find(columns.begin(), columns.end(), &columnOf(SweepMetric::Forecast)) != columns.end();
   std::vector<std::optional<SweepRow>> results(rows.size());
   std::mutex finished_mutex;
   const auto start = std::chrono::steady_clock::now();
@@ -224,7 +343,7 @@ SweepRun runSweep(const scene::Sweep& sweep, const scene::SweepScenes& scenes,
       [&](std::size_t i, std::stop_token stop) {
         std::optional<SweepRow> row;
         try {
-          row = runRow(sweep, scenes, bodies, rows[i], stop);
+          row = runRow(sweep, scenes, bodies, rows[i], stop, work);
         } catch (const std::exception& e) {
           row = thrownRow(sweep, rows[i], e);
         }
@@ -246,15 +365,16 @@ SweepRun runSweep(const scene::Sweep& sweep, const scene::SweepScenes& scenes,
 }
 
 rb::Status writeSweepTable(const std::string& output, const std::vector<std::string>& keys,
-                           const std::vector<std::string>& lines, nlohmann::json sidecar) {
+                           const SweepColumns& columns, const std::vector<std::string>& lines,
+                           nlohmann::json sidecar) {
   if (auto made = makeParentFolder(output); !made) return made;
   auto csv = AtomicOutput::open(output);
   if (!csv) return csv.error();
   auto meta = AtomicOutput::open(output + ".json");
   if (!meta) return meta.error();
-  csv->stream() << sweepHeader(keys) << "\n";
+  csv->stream() << sweepHeader(keys, columns) << "\n";
   for (const std::string& line : lines) csv->stream() << line << "\n";
-  sidecar["columns"] = sweepColumnsJson(keys);
+  sidecar["columns"] = sweepColumnsJson(keys, columns);
   meta->stream() << sidecar.dump(2) << "\n";
   if (auto e = csv->commit(); !e) return e;
   return meta->commit();

@@ -30,21 +30,36 @@ enum class JobScript {
 /// axis.
 std::vector<std::string> sweepNotes(const scene::Sweep& sweep, const scene::SweepScenes& scenes);
 
+/// Reads a sweep file (scene::loadSweep) and checks the columns it lists are the table's.
+rb::Result<scene::Sweep> loadSweep(const std::string& path);
+/// The same for a sweep written as text (scene::loadSweepText).
+rb::Result<scene::Sweep> loadSweepText(const std::string& yaml, const std::string& name,
+                                       const scene::SweepBase& base);
+/// Sets the columns of a sweep from an argument named `named` (Python's columns=), checked as a
+/// sweep file's are.
+rb::Status setColumns(scene::Sweep& sweep, const std::vector<std::string>& names,
+                      const std::string& named);
+/// The result columns of the sweep's table, in its order: those `columns:` lists, or every column
+/// shown by default.
+SweepColumns tableColumns(const scene::Sweep& sweep);
+/// The columns of these names (a table's header), skipping any that are not the table's.
+SweepColumns columnsNamed(const std::vector<std::string>& names);
+
 /// The result columns after the axes' (name, unit, meaning), in the table's order: those of
-/// sweepResultTable().
+/// sweepResultTable() shown by default.
 std::span<const Column> sweepResultColumns();
 /// The unit of a sweep table's column: a varied key's from the schema (lengths "file units"),
 /// a result column's from sweepResultTable(); "" for none (the sidecar and the plots').
 std::string sweepColumnUnit(const std::string& name);
 
-/// The table's header line (no newline) for these axis keys.
-std::string sweepHeader(const std::vector<std::string>& keys);
+/// The table's header line (no newline) for these axis keys and result columns.
+std::string sweepHeader(const std::vector<std::string>& keys, const SweepColumns& columns);
 /// "row,value,…," — the part of a line fixed by the sweep, before the results.
 std::string sweepRowPrefix(const scene::Sweep& sweep, std::int64_t row);
-/// One row as a CSV line (no newline).
-std::string sweepLine(const SweepRow& row);
+/// One row as a CSV line (no newline) with these result columns.
+std::string sweepLine(const SweepRow& row, const SweepColumns& columns);
 /// The sidecar's columns and axes.
-nlohmann::json sweepColumnsJson(const std::vector<std::string>& keys);
+nlohmann::json sweepColumnsJson(const std::vector<std::string>& keys, const SweepColumns& columns);
 nlohmann::json sweepAxesJson(const scene::Sweep& sweep);
 
 struct SweepOptions {
@@ -69,7 +84,8 @@ SweepRun runSweep(const scene::Sweep& sweep, const scene::SweepScenes& scenes,
 
 /// Writes the table (header, then `lines`) and its sidecar (with `columns` added), each whole.
 rb::Status writeSweepTable(const std::string& output, const std::vector<std::string>& keys,
-                           const std::vector<std::string>& lines, nlohmann::json sidecar);
+                           const SweepColumns& columns, const std::vector<std::string>& lines,
+                           nlohmann::json sidecar);
 
 }  // namespace tasks
 

@@ -1,5 +1,6 @@
 #include "tasks/sweep_columns.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace tasks {
@@ -13,19 +14,32 @@ using M = SweepMetric;
 using Row = SweepRow;
 
 // The columns after the varied keys. `status` is a word to group by; why a run stopped is
-// `stop_reason` (a code) and `message` (its words); wall_s last, the one column that varies
-// between runs of the same sweep.
+// `stop_reason` (a code) and `message` (its words); wall_s last of the default columns, the one
+// that varies between runs of the same sweep. What each needs of a run: status and its reasons
+// say how the run went as far as it was taken, wall_s what that took; first_reversal_s is known
+// once the reversal rule has confirmed it (sim/reversals.hpp: nothing after undoes it); the
+// count, the final spin, the largest tilt and the energy lost can change until the end;
+// forecast_s is the theory's, from the scene alone.
 const SweepResultColumn kResults[] = {
     {{"status", "", "ok | stopped | refused"},
-     [](const Row& r) { return std::string(rb::nameOf(r.status)); }},
+     [](const Row& r) { return std::string(rb::nameOf(r.status)); },
+     std::nullopt,
+     nullptr,
+     nullptr,
+     ColumnNeeds::Nothing},
     {{"stop_reason", "",
       "for a stopped run, why as a code: non_finite | energy_gain | on_rim (empty otherwise)"},
-     [](const Row& r) { return r.stop ? std::string(rb::nameOf(*r.stop)) : std::string(); }},
+     [](const Row& r) { return r.stop ? std::string(rb::nameOf(*r.stop)) : std::string(); },
+     std::nullopt,
+     nullptr,
+     nullptr,
+     ColumnNeeds::Nothing},
     {{"first_reversal_s", "s", "first spin reversal (as simulate), empty when none"},
      [](const Row& r) { return number(r.first_reversal_s); },
      M::FirstReversal,
      [](const Row& r) { return orNan(r.first_reversal_s); },
-     "time of the first reversal"},
+     "time of the first reversal",
+     ColumnNeeds::FirstReversal},
     {{"reversals", "", "count of spin reversals (as simulate)"},
      [](const Row& r) { return r.reversals ? std::to_string(*r.reversals) : std::string(); },
      M::Reversals,
@@ -49,13 +63,28 @@ const SweepResultColumn kResults[] = {
      "share of the energy lost"},
     {{"message", "",
       "for a stopped or refused run, why in words (the run's or the scene loader's line)"},
-     [](const Row& r) { return r.message; }},
+     [](const Row& r) { return r.message; },
+     std::nullopt,
+     nullptr,
+     nullptr,
+     ColumnNeeds::Nothing},
     // A measurement: microseconds, no more.
     {{"wall_s", "s", "wall-clock time of the run (the only column that varies between runs)"},
      [](const Row& r) { return fixed(r.wall_s, 6); },
      M::Wall,
      [](const Row& r) { return r.wall_s; },
-     "wall time of each run"},
+     "wall time of each run",
+     ColumnNeeds::Nothing},
+    // Only where listed: the table without `columns:` is as it was.
+    {{"forecast_s", "s",
+      "first reversal forecast by the averaged theory (as analyze), empty when it forecasts "
+      "none or the scene is outside its range"},
+     [](const Row& r) { return number(r.forecast_s); },
+     M::Forecast,
+     [](const Row& r) { return orNan(r.forecast_s); },
+     "forecast first reversal",
+     ColumnNeeds::Nothing,
+     false},
 };
 
 }  // namespace
@@ -73,6 +102,24 @@ const SweepResultColumn& columnOf(SweepMetric metric) {
 double metricOf(const SweepRow& row, SweepMetric metric) {
   if (row.status != RowStatus::Ok) return std::nan("");
   return columnOf(metric).value(row);
+}
+
+const SweepResultColumn* findSweepColumn(std::string_view name) {
+  for (const SweepResultColumn& c : kResults)
+    if (name == c.column.name) return &c;
+  return nullptr;
+}
+
+std::vector<std::string> sweepColumnNames() {
+  std::vector<std::string> names;
+  for (const SweepResultColumn& c : kResults) names.emplace_back(c.column.name);
+  return names;
+}
+
+ColumnNeeds needsOf(const SweepColumns& columns) {
+  ColumnNeeds needs = ColumnNeeds::Nothing;
+  for (const SweepResultColumn* c : columns) needs = std::max(needs, c->needs);
+  return needs;
 }
 
 }  // namespace tasks

@@ -9,6 +9,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "sim/watchdog.hpp"
@@ -35,11 +36,20 @@ struct SweepRow {
   std::optional<double> final_spin;        ///< rad/s, when it reached its end
   std::optional<double> max_tilt_deg;      ///< degrees over the steps (also a stopped run's)
   std::optional<double> energy_lost;       ///< fraction of the initial energy, at the end
+  std::optional<double> forecast_s;        ///< s: the averaged theory's first reversal (analyze's)
   double wall_s = 0;                       ///< wall-clock time of the run, s
 };
 
 /// The result columns with a number, which a figure can show (`--metric`, Python's `metric=`).
-enum class SweepMetric { FirstReversal, Reversals, FinalSpin, MaxTilt, EnergyLost, Wall };
+enum class SweepMetric { FirstReversal, Reversals, FinalSpin, MaxTilt, EnergyLost, Wall, Forecast };
+
+/// How far a run must go before a column is known (docs/commands.md "Columns: only what the
+/// table needs"): a sweep that lists its columns stops each run at the furthest its columns need.
+enum class ColumnNeeds {
+  Nothing,        ///< known from the scene, or of the run however far it went: no step more
+  FirstReversal,  ///< until the reversal rule confirms the first reversal, or the run's end
+  WholeRun,       ///< the whole duration (what happens at the end, or anywhere in the run)
+};
 
 /// A result column of the table: after the row index and the axes' values.
 struct SweepResultColumn {
@@ -50,14 +60,28 @@ struct SweepResultColumn {
   std::optional<SweepMetric> metric;
   double (*value)(const SweepRow&) = nullptr;
   const char* words = nullptr;
+  ColumnNeeds needs = ColumnNeeds::WholeRun;
+  /// In the table of a sweep that lists no columns (forecast_s is only there when asked for:
+  /// without `columns:` the table is as it was).
+  bool by_default = true;
 };
+
+/// The result columns of a table, in its order.
+using SweepColumns = std::vector<const SweepResultColumn*>;
 
 /// Every result column, in the table's order.
 std::span<const SweepResultColumn> sweepResultTable();
 /// The metric's column.
 const SweepResultColumn& columnOf(SweepMetric metric);
-/// A metric at a row: only a run that reached its end has a value to show (NaN otherwise).
+/// A metric at a row: only a run that went as far as its columns need has a value to show (NaN
+/// otherwise).
 double metricOf(const SweepRow& row, SweepMetric metric);
+/// The column of this name, or none.
+const SweepResultColumn* findSweepColumn(std::string_view name);
+/// The names of every column, in the table's order (for a message's list and a did-you-mean).
+std::vector<std::string> sweepColumnNames();
+/// How far the runs of a table of these columns must go: the furthest any of them needs.
+ColumnNeeds needsOf(const SweepColumns& columns);
 
 }  // namespace tasks
 
@@ -73,13 +97,14 @@ struct NameTable<tasks::RowStatus> {
 // The names are the columns' (the table's header).
 template <>
 struct NameTable<tasks::SweepMetric> {
-  static constexpr std::array<std::pair<tasks::SweepMetric, std::string_view>, 6> entries{{
+  static constexpr std::array<std::pair<tasks::SweepMetric, std::string_view>, 7> entries{{
       {tasks::SweepMetric::FirstReversal, "first_reversal_s"},
       {tasks::SweepMetric::Reversals, "reversals"},
       {tasks::SweepMetric::FinalSpin, "final_spin"},
       {tasks::SweepMetric::MaxTilt, "max_tilt_deg"},
       {tasks::SweepMetric::EnergyLost, "energy_lost"},
       {tasks::SweepMetric::Wall, "wall_s"},
+      {tasks::SweepMetric::Forecast, "forecast_s"},
   }};
 };
 }  // namespace rb

@@ -4,6 +4,7 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -220,7 +221,7 @@ rb::Result<std::map<std::int64_t, std::string>> Journal::read(
   std::vector<std::string> keys;
   for (const auto& axis : sweep.axes) keys.push_back(axis.key);
   std::string line;
-  if (!std::getline(in, line) || line != sweepHeader(keys))
+  if (!std::getline(in, line) || line != sweepHeader(keys, tableColumns(sweep)))
     return rb::Error{"", path +
                              ": its columns are not this sweep's; remove it, or run without "
                              "--resume"};
@@ -348,6 +349,12 @@ rb::Result<Merged> mergeShards(const std::vector<std::string>& shards) {
     merged.keys.push_back(axis["key"].get<std::string>());
     merged.axis_values.push_back(axis["values"].get<std::vector<std::string>>());
   }
+  // The result columns, from the header: those the sweep listed, or the default table's.
+  std::istringstream header(head);
+  std::vector<std::string> names;
+  for (std::string name; std::getline(header, name, ',');) names.push_back(name);
+  merged.columns = columnsNamed(std::vector<std::string>(
+      names.begin() + std::min(names.size(), 1 + merged.keys.size()), names.end()));
   for (const auto& [r, entry] : rows) merged.lines.push_back(entry.first);
   merged.sidecar = *first;
   merged.sidecar["rows"] = merged.rows;

@@ -86,6 +86,7 @@ class Journal {
 struct Merged {
   std::vector<std::string> keys;
   std::vector<std::vector<std::string>> axis_values;
+  SweepColumns columns;  ///< the result columns, as the shards' header names them
   std::vector<std::string> lines;
   nlohmann::json sidecar;
   std::int64_t rows = 0;

@@ -99,3 +99,35 @@ TEST(RolloutControl, AStateSetUnderRollingIsPutBackOnTheConstraint) {
   EXPECT_FALSE(run.advanceOneStep());
   EXPECT_EQ(run.current().t, 0.5);
 }
+
+// Stepped only until the reversal rule confirms the first reversal (what a sweep listing only
+// first_reversal_s does), a run gives the whole run's first reversal to the bit: it took the
+// same steps (the steps do not depend on how far the run is asked to go: fixed ones are k·dt,
+// adaptive ones the error control's), fed the same rule, and a counted reversal is never
+// undone (sim/reversals.hpp). It stops at the step that confirms it: at least the hold time
+// after the crossing, and well before the end (the default body reverses at about 2.3 s).
+TEST(RolloutControl, StoppedOnceItsReversalIsConfirmedARunGivesTheWholeRunsFirstReversal) {
+  for (const bool adaptive : {false, true}) {
+    sim::SceneSpec spec = parse(kRolling);
+    spec.simulation.duration = 8.0;  // long enough for a second reversal to matter, had it one
+    if (adaptive) {
+      spec.simulation.integrator = "dopri5";
+      spec.simulation.dt = sim::kUnset;
+      spec.simulation.tolerance = 1e-8;
+    }
+    const sim::Model model = build(spec);
+    sim::Rollout whole(model), early(model);
+    ASSERT_TRUE(whole.advanceTo(whole.endTime()));
+    ASSERT_TRUE(early.advanceToReversal(early.endTime()));
+    ASSERT_FALSE(whole.reversals().empty());
+    ASSERT_EQ(early.reversals().size(), 1u) << "adaptive " << adaptive;
+    EXPECT_EQ(early.reversals().front(), whole.reversals().front()) << "adaptive " << adaptive;
+    EXPECT_GE(early.current().t - early.reversals().front(), sim::ReversalDetector::kHoldTime);
+    EXPECT_LT(early.current().t, 3.5) << "stopped at the confirmation, not at the end";
+    // The step before the stop had not confirmed it: stepped on from there, the rule counts
+    // nothing new at the previous step's end.
+    sim::Rollout before(model);
+    ASSERT_TRUE(before.advanceTo(early.previousTime()));
+    EXPECT_TRUE(before.reversals().empty()) << "adaptive " << adaptive;
+  }
+}

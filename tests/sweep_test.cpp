@@ -859,3 +859,154 @@ TEST(Sweep, TheProgramThatSimulatesLoadsNoRenderingLibrary) {
     EXPECT_EQ(libraries.find(heavy), std::string::npos) << heavy << " in\n" << libraries;
   EXPECT_TRUE(fs::exists(fs::path(bin).parent_path() / "rattleback-render"));
 }
+
+// `columns:` is a sweep key like the others: a list of the table's columns, each once; a
+// misspelt name or key is one line naming the file, the line (the entry's own) and the nearest
+// name, exit 2, nothing written. A plot of a column the table does not hold is refused too.
+TEST(Sweep, ColumnsAreListedOnceFromTheTablesOwnAndATypoIsNamedWithTheNearest) {
+  const fs::path dir = scratch();
+  struct Case {
+    std::string text, expected;
+  };
+  const std::string head = "base: BASE\nvary:\n  initial.spin: [-5]\n";
+  const Case cases[] = {
+      {head + "columns: [first_reversl_s]\n",
+       "sweep.yaml:4: columns: first_reversl_s is not a column of the table; did you mean "
+       "first_reversal_s?"},
+      // The entry's own line, in a block list.
+      {head + "columns:\n  - status\n  - forcast_s\n",
+       "sweep.yaml:6: columns: forcast_s is not a column of the table; did you mean forecast_s?"},
+      {head + "columns: [status, status]\n", "sweep.yaml:4: columns: status is listed twice"},
+      {head + "columns: first_reversal_s\n", "sweep.yaml:4: columns must be a list"},
+      {head + "columns: []\n", "sweep.yaml:4: columns must be a list"},
+      {head + "colums: [status]\n",
+       "sweep.yaml:4: colums is not a key of a sweep; did you mean columns?"},
+  };
+  for (const Case& c : cases) {
+    std::string text = c.text;
+    text.replace(text.find("BASE"), 4, kBase);
+    const fs::path sweep = writeSweep(dir, text);
+    const Outcome r =
+        rattleback(dir, "sweep " + sweep.string() + " -q -o " + (dir / "t.csv").string());
+    EXPECT_EQ(r.status, 2) << c.text;
+    EXPECT_NE(r.err.find(c.expected), std::string::npos) << c.text << "\ngot: " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "t.csv")) << c.text;
+  }
+  std::string text = head + "columns: [first_reversal_s]\n";
+  text.replace(text.find("BASE"), 4, kBase);
+  const fs::path sweep = writeSweep(dir, text);
+  const Outcome r =
+      rattleback(dir, "sweep " + sweep.string() + " -q --metric final_spin --plot " +
+                          (dir / "p.png").string() + " -o " + (dir / "t.csv").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--metric final_spin: the sweep's columns: does not list it"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(dir / "t.csv"));
+}
+
+// A sweep that lists its columns holds those (after the row and the axes, in the order listed),
+// with the values the whole table gives: first_reversal_s from runs stopped once it is confirmed
+// (RolloutControl.StoppedOnceItsReversalIsConfirmed… says why it is the same number), and a
+// column that needs the whole run (max_tilt_deg: the rocking can grow after the reversal) from a
+// run kept to its end. Its shards merge to the same table.
+TEST(Sweep, AColumnsSweepHoldsItsColumnsWithTheWholeRunsValues) {
+  const fs::path dir = scratch();
+  const fs::path full = writeSweep(dir, smallSweep());
+  ASSERT_EQ(
+      rattleback(dir, "sweep " + full.string() + " -q -o " + (dir / "full.csv").string()).status,
+      0);
+  const auto reference = readCsv(slurp(dir / "full.csv"));
+  struct Listed {
+    std::string columns;
+    std::vector<std::string> names;
+  };
+  for (const Listed& listed :
+       {Listed{"[first_reversal_s, status]", {"first_reversal_s", "status"}},
+        Listed{"[max_tilt_deg, first_reversal_s]", {"max_tilt_deg", "first_reversal_s"}}}) {
+    const fs::path sweep = dir / "listed.yaml";
+    std::ofstream(sweep) << smallSweep() << "columns: " << listed.columns << "\n";
+    const Outcome r =
+        rattleback(dir, "sweep " + sweep.string() + " -q -j 2 -o " + (dir / "t.csv").string());
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto rows = readCsv(slurp(dir / "t.csv"));
+    std::vector<std::string> header{"row", "initial.spin", "body.dents.scale"};
+    header.insert(header.end(), listed.names.begin(), listed.names.end());
+    ASSERT_EQ(rows.at(0), header) << listed.columns;
+    ASSERT_EQ(rows.size(), reference.size());
+    int reversed = 0;
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+      for (const std::string& name : listed.names)
+        EXPECT_EQ(rows[i][at(rows, name)], reference[i][at(reference, name)])
+            << name << ", row " << i << ", columns " << listed.columns;
+      reversed += !rows[i][at(rows, "first_reversal_s")].empty();
+    }
+    EXPECT_EQ(reversed, 3) << "the table is not a column of empty cells";
+    const auto sidecar = nlohmann::json::parse(slurp(dir / "t.csv.json"));
+    ASSERT_EQ(sidecar["columns"].size(), header.size());
+    for (std::size_t i = 0; i < header.size(); ++i)
+      EXPECT_EQ(sidecar["columns"][i]["name"], header[i]);
+  }
+  // Shards of the listed sweep merge to its table (the merge reads the columns from the header).
+  const fs::path sweep = dir / "listed.yaml";
+  for (int i = 0; i < 2; ++i)
+    ASSERT_EQ(rattleback(dir, "sweep " + sweep.string() + " -q --shard " + std::to_string(i) +
+                                  "/2 -o " + (dir / ("s" + std::to_string(i) + ".csv")).string())
+                  .status,
+              0);
+  const Outcome merged =
+      rattleback(dir, "sweep merge -q " + (dir / "m.csv").string() + " " +
+                          (dir / "s0.csv").string() + " " + (dir / "s1.csv").string() +
+                          " --metric max_tilt_deg --plot " + (dir / "m.png").string());
+  ASSERT_EQ(merged.status, 0) << merged.err;
+  EXPECT_EQ(slurp(dir / "m.csv"), slurp(dir / "t.csv"));
+}
+
+// forecast_s is the number `analyze` prints for the row's scene (predicted_first_reversal's
+// time_s, the same computation, to the bit), empty where analyze gives none: spins the theory
+// forecasts (−5, −2 rad/s), the preferred way (+5: none within the run), one far outside its
+// range (−30 rad/s: n²ρ/g ≈ 31, where the averaged theory is not used) and a scene not spun
+// (which analyze's theory takes at +5 rad/s: with the dents mirrored, the way that reverses).
+TEST(Sweep, TheForecastColumnIsAnalyzesForecast) {
+  const fs::path dir = scratch();
+  std::string text =
+      "base: BASE\nvary:\n  initial.spin: [-5, -2, 5, -30, 0]\n  body.dents.at[0]: [0.73, "
+      "-0.73]\ncolumns: [forecast_s]\n";
+  text.replace(text.find("BASE"), 4, kBase);
+  const fs::path sweep = writeSweep(dir, text);
+  const Outcome r =
+      rattleback(dir, "sweep " + sweep.string() + " -q -o " + (dir / "t.csv").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = readCsv(slurp(dir / "t.csv"));
+  ASSERT_EQ(rows.size(), 11u);
+  const std::string base = slurp(kBase);
+  int forecast = 0;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    std::string scene_text = base;
+    scene_text.replace(scene_text.find("spin: -5.0"), 10, "spin: " + rows[i][1]);
+    scene_text.replace(scene_text.find("at: [0.73"), 9, "at: [" + rows[i][2]);
+    const fs::path scene = dir / ("row" + std::to_string(i) + ".yaml");
+    std::ofstream(scene) << scene_text;
+    const std::string cell = rows[i][at(rows, "forecast_s")];
+    if (rows[i][1] == "0") {
+      const Outcome a = rattleback(dir, "analyze " + scene.string());
+      ASSERT_EQ(a.status, 0) << a.err;
+      EXPECT_NE(a.out.find("first reversal   none: the scene is not spun"), std::string::npos)
+          << a.out;
+      EXPECT_EQ(cell, "");
+      continue;
+    }
+    const Outcome a = rattleback(dir, "analyze " + scene.string() + " --json");
+    ASSERT_EQ(a.status, 0) << a.err;
+    const auto time = nlohmann::json::parse(a.out)["predicted_first_reversal"]["time_s"];
+    if (time.is_null()) {
+      EXPECT_EQ(cell, "") << "spin " << rows[i][1];
+    } else {
+      ++forecast;
+      ASSERT_NE(cell, "") << "spin " << rows[i][1];
+      EXPECT_EQ(std::stod(cell), time.get<double>()) << "spin " << rows[i][1];
+    }
+  }
+  EXPECT_EQ(forecast, 3) << "−5 and −2 rad/s with the dents as shipped, +5 with them mirrored";
+}

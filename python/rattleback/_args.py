@@ -141,6 +141,12 @@ _TAKES: dict[str, tuple[Callable[[Any], bool], str]] = {
     "path": (_path, "a path (text or os.PathLike)"),
     "output": (_path, "a path (text or os.PathLike)"),
     "name": (_text, "text"),
+    # A sweep's columns: names, each a column of its table (which the library checks, naming
+    # the nearest).
+    "columns": (
+        lambda v: isinstance(v, (list, tuple)) and all(isinstance(c, str) for c in v),
+        "a list of the table's columns (text), e.g. ['first_reversal_s']",
+    ),
     "text": (_text, "YAML text"),
     "values": (
         lambda v: isinstance(v, Mapping),

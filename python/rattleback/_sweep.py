@@ -34,7 +34,9 @@ class SweepTable:
     ``energy_gain``, ``on_rim``), ``first_reversal_s``, ``reversals``, ``final_spin``,
     ``max_tilt_deg``, ``energy_lost``, ``wall_s``, and ``message`` (why a run stopped or was
     refused, in words). A number a run does not have is NaN; text it does not have is ``""``. The arrays are read-only, as the CSV they
-    stand for is (``.copy()`` gives one to change).
+    stand for is (``.copy()`` gives one to change). A sweep given ``columns`` (or a sweep file's
+    ``columns:``) holds ``row``, the varied keys and those columns only, in that order (one of
+    them may be ``forecast_s``, the averaged theory's first reversal, which ``analyze`` prints).
     """
 
     def __init__(self, core_table):
@@ -84,8 +86,10 @@ class SweepTable:
         self._table.to_csv(os.fspath(path))
 
     def __repr__(self) -> str:
-        ok = int(np.sum(self._columns["status"] == "ok"))
         part = ", interrupted" if self._table.interrupted else ""
+        if "status" not in self._columns:  # a sweep whose columns do not list it
+            return f"<SweepTable {self._table.file}: {len(self)} runs{part}>"
+        ok = int(np.sum(self._columns["status"] == "ok"))
         return f"<SweepTable {self._table.file}: {len(self)} runs, {ok} ok{part}>"
 
 
@@ -108,7 +112,12 @@ def _values(values: Any) -> Any:
     return [_value(v) for v in values]
 
 
-def _file_sweep(source, duration, name, jobs, kept):
+def _columns(columns: Optional[list]) -> Optional[list]:
+    """``columns`` as the core takes them: a list of names, or None for the sweep's own."""
+    return None if columns is None else list(columns)
+
+
+def _file_sweep(source, duration, name, jobs, kept, columns):
     """The call that runs the sweep file at ``source``."""
     if not isinstance(source, (str, os.PathLike)):
         raise TypeError(
@@ -122,10 +131,10 @@ def _file_sweep(source, duration, name, jobs, kept):
                 f"argument {given}: goes with vary (a sweep file sets its own"
                 + (": duration:)" if given == "duration" else ")")
             )
-    return lambda: _core.sweep(os.fspath(source), jobs, kept)
+    return lambda: _core.sweep(os.fspath(source), jobs, kept, columns)
 
 
-def _scene_sweep(source, vary, duration, name, jobs, kept):
+def _scene_sweep(source, vary, duration, name, jobs, kept, columns):
     """The call that runs the scene ``source`` along ``vary``, as a sweep file would."""
     base = _scene(source)
     spec: dict[str, Any] = {"vary": {key: _values(v) for key, v in vary.items()}}
@@ -142,7 +151,7 @@ def _scene_sweep(source, vary, duration, name, jobs, kept):
     if name is None:
         name = (Path(base._name).stem if base._file else "scene") + "-sweep"
     text = json.dumps(spec, default=_yaml_value_default)
-    return lambda: _core.sweep_of(text, name, base._yaml, base._name, list(base._values), jobs, kept)
+    return lambda: _core.sweep_of(text, name, base._yaml, base._name, list(base._values), jobs, kept, columns)
 
 
 @checked
@@ -154,6 +163,7 @@ def sweep(
     jobs: int = 0,
     name: Optional[str] = None,
     resume: Optional[SweepTable] = None,
+    columns: Optional[list] = None,
 ) -> SweepTable:
     """Runs every scene of a sweep on ``jobs`` threads (0: all cores), as ``rattleback sweep``
     does: the sweep file at ``source`` (docs/scenes.md "Sweep files": a base scene and axes of
@@ -163,6 +173,10 @@ def sweep(
     ``duration:`` (s, every run's), and ``name`` the table's (default: the scene file's name
     and ``-sweep``). ``resume``: a table of the same sweep kept from Ctrl-C (its rows are not
     run again, and the table returned holds them too), as ``rattleback sweep --resume`` does.
+    ``columns``: the result columns to compute, as a sweep file's ``columns:`` (given with a
+    sweep file, in its place): each run stops as soon as they are known (``first_reversal_s``
+    once the reversal rule has confirmed it; docs/commands.md "Only the columns a table needs"),
+    and the table holds only them.
 
     Raises :class:`SceneError` (a ``ValueError``) for a sweep that cannot be used, naming its
     file, line and key as a scene's does (an error in ``vary`` is named ``argument vary`` and
@@ -176,9 +190,9 @@ def sweep(
     """
     kept = resume._table if resume is not None else None
     if vary is None:
-        run = _file_sweep(source, duration, name, int(jobs), kept)
+        run = _file_sweep(source, duration, name, int(jobs), kept, _columns(columns))
     else:
-        run = _scene_sweep(source, vary, duration, name, int(jobs), kept)
+        run = _scene_sweep(source, vary, duration, name, int(jobs), kept, _columns(columns))
     try:
         table = run()
     except KeyboardInterrupt as interrupt:
@@ -189,11 +203,10 @@ def sweep(
     for note in table.notes:
         warnings.warn(RunWarning(note, "axis_unused"), stacklevel=3)
     result = SweepTable(table)
-    status = result["status"]
-    if len(status) and bool(np.all(status == "refused")):
+    if table.first_refusal is not None:
         warnings.warn(
             RunWarning(
-                f"{table.file}: every run was refused; the first: " f"{result['message'][0]}", "all_refused"
+                f"{table.file}: every run was refused; the first: {table.first_refusal}", "all_refused"
             ),
             stacklevel=3,
         )

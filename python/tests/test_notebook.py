@@ -33,10 +33,13 @@ def test_the_tour_runs_and_shows_its_plot_and_still(tmp_path):
 
 
 def test_the_laboratory_runs_steps_taps_keeps_hdf5_and_checks_the_growth(tmp_path):
-    """examples/laboratory.ipynb: its own asserts hold the stepped reversal to simulate's and the
-    run's growth to the linearised model's (3 %); here, that it ran and said what it found."""
+    """examples/laboratory.ipynb: its own asserts hold the stepped reversal to simulate's, the
+    run's growth to the linearised model's (3 %) and a columns: sweep's first reversals to the
+    whole runs'; here, that it ran and said what it found."""
     outputs, text = run_notebook("laboratory.ipynb", tmp_path)
-    assert len([o for o in outputs if "image/png" in o.get("data", {})]) == 2  # the tap, the pair
+    # the tap, the pair, the regime map
+    assert len([o for o in outputs if "image/png" in o.get("data", {})]) == 3
     assert "opposite directions: True" in text
     assert "read back equal: True" in text
     assert "growth: eigenvalue" in text
+    assert "equal to the whole runs: True" in text

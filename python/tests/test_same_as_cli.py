@@ -557,3 +557,32 @@ def test_a_scene_with_no_file_gets_a_default_name_of_a_file(tmp_path, monkeypatc
     ]
     listed = json.loads((tmp_path / "out" / "rattleback-manifest.json").read_text())
     assert "<yaml>" not in json.dumps(listed)
+
+
+def test_a_sweep_given_columns_holds_them_with_the_command_lines_values(tmp_path):
+    """columns= is a sweep file's columns: (docs/commands.md "Only the columns a table needs"): the
+    table holds the row, the varied keys and those columns, the command line's values (runs
+    stopped once their first reversal is confirmed give the whole run's to the bit), and a
+    sweep file's own columns: are kept."""
+    base = scene_path("rattleback.yaml")
+    vary = {"initial.spin": [-5, -3, 4]}
+    whole = rb.sweep(base, vary, duration=4, jobs=1)
+    listed = rb.sweep(base, vary, duration=4, jobs=2, columns=["first_reversal_s", "forecast_s"])
+    assert list(listed.columns) == ["row", "initial.spin", "first_reversal_s", "forecast_s"]
+    assert np.array_equal(listed["first_reversal_s"], whole["first_reversal_s"], equal_nan=True)
+    assert int(np.sum(np.isfinite(listed["first_reversal_s"]))) == 2  # -5 and -3 reverse
+    sweep = tmp_path / "s.yaml"
+    sweep.write_text(
+        f"base: {base}\nvary:\n  initial.spin: [-5, -3, 4]\nduration: 4\ncolumns: [forecast_s]\n"
+    )
+    own = rb.sweep(str(sweep), jobs=1)
+    assert list(own.columns) == ["row", "initial.spin", "forecast_s"]
+    assert np.array_equal(own["forecast_s"], listed["forecast_s"], equal_nan=True)
+    with pytest.raises(
+        rb.SceneError,
+        match="argument columns: columns: forcast_s is not a column of the table; did you mean forecast_s",
+    ):
+        rb.sweep(base, vary, columns=["forcast_s"])
+    # A table without status still warns when every run was refused (the CLI exits 2).
+    with pytest.warns(rb.RunWarning, match="every run was refused; the first: argument vary: body.mass"):
+        rb.sweep(base, {"body.mass": [-1.0]}, duration=0.1, columns=["first_reversal_s"])
