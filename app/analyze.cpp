@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -241,7 +242,7 @@ void printContact(std::FILE* out, const tasks::Analysis& a) {
 void printFittedBottom(std::FILE* out, const tasks::Analysis& a) {
   const sim::BottomFit& fit = a.fit;
   const double unit = a.length_unit;
-  if (fit.points >= 25)
+  if (!std::isnan(fit.rms_m))  // measured (a fit refused before has no residual)
     std::fprintf(out,
                  "fitted bottom    quadric over %zu bottom points (tilts up to %.3g deg): %.3g "
                  "RMS, %.3g at most from them (%.2g %% and %.2g %% of the body's length; limit "

@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -33,9 +34,12 @@ struct BottomFit {
   std::array<double, 9> coef{};                      ///< c₀…c₅, b₁, b₂, A (SI)
   Eigen::Vector2d apex = Eigen::Vector2d::Zero();    ///< (ξ, η) where ∇f = 0, m
   Eigen::Matrix2d apex_hessian_inv = Eigen::Matrix2d::Identity();  ///< (∇²f)⁻¹ there, m
-  double cap_slope = 0;    ///< tan of the largest tilt whose contact stays within the cap's points
-  double rms_m = 0;        ///< RMS distance of the cap's points from the surface, m
-  double max_m = 0;        ///< the largest, m
+  /// tan of the largest tilt whose contact stays within the cap's points; NaN until measured
+  double cap_slope = std::numeric_limits<double>::quiet_NaN();
+  /// RMS distance of the cap's points from the surface, m: NaN until measured (a fit refused
+  /// before, too few points or no bowl), +∞ where the surface reaches none of them
+  double rms_m = std::numeric_limits<double>::quiet_NaN();
+  double max_m = std::numeric_limits<double>::quiet_NaN();  ///< the largest, m
   double size_m = 0;       ///< the body's longest side, m (the residual's scale)
   std::size_t points = 0;  ///< bottom points in the cap (the fit's data)
   std::string problem;     ///< why the smooth models cannot use it; empty when they can

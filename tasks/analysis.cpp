@@ -53,8 +53,10 @@ nlohmann::json fittedBottomJson(const sim::Body& body) {
 }
 
 nlohmann::json fittedBottomJson(const sim::BottomFit& fit) {
-  const bool fitted = fit.points >= 25;  // else nothing was fitted (BottomFit::problem says so)
-  auto number = [&](double v) { return fitted ? nlohmann::json(v) : nlohmann::json(nullptr); };
+  // Not measured (NaN) or reaching no point (∞): null, as every non-finite number here.
+  auto number = [](double v) {
+    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+  };
   return {{"surface", "quadric, least squares (docs/physics.md P11.4)"},
           {"points", fit.points},
           {"rms_m", number(fit.rms_m)},
@@ -338,6 +340,13 @@ nlohmann::json analysisJson(const Analysis& a) {
   // A body that cannot stand has no rocking about upright for a spin direction to favour.
   j["preferred"] = orNull(a.rest.stable, std::string(rb::nameOf(a.preferred)));
   j["predicted_first_reversal"] = forecastJson(a);
+  // A mesh body whose bottom does not fit has no theory (§P11.4): null, not numbers never
+  // worked out.
+  if (!a.theory)
+    for (const char* key : {"h", "radii_of_curvature", "rest_stable", "frequencies_hz",
+                            "growth_rates_at_rest", "growth_rates", "first_order_growth_per_spin",
+                            "eigenvalues", "preferred", "predicted_first_reversal"})
+      j[key] = nullptr;
   return j;
 }
 
