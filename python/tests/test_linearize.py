@@ -100,13 +100,10 @@ def ellipsoid_obj(path, semi_axes, rings=96, sectors=192):
         out.writelines(f"f {i + 1} {j + 1} {k + 1}\n" for i, j, k in faces)
 
 
-def test_a_mesh_of_kane_and_levinsons_ellipsoid_linearises_as_the_ellipsoid(tmp_path):
-    # The rolling model on the bottom fitted to a fine mesh of their ellipsoid (the same CM and
-    # inertia) is theirs: the state matrix within 1e-3 of its largest entry (the fit's radii are
-    # within about 1e-4 at this mesh, docs/physics.md P11.4).
-    analytic = rb.Scene.from_file(scene_path("kane-levinson.yaml"))
-    ellipsoid_obj(tmp_path / "kl.obj", (0.03, 0.20, 0.02))
-    scene = {
+def kane_levinson_mesh(tmp_path, rings=96, sectors=192):
+    """Kane & Levinson's scene with its body a mesh of their ellipsoid (their CM and inertia)."""
+    ellipsoid_obj(tmp_path / "kl.obj", (0.03, 0.20, 0.02), rings, sectors)
+    return {
         "units": {"length": 1.0},
         "body": {
             "shape": "mesh",
@@ -115,10 +112,31 @@ def test_a_mesh_of_kane_and_levinsons_ellipsoid_linearises_as_the_ellipsoid(tmp_
             "inertia": [[1.6e-3, -2.0e-5, 0.0], [-2.0e-5, 2.0e-4, 0.0], [0.0, 0.0, 1.7e-3]],
             "mass": 1.0,
         },
-        "contact": {"model": "rolling"},
+        "contact": {"model": "rolling", "friction": 1.0},  # theirs
         "initial": {"spin": 5.0, "tilt": [0.5, 0.5]},
         "simulation": {"tolerance": 1.0e-8, "duration": 3.0},
     }
+
+
+def test_a_mesh_bodys_run_states_its_fitted_bottom_in_its_sidecar(tmp_path):
+    # The sidecar's model.fitted_bottom is analyze's (docs/commands.md), residual and all; a
+    # 12 × 24 mesh lies 1.8e-4 of its length RMS from its fit, beside the limit 5e-4.
+    import json
+
+    scene = dict(kane_levinson_mesh(tmp_path, 12, 24), simulation={"tolerance": 1e-8, "duration": 0.2})
+    rb.simulate(scene).to_csv(tmp_path / "run.csv")
+    sidecar = json.loads((tmp_path / "run.csv.json").read_text())["model"]["fitted_bottom"]
+    assert sidecar == rb.analyze(scene)["fitted_bottom"]
+    assert 1e-5 < sidecar["rms_fraction"] < sidecar["rms_limit_fraction"] == 5e-4
+    assert sidecar["problem"] is None
+
+
+def test_a_mesh_of_kane_and_levinsons_ellipsoid_linearises_as_the_ellipsoid(tmp_path):
+    # The rolling model on the bottom fitted to a fine mesh of their ellipsoid (the same CM and
+    # inertia) is theirs: the state matrix within 1e-3 of its largest entry (the fit's radii are
+    # within about 1e-4 at this mesh, docs/physics.md P11.4).
+    analytic = rb.Scene.from_file(scene_path("kane-levinson.yaml"))
+    scene = kane_levinson_mesh(tmp_path)
     expected = rb.linearize(analytic, spin=5.0).matrix
     got = rb.linearize(scene, spin=5.0).matrix
     assert np.abs(got - expected).max() < 1e-3 * np.abs(expected).max()
