@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -237,6 +238,25 @@ void printContact(std::FILE* out, const tasks::Analysis& a) {
                  s.largest_step);
 }
 
+// A mesh body's fitted bottom: its residual, its cap, and whether the smooth models can use it.
+void printFittedBottom(std::FILE* out, const tasks::Analysis& a) {
+  const sim::BottomFit& fit = a.fit;
+  const double unit = a.length_unit;
+  if (!std::isnan(fit.rms_m))  // measured (a fit refused before has no residual)
+    std::fprintf(out,
+                 "fitted bottom    quadric over %zu bottom points (tilts up to %.3g deg): %.3g "
+                 "RMS, %.3g at most from them (%.2g %% and %.2g %% of the body's length; limit "
+                 "%.2g %% RMS)\n",
+                 fit.points, std::atan(fit.cap_slope) * 180 / M_PI, fit.rms_m / unit,
+                 fit.max_m / unit, 100 * fit.rms_m / fit.size_m, 100 * fit.max_m / fit.size_m,
+                 100 * sim::kFitRmsLimit);
+  if (!fit.usable())
+    std::fprintf(out,
+                 "WARNING: the bottom does not fit a smooth surface, so contact.model smooth, "
+                 "rolling and auto are refused (use points): %s\n",
+                 fit.problem.c_str());
+}
+
 // The analysis as text or JSON, into `out`.
 void writeAnalysis(std::FILE* out, const AnalyzeArgs& args, const sim::Model& model) {
   const tasks::Analysis a = tasks::analyze(model, args.spin);
@@ -247,10 +267,11 @@ void writeAnalysis(std::FILE* out, const AnalyzeArgs& args, const sim::Model& mo
   printBody(out, args.scene, a);
   printInertia(out, a);
   printContact(out, a);
-  if (a.mesh) {
+  if (a.mesh) printFittedBottom(out, a);
+  if (!a.theory) {
     std::fprintf(out,
-                 "theory           none for a mesh body yet: the rest, frequencies, growth rates "
-                 "and forecast need a smooth bottom (docs/physics.md §P11)\n");
+                 "theory           none: the rest, frequencies, growth rates and forecast need a "
+                 "smooth bottom, and the mesh's does not fit one (docs/physics.md §P11.4)\n");
     return;
   }
   printRest(out, a);

@@ -554,11 +554,12 @@ void bindCalls(py::module_& m) {
       [](const LoadedScene& loaded, std::optional<double> spin) {
         if (auto ok = tasks::checkAnalysisSpin(spin, "argument spin"); !ok) raise(ok.error());
         const sim::Model& model = loaded.value.model;
-        if (model.body->surface.kind == sim::Surface::Kind::Mesh)
+        if (model.body->surface.kind == sim::Surface::Kind::Mesh &&
+            !model.body->surface.mesh.fit.usable())
           throw py::value_error(
-              "linearize: a mesh body has no smooth bottom to roll on yet, so no linearised "
-              "rolling model (docs/scenes.md \"A body from a mesh\"); a paraboloid or "
-              "ellipsoid body has one");
+              "linearize: this mesh body's bottom does not fit a smooth surface to roll on (" +
+              model.body->surface.mesh.fit.problem +
+              "), so it has no linearised rolling model (docs/physics.md P11.4)");
         return toPython(
             tasks::linearisationJson(sim::linearise(model, tasks::analysisSpin(model, spin))));
       },

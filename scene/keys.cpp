@@ -181,7 +181,8 @@ const std::vector<Key>& table() {
       {.path = "body.mesh",
        .need = Need::Mesh,
        .shape = Shape::Mesh,
-       .doc = "a closed triangle mesh from a file (§P11); contact.model points only, for now",
+       .doc = "a closed triangle mesh from a file (§P11); points touch its surface, smooth, "
+              "rolling and auto a smooth bottom fitted to it (§P11.4)",
        .example = "mesh: {file: toy.stl} (binary or ASCII STL, or OBJ)"},
       {.path = "body.mesh.file",
        .field = FIELD(spec.body.mesh.file),

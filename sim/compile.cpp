@@ -427,13 +427,16 @@ rb::Result<Model> compileRun(const SceneSpec& spec, std::shared_ptr<const Body> 
   if (auto e = checkContact(spec.contact)) return *e;
   if (auto e = checkRest(spec)) return *e;
 
-  // A mesh body is faceted: the smooth models need a smooth bottom, which it does not have yet
-  // (docs/physics.md §P11).
-  if (body->surface.kind == Surface::Kind::Mesh && spec.contact.model != "points")
+  // A mesh body's smooth models touch the bottom fitted to it, which must be a smooth bowl
+  // (docs/physics.md §P11.4).
+  if (body->surface.kind == Surface::Kind::Mesh && spec.contact.model != "points" &&
+      !body->surface.mesh.fit.usable())
     return rb::Error{"contact.model",
-                     "must be points for a mesh body (body.shape: mesh): " + spec.contact.model +
-                         " touches a smooth bottom, and a mesh has none yet; use contact.model: "
-                         "points"};
+                     spec.contact.model +
+                         " touches the smooth bottom fitted to the mesh, and this mesh's does "
+                         "not fit: " +
+                         body->surface.mesh.fit.problem +
+                         "; use contact.model: points (the mesh's own surface points)"};
   Model model;
   model.body = std::move(body);
   model.length_unit = spec.units.length;

@@ -125,9 +125,16 @@ rb::Result<Body> buildMeshBody(const BodySpec& b, double unit) {
   body.grid = Grid{h, h, h};
   const SurfacePoints points = meshSurfacePoints(mesh, h);
   body.surface.kind = Surface::Kind::Mesh;
-  body.surface.mesh = MeshSurface{points.top, box.min(), box.max(), meshMoments(mesh).volume};
+  body.surface.mesh = MeshSurface{points.top, box.min(), box.max(), meshMoments(mesh).volume, {}};
   body.surface.mesh.points.insert(body.surface.mesh.points.end(), points.bottom.begin(),
                                   points.bottom.end());
+  // The smooth bottom (§P11.4), fitted to the bottom points, whatever the contact model: analyze
+  // gives the theory from it. The misalignment is then measured from its long axis, as the
+  // paraboloid's is from its bottom's (§P1.6).
+  body.surface.mesh.fit = fitBottom(points.bottom, h, box.sizes().maxCoeff());
+  if (body.surface.mesh.fit.usable())
+    body.mass_properties.misalignment_deg =
+        misalignmentDeg(body.mass_properties, body.surface.mesh.fit.longAxisAngle());
   for (const Eigen::Vector3d& p : points.top) body.top.push_back(p - m.com);
   for (const Eigen::Vector3d& p : points.bottom) body.bottom.push_back(p - m.com);
   return body;

@@ -66,7 +66,7 @@ Rollout::Rollout(Model model, const State& start)
   // The start is watched too: a body started on the rim of its top under rolling (a tilt of
   // 89°) was stopped a step later for a rise of energy, or a NaN, with the advice of a smaller
   // step, which cannot help.
-  if (contactTraits(model_.contact.model).stops_on_rim) {
+  if (stopsOnRim()) {
     const Eigen::Matrix3d R = current_.q.normalized().toRotationMatrix();
     watch(R, angularVelocity(*model_.body, R, current_.L_world));
   }
@@ -206,6 +206,12 @@ void Rollout::stepOnce() {
   if (current_.step % checkEvery() == 0) watch(R, w);
 }
 
+bool Rollout::stopsOnRim() const {
+  const ContactTraits traits = contactTraits(model_.contact.model);
+  return traits.stops_on_rim ||
+         (model_.body->surface.kind == Surface::Kind::Mesh && traits.touch != Touch::Grid);
+}
+
 void Rollout::watch(const Eigen::Matrix3d& R, const Eigen::Vector3d& w) {
   StepEnd end;
   end.t = current_.t;
@@ -215,9 +221,11 @@ void Rollout::watch(const Eigen::Matrix3d& R, const Eigen::Vector3d& w) {
     const EndReading reading = readEnd(active_, current_, w);
     end.energy = reading.energy_J;
     end.contacts = reading.contacts;
-    if (contactTraits(model_.contact.model).stops_on_rim &&
-        model_.body->surface.lowestOnRim(-R.row(2).transpose()))
+    if (stopsOnRim() && model_.body->surface.lowestOnRim(-R.row(2).transpose())) {
       end.rim_tilt_deg = std::acos(std::clamp(R(2, 2), -1.0, 1.0)) * 180.0 / M_PI;
+      if (model_.body->surface.kind == Surface::Kind::Mesh)
+        end.cap_deg = std::atan(model_.body->surface.mesh.fit.cap_slope) * 180.0 / M_PI;
+    }
   }
   if (const std::optional<Stop> stop = watchdog_.observe(end)) {
     summary_.stop = stop;

@@ -138,6 +138,10 @@ class Rollout {
   /// Feeds the watchdog the end of the last step (its rotation R and ω w, world axes);
   /// records its stop.
   void watch(const Eigen::Matrix3d& R, const Eigen::Vector3d& w);
+  /// Whether the run stops where the lowest point leaves the smooth surface (docs/physics.md
+  /// P6): rolling at a paraboloid's rim; every smooth model (smooth, rolling, auto) at the edge
+  /// of a mesh's fitted bottom, beyond which there is no smooth surface to slide on either.
+  bool stopsOnRim() const;
   void locateReversal(double previous_spin, double spin);
   /// Auto: after each step, carries out a change of mode the switch calls for.
   void switchModes();

@@ -34,22 +34,42 @@ Eigen::Vector3d MeshSurface::lowestPoint(const Eigen::Vector3d& down) const {
   return lowest;
 }
 
+namespace {
+
+// A mesh's lowest point on its fitted bottom where there is one to reach (docs/physics.md
+// §P11.4), else (the bottom unusable, or the body tipped beyond it) its lowest sampled point:
+// the smooth models stop there (lowestOnRim), and the point only says where the body is.
+PointAndRate meshLowest(const MeshSurface& mesh, const Eigen::Vector3d& down,
+                        const Eigen::Vector3d& down_rate) {
+  if (mesh.fit.usable() && down.z() < 0) {
+    PointAndRate out = mesh.fit.lowestPointMoving(down, down_rate);
+    if (out.point.allFinite()) return out;
+  }
+  return {mesh.lowestPoint(down), Eigen::Vector3d::Zero()};
+}
+
+}  // namespace
+
 Eigen::Vector3d Surface::lowestPoint(const Eigen::Vector3d& down) const {
-  if (kind == Kind::Mesh) return mesh.lowestPoint(down);
+  if (kind == Kind::Mesh) {
+    if (mesh.fit.usable() && down.z() < 0)
+      if (const Eigen::Vector3d p = mesh.fit.lowestPoint(down); p.allFinite()) return p;
+    return mesh.lowestPoint(down);
+  }
   return kind == Kind::Ellipsoid ? ellipsoid.lowestPoint(down) : paraboloid.lowestPointOfBody(down);
 }
 
 PointAndRate Surface::lowestPointMoving(const Eigen::Vector3d& down,
                                         const Eigen::Vector3d& down_rate) const {
-  // A mesh's lowest point jumps from sample to sample: no rate (no smooth contact uses it).
-  if (kind == Kind::Mesh) return {mesh.lowestPoint(down), Eigen::Vector3d::Zero()};
+  if (kind == Kind::Mesh) return meshLowest(mesh, down, down_rate);
   return kind == Kind::Ellipsoid ? ellipsoid.lowestPointMoving(down, down_rate)
                                  : paraboloid.lowestPointMoving(down, down_rate);
 }
 
 Eigen::Vector2d Surface::radiiAtBottom() const {
   if (kind == Kind::Mesh)
-    return Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN());
+    return mesh.fit.usable() ? mesh.fit.radiiAtApex()
+                             : Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN());
   if (kind == Kind::Ellipsoid) {
     // At (0, 0, −c) the radii are a²/c and b²/c.
     const Eigen::Vector3d& e = ellipsoid.semi_axes;

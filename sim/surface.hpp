@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "sim/body.hpp"
+#include "sim/bottom_fit.hpp"
 
 namespace sim {
 
@@ -20,12 +21,14 @@ struct Ellipsoid {
 };
 
 /// A mesh body's surface (docs/physics.md §P11): the points sampled from it (sim/mesh_body.hpp),
-/// its box and its volume; geometric frame (the mesh file's, in metres), m and m³. Faceted: the
-/// smooth contacts do not touch it (compile refuses them), only `points` does.
+/// its box, its volume and the smooth bottom fitted to it; geometric frame (the mesh file's, in
+/// metres), m and m³. The smooth contacts touch the fitted bottom (where it is usable: compile
+/// refuses them otherwise), `points` the sampled points.
 struct MeshSurface {
   std::vector<Eigen::Vector3d> points;
   Eigen::Vector3d low = Eigen::Vector3d::Zero(), high = Eigen::Vector3d::Zero();
   double volume = 0;
+  BottomFit fit;
   /// The sampled point lowest along `down` (the largest p·down), m.
   Eigen::Vector3d lowestPoint(const Eigen::Vector3d& down) const;
 };
@@ -39,17 +42,19 @@ struct Surface {
 
   /// The point lowest along `down` (unit, geometric frame), m.
   Eigen::Vector3d lowestPoint(const Eigen::Vector3d& down) const;
-  /// Whether that point is on the rim of a paraboloid's flat top (never for an ellipsoid):
-  /// there the surface has an edge, and rolling on a smooth surface no longer applies.
+  /// Whether that point is on the rim of a paraboloid's flat top (never for an ellipsoid), or
+  /// outside the cap of a mesh's fitted bottom: there the smooth surface ends, and rolling on it
+  /// no longer applies.
   bool lowestOnRim(const Eigen::Vector3d& down) const {
+    if (kind == Kind::Mesh) return mesh.fit.outsideCap(down);
     return kind == Kind::Paraboloid && paraboloid.lowestOnRim(down);
   }
   /// That point, and how fast it moves over the surface as `down` turns at `down_rate` (the
   /// two share their divisions), m and m/s.
   PointAndRate lowestPointMoving(const Eigen::Vector3d& down,
                                  const Eigen::Vector3d& down_rate) const;
-  /// Principal radii of curvature at the point lowest when upright, ascending, m (NaN for a mesh,
-  /// which has no smooth bottom yet).
+  /// Principal radii of curvature at the point lowest when upright, ascending, m (a mesh's from
+  /// its fitted bottom; NaN where that is not usable).
   Eigen::Vector2d radiiAtBottom() const;
   /// Half extents of the outline seen from above, across (x) and along (y), m.
   Eigen::Vector2d footprintHalf() const;

@@ -42,6 +42,17 @@ std::optional<Stop> Watchdog::observe(const StepEnd& end) {
   // body pivots on an edge, which that model cannot describe (auto slides instead). Checked
   // before the energy, which such a state also makes rise (or NaN): a smaller step, which that
   // message advises, does not help here. A body started there is said to start there.
+  if (end.rim_tilt_deg && end.cap_deg) {
+    // A mesh body's smooth bottom is fitted to its mesh only where it can touch (§P11.4).
+    std::ostringstream msg;
+    msg << "the contact point left the mesh's fitted bottom (tilt " << *end.rim_tilt_deg
+        << " degrees, beyond its cap of " << *end.cap_deg << " degrees)";
+    if (end.step > 0) msg << " at t = " << end.t << " s (step " << end.step << ")";
+    msg << ", where the smooth bottom no longer describes it; use contact.model: points (the "
+           "whole mesh, with a contact.stiffness), or a smaller initial.tilt";
+    message_ = msg.str();
+    return Stop{StopReason::OnRim, end.t, end.step};
+  }
   if (end.rim_tilt_deg) {
     std::ostringstream msg;
     if (end.step == 0)

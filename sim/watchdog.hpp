@@ -41,6 +41,9 @@ struct StepEnd {
   std::optional<int> contacts;
   /// Rolling: the tilt, degrees, when the lowest point lies on the rim of the flat top.
   std::optional<double> rim_tilt_deg;
+  /// Where the rim is the edge of a mesh's fitted bottom (docs/physics.md §P11.4): the largest
+  /// tilt it holds, degrees.
+  std::optional<double> cap_deg;
 };
 
 class Watchdog {

@@ -47,6 +47,27 @@ std::string massSourceText(const sim::Body& body) {
   return body.mass_by_cubature ? "continuum (cubature)" : "continuum (closed form)";
 }
 
+nlohmann::json fittedBottomJson(const sim::Body& body) {
+  if (body.surface.kind != sim::Surface::Kind::Mesh) return nullptr;
+  return fittedBottomJson(body.surface.mesh.fit);
+}
+
+nlohmann::json fittedBottomJson(const sim::BottomFit& fit) {
+  // Not measured (NaN) or reaching no point (∞): null, as every non-finite number here.
+  auto number = [](double v) {
+    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+  };
+  return {{"surface", "quadric, least squares (docs/physics.md P11.4)"},
+          {"points", fit.points},
+          {"rms_m", number(fit.rms_m)},
+          {"max_m", number(fit.max_m)},
+          {"rms_fraction", number(fit.rms_m / fit.size_m)},
+          {"max_fraction", number(fit.max_m / fit.size_m)},
+          {"rms_limit_fraction", sim::kFitRmsLimit},
+          {"cap_deg", number(std::atan(fit.cap_slope) * 180 / M_PI)},
+          {"problem", fit.usable() ? nlohmann::json(nullptr) : nlohmann::json(fit.problem)}};
+}
+
 Eigen::Vector3d bodySize(const sim::Body& body) {
   const Eigen::Vector3d box = body.surface.boxHigh() - body.surface.boxLow();
   return {std::max(box.x(), box.y()), std::min(box.x(), box.y()), box.z()};
@@ -183,6 +204,7 @@ void analyzeBody(const sim::Model& model, Analysis& a) {
   a.length_unit = model.length_unit;
   a.paraboloid = body.surface.kind == sim::Surface::Kind::Paraboloid;
   a.mesh = body.surface.kind == sim::Surface::Kind::Mesh;
+  if (a.mesh) a.fit = body.surface.mesh.fit;
   a.census = sim::censusOf(body);
   a.mass_source = massSourceText(body);
   a.dents_cut_share = dentsCutShare(body);
@@ -223,8 +245,9 @@ Analysis analyze(const sim::Model& model, const std::optional<double>& spin) {
   a.stability = sim::contactStability(model);
   if (model.contact.model == sim::ContactModel::Auto && !sim::isAdaptive(model.integrator))
     a.auto_smooth_step = std::min(sim::smoothStep(model), model.dt);
-  // The theory linearises rolling on a smooth bottom, which a mesh body has not yet (§P11).
-  if (!a.mesh) analyzeTheory(model, a);
+  // The theory linearises rolling on the smooth bottom: a mesh body's fitted one (§P11.4).
+  a.theory = !a.mesh || a.fit.usable();
+  if (a.theory) analyzeTheory(model, a);
   return a;
 }
 
@@ -259,6 +282,7 @@ nlohmann::json bodyJson(const Analysis& a) {
   j["misalignment_deg"] = a.misalignment_deg;
   j["dents_cut_share"] =
       a.dents_cut_share ? nlohmann::json(*a.dents_cut_share) : nlohmann::json(nullptr);
+  j["fitted_bottom"] = a.mesh ? fittedBottomJson(a.fit) : nlohmann::json(nullptr);
   j["contact"] = {{"omega_rad_s", a.stability.omega},
                   {"damping_ratio", a.stability.zeta},
                   {"largest_stable_dt_s", a.stability.run_step},  // inf → null
@@ -318,11 +342,19 @@ nlohmann::json analysisJson(const Analysis& a) {
   j["growth_rates"] = {{"roll", a.at_spin.roll_growth}, {"pitch", a.at_spin.pitch_growth}};
   j["first_order_growth_per_spin"] = {{"roll", a.first_order.roll}, {"pitch", a.first_order.pitch}};
   j["eigenvalues"] = eigenvaluesJson(a.at_spin);
-  // A mesh body has no theory yet (§P11): null, not a matrix never computed.
-  j["linearised"] = a.mesh ? nlohmann::json(nullptr) : linearisationJson(a.at_spin);
+  // A mesh body whose bottom does not fit has no theory (§P11.4): null, not a matrix never
+  // computed.
+  j["linearised"] = a.theory ? linearisationJson(a.at_spin) : nlohmann::json(nullptr);
   // A body that cannot stand has no rocking about upright for a spin direction to favour.
   j["preferred"] = orNull(a.rest.stable, std::string(rb::nameOf(a.preferred)));
   j["predicted_first_reversal"] = forecastJson(a);
+  // A mesh body whose bottom does not fit has no theory (§P11.4): null, not numbers never
+  // worked out.
+  if (!a.theory)
+    for (const char* key : {"h", "radii_of_curvature", "rest_stable", "frequencies_hz",
+                            "growth_rates_at_rest", "growth_rates", "first_order_growth_per_spin",
+                            "eigenvalues", "preferred", "predicted_first_reversal"})
+      j[key] = nullptr;
   return j;
 }
 

@@ -31,6 +31,13 @@ std::optional<double> dentsCutShare(const sim::Body& body);
 /// Where the mass properties came from (body.mass_properties): scene, grid or continuum.
 std::string massSourceText(const sim::Body& body);
 
+/// A mesh body's fitted bottom (docs/physics.md §P11.4) as JSON: its residual (RMS and largest,
+/// m and as a fraction of the body's longest side), the cap's points and largest tilt, and why
+/// the smooth models cannot use it (null when they can). Null for any other body. The same in
+/// `analyze --json` and the run's sidecar.
+nlohmann::json fittedBottomJson(const sim::Body& body);
+nlohmann::json fittedBottomJson(const sim::BottomFit& fit);
+
 /// The body's size: the box that holds it, length (the longer horizontal side), width, height,
 /// m.
 Eigen::Vector3d bodySize(const sim::Body& body);
@@ -79,7 +86,11 @@ struct Analysis {
   // The body.
   double length_unit = 1;   ///< m per file unit (units.length)
   bool paraboloid = false;  ///< points on a grid; else an ellipsoid's (scene's)
-  bool mesh = false;  ///< a mesh body: points sampled from it, and no theory (no smooth bottom yet)
+  bool mesh = false;        ///< a mesh body: points sampled from it, theory from its fitted bottom
+  /// A mesh body's fitted bottom (docs/physics.md §P11.4); default for any other body.
+  sim::BottomFit fit;
+  /// The theory was worked out: every body but a mesh whose bottom does not fit.
+  bool theory = false;
   sim::GridCensus census;                 ///< the grid's points (total for a paraboloid only)
   std::string mass_source;                ///< massSourceText
   std::optional<double> dents_cut_share;  ///< dentsCutShare

@@ -42,6 +42,8 @@ nlohmann::json modelJson(const sim::Model& model) {
   j["initial"]["velocity"] = v ? nlohmann::json{v->x(), v->y(), v->z()} : nlohmann::json(nullptr);
   j["mass_kg"] = model.body->mass;
   j["length_unit_m"] = model.length_unit;
+  // A mesh body's fitted bottom and its residual (docs/physics.md §P11.4), null for others.
+  j["fitted_bottom"] = fittedBottomJson(*model.body);
   return j;
 }
 
@@ -85,7 +87,10 @@ std::vector<RunWarning> runWarnings(const sim::Model& model, const sim::RunSumma
   std::vector<RunWarning> w;
   // As analyze warns: a body whose CM is above a radius of curvature at the rest contact
   // topples rather than rocks, and what follows is no rattleback's reversal.
-  if (model.body->surface.kind == sim::Surface::Kind::Paraboloid && !sim::restOf(model).stable)
+  if ((model.body->surface.kind == sim::Surface::Kind::Paraboloid ||
+       (model.body->surface.kind == sim::Surface::Kind::Mesh &&
+        model.body->surface.mesh.fit.usable())) &&
+      !sim::restOf(model).stable)
     w.push_back({"cannot_stand",
                  "the body cannot stand upright (its CM is above a radius of curvature at the rest "
                  "contact; `rattleback analyze` says by how much)"});

@@ -168,8 +168,9 @@ TEST(MeshScene, SimulateAndStillRunOnAMeshBody) {
   EXPECT_TRUE(fs::exists(folder.dir / "still.png"));
 }
 
-// An open box (one triangle missing) and a smooth contact: exit 2, one line, naming the scene's
-// file, the line of the key and the key, then what is wrong and the way out.
+// An open box (one triangle missing), and a smooth contact on a box (its flat bottom fits no
+// bowl, docs/physics.md §P11.4): exit 2, one line, naming the scene's file, the line of the key
+// and the key, then what is wrong and the way out.
 TEST(MeshScene, ABadMeshOrModelIsRefusedWithExitTwoNamingFileLineAndKey) {
   Folder folder;
   sim::TriangleMesh open = box(100, 40, 20);
@@ -188,8 +189,11 @@ TEST(MeshScene, ABadMeshOrModelIsRefusedWithExitTwoNamingFileLineAndKey) {
   folder.obj("box.obj", box(100, 40, 20));
   const Outcome smooth = run("simulate " + folder.scene("box.obj", "smooth"), folder);
   EXPECT_EQ(smooth.status, 2);
-  EXPECT_NE(smooth.err.find("contact.model must be points for a mesh body"), std::string::npos)
+  EXPECT_NE(smooth.err.find("contact.model smooth touches the smooth bottom fitted to the mesh, "
+                            "and this mesh's does not fit: the quadric fitted to it is not a bowl"),
+            std::string::npos)
       << smooth.err;
+  EXPECT_NE(smooth.err.find("use contact.model: points"), std::string::npos) << smooth.err;
 }
 
 // `export` writes the shipped default body in mm; read back as a mesh body (units.length 0.001)

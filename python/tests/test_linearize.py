@@ -52,9 +52,9 @@ def test_bad_spins_are_named():
         rb.linearize(scene_path("rattleback.yaml"), spin=float("nan"))
 
 
-def test_a_mesh_body_has_no_linearised_model_yet():
-    # A mesh's lowest point is a corner, with no curvature to roll on: refused, not a matrix of
-    # noise (it gave eigenvalues near ±1e4 i), and analyze --json's linearised is null.
+def test_a_mesh_body_whose_bottom_is_no_bowl_has_no_linearised_model():
+    # A box's bottom is flat: the fitted bottom is no bowl (docs/physics.md P11.4), so there is no
+    # rocking to linearise: refused, naming why, and analyze --json's linearised is null.
     from conftest import SOURCE
 
     mesh = {
@@ -67,6 +67,78 @@ def test_a_mesh_body_has_no_linearised_model_yet():
         "contact": {"model": "points", "stiffness": 20, "damping": 0.05},
         "simulation": {"dt": 1.0e-4, "duration": 0.1},
     }
-    with pytest.raises(ValueError, match=r"^linearize: a mesh body has no smooth bottom"):
+    with pytest.raises(ValueError, match=r"^linearize: this mesh body's bottom does not fit .*not a bowl"):
         rb.linearize(mesh)
     assert rb.analyze(mesh)["linearised"] is None
+    assert "not a bowl" in rb.analyze(mesh)["fitted_bottom"]["problem"]
+
+
+def ellipsoid_obj(path, semi_axes, rings=96, sectors=192):
+    """A latitude-longitude mesh of the ellipsoid (corners on it, wound outwards) as OBJ."""
+    a, b, c = semi_axes
+    theta = np.pi * np.arange(1, rings) / rings
+    phi = 2 * np.pi * np.arange(sectors) / sectors
+    t, p = np.meshgrid(theta, phi, indexing="ij")
+    ring = np.stack([a * np.sin(t) * np.cos(p), b * np.sin(t) * np.sin(p), -c * np.cos(t)], -1)
+    vertices = np.vstack([[0, 0, -c], ring.reshape(-1, 3), [0, 0, c]])
+    at = lambda i, j: 1 + i * sectors + j % sectors  # noqa: E731
+    faces = []
+    for j in range(sectors):
+        faces.append((0, at(0, j + 1), at(0, j)))
+        for i in range(rings - 2):
+            faces.append((at(i, j), at(i, j + 1), at(i + 1, j + 1)))
+            faces.append((at(i, j), at(i + 1, j + 1), at(i + 1, j)))
+        faces.append((len(vertices) - 1, at(rings - 2, j), at(rings - 2, j + 1)))
+    faces = np.array(faces)
+    # Wound outwards: each face's normal away from the centre (the ellipsoid is convex).
+    v = vertices[faces]
+    normal = np.cross(v[:, 1] - v[:, 0], v[:, 2] - v[:, 0])
+    inward = np.einsum("ij,ij->i", normal, v.mean(axis=1)) < 0
+    faces[inward] = faces[inward][:, [0, 2, 1]]
+    with open(path, "w") as out:
+        out.writelines(f"v {x!r} {y!r} {z!r}\n" for x, y, z in vertices)
+        out.writelines(f"f {i + 1} {j + 1} {k + 1}\n" for i, j, k in faces)
+
+
+def kane_levinson_mesh(tmp_path, rings=96, sectors=192):
+    """Kane & Levinson's scene with its body a mesh of their ellipsoid (their CM and inertia)."""
+    ellipsoid_obj(tmp_path / "kl.obj", (0.03, 0.20, 0.02), rings, sectors)
+    return {
+        "units": {"length": 1.0},
+        "body": {
+            "shape": "mesh",
+            "mesh": {"file": str(tmp_path / "kl.obj")},
+            "center_of_mass": [0.0, 0.0, -0.01],
+            "inertia": [[1.6e-3, -2.0e-5, 0.0], [-2.0e-5, 2.0e-4, 0.0], [0.0, 0.0, 1.7e-3]],
+            "mass": 1.0,
+        },
+        "contact": {"model": "rolling", "friction": 1.0},  # theirs
+        "initial": {"spin": 5.0, "tilt": [0.5, 0.5]},
+        "simulation": {"tolerance": 1.0e-8, "duration": 3.0},
+    }
+
+
+def test_a_mesh_bodys_run_states_its_fitted_bottom_in_its_sidecar(tmp_path):
+    # The sidecar's model.fitted_bottom is analyze's (docs/commands.md), residual and all; a
+    # 12 × 24 mesh lies 1.8e-4 of its length RMS from its fit, beside the limit 5e-4.
+    import json
+
+    scene = dict(kane_levinson_mesh(tmp_path, 12, 24), simulation={"tolerance": 1e-8, "duration": 0.2})
+    rb.simulate(scene).to_csv(tmp_path / "run.csv")
+    sidecar = json.loads((tmp_path / "run.csv.json").read_text())["model"]["fitted_bottom"]
+    assert sidecar == rb.analyze(scene)["fitted_bottom"]
+    assert 1e-5 < sidecar["rms_fraction"] < sidecar["rms_limit_fraction"] == 5e-4
+    assert sidecar["problem"] is None
+
+
+def test_a_mesh_of_kane_and_levinsons_ellipsoid_linearises_as_the_ellipsoid(tmp_path):
+    # The rolling model on the bottom fitted to a fine mesh of their ellipsoid (the same CM and
+    # inertia) is theirs: the state matrix within 1e-3 of its largest entry (the fit's radii are
+    # within about 1e-4 at this mesh, docs/physics.md P11.4).
+    analytic = rb.Scene.from_file(scene_path("kane-levinson.yaml"))
+    scene = kane_levinson_mesh(tmp_path)
+    expected = rb.linearize(analytic, spin=5.0).matrix
+    got = rb.linearize(scene, spin=5.0).matrix
+    assert np.abs(got - expected).max() < 1e-3 * np.abs(expected).max()
+    fitted = rb.analyze(scene)["fitted_bottom"]
+    assert fitted["problem"] is None and fitted["rms_fraction"] < 1e-4

@@ -1,0 +1,40 @@
+"""Headless Chromium for the page checks (report, player, snapshot report, docs site): one
+place for where it is and the flags every check needs; each check adds its own (a window size,
+software WebGL, autoplay)."""
+
+import os
+import tempfile
+
+CHROMIUM = "/usr/bin/chromium"
+DRIVER = "/usr/bin/chromedriver"
+
+# No sandbox (CI runs as root), no first-run, update or sync traffic: the checks see only the
+# requests the page makes.
+FLAGS = [
+    "--headless=new",
+    "--no-sandbox",
+    "--no-first-run",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+]
+
+
+def installed():
+    """Whether Chromium and chromedriver are there (Debian: chromium, chromium-driver)."""
+    return os.path.exists(CHROMIUM) and os.path.exists(DRIVER)
+
+
+def browser(*flags):
+    """A driver for a headless Chromium with FLAGS, `flags` and a profile of its own, logging
+    the console (goog:loggingPrefs)."""
+    from selenium import webdriver
+    from selenium.webdriver.chrome.service import Service
+
+    options = webdriver.ChromeOptions()
+    options.binary_location = CHROMIUM
+    profile = tempfile.mkdtemp(prefix="rattleback-chromium-")
+    for flag in [*FLAGS, *flags, f"--user-data-dir={profile}"]:
+        options.add_argument(flag)
+    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+    return webdriver.Chrome(service=Service(DRIVER), options=options)
