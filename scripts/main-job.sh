@@ -43,7 +43,7 @@ for scene in tap-end tap-side; do
   "$rb" render "scenes/$scene.yaml" -o "$out/$scene.mp4" -q
 done
 
-echo "== a printable rattleback: the default body exported as STL and read back as a mesh body"
+echo "== a printable rattleback: the default body exported as STL, read back as a mesh body, rolling on its fitted bottom"
 "$rb" render scenes/printed.yaml -o "$out/printed.mp4" -q
 
 echo "== stills"

@@ -1,4 +1,4 @@
-// The closed surface of a body we have formulas for, as triangles (docs/physics.md §P11.4): what
+// The closed surface of a body we have formulas for, as triangles (docs/physics.md §P11.5): what
 // `rattleback export` writes as STL, and what a mesh body made from it is checked against.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The bodies we have formulas for, as closed meshes (sim/tessellate.hpp; docs/physics.md §P11.4):
+// The bodies we have formulas for, as closed meshes (sim/tessellate.hpp; docs/physics.md §P11.5):
 // each passes the checks a mesh file must pass, its mass properties converge to the continuum's
 // at second order (a polyhedron inscribed in a smooth surface misses it by O(h²) a cell), and it
 // survives the trip through binary STL.
