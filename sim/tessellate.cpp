@@ -68,8 +68,9 @@ rb::Result<TriangleMesh> paraboloidMesh(const Paraboloid& shape, const std::opti
         return rb::Error{"body.dents",
                          "a dent reaches the bottom at (" + std::to_string(u.x()) + ", " +
                              std::to_string(u.y()) +
-                             ") m: export draws bodies whose dents lie within the top (make "
-                             "body.dents.scale or its inset smaller)"};
+                             ") m, a hole through the body: export draws bodies whose dents lie "
+                             "within the top (make body.dents.scale smaller: the shipped 0.45 "
+                             "exports)"};
       v.emplace_back(u.x(), u.y(), z);
     }
   for (int j = 0; j < segments; ++j) {

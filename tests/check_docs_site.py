@@ -18,7 +18,6 @@ Usage: check_docs_site.py [SOURCE_DIR]. Exit status 0 when every check passes, 1
 fails (each failure printed), 77 when mkdocs is not installed (CTest's "skipped").
 """
 import html.parser
-import os
 import re
 import shutil
 import subprocess
@@ -98,30 +97,17 @@ def static_failures(site):
 def browser_failures(site):
     """Each page in headless Chromium: what it requested and what its console said."""
     try:
-        from selenium import webdriver
-        from selenium.webdriver.chrome.service import Service
+        import selenium  # noqa: F401  (driven through tests/browser/chromium.py)
     except ImportError:
         print("note: selenium is not installed (python3-selenium); pages not opened in a browser")
         return []
-    if not (os.path.exists("/usr/bin/chromium") and os.path.exists("/usr/bin/chromedriver")):
+    sys.path.insert(0, str(Path(__file__).resolve().parent / "browser"))
+    import chromium  # tests/browser/chromium.py: one Chromium setup for the page checks
+
+    if not chromium.installed():
         print("note: chromium or chromedriver is not installed; pages not opened in a browser")
         return []
-    options = webdriver.ChromeOptions()
-    options.binary_location = "/usr/bin/chromium"
-    profile = tempfile.mkdtemp(prefix="rattleback-docs-chromium-")
-    for flag in [
-        "--headless=new",
-        "--no-sandbox",
-        "--disable-gpu",
-        "--no-first-run",
-        "--disable-background-networking",
-        "--disable-component-update",
-        "--disable-sync",
-        f"--user-data-dir={profile}",
-    ]:
-        options.add_argument(flag)
-    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
-    driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
+    driver, profile = chromium.open_browser("--disable-gpu", prefix="rattleback-docs-chromium-")
     failures = []
     try:
         # 404.html is the server's page for a missing address: its links are from the site's root.
@@ -148,8 +134,7 @@ def browser_failures(site):
                 ]
             failures += [f"{page.name}: console: {m}" for m in errors]
     finally:
-        driver.quit()
-        shutil.rmtree(profile, ignore_errors=True)
+        chromium.close(driver, profile)
     return failures
 
 

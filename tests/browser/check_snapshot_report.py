@@ -7,45 +7,22 @@ a case without a golden shows its new image and says --update writes it.
 
 Usage: check_snapshot_report.py DIR DIFFERING_CASE MISSING_CASE [SCREENSHOT.png]
 Exit 0 when every check passes, 1 when one fails, 77 without Selenium or Chromium (skipped)."""
-import os
 import pathlib
-import shutil
 import sys
-import tempfile
 import time
 
 try:
-    from selenium import webdriver
-    from selenium.webdriver.chrome.service import Service
+    import selenium  # noqa: F401  (the checks below drive it through chromium.py)
 except ImportError:
     print("selenium is not installed (Debian: python3-selenium); skipped")
     sys.exit(77)
 
-CHROMIUM = "/usr/bin/chromium"
-DRIVER = "/usr/bin/chromedriver"
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import chromium  # noqa: E402  (tests/browser/chromium.py: one Chromium setup for the checks)
 
 IMAGES = """return Array.from(document.querySelectorAll('section.case img')).map(i =>
     [i.closest('section').id, i.getAttribute('src'), i.complete, i.naturalWidth,
      i.getBoundingClientRect().top]);"""
-
-
-def browser(profile):
-    options = webdriver.ChromeOptions()
-    options.binary_location = CHROMIUM
-    for flag in [
-        "--headless=new",
-        "--no-sandbox",
-        "--disable-gpu",
-        "--no-first-run",
-        "--disable-background-networking",
-        "--disable-component-update",
-        "--disable-sync",
-        "--window-size=1400,1000",
-        f"--user-data-dir={profile}",
-    ]:
-        options.add_argument(flag)
-    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
-    return webdriver.Chrome(service=Service(DRIVER), options=options)
 
 
 def check_case(driver, images, differing, missing, failures):
@@ -75,11 +52,10 @@ def check_case(driver, images, differing, missing, failures):
 def main():
     folder = pathlib.Path(sys.argv[1]).resolve()
     differing, missing = sys.argv[2], sys.argv[3]
-    if not (os.path.exists(CHROMIUM) and os.path.exists(DRIVER)):
+    if not chromium.installed():
         print("chromium or chromedriver is not installed; skipped")
         return 77
-    profile = tempfile.mkdtemp(prefix="rattleback-chromium-")
-    driver = browser(profile)
+    driver, profile = chromium.open_browser("--disable-gpu", "--window-size=1400,1000")
     failures = []
     try:
         driver.get((folder / "index.html").as_uri())
@@ -96,8 +72,7 @@ def main():
             driver.save_screenshot(sys.argv[4])
         print(f"{len(images)} images checked")
     finally:
-        driver.quit()
-        shutil.rmtree(profile, ignore_errors=True)  # the browser's profile: ours to remove
+        chromium.close(driver, profile)
     for f in failures:
         print("FAIL:", f)
     return 1 if failures else 0

@@ -3,6 +3,7 @@ place for where it is and the flags every check needs; each check adds its own (
 software WebGL, autoplay)."""
 
 import os
+import shutil
 import tempfile
 
 CHROMIUM = "/usr/bin/chromium"
@@ -25,16 +26,22 @@ def installed():
     return os.path.exists(CHROMIUM) and os.path.exists(DRIVER)
 
 
-def browser(*flags):
-    """A driver for a headless Chromium with FLAGS, `flags` and a profile of its own, logging
-    the console (goog:loggingPrefs)."""
+def open_browser(*flags, prefix="rattleback-chromium-"):
+    """A driver for a headless Chromium with FLAGS, `flags` and a profile of its own (a temporary
+    folder, returned beside it for close()), logging the console (goog:loggingPrefs)."""
     from selenium import webdriver
     from selenium.webdriver.chrome.service import Service
 
     options = webdriver.ChromeOptions()
     options.binary_location = CHROMIUM
-    profile = tempfile.mkdtemp(prefix="rattleback-chromium-")
+    profile = tempfile.mkdtemp(prefix=prefix)
     for flag in [*FLAGS, *flags, f"--user-data-dir={profile}"]:
         options.add_argument(flag)
     options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
-    return webdriver.Chrome(service=Service(DRIVER), options=options)
+    return webdriver.Chrome(service=Service(DRIVER), options=options), profile
+
+
+def close(driver, profile):
+    """Ends the browser and removes its profile (ours to remove)."""
+    driver.quit()
+    shutil.rmtree(profile, ignore_errors=True)

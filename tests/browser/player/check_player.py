@@ -48,14 +48,10 @@ import json
 import math
 import pathlib
 import re
-import shutil
 import sys
-import tempfile
 import time
 
 try:
-    from selenium import webdriver
-    from selenium.webdriver.chrome.service import Service
     from selenium.webdriver.common.action_chains import ActionChains
     from selenium.webdriver.common.by import By
     from selenium.webdriver.common.keys import Keys
@@ -64,8 +60,9 @@ except ImportError:
     print("selenium is not installed (Debian: python3-selenium); skipped")
     sys.exit(77)
 
-CHROMIUM = "/usr/bin/chromium"
-DRIVER = "/usr/bin/chromedriver"
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+import chromium  # noqa: E402  (tests/browser/chromium.py: one Chromium setup for the checks)
+
 VIEWS = ["oblique", "above", "front", "side", "follow"]
 ELEVATION = math.radians(10)
 
@@ -1163,20 +1160,11 @@ def main():
     args = parser.parse_args()
     folder = pathlib.Path(args.dir).resolve()
     size = [int(v) for v in args.size.split("x")]
-    if not (pathlib.Path(CHROMIUM).exists() and pathlib.Path(DRIVER).exists()):
+    if not chromium.installed():
         print("chromium or chromedriver is not installed; skipped")
         return 77
-    options = webdriver.ChromeOptions()
-    options.binary_location = CHROMIUM
-    profile = tempfile.mkdtemp(prefix="rattleback-chromium-")
-    for flag in [
-        "--headless=new",
-        "--no-sandbox",
+    driver, profile = chromium.open_browser(
         "--disable-quic",
-        "--no-first-run",
-        "--disable-background-networking",
-        "--disable-component-update",
-        "--disable-sync",
         # WebGL on the CPU (SwiftShader through ANGLE): no GPU needed; the page
         # composited on the CPU, as Chromium does by itself on a machine without a GPU
         # (compositing on SwiftShader instead cost ~30 ms of CPU a frame, whole window:
@@ -1187,11 +1175,7 @@ def main():
         "--disable-gpu-compositing",
         "--force-device-scale-factor=1",
         "--window-size=1700,1100",
-        f"--user-data-dir={profile}",
-    ]:
-        options.add_argument(flag)
-    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
-    driver = webdriver.Chrome(service=Service(DRIVER), options=options)
+    )
     checker = Checker(driver, folder)
     try:
         driver.set_script_timeout(60)
@@ -1209,8 +1193,7 @@ def main():
     except Exception as e:  # a check that could not run is a failure, not a crash
         checker.check(False, f"the check stopped: {type(e).__name__}: {e}")
     finally:
-        driver.quit()
-        shutil.rmtree(profile, ignore_errors=True)
+        chromium.close(driver, profile)
     failed = len(checker.failures)
     print(f"{checker.checks - failed} passed, {failed} failed")
     return 1 if failed else 0
