@@ -68,8 +68,10 @@ def mesh_scene(stl):
 want = analyze(scene)
 exact, exact_wall = simulate(scene)
 print(f"analytic body: first reversal {exact['first_reversal_s']} s, run {exact_wall * 1e3:.2f} ms")
-print(f"{'segments':>8} {'triangles':>9} {'mass props':>10} {'reversal s':>11} {'error s':>9} "
-      f"{'run ms':>7} {'x analytic':>10}")
+print(
+    f"{'segments':>8} {'triangles':>9} {'mass props':>10} {'reversal s':>11} {'error s':>9} "
+    f"{'run ms':>7} {'x analytic':>10}"
+)
 for segments in (48, 96, 192, 384):
     stl = os.path.join(work, f"body-{segments}.stl")
     run("export", scene, "-o", stl, "--segments", str(segments), "-q")
@@ -82,8 +84,10 @@ for segments in (48, 96, 192, 384):
         result, wall = simulate(path)
         first = result["first_reversal_s"]
         error = "" if first is None else f"{first - exact['first_reversal_s']:+.2e}"
-        print(f"{segments:>8} {triangles:>9} {moments:>10.2e} {str(first):>11} {error:>9} "
-              f"{wall * 1e3:>7.2f} {wall / exact_wall:>10.2f}")
+        print(
+            f"{segments:>8} {triangles:>9} {moments:>10.2e} {str(first):>11} {error:>9} "
+            f"{wall * 1e3:>7.2f} {wall / exact_wall:>10.2f}"
+        )
     except subprocess.CalledProcessError as e:
         print(f"{segments:>8} {triangles:>9} {moments:>10.2e}  refused: {e.stderr.strip()}")
 print("target: a rolling run on the mesh body within 2x the analytic body's cost")
