@@ -195,7 +195,10 @@ rb::Status checkColumns(const scene::Sweep& sweep) {
     const std::optional<std::string> nearest = rb::nearestWord(c.name, names);
     const std::string at =
         c.where.line > 0 ? c.where.file + ":" + std::to_string(c.where.line) : c.where.file;
-    rb::Error e{"", at + ": columns: " + c.name + " is not a column of the table" +
+    // A file's line names the key ("sw.yaml:4: columns: …"); an argument is the key itself
+    // (Python's "argument columns: …").
+    const std::string label = c.where.line > 0 ? at + ": columns: " : at + ": ";
+    rb::Error e{"", label + c.name + " is not a column of the table" +
                         (nearest ? "; did you mean " + *nearest + "?" : "") +
                         " (the columns: " + known + ")"};
     e.where = c.where;

@@ -580,7 +580,7 @@ def test_a_sweep_given_columns_holds_them_with_the_command_lines_values(tmp_path
     assert np.array_equal(own["forecast_s"], listed["forecast_s"], equal_nan=True)
     with pytest.raises(
         rb.SceneError,
-        match="argument columns: columns: forcast_s is not a column of the table; did you mean forecast_s",
+        match="argument columns: forcast_s is not a column of the table; did you mean forecast_s",
     ):
         rb.sweep(base, vary, columns=["forcast_s"])
     # A table without status still warns when every run was refused (the CLI exits 2).
