@@ -3,8 +3,11 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
+#include <string>
 
 #include "python/convert.hpp"
 #include "python/scene_value.hpp"
@@ -41,6 +44,37 @@ void bindBodyMesh(py::module_& m) {
         return py::make_tuple(vertices, faces);
       },
       py::arg("scene"), py::arg("segments") = py::none());
+
+  // Scene.from_mesh's arrays, checked for shape and range in Python first (its messages name the
+  // argument); the checks here only keep a bad index from reading outside the vertices.
+  py::class_<HeldMesh>(m, "HeldMesh");
+  m.def(
+      "hold_mesh",
+      [](const py::array_t<double, py::array::c_style | py::array::forcecast>& vertices,
+         const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& faces) {
+        if (vertices.ndim() != 2 || vertices.shape(1) != 3 || faces.ndim() != 2 ||
+            faces.shape(1) != 3)
+          throw py::value_error("give vertices as an (N, 3) array and faces as an (M, 3) array");
+        auto held = std::make_shared<sim::TriangleMesh>();
+        const auto v = vertices.unchecked<2>();
+        const auto f = faces.unchecked<2>();
+        held->vertices.reserve(static_cast<std::size_t>(v.shape(0)));
+        for (py::ssize_t i = 0; i < v.shape(0); ++i)
+          held->vertices.emplace_back(v(i, 0), v(i, 1), v(i, 2));
+        held->faces.reserve(static_cast<std::size_t>(f.shape(0)));
+        for (py::ssize_t i = 0; i < f.shape(0); ++i) {
+          std::array<int, 3> face{};
+          for (py::ssize_t k = 0; k < 3; ++k) {
+            if (f(i, k) < 0 || f(i, k) >= v.shape(0))
+              throw py::value_error("argument faces: row " + std::to_string(i) +
+                                    " names a vertex that is not in vertices");
+            face[static_cast<std::size_t>(k)] = static_cast<int>(f(i, k));
+          }
+          held->faces.push_back(face);
+        }
+        return HeldMesh{std::move(held)};
+      },
+      py::arg("vertices"), py::arg("faces"));
 }
 
 }  // namespace pyrb

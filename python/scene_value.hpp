@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,6 +21,12 @@ namespace pyrb {
 struct LoadedScene {
   tasks::LoadedScene value;
   bool has_file = false;  ///< read from a file (from_file), not made from text or a dict
+};
+
+/// A mesh body's triangles given from NumPy (Scene.from_mesh), converted once and shared by every
+/// scene made from them: they stand for body.mesh.file's (scene::loadWithValues).
+struct HeldMesh {
+  std::shared_ptr<const sim::TriangleMesh> mesh;
 };
 
 /// The stem a scene's outputs are named by (out/<stem>.mp4, the folder's manifest): its file's,
@@ -74,12 +81,12 @@ inline void bindScene(py::module_& m) {
       "load",
       [](const std::string& yaml, const std::string& name,
          const std::vector<std::pair<std::string, std::string>>& values, const py::dict& overrides,
-         bool has_file) {
+         bool has_file, const std::optional<HeldMesh>& mesh, const std::string& place) {
         std::vector<scene::KeyValue> kv;
         for (const auto& [key, text] : values) kv.push_back({key, text});
         const tasks::Overrides o = overridesOf(overrides);
         GilReleased release;  // compiling a body takes tens of ms
-        auto loaded = scene::loadWithValues(yaml, name, kv, "with_values");
+        auto loaded = scene::loadWithValues(yaml, name, kv, place, mesh ? mesh->mesh : nullptr);
         if (!loaded) {
           py::gil_scoped_acquire acquire;
           raise(loaded.error());
@@ -89,7 +96,7 @@ inline void bindScene(py::module_& m) {
         return LoadedScene{take(std::move(applied)), has_file};
       },
       py::arg("yaml"), py::arg("name"), py::arg("values"), py::arg("overrides"),
-      py::arg("has_file"));
+      py::arg("has_file"), py::arg("mesh") = py::none(), py::arg("place") = "with_values");
 }
 
 }  // namespace pyrb

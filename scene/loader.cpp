@@ -369,7 +369,8 @@ void checkKnownKeys(const YAML::Node& node, const std::string& path, int line,
 
 rb::Result<Loaded> loadTree(const YAML::Node& root_node, const std::string& name,
                             const std::map<std::string, std::string>& places,
-                            const std::map<std::string, int>& lines) {
+                            const std::map<std::string, int>& lines,
+                            std::shared_ptr<const sim::TriangleMesh> mesh) {
   Loaded out;
   out.file = name;
   out.overrides = places;
@@ -395,8 +396,12 @@ rb::Result<Loaded> loadTree(const YAML::Node& root_node, const std::string& name
   } catch (const YAML::Exception& e) {
     return malformed(name, e);
   }
-  if (out.spec.body.shape == "mesh")
-    if (auto e = readBodyMesh(out, places)) return *e;
+  if (out.spec.body.shape == "mesh") {
+    if (mesh)
+      out.spec.body.mesh.data = std::move(mesh);
+    else if (auto e = readBodyMesh(out, places))
+      return *e;
+  }
   return out;
 }
 
@@ -414,7 +419,8 @@ rb::Result<Loaded> loadString(const std::string& yaml, const std::string& name) 
 }
 
 rb::Result<Loaded> loadWithValues(const std::string& yaml, const std::string& name,
-                                  const std::vector<KeyValue>& values, const std::string& place) {
+                                  const std::vector<KeyValue>& values, const std::string& place,
+                                  std::shared_ptr<const sim::TriangleMesh> mesh) {
   YAML::Node root;
   try {
     root = YAML::Load(yaml);
@@ -454,7 +460,7 @@ rb::Result<Loaded> loadWithValues(const std::string& yaml, const std::string& na
         place.rfind("--", 0) == 0 ? place + " " + kv.key + "=" + kv.yaml : place;
   }
   replaceStepSetting(root, places);
-  auto loaded = loadTree(root, name, places);
+  auto loaded = loadTree(root, name, places, {}, std::move(mesh));
   if (loaded) {
     loaded->values = values;
     loaded->content = std::move(content);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <variant>
@@ -80,9 +81,11 @@ std::string describe(const Loaded& loaded, const rb::Error& error);
 rb::Error locate(const Loaded& loaded, const rb::Error& error);
 
 /// As loadString, with each value put at its key first; an error in one of them names `place`
-/// ("with_values") and the key.
+/// ("with_values") and the key. `mesh`, when given, stands for body.mesh.file's triangles
+/// (loadTree).
 rb::Result<Loaded> loadWithValues(const std::string& yaml, const std::string& name,
-                                  const std::vector<KeyValue>& values, const std::string& place);
+                                  const std::vector<KeyValue>& values, const std::string& place,
+                                  std::shared_ptr<const sim::TriangleMesh> mesh = nullptr);
 
 /// compile() of a loaded scene, with any error as one line.
 rb::Result<sim::Model> loadModel(const Loaded& loaded);

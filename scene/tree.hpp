@@ -5,6 +5,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <map>
+#include <memory>
 #include <string>
 
 #include "scene/loader.hpp"
@@ -29,9 +30,12 @@ std::string printable(const std::string& text);
 
 /// As loadString, from a parsed tree. `places` maps dotted keys that were set from elsewhere
 /// to where ("sweeps/x.yaml:4"): an error in such a key (or inside it) names that place.
-/// `lines` gives the lines of the keys of a tree copied from a file (the copy has none).
+/// `lines` gives the lines of the keys of a tree copied from a file (the copy has none). `mesh`,
+/// when given, is a mesh body's triangles held in memory (Python's Scene.from_mesh): it stands
+/// for body.mesh.file's, which is then not read.
 rb::Result<Loaded> loadTree(const YAML::Node& root, const std::string& name,
                             const std::map<std::string, std::string>& places,
-                            const std::map<std::string, int>& lines = {});
+                            const std::map<std::string, int>& lines = {},
+                            std::shared_ptr<const sim::TriangleMesh> mesh = nullptr);
 
 }  // namespace scene

@@ -81,14 +81,26 @@ class Scene:
     line's message does.
     """
 
-    def __init__(self, yaml: str, name: str, values: Sequence[tuple[str, str]] = (), _file: bool = False):
+    def __init__(
+        self,
+        yaml: str,
+        name: str,
+        values: Sequence[tuple[str, str]] = (),
+        _file: bool = False,
+        _mesh: Optional[tuple[_np.ndarray, _np.ndarray]] = None,
+        _place: str = "with_values",
+    ):
         self._yaml = yaml
         self._name = name
         self._values = tuple(values)
         # Read from the file `name` (from_file); else `name` only stands for one in messages, and
         # a run's sidecar points to no file.
         self._file = _file
-        self._loaded = _core.load(yaml, name, list(self._values), {}, _file)
+        # from_mesh's arrays (kept to pickle the scene) and the library's copy of them, which
+        # stands for body.mesh.file's triangles in every scene made from this one.
+        self._mesh = _mesh
+        self._held = None if _mesh is None else _core.hold_mesh(*_mesh)
+        self._loaded = _core.load(yaml, name, list(self._values), {}, _file, self._held, _place)
 
     @classmethod
     @_checked
@@ -123,13 +135,73 @@ class Scene:
                 e.line = None
             raise
 
+    @classmethod
+    @_checked
+    def from_mesh(
+        cls,
+        vertices: Any,
+        faces: Any,
+        mass: float,
+        units: float = 1.0,
+        center_of_mass: Optional[Sequence[float]] = None,
+        inertia: Any = None,
+        scene: Optional[SceneLike] = None,
+    ) -> "Scene":
+        """A mesh body from NumPy arrays, as ``body.shape: mesh`` reads one from a file
+        (docs/scenes.md): ``vertices`` (N, 3) in ``units`` (m per unit: 0.001 for mm; the
+        scene's ``units.length``), ``faces`` (M, 3) vertex indices, each counter-clockwise seen
+        from outside. The mesh is checked as a file's is (closed, wound outwards, no faces of
+        zero area, a toy's size), never mended. ``mass`` kg at uniform density, unless
+        ``center_of_mass`` (in ``units``) and ``inertia`` (kg m², about the CM) are given.
+        Contact, initial state and simulation come from ``scene`` (a Scene, a path, or a dict
+        that needs no ``body``; default the shipped ``scenes/rattleback.yaml``), whose lengths
+        are in ``units`` too. What ``scene.mesh()`` gives
+        comes back: ``Scene.from_mesh(*rb.Scene.from_file("scenes/rattleback.yaml").mesh(), 0.059)``."""
+        vertices = _np.ascontiguousarray(vertices, dtype=_np.float64)
+        faces = _np.ascontiguousarray(faces, dtype=_np.int64)
+        for name, array, rows in (("vertices", vertices, "N"), ("faces", faces, "M")):
+            if len(array) == 0:
+                raise SceneError(
+                    f"from_mesh: argument {name} is empty: give an ({rows}, 3) array", "from_mesh"
+                )
+        if not _np.isfinite(vertices).all():
+            row = int(_np.argwhere(~_np.isfinite(vertices))[0][0])
+            raise SceneError(f"from_mesh: argument vertices: row {row} is not finite", "from_mesh")
+        outside = (faces < 0) | (faces >= len(vertices))
+        if outside.any():
+            row = int(_np.argwhere(outside)[0][0])
+            raise SceneError(
+                f"from_mesh: argument faces: row {row} names vertex {int(faces[row][outside[row]][0])}, "
+                f"but vertices has {len(vertices)} rows (0 … {len(vertices) - 1})",
+                "from_mesh",
+            )
+        if isinstance(scene, _Mapping):  # its body is from_mesh's: the dict need not have one
+            base = Scene.__new__(Scene)
+            base._yaml, base._name, base._values, base._file = (
+                _json.dumps(scene, default=_yaml_value_default),
+                "<dict>",
+                (),
+                False,
+            )
+        else:
+            base = _scene("scenes/rattleback.yaml" if scene is None else scene)
+        body: dict[str, Any] = {"shape": "mesh", "mesh": {"file": "<from_mesh>"}, "mass": mass}
+        if center_of_mass is not None:
+            body["center_of_mass"] = center_of_mass
+        if inertia is not None:
+            body["inertia"] = inertia
+        added = [("units.length", _yaml_value(units)), ("body", _yaml_value(body))]
+        return Scene(
+            base._yaml, base._name, base._values + tuple(added), base._file, (vertices, faces), "from_mesh"
+        )
+
     @_checked
     def with_values(self, values: Mapping[str, Any]) -> "Scene":
         """A copy with values put at dotted keys: ``{"initial.spin": -5,
         "contact.air_drag": 1e-5, "body.dents.at[0]": 0.3}``. A wrong key or value raises
         :class:`SceneError` naming ``with_values`` and the key."""
         added = [(str(k), _yaml_value(v)) for k, v in values.items()]
-        return Scene(self._yaml, self._name, self._values + tuple(added), self._file)
+        return Scene(self._yaml, self._name, self._values + tuple(added), self._file, self._mesh)
 
     @property
     def name(self) -> str:
@@ -172,12 +244,12 @@ class Scene:
             overrides["size"] = [int(side) for side in overrides["size"]]
         if not overrides:
             return self._loaded
-        return _core.load(self._yaml, self._name, list(self._values), overrides, self._file)
+        return _core.load(self._yaml, self._name, list(self._values), overrides, self._file, self._held)
 
     def __reduce__(self):
         # Pickled as what it was made of, and compiled again where it is unpickled (a worker
         # process): the compiled scene is the library's, and tens of ms to make.
-        return (Scene, (self._yaml, self._name, self._values, self._file))
+        return (Scene, (self._yaml, self._name, self._values, self._file, self._mesh))
 
     def __repr__(self) -> str:
         extra = f", values={self.values!r}" if self._values else ""

@@ -78,6 +78,22 @@ def _numbers(count: int) -> Callable[[Any], bool]:
     return test
 
 
+def _rows(kinds: str) -> Callable[[Any], bool]:
+    """A test for a table of rows of three: an (N, 3) array, or a list of such rows, of numbers
+    whose NumPy kind is in `kinds` ("iu" whole numbers, "fiu" any)."""
+
+    def test(value: Any) -> bool:
+        if isinstance(value, (str, bytes, Mapping)):
+            return False
+        try:
+            array = np.asarray(value)
+        except (ValueError, TypeError):  # ragged rows
+            return False
+        return array.ndim == 2 and array.shape[1] == 3 and array.dtype.kind in kinds
+
+    return test
+
+
 def _scene(value: Any) -> bool:
     global _Scene
     if _Scene is None:
@@ -148,6 +164,15 @@ _TAKES: dict[str, tuple[Callable[[Any], bool], str]] = {
         "a list of the table's columns (text), e.g. ['first_reversal_s']",
     ),
     "text": (_text, "YAML text"),
+    "vertices": (_rows("fiu"), "an (N, 3) array of numbers (x, y, z), in units"),
+    "faces": (_rows("iu"), "an (M, 3) array of whole numbers (vertex indices)"),
+    "mass": (_number, f"{_NUMBER} (kg)"),
+    "units": (_number, f"{_NUMBER} (m per unit of the vertices: 0.001 for mm)"),
+    "center_of_mass": (_numbers(3), "3 numbers (x, y, z), in units"),
+    "inertia": (
+        lambda v: _rows("fiu")(v) and len(v) == 3,
+        "a 3×3 array of numbers (kg m², about the CM)",
+    ),
     "values": (
         lambda v: isinstance(v, Mapping),
         "a dict of dotted keys and values, e.g. {'initial.spin': -5}",

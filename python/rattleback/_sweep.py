@@ -137,6 +137,15 @@ def _file_sweep(source, duration, name, jobs, kept, columns):
 def _scene_sweep(source, vary, duration, name, jobs, kept, columns):
     """The call that runs the scene ``source`` along ``vary``, as a sweep file would."""
     base = _scene(source)
+    if base._mesh is not None:
+        # A sweep's rows are made from the scene's text, which names the mesh by file.
+        raise SceneError(
+            "argument source: a Scene.from_mesh scene cannot be swept: write its mesh to a file "
+            "(rattleback export, or any STL writer) and name it in body.mesh.file",
+            "argument source",
+            None,
+            "body.mesh.file",
+        )
     spec: dict[str, Any] = {"vary": {key: _values(v) for key, v in vary.items()}}
     if duration is not None:
         if not (math.isfinite(float(duration)) and float(duration) > 0):

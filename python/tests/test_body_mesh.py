@@ -117,3 +117,81 @@ def test_bad_segments_and_dents_through_the_bottom_are_refused():
         scene.mesh(segments=5.5)
     with pytest.raises(rb.SceneError, match="body.dents a dent reaches the bottom"):
         scene.with_values({"body.dents.scale": 0.9}).mesh()
+
+
+BOX_FACES = np.array(
+    [[0, 2, 3], [0, 3, 1], [4, 5, 7], [4, 7, 6], [0, 1, 5], [0, 5, 4]]
+    + [[2, 6, 7], [2, 7, 3], [0, 4, 6], [0, 6, 2], [1, 3, 7], [1, 7, 5]]
+)
+
+
+def box_in_mm(a, b, c):
+    """A box a × b × c mm about its centre, vertex k at (±a/2, ±b/2, ±c/2) by k's bits."""
+    return np.array([[x, y, z] for z in (-c / 2, c / 2) for y in (-b / 2, b / 2) for x in (-a / 2, a / 2)])
+
+
+POINTS = {"contact": {"model": "points", "stiffness": 20}, "simulation": {"dt": 1e-4, "duration": 0.1}}
+
+
+def test_from_mesh_gives_a_box_its_closed_form_inertia():
+    # A solid box of mass m and sides a, b, c: I = m (b² + c²) / 12 about x, and so on.
+    a, b, c, mass = 100.0, 40.0, 20.0, 0.2
+    scene = rb.Scene.from_mesh(box_in_mm(a, b, c) + [3, -5, 10], BOX_FACES, mass, units=1e-3, scene=POINTS)
+    inertia = np.array(rb.analyze(scene)["inertia"])
+    sides = np.array([a, b, c]) * 1e-3
+    expected = (
+        mass
+        / 12
+        * np.diag(
+            [sides[1] ** 2 + sides[2] ** 2, sides[0] ** 2 + sides[2] ** 2, sides[0] ** 2 + sides[1] ** 2]
+        )
+    )
+    # The divergence theorem is exact for a polyhedron: only rounding is left (1e-12 of I).
+    assert np.allclose(inertia, expected, rtol=0, atol=1e-12 * expected.max())
+
+
+def test_from_mesh_of_the_default_body_rolls_and_reverses_as_it_does():
+    body = rb.Scene.from_file(os.path.join(SCENES, "rattleback.yaml"))
+    vertices, faces = body.mesh()
+    scene = rb.Scene.from_mesh(vertices, faces, 0.059, scene=body)
+    # Its inertia: the mesh's own, computed here, to rounding.
+    _, inertia = inertia_about_cm(vertices, faces, 0.059)
+    got = np.array(rb.analyze(scene)["inertia"])
+    assert np.allclose(got, inertia, rtol=0, atol=1e-9 * np.abs(inertia).max())
+    # And it reverses within 0.01 s of the analytic body (docs/scenes.md's round-trip table:
+    # 3.1e-3 s apart at the default 192 segments).
+    run, analytic = rb.simulate(scene, duration=4), rb.simulate(body, duration=4)
+    assert abs(run.first_reversal - analytic.first_reversal) < 0.01
+    # The scene keeps its mesh through with_values and pickling (a worker process).
+    import pickle
+
+    again = pickle.loads(pickle.dumps(scene.with_values({"initial.spin": -4})))
+    assert rb.simulate(again, duration=1).spin[-1] == rb.simulate(scene, duration=1, spin=-4).spin[-1]
+    # The same mesh in mm with units=1e-3 is the same body.
+    in_mm = rb.Scene.from_mesh(vertices * 1000, faces, 0.059, units=1e-3, scene=body)
+    assert np.allclose(rb.analyze(in_mm)["inertia"], got, rtol=0, atol=1e-12 * np.abs(got).max())
+
+
+def test_from_mesh_checks_the_mesh_as_a_file_is_checked():
+    box = box_in_mm(100, 40, 20)
+
+    def refused(match, vertices=box, faces=BOX_FACES, **kw):
+        kw.setdefault("units", 1e-3)
+        with pytest.raises(rb.SceneError, match=match) as e:
+            rb.Scene.from_mesh(vertices, faces, 0.2, scene=POINTS, **kw)
+        assert e.value.file == "from_mesh"
+        return e.value
+
+    assert refused("the mesh is not closed: 3 open edges", faces=BOX_FACES[:-1]).key == "body.mesh.file"
+    refused("the mesh is inside out", faces=BOX_FACES[:, ::-1])
+    refused(r"in mm\? units.length: 0.001 makes it 0.1 m", units=1.0)
+    refused("argument faces: row 0 names vertex 8, but vertices has 8 rows", faces=BOX_FACES + 8)
+    refused(
+        "argument vertices: row 3 is not finite", vertices=np.where(np.arange(8)[:, None] == 3, np.nan, box)
+    )
+    with pytest.raises(TypeError, match=r"argument faces: takes an \(M, 3\) array of whole numbers"):
+        rb.Scene.from_mesh(box, BOX_FACES.astype(float), 0.2)
+    with pytest.raises(rb.SceneError, match="cannot be swept: write its mesh to a file"):
+        rb.sweep(
+            rb.Scene.from_mesh(box, BOX_FACES, 0.2, units=1e-3, scene=POINTS), vary={"initial.spin": [1, 2]}
+        )
