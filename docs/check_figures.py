@@ -17,6 +17,7 @@ Usage (from the repository's folder):
 import csv
 import functools
 import json
+import os
 import re
 import subprocess
 import sys
@@ -76,6 +77,23 @@ class Runs:
         with open(table, newline="") as f:
             return list(csv.DictReader(f))
 
+    @functools.lru_cache(maxsize=None)
+    def example(self, name):
+        """The lines examples/<name>.py prints, with the Python package beside the program (a
+        build tree's build/python; an installed one is on the path already)."""
+        env = dict(os.environ)
+        env["PYTHONPATH"] = os.pathsep.join(
+            p for p in (str(Path(self.binary).parents[1] / "python"), env.get("PYTHONPATH")) if p
+        )
+        return subprocess.run(
+            [sys.executable, f"examples/{name}.py"],
+            cwd=ROOT,
+            capture_output=True,
+            text=True,
+            check=True,
+            env=env,
+        ).stdout.splitlines()
+
     def row(self, name, **axes):
         """The sweep's row whose axes have these values (keys with dots as __: contact__air_drag)."""
         for row in self.sweep(name):
@@ -115,8 +133,34 @@ def principal_difference_percent(r, scene, of):
     return 100 * max(abs(x / y - 1) for x, y in zip(a, b))
 
 
+def example_reversal(r, line):
+    """The time (s) in line `line` of examples/weighted_body.py's output."""
+    return float(re.search(r"reverses at ([0-9.]+) s", r.example("weighted_body")[line]).group(1))
+
+
 # (page, phrase with «numbers», one function of the runs a number)
 CLAIMS = [
+    (
+        "docs/your-own-body.md",
+        "The fit's RMS distance is «0.0023» % of the body's length here",
+        [lambda r: 100 * r.analyze("printed")["fitted_bottom"]["rms_fraction"]],
+    ),
+    (
+        "docs/your-own-body.md",
+        "The printed body prefers «ccw» (counter-clockwise seen from above); spun clockwise at 5 "
+        "rad/s it is forecast to reverse at «2.25» s and, run, reverses at «2.3175» s",
+        [
+            lambda r: r.analyze("printed")["preferred"],
+            lambda r: r.analyze("printed")["predicted_first_reversal"]["time_s"],
+            lambda r: r.simulate("printed")["first_reversal_s"],
+        ],
+    ),
+    (
+        "docs/your-own-body.md",
+        "as printed spun -5 rad/s: preferred ccw, reverses at «2.32» s as printed spun +5 rad/s: "
+        "preferred ccw, no reversal with the nut spun -5 rad/s: preferred ccw, reverses at «1.86» s",
+        [lambda r: example_reversal(r, 0), lambda r: example_reversal(r, 2)],
+    ),
     (
         "docs/scenes.md",
         "read back as a mesh body (`units.length: 0.001`); its inertia within «0.33» % of the "
@@ -443,7 +487,10 @@ CLAIMS = [
 # Scenes the pages show as a shipped scene's (page, the heading the ```yaml block follows, the
 # scene file): the block must be that file's scene, key for key and value for value (comments and
 # layout aside), so that the figures quoted beside it are its figures.
-SCENES = [("README.md", "## Scene files", "scenes/rattleback.yaml")]
+SCENES = [
+    ("README.md", "## Scene files", "scenes/rattleback.yaml"),
+    ("docs/your-own-body.md", "## A scene for the mesh", "scenes/printed.yaml"),
+]
 
 
 def numbers_as_floats(value):

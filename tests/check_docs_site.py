@@ -146,7 +146,8 @@ def main(argv):
     with tempfile.TemporaryDirectory() as scratch:
         site = Path(scratch) / "site"
         built = subprocess.run(
-            ["mkdocs", "build", "--strict", "-q", "-f", str(source / "mkdocs.yml"), "-d", str(site)]
+            ["mkdocs", "build", "--strict", "-q", "-f", str(source / "mkdocs.yml"), "-d", str(site)],
+            cwd=source,  # where pymdownx.snippets finds the files a page includes (mkdocs.yml)
         )
         if built.returncode != 0:
             print("FAIL: mkdocs build --strict failed")

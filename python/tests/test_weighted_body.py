@@ -1,0 +1,57 @@
+"""examples/weighted_body.py's with_weight (docs/your-own-body.md "Add a weight"): a body and a
+weight given as body.mass, body.center_of_mass and body.inertia are the same body as one mesh
+holding both solids at one density, whose mass properties the library computes exactly."""
+
+import importlib.util
+import os
+
+import numpy as np
+
+import rattleback as rb
+
+ROOT = os.path.join(os.path.dirname(__file__), "..", "..")
+
+
+def example():
+    spec = importlib.util.spec_from_file_location(
+        "weighted_body", os.path.join(ROOT, "examples", "weighted_body.py")
+    )
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def cube(centre, side):
+    """A cube's 8 corners and 12 triangles, counter-clockwise seen from outside."""
+    corners = np.array([[x, y, z] for z in (-1, 1) for y in (-1, 1) for x in (-1, 1)]) * side / 2
+    faces = [[0, 2, 3], [0, 3, 1], [4, 5, 7], [4, 7, 6], [0, 1, 5], [0, 5, 4]]
+    faces += [[2, 6, 7], [2, 7, 3], [0, 4, 6], [0, 6, 2], [1, 3, 7], [1, 7, 5]]
+    return corners + centre, np.array(faces)
+
+
+def test_a_weight_added_by_parallel_axes_is_the_body_and_weight_as_one_solid():
+    printed = rb.Scene.from_file(os.path.join(ROOT, "scenes", "printed.yaml"))
+    vertices, faces = printed.mesh()  # metres
+    a, b, c = (vertices[faces[:, k]] for k in range(3))
+    volume = np.einsum("ij,ij->i", a, np.cross(b, c)).sum() / 6
+    density = 0.059 / volume
+    # A 6 mm cube of the body's own material on its top, 70 mm out: its mass and its own
+    # inertia (m s²/6 about each axis through its CM) are the weight's.
+    side, at_mm = 6.0, np.array([0.0, 70.0, 8.0])
+    weight = density * (side * 1e-3) ** 3
+    own = weight * (side * 1e-3) ** 2 / 6 * np.eye(3)
+    cube_vertices, cube_faces = cube(at_mm * 1e-3, side * 1e-3)
+    both = rb.Scene.from_mesh(
+        np.vstack([vertices, cube_vertices]),
+        np.vstack([faces, cube_faces + len(vertices)]),
+        0.059 + weight,
+        scene=printed,
+    )
+    exact = rb.analyze(both)
+    added = rb.analyze(example().with_weight(printed, weight, at_mm, own))
+    assert abs(added["mass"] - exact["mass"]) <= 1e-15
+    # Both are sums of the same exact integrals, taken in two orders: rounding only (1e-9 of
+    # the largest moment; the CM to 1e-12 m).
+    assert np.allclose(added["com"], exact["com"], rtol=0, atol=1e-12)
+    scale = np.abs(exact["inertia"]).max()
+    assert np.allclose(added["inertia"], exact["inertia"], rtol=0, atol=1e-9 * scale)
