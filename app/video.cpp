@@ -118,7 +118,8 @@ int renderCommand(const RenderArgs& args) {
                        f.spin,
                        {},
                        tasks::madeFrom(loaded->scene),
-                       tasks::listedFrame(loaded->scene, loaded->model)});
+                       tasks::listedFrame(loaded->scene, loaded->model),
+                       loaded->scene.video.view});
   record(entries);
   if (!args.quiet) printVideos(result);
   return kOk;

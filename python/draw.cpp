@@ -145,7 +145,8 @@ py::tuple renderVideos(const LoadedScene& loaded, const std::string& output, boo
                        f.spin,
                        {},
                        tasks::madeFrom(loaded.value.scene),
-                       tasks::listedFrame(loaded.value.scene, loaded.value.model)});
+                       tasks::listedFrame(loaded.value.scene, loaded.value.model),
+                       loaded.value.scene.video.view});
   (void)tasks::recordOutputs(entries);  // as the command line lists them
   py::list files;
   for (const media::VideoFile& f : result.files) {

@@ -27,6 +27,7 @@ nlohmann::json toJson(const OutputEntry& e) {
   j["t"] = e.t ? nlohmann::json(*e.t) : nlohmann::json(nullptr);
   if (!e.made_from.empty()) j["made_from"] = e.made_from;
   if (e.frame_m) j["frame_m"] = *e.frame_m;
+  if (!e.view.empty()) j["view"] = e.view;
   return j;
 }
 
@@ -44,6 +45,7 @@ std::optional<OutputEntry> fromJson(const nlohmann::json& j) {
   if (j.contains("made_from") && j["made_from"].is_string())
     e.made_from = j["made_from"].get<std::string>();
   if (j.contains("frame_m") && j["frame_m"].is_number()) e.frame_m = j["frame_m"].get<double>();
+  if (j.contains("view") && j["view"].is_string()) e.view = j["view"].get<std::string>();
   return e;
 }
 

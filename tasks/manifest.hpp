@@ -42,6 +42,9 @@ struct OutputEntry {
   /// m: the length of body a still or video was framed for (video.frame, --frame); none where
   /// it was framed for its own. The report's player of the scene frames its views the same.
   std::optional<double> frame_m = {};
+  /// A video's view (oblique, above, …): a still is its poster only when drawn from the same
+  /// view. "" when not known (a manifest written before videos had it).
+  std::string view = {};
 };
 
 inline constexpr const char* kManifestName = "rattleback-manifest.json";

@@ -2870,10 +2870,11 @@ TEST(Report, TheTheoryIsOfTheRunsOwnBodyAndSpin) {
   EXPECT_EQ(html.find(bases), std::string::npos) << bases;
 }
 
-// A video's poster is the still at t = 0 spun as it was, per the manifest: a new user's lone
-// video took a still at t = 2.1 (named <scene>-oblique.png) as its poster, by the name-based
-// fallback meant only for files the manifest does not list. That still is shown as a still; a
-// still at t = 0 is the poster; and unlisted files are still placed by their names.
+// A video's poster is the still at t = 0 spun as it was and from its view, per the manifest: a
+// new user's lone video took a still at t = 2.1 (named <scene>-oblique.png) as its poster, by
+// the name-based fallback meant only for files the manifest does not list, and a teacher's
+// video from the side took a still from above. The first is shown as a still; a still at t = 0
+// from the video's view is the poster; and unlisted files are still placed by their names.
 TEST(Cli, AStillIsAPosterOnlyWhenTheManifestSaysItIsOne) {
   const fs::path dir = emptyDir("poster");
   const std::string s = scene("rattleback");
@@ -2891,8 +2892,13 @@ TEST(Cli, AStillIsAPosterOnlyWhenTheManifestSaysItIsOne) {
   EXPECT_EQ(html.find("poster="), std::string::npos) << html;
   EXPECT_NE(html.find("src=\"rattleback-oblique.png\""), std::string::npos);  // as a still
 
-  ASSERT_EQ(rattleback("still " + s + " --view above --size 64x48 -q -o " + in("first.png")).status,
+  // At t = 0 but from above, over a video from the scene's oblique view: no poster (the picture
+  // would jump at play). From the video's view it is the poster.
+  ASSERT_EQ(rattleback("still " + s + " --view above --size 64x48 -q -o " + in("above.png")).status,
             0);
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  EXPECT_EQ(readText(dir / "index.html").find("poster="), std::string::npos);
+  ASSERT_EQ(rattleback("still " + s + " --size 64x48 -q -o " + in("first.png")).status, 0);
   ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
   html = readText(dir / "index.html");
   EXPECT_NE(html.find("src=\"rattleback-24.mp4\" muted loop playsinline controls "

@@ -13,10 +13,14 @@
 namespace tasks::report {
 namespace {
 
-// The spins of a manifest's videos, by scene: which stills are their posters.
+// A manifest's videos, by scene and spin: which stills are their posters.
+struct ListedVideo {
+  std::string role;
+  std::string view;  // "" when the manifest does not say
+};
 struct ListedSpins {
-  std::map<std::string, std::map<double, std::string>> paired;  // scene → spin → role
-  std::map<std::string, std::set<double>> single;               // scene → spins of lone videos
+  std::map<std::string, std::map<double, ListedVideo>> paired;  // scene → spin → video
+  std::map<std::string, std::map<double, std::string>> single;  // scene → lone videos' views
 };
 
 ListedSpins spinsOf(const std::vector<OutputEntry>& entries) {
@@ -24,11 +28,17 @@ ListedSpins spinsOf(const std::vector<OutputEntry>& entries) {
   for (const OutputEntry& e : entries) {
     if (e.kind != OutputKind::Video || !e.spin) continue;
     if (e.role == "single")
-      spins.single[e.scene].insert(*e.spin);
+      spins.single[e.scene][*e.spin] = e.view;
     else if (e.role != "both")
-      spins.paired[e.scene][*e.spin] = e.role;
+      spins.paired[e.scene][*e.spin] = {e.role, e.view};
   }
   return spins;
+}
+
+// A still is a video's poster when it shows the video's first frame: at t = 0, spun as the video
+// is, from the video's view (a poster from above over a video from the side jumps at play).
+bool posterOf(const OutputEntry& still, const std::string& video_view) {
+  return still.t && *still.t == 0 && still.spin && (video_view.empty() || video_view == still.role);
 }
 
 // What is placed as the manifest lists it, and what is left to place by name.
@@ -40,7 +50,7 @@ struct Listing {
 // The slot of the page a manifest entry fills: the suffix a file of that role has when named
 // as scripts/run.sh names it. Videos' spins say which stills are their posters.
 std::optional<std::string> slotOf(const OutputEntry& e,
-                                  const std::map<double, std::string>& video_spins) {
+                                  const std::map<double, ListedVideo>& video_spins) {
   switch (e.kind) {
     case OutputKind::Video:
       if (e.role == "preferred" || e.role == "reversed" || e.role == "ccw" || e.role == "cw" ||
@@ -48,8 +58,8 @@ std::optional<std::string> slotOf(const OutputEntry& e,
         return "-" + e.role + ".mp4";
       return ".mp4";
     case OutputKind::Still:
-      if (e.t && *e.t == 0 && e.spin && video_spins.count(*e.spin))
-        return "-" + video_spins.at(*e.spin) + ".png";
+      if (e.spin && video_spins.count(*e.spin) && posterOf(e, video_spins.at(*e.spin).view))
+        return "-" + video_spins.at(*e.spin).role + ".png";
       return "-" + e.role + ".png";
     case OutputKind::Plot:
       return "-" + e.role + ".png";
@@ -82,9 +92,9 @@ void placeEntry(const fs::path& dir, const OutputEntry& e, ListedSpins& spins, F
     if (fs::is_regular_file(dir / (e.file + ".json"), ec)) listing.placed.insert(e.file + ".json");
     return;
   }
-  // A lone video's poster: a still at t = 0 spun as it was (whatever its view).
-  if (e.kind == OutputKind::Still && e.t && *e.t == 0 && e.spin &&
-      spins.single[e.scene].count(*e.spin)) {
+  // A lone video's poster.
+  if (e.kind == OutputKind::Still && e.spin && spins.single[e.scene].count(*e.spin) &&
+      posterOf(e, spins.single[e.scene].at(*e.spin))) {
     SceneFiles& f = folder.scenes[e.scene];
     if (!f.has("-single.png")) f.by_suffix["-single.png"] = e.file;
   }
