@@ -141,6 +141,15 @@ def example_reversal(r, line):
 # (page, phrase with «numbers», one function of the runs a number)
 CLAIMS = [
     (
+        "docs/python.md",
+        '>>> a["predicted_first_reversal"]["time_s"], a["predicted_first_reversal"]["range"] '
+        "(«2.260373781215751», '«beyond»')",
+        [
+            lambda r: r.analyze("rattleback")["predicted_first_reversal"]["time_s"],
+            lambda r: r.analyze("rattleback")["predicted_first_reversal"]["range"],
+        ],
+    ),
+    (
         "docs/your-own-body.md",
         "The fit's RMS distance is «0.0023» % of the body's length here",
         [lambda r: 100 * r.analyze("printed")["fitted_bottom"]["rms_fraction"]],

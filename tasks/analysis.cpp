@@ -245,14 +245,19 @@ Analysis analyze(const sim::Model& model, const std::optional<double>& spin) {
   a.stability = sim::contactStability(model);
   if (model.contact.model == sim::ContactModel::Auto && !sim::isAdaptive(model.integrator))
     a.auto_smooth_step = std::min(sim::smoothStep(model), model.dt);
-  // The theory linearises rolling on the smooth bottom: a mesh body's fitted one (§P11.4).
-  a.theory = !a.mesh || a.fit.usable();
+  a.theory = hasTheory(model);
   if (a.theory) analyzeTheory(model, a);
   return a;
 }
 
+bool hasTheory(const sim::Model& model) {
+  // The theory linearises rolling on the smooth bottom: a mesh body's fitted one (§P11.4).
+  const sim::Surface& surface = model.body->surface;
+  return surface.kind != sim::Surface::Kind::Mesh || surface.mesh.fit.usable();
+}
+
 std::optional<double> forecastReversal(const sim::Model& model) {
-  if (model.body->surface.kind == sim::Surface::Kind::Mesh || model.initial.spin == 0) return {};
+  if (!hasTheory(model) || model.initial.spin == 0) return {};
   const sim::ReversalForecast forecast =
       sim::forecastFirstReversal(model, analysisSpin(model, std::nullopt), model.duration);
   if (!forecast.applies || forecast.range == sim::ForecastRange::Outside) return {};

@@ -127,10 +127,15 @@ struct Analysis {
 /// The analysis of `model` at `spin` rad/s when given, else as analysisSpin chooses.
 Analysis analyze(const sim::Model& model, const std::optional<double>& spin);
 
+/// Whether the linearised theory applies to the body: a smooth body, or a mesh body whose bottom
+/// a quadric fits (docs/physics.md §P11.4). `analyze`'s theory and a sweep's forecast_s ask it.
+bool hasTheory(const sim::Model& model);
+
 /// The first reversal `analyze` forecasts for the scene as it is (its "first reversal" line,
 /// docs/physics.md P8.5), s; none where that line gives no time: a scene not spun, a body that
-/// cannot stand or has no smooth bottom (a mesh), a spin outside the averaged theory's range, or
-/// no reversal within the run. The theory alone: no run is integrated (a sweep's forecast_s).
+/// cannot stand or has no smooth bottom (a mesh no quadric fits), a spin outside the averaged
+/// theory's range, or no reversal within the run. The theory alone: no run is integrated (a
+/// sweep's forecast_s).
 std::optional<double> forecastReversal(const sim::Model& model);
 
 /// The analysis as one JSON value (docs/commands.md "rattleback analyze").

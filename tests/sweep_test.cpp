@@ -1010,3 +1010,24 @@ TEST(Sweep, TheForecastColumnIsAnalyzesForecast) {
   }
   EXPECT_EQ(forecast, 3) << "−5 and −2 rad/s with the dents as shipped, +5 with them mirrored";
 }
+
+// A mesh body whose bottom a quadric fits has analyze's theory (§P11.4), so its forecast too: the
+// sweep's column left every mesh body's empty while analyze gave it.
+TEST(Sweep, AMeshBodysForecastIsAnalyzes) {
+  const fs::path dir = scratch();
+  const std::string printed = std::string(RATTLEBACK_SOURCE_DIR) + "/scenes/printed.yaml";
+  const fs::path sweep = writeSweep(
+      dir, "base: " + printed + "\nvary:\n  initial.spin: [-5, 5]\ncolumns: [forecast_s]\n");
+  const Outcome r =
+      rattleback(dir, "sweep " + sweep.string() + " -q -o " + (dir / "t.csv").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = readCsv(slurp(dir / "t.csv"));
+  ASSERT_EQ(rows.size(), 3u);
+  const Outcome a = rattleback(dir, "analyze " + printed + " --json");
+  ASSERT_EQ(a.status, 0) << a.err;
+  const auto time = nlohmann::json::parse(a.out)["predicted_first_reversal"]["time_s"];
+  ASSERT_TRUE(time.is_number()) << a.out;
+  ASSERT_NE(rows[1][at(rows, "forecast_s")], "");
+  EXPECT_EQ(std::stod(rows[1][at(rows, "forecast_s")]), time.get<double>());
+  EXPECT_EQ(rows[2][at(rows, "forecast_s")], "") << "spun the preferred way: none within the run";
+}

@@ -22,13 +22,33 @@ import warnings as _warnings
 from collections.abc import Mapping as _Mapping
 from typing import Any, Mapping, Optional, Sequence, Union
 
-import numpy as _np
+try:
+    import numpy as _np
+except ImportError:  # a Python of its own (pyenv, a venv) without NumPy: say which and how
+    import sys as _sys
+
+    raise ImportError(
+        f"rattleback needs NumPy, which {_sys.executable} does not have: `python3 -m pip install "
+        "numpy` for it, or use Debian's /usr/bin/python3 (python3-numpy)"
+    ) from None
 
 try:
     from . import _core
 except ImportError:  # the package's files laid out (at configure time), its modules not built
     _here = _os.path.dirname(_os.path.abspath(__file__))
-    if any(name.startswith("_core.") and not name.endswith(".pyi") for name in _os.listdir(_here)):
+    _built = [n for n in _os.listdir(_here) if n.startswith("_core.") and not n.endswith(".pyi")]
+    import sys as _sys
+    import sysconfig as _sysconfig
+
+    _suffix = _sysconfig.get_config_var("EXT_SUFFIX") or ""
+    if _built and not any(n.endswith(_suffix) for n in _built):
+        # Built for another Python (Debian's 3.11) than this one (a pyenv 3.12, a conda env).
+        raise ImportError(
+            f"rattleback's compiled modules in {_here} are built for another Python "
+            f"({', '.join(_built)}), not {_sys.executable} (which needs *{_suffix}): run it with "
+            "the Python they were built for (/usr/bin/python3 for the .deb and scripts/build.sh)"
+        ) from None
+    if _built:
         raise
     raise ImportError(
         f"rattleback's compiled modules are not built in {_here}: build them with "
