@@ -8,6 +8,7 @@
 #include <cmath>
 #include <memory>
 
+#include "kane_levinson.hpp"
 #include "mesh_shapes.hpp"
 #include "scene/loader.hpp"
 #include "sim/analysis.hpp"
@@ -20,32 +21,17 @@ namespace {
 using mesh_shapes::icosphere;
 
 // Kane & Levinson's body (scenes/kane-levinson.yaml): semi-axes 3, 20, 2 cm, the CM 1 cm below
-// the centre, their inertia; here spun the way it reverses (+5 rad/s), without drag, and only as
-// long as the first reversal takes.
-const char* kKaneLevinson = R"(
-units: {length: 1.0}
-body:
-  shape: ellipsoid
-  ellipsoid: {semi_axes: [0.03, 0.20, 0.02], center: [0.0, 0.0, 0.01]}
-  inertia: [[1.6e-3, -2.0e-5, 0.0], [-2.0e-5, 2.0e-4, 0.0], [0.0, 0.0, 1.7e-3]]
-  mass: 1.0
-contact: {model: rolling, air_drag: 0.0}
-gravity: 9.81
-initial: {spin: 5.0, tilt: [0.5, 0.5]}
-simulation: {tolerance: 1.0e-9, duration: 3.5}
-)";
-const Eigen::Vector3d kSemiAxes(0.03, 0.20, 0.02);
-
-sim::SceneSpec parse(const std::string& yaml) {
-  auto loaded = scene::loadString(yaml, "inline.yaml");
-  if (!loaded) ADD_FAILURE() << loaded.error().text();
-  return loaded ? loaded->spec : sim::SceneSpec{};
+// the centre, their inertia; spun the way it reverses (+5 rad/s), without drag, here on dopri5
+// and only as long as the first reversal takes.
+sim::SceneSpec kaneLevinsonToItsReversal() {
+  return testing_support::kaneLevinson({{"simulation", "{tolerance: 1.0e-9, duration: 3.5}"}});
 }
+const Eigen::Vector3d kSemiAxes(0.03, 0.20, 0.02);
 
 // The same scene with its body an inscribed mesh of the ellipsoid (icosphere of `levels`), the
 // ellipsoid's centre at the mesh's origin, and the scene's CM and inertia (a weighted toy).
 sim::SceneSpec meshScene(int levels, const std::string& model = "rolling") {
-  sim::SceneSpec spec = parse(kKaneLevinson);
+  sim::SceneSpec spec = kaneLevinsonToItsReversal();
   spec.contact.model = model;
   spec.body.shape = "mesh";
   spec.body.mesh.file = "ellipsoid.stl";
@@ -152,7 +138,7 @@ double firstReversal(const sim::SceneSpec& spec) {
 // table): 4.6e-2, 4.8e-2, 1.7e-4, 4.1e-5, 3.4e-5, 8.1e-6 s at 2 … 7 splits (the coarse ones
 // count a later crossing of n = 0 as the reversal, P7).
 TEST(BottomFit, AMeshOfKaneAndLevinsonsEllipsoidReversesAsTheEllipsoidDoes) {
-  const double exact = firstReversal(parse(kKaneLevinson));
+  const double exact = firstReversal(kaneLevinsonToItsReversal());
   const double at4 = std::abs(firstReversal(meshScene(4)) - exact);
   const double at6 = std::abs(firstReversal(meshScene(6)) - exact);
   EXPECT_LT(at4, 1e-3);       // 5,120 triangles: 0.2 ms of 2.8 s
@@ -199,7 +185,7 @@ TEST(BottomFit, ABottomThatIsNoSmoothBowlIsRefusedForTheSmoothModels) {
 // pitch frequencies and the first-order growth rates of Kane & Levinson's ellipsoid to within
 // the fit's error (the radii's 1e-3 moves the frequencies by about half that).
 TEST(BottomFit, AMeshBodysTheoryIsTheEllipsoidsItWasMadeFrom) {
-  auto analytic_model = sim::compile(parse(kKaneLevinson));
+  auto analytic_model = sim::compile(kaneLevinsonToItsReversal());
   auto mesh_model = sim::compile(meshScene(6));
   ASSERT_TRUE(analytic_model && mesh_model);
   const sim::Model& analytic = analytic_model.value();

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "kane_levinson.hpp"
 #include "media/spin_history.hpp"
 #include "sim/crossing.hpp"
 #include "support.hpp"
@@ -15,17 +16,10 @@ using namespace testing_support;
 
 namespace {
 
-/// Kane & Levinson's ellipsoid (scenes/kane-levinson.yaml) without air drag.
-const char* kKaneLevinson = R"(
-body:
-  shape: ellipsoid
-  ellipsoid: {semi_axes: [0.03, 0.20, 0.02], center: [0.0, 0.0, 0.01]}
-  inertia: [[1.6e-3, -2.0e-5, 0.0], [-2.0e-5, 2.0e-4, 0.0], [0.0, 0.0, 1.7e-3]]
-  mass: 1.0
-contact: {model: rolling, air_drag: 0.0}
-initial: {spin: 5.0, tilt: [0.5, 0.5]}
-simulation: {integrator: rk4, dt: 1.0e-4, duration: 60.0}
-)";
+/// Kane & Levinson's ellipsoid (scenes/kane-levinson.yaml, without air drag) for 60 s.
+sim::SceneSpec kaneLevinsonSixtySeconds() {
+  return kaneLevinson({{"contact.air_drag", "0.0"}, {"simulation.duration", "60.0"}});
+}
 
 sim::Model withStep(sim::SceneSpec spec, const std::string& integrator, double dt) {
   spec.simulation.integrator = integrator;
@@ -184,7 +178,7 @@ TEST(Adaptive, ARollingBodysPlaceOnTheFloorMovesWithoutSlipping) {
 // most about N · tolerance. Measured over 60 s: 2.2e-6 at 1e-8 (34947 steps, budget 3.5e-4)
 // and 2.1e-8 at 1e-10 (86196 steps, budget 8.6e-6).
 TEST(Adaptive, RollingEnergyOverSixtySecondsStaysWithinTheToleranceBudget) {
-  const sim::SceneSpec spec = parse(kKaneLevinson);
+  const sim::SceneSpec spec = kaneLevinsonSixtySeconds();
   for (double tol : {1e-8, 1e-10}) {
     const sim::Model model = withTolerance(spec, tol);
     double worst = 0, e0 = 0;
@@ -206,7 +200,7 @@ TEST(Adaptive, RollingEnergyOverSixtySecondsStaysWithinTheToleranceBudget) {
 // spin lingers close to zero and small errors move it; runs at tolerance 1e-9 already differ
 // there by 3 ms).
 TEST(Adaptive, KaneLevinsonWithoutDragReversesFourTimesInSixtySeconds) {
-  const sim::SceneSpec spec = parse(kKaneLevinson);
+  const sim::SceneSpec spec = kaneLevinsonSixtySeconds();
   sim::Rollout fixed(withStep(spec, "rk4", 1e-4));
   sim::Rollout adaptive(withTolerance(spec, 1e-12));
   fixed.advanceTo(60);
@@ -225,7 +219,7 @@ TEST(Adaptive, KaneLevinsonWithoutDragReversesFourTimesInSixtySeconds) {
 // below 1e-7. Reversals: four at every step, each the same within 1e-5 s (measured: ≤ 2.1e-6 s
 // on the fourth, 1e-9 s on the first).
 TEST(LongRuns, FixedStepsKeepTheEnergyAndAgreeOnEveryReversal) {
-  const sim::SceneSpec spec = parse(kKaneLevinson);
+  const sim::SceneSpec spec = kaneLevinsonSixtySeconds();
   std::vector<double> drift;
   std::vector<std::vector<double>> reversals;
   for (double dt : {2e-4, 1e-4, 5e-5}) {
