@@ -282,10 +282,18 @@ void defineExport(CLI::App& c, Cli& cli) {
   ExportArgs& e = cli.export_args;
   sceneOption(c, e.scene);
   c.add_option("-o,--output", e.output, "Binary STL file (default out/<scene>.stl)");
+  std::vector<std::string> names;
+  std::string listed, lengths;
+  for (std::size_t i = 0; i < kExportUnits.size(); ++i) {
+    const char* joiner = i == 0 ? "" : i + 1 == kExportUnits.size() ? " or " : ", ";
+    names.emplace_back(kExportUnits[i].name);
+    listed += joiner + names.back();
+    lengths += joiner + std::string(kExportUnits[i].length);
+  }
   c.add_option("--units", e.units,
-               "The file's unit: mm (default; what slicers assume), cm or m. Read it back with "
-               "units.length 0.001, 0.01 or 1")
-      ->check(CLI::IsMember({"mm", "cm", "m"}));
+               "The file's unit: " + listed +
+                   " (default mm, what slicers assume). Read it back with units.length " + lengths)
+      ->check(CLI::IsMember(names));
   c.add_option(
        "--segments", e.segments,
        "Segments around the body: finer is smoother and larger (default " +

@@ -1,6 +1,7 @@
 // The subcommands of `rattleback`. Each returns the process exit status.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -116,12 +117,22 @@ struct BenchArgs {
 /// Speed against error: prints a table, writes CSV and a log–log plot.
 int benchCommand(const BenchArgs& args);
 
+/// The units export writes (--units): each by name, with the metres it stands for and the
+/// units.length that reads the file back. The option's choices and help are made from it.
+struct ExportUnit {
+  const char* name;
+  double metres;
+  const char* length;
+};
+inline constexpr std::array<ExportUnit, 3> kExportUnits{
+    {{"mm", 1e-3, "0.001"}, {"cm", 1e-2, "0.01"}, {"m", 1.0, "1"}}};
+
 struct ExportArgs {
   std::string scene;
-  std::string output;        ///< .stl path; empty: out/<scene name>.stl
-  std::string units = "mm";  ///< mm | cm | m: the numbers the file holds
-  int segments = 192;        ///< around the body (sim/tessellate.hpp)
-  Overrides overrides;       ///< --set's values
+  std::string output;                    ///< .stl path; empty: out/<scene name>.stl
+  std::string units = "mm";              ///< one of kExportUnits: the numbers the file holds
+  int segments = sim::kDefaultSegments;  ///< around the body (sim/tessellate.hpp)
+  Overrides overrides;                   ///< --set's values
   bool quiet = false;
 };
 /// Writes the scene's body as a binary STL, closed and wound outwards.

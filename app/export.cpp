@@ -15,9 +15,11 @@
 namespace app {
 namespace {
 
-// Metres per unit of the file: what units.length must say to read it back.
-double metresPer(const std::string& units) {
-  return units == "mm" ? 1e-3 : units == "cm" ? 1e-2 : 1.0;
+// The unit by its name (the option has checked it is one of them).
+const ExportUnit& unitNamed(const std::string& name) {
+  for (const ExportUnit& unit : kExportUnits)
+    if (unit.name == name) return unit;
+  return kExportUnits.back();
 }
 
 std::string defaultOutput(const std::string& scene) {
@@ -48,15 +50,11 @@ int exportCommand(const ExportArgs& args) {
       problem && problem->fault != sim::MeshFault::WrongSize)
     return fail(rb::Status::fail("rattleback export made a mesh that fails its own check (" +
                                  problem->message + "): please report it with the scene"));
-  const double per = metresPer(args.units);
+  const ExportUnit& unit = unitNamed(args.units);
   const std::string bytes = scene::binaryStl(
-      mesh, 1.0 / per,
+      mesh, 1.0 / unit.metres,
       "rattleback export of " + std::filesystem::path(args.scene).filename().string() +
-          "; units: " + args.units + " (units.length: " +
-          (args.units == "mm"   ? "0.001"
-           : args.units == "cm" ? "0.01"
-                                : "1") +
-          ")");
+          "; units: " + args.units + " (units.length: " + unit.length + ")");
   if (auto made = tasks::makeParentFolder(output); !made) return fail(made);
   auto file = tasks::AtomicOutput::open(output);
   if (!file) return fail(file);
@@ -66,8 +64,8 @@ int exportCommand(const ExportArgs& args) {
     const sim::MeshMoments m = sim::meshMoments(mesh);
     std::printf(
         "wrote %s: %zu triangles, %.4g cm³, binary STL in %s (read it back with "
-        "body.shape: mesh, units.length: %g)\n",
-        output.c_str(), mesh.faces.size(), m.volume * 1e6, args.units.c_str(), per);
+        "body.shape: mesh, units.length: %s)\n",
+        output.c_str(), mesh.faces.size(), m.volume * 1e6, args.units.c_str(), unit.length);
   }
   return kOk;
 }
