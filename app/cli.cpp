@@ -127,6 +127,11 @@ void backendOption(CLI::App& c, std::string& backend, std::string& from, const c
 // The video's options, which a still takes too (they change a frame's inset).
 void videoOptions(CLI::App& c, Overrides& o) {
   keyOption(c, o, tasks::SceneOption::View, names<render::View>());
+  keyOption(c, o, tasks::SceneOption::Surface,
+            names<render::Surface>() +
+                ": the body's surface points, or its closed surface as shaded triangles; red "
+                "where it faces up, blue where it faces down (default: the scene's "
+                "video.surface, or points)");
   keyOption(c, o, tasks::SceneOption::Size);
   keyOption(c, o, tasks::SceneOption::Frame);
   keyOption(c, o, tasks::SceneOption::Fps);

@@ -5,6 +5,8 @@
 #include <cstdio>
 
 #include "sim/rollout.hpp"
+#include "sim/tessellate.hpp"
+#include "tasks/body_mesh.hpp"
 #include "tasks/drawn_points.hpp"
 
 namespace media {
@@ -18,6 +20,22 @@ render::BodyPoints bodyPointsOf(const sim::Model& model) {
   points.radius = drawn.radius;
   points.footprint_half = drawn.footprint_half;
   return points;
+}
+
+rb::Result<render::BodyTriangles> bodyTrianglesOf(const tasks::LoadedScene& loaded,
+                                                  render::Surface surface) {
+  render::BodyTriangles triangles;
+  if (surface != render::Surface::Triangles) return triangles;
+  // export's default: 24,192 triangles for the default body, its facets a few pixels across in
+  // a 720p frame (the shape reads smooth; a mesh body's own facets show as they are).
+  auto mesh = tasks::bodyMesh(loaded, sim::kDefaultSegments);
+  if (!mesh) return mesh.error();
+  const Eigen::Vector3d com = loaded.model.body->com_geometric;
+  triangles.vertices.reserve(mesh.value().vertices.size());
+  for (const Eigen::Vector3d& v : mesh.value().vertices)
+    triangles.vertices.push_back((v - com).cast<float>());
+  triangles.faces = std::move(mesh.value().faces);
+  return triangles;
 }
 
 render::FrameInput frameOf(const sim::Telemetry& t) {

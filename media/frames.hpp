@@ -9,12 +9,20 @@
 #include "render/frame.hpp"
 #include "sim/model.hpp"
 #include "sim/telemetry.hpp"
+#include "tasks/scene_args.hpp"
+#include "util/result.hpp"
 
 namespace media {
 
 /// The surface points to draw, thinned to about 2500 on fine grids (see frames.cpp).
 render::BodyPoints bodyPointsOf(const sim::Model& model);
 render::FrameInput frameOf(const sim::Telemetry& t);
+
+/// The triangles to draw when `surface` asks for them (none otherwise): the scene's body as
+/// `export` makes it at its default resolution (tasks::bodyMesh), moved to the body frame about
+/// the CM, as the points are.
+rb::Result<render::BodyTriangles> bodyTrianglesOf(const tasks::LoadedScene& loaded,
+                                                  render::Surface surface);
 
 /// What the fixed views keep in frame over a run: a sphere around the centre of mass at the
 /// start that holds every drawn point in any orientation, with a quarter more for the body's

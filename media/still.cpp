@@ -72,7 +72,9 @@ rb::Result<StillResult> renderStill(const tasks::LoadedScene& loaded, const Stil
   settings.transparent = request.transparent;
   if (request.transparent) settings.title.clear();
   const render::BodyPoints points = bodyPointsOf(model);
-  auto created = render::Renderer::create(settings, points);
+  auto triangles = bodyTrianglesOf(loaded, settings.surface);
+  if (!triangles) return triangles.error();
+  auto created = render::Renderer::create(settings, points, triangles.value());
   if (!created) return rb::machineError("still: " + created.error().text());
   result.opengl = created.value()->description();
   render::Renderer& renderer = *created.value();

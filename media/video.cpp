@@ -208,6 +208,9 @@ rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const Vide
   auto planned = planVideo(loaded.scene, model, model.duration);
   if (!planned) return planned.error();
   const VideoPlan& plan = planned.value();
+  // Before any file is begun: a body that cannot be tessellated is the scene's error.
+  const auto triangles = bodyTrianglesOf(loaded, plan.surface);
+  if (!triangles) return triangles.error();
   if (request.both && model.initial.spin == 0)
     return rb::Error{"", request.scene_name + ": " + rb::argumentName("both") +
                              " renders the spin and its reverse, which at spin 0 are the same "
@@ -274,7 +277,7 @@ rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const Vide
     for (const sim::Rollout& run : runs) {
       auto created = render::Renderer::create(
           settingsOf(plan, run.model(), request.scene_name, loaded.scene.values, request.backend),
-          points);
+          points, triangles.value());
       if (!created) return rb::machineError("render: " + created.error().text());
       if (renderers.empty()) result.opengl = created.value()->description();
       renderers.push_back(std::move(created).value());

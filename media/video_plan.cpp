@@ -35,6 +35,10 @@ rb::Result<VideoPlan> check(const scene::VideoSpec& v, const sim::Model& model, 
   if (!view)
     return rb::Error{"video.view",
                      "must be " + rb::choices<render::View>() + ", not '" + v.view + "'"};
+  const auto surface = rb::parseName<render::Surface>(v.surface);
+  if (!surface)
+    return rb::Error{"video.surface",
+                     "must be " + rb::choices<render::Surface>() + ", not '" + v.surface + "'"};
   const std::string speeds =
       " (1 real time, 0.5 slow motion, 2 twice as fast), not " + show(v.playback);
   if (!(v.playback > 0))  // and NaN
@@ -60,6 +64,7 @@ rb::Result<VideoPlan> check(const scene::VideoSpec& v, const sim::Model& model, 
   plan.width = v.size[0];
   plan.height = v.size[1];
   plan.view = *view;
+  plan.surface = *surface;
   plan.playback = v.playback;
   const double frames = std::round(duration / v.playback * v.fps);
   if (frames > 1e7)
@@ -150,6 +155,7 @@ render::RenderSettings settingsOf(const VideoPlan& plan, const sim::Model& run,
   s.duration = run.duration;
   s.spin_range = spinRange(run);
   s.frame = static_cast<float>(plan.frame);
+  s.surface = plan.surface;
   return s;
 }
 

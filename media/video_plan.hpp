@@ -24,6 +24,7 @@ struct VideoPlan {
   std::int64_t frames = 0;  ///< round(duration / playback · fps), at least 1
   /// The length of body the views are framed for, m; 0: the body's own (video.frame).
   double frame = 0;
+  render::Surface surface = render::Surface::Points;  ///< the body's points or its triangles
 
   /// Simulated time shown by frame k, s.
   double frameTime(std::int64_t k) const { return static_cast<double>(k) * playback / fps; }

@@ -16,6 +16,10 @@ namespace render {
 
 enum class View { Oblique, Above, Front, Side, Follow };
 
+/// How the body is drawn: its surface points as spheres, or its closed surface as shaded
+/// triangles (video.surface).
+enum class Surface { Points, Triangles };
+
 /// The body as the renderer sees it, body frame (origin at the CM), metres.
 struct BodyPoints {
   std::vector<Eigen::Vector3f> top;              ///< drawn red
@@ -24,6 +28,22 @@ struct BodyPoints {
   float spacing = 0.003f;                        ///< distance between neighbouring points, m
   Eigen::Vector2f footprint_half{0.01f, 0.05f};  ///< outline half extents across and along y, m
 };
+
+/// The body's closed surface as triangles, body frame (origin at the CM), metres; each face's
+/// corners counter-clockwise seen from outside, so that (b − a) × (c − a) points out of the body.
+struct BodyTriangles {
+  std::vector<Eigen::Vector3f> vertices;
+  std::vector<std::array<int, 3>> faces;
+};
+
+/// The colour rule of the triangles, the points' own (docs/physics.md §P11.3): the highest point
+/// of a vertical line through the body is where the surface faces up (red), the lowest where it
+/// faces down (blue). A face is red when its outward normal points up in the body frame, blue
+/// when it points down; a vertical face, which no vertical line crosses and so no point lies
+/// on, is red.
+inline bool facesUp(const Eigen::Vector3f& outward_normal) {
+  return outward_normal.z() >= 0;
+}
 
 /// The largest distance of a drawn sphere's edge from the CM, m: the body fits in a sphere of
 /// this radius in any orientation.
@@ -77,6 +97,8 @@ struct RenderSettings {
   /// Every sphere's fragments at their true depth, also where the spheres are small enough to
   /// be drawn as discs (under 4 px in radius; tests compare the two).
   bool exact_sphere_depth = false;
+  /// The body's points, or its triangles (then given to Renderer::create).
+  Surface surface = Surface::Points;
 };
 
 /// An RGBA image, rows top to bottom.
@@ -100,6 +122,13 @@ struct NameTable<render::View> {
       {render::View::Front, "front"},
       {render::View::Side, "side"},
       {render::View::Follow, "follow"},
+  }};
+};
+template <>
+struct NameTable<render::Surface> {
+  static constexpr std::array<std::pair<render::Surface, std::string_view>, 2> entries{{
+      {render::Surface::Points, "points"},
+      {render::Surface::Triangles, "triangles"},
   }};
 };
 template <>

@@ -47,16 +47,18 @@ Renderer::~Renderer() {
   if (flat_points_program_) gl.glDeleteProgram(flat_points_program_);
   if (floor_program_) gl.glDeleteProgram(floor_program_);
   if (shadow_program_) gl.glDeleteProgram(shadow_program_);
+  triangles_.destroy(gl);
 }
 
 rb::Result<std::unique_ptr<Renderer>> Renderer::create(const RenderSettings& settings,
-                                                       const BodyPoints& body) {
+                                                       const BodyPoints& body,
+                                                       const BodyTriangles& triangles) {
   std::unique_ptr<Renderer> r(new Renderer(settings, body));
-  if (std::string error = r->init(); !error.empty()) return rb::machineError(error);
+  if (std::string error = r->init(triangles); !error.empty()) return rb::machineError(error);
   return r;
 }
 
-std::string Renderer::init() {
+std::string Renderer::init(const BodyTriangles& triangles) {
   auto context = GlContext::create(settings_.backend, settings_.width, settings_.height);
   if (!context) return context.error().text();
   context_ = std::move(context).value();
@@ -142,6 +144,9 @@ std::string Renderer::init() {
   const bool complete = makeFramebuffer(gl, settings_.width, settings_.height, cache_);
   gl.glBindFramebuffer(GL_FRAMEBUFFER, context_->framebuffer());
   if (!complete) return "the floor's framebuffer object is incomplete";
+
+  if (settings_.surface == Surface::Triangles)
+    if (std::string e = triangles_.init(gl, triangles); !e.empty()) return e;
 
   gl.glEnable(GL_DEPTH_TEST);
   gl.glEnable(GL_PROGRAM_POINT_SIZE);
@@ -307,6 +312,15 @@ Renderer::PixelRect Renderer::drawnRect(const Camera& camera, const FrameInput& 
                                 (corner & 4 ? high_ : low_).z());
     if (!add(rotation * local + position, sprite_px)) return whole;
   }
+  // The triangles reach the surface itself, beyond the sphere centres: their own box too.
+  if (settings_.surface == Surface::Triangles)
+    for (int corner = 0; corner < 8; ++corner) {
+      const Eigen::Vector3f& low = triangles_.low();
+      const Eigen::Vector3f& high = triangles_.high();
+      const Eigen::Vector3f local((corner & 1 ? high : low).x(), (corner & 2 ? high : low).y(),
+                                  (corner & 4 ? high : low).z());
+      if (!add(rotation * local + position, 2)) return whole;
+    }
   for (const Eigen::Vector2f& c : shadowOutline(frame))
     if (!add(Eigen::Vector3f(c.x(), c.y(), 0), 2)) return whole;
   if (!(x1 - x0 < 4.0f * settings_.width && y1 - y0 < 4.0f * settings_.height)) return whole;
@@ -318,14 +332,22 @@ Renderer::PixelRect Renderer::drawnRect(const Camera& camera, const FrameInput& 
   return r;
 }
 
-void Renderer::drawPoints(const Camera& camera, const FrameInput& frame) {
+void Renderer::drawBody(const Camera& camera, const FrameInput& frame) {
   Eigen::Matrix4f model = Eigen::Matrix4f::Identity();
   model.topLeftCorner<3, 3>() = frame.orientation.cast<float>().toRotationMatrix();
   model.topRightCorner<3, 1>() = frame.position_world.cast<float>();
-  // Light from above, in front and to the left of the default camera.
+  // Light from above, in front and to the left of the default camera (the same for both
+  // drawings, so that their shading reads alike).
   const Eigen::Vector3f light_world = Eigen::Vector3f(0.3f, -0.6f, 1.0f).normalized();
   const Eigen::Vector3f light_view = camera.view.topLeftCorner<3, 3>() * light_world;
+  if (settings_.surface == Surface::Triangles)
+    triangles_.draw(context_->api(), model, camera, light_view);
+  else
+    drawPoints(camera, frame, model, light_view);
+}
 
+void Renderer::drawPoints(const Camera& camera, const FrameInput& frame,
+                          const Eigen::Matrix4f& model, const Eigen::Vector3f& light_view) {
   // Spheres under 4 px in radius (the default body's are about 1–2 px at 720p) are drawn as discs
   // at their nearest point: where two overlap, the true surfaces would meet along a curve a pixel
   // or two long. (At 720p 0.1–0.2 % of pixels differ; from 4 px up the curve shows, and each
@@ -510,7 +532,7 @@ void Renderer::draw(const FrameInput& frame, Image& out) {
     drawShadow(camera, frame, center);
     dirty_ = drawnRect(camera, frame);
   }
-  drawPoints(camera, frame);
+  drawBody(camera, frame);
   out.width = settings_.width;
   out.height = settings_.height;
   out.rgba.resize(static_cast<std::size_t>(out.width) * out.height * 4);

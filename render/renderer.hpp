@@ -12,6 +12,7 @@
 #include "render/frame.hpp"
 #include "render/gl.hpp"
 #include "render/overlay.hpp"
+#include "render/triangles.hpp"
 #include "util/result.hpp"
 
 namespace render {
@@ -27,9 +28,12 @@ float floorSquare(const Eigen::Vector3f& half_extent, bool fogged);
 class Renderer {
  public:
   /// A renderer owns an OpenGL context, made current (and put back) around each of its calls,
-  /// so several renderers can take turns on one thread; one thread at a time.
+  /// so several renderers can take turns on one thread; one thread at a time. The body is drawn
+  /// as `triangles` when the settings ask for its surface (Surface::Triangles); its points still
+  /// set the framing, the floor and the shadow, so that both drawings frame the body alike.
   static rb::Result<std::unique_ptr<Renderer>> create(const RenderSettings& settings,
-                                                      const BodyPoints& body);
+                                                      const BodyPoints& body,
+                                                      const BodyTriangles& triangles = {});
   ~Renderer();
 
   /// The backend and the GL vendor, renderer and version (for --verbose).
@@ -42,7 +46,7 @@ class Renderer {
 
  private:
   Renderer(const RenderSettings& settings, const BodyPoints& body);
-  std::string init();
+  std::string init(const BodyTriangles& triangles);
   /// The whole floor under `camera`, with the body's shadow when `shadow`.
   void drawFloor(const Camera& camera, const FrameInput& frame, const Eigen::Vector2f& center,
                  bool shadow);
@@ -76,7 +80,10 @@ class Renderer {
   PixelRect drawnRect(const Camera& camera, const FrameInput& frame) const;
   /// The radius in pixels of the largest sphere any point of the body could be drawn with.
   float largestSpherePx(const Camera& camera, const FrameInput& frame) const;
-  void drawPoints(const Camera& camera, const FrameInput& frame);
+  /// The body as points or as triangles (settings_.surface).
+  void drawBody(const Camera& camera, const FrameInput& frame);
+  void drawPoints(const Camera& camera, const FrameInput& frame, const Eigen::Matrix4f& model,
+                  const Eigen::Vector3f& light_view);
   void drawReadouts(const FrameInput& frame, const Camera& camera, Image& out);
   /// The spin cue: an arrow around the body on the floor, its sense the spin's, its colour by
   /// the direction, its sweep by |n| (docs/commands.md "The spin cue").
@@ -100,7 +107,8 @@ class Renderer {
   GLuint points_vao_ = 0, points_vbo_ = 0, floor_vao_ = 0, floor_vbo_ = 0;
   GLsizei point_count_ = 0;
   GLuint shadow_vao_ = 0, shadow_vbo_ = 0;
-  Framebuffer cache_;  ///< the fixed views' floor, drawn once (copyCachedFloor)
+  TriangleBody triangles_;  ///< made only for Surface::Triangles
+  Framebuffer cache_;       ///< the fixed views' floor, drawn once (copyCachedFloor)
   bool cache_valid_ = false;
   Camera cache_camera_;  ///< the camera the cached floor was drawn with
   Eigen::Vector2f cache_center_;

@@ -4,7 +4,7 @@
 #include <charconv>
 #include <cmath>
 
-#include "render/frame.hpp"  // the name table of video.view (header only: no render library)
+#include "render/frame.hpp"  // the name tables of video.view and video.surface (header only)
 #include "sim/contact_model.hpp"
 #include "sim/model.hpp"
 #include "util/assets.hpp"
@@ -378,6 +378,14 @@ const std::vector<Key>& table() {
        .check = "> 0; within 1/10 … 50 times the body's length",
        .sample = "10",
        .default_note = "the body's own length: each body fills the picture"},
+      {.path = "video.surface",
+       .field = FIELD(video.surface),
+       .doc = "the body drawn as its surface points (spheres) or as its closed surface "
+              "(shaded triangles: the mesh's own, or the shape's tessellated as `export` makes "
+              "it); either way red where the surface faces up in the body frame, blue where it "
+              "faces down",
+       .sample = "triangles",
+       .choices = namesOf<render::Surface>},
   };
   return rows;
 }

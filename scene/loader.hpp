@@ -31,6 +31,7 @@ struct VideoSpec {
   /// body's own, so that each body fills the picture. Bodies drawn with the same value are
   /// drawn at one scale, on the same floor squares.
   double frame = sim::kUnset;
+  std::string surface = "points";  ///< points | triangles: how the body is drawn
 };
 
 /// A value for a dotted scene key ("initial.spin", "body.dents.at[1]"), as YAML flow text

@@ -38,6 +38,9 @@ constexpr SceneOptionRow kOptions[] = {
     {O::Fps, "fps", "video.fps", K::Number,
      "Frames per second, a whole number 1–240 (default: the scene's video.fps, or 30)", false,
      [](L& s, const V& v) { s.video.fps = static_cast<int>(v.number); }},
+    {O::Surface, "surface", "video.surface", K::Name,
+     "The body drawn as its surface points or as shaded triangles (red facing up, blue down)",
+     false, [](L& s, const V& v) { s.video.surface = v.name; }},
 };
 
 }  // namespace

@@ -26,7 +26,8 @@ enum class SceneOption {
   View,
   Frame,
   Size,
-  Fps
+  Fps,
+  Surface
 };
 
 /// The value an option takes.

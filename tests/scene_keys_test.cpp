@@ -334,5 +334,5 @@ TEST(SceneOptions, EachPutsItsValueIntoItsKeysOwnMember) {
     row.apply(loaded, value);
     EXPECT_EQ(normal(scene::valueOf(*key, loaded)), normal(sample)) << row.name;
   }
-  EXPECT_EQ(names.size(), 10u);
+  EXPECT_EQ(names.size(), 11u);
 }

@@ -572,6 +572,7 @@ def still(
     size: Optional[tuple[int, int]] = None,
     spin: Optional[float] = None,
     frame: Optional[float] = None,
+    surface: Optional[str] = None,
     readouts: bool = True,
     transparent: bool = False,
     backend: str = "auto",
@@ -590,6 +591,8 @@ def still(
             the body's own): bodies drawn with the same ``frame`` are drawn at one scale. A
             body that goes out of the picture is warned of (:class:`RunWarning`, code
             ``"body_leaves_frame"``).
+        surface: ``points`` (the body's surface points) or ``triangles`` (its closed surface,
+            shaded); red where it faces up, blue where it faces down (default the scene's).
         readouts: the title, read-outs and spin inset.
         transparent: an RGBA image with no floor or background.
         backend: ``auto``, ``egl`` or ``osmesa``.
@@ -598,7 +601,7 @@ def still(
     """
     from . import _draw
 
-    loaded = _scene(scene)._load(view=view, size=size, spin=spin, frame=frame)
+    loaded = _scene(scene)._load(view=view, size=size, spin=spin, frame=frame, surface=surface)
     when = t if isinstance(t, str) else float(t)
     array, listed, leaves = _draw.still(loaded, when, bool(readouts), bool(transparent), backend, title)
     _warn_leaves(loaded, leaves)
@@ -624,6 +627,7 @@ def render(
     duration: Optional[float] = None,
     spin: Optional[float] = None,
     frame: Optional[float] = None,
+    surface: Optional[str] = None,
     crf: int = 20,
     preset: str = "veryfast",
     backend: str = "auto",
@@ -634,12 +638,19 @@ def render(
     text given no name); with ``both=True`` it is the base of
     ``BASE-preferred.mp4``, ``BASE-reversed.mp4`` and ``BASE-both.mp4``. Returns one dict per
     video: ``path``, ``frames``, ``spin`` and ``first_reversal_s`` of the run it shows.
-    ``frame`` is :func:`still`'s.
+    ``frame`` and ``surface`` are :func:`still`'s.
     """
     from . import _draw
 
     loaded = _scene(scene)._load(
-        fps=fps, size=size, view=view, playback=playback, duration=duration, spin=spin, frame=frame
+        fps=fps,
+        size=size,
+        view=view,
+        playback=playback,
+        duration=duration,
+        spin=spin,
+        frame=frame,
+        surface=surface,
     )
     files, leaves = _draw.render(
         loaded, "" if output is None else _os.fspath(output), both, int(crf), preset, backend

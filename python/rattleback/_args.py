@@ -148,6 +148,7 @@ _TAKES: dict[str, tuple[Callable[[Any], bool], str]] = {
     "size": (_size, "(width, height) in pixels, e.g. (640, 360)"),
     "integrator": (_text, "a name (text), e.g. 'rk4'"),
     "view": (_text, "a name (text), e.g. 'oblique'"),
+    "surface": (_text, "a name (text), e.g. 'triangles'"),
     "preset": (_text, "a name (text), e.g. 'veryfast'"),
     "backend": (_text, "a name (text), e.g. 'auto'"),
     "check": (_flag, "True or False"),

@@ -187,6 +187,31 @@ def test_a_frame_is_the_command_lines_and_says_when_the_body_leaves_it(tmp_path,
     assert caught[0].filename == __file__
 
 
+def test_a_surface_is_the_command_lines(tmp_path, default_scene):
+    """surface= is --surface: the triangles' picture, not the points'; a word that is neither is
+    a SceneError naming video.surface."""
+    image = rb.still(default_scene, 1.0, size=(320, 180), surface="triangles")
+    image.save(tmp_path / "py.png")
+    cli(
+        "still",
+        default_scene,
+        "--t",
+        "1",
+        "--size",
+        "320x180",
+        "--surface",
+        "triangles",
+        "-q",
+        "-o",
+        str(tmp_path / "cli.png"),
+    )
+    assert (tmp_path / "py.png").read_bytes() == (tmp_path / "cli.png").read_bytes()
+    assert image.array.tobytes() != rb.still(default_scene, 1.0, size=(320, 180)).array.tobytes()
+    with pytest.raises(rb.SceneError) as caught:
+        rb.still(default_scene, 1.0, size=(320, 180), surface="dots")
+    assert caught.value.key == "video.surface"
+
+
 def test_render_writes_the_videos_the_command_line_names(tmp_path, default_scene):
     files = rb.render(default_scene, tmp_path / "v", both=True, duration=1.0, size=(160, 96), fps=10)
     names = sorted(f["path"].rsplit("/", 1)[1] for f in files)
