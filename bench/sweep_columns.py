@@ -4,7 +4,8 @@ needs"), each figure beside its target, measured side by side in one run on this
 
   200 spins       the default scene spun -8 ... -2 rad/s (its first reversal at 2.0-4.0 s of
                   the 8 s), `columns: [first_reversal_s]`, -j2: runs a second, whole process and
-                  the sweep's own clock (median of 5), beside the same sweep without columns:
+                  the sweep's own clock (median of 5), beside the same sweep without columns,
+                  and the process's CPU time (what 2 idle cores would take, doubled):
                                                                             target >= 3,000/s
   its accuracy    the largest difference of its first_reversal_s from the same sweep at
                   tolerance 1e-11 (converged), and whether it equals the whole runs' to the bit
@@ -19,6 +20,7 @@ machine may be shared: the figures are medians, and the load average is printed 
 import csv
 import os
 import re
+import resource
 import statistics
 import subprocess
 import sys
@@ -44,14 +46,21 @@ def write(name, text):
     return path
 
 
+def children_cpu():
+    used = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return used.ru_utime + used.ru_stime
+
+
 def sweep(path, out, jobs=2):
-    """Whole-process wall time, s, and the sweep's own (its summary's `wall time` line)."""
-    start = time.perf_counter()
+    """Whole-process wall time, s, the sweep's own (its summary's `wall time` line) and the
+    process's CPU time, s (user + system: what the load of other work moves least)."""
+    start, cpu = time.perf_counter(), children_cpu()
     done = subprocess.run(
         [rb, "sweep", path, f"-j{jobs}", "-o", out], check=True, capture_output=True, text=True
     )
     whole = time.perf_counter() - start
-    return whole, float(re.search(r"wall time\s+([\d.]+) s", done.stdout).group(1))
+    inside = float(re.search(r"wall time\s+([\d.]+) s", done.stdout).group(1))
+    return whole, inside, children_cpu() - cpu
 
 
 def column(path, name):
@@ -79,8 +88,9 @@ runs = {"listed": [], "whole": []}
 for _ in range(5):  # alternating, so that a busy moment falls on both alike
     runs["listed"].append(sweep(listed, os.path.join(work, "listed.csv")))
     runs["whole"].append(sweep(whole, os.path.join(work, "whole.csv")))
-rate = {k: 200 / statistics.median(w for w, _ in v) for k, v in runs.items()}
-inner = {k: 200 / statistics.median(s for _, s in v) for k, v in runs.items()}
+rate = {k: 200 / statistics.median(w for w, _, _ in v) for k, v in runs.items()}
+inner = {k: 200 / statistics.median(s for _, s, _ in v) for k, v in runs.items()}
+cpu = {k: statistics.median(c for _, _, c in v) for k, v in runs.items()}
 show(
     "200 spins, columns: [first_reversal_s]",
     f"{rate['listed']:.0f} runs/s whole process ({inner['listed']:.0f} in-sweep)",
@@ -90,6 +100,12 @@ show(
 print(
     f"{'  the same without columns:':<40} {rate['whole']:.0f} runs/s whole process ({inner['whole']:.0f} in-sweep): "
     f"{rate['listed'] / rate['whole']:.2f}x"
+)
+# The CPU a process takes moves little with the load; half of it is the wall time 2 idle cores
+# would take at best (the start-up runs on one of them, so a little more in truth).
+print(
+    f"{'  CPU of the process, with / without:':<40} {cpu['listed']:.3f} s / {cpu['whole']:.3f} s: "
+    f"on 2 idle cores at most {400 / cpu['listed']:.0f} / {400 / cpu['whole']:.0f} runs/s"
 )
 
 sweep(converged, os.path.join(work, "converged.csv"))
@@ -116,7 +132,7 @@ if "--no-map" not in sys.argv:
         "  contact.air_drag: {from: 0, to: 5.9e-5, count: 50}\ncolumns: [first_reversal_s]\n",
     )
     out = os.path.join(work, "regime.csv")
-    seconds, inside = sweep(regime, out)
+    seconds, inside, used = sweep(regime, out)
     cells = column(out, "first_reversal_s")
     show(
         "regime map, 100,000 runs (spin x tilt x drag)",
@@ -124,4 +140,5 @@ if "--no-map" not in sys.argv:
         "<= 40 s",
         seconds <= 40,
     )
+    print(f"{'  its CPU:':<40} {used:.1f} s: on 2 idle cores at least {used / 2:.1f} s")
 print(f"load average after: {os.getloadavg()[0]:.1f}")

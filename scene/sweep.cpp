@@ -11,6 +11,7 @@
 #include <mutex>
 #include <set>
 
+#include "scene/direct_rows.hpp"
 #include "scene/key_path.hpp"
 #include "scene/tree.hpp"
 #include "util/nearest.hpp"
@@ -185,6 +186,13 @@ struct SweepScenes::Impl {
   // yaml-cpp's nodes share reference-counted memory that is not safe to touch from two threads
   // at once: the base tree is copied under this lock, and the copy is the row's own.
   mutable std::mutex mutex;
+  // Rows made without a tree (DirectRows); empty when the sweep's axes do not allow it.
+  DirectRows direct;
+
+  rb::Result<Loaded> scene(const std::vector<int>& at) const {
+    if (std::optional<Loaded> loaded = direct.scene(at)) return std::move(*loaded);
+    return build(at);
+  }
 
   // Each row's tree is a fresh copy with fresh values parsed from their text: a node put into
   // another tree merges the two trees' memory for good in yaml-cpp, so values kept from row to
@@ -208,6 +216,10 @@ SweepScenes::SweepScenes(SweepScenes&&) noexcept = default;
 SweepScenes::~SweepScenes() = default;
 
 rb::Result<Loaded> SweepScenes::scene(std::int64_t row) const {
+  return impl_->scene(impl_->sweep.coordinates(row));
+}
+
+rb::Result<Loaded> SweepScenes::sceneFromTree(std::int64_t row) const {
   return impl_->build(impl_->sweep.coordinates(row));
 }
 
@@ -235,6 +247,9 @@ rb::Result<SweepScenes> SweepScenes::open(const Sweep& sweep) {
       impl->places[withoutIndex(axis.key)] = axis.place;
     }
     replaceStepSetting(impl->base, impl->places);
+    impl->direct = DirectRows::open(impl->base, sweep.axes, [&] {
+      return loadTree(YAML::Clone(impl->base), impl->base_name, impl->places, impl->base_lines);
+    });
   } catch (const YAML::Exception& e) {
     return sweepError(sweep.base + ": " + e.msg, {sweep.base, 0, ""});
   }

@@ -91,6 +91,10 @@ class SweepScenes {
   /// The scene of `row`, or why it is refused (one line naming the sweep file's line for a
   /// varied key, the base scene's for the others).
   rb::Result<Loaded> scene(std::int64_t row) const;
+  /// The same scene made the long way, through a copy of the base's YAML tree with the row's
+  /// values put in: what scene() gives for a row it cannot make directly (scene/direct_rows.hpp);
+  /// the tests compare the two.
+  rb::Result<Loaded> sceneFromTree(std::int64_t row) const;
 
  private:
   struct Impl;

@@ -62,15 +62,25 @@ struct Scales {
     length = extent.norm() > 0 ? extent.norm() : 1.0;
     time = model.gravity > 0 ? std::sqrt(length / model.gravity) : 1.0;
     momentum = body.inertia.diagonal().maxCoeff() / time;
-    for (int i = 0; i < 3; ++i)
+    for (int i = 0; i < 3; ++i) {
       spin[i] = time * body.inertia(i, i) / body.inertia.diagonal().maxCoeff();
+      spin_inverse[i] = 1 / spin[i];
+    }
   }
   // ω in body axes is scaled as the angular momentum is, component by component (I_ii ω_i
   // over I_max/τ): a rocking about a light axis is held to the error the same momentum about
   // the heaviest would be. Scaling ω by τ alone, for the same reversal error, cost the default
   // scene 7 % less and Kane & Levinson 17 % more (docs/speed.md "Simulation: speed against error").
   std::array<double, 3> spin;
+  // Their inverses: an evaluation multiplies where it had divided (three divisions a stage).
+  std::array<double, 3> spin_inverse;
 };
+
+// q / |q|, by one division and products (Eigen's normalized() divides each component).
+Eigen::Quaterniond unitQuaternion(double w, double x, double y, double z) {
+  const double inverse = 1 / std::sqrt(w * w + x * x + y * y + z * z);
+  return Eigen::Quaterniond(w * inverse, x * inverse, y * inverse, z * inverse);
+}
 
 // The whole state: x (3), v (3), q (x, y, z, w), L (3), scaled.
 struct Free {
@@ -138,8 +148,9 @@ struct Rolling {
     s.x_world = Eigen::Vector3d(y[0] * k.length, y[1] * k.length, 0);
     // q normalised (the integrated one is a unit quaternion only to the tolerance), L = R I ω,
     // then the height and velocity from the constraint.
-    s.q = Eigen::Quaterniond(y[5], y[2], y[3], y[4]).normalized();
-    const Eigen::Vector3d w(y[6] / k.spin[0], y[7] / k.spin[1], y[8] / k.spin[2]);
+    s.q = unitQuaternion(y[5], y[2], y[3], y[4]);
+    const Eigen::Vector3d w(y[6] * k.spin_inverse[0], y[7] * k.spin_inverse[1],
+                            y[8] * k.spin_inverse[2]);
     const Eigen::Matrix3d R = s.q.toRotationMatrix();
     s.L_world = R * (model.body->inertia * w);
     enforceRolling(model, s, R, R * w);
@@ -148,8 +159,9 @@ struct Rolling {
   }
 
   static void rates(const Model& model, const Vector& y, Vector& dydt, const Scales& k, double) {
-    const Eigen::Quaterniond q = Eigen::Quaterniond(y[5], y[2], y[3], y[4]).normalized();
-    const Eigen::Vector3d w(y[6] / k.spin[0], y[7] / k.spin[1], y[8] / k.spin[2]);
+    const Eigen::Quaterniond q = unitQuaternion(y[5], y[2], y[3], y[4]);
+    const Eigen::Vector3d w(y[6] * k.spin_inverse[0], y[7] * k.spin_inverse[1],
+                            y[8] * k.spin_inverse[2]);
     const RollingRates r = rollingRates(model, q, w);
     const double k_x = k.time / k.length;
     dydt[0] = r.dxy.x() * k_x;
