@@ -143,7 +143,7 @@ CLAIMS = [
     (
         "docs/python.md",
         '>>> a["predicted_first_reversal"]["time_s"], a["predicted_first_reversal"]["range"] '
-        "(«2.260373781215751», '«beyond»')",
+        "(«2.260373780590822», '«beyond»')",
         [
             lambda r: r.analyze("rattleback")["predicted_first_reversal"]["time_s"],
             lambda r: r.analyze("rattleback")["predicted_first_reversal"]["range"],

@@ -75,6 +75,15 @@ inline void bindScene(py::module_& m) {
   m.def(
       "read_scene_file", [](const std::string& path) { return take(scene::readSceneFile(path)); },
       py::arg("path"));
+  m.def(
+      "yaml_with_values",
+      [](const std::string& yaml, const std::string& name,
+         const std::vector<std::pair<std::string, std::string>>& values, const std::string& place) {
+        std::vector<scene::KeyValue> kv;
+        for (const auto& [key, text] : values) kv.push_back({key, text});
+        return take(scene::yamlWithValues(yaml, name, kv, place));
+      },
+      py::arg("yaml"), py::arg("name"), py::arg("values"), py::arg("place"));
   // As the command line finds a scene: a relative name not here is the installed copy's.
   m.def("find_shipped", &tasks::findShipped, py::arg("path"));
   m.def(

@@ -418,18 +418,22 @@ rb::Result<Loaded> loadString(const std::string& yaml, const std::string& name) 
   return loaded;
 }
 
-rb::Result<Loaded> loadWithValues(const std::string& yaml, const std::string& name,
-                                  const std::vector<KeyValue>& values, const std::string& place,
-                                  std::shared_ptr<const sim::TriangleMesh> mesh) {
+namespace {
+
+// The tree of `yaml` with each value put at its key; `places` gets where each key was set and
+// `content` the text's content before the values went in (yamlContent's, without parsing again).
+rb::Result<YAML::Node> treeWithValues(const std::string& yaml, const std::string& name,
+                                      const std::vector<KeyValue>& values, const std::string& place,
+                                      std::map<std::string, std::string>& places,
+                                      std::string& content) {
   YAML::Node root;
   try {
     root = YAML::Load(yaml);
   } catch (const YAML::Exception& e) {
     return malformedYaml(name, yaml, e);
   }
-  std::string content = YAML::Dump(root);  // yamlContent(yaml), before the values go in
+  content = YAML::Dump(root);
   if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
-  std::map<std::string, std::string> places;
   for (const KeyValue& kv : values) {
     auto fail = [&](const std::string& message) {
       rb::Error e{"", printable(place + ": " + kv.key + " " + message)};
@@ -459,6 +463,29 @@ rb::Result<Loaded> loadWithValues(const std::string& yaml, const std::string& na
     places[withoutIndex(kv.key)] =
         place.rfind("--", 0) == 0 ? place + " " + kv.key + "=" + kv.yaml : place;
   }
+  return root;
+}
+
+}  // namespace
+
+rb::Result<std::string> yamlWithValues(const std::string& yaml, const std::string& name,
+                                       const std::vector<KeyValue>& values,
+                                       const std::string& place) {
+  std::map<std::string, std::string> places;
+  std::string content;
+  auto root = treeWithValues(yaml, name, values, place, places, content);
+  if (!root) return root.error();
+  return YAML::Dump(root.value()) + "\n";
+}
+
+rb::Result<Loaded> loadWithValues(const std::string& yaml, const std::string& name,
+                                  const std::vector<KeyValue>& values, const std::string& place,
+                                  std::shared_ptr<const sim::TriangleMesh> mesh) {
+  std::map<std::string, std::string> places;
+  std::string content;
+  auto tree = treeWithValues(yaml, name, values, place, places, content);
+  if (!tree) return tree.error();
+  YAML::Node root = tree.value();
   replaceStepSetting(root, places);
   auto loaded = loadTree(root, name, places, {}, std::move(mesh));
   if (loaded) {

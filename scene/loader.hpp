@@ -88,6 +88,12 @@ rb::Result<Loaded> loadWithValues(const std::string& yaml, const std::string& na
                                   const std::vector<KeyValue>& values, const std::string& place,
                                   std::shared_ptr<const sim::TriangleMesh> mesh = nullptr);
 
+/// The YAML text of `yaml` with each value put at its key, as loadWithValues puts them (its
+/// comments and layout are yaml-cpp's own); an error names `place` and the key.
+rb::Result<std::string> yamlWithValues(const std::string& yaml, const std::string& name,
+                                       const std::vector<KeyValue>& values,
+                                       const std::string& place);
+
 /// compile() of a loaded scene, with any error as one line.
 rb::Result<sim::Model> loadModel(const Loaded& loaded);
 

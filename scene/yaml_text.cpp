@@ -118,6 +118,16 @@ rb::Result<std::string> readSceneFile(const std::string& path) {
   };
   if (std::filesystem::is_directory(path, ec))
     return fail("is a folder, not a scene file (give a .yaml file, e.g. scenes/rattleback.yaml)");
+  // A mesh given where a scene goes (rattleback analyze toy.stl): a scene names it.
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext == ".stl" || ext == ".obj" || ext == ".ply")
+    return fail(
+        "is a mesh, not a scene: write a scene that names it, body: {shape: mesh, mesh: "
+        "{file: " +
+        std::filesystem::path(path).filename().string() +
+        "}, mass: …} (docs/your-own-body.md), or copy scenes/printed.yaml");
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     const int error = errno;

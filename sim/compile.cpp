@@ -432,11 +432,12 @@ rb::Result<Model> compileRun(const SceneSpec& spec, std::shared_ptr<const Body> 
   if (body->surface.kind == Surface::Kind::Mesh && spec.contact.model != "points" &&
       !body->surface.mesh.fit.usable())
     return rb::Error{"contact.model",
-                     spec.contact.model +
-                         " touches the smooth bottom fitted to the mesh, and this mesh's does "
-                         "not fit: " +
-                         body->surface.mesh.fit.problem +
-                         "; use contact.model: points (the mesh's own surface points)"};
+                     spec.contact.model + " touches the smooth bottom fitted to the mesh, and " +
+                         spec.body.mesh.file +
+                         "'s does not fit: " + body->surface.mesh.fit.problem +
+                         " (z is up: is its bottom the mesh's lowest side?); or touch the mesh's "
+                         "own surface points: contact: {model: points, stiffness: 20, damping: "
+                         "0.05}"};
   Model model;
   model.body = std::move(body);
   model.length_unit = spec.units.length;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
+#include <vector>
 
 #include "util/format.hpp"
 
@@ -167,7 +169,9 @@ std::optional<MeshProblem> checkEdges(const TriangleMesh& mesh, std::string_view
     return MeshProblem{MeshFault::NonManifold,
                        file + ": " + rb::counted(e.crowded, "edge") +
                            " shared by three faces or more (one " + edge(e.crowded_edge) +
-                           "): join the touching parts into one solid (Blender: a Union boolean)"};
+                           ") (a face given twice, or parts touching along an edge): delete "
+                           "duplicate faces, or join the parts into one solid (Blender: a Union "
+                           "boolean)"};
   if (e.same_way > 0)
     return MeshProblem{MeshFault::Inconsistent,
                        file +
@@ -176,6 +180,36 @@ std::optional<MeshProblem> checkEdges(const TriangleMesh& mesh, std::string_view
                            "): recalculate the normals (Blender: Mesh > Normals > Recalculate "
                            "Outside) and export again"};
   return std::nullopt;
+}
+
+// The pieces of a closed mesh wound outwards, by the faces' shared corners: each piece's signed
+// volume and one of its corners. A piece of negative volume is a cavity inside another (a hollow
+// body, wound inwards as a cavity's surface is); two pieces of positive volume are two solids.
+std::optional<MeshProblem> checkPieces(const TriangleMesh& mesh, std::string_view name) {
+  std::vector<int> root(mesh.vertices.size());
+  for (std::size_t i = 0; i < root.size(); ++i) root[i] = static_cast<int>(i);
+  const auto find = [&](int v) {
+    while (root[static_cast<std::size_t>(v)] != v)
+      v = root[static_cast<std::size_t>(v)] =
+          root[static_cast<std::size_t>(root[static_cast<std::size_t>(v)])];
+    return v;
+  };
+  for (const auto& f : mesh.faces)
+    for (int k = 1; k < 3; ++k) root[static_cast<std::size_t>(find(f[k]))] = find(f[0]);
+  std::map<int, double> volume;  // piece (its root) → 6 × signed volume
+  for (const auto& f : mesh.faces)
+    volume[find(f[0])] += mesh.vertices[f[0]].dot(mesh.vertices[f[1]].cross(mesh.vertices[f[2]]));
+  std::vector<int> solids;
+  for (const auto& [piece, v6] : volume)
+    if (v6 > 0) solids.push_back(piece);
+  if (solids.size() < 2) return std::nullopt;
+  return MeshProblem{
+      MeshFault::Pieces,
+      std::string(name) + ": the mesh is " + std::to_string(solids.size()) +
+          " separate solids (one at " + at(mesh.vertices[static_cast<std::size_t>(solids[0])]) +
+          ", another at " + at(mesh.vertices[static_cast<std::size_t>(solids[1])]) +
+          "), not one body: keep one per file (Blender: Mesh > Separate > By Loose Parts) or "
+          "join them into one solid (a Union boolean)"};
 }
 
 // The candidates a user's file is most likely in, m per unit, and their names.
@@ -222,6 +256,7 @@ std::optional<MeshProblem> checkMesh(const TriangleMesh& mesh, std::string_view 
                            show(volume) +
                            " cubic units); flip them (Blender: Mesh > Normals > Flip) and "
                            "export again"};
+  if (auto p = checkPieces(mesh, name)) return p;
   return checkSize(mesh, name, unit);
 }
 

@@ -49,6 +49,7 @@ enum class MeshFault {
   NonManifold,   ///< edges with three faces or more
   Inconsistent,  ///< neighbouring faces wound opposite ways
   InsideOut,     ///< closed and consistent, but every face winds inwards (volume < 0)
+  Pieces,        ///< two solids or more, apart (a print plate): not one body
   WrongSize,     ///< in metres, not a size a hand holds: the unit is likely wrong
 };
 

@@ -173,7 +173,9 @@ TEST(BottomFit, ABottomThatIsNoSmoothBowlIsRefusedForTheSmoothModels) {
   const std::string message = refused.error().message;
   EXPECT_NE(message.find("m RMS"), std::string::npos) << message;
   EXPECT_NE(message.find("not smooth enough"), std::string::npos) << message;
-  EXPECT_NE(message.find("use contact.model: points"), std::string::npos) << message;
+  EXPECT_NE(message.find("contact: {model: points, stiffness: 20, damping: 0.05}"),
+            std::string::npos)
+      << message;
   spec.contact.model = "points";
   spec.contact.stiffness = 2e3;
   spec.simulation.tolerance = NAN;

@@ -51,6 +51,25 @@ TEST(MeshCheck, OneFaceTurnedIsAnInconsistentWinding) {
   EXPECT_NE(p.message.find("3 edges walked the same way"), std::string::npos) << p.message;
 }
 
+// Two boxes apart in one file (a print plate of two toys) are two solids, not one body: refused,
+// with both named. A box with a smaller box inside it wound inwards is one hollow solid (the
+// cavity's volume counts negative) and passes, its volume 80 − 4 = 76.
+TEST(MeshCheck, TwoSolidsApartAreRefusedAndACavityIsNot) {
+  auto join = [](sim::TriangleMesh a, const sim::TriangleMesh& b, const Eigen::Vector3d& shift) {
+    const int offset = static_cast<int>(a.vertices.size());
+    for (const auto& v : b.vertices) a.vertices.push_back(v + shift);
+    for (auto f : b.faces) a.faces.push_back({f[0] + offset, f[1] + offset, f[2] + offset});
+    return a;
+  };
+  const sim::MeshProblem p = problemOf(join(box(10, 4, 2), box(10, 4, 2), {20, 0, 0}));
+  EXPECT_EQ(p.fault, sim::MeshFault::Pieces);
+  EXPECT_NE(p.message.find("the mesh is 2 separate solids"), std::string::npos) << p.message;
+  EXPECT_NE(p.message.find("By Loose Parts"), std::string::npos) << p.message;
+  const sim::TriangleMesh hollow = join(box(10, 4, 2), flipped(box(2, 2, 1)), {1, 1, 0.5});
+  EXPECT_FALSE(sim::checkMesh(hollow, "toy.stl", 0.01));
+  EXPECT_NEAR(sim::meshMoments(hollow).volume, 76, 1e-12);
+}
+
 // Every face turned: closed and consistent, but wound inwards, so the signed volume is
 // −(10·4·2) = −80 and the mesh is refused (never flipped silently).
 TEST(MeshCheck, EveryFaceTurnedIsInsideOutAndRefused) {

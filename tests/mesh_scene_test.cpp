@@ -190,10 +190,26 @@ TEST(MeshScene, ABadMeshOrModelIsRefusedWithExitTwoNamingFileLineAndKey) {
   const Outcome smooth = run("simulate " + folder.scene("box.obj", "smooth"), folder);
   EXPECT_EQ(smooth.status, 2);
   EXPECT_NE(smooth.err.find("contact.model smooth touches the smooth bottom fitted to the mesh, "
-                            "and this mesh's does not fit: the quadric fitted to it is not a bowl"),
+                            "and box.obj's does not fit: the quadric fitted to it is not a bowl"),
             std::string::npos)
       << smooth.err;
-  EXPECT_NE(smooth.err.find("use contact.model: points"), std::string::npos) << smooth.err;
+  // The way out, as the message writes it, is a contact the scene takes.
+  const std::string way_out = "contact: {model: points, stiffness: 20, damping: 0.05}";
+  EXPECT_NE(smooth.err.find(way_out), std::string::npos) << smooth.err;
+  const std::string taken =
+      folder.write("taken.yaml",
+                   "units: {length: 0.001}\nbody:\n  shape: mesh\n  mesh: {file: box.obj}\n"
+                   "  mass: 0.2\n" +
+                       way_out + "\nsimulation: {dt: 1.0e-4, duration: 0.05}\n");
+  const Outcome points = run("simulate -q " + taken + " -o " + folder.write("t.csv", ""), folder);
+  EXPECT_EQ(points.status, 0) << points.err;
+  // The mesh itself given where a scene goes: what to write instead, not a YAML error.
+  const Outcome mesh = run("analyze " + (folder.dir / "box.obj").string(), folder);
+  EXPECT_EQ(mesh.status, 2);
+  EXPECT_NE(mesh.err.find("box.obj: is a mesh, not a scene: write a scene that names it, body: "
+                          "{shape: mesh, mesh: {file: box.obj}"),
+            std::string::npos)
+      << mesh.err;
 }
 
 // `export` writes the shipped default body in mm; read back as a mesh body (units.length 0.001)

@@ -108,7 +108,6 @@ class Scene:
         values: Sequence[tuple[str, str]] = (),
         _file: bool = False,
         _mesh: Optional[tuple[_np.ndarray, _np.ndarray]] = None,
-        _place: str = "with_values",
     ):
         self._yaml = yaml
         self._name = name
@@ -120,7 +119,7 @@ class Scene:
         # stands for body.mesh.file's triangles in every scene made from this one.
         self._mesh = _mesh
         self._held = None if _mesh is None else _core.hold_mesh(*_mesh)
-        self._loaded = _core.load(yaml, name, list(self._values), {}, _file, self._held, _place)
+        self._loaded = _core.load(yaml, name, list(self._values), {}, _file, self._held)
 
     @classmethod
     @_checked
@@ -145,15 +144,9 @@ class Scene:
         try:
             return cls(_json.dumps(scene, default=_yaml_value_default), name)
         except SceneError as e:
-            if e.file == name:
-                # The dict was read as one line of JSON: neither the attribute nor the message
-                # names a line ("<dict>: contact is required", not "<dict>:1: …").
-                located = f"{name}:{e.line}: "
-                message = str(e)
-                if e.line is not None and message.startswith(located):
-                    e.args = (f"{name}: " + message[len(located) :],)
-                e.line = None
-            raise
+            # The dict was read as one line of JSON: neither the attribute nor the message
+            # names a line ("<dict>: contact is required", not "<dict>:1: …").
+            raise _lineless(e, name)
 
     @classmethod
     @_checked
@@ -166,6 +159,7 @@ class Scene:
         center_of_mass: Optional[Sequence[float]] = None,
         inertia: Any = None,
         scene: Optional[SceneLike] = None,
+        name: str = "<mesh>",
     ) -> "Scene":
         """A mesh body from NumPy arrays, as ``body.shape: mesh`` reads one from a file
         (docs/scenes.md): ``vertices`` (N, 3) in ``units`` (m per unit: 0.001 for mm; the
@@ -175,14 +169,29 @@ class Scene:
         ``center_of_mass`` (in ``units``) and ``inertia`` (kg m², about the CM) are given.
         Contact, initial state and simulation come from ``scene`` (a Scene, a path, or a dict
         that needs no ``body``; default the shipped ``scenes/rattleback.yaml``), whose lengths
-        are in ``units`` too. What ``scene.mesh()`` gives
-        comes back: ``Scene.from_mesh(*rb.Scene.from_file("scenes/rattleback.yaml").mesh(), 0.059)``."""
+        are in ``units`` too. ``name`` stands for the scene in messages and titles; the scene's
+        ``yaml`` is the whole scene, its mesh named ``<vertices, faces>``. What ``scene.mesh()``
+        gives comes back: ``Scene.from_mesh(*rb.Scene.from_file("scenes/rattleback.yaml").mesh(),
+        0.059)``."""
+        for argument, value in (("mass", mass), ("units", units)):
+            if not (_np.isfinite(value) and value > 0):
+                raise SceneError(f"from_mesh: argument {argument} must be > 0, not {value}", "from_mesh")
         vertices = _np.ascontiguousarray(vertices, dtype=_np.float64)
         faces = _np.ascontiguousarray(faces, dtype=_np.int64)
-        for name, array, rows in (("vertices", vertices, "N"), ("faces", faces, "M")):
+        for argument, array, rows in (("vertices", vertices, "N"), ("faces", faces, "M")):
+            if array.ndim != 2 or array.shape[1] != 3:
+                # (3, N) is the usual slip (a transposed array); quads are (M, 4).
+                hint = "; transposed? give its .T" if array.ndim == 2 and array.shape[0] == 3 else ""
+                if argument == "faces" and array.ndim == 2 and array.shape[1] == 4:
+                    hint = "; quads? split each into two triangles"
+                raise SceneError(
+                    f"from_mesh: argument {argument} takes an ({rows}, 3) array, not one of shape "
+                    f"{array.shape}{hint}",
+                    "from_mesh",
+                )
             if len(array) == 0:
                 raise SceneError(
-                    f"from_mesh: argument {name} is empty: give an ({rows}, 3) array", "from_mesh"
+                    f"from_mesh: argument {argument} is empty: give an ({rows}, 3) array", "from_mesh"
                 )
         if not _np.isfinite(vertices).all():
             row = int(_np.argwhere(~_np.isfinite(vertices))[0][0])
@@ -205,15 +214,19 @@ class Scene:
             )
         else:
             base = _scene("scenes/rattleback.yaml" if scene is None else scene)
-        body: dict[str, Any] = {"shape": "mesh", "mesh": {"file": "<from_mesh>"}, "mass": mass}
+        body: dict[str, Any] = {"shape": "mesh", "mesh": {"file": "<vertices, faces>"}, "mass": mass}
         if center_of_mass is not None:
             body["center_of_mass"] = center_of_mass
         if inertia is not None:
             body["inertia"] = inertia
         added = [("units.length", _yaml_value(units)), ("body", _yaml_value(body))]
-        return Scene(
-            base._yaml, base._name, base._values + tuple(added), base._file, (vertices, faces), "from_mesh"
-        )
+        # The whole scene as one text (scene.yaml gives it, a title names no values put in).
+        text = _core.yaml_with_values(base._yaml, base._name, list(base._values) + added, "from_mesh")
+        try:
+            return Scene(text, name, (), False, (vertices, faces))
+        except SceneError as e:
+            # Its lines are of a text the caller never wrote: named without them.
+            raise _lineless(e, name)
 
     @_checked
     def with_values(self, values: Mapping[str, Any]) -> "Scene":
@@ -274,6 +287,18 @@ class Scene:
     def __repr__(self) -> str:
         extra = f", values={self.values!r}" if self._values else ""
         return f"Scene({self._name!r}{extra})"
+
+
+def _lineless(e: SceneError, name: str) -> SceneError:
+    """`e` without a line where it is in the text of `name`, which the caller did not write as
+    lines (a dict's JSON, from_mesh's scene)."""
+    if e.file == name:
+        located = f"{name}:{e.line}: "
+        message = str(e)
+        if e.line is not None and message.startswith(located):
+            e.args = (f"{name}: " + message[len(located) :],)
+        e.line = None
+    return e
 
 
 def _yaml_value_default(value: Any) -> Any:

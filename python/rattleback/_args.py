@@ -94,6 +94,21 @@ def _rows(kinds: str) -> Callable[[Any], bool]:
     return test
 
 
+def _array(kinds: str) -> Callable[[Any], bool]:
+    """A test for an array (or nested lists) of numbers whose NumPy kind is in `kinds`."""
+
+    def test(value: Any) -> bool:
+        if isinstance(value, (str, bytes, Mapping)):
+            return False
+        try:
+            array = np.asarray(value)
+        except (ValueError, TypeError):  # ragged rows
+            return False
+        return array.dtype.kind in kinds or (array.size == 0 and array.dtype.kind == "f")
+
+    return test
+
+
 def _scene(value: Any) -> bool:
     global _Scene
     if _Scene is None:
@@ -165,8 +180,9 @@ _TAKES: dict[str, tuple[Callable[[Any], bool], str]] = {
         "a list of the table's columns (text), e.g. ['first_reversal_s']",
     ),
     "text": (_text, "YAML text"),
-    "vertices": (_rows("fiu"), "an (N, 3) array of numbers (x, y, z), in units"),
-    "faces": (_rows("iu"), "an (M, 3) array of whole numbers (vertex indices)"),
+    # Any array of numbers: Scene.from_mesh says what shape it takes, and the shape it was given.
+    "vertices": (_array("fiu"), "an (N, 3) array of numbers (x, y, z), in units"),
+    "faces": (_array("iu"), "an (M, 3) array of whole numbers (vertex indices)"),
     "mass": (_number, f"{_NUMBER} (kg)"),
     "units": (_number, f"{_NUMBER} (m per unit of the vertices: 0.001 for mm)"),
     "center_of_mass": (_numbers(3), "3 numbers (x, y, z), in units"),

@@ -140,8 +140,9 @@ def _scene_sweep(source, vary, duration, name, jobs, kept, columns):
     if base._mesh is not None:
         # A sweep's rows are made from the scene's text, which names the mesh by file.
         raise SceneError(
-            "argument source: a Scene.from_mesh scene cannot be swept: write its mesh to a file "
-            "(rattleback export, or any STL writer) and name it in body.mesh.file",
+            "argument source: a Scene.from_mesh scene cannot be swept: write its mesh to an STL "
+            "or OBJ file (trimesh: trimesh.Trimesh(vertices, faces).export('toy.stl')) and name it "
+            "in a scene's body.mesh.file (docs/your-own-body.md)",
             "argument source",
             None,
             "body.mesh.file",

@@ -175,23 +175,38 @@ def test_from_mesh_of_the_default_body_rolls_and_reverses_as_it_does():
 def test_from_mesh_checks_the_mesh_as_a_file_is_checked():
     box = box_in_mm(100, 40, 20)
 
-    def refused(match, vertices=box, faces=BOX_FACES, **kw):
+    def refused(match, vertices=box, faces=BOX_FACES, file="from_mesh", **kw):
         kw.setdefault("units", 1e-3)
         with pytest.raises(rb.SceneError, match=match) as e:
             rb.Scene.from_mesh(vertices, faces, 0.2, scene=POINTS, **kw)
-        assert e.value.file == "from_mesh"
+        assert e.value.file == file and e.value.line is None
         return e.value
 
-    assert refused("the mesh is not closed: 3 open edges", faces=BOX_FACES[:-1]).key == "body.mesh.file"
-    refused("the mesh is inside out", faces=BOX_FACES[:, ::-1])
-    refused(r"in mm\? units.length: 0.001 makes it 0.1 m", units=1.0)
+    # The library's checks, as a file's: the scene named by from_mesh's name, with no line.
+    closed = "^<mesh>: body.mesh.file <vertices, faces>: the mesh is not closed: 3 open edges"
+    assert refused(closed, faces=BOX_FACES[:-1], file="<mesh>").key == "body.mesh.file"
+    refused("the mesh is inside out", faces=BOX_FACES[:, ::-1], file="<mesh>")
+    refused(r"in mm\? units.length: 0.001 makes it 0.1 m", units=1.0, file="<mesh>")
+    refused("^toy: body.mesh.file", faces=BOX_FACES[:-1], file="toy", name="toy")
+    # The arrays' own faults, named as arguments.
     refused("argument faces: row 0 names vertex 8, but vertices has 8 rows", faces=BOX_FACES + 8)
     refused(
         "argument vertices: row 3 is not finite", vertices=np.where(np.arange(8)[:, None] == 3, np.nan, box)
     )
+    refused(
+        r"argument vertices takes an \(N, 3\) array, not one of shape \(3, 8\); transposed", vertices=box.T
+    )
+    refused(r"argument faces takes an \(M, 3\) array, not one of shape \(36,\)", faces=BOX_FACES.ravel())
+    with pytest.raises(rb.SceneError, match="^from_mesh: argument mass must be > 0, not -1"):
+        rb.Scene.from_mesh(box, BOX_FACES, -1, units=1e-3, scene=POINTS)
     with pytest.raises(TypeError, match=r"argument faces: takes an \(M, 3\) array of whole numbers"):
         rb.Scene.from_mesh(box, BOX_FACES.astype(float), 0.2)
-    with pytest.raises(rb.SceneError, match="cannot be swept: write its mesh to a file"):
-        rb.sweep(
-            rb.Scene.from_mesh(box, BOX_FACES, 0.2, units=1e-3, scene=POINTS), vary={"initial.spin": [1, 2]}
-        )
+    # A dict with no contact: named without the line of a text the caller never wrote.
+    with pytest.raises(rb.SceneError, match="^<mesh>: contact is required") as e:
+        rb.Scene.from_mesh(box, BOX_FACES, 0.2, units=1e-3, scene={"initial": {"spin": 5}})
+    assert e.value.line is None
+    # The scene's text is the whole scene, and a title names no values put in.
+    scene = rb.Scene.from_mesh(box, BOX_FACES, 0.2, units=1e-3, scene=POINTS, name="box")
+    assert "shape: mesh" in scene.yaml and scene.values == {} and scene.name == "box"
+    with pytest.raises(rb.SceneError, match="cannot be swept: write its mesh to an STL or OBJ file"):
+        rb.sweep(scene, vary={"initial.spin": [1, 2]})
