@@ -116,6 +116,8 @@ rb::Result<Body> buildMeshBody(const BodySpec& b, double unit) {
       for (int j = 0; j < 3; ++j) m.inertia(i, j) = b.inertia[i][j];
   principalAxes(m);
   Body body;
+  body.com_given = given(b.center_of_mass);
+  body.inertia_given = b.inertia != Matrix3Spec{};
   body.mass = b.mass;
   body.mass_properties = m;
   body.com_geometric = m.com;

@@ -76,8 +76,11 @@ struct Body {
   /// The paraboloid's: the grid's sums or the continuum's integrals (ellipsoid: the scene's).
   MassSource mass_source = MassSource::Continuum;
   bool mass_by_cubature = false;  ///< continuum: by cubature, not the closed form
-  Grid grid;                      ///< the point grid's spacing, m
-  std::optional<Dents> dents;     ///< the dents cut from the top (paraboloid), m
+  /// A mesh body: the scene gave its CM (body.center_of_mass), its inertia (body.inertia), or
+  /// both, in place of the uniform solid's.
+  bool com_given = false, inertia_given = false;
+  Grid grid;                   ///< the point grid's spacing, m
+  std::optional<Dents> dents;  ///< the dents cut from the top (paraboloid), m
   /// Contact points, only for contact.model points (the others touch the smooth surface, and
   /// building the default body's 244,212 made most of a short run's cost); the
   /// drawing walks the grid itself, thinned (tasks/drawn_points), and censusOf counts it.

@@ -40,8 +40,14 @@ nlohmann::json orNull(bool meaningful, const T& value) {
 
 // Where the mass properties came from (body.mass_properties), as analyze reports it.
 std::string massSourceText(const sim::Body& body) {
-  if (body.surface.kind == sim::Surface::Kind::Mesh)
-    return "mesh (exact for the polyhedron, or the scene's)";
+  if (body.surface.kind == sim::Surface::Kind::Mesh) {
+    // Which of the two the scene gave: a CM without an inertia keeps the uniform solid's
+    // inertia, about the scene's CM (a weight moves both: docs/your-own-body.md).
+    if (body.com_given && body.inertia_given) return "the scene's center_of_mass and inertia";
+    if (body.com_given) return "the scene's center_of_mass, the uniform solid's inertia";
+    if (body.inertia_given) return "the scene's inertia, the uniform solid's CM";
+    return "mesh (exact for the polyhedron, uniform density)";
+  }
   if (body.surface.kind != sim::Surface::Kind::Paraboloid) return "scene";
   if (body.mass_source == sim::MassSource::Grid) return "grid";
   return body.mass_by_cubature ? "continuum (cubature)" : "continuum (closed form)";

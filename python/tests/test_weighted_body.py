@@ -53,3 +53,12 @@ def test_a_weight_added_by_parallel_axes_is_the_body_and_weight_as_one_solid():
     # the largest moment; the CM to 1e-12 m).
     assert np.allclose(added["com"], com, rtol=0, atol=1e-12)
     assert np.allclose(added["inertia"], inertia, rtol=0, atol=1e-9 * np.abs(inertia).max())
+
+
+def test_analyze_says_whose_mass_properties_it_uses():
+    printed = rb.Scene.from_file(os.path.join(ROOT, "scenes", "printed.yaml"))
+    assert rb.analyze(printed)["mass_properties"] == "mesh (exact for the polyhedron, uniform density)"
+    weighted = example().with_weight(printed, 0.005, [0.0, 70.0, 4.0])
+    assert rb.analyze(weighted)["mass_properties"] == "the scene's center_of_mass and inertia"
+    moved = printed.with_values({"body.center_of_mass": [0, 5, -1]})
+    assert rb.analyze(moved)["mass_properties"] == "the scene's center_of_mass, the uniform solid's inertia"
