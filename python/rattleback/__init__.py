@@ -251,6 +251,13 @@ class Scene:
         """The scene's YAML text, as read (before :meth:`with_values`)."""
         return self._yaml
 
+    def to_yaml(self) -> str:
+        """The whole scene as YAML text with the values :meth:`with_values` put in: what to save
+        as a scene file (``Path("mine.yaml").write_text(scene.to_yaml())``). Comments and layout
+        are not kept; a mesh file is named as the scene named it, relative to the scene's
+        folder, so save it beside the scene it came from."""
+        return _core.yaml_with_values(self._yaml, self._name, list(self._values), "with_values")
+
     @property
     def duration(self) -> float:
         """simulation.duration, s."""

@@ -5,6 +5,7 @@ triangles (test_body_mesh.py's tetrahedra, independent of the library)."""
 
 import importlib.util
 import os
+import shutil
 
 import numpy as np
 
@@ -62,3 +63,14 @@ def test_analyze_says_whose_mass_properties_it_uses():
     assert rb.analyze(weighted)["mass_properties"] == "the scene's center_of_mass and inertia"
     moved = printed.with_values({"body.center_of_mass": [0, 5, -1]})
     assert rb.analyze(moved)["mass_properties"] == "the scene's center_of_mass, the uniform solid's inertia"
+
+
+def test_a_weighted_scene_saved_as_yaml_is_the_same_scene(tmp_path):
+    for name in ("printed.yaml", "printed-rattleback.stl"):
+        shutil.copy(os.path.join(ROOT, "scenes", name), tmp_path / name)
+    weighted = example().with_weight(rb.Scene.from_file(tmp_path / "printed.yaml"), 0.005, [0.0, 70.0, 4.0])
+    # Saved beside the scene it came from (its mesh is named relative to that folder).
+    (tmp_path / "weighted.yaml").write_text(weighted.to_yaml())
+    again, got = rb.analyze(tmp_path / "weighted.yaml"), rb.analyze(weighted)
+    for key in ("mass", "com", "inertia", "mass_properties"):
+        assert again[key] == got[key], key
