@@ -78,9 +78,9 @@ def _numbers(count: int) -> Callable[[Any], bool]:
     return test
 
 
-def _rows(kinds: str) -> Callable[[Any], bool]:
-    """A test for a table of rows of three: an (N, 3) array, or a list of such rows, of numbers
-    whose NumPy kind is in `kinds` ("iu" whole numbers, "fiu" any)."""
+def _array(kinds: str, shape: Optional[tuple] = None) -> Callable[[Any], bool]:
+    """A test for an array (or nested lists) of numbers whose NumPy kind is in `kinds` ("iu"
+    whole numbers, "fiu" any; an empty one passes), of `shape` where given (None: any size)."""
 
     def test(value: Any) -> bool:
         if isinstance(value, (str, bytes, Mapping)):
@@ -89,20 +89,9 @@ def _rows(kinds: str) -> Callable[[Any], bool]:
             array = np.asarray(value)
         except (ValueError, TypeError):  # ragged rows
             return False
-        return array.ndim == 2 and array.shape[1] == 3 and array.dtype.kind in kinds
-
-    return test
-
-
-def _array(kinds: str) -> Callable[[Any], bool]:
-    """A test for an array (or nested lists) of numbers whose NumPy kind is in `kinds`."""
-
-    def test(value: Any) -> bool:
-        if isinstance(value, (str, bytes, Mapping)):
-            return False
-        try:
-            array = np.asarray(value)
-        except (ValueError, TypeError):  # ragged rows
+        if shape is not None and (
+            array.ndim != len(shape) or any(n is not None and n != m for n, m in zip(shape, array.shape))
+        ):
             return False
         return array.dtype.kind in kinds or (array.size == 0 and array.dtype.kind == "f")
 
@@ -187,7 +176,7 @@ _TAKES: dict[str, tuple[Callable[[Any], bool], str]] = {
     "units": (_number, f"{_NUMBER} (m per unit of the vertices: 0.001 for mm)"),
     "center_of_mass": (_numbers(3), "3 numbers (x, y, z), in units"),
     "inertia": (
-        lambda v: _rows("fiu")(v) and len(v) == 3,
+        _array("fiu", (3, 3)),
         "a 3×3 array of numbers (kg m², about the CM)",
     ),
     "values": (
