@@ -148,12 +148,20 @@ def test_analyze_is_the_command_lines_json(default_scene):
     assert rb.analyze(default_scene, spin=3)["spin"] == 3
 
 
-def test_a_still_is_the_command_lines_png(tmp_path, default_scene):
-    image = rb.still(default_scene, 1.0, size=(320, 180))
-    assert image.array.shape == (180, 320, 3) and image.array.dtype == np.uint8
+def same_still(tmp_path, scene, **given):
+    """rb.still(scene, 1.0, size=(320, 180), **given), held byte for byte against `rattleback
+    still` given the same as options (frame=60 as --frame 60); the image."""
+    image = rb.still(scene, 1.0, size=(320, 180), **given)
     image.save(tmp_path / "py.png")
-    cli("still", default_scene, "--t", "1", "--size", "320x180", "-q", "-o", str(tmp_path / "cli.png"))
+    options = [text for key, value in given.items() for text in (f"--{key}", str(value))]
+    cli("still", scene, "--t", "1", "--size", "320x180", *options, "-q", "-o", str(tmp_path / "cli.png"))
     assert (tmp_path / "py.png").read_bytes() == (tmp_path / "cli.png").read_bytes()
+    return image
+
+
+def test_a_still_is_the_command_lines_png(tmp_path, default_scene):
+    image = same_still(tmp_path, default_scene)
+    assert image.array.shape == (180, 320, 3) and image.array.dtype == np.uint8
     assert image._repr_png_() == (tmp_path / "cli.png").read_bytes()
     clear = rb.still(default_scene, 0.0, size=(64, 64), transparent=True)
     assert clear.array.shape == (64, 64, 4)
@@ -163,22 +171,7 @@ def test_a_still_is_the_command_lines_png(tmp_path, default_scene):
 def test_a_frame_is_the_command_lines_and_says_when_the_body_leaves_it(tmp_path, default_scene, recwarn):
     """frame= is --frame: the same picture; a frame too short for the body warns of it, as the
     command line does, pointing at the caller's line."""
-    image = rb.still(default_scene, 1.0, size=(320, 180), frame=60)
-    image.save(tmp_path / "py.png")
-    cli(
-        "still",
-        default_scene,
-        "--t",
-        "1",
-        "--size",
-        "320x180",
-        "--frame",
-        "60",
-        "-q",
-        "-o",
-        str(tmp_path / "cli.png"),
-    )
-    assert (tmp_path / "py.png").read_bytes() == (tmp_path / "cli.png").read_bytes()
+    image = same_still(tmp_path, default_scene, frame=60)
     assert not [w for w in recwarn if issubclass(w.category, rb.RunWarning)]
     assert image.array.tobytes() != rb.still(default_scene, 1.0, size=(320, 180)).array.tobytes()
     with pytest.warns(rb.RunWarning, match="the body goes out of the picture") as caught:
@@ -190,22 +183,7 @@ def test_a_frame_is_the_command_lines_and_says_when_the_body_leaves_it(tmp_path,
 def test_a_surface_is_the_command_lines(tmp_path, default_scene):
     """surface= is --surface: the triangles' picture, not the points'; a word that is neither is
     a SceneError naming video.surface."""
-    image = rb.still(default_scene, 1.0, size=(320, 180), surface="triangles")
-    image.save(tmp_path / "py.png")
-    cli(
-        "still",
-        default_scene,
-        "--t",
-        "1",
-        "--size",
-        "320x180",
-        "--surface",
-        "triangles",
-        "-q",
-        "-o",
-        str(tmp_path / "cli.png"),
-    )
-    assert (tmp_path / "py.png").read_bytes() == (tmp_path / "cli.png").read_bytes()
+    image = same_still(tmp_path, default_scene, surface="triangles")
     assert image.array.tobytes() != rb.still(default_scene, 1.0, size=(320, 180)).array.tobytes()
     with pytest.raises(rb.SceneError) as caught:
         rb.still(default_scene, 1.0, size=(320, 180), surface="dots")
