@@ -906,6 +906,26 @@ TEST(Report, AnotherRunShowsItsFigures) {
         << what << ": " << cell;
 }
 
+// The page lists its scenes in the order the job made them, not by name: the main job's
+// default scene came after `printed`.
+TEST(Report, ScenesAreListedInTheOrderTheyWereMade) {
+  const fs::path dir = emptyDir("made-order");
+  for (const char* name : {"zz", "aa"}) {
+    const fs::path copy = dir / (std::string(name) + ".yaml");
+    fs::copy_file(scene("rattleback"), copy);
+    ASSERT_EQ(rattleback("simulate " + copy.string() + " --duration 0.2 -q -o " +
+                         (dir / (std::string(name) + ".csv")).string())
+                  .status,
+              0);
+  }
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  const std::string html = readText(dir / "index.html");
+  const auto zz = html.find("<section id=\"zz\">"), aa = html.find("<section id=\"aa\">");
+  ASSERT_NE(zz, std::string::npos);
+  ASSERT_NE(aa, std::string::npos);
+  EXPECT_LT(zz, aa);
+}
+
 // report of a name that is not there says so, and of a file, that it is not a folder (both
 // read "not a folder"; a teacher's trial).
 TEST(Report, AMissingFolderIsSaidToBeMissing) {

@@ -151,6 +151,8 @@ std::set<std::string> placeListed(const fs::path& dir, Folder& folder) {
   std::error_code ec;
   for (const OutputEntry& e : entries) {
     if (!fs::is_regular_file(dir / e.file, ec)) continue;  // since removed
+    if (std::find(folder.listed.begin(), folder.listed.end(), e.scene) == folder.listed.end())
+      folder.listed.push_back(e.scene);
     noteListed(e, folder);
     placeEntry(dir, e, spins, folder, listing);
   }

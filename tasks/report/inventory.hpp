@@ -55,6 +55,9 @@ struct SweepFiles {
 /// The files of a folder, placed: by scene, the sweeps, and the rest.
 struct Folder {
   std::map<std::string, SceneFiles> scenes;
+  /// The scenes in the order the manifest first names them: the order the job made them in
+  /// (the main job's default scene before the printed one), where `scenes` is by name.
+  std::vector<std::string> listed;
   std::vector<SweepFiles> sweeps;
   std::vector<std::string> others;
   bool empty() const { return scenes.empty() && sweeps.empty() && others.empty(); }

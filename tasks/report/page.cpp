@@ -54,15 +54,23 @@ std::string documentationWhere() {
          "<code>bash scripts/docs.sh</code> builds it as a site)";
 }
 
-// Scenes with videos first, then the rest, each in name order.
+// Scenes with videos first, then the rest; each group in the order the manifest names them (the
+// order the job made them), then the scenes it does not name, by name.
 std::vector<std::string> sceneOrder(const Folder& folder) {
+  std::vector<std::string> names = folder.listed;
+  for (const auto& [name, files] : folder.scenes)
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  auto hasVideo = [&](const std::string& name) {
+    const auto found = folder.scenes.find(name);
+    if (found == folder.scenes.end()) return false;  // a name the manifest gave a sweep or bench
+    const SceneFiles& files = found->second;
+    return files.has("-reversed.mp4") || files.has("-preferred.mp4") || files.has("-ccw.mp4") ||
+           files.has("-cw.mp4") || files.has(".mp4");
+  };
   std::vector<std::string> order;
-  for (const auto& [name, files] : folder.scenes)
-    if (files.has("-reversed.mp4") || files.has("-preferred.mp4") || files.has("-ccw.mp4") ||
-        files.has("-cw.mp4") || files.has(".mp4"))
-      order.push_back(name);
-  for (const auto& [name, files] : folder.scenes)
-    if (std::find(order.begin(), order.end(), name) == order.end()) order.push_back(name);
+  for (const bool videos : {true, false})
+    for (const std::string& name : names)
+      if (folder.scenes.count(name) && hasVideo(name) == videos) order.push_back(name);
   return order;
 }
 
