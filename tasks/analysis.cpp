@@ -262,12 +262,16 @@ bool hasTheory(const sim::Model& model) {
   return surface.kind != sim::Surface::Kind::Mesh || surface.mesh.fit.usable();
 }
 
-std::optional<double> forecastReversal(const sim::Model& model) {
-  if (!hasTheory(model) || model.initial.spin == 0) return {};
+Forecast forecastReversal(const sim::Model& model) {
+  using N = ForecastNote;
+  if (!hasTheory(model)) return {std::nullopt, N::NoTheory};
+  if (model.initial.spin == 0) return {std::nullopt, N::NotSpun};
   const sim::ReversalForecast forecast =
       sim::forecastFirstReversal(model, analysisSpin(model, std::nullopt), model.duration);
-  if (!forecast.applies || forecast.range == sim::ForecastRange::Outside) return {};
-  return forecast.time;
+  if (!forecast.applies) return {std::nullopt, N::CannotStand};
+  if (forecast.range == sim::ForecastRange::Outside) return {std::nullopt, N::OutsideRange};
+  if (!forecast.time) return {std::nullopt, N::NoneInRun};
+  return {forecast.time, forecast.range == sim::ForecastRange::Within ? N::Within : N::Beyond};
 }
 
 namespace {

@@ -11,6 +11,7 @@
 #include "sim/body.hpp"
 #include "sim/model.hpp"
 #include "sim/stability.hpp"
+#include "util/names.hpp"
 #include "util/result.hpp"
 
 namespace tasks {
@@ -131,12 +132,29 @@ Analysis analyze(const sim::Model& model, const std::optional<double>& spin);
 /// a quadric fits (docs/physics.md §P11.4). `analyze`'s theory and a sweep's forecast_s ask it.
 bool hasTheory(const sim::Model& model);
 
+/// Why a forecast is, or is not, a time: a word a table groups by.
+enum class ForecastNote {
+  Within,        ///< a time, n²ρ/g and the energy ratio in the theory's range (about 1.5 %)
+  Beyond,        ///< a time, past that range (11 % early to 10 % late in the runs measured)
+  NoneInRun,     ///< no zero of n within the run: spun the preferred way, or too slowly
+  OutsideRange,  ///< spin or tilt too large for the averaged theory: no forecast
+  NotSpun,       ///< initial spin 0
+  CannotStand,   ///< the body does not stand upright at rest
+  NoTheory,      ///< a mesh body whose bottom no quadric fits
+};
+
+/// The first reversal `analyze` forecasts for the scene as it is, and why it is or is not one.
+struct Forecast {
+  std::optional<double> time;  ///< s, where `note` is Within or Beyond
+  ForecastNote note = ForecastNote::NoTheory;
+};
+
 /// The first reversal `analyze` forecasts for the scene as it is (its "first reversal" line,
 /// docs/physics.md P8.5), s; none where that line gives no time: a scene not spun, a body that
 /// cannot stand or has no smooth bottom (a mesh no quadric fits), a spin outside the averaged
-/// theory's range, or no reversal within the run. The theory alone: no run is integrated (a
-/// sweep's forecast_s).
-std::optional<double> forecastReversal(const sim::Model& model);
+/// theory's range, or no reversal within the run — `note` says which. The theory alone: no run
+/// is integrated (a sweep's forecast_s and forecast_note).
+Forecast forecastReversal(const sim::Model& model);
 
 /// The analysis as one JSON value (docs/commands.md "rattleback analyze").
 nlohmann::json analysisJson(const Analysis& analysis);
@@ -150,3 +168,18 @@ inline nlohmann::json analysisJson(const sim::Model& model, double spin) {
 }
 
 }  // namespace tasks
+
+namespace rb {
+template <>
+struct NameTable<tasks::ForecastNote> {
+  static constexpr std::array<std::pair<tasks::ForecastNote, std::string_view>, 7> entries{{
+      {tasks::ForecastNote::Within, "within"},
+      {tasks::ForecastNote::Beyond, "beyond"},
+      {tasks::ForecastNote::NoneInRun, "none_in_run"},
+      {tasks::ForecastNote::OutsideRange, "outside_range"},
+      {tasks::ForecastNote::NotSpun, "not_spun"},
+      {tasks::ForecastNote::CannotStand, "cannot_stand"},
+      {tasks::ForecastNote::NoTheory, "no_theory"},
+  }};
+};
+}  // namespace rb

@@ -126,7 +126,11 @@ std::optional<SweepRow> runRow(const scene::Sweep& sweep, const scene::SweepScen
   auto model = sim::compileRun(loaded->spec, body.value());
   if (!model) return refused(scene::describe(loaded.value(), model.error()));
 
-  if (work.forecast) row.forecast_s = forecastReversal(model.value());
+  if (work.forecast) {
+    const Forecast forecast = forecastReversal(model.value());
+    row.forecast_s = forecast.time;
+    row.forecast_note = forecast.note;
+  }
   sim::Rollout rollout(std::move(model).value());
   rollout.stopWith(stop);
   const double end = rollout.endTime();
@@ -336,8 +340,11 @@ SweepRun runSweep(const scene::Sweep& sweep, const scene::SweepScenes& scenes,
   const SweepColumns columns = tableColumns(sweep);
   RowWork work;
   work.needs = needsOf(columns);
-  work.forecast =
-      std::find(columns.begin(), columns.end(), &columnOf(SweepMetric::Forecast)) != columns.end();
+  // forecast_s or forecast_note: the theory's forecast is worked out for either.
+  work.forecast = std::any_of(columns.begin(), columns.end(), [](const SweepResultColumn* c) {
+    return c == &columnOf(SweepMetric::Forecast) ||
+           std::string_view(c->column.name) == "forecast_note";
+  });
   std::vector<std::optional<SweepRow>> results(rows.size());
   std::mutex finished_mutex;
   const auto start = std::chrono::steady_clock::now();

@@ -85,6 +85,18 @@ const SweepResultColumn kResults[] = {
      "forecast first reversal",
      ColumnNeeds::Nothing,
      false},
+    // Why forecast_s is empty where it is: a word to group by, as status is.
+    {{"forecast_note", "",
+      "why forecast_s is or is not a time: within | beyond (the theory's range) | none_in_run | "
+      "outside_range | not_spun | cannot_stand | no_theory"},
+     [](const Row& r) {
+       return r.forecast_note ? std::string(rb::nameOf(*r.forecast_note)) : std::string();
+     },
+     std::nullopt,
+     nullptr,
+     nullptr,
+     ColumnNeeds::Nothing,
+     false},
 };
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "sim/watchdog.hpp"
+#include "tasks/analysis.hpp"
 #include "tasks/table.hpp"
 #include "util/names.hpp"
 
@@ -37,7 +38,8 @@ struct SweepRow {
   std::optional<double> max_tilt_deg;      ///< degrees over the steps (also a stopped run's)
   std::optional<double> energy_lost;       ///< fraction of the initial energy, at the end
   std::optional<double> forecast_s;        ///< s: the averaged theory's first reversal (analyze's)
-  double wall_s = 0;                       ///< wall-clock time of the run, s
+  std::optional<ForecastNote> forecast_note;  ///< why forecast_s is, or is not, a time
+  double wall_s = 0;                          ///< wall-clock time of the run, s
 };
 
 /// The result columns with a number, which a figure can show (`--metric`, Python's `metric=`).

@@ -968,11 +968,12 @@ TEST(Sweep, AColumnsSweepHoldsItsColumnsWithTheWholeRunsValues) {
 // forecasts (−5, −2 rad/s), the preferred way (+5: none within the run), one far outside its
 // range (−30 rad/s: n²ρ/g ≈ 31, where the averaged theory is not used) and a scene not spun
 // (which analyze's theory takes at +5 rad/s: with the dents mirrored, the way that reverses).
+// forecast_note says which of these each row is, as analyze's range and time say it.
 TEST(Sweep, TheForecastColumnIsAnalyzesForecast) {
   const fs::path dir = scratch();
   std::string text =
       "base: BASE\nvary:\n  initial.spin: [-5, -2, 5, -30, 0]\n  body.dents.at[0]: [0.73, "
-      "-0.73]\ncolumns: [forecast_s]\n";
+      "-0.73]\ncolumns: [forecast_s, forecast_note]\n";
   text.replace(text.find("BASE"), 4, kBase);
   const fs::path sweep = writeSweep(dir, text);
   const Outcome r =
@@ -989,7 +990,9 @@ TEST(Sweep, TheForecastColumnIsAnalyzesForecast) {
     const fs::path scene = dir / ("row" + std::to_string(i) + ".yaml");
     std::ofstream(scene) << scene_text;
     const std::string cell = rows[i][at(rows, "forecast_s")];
+    const std::string note = rows[i][at(rows, "forecast_note")];
     if (rows[i][1] == "0") {
+      EXPECT_EQ(note, "not_spun");
       const Outcome a = rattleback(dir, "analyze " + scene.string());
       ASSERT_EQ(a.status, 0) << a.err;
       EXPECT_NE(a.out.find("first reversal   none: the scene is not spun"), std::string::npos)
@@ -999,10 +1002,15 @@ TEST(Sweep, TheForecastColumnIsAnalyzesForecast) {
     }
     const Outcome a = rattleback(dir, "analyze " + scene.string() + " --json");
     ASSERT_EQ(a.status, 0) << a.err;
-    const auto time = nlohmann::json::parse(a.out)["predicted_first_reversal"]["time_s"];
+    const auto predicted = nlohmann::json::parse(a.out)["predicted_first_reversal"];
+    const auto time = predicted["time_s"];
+    const std::string range = predicted["range"].get<std::string>();
     if (time.is_null()) {
       EXPECT_EQ(cell, "") << "spin " << rows[i][1];
+      EXPECT_EQ(note, range == "outside" ? "outside_range" : "none_in_run")
+          << "spin " << rows[i][1];
     } else {
+      EXPECT_EQ(note, range) << "spin " << rows[i][1];
       ++forecast;
       ASSERT_NE(cell, "") << "spin " << rows[i][1];
       EXPECT_EQ(std::stod(cell), time.get<double>()) << "spin " << rows[i][1];

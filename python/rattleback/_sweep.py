@@ -36,7 +36,8 @@ class SweepTable:
     refused, in words). A number a run does not have is NaN; text it does not have is ``""``. The arrays are read-only, as the CSV they
     stand for is (``.copy()`` gives one to change). A sweep given ``columns`` (or a sweep file's
     ``columns:``) holds ``row``, the varied keys and those columns only, in that order (one of
-    them may be ``forecast_s``, the averaged theory's first reversal, which ``analyze`` prints).
+    them may be ``forecast_s``, the averaged theory's first reversal, which ``analyze`` prints,
+    and ``forecast_note``, a word saying why ``forecast_s`` is or is not a time).
     """
 
     def __init__(self, core_table):
