@@ -43,44 +43,19 @@ struct Run {
   nlohmann::json sidecar;  ///< telemetrySidecar: its "check" null without check=True
 };
 
-// A sample's doubles, in the order they are pickled: one list for packing and unpacking alike.
-constexpr std::size_t kSampleDoubles = 21;
-std::array<double*, kSampleDoubles> doublesOf(sim::Telemetry& s) {
-  return {&s.t,
-          &s.spin,
-          &s.kinetic,
-          &s.potential,
-          &s.elastic,
-          &s.energy,
-          &s.tilt_deg,
-          &s.x_world.x(),
-          &s.x_world.y(),
-          &s.x_world.z(),
-          &s.orientation.w(),
-          &s.orientation.x(),
-          &s.orientation.y(),
-          &s.orientation.z(),
-          &s.w_world.x(),
-          &s.w_world.y(),
-          &s.w_world.z(),
-          &s.L_world.x(),
-          &s.L_world.y(),
-          &s.L_world.z(),
-          &s.normal_force};
-}
-
-// A sample as 23 doubles: its doubles, then the count and the mode as whole numbers (exact).
-constexpr std::size_t kSampleFields = kSampleDoubles + 2;
+// A sample as its doubles (sim::doublesOf), then the count and the mode as whole numbers
+// (exact).
+constexpr std::size_t kSampleFields = sim::kTelemetryDoubles + 2;
 
 void packSample(sim::Telemetry s, double* out) {
-  for (double* field : doublesOf(s)) *out++ = *field;
+  for (double* field : sim::doublesOf(s)) *out++ = *field;
   *out++ = s.contacts;
   *out = static_cast<int>(s.mode);
 }
 
 sim::Telemetry unpackSample(const double* f) {
   sim::Telemetry s;
-  for (double* field : doublesOf(s)) *field = *f++;
+  for (double* field : sim::doublesOf(s)) *field = *f++;
   s.contacts = static_cast<int>(f[0]);
   s.mode = static_cast<sim::ContactModel>(static_cast<int>(f[1]));
   return s;
@@ -88,7 +63,7 @@ sim::Telemetry unpackSample(const double* f) {
 
 // Pickled as (scene, rate, sidecar as JSON text, samples as bytes of doubles); the version first,
 // so that a pickle of another layout is refused rather than misread.
-constexpr int kRunPickleVersion = 1;
+constexpr int kRunPickleVersion = 2;  // 2: with friction_force
 
 py::tuple runState(const Run& r) {
   std::vector<double> packed(r.samples.size() * kSampleFields);

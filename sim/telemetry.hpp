@@ -2,6 +2,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <array>
 
 #include "sim/model.hpp"
 
@@ -26,6 +27,35 @@ struct Telemetry {
   /// check of μN, tasks::simulate).
   double friction_force = 0;
 };
+
+/// Every double of a sample, each once, in a fixed order: what copies a sample field by field
+/// (Python's pickle of a run) loops over. A double added to Telemetry is added here, beside it;
+/// the whole numbers (contacts, mode) are the copier's.
+inline constexpr std::size_t kTelemetryDoubles = 22;
+inline std::array<double*, kTelemetryDoubles> doublesOf(Telemetry& s) {
+  return {&s.t,
+          &s.spin,
+          &s.kinetic,
+          &s.potential,
+          &s.elastic,
+          &s.energy,
+          &s.tilt_deg,
+          &s.x_world.x(),
+          &s.x_world.y(),
+          &s.x_world.z(),
+          &s.orientation.w(),
+          &s.orientation.x(),
+          &s.orientation.y(),
+          &s.orientation.z(),
+          &s.w_world.x(),
+          &s.w_world.y(),
+          &s.w_world.z(),
+          &s.L_world.x(),
+          &s.L_world.y(),
+          &s.L_world.z(),
+          &s.normal_force,
+          &s.friction_force};
+}
 
 Telemetry telemetryOf(const Model& model, const State& s);
 
