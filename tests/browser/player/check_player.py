@@ -1058,6 +1058,11 @@ class Checker:
             element,
         )
         other = data["other"]
+        # The default scene prefers counter-clockwise: its run (on the dev page, Python's
+        # player_script; in a report, `report`'s) comes with the other spin.
+        self.check(
+            bool(other) or run_id != "rattleback", f"{where}: the default scene's data has no other spin"
+        )
         if not other:
             self.check(buttons() == [], f"{where}: one run, and spin buttons {buttons()}")
             element.find_element(By.CSS_SELECTOR, ".rbp-title").click()
