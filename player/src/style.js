@@ -23,6 +23,7 @@ export const STYLE = `
 .rbp .rbp-spun{text-align:left;font-size:12.5px}
 .rbp.rbp-present .rbp-spun:not(.rbp-on){display:none}
 .rbp.rbp-present .rbp-spun{font-size:max(18px,2.2vh)}
+.rbp.rbp-present .rbp-spins .rbp-label{display:none}
 .rbp-read{font:13px/1.5 ui-monospace,"DejaVu Sans Mono",Menlo,Consolas,monospace;white-space:pre}
 .rbp-plotbox{position:relative;width:272px;margin-top:6px}
 .rbp-plot{display:block;width:270px;height:130px;border:1px solid #c9ccd4;border-radius:3px;background:#fff;cursor:crosshair}
