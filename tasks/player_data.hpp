@@ -91,7 +91,7 @@ PlayerRun playerRunOf(const std::string& id, const sim::Model& model, double fra
 /// `rate` samples a second (the run's; within 500 … 2000) and thinned. None where the
 /// run's model is not the scene's so made (another body; a sidecar of another version), where
 /// the run's spin is 0, or where the body prefers neither direction at it
-/// (sim::preferredDirection). A few milliseconds for the default scene.
+/// (sim::preferredDirection). 10–30 ms for the default scene's 8 s (2 busy cores).
 std::optional<SpunRun> otherSpinOf(const sim::Model& model, const nlohmann::json& run_model,
                                    double rate);
 
