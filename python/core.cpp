@@ -489,9 +489,13 @@ void bindCalls(py::module_& m) {
         std::vector<double> reversals;
         for (const auto& t : run.sidecar.at("result").at("reversals_s"))
           reversals.push_back(t.get<double>());
-        return tasks::playerScript(
+        tasks::PlayerRun player =
             tasks::playerRunOf(id, model, tasks::playerFrame(loaded.value.scene, model),
-                               tasks::posesOf(run.samples), std::move(reversals)));
+                               tasks::posesOf(run.samples), std::move(reversals));
+        // The body spun the other way, as the report adds it: the same function, from the
+        // model the run recorded (simulate(duration=1)'s other way runs 1 s too).
+        player.other = tasks::otherSpinOf(model, run.sidecar.at("model"), run.rate);
+        return tasks::playerScript(player);
       },
       py::arg("scene"), py::arg("run"), py::arg("id"));
   // For bench/python_speed.py: the C++ run alone (samples kept as simulate keeps them), the

@@ -8,7 +8,9 @@
 #include <nlohmann/json.hpp>
 
 #include "render/views.hpp"
+#include "sim/analysis.hpp"
 #include "tasks/analysis.hpp"
+#include "tasks/run_json.hpp"
 #include "tasks/simulate.hpp"
 #include "util/names.hpp"
 
@@ -26,6 +28,22 @@ void appendArray(std::string& out, const char* name, std::size_t n, int digits, 
     out.append(i ? "," : "").append(text);
   }
   out.append("],");
+}
+
+// A run's series (t, x, y, z, qw, qx, qy, qz, spin) and its reversals: "name":[…], each.
+void appendPoses(std::string& data, const std::vector<Pose>& q,
+                 const std::vector<double>& reversals) {
+  // Times to the µs over runs up to 1000 s; positions to 0.1 µm; the quaternion to 1e-9.
+  appendArray(data, "t", q.size(), 9, [&](std::size_t i) { return q[i].t; });
+  appendArray(data, "x", q.size(), 7, [&](std::size_t i) { return q[i].x; });
+  appendArray(data, "y", q.size(), 7, [&](std::size_t i) { return q[i].y; });
+  appendArray(data, "z", q.size(), 7, [&](std::size_t i) { return q[i].z; });
+  appendArray(data, "qw", q.size(), 10, [&](std::size_t i) { return q[i].qw; });
+  appendArray(data, "qx", q.size(), 10, [&](std::size_t i) { return q[i].qx; });
+  appendArray(data, "qy", q.size(), 10, [&](std::size_t i) { return q[i].qy; });
+  appendArray(data, "qz", q.size(), 10, [&](std::size_t i) { return q[i].qz; });
+  appendArray(data, "spin", q.size(), 7, [&](std::size_t i) { return q[i].spin; });
+  appendArray(data, "reversals", reversals.size(), 9, [&](std::size_t i) { return reversals[i]; });
 }
 
 // The indices kept with every k-th pose, and the last.
@@ -92,16 +110,48 @@ std::string viewsJson() {
   return "\"views\":" + views.dump() + ",";
 }
 
+Pose poseOf(const sim::Telemetry& s) {
+  const Eigen::Quaterniond q = attitude(s);
+  return {s.t, s.x_world.x(), s.x_world.y(), s.x_world.z(), q.w(), q.x(), q.y(), q.z(), s.spin};
+}
+
+// The model a run ran: its scene's `model` with what a command's options or Python's keywords
+// put in over the scene (spin, duration, integrator, step or tolerance: tasks::SceneOption's that
+// reach the model), as the run's sidecar records them in `run_model`; none unless the model so
+// made is the one the sidecar records (modelJson), whole: another body, or a sidecar of another
+// version, is not this run's. (A teacher's `simulate --duration 3` is the run's other way at
+// 3 s, not the scene file's 8 s.)
+std::optional<sim::Model> modelOfRun(const sim::Model& model, const nlohmann::json& run_model) {
+  if (!run_model.is_object()) return std::nullopt;
+  auto number = [&](const nlohmann::json& j) -> std::optional<double> {
+    if (!j.is_number()) return std::nullopt;
+    return j.get<double>();
+  };
+  const auto duration = number(run_model.value("duration_s", nlohmann::json()));
+  const auto spin =
+      number(run_model.value("initial", nlohmann::json::object()).value("spin", nlohmann::json()));
+  const auto integrator =
+      rb::parseName<sim::Integrator>(run_model.value("integrator", std::string()));
+  if (!duration || !spin || !integrator) return std::nullopt;
+  sim::Model ran = model;
+  ran.duration = *duration;
+  ran.initial.spin = *spin;
+  ran.integrator = *integrator;
+  // One of the two, the other 0, as sim/compile.cpp makes a model.
+  const auto tolerance = number(run_model.value("tolerance", nlohmann::json()));
+  const auto dt = number(run_model.value("dt_s", nlohmann::json()));
+  ran.tolerance = sim::isAdaptive(*integrator) ? tolerance.value_or(0) : 0;
+  ran.dt = sim::isAdaptive(*integrator) ? 0 : dt.value_or(0);
+  if (modelJson(ran) != run_model) return std::nullopt;
+  return ran;
+}
+
 }  // namespace
 
 std::vector<Pose> posesOf(const std::vector<sim::Telemetry>& samples) {
   std::vector<Pose> poses;
   poses.reserve(samples.size());
-  for (const sim::Telemetry& s : samples) {
-    const Eigen::Quaterniond q = attitude(s);
-    poses.push_back(
-        {s.t, s.x_world.x(), s.x_world.y(), s.x_world.z(), q.w(), q.x(), q.y(), q.z(), s.spin});
-  }
+  for (const sim::Telemetry& s : samples) poses.push_back(poseOf(s));
   return poses;
 }
 
@@ -130,6 +180,31 @@ std::vector<Pose> thinPoses(const std::vector<Pose>& poses) {
   return out;
 }
 
+std::optional<SpunRun> otherSpinOf(const sim::Model& model, const nlohmann::json& run_model,
+                                   double rate) {
+  const std::optional<sim::Model> ran = modelOfRun(model, run_model);
+  if (!ran) return std::nullopt;
+  const double spin = ran->initial.spin;
+  if (spin == 0 || !std::isfinite(spin)) return std::nullopt;
+  // A body that prefers neither way shows nothing the other way that this run does not.
+  if (sim::preferredDirection(*ran, std::abs(spin)) == sim::Direction::None) return std::nullopt;
+  sim::Model other = *ran;
+  other.initial.spin = -spin;
+  SimulateOptions options;
+  // The run's own rate, as its CSV was sampled, within kDefaultRate … 2000 a second: thinPoses
+  // keeps what the replay needs of 500 a second (a CSV at 20 a second would replay coarsely),
+  // and above 2000 keeps the same for far more work and memory (1e7 Hz is allowed).
+  options.rate =
+      checkRate(rate, ran->duration) ? std::clamp(rate, kDefaultRate, 2000.0) : kDefaultRate;
+  // Poses as the samples come (a pose is a fraction of a sample: a long run's samples kept
+  // whole would take hundreds of MB).
+  std::vector<Pose> poses;
+  options.each = [&](const sim::Telemetry& s) { poses.push_back(poseOf(s)); };
+  const SimulateResult result = simulate(other, options);
+  if (poses.size() < 2) return std::nullopt;
+  return SpunRun{-spin, thinPoses(poses), result.summary.reversals};
+}
+
 double playerFrame(const scene::Loaded& scene, const sim::Model& model) {
   if (!(scene.video.frame > 0) || !std::isfinite(scene.video.frame)) return 0;
   const double frame = scene.video.frame * model.length_unit;
@@ -150,19 +225,15 @@ std::string playerScript(const PlayerRun& run) {
                 reachOf(p), run.frame);
   data += text;
   data += viewsJson();
-  const auto& q = run.poses;
-  // Times to the µs over runs up to 1000 s; positions to 0.1 µm; the quaternion to 1e-9.
-  appendArray(data, "t", q.size(), 9, [&](std::size_t i) { return q[i].t; });
-  appendArray(data, "x", q.size(), 7, [&](std::size_t i) { return q[i].x; });
-  appendArray(data, "y", q.size(), 7, [&](std::size_t i) { return q[i].y; });
-  appendArray(data, "z", q.size(), 7, [&](std::size_t i) { return q[i].z; });
-  appendArray(data, "qw", q.size(), 10, [&](std::size_t i) { return q[i].qw; });
-  appendArray(data, "qx", q.size(), 10, [&](std::size_t i) { return q[i].qx; });
-  appendArray(data, "qy", q.size(), 10, [&](std::size_t i) { return q[i].qy; });
-  appendArray(data, "qz", q.size(), 10, [&](std::size_t i) { return q[i].qz; });
-  appendArray(data, "spin", q.size(), 7, [&](std::size_t i) { return q[i].spin; });
-  appendArray(data, "reversals", run.reversals.size(), 9,
-              [&](std::size_t i) { return run.reversals[i]; });
+  appendPoses(data, run.poses, run.reversals);
+  if (run.other) {
+    std::snprintf(text, sizeof text, "\"spun\":%.9g,\"other\":{\"spun\":%.9g,",
+                  -run.other->spun + 0.0, run.other->spun);
+    data += text;
+    appendPoses(data, run.other->poses, run.other->reversals);
+    data.back() = '}';
+    data += ',';
+  }
   data.back() = '}';
   return "(window.RATTLEBACK_RUNS = window.RATTLEBACK_RUNS || {})[" +
          nlohmann::json(run.id).dump() + "] = " + data + ";\n";

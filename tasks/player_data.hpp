@@ -6,9 +6,12 @@
 // holding the drawn points (body frame about the CM, m), the fixed views' framing, the views'
 // cameras (the renderer's own table, render/views.hpp), and the run's poses: t, x, y, z (CM, world,
 // m), qw, qx, qy, qz (body to world, scalar first) and the spin n (rad/s), at most kPlayerRate
-// samples per simulated second.
+// samples per simulated second. A run spun one way may carry the same body spun the other
+// way ("spun": the run's initial spin, rad/s; "other": {spun, t, x, …, spin, reversals}, the
+// same series), which the player offers beside it (otherSpinOf).
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -37,6 +40,13 @@ struct Pose {
   double spin = 0;                        ///< n, rad/s
 };
 
+/// The same body spun the other way, beside a run (otherSpinOf).
+struct SpunRun {
+  double spun = 0;                ///< rad/s: its initial spin (model.initial.spin)
+  std::vector<Pose> poses;        ///< thinned (thinPoses)
+  std::vector<double> reversals;  ///< s
+};
+
 struct PlayerRun {
   std::string id;     ///< the key in window.RATTLEBACK_RUNS (the scene's stem)
   std::string title;  ///< shown above the player
@@ -46,6 +56,9 @@ struct PlayerRun {
   /// m: the length of body the views are framed for (the scene's video.frame), as stills and
   /// videos frame it; 0: the body's own.
   double frame = 0;
+  /// The body spun the other way, where the player offers both (otherSpinOf; this run's spin
+  /// is then -other->spun); none: the player shows this run alone, and its data says no more.
+  std::optional<SpunRun> other;
 };
 
 /// A scene's video.frame in metres, as the player takes it: 0 where it is not given, or where
@@ -70,6 +83,17 @@ std::vector<Pose> posesOf(const std::vector<sim::Telemetry>& samples);
 /// points, `frame` (m; 0: the body's own), the poses thinned (thinPoses), the reversals (s).
 PlayerRun playerRunOf(const std::string& id, const sim::Model& model, double frame,
                       std::vector<Pose> poses, std::vector<double> reversals);
+
+/// The body spun the other way, for the player to show beside a run of a scene whose model is
+/// `model`: the run's model (`run_model`, its sidecar's "model": the scene's with the spin,
+/// duration, integrator and step or tolerance a command's options or Python's keywords gave)
+/// with its initial spin negated (as render --both spins it), run here by tasks::simulate at
+/// `rate` samples a second (the run's; within 500 … 2000) and thinned. None where the
+/// run's model is not the scene's so made (another body; a sidecar of another version), where
+/// the run's spin is 0, or where the body prefers neither direction at it
+/// (sim::preferredDirection). 10–30 ms for the default scene's 8 s (2 busy cores).
+std::optional<SpunRun> otherSpinOf(const sim::Model& model, const nlohmann::json& run_model,
+                                   double rate);
 
 /// The script's text, with the views' cameras.
 std::string playerScript(const PlayerRun& run);

@@ -2580,6 +2580,50 @@ TEST(Report, ThePlayerIsFramedAsTheScenesPicturesWere) {
   EXPECT_EQ(frameOf(), "0.6");
 }
 
+// A teacher's own body spun the way it prefers (the default body with its dents mirrored, spun
+// -5 rad/s) keeps turning: its player replayed that run alone, and no reversal was to be seen.
+// The report simulates the body spun the other way (+5 rad/s, for the run's own 3 s) and the
+// player's data carries it beside the run, with its reversal; the page names the key (S) that
+// switches them. A body that prefers neither way (dents on its long axis) keeps one run. The
+// switching itself is checked in Chromium (check_report.py).
+TEST(Report, ThePlayerHoldsTheBodySpunTheOtherWay) {
+  const fs::path dir = emptyDir("both-spins");
+  auto report = [&](const std::string& dents_at) -> std::optional<nlohmann::json> {
+    const std::string csv = (dir / "rattleback.csv").string();
+    if (rattleback("simulate " + scene("rattleback") + " --set body.dents.at=" + dents_at +
+                   " --duration 3 -q -o " + csv)
+                .status != 0 ||
+        rattleback("report " + dir.string() + " -q").status != 0)
+      return nlohmann::json("failed");
+    if (!fs::exists(dir / "rattleback.player.js")) return std::nullopt;  // (no bundle built)
+    const std::string script = readText(dir / "rattleback.player.js");
+    const std::size_t start = script.find("] = ") + 4, end = script.rfind(';');
+    return nlohmann::json::parse(script.substr(start, end - start));
+  };
+  const auto mirrored = report("[-0.73,4.50]");
+  if (!mirrored) GTEST_SKIP() << "no player bundle in this build";
+  ASSERT_TRUE(mirrored->is_object()) << *mirrored;
+  EXPECT_EQ(mirrored->at("reversals").size(), 0u);  // the run: -5 rad/s, the preferred way
+  EXPECT_EQ(mirrored->at("spun"), -5);
+  ASSERT_TRUE(mirrored->contains("other"));
+  const nlohmann::json& other = mirrored->at("other");
+  EXPECT_EQ(other.at("spun"), 5);
+  ASSERT_EQ(other.at("reversals").size(), 1u) << other.at("reversals");
+  EXPECT_GT(other["reversals"][0].get<double>(), 1.5);
+  EXPECT_LT(other["reversals"][0].get<double>(), 3);
+  EXPECT_NEAR(other.at("t").back().get<double>(), 3, 1e-9);
+  EXPECT_NEAR(other.at("spin")[0].get<double>(), 5, 0.05);
+  EXPECT_LT(other.at("spin").back().get<double>(), 0);
+  const std::string html = readText(dir / "index.html");
+  EXPECT_NE(html.find("<kbd>S</kbd> the other spin"), std::string::npos);
+  // Dents on the long axis: no preferred direction, one run, and the page says no S.
+  const auto symmetric = report("[0,4.50]");
+  ASSERT_TRUE(symmetric && symmetric->is_object());
+  EXPECT_FALSE(symmetric->contains("other"));
+  EXPECT_FALSE(symmetric->contains("spun"));
+  EXPECT_EQ(readText(dir / "index.html").find("<kbd>S</kbd>"), std::string::npos);
+}
+
 // The measured cell gives every reversal of the run, as the player's n(t) plot counts them: a
 // new user's kane-levinson-long said "reversed at 2.807 s" beside a plot of 4 reversals. 33 s
 // of it reverse 3 times (2.807, 17.397, 31.936 s); of more than 4, the cell names the first 4

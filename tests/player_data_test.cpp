@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "render/views.hpp"
+#include "scene/loader.hpp"
+#include "tasks/run_json.hpp"
 
 namespace {
 
@@ -58,6 +60,83 @@ TEST(Player, DataCarriesTheRenderersViews) {
     EXPECT_FLOAT_EQ(v.at("margin").get<double>(), p.margin);
   }
   EXPECT_EQ(data["views"][0].at("toward_eye")[1].dump(), "-0.55");
+}
+
+// The default body with its dents mirrored (at: [-0.73, 4.50]) prefers clockwise: spun -5 rad/s
+// as its scene spins it, it keeps turning, and the player of that run alone showed no reversal (a
+// teacher's trial). The player's data carries the body spun +5 rad/s beside it, simulated by
+// otherSpinOf, which reverses; the run's own spin goes with it.
+sim::Model mirroredModel(const std::string& dents_at = "[-0.73, 4.50]") {
+  const std::string file = std::string(RATTLEBACK_SOURCE_DIR) + "/scenes/rattleback.yaml";
+  const std::vector<scene::KeyValue> values = {{"body.dents.at", dents_at},
+                                               {"simulation.duration", "4"}};
+  auto loaded = scene::loadWithValues(scene::readSceneFile(file).value(), file, values, "test");
+  EXPECT_TRUE(loaded) << loaded.error().text();
+  auto model = scene::loadModel(loaded.value());
+  EXPECT_TRUE(model) << model.error().text();
+  return model.value();
+}
+
+nlohmann::json dataOf(const std::string& script) {
+  const std::size_t start = script.find("] = ") + 4, end = script.rfind(';');
+  return nlohmann::json::parse(script.substr(start, end - start));
+}
+
+TEST(Player, DataHoldsTheBodySpunTheOtherWay) {
+  const sim::Model model = mirroredModel();
+  ASSERT_EQ(model.initial.spin, -5);
+  const std::optional<tasks::SpunRun> other =
+      tasks::otherSpinOf(model, tasks::modelJson(model), 500);
+  ASSERT_TRUE(other);
+  EXPECT_EQ(other->spun, 5);
+  // Spun +5 rad/s the mirrored body reverses, about when the default body spun -5 does
+  // (2.37 s; the tilt is not mirrored with it, so not at the same time).
+  ASSERT_FALSE(other->reversals.empty());
+  EXPECT_GT(other->reversals[0], 1.5);
+  EXPECT_LT(other->reversals[0], 3.5);
+  EXPECT_NEAR(other->poses.front().spin, 5, 0.05);
+  EXPECT_LT(other->poses.back().spin, 0);  // turned back
+  EXPECT_EQ(other->poses.back().t, 4);     // the run's duration, not the file's 8 s
+  tasks::PlayerRun run;
+  run.id = "mirrored";
+  run.poses = {tasks::Pose{}, tasks::Pose{0.01}};
+  run.other = other;
+  const nlohmann::json data = dataOf(tasks::playerScript(run));
+  EXPECT_EQ(data.at("spun"), -5);
+  const nlohmann::json& shown = data.at("other");
+  EXPECT_EQ(shown.at("spun"), 5);
+  EXPECT_EQ(shown.at("t").size(), other->poses.size());
+  EXPECT_EQ(shown.at("spin").size(), other->poses.size());
+  ASSERT_EQ(shown.at("reversals").size(), other->reversals.size());
+  EXPECT_NEAR(shown["reversals"][0].get<double>(), other->reversals[0], 1e-6);
+  // A run alone says no more than it did before.
+  run.other.reset();
+  EXPECT_FALSE(dataOf(tasks::playerScript(run)).contains("other"));
+  EXPECT_FALSE(dataOf(tasks::playerScript(run)).contains("spun"));
+}
+
+// The run's other way is of the run's own model: the spin and duration its sidecar records
+// (a command's --spin, --duration), and nothing where there is none to show or the sidecar's model
+// is another: spin 0, a body that prefers neither way (its dents on its long axis), another
+// body.
+TEST(Player, TheOtherSpinIsOfTheRunsOwnModel) {
+  const sim::Model model = mirroredModel();
+  sim::Model run = model;  // simulate --spin 3 --duration 2
+  run.initial.spin = 3;
+  run.duration = 2;
+  const auto other = tasks::otherSpinOf(model, tasks::modelJson(run), 500);
+  ASSERT_TRUE(other);
+  EXPECT_EQ(other->spun, -3);
+  EXPECT_EQ(other->poses.back().t, 2);
+  run.initial.spin = 0;
+  EXPECT_FALSE(tasks::otherSpinOf(model, tasks::modelJson(run), 500));
+  // Dents on the long axis (at x = 0): the body is its own mirror image.
+  const sim::Model dentless = mirroredModel("[0, 4.50]");
+  EXPECT_FALSE(tasks::otherSpinOf(dentless, tasks::modelJson(dentless), 500));
+  sim::Model heavier = model;  // not a key a command sets: another body
+  heavier.gravity = 9.7;
+  EXPECT_FALSE(tasks::otherSpinOf(model, tasks::modelJson(heavier), 500));
+  EXPECT_FALSE(tasks::otherSpinOf(model, nlohmann::json(), 500));
 }
 
 }  // namespace

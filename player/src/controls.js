@@ -1,5 +1,5 @@
 // The player's controls: its elements (the picture's stage, the bar of buttons, the views, the
-// read-outs and the plot's box), the pointer and keys, and the read-outs written as time goes.
+// spins, the read-outs and the plot's box), the pointer and keys, and the read-outs written as time goes.
 import { el } from './style.js';
 import { formatStep } from './data.js';
 
@@ -28,7 +28,7 @@ export const controlsMethods = {
     this.stage.appendChild(this.canvas);
     main.appendChild(this.stage);
     main.appendChild(this.buildBar());
-    if (this.ticks) main.appendChild(this.ticks);
+    main.appendChild(this.ticks);
     main.appendChild(this.buildViews());
     root.append(main, this.buildSide());
     c.appendChild(root);
@@ -44,16 +44,7 @@ export const controlsMethods = {
     this.forwardButton = button('|▶', 'Step forward one sample (→)', () => this.step(1), 'rbp-forward');
     // To the moment the spin passes zero, the picture a lesson stops at (hard to find by
     // stepping with the arrows, or by a click on the plot that lands near it).
-    const reversals = this.run.reversals || [];
-    this.reversalButton = button(
-      '⟲ Reversal',
-      reversals.length
-        ? 'Go to the next reversal, where the spin passes zero (R)'
-        : 'No reversal in this run',
-      () => this.gotoReversal(),
-      'rbp-reversal',
-    );
-    this.reversalButton.disabled = reversals.length === 0;
+    this.reversalButton = button('⟲ Reversal', '', () => this.gotoReversal(), 'rbp-reversal');
     // Full screen, for a projector: the picture and its read-outs as large as the screen allows.
     // (Words, not a symbol: the page's fonts may lack the full-screen glyph, drawn as a box.)
     this.fullButton = button(
@@ -70,6 +61,7 @@ export const controlsMethods = {
       'rbp-present-button',
     );
     this.buildSlider();
+    this.markReversals();
     this.buildSpeed();
     bar.append(
       this.backButton,
@@ -94,19 +86,29 @@ export const controlsMethods = {
     this.slider.value = String(this.t0);
     this.slider.setAttribute('aria-label', 'time (s)');
     // The reversals as ticks on the slider's track (a datalist: the browser draws them where
-    // the thumb would stand, and the thumb snaps to one it comes near).
-    const reversals = this.run.reversals || [];
-    if (reversals.length) {
-      this.ticks = el('datalist');
-      this.ticks.id = `rbp-reversals-${this.run.id || 'run'}-${Math.random().toString(36).slice(2)}`;
-      for (const r of reversals) {
-        const o = el('option');
-        o.value = String(r);
-        this.ticks.appendChild(o);
-      }
-      this.slider.setAttribute('list', this.ticks.id);
-    }
+    // the thumb would stand, and the thumb snaps to one it comes near); markReversals fills it.
+    this.ticks = el('datalist');
+    this.ticks.id = `rbp-reversals-${this.run.id || 'run'}-${Math.random().toString(36).slice(2)}`;
     this.slider.addEventListener('input', () => this.setTime(parseFloat(this.slider.value), false));
+  },
+
+  // The played run's reversals on the Reversal button and the slider's ticks (again when the
+  // run is switched: spins.js).
+  markReversals() {
+    const reversals = this.run.reversals || [];
+    this.reversalButton.title = reversals.length
+      ? 'Go to the next reversal, where the spin passes zero (R)'
+      : 'No reversal in this run';
+    this.reversalButton.disabled = reversals.length === 0;
+    this.ticks.textContent = '';
+    for (const r of reversals) {
+      const o = el('option');
+      o.value = String(r);
+      this.ticks.appendChild(o);
+    }
+    // (no list without ticks: the browser would draw an empty one)
+    if (reversals.length) this.slider.setAttribute('list', this.ticks.id);
+    else this.slider.removeAttribute('list');
   },
 
   buildSpeed() {
@@ -169,6 +171,8 @@ export const controlsMethods = {
   buildSide() {
     const side = el('div', 'rbp-side');
     side.appendChild(el('div', 'rbp-title', this.run.title || this.run.id || 'run'));
+    const spins = this.buildSpins();
+    if (spins) side.appendChild(spins);
     this.readTime = el('div', 'rbp-read rbp-time');
     this.readSpin = el('div', 'rbp-read rbp-spin');
     this.readSense = el('div', 'rbp-read rbp-sense');
@@ -184,25 +188,28 @@ export const controlsMethods = {
     this.cursorDot = el('div', 'rbp-dot');
     plotBox.append(this.plot, this.cursorLine, this.cursorDot);
     side.appendChild(plotBox);
-    const nrev = (this.run.reversals || []).length;
-    side.appendChild(
-      el(
-        'div',
-        'rbp-help',
-        (nrev
-          ? `${nrev} reversal${nrev === 1 ? '' : 's'} (dashed lines; ticks on the time slider)`
-          : 'No reversal in this run') +
-          (this.forecast ? ", the averaged theory's forecast of the first (violet)" : '') +
-          '. The arrow around the body turns as it does: orange counter-clockwise, green clockwise.' +
-          ' Drag: orbit, right-drag: pan, wheel: zoom. ' +
-          'Keys: space play/pause, ← → step one sample (' +
-          formatStep(this.run.t) +
-          '), ' +
-          'Home / End the start / end, R the next reversal, F full screen, ' +
-          'P present (full screen, large read-outs; Esc leaves).',
-      ),
-    );
+    this.help = el('div', 'rbp-help', this.helpText());
+    side.appendChild(this.help);
     return side;
+  },
+
+  // The help under the plot: the played run's reversals, and the keys.
+  helpText() {
+    const nrev = (this.run.reversals || []).length;
+    return (
+      (nrev
+        ? `${nrev} reversal${nrev === 1 ? '' : 's'} (dashed lines; ticks on the time slider)`
+        : 'No reversal in this run') +
+      (this.forecast ? ", the averaged theory's forecast of the first (violet)" : '') +
+      '. The arrow around the body turns as it does: orange counter-clockwise, green clockwise.' +
+      ' Drag: orbit, right-drag: pan, wheel: zoom. ' +
+      'Keys: space play/pause, ← → step one sample (' +
+      formatStep(this.run.t) +
+      '), ' +
+      'Home / End the start / end, R the next reversal, ' +
+      (this.runs.length > 1 ? 'S the other spin, ' : '') +
+      'F full screen, P present (full screen, large read-outs; Esc leaves).'
+    );
   },
 
   bindEvents() {
@@ -257,6 +264,8 @@ export const controlsMethods = {
       this.toEnd(e.key === 'End');
     } else if (e.key === 'r' || e.key === 'R') {
       this.gotoReversal();
+    } else if ((e.key === 's' || e.key === 'S') && this.runs.length > 1) {
+      this.switchRun();
     } else if (e.key === 'f' || e.key === 'F') {
       this.toggleFullScreen();
     } else if (e.key === 'p' || e.key === 'P') {

@@ -33,8 +33,8 @@ export const cueMethods = {
     this.reversalLabel.className = 'rbp-reversal-label';
     this.reversalLabel.hidden = true;
     this.stage.appendChild(this.reversalLabel);
-    let m = 0;
-    for (const v of this.run.spin) m = Math.max(m, Math.abs(v));
+    let m = 0; // (over every run played: the arrow of the same spin is as long in each)
+    for (const run of this.runs) for (const v of run.spin) m = Math.max(m, Math.abs(v));
     this.cueRange = m > 0 ? m : 1;
     this.cuePoint = new Vector3();
     this.cueSense = 0; // the sense drawn: +1, −1 or 0 (none), for tests and screenshots

@@ -1,6 +1,6 @@
 // A run's data as the player reads it (window.RATTLEBACK_RUNS[ID], tasks/player_data.hpp): its
-// checks, the body's geometry, the views' cameras, the forecast and the words for lengths and
-// steps.
+// checks, its runs (the body spun either way), the body's geometry, the views' cameras, the
+// forecast and the words for lengths and steps.
 import { BufferAttribute, BufferGeometry } from 'three';
 
 export const SERIES = ['t', 'x', 'y', 'z', 'qw', 'qx', 'qy', 'qz', 'spin'];
@@ -17,6 +17,18 @@ export function problemWith(run) {
   if (run.top.length + run.bottom.length === 0) return 'no points';
   for (let i = 1; i < n; i++) if (!(run.t[i] > run.t[i - 1])) return 'times not increasing';
   return '';
+}
+
+// The runs a player offers: the data's own, and where it carries one (`other`: the series
+// t … spin and the reversals, and `spun`, rad/s), the same body spun the other way, which shares
+// the body, the views and the framing. An `other` that cannot be played is left out: the run's
+// own still plays.
+export function runsOf(run) {
+  const other = run.other;
+  if (!other || typeof other !== 'object' || !Number.isFinite(run.spun)) return [run];
+  const spun = Object.assign({}, run, other, { other: null });
+  if (problemWith(spun) || !Number.isFinite(spun.spun)) return [run];
+  return [run, spun];
 }
 
 // The spacing of the body's points: the median distance to the nearest neighbour over a sample

@@ -78,19 +78,19 @@ function tileOf(size) {
 
 export const floorMethods = {
   // FOG's band reaches as far as the floor did when it was a plane over the body's whole
-  // wander and far enough beyond it to fade out.
+  // wander (every run's: the floor is built once) and far enough beyond it to fade out.
   floorReach(size) {
-    const run = this.run;
     let x0 = Infinity,
       x1 = -Infinity,
       y0 = Infinity,
       y1 = -Infinity;
-    for (let i = 0; i < this.n; i++) {
-      x0 = Math.min(x0, run.x[i]);
-      x1 = Math.max(x1, run.x[i]);
-      y0 = Math.min(y0, run.y[i]);
-      y1 = Math.max(y1, run.y[i]);
-    }
+    for (const run of this.runs)
+      for (let i = 0; i < run.t.length; i++) {
+        x0 = Math.min(x0, run.x[i]);
+        x1 = Math.max(x1, run.x[i]);
+        y0 = Math.min(y0, run.y[i]);
+        y1 = Math.max(y1, run.y[i]);
+      }
     const margin = 14 * size + 20 * this.framing.radius;
     return Math.hypot(x1 - x0 + 2 * margin, y1 - y0 + 2 * margin);
   },

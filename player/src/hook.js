@@ -1,6 +1,7 @@
 // The test hook (element.rbPlayer): what the browser tests and bench/player_speed.py read and
 // drive.
 import { Vector3 } from 'three';
+import { runLabel } from './spins.js';
 
 export const hookMethods = {
   hook() {
@@ -125,6 +126,16 @@ export const hookMethods = {
       },
       // [frames drawn in part, frames drawn] since the player was built.
       drawCounts: () => [self.partialFrames, self.drawnFrames],
+      // The runs played, each as its button says it ("−5 rad/s: reverses at 2.37 s"), the one
+      // played (its index), its reversals (s), and switching: by index, or as S does.
+      runs: () => self.runs.map(runLabel),
+      runIndex: () => self.runIndex,
+      reversals: () => (self.run.reversals || []).slice(),
+      selectRun(k) {
+        self.selectRun(+k);
+        return self.runIndex;
+      },
+      spinButtons: () => (self.spinButtons || []).slice(),
       // The forecast first reversal marked on the n(t) plot (s), or null; and where its line
       // is, in the plot canvas's pixels.
       forecast: () => (self.forecast ? self.forecast.time : null),

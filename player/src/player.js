@@ -4,7 +4,7 @@
 // script ID.player.js that stores the run in window.RATTLEBACK_RUNS[ID] (see README.md beside
 // this folder's package.json for the fields); this script, loaded last, builds a player in each
 // such element. Its modules (one job each: scene, floor, camera, timeline, plot, controls, draw,
-// hook, cue, present) are bundled with three.js into one classic script (build.sh): no module imports, no
+// hook, cue, present, spins) are bundled with three.js into one classic script (build.sh): no module imports, no
 // fetch, nothing from the network, so the page works from file://.
 //
 // Frames: world z is up and the floor is the plane z = 0, as in the data; the body's points are
@@ -14,7 +14,7 @@
 // again starts it over).
 import { Matrix3, Matrix4, Quaternion, Vector2, Vector3 } from 'three';
 import { el, injectStyle } from './style.js';
-import { forecastOf, problemWith, viewsOf } from './data.js';
+import { forecastOf, problemWith, runsOf, viewsOf } from './data.js';
 import { sceneMethods } from './scene.js';
 import { floorMethods } from './floor.js';
 import { cameraMethods } from './camera.js';
@@ -25,6 +25,7 @@ import { drawMethods } from './draw.js';
 import { hookMethods } from './hook.js';
 import { cueMethods } from './cue.js';
 import { presentMethods } from './present.js';
+import { spinsMethods } from './spins.js';
 
 const players = [];
 
@@ -32,10 +33,11 @@ const players = [];
 class Player {
   constructor(container, run) {
     this.container = container;
-    this.run = run;
-    this.n = run.t.length;
-    this.t0 = run.t[0];
-    this.tEnd = run.t[this.n - 1];
+    // The runs it plays: the data's own, and the body spun the other way where the data
+    // carries it (spins.js); the one played is this.run.
+    this.runs = runsOf(run);
+    this.ownForecast = forecastOf(container, run.t[0], run.t[run.t.length - 1]);
+    this.useRun(0);
     this.time = this.t0;
     this.playing = false;
     this.speed = 1;
@@ -64,7 +66,6 @@ class Player {
     this.axis = new Vector3();
     this.forward = new Vector3();
     this.spinNow = run.spin[0];
-    this.forecast = forecastOf(container, this.t0, this.tEnd);
     this.qa = new Quaternion();
     this.qb = new Quaternion();
     this.buildDom();
@@ -96,6 +97,7 @@ Object.assign(
   hookMethods,
   cueMethods,
   presentMethods,
+  spinsMethods,
 );
 
 // ---------------------------------------------------------------------------------------------

@@ -15,8 +15,9 @@ export const plotMethods = {
     this.plot.width = Math.round(w * dpr);
     this.plot.height = Math.round(h * dpr);
     this.plotDrawn = null;
+    // One scale for every run the player plays: switched, the two spins' curves compare.
     let m = 0;
-    for (const v of this.run.spin) m = Math.max(m, Math.abs(v));
+    for (const run of this.runs) for (const v of run.spin) m = Math.max(m, Math.abs(v));
     m = m > 0 ? 1.1 * m : 1;
     const box = { left: 34, right: w - 8, top: 8, bottom: h - 20 };
     const span = this.tEnd - this.t0 || 1;
@@ -112,20 +113,11 @@ export const plotMethods = {
     g.fillText('forecast', x + (left ? -2 : 2), box.top + 2);
   },
 
-  // n(t), at most about 600 points, and the reversals on it: yellow dots.
+  // n(t), at most about 600 points, and the reversals on it: yellow dots. The other spin's
+  // n(t), where there is one, pale under it: the two runs compared at a glance.
   drawCurve(g, L) {
-    const { box } = L;
-    g.strokeStyle = '#2a2a2a';
-    g.lineWidth = 1.3;
-    g.beginPath();
-    const { t, spin } = this.run;
-    const every = Math.max(1, Math.floor(this.n / 600));
-    for (let i = 0; i < this.n; i += every) {
-      if (i === 0) g.moveTo(L.x(t[i]), L.y(spin[i]));
-      else g.lineTo(L.x(t[i]), L.y(spin[i]));
-    }
-    g.lineTo(L.x(t[this.n - 1]), L.y(spin[this.n - 1]));
-    g.stroke();
+    for (const run of this.runs) if (run !== this.run) this.strokeCurve(g, L, run, '#c4c7ce', 1);
+    this.strokeCurve(g, L, this.run, '#2a2a2a', 1.3);
     g.fillStyle = REVERSAL_DOT;
     g.strokeStyle = REVERSAL_LINE;
     g.lineWidth = 1;
@@ -135,6 +127,21 @@ export const plotMethods = {
       g.fill();
       g.stroke();
     }
+  },
+
+  strokeCurve(g, L, run, color, width) {
+    g.strokeStyle = color;
+    g.lineWidth = width;
+    g.beginPath();
+    const { t, spin } = run;
+    const n = t.length;
+    const every = Math.max(1, Math.floor(n / 600));
+    for (let i = 0; i < n; i += every) {
+      if (i === 0) g.moveTo(L.x(t[i]), L.y(spin[i]));
+      else g.lineTo(L.x(t[i]), L.y(spin[i]));
+    }
+    g.lineTo(L.x(t[n - 1]), L.y(spin[n - 1]));
+    g.stroke();
   },
 
   // The axes' labels: ±the largest spin, 0, the first and last times.

@@ -19,6 +19,11 @@ export const STYLE = `
 .rbp-label{font-size:12px;color:#555;margin-right:2px}
 .rbp-side{flex:0 0 270px;max-width:100%}
 .rbp-title{font-weight:600;margin-bottom:4px;word-break:break-word}
+.rbp-spins{display:flex;flex-direction:column;align-items:stretch;gap:3px;margin:2px 0 6px}
+.rbp .rbp-spun{text-align:left;font-size:12.5px}
+.rbp.rbp-present .rbp-spun:not(.rbp-on){display:none}
+.rbp.rbp-present .rbp-spun{font-size:max(18px,2.2vh)}
+.rbp.rbp-present .rbp-spins .rbp-label{display:none}
 .rbp-read{font:13px/1.5 ui-monospace,"DejaVu Sans Mono",Menlo,Consolas,monospace;white-space:pre}
 .rbp-plotbox{position:relative;width:272px;margin-top:6px}
 .rbp-plot{display:block;width:270px;height:130px;border:1px solid #c9ccd4;border-radius:3px;background:#fff;cursor:crosshair}

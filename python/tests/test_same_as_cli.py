@@ -589,3 +589,33 @@ def test_a_sweep_given_columns_holds_them_with_the_command_lines_values(tmp_path
     # A table without status still warns when every run was refused (the CLI exits 2).
     with pytest.warns(rb.RunWarning, match="every run was refused; the first: argument vary: body.mass"):
         rb.sweep(base, {"body.mass": [-1.0]}, duration=0.1, columns=["first_reversal_s"])
+
+
+def test_the_players_other_spin_is_the_reports(tmp_path):
+    """The player's data made in Python (make_page.py's dev page) carries the body spun the other
+    way as `report`'s does: the same C++ function on the run's own model. The default body with
+    its dents mirrored, spun -5 rad/s for 3 s, keeps turning; spun +5 rad/s it reverses."""
+    scene = rb.Scene.from_file(scene_path("rattleback.yaml")).with_values({"body.dents.at": [-0.73, 4.5]})
+    script = rb._core.player_script(scene._loaded, rb.simulate(scene, duration=3)._run, "rattleback")
+    data = json.loads(script[script.index("] = ") + 4 : script.rindex(";")])
+    assert data["spun"] == -5 and data["reversals"] == []
+    assert data["other"]["spun"] == 5 and len(data["other"]["reversals"]) == 1
+    assert data["other"]["t"][-1] == 3  # the run's duration, not the scene's 8 s
+    csv_path = str(tmp_path / "rattleback.csv")
+    cli(
+        "simulate",
+        scene_path("rattleback.yaml"),
+        "--set",
+        "body.dents.at=[-0.73, 4.5]",
+        "--duration",
+        "3",
+        "-q",
+        "-o",
+        csv_path,
+    )
+    cli("report", str(tmp_path), "-q")
+    if not (tmp_path / "rattleback.player.js").exists():
+        pytest.skip("no player bundle in this build (no node and npm)")
+    # (the run's own poses are the CSV's text in the report, the samples' doubles here)
+    other = lambda text: text[text.index(',"spun":') :]
+    assert other(script) == other((tmp_path / "rattleback.player.js").read_text())

@@ -75,7 +75,7 @@ std::vector<std::string> sceneOrder(const Folder& folder) {
 }
 
 void writePage(std::ostream& out, const fs::path& dir, const Folder& folder,
-               const std::vector<std::string>& players) {
+               const std::vector<PlayerPlace>& players) {
   out << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
          "<meta name=\"viewport\" content=\"width=device-width\">"
          "<title>rattleback: results</title><style>"
@@ -83,15 +83,18 @@ void writePage(std::ostream& out, const fs::path& dir, const Folder& folder,
       << "<p>What the runs left in this folder, by scene. Made by rattleback " RATTLEBACK_VERSION
          " (<code>rattleback report</code>). What each figure means: the documentation, "
       << documentationWhere() << ".</p>\n";
-  for (const std::string& name : sceneOrder(folder))
+  for (const std::string& name : sceneOrder(folder)) {
+    const auto player = std::find_if(players.begin(), players.end(),
+                                     [&](const PlayerPlace& p) { return p.id == name; });
     writeScene(out, dir, name, folder.scenes.at(name),
-               std::find(players.begin(), players.end(), name) != players.end());
+               player == players.end() ? PlayerRuns::None : player->runs);
+  }
   for (const SweepFiles& sweep : folder.sweeps) writeSweep(out, sweep);
   writeOthers(out, folder.others);
   // Classic scripts (a page opened from disk may not import modules or fetch): each run's
   // data, then the player, which finds every .rb-player.
-  for (const std::string& id : players)
-    out << "<script src=\"" << url(id + ".player.js") << "\"></script>\n";
+  for (const PlayerPlace& player : players)
+    out << "<script src=\"" << url(player.id + ".player.js") << "\"></script>\n";
   if (!players.empty()) out << "<script src=\"" << url(kPlayerBundle) << "\"></script>\n";
   out << "<script>" << kVideoScript << "</script>\n</body></html>\n";
 }

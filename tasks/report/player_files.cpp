@@ -15,6 +15,7 @@
 #include "tasks/player_data.hpp"
 #include "tasks/report/run_scene.hpp"
 #include "tasks/report/sidecars.hpp"
+#include "tasks/simulate.hpp"
 #include "util/assets.hpp"
 
 namespace tasks::report {
@@ -67,15 +68,16 @@ std::vector<Pose> posesOf(const fs::path& csv) {
   return poses;
 }
 
-// DIR/<id>.player.js for a scene with telemetry: its poses, reversals and drawn points; false
-// (the page then has no player for it) when the CSV, its sidecar or its scene cannot be read;
-// an error when the file cannot be written.
-rb::Result<bool> writePlayerData(const fs::path& dir, const std::string& id, const SceneFiles& f,
-                                 std::optional<double> drawn_frame,
-                                 std::vector<std::string>& notes) {
-  if (!f.has(".csv") || !f.has(".csv.json")) return false;
+// DIR/<id>.player.js for a scene with telemetry: its poses, reversals and drawn points, and
+// the body spun the other way where the player offers it (otherSpinOf); None (the page then has
+// no player for it) when the CSV, its sidecar or its scene cannot be read; an error when the
+// file cannot be written.
+rb::Result<PlayerRuns> writePlayerData(const fs::path& dir, const std::string& id,
+                                       const SceneFiles& f, std::optional<double> drawn_frame,
+                                       std::vector<std::string>& notes) {
+  if (!f.has(".csv") || !f.has(".csv.json")) return PlayerRuns::None;
   const std::optional<RunRecord> sidecar = readRunRecord(dir / f.at(".csv.json"));
-  if (!sidecar || sidecar->command != "simulate") return false;
+  if (!sidecar || sidecar->command != "simulate") return PlayerRuns::None;
   const RunModel found = runModelOf(*sidecar, dir);
   if (!found.model) {
     if (!found.why.empty())
@@ -83,21 +85,28 @@ rb::Result<bool> writePlayerData(const fs::path& dir, const std::string& id, con
     // The data an earlier report wrote for this run would replay it on another body.
     std::error_code ec;
     fs::remove(dir / (id + ".player.js"), ec);
-    return false;
+    return PlayerRuns::None;
   }
   std::vector<Pose> poses = posesOf(dir / f.at(".csv"));
-  if (poses.size() < 2) return false;
+  if (poses.size() < 2) return PlayerRuns::None;
   std::vector<double> reversals;
   for (const Number& r : sidecar->reversals_s)
     if (r) reversals.push_back(*r);
   // Framed as the scene's videos and stills were drawn (--frame), else as its video.frame says.
-  const PlayerRun run = playerRunOf(id, *found.model, drawn_frame.value_or(found.frame),
-                                    std::move(poses), std::move(reversals));
+  PlayerRun run = playerRunOf(id, *found.model, drawn_frame.value_or(found.frame), std::move(poses),
+                              std::move(reversals));
+  // Beside it, the body spun the other way, simulated here: a body spun the way it prefers
+  // shows no reversal, and its teacher wants to show it reverse. Whether or not --both's videos
+  // are in the folder: the player is where the reversal is replayed and stepped through, and it
+  // costs a few ms here, where the videos cost minutes.
+  if (const std::optional<nlohmann::json> sidecar_json = readJson(dir / f.at(".csv.json")))
+    run.other = otherSpinOf(*found.model, field(*sidecar_json, "model"),
+                            sidecar->rate_hz.value_or(kDefaultRate));
   auto out = AtomicOutput::open((dir / (id + ".player.js")).string());
   if (!out) return out.error();
   out->stream() << playerScript(run);
   if (auto e = out->commit(); !e) return e.error();
-  return true;
+  return run.other ? PlayerRuns::BothSpins : PlayerRuns::One;
 }
 
 // The bundle copied beside the page; false when the build made none (no node and npm), an
@@ -129,19 +138,19 @@ std::map<std::string, std::optional<double>> drawnFrames(const fs::path& dir) {
 
 }  // namespace
 
-rb::Result<std::vector<std::string>> writePlayers(const fs::path& dir, const Folder& folder,
+rb::Result<std::vector<PlayerPlace>> writePlayers(const fs::path& dir, const Folder& folder,
                                                   std::vector<std::string>& notes) {
-  std::vector<std::string> players;
+  std::vector<PlayerPlace> players;
   const rb::Result<bool> bundle = copyPlayerBundle(dir);
   if (!bundle) return bundle.error();
   if (!bundle.value()) return players;
   const auto drawn = drawnFrames(dir);
   for (const auto& [name, files] : folder.scenes) {
     const auto frame = drawn.find(name);
-    const rb::Result<bool> data = writePlayerData(
+    const rb::Result<PlayerRuns> data = writePlayerData(
         dir, name, files, frame == drawn.end() ? std::nullopt : frame->second, notes);
     if (!data) return data.error();
-    if (data.value()) players.push_back(name);
+    if (data.value() != PlayerRuns::None) players.push_back({name, data.value()});
   }
   std::error_code ec;
   if (players.empty()) fs::remove(dir / kPlayerBundle, ec);  // nothing to play

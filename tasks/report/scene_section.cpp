@@ -161,15 +161,24 @@ std::optional<nlohmann::json> theoryOf(const fs::path& dir, const SceneFiles& f,
 
 // The player's place, with the averaged theory's forecast first reversal for its n(t) plot
 // (player/README.md: data-forecast; the player marks it when it applies).
+// With both spins, the page says so and names the key that switches them (S): the player's
+// buttons say it too, but the page's paragraph is where its keys are looked up.
 void writePlayerPlace(std::ostream& out, const std::string& name,
-                      const std::optional<nlohmann::json>& theory) {
+                      const std::optional<nlohmann::json>& theory, PlayerRuns runs) {
   std::string forecast;
   if (theory && field(*theory, "predicted_first_reversal").is_object())
     forecast =
         " data-forecast=\"" + escape(field(*theory, "predicted_first_reversal").dump()) + "\"";
-  out << "<h3>Turn it around</h3><p>The run replayed in 3D: drag to orbit, scroll to zoom. "
-         "Keys: <kbd>space</kbd> plays and pauses, <kbd>←</kbd> <kbd>→</kbd> step, "
-         "<kbd>R</kbd> the next reversal, <kbd>F</kbd> full screen, <kbd>P</kbd> present (full "
+  const bool both = runs == PlayerRuns::BothSpins;
+  out << "<h3>Turn it around</h3><p>"
+      << (both ? "The run replayed in 3D, and the same body spun the other way (simulated for "
+                 "this page): the buttons beside the picture switch between them, each saying "
+                 "what its run did. Drag to orbit, scroll to zoom. "
+               : "The run replayed in 3D: drag to orbit, scroll to zoom. ")
+      << "Keys: <kbd>space</kbd> plays and pauses, <kbd>←</kbd> <kbd>→</kbd> step, "
+         "<kbd>R</kbd> the next reversal, "
+      << (both ? "<kbd>S</kbd> the other spin, " : "")
+      << "<kbd>F</kbd> full screen, <kbd>P</kbd> present (full "
          "screen, large read-outs, for a classroom), <kbd>Esc</kbd> leaves either. The arrow "
          "around the body turns as it does: orange counter-clockwise, green clockwise.</p>"
          "<div class=\"rb-player\" data-run=\""
@@ -179,14 +188,14 @@ void writePlayerPlace(std::ostream& out, const std::string& name,
 }  // namespace
 
 void writeScene(std::ostream& out, const fs::path& dir, const std::string& name,
-                const SceneFiles& f, bool player) {
+                const SceneFiles& f, PlayerRuns player) {
   out << "<section id=\"" << escape(name) << "\"><h2>" << escape(name) << "</h2>\n";
   std::optional<RunRecord> run;
   if (f.has(".csv.json")) run = readRunRecord(dir / f.at(".csv.json"));
   const std::optional<nlohmann::json> theory = theoryOf(dir, f, run);
   writeOtherVersions(out, f, run);
   writeVideos(out, f, theory, runsOfTheScene(dir, f, run));
-  if (player) writePlayerPlace(out, name, theory);
+  if (player != PlayerRuns::None) writePlayerPlace(out, name, theory, player);
   writeAnalysis(out, f, theory, run);
   writeMoreRuns(out, dir, f);
   for (const std::string& file : f.more_videos)

@@ -6,12 +6,13 @@
 #include <string>
 
 #include "tasks/report/inventory.hpp"
+#include "tasks/report/player_files.hpp"
 
 namespace tasks::report {
 
-/// The section of the scene `name`, whose files are `f` in `dir`; `player`: the scene has a
-/// 3D player (its DIR/<name>.player.js is written).
+/// The section of the scene `name`, whose files are `f` in `dir`; `player`: what the scene's
+/// 3D player replays (its DIR/<name>.player.js is written), None where it has none.
 void writeScene(std::ostream& out, const fs::path& dir, const std::string& name,
-                const SceneFiles& f, bool player);
+                const SceneFiles& f, PlayerRuns player);
 
 }  // namespace tasks::report

@@ -7,9 +7,11 @@ currentTime advances when it plays; and no image or video is drawn larger than i
 For a classroom, at a 1280 × 720 and a 1920 × 1080 viewport: no video has the
 browser's controls (they lie over its bottom edge, where the inset is drawn) and each has the
 page's own bar below it, not over it; the player's keys, P (present) among them, are listed on
-the page; present mode (P) fills the viewport with the picture, whole, and large read-outs that
-lie inside it, and Esc leaves it. With SCREENSHOT_DIR, the page at its first video and the player
-in present mode are saved there at both sizes (report-WxH.png, present-WxH.png), to look at.
+the page; the player offers the body spun both ways, and its buttons and S switch the run
+played; present mode (P) fills the viewport with the picture, whole, and large read-outs that
+lie inside it, and Esc leaves it. With SCREENSHOT_DIR, the page at its first video, the player
+switched to its other spin and in present mode are saved there at both sizes (report-WxH.png,
+spins-WxH.png, present-WxH.png), to look at.
 
 Usage: check_report.py DIR EXPECTED_VIDEO_SECONDS [SCREENSHOT_DIR]
 Exit status 0 when every check passes, 1 when one fails (each failure printed), 77 when
@@ -85,10 +87,11 @@ def classroom(driver, size, failures, screenshots):
         "return arguments[0].previousElementSibling ? arguments[0].previousElementSibling.textContent : '';",
         player,
     )
-    for said in ["P present", "Esc", "F full screen", "R the next reversal"]:
+    for said in ["P present", "Esc", "F full screen", "R the next reversal", "S the other spin"]:
         if said not in keys:
             failures.append(f"{where}: the page does not say the player's key {said!r} ({keys!r})")
     driver.execute_script("arguments[0].scrollIntoView({block: 'start'});", player)
+    both_spins(driver, player, where, failures, screenshots)
     player.find_element(By.CSS_SELECTOR, ".rbp-title").click()
     ActionChains(driver).send_keys("p").perform()
     time.sleep(0.8)
@@ -141,6 +144,60 @@ def classroom(driver, size, failures, screenshots):
         "return arguments[0].querySelector('.rbp').classList.contains('rbp-present');", player
     ):
         failures.append(f"{where}: Esc did not leave present mode")
+
+
+def both_spins(driver, player, where, failures, screenshots):
+    """The default scene spun -5 rad/s reverses; its player offers it spun +5 rad/s too, which
+    does not: two buttons, each saying its spin and what its run did, the first pressed. A click
+    on the second plays that run (its read-out, its reversals: none, the Reversal button off), at
+    the same moment; S switches back."""
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.common.action_chains import ActionChains
+
+    state = """const p = arguments[0].rbPlayer, root = arguments[0].querySelector('.rbp');
+        return {labels: Array.from(root.querySelectorAll('.rbp-spun')).map(b => b.textContent),
+                pressed: Array.from(root.querySelectorAll('.rbp-spun')).map(b => b.getAttribute('aria-pressed')),
+                index: p.runIndex(), reversals: p.reversals(), time: p.time(), spin: p.spin(),
+                readout: root.querySelector('.rbp-read.rbp-spin').textContent,
+                reversalOff: root.querySelector('.rbp-reversal').disabled,
+                help: root.querySelector('.rbp-help').textContent};"""
+    driver.execute_script("arguments[0].rbPlayer.setTime(1.5);", player)
+    got = driver.execute_script(state, player)
+    first = "\u22125 rad/s: reverses at "
+    if (
+        len(got["labels"]) != 2
+        or not got["labels"][0].startswith(first)
+        or got["labels"][1] != "+5 rad/s: no reversal"
+    ):
+        failures.append(f"{where}: the player's spins are {got['labels']}, not −5 (reverses) and +5")
+        return
+    if got["pressed"] != ["true", "false"] or got["index"] != 0 or len(got["reversals"]) != 1:
+        failures.append(f"{where}: the scene's own run is not the one shown first: {got}")
+    # Its label is of the run's own reversal, to the hundredth.
+    if got["reversals"] and got["labels"][0] != f"{first}{got['reversals'][0]:.2f} s":
+        failures.append(f"{where}: the label {got['labels'][0]!r} is not its reversal {got['reversals']}")
+    player.find_elements(By.CSS_SELECTOR, ".rbp-spun")[1].click()
+    time.sleep(0.3)
+    other = driver.execute_script(state, player)
+    if (
+        other["index"] != 1
+        or other["pressed"] != ["false", "true"]
+        or other["reversals"] != []
+        or not other["reversalOff"]
+        or abs(other["time"] - 1.5) > 1e-9
+        or not other["spin"] > 1
+        or "+" not in other["readout"]
+        or "No reversal" not in other["help"]
+    ):
+        failures.append(f"{where}: the second spin's button did not play the run spun +5 rad/s: {other}")
+    if screenshots:
+        driver.save_screenshot(str(pathlib.Path(screenshots) / f"spins-{where}.png"))
+    player.find_element(By.CSS_SELECTOR, ".rbp-title").click()
+    ActionChains(driver).send_keys("s").perform()
+    time.sleep(0.3)
+    back = driver.execute_script(state, player)
+    if back["index"] != 0 or back["pressed"] != ["true", "false"] or not back["spin"] < -1:
+        failures.append(f"{where}: S did not switch back to the run spun -5 rad/s: {back}")
 
 
 def main():

@@ -31,7 +31,10 @@ and, for every .rb-player on it:
   - in every view the picture drawn with the player's shortcuts (the floor without depth, the
     contact shadow alone over it) is the one drawn without them, but for at most 30 pixels more
     than 3 levels apart, and in follow both are taken;
-  - the keys, with the player focused: space plays and pauses, the arrows step one sample.
+  - the keys, with the player focused: space plays and pauses, the arrows step one sample;
+  - a run with the body spun the other way ("other") has two buttons, each its spin and what its
+    run did, that switch the run played (its poses, slider, ticks, R), and S switches back; a
+    run without has none.
 DIR/single.html (one player; the keys work unfocused) and DIR/missing.html (a player with no
 run data at all: a note, no error) are checked too when there, and DIR/framed.html (the default
 body framed for twice its length, video.frame: drawn half as long as on single.html).
@@ -732,6 +735,7 @@ class Checker:
         self.speed_menu(element, where, run)
         self.teacher_controls(element, where, run)
         self.spin_cue(element, where, run)
+        self.spins(element, where, run_id)
 
     def pause_holds(self, element, where, run_id):
         # Pause stops at what is shown when it is pressed: the time, the slider, the read-outs,
@@ -1034,6 +1038,103 @@ class Checker:
         self.check(
             ticks == list(run.get("reversals") or []),
             f"{where}: the time slider's ticks {ticks} are not the reversals {run.get('reversals')}",
+        )
+
+    def spins(self, element, where, run_id):
+        """A run whose data carries the body spun the other way ("other") is played either way:
+        two buttons, each its spin and what its run did (from its own reversals), the first
+        pressed; the second plays the other run (its poses between samples, the slider's span
+        and ticks, R to its first reversal), at the same moment, and S switches back. A run
+        without one has no buttons, and S does nothing."""
+        data = self.js(
+            """const r = window.RATTLEBACK_RUNS[arguments[0]]; const o = r.other;
+            return {spun: r.spun, reversals: r.reversals, other: o ? {spun: o.spun, t: o.t,
+                    qw: o.qw, qx: o.qx, qy: o.qy, qz: o.qz, reversals: o.reversals} : null};""",
+            run_id,
+        )
+        buttons = lambda: self.js(
+            """return Array.from(arguments[0].querySelectorAll('.rbp-spun')).map(
+                b => [b.textContent, b.getAttribute('aria-pressed')]);""",
+            element,
+        )
+        other = data["other"]
+        # The default scene prefers counter-clockwise: its run (on the dev page, Python's
+        # player_script; in a report, `report`'s) comes with the other spin.
+        self.check(
+            bool(other) or run_id != "rattleback", f"{where}: the default scene's data has no other spin"
+        )
+        if not other:
+            self.check(buttons() == [], f"{where}: one run, and spin buttons {buttons()}")
+            element.find_element(By.CSS_SELECTOR, ".rbp-title").click()
+            ActionChains(self.driver).send_keys("s").perform()
+            time.sleep(0.2)
+            self.check(self.hook(element, "runIndex()") == 0, f"{where}: S switched a run alone")
+            return
+
+        def label(spun, reversals):
+            did = f"reverses at {reversals[0]:.2f} s" if reversals else "no reversal"
+            if len(reversals) > 1:
+                did += f" ({len(reversals)} reversals)"
+            sign = "\u2212" if spun < 0 else "+"  # (U+2212, the minus sign of print)
+            return f"{sign}{float(f'{abs(spun):.4g}'):g} rad/s: {did}"
+
+        expected = [
+            label(data["spun"], data["reversals"] or []),
+            label(other["spun"], other["reversals"] or []),
+        ]
+        self.check(
+            buttons() == [[expected[0], "true"], [expected[1], "false"]],
+            f"{where}: the spin buttons are {buttons()}, not {expected} with the first pressed",
+        )
+        self.check(data["spun"] == -other["spun"] != 0, f"{where}: spun {data['spun']} and {other['spun']}")
+        t = other["t"]
+        n = len(t)
+        self.hook(element, "setTime(arguments[1])", 1.0)
+        element.find_elements(By.CSS_SELECTOR, ".rbp-spun")[1].click()
+        self.frames()
+        self.check(
+            self.hook(element, "runIndex()") == 1 and abs(self.hook(element, "time()") - 1.0) < 1e-9,
+            f"{where}: the second spin's button gave run {self.hook(element, 'runIndex()')} at "
+            f"t = {self.hook(element, 'time()')}, not run 1 at 1 s",
+        )
+        self.check(
+            buttons() == [[expected[0], "false"], [expected[1], "true"]],
+            f"{where}: after the click the spin buttons are {buttons()}",
+        )
+        span = self.js(
+            """const s = arguments[0].querySelector('.rbp-slider');
+            return [+s.min, +s.max, s.list ? Array.from(s.list.options).map(o => +o.value) : []];""",
+            element,
+        )
+        self.check(
+            span == [t[0], t[-1], list(other["reversals"] or [])],
+            f"{where}: the other spin's slider is {span}, not [{t[0]}, {t[-1]}] with its reversals",
+        )
+        for k, u in [(n // 3, 0.3), (n - 2, 0.7)]:
+            self.slider_to(element, between(t, k, u))
+            got_t = self.hook(element, "time()")
+            k = max(i for i in range(n - 1) if t[i] <= got_t)
+            u = (got_t - t[k]) / (t[k + 1] - t[k])
+            q = lambda i: [other["qw"][i], other["qx"][i], other["qy"][i], other["qz"][i]]
+            err = quaternion_error(self.hook(element, "quaternion()"), slerp(q(k), q(k + 1), u))
+            self.check(
+                err < 1e-6, f"{where}: spun the other way, at t = {got_t} the drawn pose is {err:.3g} off"
+            )
+        element.find_element(By.CSS_SELECTOR, ".rbp-title").click()
+        if other["reversals"]:
+            self.hook(element, "setTime(arguments[1])", t[0])
+            ActionChains(self.driver).send_keys("r").perform()
+            self.check(
+                self.until(element, f"h.time() === {other['reversals'][0]!r}", 5),
+                f"{where}: R spun the other way went to {self.hook(element, 'time()')}, not its reversal",
+            )
+        ActionChains(self.driver).send_keys("s").perform()
+        self.check(self.until(element, "h.runIndex() === 0", 5), f"{where}: S did not switch back")
+        self.hook(element, "setTime(arguments[1])", 1.0)
+        run = self.js("return window.RATTLEBACK_RUNS[arguments[0]].t;", run_id)
+        self.check(
+            self.hook(element, "range()") == [run[0], run[-1]],
+            f"{where}: switched back, the span is {self.hook(element, 'range()')}",
         )
 
     def click_view(self, element, view):
