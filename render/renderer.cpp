@@ -529,6 +529,20 @@ void Renderer::draw(const FrameInput& frame, Image& out) {
     between(0, 0) = between(1, 1) = 1 - top - bottom;
     between(1, 3) = bottom - top;  // in clip coordinates (× w), so perspective too
     camera.proj = between * camera.proj;
+  } else if (settings_.view == View::Above &&
+             std::min(settings_.width, settings_.height) >= kSmallestSideForReadouts) {
+    // Wider frames keep their corners for the text, but seen from above the body spans the
+    // height through the middle, where the read-outs now reach (at 29 px the spin's line runs
+    // to the middle of a 720p frame, and its end covered the body's): the scene is drawn below
+    // them. The inset and the floor's scale stay in corners the body does not reach.
+    const ReadoutLayout layout = readoutLayout();
+    const int band =
+        readouts_one_line_ ? layout.band - (layout.second - layout.first) : layout.band;
+    const float top = static_cast<float>(band) / settings_.height;
+    Eigen::Matrix4f below = Eigen::Matrix4f::Identity();
+    below(0, 0) = below(1, 1) = 1 - top;
+    below(1, 3) = -top;
+    camera.proj = below * camera.proj;
   }
   // Upside down: OpenGL's first row is the window's bottom one, so a picture drawn flipped
   // reads back top row first, with no copy to flip it (sprites count their y from the window's
