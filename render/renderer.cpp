@@ -389,8 +389,11 @@ int textPixels(const RenderSettings& settings) {
   // classroom), and at most a 30th of the width: the title and each read-out line (up to about
   // 45 characters, each about half the size wide) then fit in three quarters of a portrait or
   // square frame, where the time and the spin take a line each. (A 64th of the width made a
-  // 480-wide portrait frame's text 8 px high.) Under 8 px it cannot be read at all.
-  const float px = settings.text_scale * std::min(settings.height / 25.0f, settings.width / 30.0f);
+  // 480-wide portrait frame's text 8 px high.) Scaled up (--both), never beyond a 24th of the
+  // width: the spin's line is about 21 sizes wide with its margins, and in a portrait half it
+  // ran off the edge, as the floor's scale ran into the inset. Under 8 px it cannot be read.
+  const float usual = std::min(settings.height / 25.0f, settings.width / 30.0f);
+  const float px = std::min(settings.text_scale * usual, std::max(usual, settings.width / 24.0f));
   return std::max(8, static_cast<int>(std::lround(px)));
 }
 
@@ -538,10 +541,13 @@ void Renderer::draw(const FrameInput& frame, Image& out) {
     const ReadoutLayout layout = readoutLayout();
     const int band =
         readouts_one_line_ ? layout.band - (layout.second - layout.first) : layout.band;
+    // Above a 40th of the height at the bottom (the inset's margin): drawn down to the edge, the
+    // spin cue's arrow below the body ran out of the frame.
     const float top = static_cast<float>(band) / settings_.height;
+    const float bottom = 1.0f / 40;
     Eigen::Matrix4f below = Eigen::Matrix4f::Identity();
-    below(0, 0) = below(1, 1) = 1 - top;
-    below(1, 3) = -top;
+    below(0, 0) = below(1, 1) = 1 - top - bottom;
+    below(1, 3) = bottom - top;
     camera.proj = below * camera.proj;
   }
   // Upside down: OpenGL's first row is the window's bottom one, so a picture drawn flipped

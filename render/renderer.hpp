@@ -21,7 +21,8 @@ namespace render {
 inline constexpr int kSmallestSideForReadouts = 180;
 
 /// The height of the frame's text (title, read-outs, inset, labels), pixels: a 25th of the
-/// height, at most a 30th of the width, times `text_scale`, and at least 8.
+/// height, at most a 30th of the width, times `text_scale` (but then at most a 24th of the
+/// width), and at least 8.
 int textPixels(const RenderSettings& settings);
 
 /// The floor's checker square, m, for a body of these half extents (m): 1, 2 or 5 × 10ⁿ, about
