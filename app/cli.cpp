@@ -155,7 +155,8 @@ void defineRender(CLI::App& c, Cli& cli) {
                 "auto: EGL when it starts, else OSMesa (default: $RATTLEBACK_BACKEND, or auto)");
   c.add_flag("--both", r.both,
              "Also the reversed spin, named …-preferred.mp4 and …-reversed.mp4 (…-ccw.mp4 and "
-             "…-cw.mp4 for a body with no preferred direction), and a side-by-side …-both.mp4");
+             "…-cw.mp4 for a body with no preferred direction), and a side-by-side …-both.mp4: "
+             "the spin against the body's preferred way on the left; larger text");
   c.add_flag("-q,--quiet", r.quiet, "No summary and no progress bar");
   c.add_flag("-v,--verbose", r.verbose,
              "Also describe the model and the OpenGL in use (backend, vendor, renderer)");

@@ -119,6 +119,10 @@ struct Output {
 };
 
 constexpr unsigned char kDivider = 48;  // the grey of the line between --both's halves
+// --both's text, times the usual: 1.4 × 29 px is 40 px in a 720p half, 20 px where the
+// 2560-wide video is shown 1280 wide (a projector, a browser's page), as large as a single
+// video's text was when a classroom found it marginal at the back.
+constexpr float kBothTextScale = 1.4f;
 
 // Places a and b side by side, into `out` (its buffer reused).
 void sideBySide(const render::Image& a, const render::Image& b, render::Image& out) {
@@ -182,6 +186,15 @@ std::string stem(const std::string& path) {
 
 }  // namespace
 
+std::array<BothHalf, 2> bothHalves(const sim::Model& model) {
+  // So that a class sees the reversal on the left whichever way the scene spins the body.
+  const double spin = model.initial.spin;
+  const sim::Direction preferred = sim::preferredDirection(model, spin);
+  if (preferred == sim::Direction::None) return {{{spin, ""}, {-spin, ""}}};
+  const double against = sim::turns(preferred, spin) ? -spin : spin;
+  return {{{against, "against its preferred way"}, {-against, "its preferred way"}}};
+}
+
 rb::Status checkEncoderOptions(int crf, const std::string& preset) {
   if (crf < 1 || crf > 51)
     return rb::Status::fail(rb::argumentName("crf") +
@@ -217,13 +230,19 @@ rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const Vide
                              "run; give a spin (" +
                              rb::argumentName("spin") + ", or initial.spin in the scene)"};
   auto cancelled = [&] { return request.cancelled && request.cancelled(); };
-  // One run per direction, sharing the body.
+  // One run per direction, sharing the body; with --both, in the order of the halves.
   std::vector<sim::Rollout> runs;
-  runs.emplace_back(model);
+  std::vector<std::string> ways = {""};
   if (request.both) {
-    sim::Model reversed = model;
-    reversed.initial.spin = -model.initial.spin;
-    runs.emplace_back(reversed);
+    ways.clear();
+    for (const BothHalf& half : bothHalves(model)) {
+      sim::Model run = model;
+      run.initial.spin = half.spin;
+      runs.emplace_back(run);
+      ways.push_back(half.way);
+    }
+  } else {
+    runs.emplace_back(model);
   }
 
   // Output paths: the request's exactly, else out/<scene>.mp4; with both, the output (less
@@ -274,10 +293,14 @@ rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const Vide
                                    model.length_unit, frameNamed(loaded.scene));
       histories.emplace_back(model.duration, plan.width);
     }
-    for (const sim::Rollout& run : runs) {
-      auto created = render::Renderer::create(
-          settingsOf(plan, run.model(), request.scene_name, loaded.scene.values, request.backend),
-          points, triangles.value());
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      render::RenderSettings settings =
+          settingsOf(plan, runs[i].model(), request.scene_name, loaded.scene.values,
+                     request.backend, std::nullopt, ways[i]);
+      // --both's frames are its halves too (each run is drawn once, for its own video and its
+      // half): their text is drawn for the side-by-side video shown at half size.
+      if (request.both) settings.text_scale = kBothTextScale;
+      auto created = render::Renderer::create(settings, points, triangles.value());
       if (!created) return rb::machineError("render: " + created.error().text());
       if (renderers.empty()) result.opengl = created.value()->description();
       renderers.push_back(std::move(created).value());

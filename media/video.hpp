@@ -3,6 +3,7 @@
 // holds its frames in memory. The threads are started and joined within renderVideo().
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "render/frame.hpp"
+#include "sim/model.hpp"
 #include "tasks/outcome.hpp"
 #include "tasks/scene_args.hpp"
 #include "util/output_place.hpp"
@@ -61,6 +63,18 @@ using rb::checkExtension;
 /// Loads the OpenGL driver behind `backend` on a thread of its own (about 40 ms with
 /// llvmpipe), while the caller loads its scene.
 std::jthread preloadDriver(render::Backend backend);
+
+/// One half of --both's side-by-side video: its run's initial spin, rad/s, and the way its title
+/// says it turns for the body ("against its preferred way", "its preferred way"; "" for a body
+/// with no preferred direction).
+struct BothHalf {
+  double spin = 0;
+  std::string way;
+};
+/// --both's halves, left first: the spin against the body's preferred direction (the one the
+/// linearised theory says reverses: sim::preferredDirection), then the preferred one, whichever
+/// the scene spins; a body with no preferred direction has the scene's spin on the left.
+std::array<BothHalf, 2> bothHalves(const sim::Model& model);
 
 /// The scene's video(s) as the request says. An error (a bad video section, an encoder or
 /// renderer that fails) is one line; a run that stops or is cancelled is an outcome, with no

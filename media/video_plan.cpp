@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -136,13 +137,22 @@ render::RenderSettings settingsOf(const VideoPlan& plan, const sim::Model& run,
                                   const std::string& scene,
                                   const std::vector<scene::KeyValue>& values,
                                   render::Backend backend,
-                                  const std::optional<std::string>& given_title) {
+                                  const std::optional<std::string>& given_title,
+                                  const std::string& way) {
   // The values put in name the variant: a class's bodies made with --set all read "mine: spun −5
   // rad/s". The renderer shortens a title too long for the frame.
   const bool struck = run.initial.w_x != 0 || run.initial.w_y != 0;
+  std::string start =
+      struck ? describeStrike(run.initial) : "spun " + describeSpin(run.initial.spin);
+  if (!way.empty()) {
+    // "spun -5 rad/s, against its preferred way": --both's text is drawn larger, and a title
+    // saying both the sense and the way ran past a 1280-wide half; the read-out says the sense.
+    char spun[48];
+    std::snprintf(spun, sizeof spun, "spun %+g rad/s", run.initial.spin);
+    start = (struck ? describeStrike(run.initial) : std::string(spun)) + ", " + way;
+  }
   std::string title =
-      (given_title ? *given_title : std::filesystem::path(scene).stem().string()) + ": " +
-      (struck ? describeStrike(run.initial) : "spun " + describeSpin(run.initial.spin));
+      (given_title ? *given_title : std::filesystem::path(scene).stem().string()) + ": " + start;
   if (!given_title)
     for (const scene::KeyValue& kv : values)
       title += (&kv == &values.front() ? "; " : ", ") + kv.key + " = " + kv.yaml;

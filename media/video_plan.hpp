@@ -45,11 +45,13 @@ std::string frameNamed(const scene::Loaded& scene);
 /// with_values) and the spin or the angular velocity it starts with (the same in its video and
 /// its stills). A `title` given replaces the scene's name and values (a snapshot case's name: its
 /// golden then does not depend on the scene file's path); the start is said after it all the
-/// same.
+/// same. A `way` ("against its preferred way": --both's halves) is said after the spin, in place
+/// of its sense of turning, which the read-out under the title says.
 render::RenderSettings settingsOf(const VideoPlan& plan, const sim::Model& run,
                                   const std::string& scene,
                                   const std::vector<scene::KeyValue>& values,
                                   render::Backend backend,
-                                  const std::optional<std::string>& title = std::nullopt);
+                                  const std::optional<std::string>& title = std::nullopt,
+                                  const std::string& way = "");
 
 }  // namespace media

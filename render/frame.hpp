@@ -99,6 +99,10 @@ struct RenderSettings {
   bool exact_sphere_depth = false;
   /// The body's points, or its triangles (then given to Renderer::create).
   Surface surface = Surface::Points;
+  /// The text (title, read-outs, inset, labels) this many times its usual size for the frame.
+  /// --both draws 1.4: its halves are shown side by side, so a 2560-wide frame put on a
+  /// 1280-wide screen halves them, and their text must start out larger to stay readable.
+  float text_scale = 1;
 };
 
 /// An RGBA image, rows top to bottom.

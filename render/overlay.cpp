@@ -148,7 +148,9 @@ void drawLine(Image& image, float x0, float y0, float x1, float y1, float width,
 }
 
 namespace {
-// The inset is 2/9 of the frame's height, a 40th above its bottom edge.
+// The inset is 2/9 of the frame's height, a 40th above its bottom edge. (Not taller with
+// larger text, though its title then takes more of it: taller, it met the spin cue's arrow
+// head in the oblique view.)
 int insetHeight(int image_height) {
   return image_height * 2 / 9;
 }
@@ -291,9 +293,20 @@ void drawArrow(Image& image, std::span<const std::array<float, 2>> arc, float wi
   }
 }
 
-void drawReversalLabel(Image& image, Overlay& font, int right, int baseline, double t_reversal) {
+namespace {
+std::string reversalText(double t_reversal) {
   char text[64];
   std::snprintf(text, sizeof text, "reversal at %.2f s", t_reversal);
+  return text;
+}
+}  // namespace
+
+int reversalLabelWidth(Overlay& font) {
+  return font.width(reversalText(88.88)) + 2 * (font.lineHeight() / 2);
+}
+
+void drawReversalLabel(Image& image, Overlay& font, int right, int baseline, double t_reversal) {
+  const std::string text = reversalText(t_reversal);
   const int pad = font.lineHeight() / 2;
   const int w = font.width(text) + 2 * pad;
   const int x0 = right - w, y0 = baseline - font.lineHeight() - pad / 2;

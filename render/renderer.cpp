@@ -10,6 +10,11 @@ namespace {
 
 const Eigen::Vector3f kBackground(0.93f, 0.94f, 0.96f);
 
+// The widest the read-outs' time and spin can be drawn (all digits are alike wide), as
+// drawReadouts formats them.
+constexpr const char* kWidestTime = "t = 888.88 s";
+constexpr const char* kWidestSpin = "spin n = +88.88 rad/s  (counter-clockwise)";
+
 void setMatrix(const GlApi& gl, GLuint program, const char* name, const Eigen::Matrix4f& m) {
   gl.glUniformMatrix4fv(gl.glGetUniformLocation(program, name), 1, GL_FALSE, m.data());
 }
@@ -62,13 +67,16 @@ std::string Renderer::init(const BodyTriangles& triangles) {
   auto context = GlContext::create(settings_.backend, settings_.width, settings_.height);
   if (!context) return context.error().text();
   context_ = std::move(context).value();
-  // Text a 36th of the height (20 px at 720p), and at most a 40th of the width: the title and
-  // each read-out line (up to about 45 characters, each about 0.6 of the size wide) then fit
-  // in two thirds of a portrait or square frame, where the time and the spin take a line
-  // each. (A 64th of the width made a 480-wide portrait frame's text 8 px high.)
-  const int text_px = std::min(settings_.height / 36, settings_.width / 40);
-  if (std::string e = font_.load(std::max(8, text_px)); !e.empty()) return e;
+  if (std::string e = font_.load(textPixels(settings_)); !e.empty()) return e;
   title_ = fittedTitle();
+  // The time and the spin share a line where it leaves room for the reversal's badge at its
+  // right (drawReadouts), else they take a line each. Decided once, from the widest each can
+  // be, so that the read-outs do not jump between one line and two as the spin changes sense.
+  {
+    const int x = readoutLayout().x;
+    const int widest = font_.width(std::string(kWidestTime) + "    " + kWidestSpin);
+    readouts_one_line_ = x + widest + x + reversalLabelWidth(font_) <= settings_.width - x;
+  }
   CurrentContext current(*context_);
   if (!current.ok()) return "cannot make the OpenGL context current";
   const GlApi& gl = context_->api();
@@ -376,6 +384,19 @@ void Renderer::drawPoints(const Camera& camera, const FrameInput& frame,
   gl.glDrawArrays(GL_POINTS, 0, point_count_);
 }
 
+int textPixels(const RenderSettings& settings) {
+  // A 25th of the height (29 px at 720p: a 36th, 20 px, was marginal at the back of a
+  // classroom), and at most a 30th of the width: the title and each read-out line (up to about
+  // 45 characters, each about half the size wide) then fit in three quarters of a portrait or
+  // square frame, where the time and the spin take a line each. (A 64th of the width made a
+  // 480-wide portrait frame's text 8 px high.) Scaled up (--both), never beyond a 24th of the
+  // width: the spin's line is about 21 sizes wide with its margins, and in a portrait half it
+  // ran off the edge, as the floor's scale ran into the inset. Under 8 px it cannot be read.
+  const float usual = std::min(settings.height / 25.0f, settings.width / 30.0f);
+  const float px = std::min(settings.text_scale * usual, std::max(usual, settings.width / 24.0f));
+  return std::max(8, static_cast<int>(std::lround(px)));
+}
+
 float floorSquare(const Eigen::Vector3f& half_extent, bool fogged) {
   const float raw = half_extent.maxCoeff() / 5;
   const float decade = std::pow(10.0f, std::floor(std::log10(raw)));
@@ -409,14 +430,15 @@ bool Renderer::readoutsShown() const {
 
 Renderer::ReadoutLayout Renderer::readoutLayout() const {
   // The title's baseline two lines down, the read-outs 1½ lines below it (or where it would
-  // be), their second line (narrow frames) 1¼ lines lower, and half a line for descenders.
+  // be), their second line (narrow frames, large text) 1½ lines lower, and half a line for
+  // descenders. (At 1¼ the second line touched the reversal's badge on the first.)
   const int line = font_.lineHeight();
   ReadoutLayout l;
   l.x = line;
   l.title = line * 2;
   l.first = l.title + (settings_.title.empty() ? 0 : line * 3 / 2);
-  l.second = l.first + line * 5 / 4;
-  l.band = line * 2 + line * 3 / 2 + line * 5 / 4 + line / 2;  // with a title and two lines
+  l.second = l.first + line * 3 / 2;
+  l.band = line * 2 + line * 3 / 2 + line * 3 / 2 + line / 2;  // with a title and two lines
   return l;
 }
 
@@ -469,10 +491,9 @@ void Renderer::drawReadouts(const FrameInput& frame, const Camera& camera, Image
                 spin > kSlowestShownSpin    ? "(counter-clockwise)"
                 : spin < -kSlowestShownSpin ? "(clockwise)"
                                             : "");
-  const std::string one_line = std::string(time) + "    " + spin_text;
-  if (x + font_.width(one_line) <= settings_.width - x) {
-    font_.text(out, x, layout.first, one_line, {30, 30, 30, 255});
-  } else {  // a narrow frame: time and spin on a line each
+  if (readouts_one_line_) {
+    font_.text(out, x, layout.first, std::string(time) + "    " + spin_text, {30, 30, 30, 255});
+  } else {  // a narrow frame, or large text: time and spin on a line each
     font_.text(out, x, layout.first, time, {30, 30, 30, 255});
     font_.text(out, x, layout.second, spin_text, {30, 30, 30, 255});
   }
@@ -511,6 +532,23 @@ void Renderer::draw(const FrameInput& frame, Image& out) {
     between(0, 0) = between(1, 1) = 1 - top - bottom;
     between(1, 3) = bottom - top;  // in clip coordinates (× w), so perspective too
     camera.proj = between * camera.proj;
+  } else if (settings_.view == View::Above &&
+             std::min(settings_.width, settings_.height) >= kSmallestSideForReadouts) {
+    // Wider frames keep their corners for the text, but seen from above the body spans the
+    // height through the middle, where the read-outs now reach (at 29 px the spin's line runs
+    // to the middle of a 720p frame, and its end covered the body's): the scene is drawn below
+    // them. The inset and the floor's scale stay in corners the body does not reach.
+    const ReadoutLayout layout = readoutLayout();
+    const int band =
+        readouts_one_line_ ? layout.band - (layout.second - layout.first) : layout.band;
+    // Above a 40th of the height at the bottom (the inset's margin): drawn down to the edge, the
+    // spin cue's arrow below the body ran out of the frame.
+    const float top = static_cast<float>(band) / settings_.height;
+    const float bottom = 1.0f / 40;
+    Eigen::Matrix4f below = Eigen::Matrix4f::Identity();
+    below(0, 0) = below(1, 1) = 1 - top - bottom;
+    below(1, 3) = bottom - top;
+    camera.proj = below * camera.proj;
   }
   // Upside down: OpenGL's first row is the window's bottom one, so a picture drawn flipped
   // reads back top row first, with no copy to flip it (sprites count their y from the window's

@@ -20,6 +20,11 @@ namespace render {
 /// Frames with a side shorter than this carry no title, read-outs or inset, pixels.
 inline constexpr int kSmallestSideForReadouts = 180;
 
+/// The height of the frame's text (title, read-outs, inset, labels), pixels: a 25th of the
+/// height, at most a 30th of the width, times `text_scale` (but then at most a 24th of the
+/// width), and at least 8.
+int textPixels(const RenderSettings& settings);
+
 /// The floor's checker square, m, for a body of these half extents (m): 1, 2 or 5 × 10ⁿ, about
 /// a fifth of its half length; four times that where the floor is seen at 10° (front, side:
 /// `fogged`), whose squares would otherwise show as stripes.
@@ -115,12 +120,13 @@ class Renderer {
   /// Where the frame buffer may differ from the cached floor: what the last frame drew over
   /// it (drawnRect), or nothing known (the whole frame). The next frame copies only this back.
   std::optional<PixelRect> dirty_;
-  Eigen::Vector3f low_, high_;   ///< the sphere centres' box, body frame, m
-  Eigen::Vector3f half_extent_;  ///< body half extents, m
-  std::string title_;            ///< settings_.title as drawn, cut to the frame (fittedTitle)
-  std::string scale_label_;      ///< "floor squares 1 cm"
-  float middle_height_ = 0;      ///< height of the body's middle above its CM, m
-  float radius_ = 0;             ///< the largest distance of a drawn point from the CM, m
+  Eigen::Vector3f low_, high_;     ///< the sphere centres' box, body frame, m
+  Eigen::Vector3f half_extent_;    ///< body half extents, m
+  std::string title_;              ///< settings_.title as drawn, cut to the frame (fittedTitle)
+  bool readouts_one_line_ = true;  ///< time and spin on one line (init), else a line each
+  std::string scale_label_;        ///< "floor squares 1 cm"
+  float middle_height_ = 0;        ///< height of the body's middle above its CM, m
+  float radius_ = 0;               ///< the largest distance of a drawn point from the CM, m
   /// Half the length the picture is scaled by (settings_.frame, or the body's own), m: the
   /// floor's squares and fade.
   float scale_half_ = 0;

@@ -56,11 +56,13 @@ Hues huesOf(const render::Image& image) {
 TEST(Triangles, TopIsRedAndBottomIsBlue) {
   for (const std::string scene : {"scenes/rattleback.yaml", "scenes/printed.yaml"}) {
     const std::string options = scene + " --surface triangles --view above --size 320x180";
+    // (From above the body is drawn below the read-outs, at 0.73 of the frame's scale: 1,725 to
+    // 1,802 pixels of its colour, measured; about half what it had, when 2,000 was the bound.)
     const Hues up = huesOf(still(options + " --t 1"));
-    EXPECT_GT(up.red, 2000) << scene;
+    EXPECT_GT(up.red, 1200) << scene;
     EXPECT_GT(up.red, 0.95 * (up.red + up.blue)) << scene << ": " << up.blue << " blue px";
     const Hues down = huesOf(still(options + " --set initial.tilt=[180,0]"));
-    EXPECT_GT(down.blue, 2000) << scene;
+    EXPECT_GT(down.blue, 1200) << scene;
     EXPECT_GT(down.blue, 0.95 * (down.red + down.blue)) << scene << ": " << down.red << " red px";
   }
 }

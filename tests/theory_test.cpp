@@ -9,6 +9,7 @@
 #include <regex>
 #include <sstream>
 
+#include "media/video.hpp"
 #include "sim/analysis.hpp"
 #include "sim/stability.hpp"
 #include "support.hpp"
@@ -671,4 +672,36 @@ TEST(Theory, TheStateMatrixHasTheKinematicsOfTiltAndAnalyzesEigenvalues) {
   // The rows of the state table are the matrix's: five, names as Python and the JSON give them.
   EXPECT_EQ(sim::kLinearStates.size(), 5u);
   EXPECT_EQ(sim::kLinearStates[4].name, "w_z");
+}
+
+// --both's halves, left first (a teacher's trial: the order followed the scene's spin, and
+// neither half said which way it was spun for the body): the spin against the body's preferred
+// way on the left, however the scene spins it. The default body prefers ccw (−5 rad/s reverses,
+// at 2.37 s), its mirror image cw; without dents it prefers neither and keeps the scene's spin
+// on the left.
+TEST(Theory, BothPutsTheSpinAgainstThePreferredWayOnTheLeft) {
+  auto halves = [](std::string yaml, const std::string& from, const std::string& to, double spin) {
+    if (!from.empty()) yaml.replace(yaml.find(from), from.size(), to);
+    sim::Model model = testing_support::build(testing_support::parse(yaml));
+    model.initial.spin = spin;
+    return media::bothHalves(model);
+  };
+  using testing_support::kRolling;
+  const std::string dents = "dents: {scale: 0.45, at: [0.73, 4.50], inset: 0.1}";
+  for (double spin : {-5.0, 5.0}) {
+    const auto shipped = halves(kRolling, "", "", spin);
+    EXPECT_EQ(shipped[0].spin, -5) << "scene spun " << spin;
+    EXPECT_EQ(shipped[0].way, "against its preferred way");
+    EXPECT_EQ(shipped[1].spin, 5) << "scene spun " << spin;
+    EXPECT_EQ(shipped[1].way, "its preferred way");
+    const auto mirrored =
+        halves(kRolling, dents, "dents: {scale: 0.45, at: [-0.73, 4.50], inset: 0.1}", spin);
+    EXPECT_EQ(mirrored[0].spin, 5) << "mirrored, scene spun " << spin;
+    EXPECT_EQ(mirrored[1].spin, -5) << "mirrored, scene spun " << spin;
+    const auto none = halves(kRolling, dents, "", spin);
+    EXPECT_EQ(none[0].spin, spin) << "no dents, scene spun " << spin;
+    EXPECT_EQ(none[1].spin, -spin) << "no dents, scene spun " << spin;
+    EXPECT_EQ(none[0].way, "");
+    EXPECT_EQ(none[1].way, "");
+  }
 }

@@ -129,6 +129,28 @@ double difference(const render::Image& a, const render::Image& b, Region r = {})
 // The right time against the next frame's: 3 separates 1.9 from 4.8.
 constexpr double kRoundTrip = 3.0;
 
+// The middle of a --both frame below its text, which is larger than a still's (1.4 times: at
+// 320×180 the title and two read-out lines reach 30 % of the way down, and the inset's title
+// 64 % across from the left).
+constexpr Region kBelowBothText{0.25, 0.35, 0.6, 0.75};
+// There, at t = 0.36 s, a --both frame against the still of its own spin differs by 2.6–2.8
+// (the round trip; the body fills more of this region than of the whole middle), against the
+// other spin's by 21.2–21.4: 8 tells them apart with room both ways.
+constexpr double kSpinsApart = 8.0;
+
+// The left (0) or right (1) half of a side-by-side frame.
+render::Image half(const render::Image& both, int which) {
+  render::Image out;
+  out.width = both.width / 2;
+  out.height = both.height;
+  for (int y = 0; y < both.height; ++y) {
+    const auto row =
+        both.rgba.begin() + 4 * (static_cast<std::ptrdiff_t>(y) * both.width + which * out.width);
+    out.rgba.insert(out.rgba.end(), row, row + 4 * out.width);
+  }
+  return out;
+}
+
 }  // namespace
 
 // Frame k of a video is the still at t_k = k · playback / fps: first, middle and last frame, at
@@ -240,13 +262,36 @@ TEST(VideoContent, BothFilesHoldTheirOwnSpin) {
       both[0].rgba[4 * (static_cast<std::size_t>(kHeight / 2) * both[0].width + kWidth - 4)];
   EXPECT_GT(beside, 100);
   // At t = 0 the two spins look alike but for their read-outs; a frame later they have
-  // turned 11° apart. Compare the last frames with the stills at t = 0.36 s.
+  // turned 11° apart. Compare the last frames with the stills at t = 0.36 s (below --both's
+  // larger text).
   const render::Image minus = still("scenes/rattleback.yaml --spin -5 --t 0.36");
   const render::Image plus = still("scenes/rattleback.yaml --spin 5 --t 0.36");
-  EXPECT_LT(difference(reversed.back(), minus), kRoundTrip);
-  EXPECT_LT(difference(preferred.back(), plus), kRoundTrip);
-  EXPECT_GT(difference(reversed.back(), plus), kRoundTrip);
-  EXPECT_GT(difference(preferred.back(), minus), kRoundTrip);
+  EXPECT_LT(difference(reversed.back(), minus, kBelowBothText), kSpinsApart);
+  EXPECT_LT(difference(preferred.back(), plus, kBelowBothText), kSpinsApart);
+  EXPECT_GT(difference(reversed.back(), plus, kBelowBothText), kSpinsApart);
+  EXPECT_GT(difference(preferred.back(), minus, kBelowBothText), kSpinsApart);
+}
+
+// --both's left half is the run spun against the body's preferred way (the one that reverses),
+// the right half the preferred one, whichever way the scene spins it (a teacher's trial: the
+// order followed the scene's spin). The default body prefers counter-clockwise: spun +5 (the
+// preferred way) by the scene, its left half is still the −5 run, and so it is spun −5.
+TEST(VideoContent, BothShowsTheRunSpunAgainstItsPreferredWayOnTheLeft) {
+  const render::Image minus = still("scenes/rattleback.yaml --spin -5 --t 0.36");
+  const render::Image plus = still("scenes/rattleback.yaml --spin 5 --t 0.36");
+  for (const char* spin : {"5", "-5"}) {
+    const fs::path base = scratch(std::string("order") + spin);
+    ASSERT_EQ(rattleback("render scenes/rattleback.yaml -q --both --spin " + std::string(spin) +
+                         " --duration 0.4 --fps 25 --size 320x180 -o " + base.string()),
+              0);
+    const auto both = decodeFrames(base.string() + "-both.mp4");
+    ASSERT_EQ(both.size(), 10u);
+    const render::Image left = half(both.back(), 0), right = half(both.back(), 1);
+    EXPECT_LT(difference(left, minus, kBelowBothText), kSpinsApart) << "scene spun " << spin;
+    EXPECT_GT(difference(left, plus, kBelowBothText), kSpinsApart) << "scene spun " << spin;
+    EXPECT_LT(difference(right, plus, kBelowBothText), kSpinsApart) << "scene spun " << spin;
+    EXPECT_GT(difference(right, minus, kBelowBothText), kSpinsApart) << "scene spun " << spin;
+  }
 }
 
 // The views frame the whole body over the whole run: in every frame of every shipped scene, in
