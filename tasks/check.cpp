@@ -18,6 +18,7 @@ int orderOf(sim::Integrator integrator) {
     case sim::Integrator::Rk4:
       return 4;
     case sim::Integrator::Dopri5:
+    case sim::Integrator::Dop853:
       break;
   }
   return 0;
