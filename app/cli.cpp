@@ -241,7 +241,8 @@ void defineBench(CLI::App& c, Cli& cli) {
   c.add_option("--models", b.models, names<sim::ContactModel>() + " (default: all that apply)")
       ->delimiter(',');
   c.add_option("--integrators", b.integrators,
-               names<sim::Integrator>() + " (default all; dopri5 runs the tolerance ladder)")
+               names<sim::Integrator>() +
+                   " (default all but dop853; dopri5 and dop853 run the tolerance ladder)")
       ->delimiter(',');
   c.add_option("--tolerances", b.tolerances,
                "Tolerance ladder for dopri5 (default: --rungs decades from 1e-4)")

@@ -312,8 +312,10 @@ const std::vector<Key>& table() {
        .doc = "the integrator and its steps ([Physics](physics.md) §P3)"},
       {.path = "simulation.integrator",
        .field = FIELD(spec.simulation.integrator),
-       .doc = "the method: `euler`, `symplectic` and `rk4` take `dt`, `dopri5` takes "
-              "`tolerance`; `symplectic` is refused with `rolling` and `auto`, whose energy it "
+       .doc = "the method: `euler`, `symplectic` and `rk4` take `dt`; `dopri5` "
+              "(Dormand–Prince 5(4)) and `dop853` (Dormand–Prince 8(5,3), fewer evaluations "
+              "at tight tolerances) take `tolerance`; `symplectic` is refused with `rolling` and "
+              "`auto`, whose energy it "
               "does not keep (rolling without slipping is non-holonomic, §P3)",
        .sample = "rk4",
        .choices = namesOf<sim::Integrator>,
@@ -330,7 +332,7 @@ const std::vector<Key>& table() {
       {.path = "simulation.tolerance",
        .field = FIELD(spec.simulation.tolerance),
        .unit = "error per step, in the body's own units",
-       .doc = "adaptive steps (dopri5) to this error per step",
+       .doc = "adaptive steps (dopri5, or dop853 when named) to this error per step",
        .check = "within 1e-14 … 0.1",
        .sample = "1.0e-8",
        .default_note = "exactly one of `dt` and `tolerance` is required"},

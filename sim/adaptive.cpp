@@ -4,9 +4,11 @@
 #include <array>
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
+#include <tuple>
 #include <type_traits>
 
 #include "sim/contact_model.hpp"
+#include "sim/dop853.hpp"
 #include "sim/rolling.hpp"
 #include "sim/step.hpp"
 
@@ -179,6 +181,12 @@ struct AdaptiveStepper::Impl {
   virtual State at(double t) const = 0;
   virtual bool keepsRolling() const = 0;
   virtual std::unique_ptr<Impl> clone() const = 0;
+  virtual std::int64_t evaluationCount() const { return evaluations; }
+  virtual std::int64_t rejected(std::int64_t accepted) const {
+    // Dormand–Prince 5(4) with first-same-as-last: every try of a step evaluates the
+    // equations six times (stages 2–7, the last at the new point), and the start once.
+    return (evaluations - 1) / 6 - accepted;
+  }
   std::int64_t evaluations = 0;
 };
 
@@ -241,8 +249,61 @@ class Integration final : public AdaptiveStepper::Impl {
   Dense dense_;
 };
 
+// One run's DOP853 stepper (sim/dop853.hpp) over a layout of the state: the same scaled
+// equations, the same first try of a step, its own error control.
+template <class Layout>
+class Integration853 final : public AdaptiveStepper::Impl {
+ public:
+  using Vector = typename Layout::Vector;
+
+  Integration853(const Model& m, const State& start) : model_(m), scales_(m), dop_(m.tolerance) {
+    dop_.initialize(rates(), Layout::pack(model_, start, scales_), start.t / scales_.time, 1e-3);
+  }
+
+  State step(std::int64_t step_index) override {
+    dop_.step(rates());
+    State s = Layout::unpack(model_, dop_.state(), scales_, dop_.time() * scales_.time);
+    s.step = step_index;
+    return s;
+  }
+
+  bool keepsRolling() const override { return std::is_same_v<Layout, Rolling>; }
+  std::unique_ptr<AdaptiveStepper::Impl> clone() const override {
+    return std::make_unique<Integration853>(*this);
+  }
+
+  // The interpolant's three extra stages are evaluated on the first time asked inside a step;
+  // asking does not change the run, so a const reading may fill that cache.
+  State at(double t) const override {
+    Vector y;
+    dop_.at(rates(), t / scales_.time, y);
+    return Layout::unpack(model_, y, scales_, t);
+  }
+
+  std::int64_t evaluationCount() const override { return dop_.evaluations(); }
+  std::int64_t rejected(std::int64_t) const override { return dop_.rejected(); }
+
+ private:
+  // The equations of motion in scaled variables, flattened as in Integration.
+  [[gnu::flatten]] void evaluate(const Vector& y, Vector& dydt, double t_scaled) const {
+    Layout::rates(model_, y, dydt, scales_, t_scaled * scales_.time);
+  }
+  auto rates() const {
+    return [this](const Vector& y, Vector& dydt, double t) { evaluate(y, dydt, t); };
+  }
+
+  Model model_;
+  Scales scales_;
+  mutable Dop853<std::tuple_size_v<Vector>> dop_;
+};
+
 std::unique_ptr<AdaptiveStepper::Impl> integrationOf(const Model& model, const State& start) {
-  if (heldOnFloor(model.contact.model)) return std::make_unique<Integration<Rolling>>(model, start);
+  const bool rolling = heldOnFloor(model.contact.model);
+  if (model.integrator == Integrator::Dop853) {
+    if (rolling) return std::make_unique<Integration853<Rolling>>(model, start);
+    return std::make_unique<Integration853<Free>>(model, start);
+  }
+  if (rolling) return std::make_unique<Integration<Rolling>>(model, start);
   return std::make_unique<Integration<Free>>(model, start);
 }
 
@@ -264,17 +325,15 @@ State AdaptiveStepper::at(double t) const {
 }
 
 std::int64_t AdaptiveStepper::evaluations() const {
-  return impl_->evaluations;
+  return impl_->evaluationCount();
 }
 
 bool AdaptiveStepper::keepsRolling() const {
   return impl_->keepsRolling();
 }
 
-// Dormand–Prince with first-same-as-last: every try of a step evaluates the equations six
-// times (stages 2–7, the last at the new point), and the start once.
 std::int64_t AdaptiveStepper::rejected(std::int64_t accepted) const {
-  return (impl_->evaluations - 1) / 6 - accepted;
+  return impl_->rejected(accepted);
 }
 
 }  // namespace sim

@@ -30,11 +30,12 @@ enum class ContactModel { Points, Smooth, Rolling, Auto };
 enum class MassSource { Grid, Continuum };
 enum class FrictionLaw { Coulomb, Regularized };
 /// Fixed-step methods take simulation.dt; Dopri5 (adaptive, Dormand–Prince 5(4) with dense
-/// output, from Boost.Odeint) takes simulation.tolerance.
-enum class Integrator { Euler, Symplectic, Rk4, Dopri5 };
+/// output, from Boost.Odeint) and Dop853 (Dormand–Prince 8(5,3) with its seventh-order
+/// interpolant, sim/dop853.hpp) take simulation.tolerance.
+enum class Integrator { Euler, Symplectic, Rk4, Dopri5, Dop853 };
 
 inline bool isAdaptive(Integrator i) {
-  return i == Integrator::Dopri5;
+  return i == Integrator::Dopri5 || i == Integrator::Dop853;
 }
 
 /// Contact points as structure-of-arrays, body frame (m), for a tight per-step loop.
@@ -212,11 +213,12 @@ struct NameTable<sim::FrictionLaw> {
 };
 template <>
 struct NameTable<sim::Integrator> {
-  static constexpr std::array<std::pair<sim::Integrator, std::string_view>, 4> entries{{
+  static constexpr std::array<std::pair<sim::Integrator, std::string_view>, 5> entries{{
       {sim::Integrator::Euler, "euler"},
       {sim::Integrator::Symplectic, "symplectic"},
       {sim::Integrator::Rk4, "rk4"},
       {sim::Integrator::Dopri5, "dopri5"},
+      {sim::Integrator::Dop853, "dop853"},
   }};
 };
 }  // namespace rb

@@ -104,7 +104,7 @@ struct InitialSpec {
 
 /// simulation: exactly one of dt (a fixed step) and tolerance (adaptive steps).
 struct SimulationSpec {
-  /// euler | symplectic | rk4 (with dt) | dopri5 (with tolerance); empty: symplectic with
+  /// euler | symplectic | rk4 (with dt) | dopri5, dop853 (with tolerance); empty: symplectic with
   /// dt, dopri5 with tolerance.
   std::string integrator;
   double dt = kUnset;         ///< s, > 0

@@ -30,7 +30,8 @@ Eigen::Matrix2d stepMatrix(Integrator integrator, double omega, double zeta, dou
     }
     case Integrator::Rk4:
       return I + hJ + hJ * hJ / 2 + hJ * hJ * hJ / 6 + hJ * hJ * hJ * hJ / 24;
-    case Integrator::Dopri5:  // its step is chosen by error control, not checked here
+    case Integrator::Dopri5:  // their steps are chosen by error control, not checked here
+    case Integrator::Dop853:
       return I;
   }
   return I;

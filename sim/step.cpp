@@ -89,6 +89,7 @@ void advanceBy(const Model& model, State& s, double h) {
       rk4Step(model, s, h);
       break;
     case Integrator::Dopri5:
+    case Integrator::Dop853:
       break;  // driven by the Rollout's adaptive stepper
   }
   holdOnFloor(model, s);

@@ -18,6 +18,7 @@ int orderOf(sim::Integrator integrator) {
     case sim::Integrator::Rk4:
       return 4;
     case sim::Integrator::Dopri5:
+    case sim::Integrator::Dop853:
       break;
   }
   return 0;
@@ -30,8 +31,9 @@ TighterSetting tighterOf(const sim::Model& model) {
   std::ostringstream text;
   const std::string name(rb::nameOf(model.integrator));
   if (sim::isAdaptive(model.integrator)) {
-    // A hundredth of the tolerance: about 100^(1/5) = 2.5× the steps of Dormand–Prince 5(4),
-    // and a run about a hundred times more accurate, so the difference is the run's error.
+    // A hundredth of the tolerance: about 100^(1/5) = 2.5× the steps of Dormand–Prince 5(4)
+    // (100^(1/8) = 1.8× of 8(5,3)), and a run about a hundred times more accurate, so the
+    // difference is the run's error.
     tighter.model.tolerance = model.tolerance / 100;
     text << name << " at tolerance " << tighter.model.tolerance << " (a hundredth)";
   } else {

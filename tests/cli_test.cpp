@@ -3423,8 +3423,8 @@ TEST(Cli, AnOptionWithoutItsValueSaysWhatItTakes) {
        "rattleback: sweep: --jobs takes a whole number (threads), none given (see rattleback "
        "sweep --help)\n"},
       {"simulate " + scene("rattleback") + " --integrator",
-       "rattleback: simulate: --integrator takes a value (euler | symplectic | rk4 | dopri5), "
-       "none given (see rattleback simulate --help)\n"},
+       "rattleback: simulate: --integrator takes a value (euler | symplectic | rk4 | dopri5 | "
+       "dop853), none given (see rattleback simulate --help)\n"},
       // Given twice: it read "--dt: At Most 1 required but received 2" (a physicist's trial).
       {"simulate " + scene("rattleback") + " --dt 1e-4 --dt 2e-4",
        "rattleback: simulate: --dt given 2 times; give it once (see rattleback simulate "

@@ -248,7 +248,7 @@ def simulate(
         spin: initial spin, rad/s (overrides initial.spin).
         dt: a fixed step, s (replaces the scene's dt or tolerance).
         tolerance: adaptive steps (dopri5) to this error per step.
-        integrator: ``euler``, ``symplectic``, ``rk4`` or ``dopri5``.
+        integrator: ``euler``, ``symplectic``, ``rk4``, ``dopri5`` or ``dop853``.
         check: also run at half the step (or a hundredth of the tolerance) and estimate the
             run's errors, as ``simulate --check`` does: :attr:`Run.check`.
 
