@@ -195,6 +195,14 @@ std::array<BothHalf, 2> bothHalves(const sim::Model& model) {
   return {{{against, "against its preferred way"}, {-against, "its preferred way"}}};
 }
 
+std::string titleWithPlayback(const std::string& title, double playback) {
+  if (playback == 1) return title;
+  const std::string speed = ", at " + rb::show(playback) + "\u00d7 speed";
+  const std::size_t named = title.find(": ");
+  return named == std::string::npos ? title + speed
+                                    : title.substr(0, named) + speed + title.substr(named);
+}
+
 rb::Status checkEncoderOptions(int crf, const std::string& preset) {
   if (crf < 1 || crf > 51)
     return rb::Status::fail(rb::argumentName("crf") +
@@ -300,6 +308,7 @@ rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const Vide
       // --both's frames are its halves too (each run is drawn once, for its own video and its
       // half): their text is drawn for the side-by-side video shown at half size.
       if (request.both) settings.text_scale = kBothTextScale;
+      settings.title = titleWithPlayback(settings.title, plan.playback);
       auto created = render::Renderer::create(settings, points, triangles.value());
       if (!created) return rb::machineError("render: " + created.error().text());
       if (renderers.empty()) result.opengl = created.value()->description();

@@ -76,6 +76,12 @@ struct BothHalf {
 /// the scene spins; a body with no preferred direction has the scene's spin on the left.
 std::array<BothHalf, 2> bothHalves(const sim::Model& model);
 
+/// A video's title with its playback speed after the scene's name ("mine, at 0.5× speed: spun
+/// …"), where it is not 1: the frames' clock is the run's, and a reversal at 0.83 s shown at
+/// half speed is seen at 1.66 s. Said first, so that a title too long for the frame loses its
+/// end, not the speed. Stills have no speed and keep their title.
+std::string titleWithPlayback(const std::string& title, double playback);
+
 /// The scene's video(s) as the request says. An error (a bad video section, an encoder or
 /// renderer that fails) is one line; a run that stops or is cancelled is an outcome, with no
 /// video written and no temporary file left.

@@ -705,3 +705,13 @@ TEST(Theory, BothPutsTheSpinAgainstThePreferredWayOnTheLeft) {
     EXPECT_EQ(none[1].way, "");
   }
 }
+
+// A video played slower or faster says so after the scene's name, before what a title too long
+// for the frame loses; at playback 1 the title is the still's.
+TEST(Theory, AVideoNotInRealTimeSaysItsSpeedInItsTitle) {
+  const std::string title = "mine: spun -5 rad/s, clockwise";
+  EXPECT_EQ(media::titleWithPlayback(title, 1), title);
+  EXPECT_EQ(media::titleWithPlayback(title, 0.5),
+            "mine, at 0.5\u00d7 speed: spun -5 rad/s, clockwise");
+  EXPECT_EQ(media::titleWithPlayback(title, 2), "mine, at 2\u00d7 speed: spun -5 rad/s, clockwise");
+}
