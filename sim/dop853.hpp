@@ -98,20 +98,25 @@ class Dop853 {
  private:
   static constexpr double kSafety = 0.9, kLeast = 1.0 / 3, kMost = 6;
 
+  // Stage s of a step of size h from y0 at t0: its slope k[s], from the stages before it. The
+  // step's own stages and the interpolant's three extra ones are all made this way.
+  template <class F>
+  void stage(F&& f, int s, Vector* k, const Vector& y0, double t0, double h) {
+    Vector y;
+    for (std::size_t i = 0; i < N; ++i) {
+      double sum = 0;
+      for (int j = 0; j < s; ++j)
+        if (kA[s][j] != 0) sum += kA[s][j] * k[j][i];
+      y[i] = y0[i] + h * sum;
+    }
+    f(y, k[s], t0 + kC[s] * h);
+    ++evaluations_;
+  }
+
   // The stages 2…12 from k_[0] = f(y, t), and the eighth-order end point.
   template <class F>
   void stages(F&& f, double h, Vector& y_new) {
-    for (int s = 1; s < 12; ++s) {
-      Vector y;
-      for (std::size_t i = 0; i < N; ++i) {
-        double sum = 0;
-        for (int j = 0; j < s; ++j)
-          if (kA[s][j] != 0) sum += kA[s][j] * k_[j][i];
-        y[i] = y_[i] + h * sum;
-      }
-      f(y, k_[s], t_ + kC[s] * h);
-      ++evaluations_;
-    }
+    for (int s = 1; s < 12; ++s) stage(f, s, k_.data(), y_, t_, h);
     for (std::size_t i = 0; i < N; ++i) {
       double sum = 0;
       for (int j = 0; j < 12; ++j) sum += kB[j] * k_[j][i];
@@ -149,17 +154,7 @@ class Dop853 {
     k[0] = k_first_old_;
     for (int s = 1; s < 12; ++s) k[s] = k_[s];
     k[12] = k_end_;
-    for (int s = 13; s < 16; ++s) {
-      Vector y;
-      for (std::size_t i = 0; i < N; ++i) {
-        double sum = 0;
-        for (int j = 0; j < s; ++j)
-          if (kA[s][j] != 0) sum += kA[s][j] * k[j][i];
-        y[i] = y_old_[i] + h * sum;
-      }
-      f(y, k[s], t_old_ + kC[s] * h);
-      ++evaluations_;
-    }
+    for (int s = 13; s < 16; ++s) stage(f, s, k.data(), y_old_, t_old_, h);
     for (std::size_t i = 0; i < N; ++i) {
       const double dy = y_[i] - y_old_[i];
       const double b = h * k[0][i] - dy;

@@ -294,6 +294,28 @@ TEST(VideoContent, BothShowsTheRunSpunAgainstItsPreferredWayOnTheLeft) {
   }
 }
 
+// A video played slower or faster than real time says so in its title ("rattleback, at 0.5×
+// speed: …"), which a still of the same moment does not (a still has no speed): the title's
+// line of the first frame is the still's at playback 1 and not at 0.5. Measured in the title's
+// line: 1.1 at playback 1 (the round trip), 8.7 at 0.5 (the words after "rattleback" move).
+TEST(VideoContent, AVideoNotInRealTimeSaysItsSpeedInItsTitle) {
+  const Region title{0.0, 0.0, 0.75, 0.1};
+  const render::Image first = still("scenes/rattleback.yaml --t 0");
+  for (const char* playback : {"1", "0.5"}) {
+    const fs::path mp4 = scratch(std::string("speed") + playback + ".mp4");
+    ASSERT_EQ(rattleback("render scenes/rattleback.yaml -q --duration 0.2 --fps 10 --playback " +
+                         std::string(playback) + " --size 320x180 -o " + mp4.string()),
+              0);
+    const auto frames = decodeFrames(mp4);
+    ASSERT_FALSE(frames.empty());
+    const double apart = difference(frames.front(), first, title);
+    if (std::string(playback) == "1")
+      EXPECT_LT(apart, kRoundTrip);
+    else
+      EXPECT_GT(apart, 2 * kRoundTrip);
+  }
+}
+
 // The views frame the whole body over the whole run: in every frame of every shipped scene, in
 // every view, no body pixel (red top, blue bottom) lies on the image's border. (Sampled at 5
 // frames per second; the seed's bodies for their first 3 s, in which they topple and settle.)
