@@ -9,6 +9,7 @@
 
 #include "app/commands.hpp"
 #include "sim/analysis.hpp"
+#include "sim/integrator.hpp"
 #include "tasks/analysis.hpp"
 #include "tasks/output.hpp"
 #include "tasks/run_json.hpp"

@@ -16,6 +16,7 @@
 #include "app/progress.hpp"
 #include "sim/analysis.hpp"
 #include "sim/contact_model.hpp"
+#include "sim/integrator.hpp"
 #include "sim/rollout.hpp"
 #include "tasks/analysis.hpp"
 #include "tasks/check.hpp"

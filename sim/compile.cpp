@@ -9,6 +9,7 @@
 #include "sim/contact_model.hpp"
 #include "sim/continuum.hpp"
 #include "sim/initial.hpp"
+#include "sim/integrator.hpp"
 #include "sim/mesh_body.hpp"
 #include "sim/stability.hpp"
 #include "util/arguments.hpp"
@@ -451,9 +452,11 @@ rb::Result<Model> compileRun(const SceneSpec& spec, std::shared_ptr<const Body> 
   // without slipping is non-holonomic, and the method is not symplectic for it (Kane &
   // Levinson without dissipation lose 17.9 % of their energy in 60 s at 0.1 ms and reverse at
   // the wrong times).
-  if (model.integrator == Integrator::Symplectic && contactTraits(model.contact.model).rolls)
+  if (integratorTraits(model.integrator).refused_when_rolling &&
+      contactTraits(model.contact.model).rolls)
     return rb::Error{"simulation.integrator",
-                     "symplectic does not keep the energy of contact.model " +
+                     std::string(rb::nameOf(model.integrator)) +
+                         " does not keep the energy of contact.model " +
                          std::string(rb::nameOf(model.contact.model)) +
                          " (rolling without slipping is non-holonomic: semi-implicit Euler loses "
                          "energy and moves the reversals); use rk4 with a step or dopri5 with a "

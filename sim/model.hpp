@@ -31,12 +31,8 @@ enum class MassSource { Grid, Continuum };
 enum class FrictionLaw { Coulomb, Regularized };
 /// Fixed-step methods take simulation.dt; Dopri5 (adaptive, Dormand–Prince 5(4) with dense
 /// output, from Boost.Odeint) and Dop853 (Dormand–Prince 8(5,3) with its seventh-order
-/// interpolant, sim/dop853.hpp) take simulation.tolerance.
+/// interpolant, sim/dop853.hpp) take simulation.tolerance. What each is: sim/integrator.hpp.
 enum class Integrator { Euler, Symplectic, Rk4, Dopri5, Dop853 };
-
-inline bool isAdaptive(Integrator i) {
-  return i == Integrator::Dopri5 || i == Integrator::Dop853;
-}
 
 /// Contact points as structure-of-arrays, body frame (m), for a tight per-step loop.
 struct ContactPoints {

@@ -9,6 +9,7 @@
 #include "sim/contact_model.hpp"
 #include "sim/crossing.hpp"
 #include "sim/initial.hpp"
+#include "sim/integrator.hpp"
 #include "sim/step.hpp"
 
 namespace sim {
@@ -27,13 +28,9 @@ const char* nonFinite(const State& s) {
 }
 
 std::string stepAdvice(const Model& model) {
+  const IntegratorTraits traits = integratorTraits(model.integrator);
+  if (!traits.advice_on_stop.empty()) return std::string(traits.advice_on_stop);
   if (isAdaptive(model.integrator)) return "try a smaller simulation.tolerance";
-  // Forward Euler adds energy to every rotation at every step: a smaller step only delays the
-  // stop (Kane & Levinson under rolling stop at every step from 4 ms to 62.5 µs, the time
-  // doubling a halving), which the seed's scenes, on a damped floor, hide.
-  if (model.integrator == Integrator::Euler)
-    return "forward Euler adds energy at every step, which a smaller simulation.dt only "
-           "delays: use simulation.integrator rk4 (or symplectic off rolling)";
   return "try a smaller simulation.dt";
 }
 

@@ -1,6 +1,7 @@
 #include "sim/step.hpp"
 
 #include "sim/contact_model.hpp"
+#include "sim/integrator.hpp"
 
 namespace sim {
 namespace {
@@ -29,45 +30,6 @@ State advanced(const State& s, const Rates& r, double h) {
   return out;
 }
 
-namespace {
-
-// Forward Euler (seed §3.4): every variable moves with the rates at the start of the step.
-void eulerStep(const Model& model, State& s, double h) {
-  s = advanced(s, ratesOf(model, s), h);
-}
-
-// Semi-implicit Euler: kick the momenta with the loads at the start, then drift the pose with
-// the new velocities; the rotation by the exact exponential map q ← exp(½ ω dt) ⊗ q.
-void symplecticStep(const Model& model, State& s, double dt) {
-  const Kinematics k = kinematicsOf(model, s);
-  const Load load = loadsOn(model, k);
-  s.v_world += dt * load.force_world / model.body->mass;
-  s.L_world += dt * load.torque_world;
-  s.x_world += dt * s.v_world;
-  const Eigen::Vector3d w_new = angularVelocity(*model.body, k.R, s.L_world);
-  const double angle = w_new.norm() * dt;
-  if (angle > 0) {
-    s.q = Eigen::Quaterniond(Eigen::AngleAxisd(angle, w_new.normalized())) * s.q;
-    s.q.normalize();
-  }
-}
-
-// Classical fourth-order Runge–Kutta on (x, v, q, L).
-void rk4Step(const Model& model, State& s, double h) {
-  const Rates k1 = ratesOf(model, s);
-  const Rates k2 = ratesOf(model, advanced(s, k1, h / 2));
-  const Rates k3 = ratesOf(model, advanced(s, k2, h / 2));
-  const Rates k4 = ratesOf(model, advanced(s, k3, h));
-  Rates sum;
-  sum.dx = (k1.dx + 2 * k2.dx + 2 * k3.dx + k4.dx) / 6;
-  sum.dv = (k1.dv + 2 * k2.dv + 2 * k3.dv + k4.dv) / 6;
-  sum.dq = (k1.dq + 2 * k2.dq + 2 * k3.dq + k4.dq) / 6;
-  sum.dL = (k1.dL + 2 * k2.dL + 2 * k3.dL + k4.dL) / 6;
-  s = advanced(s, sum, h);
-}
-
-}  // namespace
-
 Load loadsOn(const Model& model, const Kinematics& k) {
   Load load;
   floorLoad(model, k, load);
@@ -78,20 +40,8 @@ Load loadsOn(const Model& model, const Kinematics& k) {
 }
 
 void advanceBy(const Model& model, State& s, double h) {
-  switch (model.integrator) {
-    case Integrator::Euler:
-      eulerStep(model, s, h);
-      break;
-    case Integrator::Symplectic:
-      symplecticStep(model, s, h);
-      break;
-    case Integrator::Rk4:
-      rk4Step(model, s, h);
-      break;
-    case Integrator::Dopri5:
-    case Integrator::Dop853:
-      break;  // driven by the Rollout's adaptive stepper
-  }
+  // (an adaptive method has no fixed step: the Rollout's AdaptiveStepper drives it)
+  if (const auto method = integratorTraits(model.integrator).step) method(model, s, h);
   holdOnFloor(model, s);
 }
 

@@ -1,5 +1,5 @@
-// Time stepping (docs/physics.md P3): forward Euler (the seed's, §3.4), semi-implicit
-// (symplectic) Euler with the exact exponential map for the rotation, and classical RK4.
+// Time stepping (docs/physics.md P3): the loads, the rates of the state, and a fixed step of
+// the model's integrator (the methods themselves are behind sim/integrator.hpp).
 #pragma once
 
 #include "sim/contact.hpp"

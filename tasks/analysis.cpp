@@ -6,6 +6,7 @@
 #include "sim/analysis.hpp"
 #include "sim/compile.hpp"
 #include "sim/continuum.hpp"
+#include "sim/integrator.hpp"
 #include "sim/stability.hpp"
 #include "sim/switching.hpp"
 #include "util/format.hpp"

@@ -8,6 +8,8 @@
 
 #include "scene/loader.hpp"
 #include "sim/compile.hpp"
+#include "sim/contact_model.hpp"
+#include "sim/integrator.hpp"
 #include "sim/rollout.hpp"
 #include "tasks/scene_args.hpp"
 #include "tasks/table.hpp"
@@ -30,9 +32,6 @@ constexpr std::size_t kMaxBenchPoints = 10000;
 // and a damping ratio ζ = c / (2 sqrt(kM)) of 0.06 (the default body's c = 4 N s/m).
 constexpr double kDefaultStiffness = 2.0e4;
 constexpr double kDefaultZeta = 0.06;
-
-constexpr sim::Integrator kIntegrators[] = {sim::Integrator::Euler, sim::Integrator::Symplectic,
-                                            sim::Integrator::Rk4, sim::Integrator::Dopri5};
 
 // The coarsest step of each model's ladder: rolling has no contact spring (rk4 is converged
 // to 4 digits at 1 ms); the penalty models need steps near 1/ω of their floor and, with
@@ -352,7 +351,9 @@ bool benchScene(const BenchScene& scene, const BenchOptions& options, std::vecto
   std::vector<sim::Integrator> integrators;
   for (const std::string& i : options.integrators)
     integrators.push_back(*rb::parseName<sim::Integrator>(i));
-  if (integrators.empty()) integrators.assign(std::begin(kIntegrators), std::end(kIntegrators));
+  if (integrators.empty())
+    for (const auto& [integrator, name] : rb::NameTable<sim::Integrator>::entries)
+      if (sim::integratorTraits(integrator).benched_by_default) integrators.push_back(integrator);
   using M = sim::ContactModel;
   const Trace rolling_reference = reference(scene, base, M::Rolling, options.rungs);
   for (const M model : modelsOf(scene, options)) {
@@ -365,10 +366,11 @@ bool benchScene(const BenchScene& scene, const BenchOptions& options, std::vecto
       // its dopri5 rows only when asked for by name.
       const bool adaptive = sim::isAdaptive(integrator);
       if (adaptive && model == M::Points && options.integrators.empty()) continue;
-      // Semi-implicit Euler is refused where the body rolls (sim/compile.cpp); its rows only
-      // when asked for by name, to show the refusal.
-      const bool rolls = model == M::Rolling || model == M::Auto;
-      if (integrator == sim::Integrator::Symplectic && rolls && options.integrators.empty())
+      // A method refused where the body rolls (semi-implicit Euler, sim/compile.cpp): its rows
+      // only when asked for by name, to show the refusal.
+      const bool rolls = sim::contactTraits(model).rolls;
+      if (sim::integratorTraits(integrator).refused_when_rolling && rolls &&
+          options.integrators.empty())
         continue;
       if (!ladder(scene, base, model, integrator, options, {own, rolling_reference}, rows))
         return false;

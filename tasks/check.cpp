@@ -3,28 +3,10 @@
 #include <cmath>
 #include <sstream>
 
+#include "sim/integrator.hpp"
 #include "util/names.hpp"
 
 namespace tasks {
-namespace {
-
-// The order of each fixed-step method: the global error falls as h^p.
-int orderOf(sim::Integrator integrator) {
-  switch (integrator) {
-    case sim::Integrator::Euler:
-      return 1;
-    case sim::Integrator::Symplectic:
-      return 1;  // semi-implicit Euler
-    case sim::Integrator::Rk4:
-      return 4;
-    case sim::Integrator::Dopri5:
-    case sim::Integrator::Dop853:
-      break;
-  }
-  return 0;
-}
-
-}  // namespace
 
 TighterSetting tighterOf(const sim::Model& model) {
   TighterSetting tighter{model, "", std::nullopt};
@@ -38,7 +20,7 @@ TighterSetting tighterOf(const sim::Model& model) {
     text << name << " at tolerance " << tighter.model.tolerance << " (a hundredth)";
   } else {
     tighter.model.dt = model.dt / 2;
-    tighter.order = orderOf(model.integrator);
+    tighter.order = sim::integratorTraits(model.integrator).order;
     text << name << " at dt " << tighter.model.dt << " s (half the step)";
   }
   tighter.description = text.str();

@@ -9,6 +9,7 @@
 
 #include "render/views.hpp"
 #include "sim/analysis.hpp"
+#include "sim/integrator.hpp"
 #include "tasks/analysis.hpp"
 #include "tasks/run_json.hpp"
 #include "tasks/simulate.hpp"

@@ -8,6 +8,7 @@
 #include "scene/loader.hpp"
 #include "sim/analysis.hpp"
 #include "sim/contact_model.hpp"
+#include "sim/integrator.hpp"
 #include "sim/reversals.hpp"
 #include "tasks/analysis.hpp"
 #include "tasks/outcome.hpp"

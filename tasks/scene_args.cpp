@@ -7,6 +7,7 @@
 
 #include "sim/compile.hpp"
 #include "sim/contact_model.hpp"
+#include "sim/integrator.hpp"
 #include "util/assets.hpp"
 #include "util/format.hpp"
 
