@@ -1,11 +1,10 @@
 // `rattleback report DIR`: the page tasks/report writes, and its path.
-#include "tasks/report.hpp"
-
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "tasks/report/page.hpp"
 #include "util/assets.hpp"
 
 namespace app {

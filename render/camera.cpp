@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/views.hpp"
+#include "util/picture.hpp"
 
 namespace render {
 namespace {

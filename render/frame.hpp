@@ -10,15 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "util/names.hpp"
+#include "util/picture.hpp"
 
 namespace render {
-
-enum class View { Oblique, Above, Front, Side, Follow };
-
-/// How the body is drawn: its surface points as spheres, or its closed surface as shaded
-/// triangles (video.surface).
-enum class Surface { Points, Triangles };
 
 /// The body as the renderer sees it, body frame (origin at the CM), metres.
 struct BodyPoints {
@@ -77,10 +71,6 @@ struct FrameInput {
   std::span<const double> reversals;
 };
 
-/// How OpenGL is reached (render/gl.hpp): EGL (a GPU, or Mesa's surfaceless llvmpipe) or OSMesa;
-/// Auto tries EGL first.
-enum class Backend { Auto, Egl, OsMesa };
-
 struct RenderSettings {
   int width = 1280, height = 720;  ///< pixels
   Backend backend{};               ///< OpenGL through EGL or OSMesa (Backend::Auto: EGL first)
@@ -116,31 +106,3 @@ struct Image {
 };
 
 }  // namespace render
-
-namespace rb {
-template <>
-struct NameTable<render::View> {
-  static constexpr std::array<std::pair<render::View, std::string_view>, 5> entries{{
-      {render::View::Oblique, "oblique"},
-      {render::View::Above, "above"},
-      {render::View::Front, "front"},
-      {render::View::Side, "side"},
-      {render::View::Follow, "follow"},
-  }};
-};
-template <>
-struct NameTable<render::Surface> {
-  static constexpr std::array<std::pair<render::Surface, std::string_view>, 2> entries{{
-      {render::Surface::Points, "points"},
-      {render::Surface::Triangles, "triangles"},
-  }};
-};
-template <>
-struct NameTable<render::Backend> {
-  static constexpr std::array<std::pair<render::Backend, std::string_view>, 3> entries{{
-      {render::Backend::Auto, "auto"},
-      {render::Backend::Egl, "egl"},
-      {render::Backend::OsMesa, "osmesa"},
-  }};
-};
-}  // namespace rb

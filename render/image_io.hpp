@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "render/frame.hpp"
+#include "util/picture.hpp"
 #include "util/result.hpp"
 
 namespace render {
@@ -37,17 +38,6 @@ struct Comparison {
 };
 
 Comparison compareImages(const Image& a, const Image& b, int channel_tolerance);
-
-/// When two images count as the same (`rattleback compare`, snapshot suites, Python's compare):
-/// a pixel differs when a channel differs by more than `channel` (0–255); the images match when
-/// at most the fraction `pixels` of them differ and no square of `square` pixels a side all
-/// differ (0: no square check). The defaults are those of docs/testing.md "Snapshot tests in
-/// your CI": 2 steps absorb the one-step moves another CPU's rasteriser makes.
-struct Tolerance {
-  int channel = 2;
-  double pixels = 0.002;
-  int square = 4;
-};
 
 /// The verdict of a comparison under a tolerance: false for images of different sizes.
 bool matches(const Comparison& c, const Tolerance& tolerance);

@@ -4,10 +4,10 @@
 #include <charconv>
 #include <cmath>
 
-#include "render/frame.hpp"  // the name tables of video.view and video.surface (header only)
 #include "sim/contact_model.hpp"
 #include "sim/model.hpp"
 #include "util/assets.hpp"
+#include "util/picture.hpp"  // the name tables of video.view and video.surface
 
 namespace scene {
 namespace {

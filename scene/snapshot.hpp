@@ -14,9 +14,8 @@
 #include <string_view>
 #include <vector>
 
-#include "render/frame.hpp"     // the name tables of views and backends (header only)
-#include "render/image_io.hpp"  // render::Tolerance (header only: no render library)
 #include "sim/run_time.hpp"
+#include "util/picture.hpp"  // views, backends and render::Tolerance
 #include "util/result.hpp"
 
 namespace scene {

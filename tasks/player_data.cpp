@@ -7,13 +7,13 @@
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 
-#include "render/views.hpp"
 #include "sim/analysis.hpp"
 #include "sim/integrator.hpp"
 #include "tasks/analysis.hpp"
 #include "tasks/run_json.hpp"
 #include "tasks/simulate.hpp"
 #include "util/names.hpp"
+#include "util/picture.hpp"
 
 namespace tasks {
 namespace {
@@ -84,7 +84,7 @@ bool replays(const std::vector<Pose>& poses, const std::vector<std::size_t>& kep
   return true;
 }
 
-// The views' cameras, in the renderer's order (render/views.hpp): "views":[{"name":"oblique",
+// The views' cameras, in the renderer's order (util/picture.hpp): "views":[{"name":"oblique",
 // "projection":"perspective","toward_eye":[…],"up":[…],"elevation_deg":0,…},…].
 std::string viewsJson() {
   // A float as the decimal it was written as (0.55f, not 0.550000011920929).

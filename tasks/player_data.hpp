@@ -4,7 +4,7 @@
 //   (window.RATTLEBACK_RUNS = window.RATTLEBACK_RUNS || {})["ID"] = {…};
 //
 // holding the drawn points (body frame about the CM, m), the fixed views' framing, the views'
-// cameras (the renderer's own table, render/views.hpp), and the run's poses: t, x, y, z (CM, world,
+// cameras (the renderer's own table, util/picture.hpp), and the run's poses: t, x, y, z (CM, world,
 // m), qw, qx, qy, qz (body to world, scalar first) and the spin n (rad/s), at most kPlayerRate
 // samples per simulated second. A run spun one way may carry the same body spun the other
 // way ("spun": the run's initial spin, rad/s; "other": {spun, t, x, …, spin, reversals}, the

@@ -24,7 +24,8 @@
 #include "sim/compile.hpp"
 #include "sim/rollout.hpp"
 #include "tasks/bench.hpp"
-#include "tasks/report.hpp"
+#include "tasks/report/html.hpp"
+#include "tasks/report/page.hpp"
 
 namespace fs = std::filesystem;
 

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "render/views.hpp"
 #include "scene/loader.hpp"
 #include "tasks/run_json.hpp"
+#include "util/picture.hpp"
 
 namespace {
 
@@ -38,7 +38,7 @@ TEST(Player, PosesAreKeptAsTheReplayNeedsThem) {
   EXPECT_EQ(tasks::thinPoses(poses(17, 10)).size(), 2001u);
 }
 
-// The player places its cameras by the renderer's own table (render/views.hpp), which comes with
+// The player places its cameras by the renderer's own table (util/picture.hpp), which comes with
 // each run's data: every view, in the renderer's order, with the table's numbers as written
 // (0.55, not the float's 0.550000011920929).
 TEST(Player, DataCarriesTheRenderersViews) {

@@ -1,6 +1,6 @@
 // The player's cameras: a perspective one (oblique, follow) and an orthographic one (above,
 // front, side) placed as the renderer places its own, by the renderer's table of views
-// (render/views.hpp) that comes with each run's data; orbit controls make any view free.
+// (util/picture.hpp) that comes with each run's data; orbit controls make any view free.
 import { OrthographicCamera, PerspectiveCamera, Vector3 } from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 
@@ -157,7 +157,7 @@ export const cameraMethods = {
   },
 
   // A fixed view as the renderer places it (render/camera.cpp, by the table that came with the
-  // run: render/views.hpp).
+  // run: util/picture.hpp).
   placeCamera() {
     const preset = this.views[this.viewName];
     if (!preset) return; // free: where the pointer left it

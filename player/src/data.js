@@ -131,7 +131,7 @@ export function formatStep(t) {
   return `${+dt.toPrecision(3)} s`;
 }
 
-// The views' cameras by name, as the renderer places them (its table, render/views.hpp, comes
+// The views' cameras by name, as the renderer places them (its table, util/picture.hpp, comes
 // with the data): {oblique: {projection, toward_eye, up, elevation_deg, fov_deg, margin, eye_r,
 // near_r, far_r}, …}, in the renderer's order.
 export function viewsOf(run) {

@@ -1,7 +1,5 @@
 #include "tasks/report/html.hpp"
 
-#include "tasks/report.hpp"
-
 namespace tasks {
 
 std::string urlPath(const std::string& name) {

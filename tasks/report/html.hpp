@@ -4,6 +4,15 @@
 #include <ostream>
 #include <string>
 
+namespace tasks {
+
+/// A file's name (or a path relative to the page, '/' between folders) as a relative URL's path:
+/// each byte but the unreserved ones (RFC 3986: A-Z a-z 0-9 - . _ ~) and '/' as %XX. The browser
+/// reads "my top #1.png" as "my top" and a fragment, and a '%' or '?' in a name breaks it alike.
+std::string urlPath(const std::string& name);
+
+}  // namespace tasks
+
 namespace tasks::report {
 
 /// Text for HTML: & < > " as entities.

@@ -1,9 +1,10 @@
 // The report page: DIR/index.html, its style, and the order of its sections (scenes with videos
 // first, then the rest, the sweeps, the other files), with the players' scripts last.
+#include "tasks/report/page.hpp"
+
 #include <algorithm>
 
 #include "tasks/output.hpp"
-#include "tasks/report.hpp"
 #include "tasks/report/html.hpp"
 #include "tasks/report/inventory.hpp"
 #include "tasks/report/player_files.hpp"
