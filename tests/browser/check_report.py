@@ -193,12 +193,17 @@ def present_reversal(driver, player, where, failures, screenshots):
           return g.getImageData(0, 0, c.width, c.height).data;
         };
         const before = grab();
+        // (the canvas is opaque: a part never drawn since it was resized reads black)
+        let undrawn = 0;
+        for (let i = 0; i < before.length; i += 4)
+          if (before[i] < 8 && before[i + 1] < 8 && before[i + 2] < 8) undrawn++;
         p.renderAll();
         const after = grab();
         let differ = 0;
         for (let i = 0; i < before.length; i += 4)
           if (Math.abs(before[i] - after[i]) + Math.abs(before[i + 1] - after[i + 1]) + Math.abs(before[i + 2] - after[i + 2]) > 12) differ++;
-        return {time: p.time(), reversals: p.reversals(), playing: p.playing(), empty, differ,
+        return {time: p.time(), reversals: p.reversals(), playing: p.playing(), empty, differ, undrawn,
+                pixels: before.length / 4,
                 sense: root.querySelector('.rbp-sense').textContent,
                 label: root.querySelector('.rbp-reversal-label').textContent};""",
         player,
@@ -210,6 +215,8 @@ def present_reversal(driver, player, where, failures, screenshots):
         failures.append(f"{where}: at the reversal the sense's line says {got['sense']!r}")
     if got["empty"]:
         failures.append(f"{where}: at the reversal, empty boxes over the picture: {got['empty']}")
+    if got["undrawn"] > 0.001 * got["pixels"]:
+        failures.append(f"{where}: at the reversal {got['undrawn']} pixels of the picture were never drawn")
     if got["differ"] > 0:
         failures.append(
             f"{where}: at the reversal {got['differ']} pixels differ from the picture drawn whole"
