@@ -200,12 +200,17 @@ void drawSpinInset(Image& image, Overlay& font, std::span<const std::array<float
   const int x0 = image.width - w - margin, y0 = insetTop(image.height);
   fillRect(image, x0, y0, x0 + w, y0 + h, {255, 255, 255, 200});
   const float left = x0 + pad, right = x0 + w - pad;
+  // The curve a 240th of the frame's height wide, at least 2 px (3 px at 720p): 2 px alone
+  // was a hairline from the back of a room. The small frames (the goldens', 180 px) keep 2 px.
+  const float curve = std::max(2.0f, image.height / 240.0f);
   // The curve's band starts below the title's descenders (the title's line ends at
-  // y0 + pad + lineHeight) with room for the curve's 2-pixel width and its antialiased edge,
+  // y0 + pad + lineHeight) with room for half the curve's width and its antialiased edge,
   // so the curve never runs through the title.
-  const float top = y0 + pad + font.lineHeight() + 0.5f * pad + 2, bottom = y0 + h - pad - 2;
+  const float room = curve / 2 + 1;
+  const float top = y0 + pad + font.lineHeight() + 0.5f * pad + room;
+  const float bottom = y0 + h - pad - room;
   const float mid = 0.5f * (top + bottom);
-  drawLine(image, left, mid, right, mid, 1, {90, 90, 90, 255});  // n = 0
+  drawLine(image, left, mid, right, mid, std::max(1.0f, curve / 2), {90, 90, 90, 255});  // n = 0
   font.text(image, x0 + pad, y0 + pad + font.lineHeight() * 3 / 4, label, {40, 40, 40, 255});
   auto to_screen = [&](const std::array<float, 2>& p) {
     const float x = left + (right - left) * static_cast<float>(p[0] / duration);
@@ -219,11 +224,11 @@ void drawSpinInset(Image& image, Overlay& font, std::span<const std::array<float
   for (double t : reversals) {
     if (t > now || t > duration) continue;
     const float x = to_screen({static_cast<float>(t), 0})[0];
-    drawLine(image, x, top, x, bottom, 2, {30, 30, 30, 255});
+    drawLine(image, x, top, x, bottom, curve, {30, 30, 30, 255});
   }
   for (std::size_t i = 1; i < history.size(); ++i) {
     const auto a = to_screen(history[i - 1]), b = to_screen(history[i]);
-    drawLine(image, a[0], a[1], b[0], b[1], 2, {20, 60, 160, 255});
+    drawLine(image, a[0], a[1], b[0], b[1], curve, {20, 60, 160, 255});
   }
 }
 

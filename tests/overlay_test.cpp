@@ -239,3 +239,31 @@ TEST(Overlay, AStillSaysItsFloorsScale) {
     EXPECT_GT(corner, 1000) << view << " of " << all;
   }
 }
+
+// The inset's curve is read from the back of a room: at 720p it is at least 3 px thick, at
+// 1080p at least 4, while a 180-px frame (the goldens') keeps its 2 px. Counted down the
+// middle column of a flat curve at n = range / 2: the rows at least half covered by it.
+namespace {
+int curveRows(int width, int height) {
+  render::Image image;
+  image.width = width, image.height = height;
+  image.rgba.assign(static_cast<std::size_t>(width) * height * 4, 255);
+  render::Overlay font;
+  EXPECT_EQ(font.load(std::max(10, height / 24)), "");
+  const std::vector<std::array<float, 2>> history{{0.0f, 2.5f}, {8.0f, 2.5f}};
+  render::drawSpinInset(image, font, history, 8.0, 5.0, {});
+  const int x = width - width * 3 / 20 - height / 40;  // about the inset's middle
+  int rows = 0;
+  for (int y = render::insetTop(height); y < height; ++y) {
+    const unsigned char* p = &image.rgba[(static_cast<std::size_t>(y) * width + x) * 4];
+    if (p[0] < 140 && p[2] > p[0] + 60) ++rows;  // the curve's blue, at least half covering
+  }
+  return rows;
+}
+}  // namespace
+
+TEST(Overlay, TheInsetsCurveIsThickEnoughToReadAtADistance) {
+  EXPECT_EQ(curveRows(320, 180), 2);
+  EXPECT_GE(curveRows(1280, 720), 3);
+  EXPECT_GE(curveRows(1920, 1080), 4);
+}

@@ -315,7 +315,12 @@ export const controlsMethods = {
     const signed = (spin >= 0 ? '+' : '-') + Math.abs(spin).toFixed(2);
     this.show(this.readTime, `t = ${t.toFixed(2).padStart(6)} s`);
     this.show(this.readSpin, `spin n = ${signed.padStart(6)} rad/s`);
-    this.show(this.readSense, spin > 0.05 ? '(counter-clockwise)' : spin < -0.05 ? '(clockwise)' : '\u00a0');
+    // Words at n ≈ 0 too: a blank line there read as a read-out gone missing, at the very moment
+    // (a reversal) a lesson stops on.
+    this.show(
+      this.readSense,
+      spin > 0.05 ? '(counter-clockwise)' : spin < -0.05 ? '(clockwise)' : '(not spinning)',
+    );
     if (document.activeElement !== this.slider || !this.sliderDragging) this.slider.value = String(t);
     this.moveCursor();
   },

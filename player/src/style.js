@@ -44,8 +44,8 @@ export const STYLE = `
 .rbp.rbp-present .rbp-main{flex:1 1 auto;min-width:0;display:flex;flex-direction:column;align-items:center}
 .rbp.rbp-present .rbp-stage{width:min(100%,calc((100vh - 110px) * 16 / 9))}
 .rbp.rbp-present .rbp-bar,.rbp.rbp-present .rbp-views{width:min(100%,calc((100vh - 110px) * 16 / 9))}
-.rbp.rbp-present .rbp-side{position:absolute;left:calc(28px + (100vw - 24px - min(100vw - 24px, (100vh - 110px) * 16 / 9)) / 2);top:24px;flex:none;width:auto;background:rgba(255,255,255,.82);padding:6px 14px;border-radius:4px;pointer-events:none}
-.rbp.rbp-present .rbp-title{font-size:max(20px,2.4vh)}
+.rbp.rbp-present .rbp-side{position:absolute;left:calc(28px + (100vw - 24px - min(100vw - 24px, (100vh - 110px) * 16 / 9)) / 2);top:24px;flex:none;width:auto;background:rgba(255,255,255,.82);padding:6px 14px;border-radius:4px;pointer-events:none;max-width:calc(min(100vw - 24px, (100vh - 110px) * 16 / 9) - 60px)}
+.rbp.rbp-present .rbp-title{font-size:max(26px,3.6vh)}
 .rbp.rbp-present .rbp-read{font-size:max(26px,3.6vh)}
 .rbp.rbp-present .rbp-plotbox,.rbp.rbp-present .rbp-help{display:none}
 .rbp.rbp-present .rbp-reversal-label{font-size:max(24px,3.4vh);top:16px;right:16px}

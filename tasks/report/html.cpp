@@ -72,9 +72,14 @@ void writeVideoFigure(std::ostream& out, const std::string& file, const std::str
       << caption << "</figcaption></figure>\n";
 }
 
+// The bar and caption are as wide as the video above them (a narrow video's slider and Full
+// screen button otherwise ran on across the page): the figure's one column is the video's own
+// width, at most the figure's, and the bar and caption, contained, do not widen it.
 const char* const kVideoStyle = R"(
+figure.vid{display:grid;grid-template-columns:minmax(0,max-content)}
+figure.vid>.vbar,figure.vid>figcaption{contain:inline-size}
 .vbar{display:flex;gap:.4em;align-items:center;margin:.3em 0 .2em;font-size:.9em}
-.vbar button{font:inherit;padding:.1em .6em}.vseek{flex:1 1 auto;min-width:60px}
+.vbar button{font:inherit;padding:.1em .6em;white-space:nowrap}.vseek{flex:1 1 auto;min-width:60px}
 .vtime{font-family:"DejaVu Sans Mono",monospace;min-width:5.5em;text-align:right}
 figure.vid:fullscreen{background:#000;display:flex;flex-direction:column;justify-content:center;margin:0;padding:1em;box-sizing:border-box}
 figure.vid:fullscreen video{max-height:calc(100vh - 5em);width:auto;max-width:100%;margin:0 auto;background:#000}

@@ -8,10 +8,12 @@ For a classroom, at a 1280 × 720 and a 1920 × 1080 viewport: no video has the
 browser's controls (they lie over its bottom edge, where the inset is drawn) and each has the
 page's own bar below it, not over it; the player's keys, P (present) among them, are listed on
 the page; the player offers the body spun both ways, and its buttons and S switch the run
-played; present mode (P) fills the viewport with the picture, whole, and large read-outs that
-lie inside it, and Esc leaves it. With SCREENSHOT_DIR, the page at its first video, the player
+played; each video's bar is no wider than it; present mode (P) fills the viewport with the
+picture, whole, and large read-outs that lie inside it, the title as large as they are; R there
+stops at the reversal with its sense said, no empty box over the picture and the picture as
+drawn whole; and Esc leaves it. With SCREENSHOT_DIR, the page at its first video, the player
 switched to its other spin and in present mode are saved there at both sizes (report-WxH.png,
-spins-WxH.png, present-WxH.png), to look at.
+spins-WxH.png, present-WxH.png, present-reversal-WxH.png), to look at.
 
 Usage: check_report.py DIR EXPECTED_VIDEO_SECONDS [SCREENSHOT_DIR]
 Exit status 0 when every check passes, 1 when one fails (each failure printed), 77 when
@@ -50,7 +52,7 @@ def classroom(driver, size, failures, screenshots):
             const b = bar && !bar.hidden ? bar.getBoundingClientRect() : null;
             return {src: v.getAttribute('src'), controls: v.hasAttribute('controls'),
                     bottom: r.bottom, left: r.left, right: r.right,
-                    bar: b && {top: b.top, height: b.height}};
+                    bar: b && {top: b.top, height: b.height, width: b.width}};
         });"""
     )
     for v in videos:
@@ -61,6 +63,13 @@ def classroom(driver, size, failures, screenshots):
         elif v["bar"]["top"] < v["bottom"] - 0.5:
             failures.append(
                 f"{where}: video {v['src']}: its bar (top {v['bar']['top']}) lies over it (bottom {v['bottom']})"
+            )
+        # The bar belongs to its video: no wider than it (a 320- or 640-wide video's slider and
+        # Full screen button ran on across the page).
+        elif v["bar"]["width"] > v["right"] - v["left"] + 0.5:
+            failures.append(
+                f"{where}: video {v['src']} is {v['right'] - v['left']:.0f} px wide, its bar "
+                f"{v['bar']['width']:.0f} px"
             )
     # The page's own bar works: its play button plays the video.
     played = driver.execute_async_script(
@@ -104,6 +113,7 @@ def classroom(driver, size, failures, screenshots):
                 read: box(root.querySelector('.rbp-spin')),
                 side: box(root.querySelector('.rbp-side')),
                 font: parseFloat(getComputedStyle(root.querySelector('.rbp-spin')).fontSize),
+                title: parseFloat(getComputedStyle(root.querySelector('.rbp-title')).fontSize),
                 vw: document.documentElement.clientWidth, vh: document.documentElement.clientHeight};""",
         player,
     )
@@ -136,6 +146,14 @@ def classroom(driver, size, failures, screenshots):
             failures.append(
                 f"{where}: in present mode the spin read-out is {got['font']} px at {got['read']}"
             )
+        # The title in the read-outs' type, a 28th of the screen's height (docs/commands.md),
+        # read from the back of a room as they are.
+        if abs(got["title"] - max(26, vh / 28)) > 1 or abs(got["title"] - got["font"]) > 0.5:
+            failures.append(
+                f"{where}: in present mode the title is {got['title']} px, the read-outs "
+                f"{got['font']} px, not a 28th of {vh} px"
+            )
+        present_reversal(driver, player, where, failures, screenshots)
         if screenshots:
             driver.save_screenshot(str(pathlib.Path(screenshots) / f"present-{where}.png"))
     ActionChains(driver).send_keys(Keys.ESCAPE).perform()
@@ -144,6 +162,67 @@ def classroom(driver, size, failures, screenshots):
         "return arguments[0].querySelector('.rbp').classList.contains('rbp-present');", player
     ):
         failures.append(f"{where}: Esc did not leave present mode")
+
+
+def present_reversal(driver, player, where, failures, screenshots):
+    """In present mode, R goes to the reversal, paused: the sense's line says something (a
+    blank line there was taken for a read-out gone missing), no box with a background over the
+    picture is empty, and the picture drawn in part since entering present mode is the one
+    drawn whole."""
+    from selenium.webdriver.common.action_chains import ActionChains
+
+    ActionChains(driver).send_keys("r").perform()
+    time.sleep(0.8)
+    got = driver.execute_script(
+        """const e = arguments[0], root = e.querySelector('.rbp'), p = e.rbPlayer;
+        const stage = root.querySelector('.rbp-stage').getBoundingClientRect();
+        const empty = [];
+        for (const x of root.querySelectorAll('*')) {
+          const s = getComputedStyle(x), r = x.getBoundingClientRect();
+          if (x instanceof SVGElement || x.tagName === 'CANVAS' || x.tagName === 'INPUT') continue;
+          if (s.display === 'none' || s.visibility === 'hidden' || !(r.width > 1 && r.height > 1)) continue;
+          if (r.right <= stage.left || r.left >= stage.right || r.bottom <= stage.top || r.top >= stage.bottom) continue;
+          if (x.classList.contains('rbp-stage')) continue;
+          const painted = s.backgroundColor !== 'rgba(0, 0, 0, 0)' && s.backgroundColor !== 'transparent';
+          if (painted && !x.textContent.trim()) empty.push([x.className, Math.round(r.left), Math.round(r.top), Math.round(r.width), Math.round(r.height)]);
+        }
+        const grab = () => {
+          const src = root.querySelector('.rbp-stage canvas'), c = document.createElement('canvas');
+          c.width = src.width; c.height = src.height;
+          const g = c.getContext('2d'); g.drawImage(src, 0, 0);
+          return g.getImageData(0, 0, c.width, c.height).data;
+        };
+        const before = grab();
+        // (the canvas is opaque: a part never drawn since it was resized reads black)
+        let undrawn = 0;
+        for (let i = 0; i < before.length; i += 4)
+          if (before[i] < 8 && before[i + 1] < 8 && before[i + 2] < 8) undrawn++;
+        p.renderAll();
+        const after = grab();
+        let differ = 0;
+        for (let i = 0; i < before.length; i += 4)
+          if (Math.abs(before[i] - after[i]) + Math.abs(before[i + 1] - after[i + 1]) + Math.abs(before[i + 2] - after[i + 2]) > 12) differ++;
+        return {time: p.time(), reversals: p.reversals(), playing: p.playing(), empty, differ, undrawn,
+                pixels: before.length / 4,
+                sense: root.querySelector('.rbp-sense').textContent,
+                label: root.querySelector('.rbp-reversal-label').textContent};""",
+        player,
+    )
+    if not got["reversals"] or abs(got["time"] - got["reversals"][0]) > 1e-6 or got["playing"]:
+        failures.append(f"{where}: in present mode R did not stop at the reversal: {got}")
+        return
+    if not got["sense"].strip() or "not spinning" not in got["sense"]:
+        failures.append(f"{where}: at the reversal the sense's line says {got['sense']!r}")
+    if got["empty"]:
+        failures.append(f"{where}: at the reversal, empty boxes over the picture: {got['empty']}")
+    if got["undrawn"] > 0.001 * got["pixels"]:
+        failures.append(f"{where}: at the reversal {got['undrawn']} pixels of the picture were never drawn")
+    if got["differ"] > 0:
+        failures.append(
+            f"{where}: at the reversal {got['differ']} pixels differ from the picture drawn whole"
+        )
+    if screenshots:
+        driver.save_screenshot(str(pathlib.Path(screenshots) / f"present-reversal-{where}.png"))
 
 
 def both_spins(driver, player, where, failures, screenshots):

@@ -13,7 +13,8 @@ and, for every .rb-player on it:
     footprint ends (from above with the body hidden, against the shadow's strength set to 0);
   - the n(t) plot marks the forecast first reversal (data-forecast) with a violet line and its
     label when the forecast applies and falls within the run, and has no violet otherwise;
-  - the read-outs show the time and the spin with its sense, at the slider's times;
+  - the read-outs show the time and the spin with its sense, at the slider's times ("not
+    spinning" at a reversal);
   - the slider (its value set and an 'input' event dispatched) to times between samples gives
     the run's pose: the drawn quaternion equals the slerp of the data's two neighbouring samples
     (within 1e-6, up to sign) and the position their linear interpolation; the data embedded
@@ -552,6 +553,11 @@ class Checker:
                 self.check(
                     abs(said_n) <= 0.01,
                     f"{where}: at the reversal, t = {got_t}, the " f"read-out says {shown_n!r}, not ±0.00",
+                )
+                # The sense's line says so, not a blank line where the words were.
+                self.check(
+                    "(not spinning)" in shown_n,
+                    f"{where}: at the reversal, t = {got_t}, the sense's line says {shown_n!r}",
                 )
             if said and abs(spin) > 0.05 + room:
                 sense = "(counter-clockwise)" if spin > 0 else "(clockwise)"
