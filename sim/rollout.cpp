@@ -7,7 +7,6 @@
 
 #include "sim/adaptive.hpp"
 #include "sim/contact_model.hpp"
-#include "sim/crossing.hpp"
 #include "sim/initial.hpp"
 #include "sim/integrator.hpp"
 #include "sim/step.hpp"
@@ -230,19 +229,15 @@ void Rollout::watch(const Eigen::Matrix3d& R, const Eigen::Vector3d& w) {
   }
 }
 
-// Reversals (sim/reversals.hpp, the rule): each crossing's time is found on the interpolant of
-// the step by regula falsi (Illinois), so it is as accurate as the states between steps.
+// Reversals (sim/reversals.hpp, the rule): n between the step's ends is read on the interpolant
+// of the step, so crossings and thresholds are placed as accurately as the states between steps.
 void Rollout::locateReversal(double previous_spin, double spin) {
   const bool at_end = current_.t >= model_.duration * (1 - kSameTime);
   reversals_.step(
-      previous_.t, previous_spin, current_.t, spin, watchdog_.lastFlight(), at_end, [&] {
-        return zeroCrossing(
-            [&](double t) {
-              return angularVelocity(
-                         model_, last_step_.at(t, active_, previous_, current_, adaptive_.get()))
-                  .z();
-            },
-            previous_.t, current_.t, previous_spin, spin);
+      previous_.t, previous_spin, current_.t, spin, watchdog_.lastFlight(), at_end, [&](double t) {
+        return angularVelocity(model_,
+                               last_step_.at(t, active_, previous_, current_, adaptive_.get()))
+            .z();
       });
   if (reversals_.reversals().size() > summary_.reversals.size()) {
     summary_.reversals = reversals_.reversals();

@@ -174,7 +174,7 @@ class Rollout {
   mutable RunSummary summary_;  ///< `last` is filled in when asked for (summary())
   /// The time of summary().last, s, while it is still to be sampled.
   mutable std::optional<double> last_due_s_;
-  ReversalDetector reversals_{0};  ///< the reversal rule, fed each step's ends
+  ReversalDetector reversals_{0};  ///< the reversal rule, fed each step and its interpolant
   double spin_ = 0;                ///< n = ω·ẑ of current_, rad/s
   double min_cos_tilt_ = 1;        ///< smallest cosine of the tilt so far
   Watchdog watchdog_;              ///< NaN, energy from nowhere, the rim; and the last flight

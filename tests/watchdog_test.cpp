@@ -145,8 +145,7 @@ TEST(Watchdog, ADampedFloorThatCarriesNothingIsNoFlight) {
       const double t0 = k * h, t1 = (k + 1) * h;
       const bool lifting = t1 > 1.0 && t1 < 1.05;
       EXPECT_FALSE(dog.observe(at(t1, 1.0, lifting && in_air ? 0 : 1)));
-      reversals.step(t0, n(t0), t1, n(t1), dog.lastFlight(), k + 1 == 3000,
-                     [&] { return t0 + h * n(t0) / (n(t0) - n(t1)); });
+      reversals.step(t0, n(t0), t1, n(t1), dog.lastFlight(), k + 1 == 3000, n);
     }
     return reversals.reversals();
   };
