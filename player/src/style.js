@@ -1,7 +1,10 @@
 // The player's style and elements. The style is injected once, so that the page needs no CSS of
 // its own. The canvas's stage has square corners and clips nothing: with rounded corners
 // (border-radius, overflow: hidden) Chromium composites the canvas through a masked layer of its
-// own, which doubled the cost of each frame on software WebGL (bench/player_speed.py).
+// own, which doubled the cost of each frame on software WebGL (bench/player_speed.py). Nothing
+// over the canvas is quite opaque: Chromium's compositor leaves out an opaque canvas under an
+// opaque box and, the canvas being drawn upside down, left out the box's mirror image instead,
+// a blank box at the picture's bottom (the reversal label's, in present mode at 1920 × 1080).
 
 export const STYLE = `
 .rbp{display:flex;flex-wrap:wrap;gap:10px;align-items:flex-start;font:14px/1.35 system-ui,-apple-system,"Segoe UI",sans-serif;color:#1e1e1e;outline:none;margin:8px 0}
@@ -39,7 +42,7 @@ export const STYLE = `
 .rbp:fullscreen .rbp-read{font-size:20px}
 .rbp-cue{position:absolute;left:0;top:0;width:100%;height:100%;pointer-events:none;overflow:visible}
 .rbp-cue path{stroke-linecap:round;stroke-linejoin:round}
-.rbp-reversal-label{position:absolute;top:8px;right:8px;background:#f0e442;color:#141414;padding:2px 8px;font:600 15px/1.4 system-ui,sans-serif;pointer-events:none}
+.rbp-reversal-label{position:absolute;top:8px;right:8px;background:rgba(240,228,66,.96);color:#141414;padding:2px 8px;font:600 15px/1.4 system-ui,sans-serif;pointer-events:none}
 .rbp.rbp-present{position:fixed;inset:0;z-index:1000;background:#fff;margin:0;padding:12px;box-sizing:border-box;flex-wrap:nowrap;overflow:hidden}
 .rbp.rbp-present .rbp-main{flex:1 1 auto;min-width:0;display:flex;flex-direction:column;align-items:center}
 .rbp.rbp-present .rbp-stage{width:min(100%,calc((100vh - 110px) * 16 / 9))}

@@ -279,6 +279,93 @@ def both_spins(driver, player, where, failures, screenshots):
         failures.append(f"{where}: S did not switch back to the run spun -5 rad/s: {back}")
 
 
+def composited_present(folder, failures):
+    """What the screen shows in present mode paused at the reversal at 1920 x 1080, through
+    Chromium's GPU compositor (SwiftShader, as a machine without a GPU draws a page; the checks
+    above read the canvas itself, which was right): no hole in the picture. An opaque box over
+    the opaque canvas let the compositor leave out the canvas under it, and with the canvas
+    drawn upside down (WebGL's rows) it left out the mirror image instead, a blank box the size
+    of the reversal label at the picture's bottom right (a teacher's projector showed it). The
+    hole's pixels are pure white or transparent; the floor and the body have none."""
+    from selenium.webdriver.common.action_chains import ActionChains
+    from selenium.webdriver.common.by import By
+
+    driver, profile = chromium.open_browser(
+        "--use-gl=swiftshader", "--enable-unsafe-swiftshader", "--hide-scrollbars", "--window-size=1920,1080"
+    )
+    try:
+        driver.set_script_timeout(30)
+        driver.execute_cdp_cmd(
+            "Emulation.setDeviceMetricsOverride",
+            {"width": 1920, "height": 1080, "deviceScaleFactor": 1, "mobile": False},
+        )
+        driver.get((folder / "index.html").as_uri())
+        time.sleep(2)
+        canvas = driver.find_elements(By.CSS_SELECTOR, ".rbp-stage canvas")[0]
+        driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", canvas)
+        canvas.click()
+        # P, then the run that reverses (S switches to the other spin when this one does not),
+        # then R: paused at the reversal with its label shown.
+        ActionChains(driver).send_keys("P").perform()
+        time.sleep(1.0)
+        reverses = "return [...document.querySelectorAll('*')].find(e => e.rbPlayer).rbPlayer.reversals().length > 0;"
+        if not driver.execute_script(reverses):
+            ActionChains(driver).send_keys("S").perform()
+            time.sleep(1.0)
+        ActionChains(driver).send_keys("R").perform()
+        time.sleep(1.0)
+        label = driver.execute_script(
+            "const l = document.querySelector('.rbp-present .rbp-reversal-label');"
+            "return l && getComputedStyle(l).display !== 'none' ? l.textContent : '';"
+        )
+        if "reversal" not in label:
+            failures.append(f"composited: present mode at the reversal shows no reversal label ({label!r})")
+        boxes = driver.execute_script(
+            """const root = document.querySelector('.rbp.rbp-present');
+            if (!root) return null;
+            const r = e => { const b = e.getBoundingClientRect(); return [b.left, b.top, b.right, b.bottom]; };
+            return {stage: r(root.querySelector('.rbp-stage')),
+                    over: [...root.querySelectorAll('.rbp-side, .rbp-reversal-label')].map(r)};"""
+        )
+        if boxes is None:
+            failures.append("composited: P did not enter present mode")
+            return
+        # The screenshot read back in the page (a canvas decodes the PNG; no imaging module).
+        counted = driver.execute_async_script(
+            """const [png, stage, over, done] = arguments;
+            const img = new Image();
+            img.onload = () => {
+              const c = document.createElement('canvas');
+              c.width = img.width; c.height = img.height;
+              const g = c.getContext('2d');
+              g.drawImage(img, 0, 0);
+              const d = g.getImageData(0, 0, c.width, c.height).data;
+              let holes = 0, total = 0;
+              for (let y = Math.round(stage[1]) + 2; y < Math.round(stage[3]) - 2; y += 2)
+                for (let x = Math.round(stage[0]) + 2; x < Math.round(stage[2]) - 2; x += 2) {
+                  if (over.some(b => b[0] - 2 <= x && x <= b[2] + 2 && b[1] - 2 <= y && y <= b[3] + 2)) continue;
+                  const i = 4 * (y * c.width + x);
+                  total++;
+                  if (d[i + 3] === 0 || (d[i] === 255 && d[i + 1] === 255 && d[i + 2] === 255)) holes++;
+                }
+              done([holes, total]);
+            };
+            img.src = 'data:image/png;base64,' + png;""",
+            driver.get_screenshot_as_base64(),
+            boxes["stage"],
+            boxes["over"],
+        )
+        holes, total = counted
+        # (a label-sized hole is 1.3 % of the picture; 0.1 % leaves room for stray highlights)
+        if holes > 0.001 * total:
+            failures.append(
+                f"composited: in present mode at the reversal {holes} of {total} sampled pixels of "
+                "the picture are a hole (white or transparent)"
+            )
+    finally:
+        chromium.close(driver, profile)
+
+
 def main():
     folder = pathlib.Path(sys.argv[1]).resolve()
     expected = float(sys.argv[2])
@@ -364,6 +451,7 @@ def main():
         print(f"{len(images)} images, {len(results)} videos checked")
     finally:
         chromium.close(driver, profile)
+    composited_present(folder, failures)
     for f in failures:
         print("FAIL:", f)
     return 1 if failures else 0
