@@ -37,26 +37,39 @@ std::pair<double, double> extreme(F&& f, double l, double r, double sign, double
   return sign * fc > sign * fd ? std::pair{c, fc} : std::pair{d, fd};
 }
 
+/// Where f left a band: between a point inside (t_in, v_in) and the first outside (t_out,
+/// v_out), through `level`; the time itself is found only when asked (`exitTime`), as a
+/// candidate dropped by n going back needs none.
 struct Exit {
-  double t;    ///< s
-  bool above;  ///< left through `hi` (else through `lo`)
+  double t_in, v_in, t_out, v_out;  ///< s, and f there
+  double level;                     ///< the band's edge crossed
+  bool above;                       ///< left through its top (else through its bottom)
 };
 
+/// The time at which f meets the exit's level, by regula falsi between its points, s.
+template <typename F>
+double exitTime(F&& f, const Exit& e) {
+  return zeroCrossing([&](double s) { return f(s) - e.level; }, e.t_in, e.t_out, e.v_in - e.level,
+                      e.v_out - e.level);
+}
+
 /// The first time in (a, b] at which f leaves [lo, hi] (f(a) = fa within it, f(b) = fb), if it
-/// does: f at kSamples equal parts of the interval and at each extreme between them (a sample
-/// above or below both neighbours is refined to the extreme near it), so a brief excursion
-/// between samples is seen; then the first point outside, bracketed with the point before it,
-/// gives the time by regula falsi.
+/// does: f at up to kSamples equal parts of the interval, none shorter than kFinestRead, and at
+/// each extreme between them (a sample above or below both neighbours is refined to the extreme
+/// near it), so a brief excursion between samples is seen; then the first point outside,
+/// bracketed with the point before it, is the exit.
 template <typename F>
 std::optional<Exit> firstExit(F&& f, double a, double b, double fa, double fb, double lo,
                               double hi) {
-  constexpr int N = ReversalDetector::kSamples;
-  std::array<double, N + 1> ts{}, fs{};
+  constexpr int kMost = ReversalDetector::kSamples;
+  const int N = static_cast<int>(
+      std::clamp((b - a) / ReversalDetector::kFinestRead, 1.0, static_cast<double>(kMost)));
+  std::array<double, kMost + 1> ts{}, fs{};
   for (int i = 0; i <= N; ++i) {
     ts[i] = i == N ? b : a + (b - a) * i / N;
     fs[i] = i == 0 ? fa : i == N ? fb : f(ts[i]);
   }
-  std::array<std::pair<double, double>, 2 * N> points{};
+  std::array<std::pair<double, double>, 2 * kMost> points{};
   int count = 0;
   for (int i = 0; i <= N; ++i) {
     points[count++] = {ts[i], fs[i]};
@@ -70,11 +83,8 @@ std::optional<Exit> firstExit(F&& f, double a, double b, double fa, double fb, d
   for (int i = 1; i < count; ++i) {
     const auto [t, v] = points[i];
     if (v <= hi && v >= lo) continue;
-    const double level = v > hi ? hi : lo;
     const auto [t_in, v_in] = points[i - 1];
-    const double crossing =
-        zeroCrossing([&](double s) { return f(s) - level; }, t_in, t, v_in - level, v - level);
-    return Exit{crossing, v > hi};
+    return Exit{t_in, v_in, t, v, v > hi ? hi : lo, v > hi};
   }
   return std::nullopt;
 }
@@ -124,9 +134,12 @@ void ReversalDetector::follow(double t, double nt, double t1, double n1,
       // (the next crossing is the candidate: the latest crossing counts).
       const std::optional<Exit> e = firstExit(m_at, t, t1, mt, m1, -threshold_, 0);
       if (!e) return;
-      t = e->t;
-      nt = (e->above ? 0 : -threshold_) * reference_sign_;
       phase_ = e->above ? Phase::Idle : Phase::Reached;
+      // Back on the old side at the step's end: no new candidate in it, so the time n went
+      // back (n dithering about zero does so at most steps) is not needed.
+      if (e->above && m1 >= 0) return;
+      t = exitTime(m_at, *e);
+      nt = e->level * reference_sign_;
     } else {
       // Reached: only m back beyond the threshold the old way undoes the crossing (a wiggle
       // about zero in the middle of a reversal keeps its first crossing); it counts once m is
@@ -138,7 +151,9 @@ void ReversalDetector::follow(double t, double nt, double t1, double n1,
         const double until = std::min(held, t1);
         const double m_until = until == t1 ? m1 : m_at(until);
         if (const auto e = firstExit(m_at, t, until, mt, m_until, -kInf, threshold_)) {
-          phase_ = Phase::Idle, t = e->t, nt = threshold_ * reference_sign_;
+          phase_ = Phase::Idle;
+          if (m1 >= 0) return;
+          t = exitTime(m_at, *e), nt = threshold_ * reference_sign_;
           continue;
         }
         if (until == t1) return;
@@ -148,7 +163,12 @@ void ReversalDetector::follow(double t, double nt, double t1, double n1,
       }
       const std::optional<Exit> e = firstExit(m_at, t, t1, mt, m1, -threshold_, threshold_);
       if (!e) return;
-      t = e->t, nt = (e->above ? threshold_ : -threshold_) * reference_sign_;
+      if (e->above && m1 >= 0) {
+        phase_ = Phase::Idle;
+        return;
+      }
+      // (m_at reads the reference sign, which count() turns: the time is found before.)
+      t = exitTime(m_at, *e), nt = e->level * reference_sign_;
       if (e->above)
         phase_ = Phase::Idle;
       else
