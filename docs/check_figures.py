@@ -383,6 +383,28 @@ CLAIMS = [
             lambda r: reversal(r.simulate("rattleback", 5, DEEPER)),
         ],
     ),
+    (
+        "docs/getting-started.md",
+        "Its misalignment is «−2.68»°, it prefers «cw», and spun 8 rad/s it reverses either way: "
+        "clockwise, the way it prefers, at «5.35» s, and counter-clockwise at «1.51» s (spun 5 rad/s it "
+        "reverses counter-clockwise only).",
+        [
+            lambda r: r.analyze("both-ways")["misalignment_deg"],
+            lambda r: r.analyze("both-ways")["preferred"],
+            lambda r: reversal(r.simulate("both-ways")),
+            lambda r: reversal(r.simulate("both-ways", 8)),
+        ],
+    ),
+    (
+        "docs/scenes.md",
+        "(scale 0.48; misalignment «−2.68»°, it prefers clockwise); spun 8 rad/s it reverses either way, "
+        "clockwise (the way it prefers) at «5.3502» s and counter-clockwise at «1.5062» s",
+        [
+            lambda r: r.analyze("both-ways")["misalignment_deg"],
+            lambda r: reversal(r.simulate("both-ways")),
+            lambda r: reversal(r.simulate("both-ways", 8)),
+        ],
+    ),
     ("docs/scenes.md", "misalignment «+2.22»°", [lambda r: r.analyze("rattleback")["misalignment_deg"]]),
     (
         "docs/scenes.md",

@@ -43,6 +43,9 @@ for scene in tap-end tap-side; do
   "$rb" render "scenes/$scene.yaml" -o "$out/$scene.mp4" -q
 done
 
+echo "== a printable body that reverses both ways: spun 8 rad/s clockwise and counter-clockwise"
+"$rb" render scenes/both-ways.yaml --both -o "$out/both-ways.mp4" -q
+
 echo "== a printable rattleback: the default body exported as STL, read back as a mesh body, rolling on its fitted bottom"
 "$rb" render scenes/printed.yaml -o "$out/printed.mp4" -q
 
@@ -64,7 +67,7 @@ pids=()
 # Background jobs of a script start with SIGINT ignored (POSIX), and rattleback keeps it so: the
 # terminal's Ctrl-C stops this script, which stops them (SIGTERM: each keeps its old output).
 trap 'kill -TERM "${pids[@]}" 2>/dev/null; wait; exit 130' INT
-for scene in seed-flip-cw seed-flip-ccw rattleback kane-levinson kane-levinson-long tap-end tap-side printed; do
+for scene in seed-flip-cw seed-flip-ccw rattleback kane-levinson kane-levinson-long tap-end tap-side both-ways printed; do
   (
     "$rb" analyze "scenes/$scene.yaml" -o "$out/$scene-analysis.txt"
     "$rb" analyze "scenes/$scene.yaml" --json -o "$out/$scene-analysis.json"

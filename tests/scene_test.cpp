@@ -219,7 +219,7 @@ TEST(Scenes, TheBaseSceneCompiles) {
 
 TEST(Scenes, ShippedScenesLoadAndCompile) {
   for (const char* name : {"rattleback", "seed-flip-cw", "seed-flip-ccw", "kane-levinson",
-                           "kane-levinson-long", "tap-end", "tap-side"}) {
+                           "kane-levinson-long", "tap-end", "tap-side", "both-ways"}) {
     const std::string path = std::string(RATTLEBACK_SOURCE_DIR) + "/scenes/" + name + ".yaml";
     auto loaded = scene::loadFile(path);
     ASSERT_TRUE(loaded.ok()) << loaded.error().text();
