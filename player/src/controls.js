@@ -272,6 +272,10 @@ export const controlsMethods = {
       this.togglePresent();
     } else if (e.key === 'Escape' && this.presenting) {
       this.setPresent(false);
+    } else if (e.key === 'Escape' && document.fullscreenElement === this.root) {
+      // A browser leaves full screen on Esc by itself; a kiosk or a driven browser (a
+      // projector's, a test's) may hand the key to the page instead.
+      this.toggleFullScreen();
     } else {
       return false;
     }

@@ -37,7 +37,9 @@ export const STYLE = `
 .rbp-reversal:disabled{opacity:.45;cursor:default}
 .rbp:fullscreen{background:#fff;margin:0;padding:16px;box-sizing:border-box;overflow:auto;align-items:flex-start;flex-wrap:nowrap}
 .rbp:fullscreen .rbp-main{flex:1 1 auto;min-width:0}
-.rbp:fullscreen .rbp-stage{width:min(100%,calc((100vh - 120px) * 16 / 9))}
+.rbp:fullscreen:not(.rbp-present){align-items:stretch}
+.rbp:fullscreen:not(.rbp-present) .rbp-main{display:flex;flex-direction:column}
+.rbp:fullscreen:not(.rbp-present) .rbp-stage{flex:1 1 0;width:100%;aspect-ratio:auto;min-height:0}
 .rbp:fullscreen .rbp-side{flex:0 0 300px}
 .rbp:fullscreen .rbp-read{font-size:20px}
 .rbp-cue{position:absolute;left:0;top:0;width:100%;height:100%;pointer-events:none;overflow:visible}

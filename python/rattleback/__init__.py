@@ -152,7 +152,10 @@ class Run:
 
     @property
     def first_reversal(self) -> Optional[float]:
-        """Time of the first reversal, s, or None."""
+        """Time of the first reversal, s, or None: the zero crossing of the spin n after which n
+        goes on to 1 % of the initial spin the other way and holds there 0.2 s (docs/physics.md
+        P7). Where n dithers through zero first, this is a later crossing than the first zero of
+        ``spin``; ``reversals`` lists every one the rule counts."""
         return self.result["first_reversal_s"]
 
     @property

@@ -11,7 +11,8 @@ the page; the player offers the body spun both ways, and its buttons and S switc
 played; each video's bar is no wider than it; present mode (P) fills the viewport with the
 picture, whole, and large read-outs that lie inside it, the title as large as they are; R there
 stops at the reversal with its sense said, no empty box over the picture and the picture as
-drawn whole; and Esc leaves it. With SCREENSHOT_DIR, the page at its first video, the player
+drawn whole; and Esc leaves it; full screen (F) gives the picture the height the controls
+leave, and Esc leaves it too. With SCREENSHOT_DIR, the page at its first video, the player
 switched to its other spin and in present mode are saved there at both sizes (report-WxH.png,
 spins-WxH.png, present-WxH.png, present-reversal-WxH.png), to look at.
 
@@ -162,6 +163,51 @@ def classroom(driver, size, failures, screenshots):
         "return arguments[0].querySelector('.rbp').classList.contains('rbp-present');", player
     ):
         failures.append(f"{where}: Esc did not leave present mode")
+    full_screen(driver, player, where, failures, screenshots)
+
+
+def full_screen(driver, player, where, failures, screenshots):
+    """F: the picture takes the screen's height that the bar and views leave (a teacher's trial
+    at 1280 x 720: a 16:9 picture left 120 px empty below them), and Esc leaves."""
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.common.action_chains import ActionChains
+    from selenium.webdriver.common.keys import Keys
+
+    player.find_element(By.CSS_SELECTOR, ".rbp-title").click()
+    ActionChains(driver).send_keys("f").perform()
+    time.sleep(0.8)
+    got = driver.execute_script(
+        """const root = arguments[0].querySelector('.rbp');
+        const box = e => { const r = e.getBoundingClientRect();
+                           return [r.left, r.top, r.right, r.bottom]; };
+        const c = root.querySelector('canvas');
+        return {full: document.fullscreenElement === root, stage: box(root.querySelector('.rbp-stage')),
+                views: box(root.querySelector('.rbp-views')), canvas: [c.width, c.height],
+                vw: document.documentElement.clientWidth, vh: document.documentElement.clientHeight};""",
+        player,
+    )
+    if not got["full"]:
+        failures.append(f"{where}: F did not make the player full screen")
+        return
+    vh, stage, views = got["vh"], got["stage"], got["views"]
+    # Below the views' row only the page's padding (16 px) and a rounding.
+    if views[3] > vh + 0.5 or vh - views[3] > 16 + 4:
+        failures.append(
+            f"{where}: in full screen the views' row ends at {views[3]:.0f} px of {vh}: "
+            f"{vh - views[3]:.0f} px unused below the picture {stage}"
+        )
+    # The canvas is drawn at the stage's size, not stretched from a 16:9 one.
+    w, h = stage[2] - stage[0], stage[3] - stage[1]
+    if abs(got["canvas"][0] / got["canvas"][1] - w / h) > 0.02:
+        failures.append(
+            f"{where}: in full screen the canvas {got['canvas']} is drawn for another shape than its {w:.0f}x{h:.0f} stage"
+        )
+    if screenshots:
+        driver.save_screenshot(str(pathlib.Path(screenshots) / f"fullscreen-{where}.png"))
+    ActionChains(driver).send_keys(Keys.ESCAPE).perform()
+    time.sleep(0.5)
+    if driver.execute_script("return !!document.fullscreenElement;"):
+        failures.append(f"{where}: Esc did not leave full screen")
 
 
 def present_reversal(driver, player, where, failures, screenshots):
