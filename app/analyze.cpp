@@ -99,6 +99,13 @@ void printPreferred(std::FILE* out, const tasks::Analysis& a) {
                  "spun the other way it is predicted to reverse sooner\n",
                  std::string(rb::nameOf(a.preferred)).c_str(),
                  a.preferred == sim::Direction::Ccw ? "counter-clockwise" : "clockwise");
+    if (a.grows_either_way)
+      std::fprintf(
+          out,
+          "either way       spun %s too the rocking grows (at %.4g /s at %g rad/s, %s): "
+          "it is predicted to reverse that way as well, later (docs/physics.md P8.4)\n",
+          std::string(rb::nameOf(a.preferred)).c_str(), a.preferred_growth, std::abs(a.spin),
+          a.drag > 0 ? "faster than drag slows the spin" : "with no drag to slow the spin");
   }
 }
 

@@ -396,6 +396,22 @@ CLAIMS = [
         ],
     ),
     (
+        "docs/getting-started.md",
+        "Spun counter-clockwise it reverses twice, at «1.51» s and again at «5.29» s",
+        [
+            lambda r: r.simulate("both-ways", 8)["reversals_s"][0],
+            lambda r: r.simulate("both-ways", 8)["reversals_s"][1],
+        ],
+    ),
+    (
+        "docs/physics.md",
+        "The both-ways scene spun −8 rad/s grows at «0.67» /s, 11.9 e-folds: it reverses at «5.35» s",
+        [
+            lambda r: max(r.analyze("both-ways", -8)["growth_rates"].values()),
+            lambda r: reversal(r.simulate("both-ways")),
+        ],
+    ),
+    (
         "docs/scenes.md",
         "(scale 0.48; misalignment «−2.68»°, it prefers clockwise); spun 8 rad/s it reverses either way, "
         "clockwise (the way it prefers) at «5.3502» s and counter-clockwise at «1.5062» s",

@@ -154,22 +154,48 @@ FirstOrder firstOrderGrowth(const Model& model) {
           (up.pitch_growth - down.pitch_growth) / (2 * n)};
 }
 
-Direction preferredDirection(const Model& model, double spin_magnitude) {
+namespace {
+
+/// The fastest growth of the rocking spun each way at |spin|, 1/s, and the rate below which a
+/// growth counts as none.
+struct EachWay {
+  double ccw_fastest, cw_fastest, zero;
+};
+
+EachWay growthEachWay(const Model& model, double spin_magnitude) {
   const double n = std::max(std::abs(spin_magnitude), 1e-3);
   const Linearisation ccw = linearise(model, n), cw = linearise(model, -n);
-  const double ccw_fastest = std::max(ccw.roll_growth, ccw.pitch_growth);
-  const double cw_fastest = std::max(cw.roll_growth, cw.pitch_growth);
   // Zero: below 1e-6 of the fastest rocking frequency, where the finite-difference Jacobian's
   // rates are noise (a skewed body without dents, q = 0.05, gave ±3e-11 /s at 40 rad/s and was
-  // called "preferred cw"); a growth that slow would take 1e6 rocking periods to show. Alike:
-  // within 1e-9 of the rates' size (rounding; a dentless body's differ by 1e-16 /s).
+  // called "preferred cw"); a growth that slow would take 1e6 rocking periods to show.
   const double omega = 2 * M_PI * std::max({ccw.roll_hz, ccw.pitch_hz, cw.roll_hz, cw.pitch_hz});
-  const double zero = 1e-6 * omega;
+  return {std::max(ccw.roll_growth, ccw.pitch_growth), std::max(cw.roll_growth, cw.pitch_growth),
+          1e-6 * omega};
+}
+
+}  // namespace
+
+Direction preferredDirection(const Model& model, double spin_magnitude) {
+  const auto [ccw_fastest, cw_fastest, zero] = growthEachWay(model, spin_magnitude);
+  // Alike: within 1e-9 of the rates' size (rounding; a dentless body's differ by 1e-16 /s).
   const double size = std::max({std::abs(ccw_fastest), std::abs(cw_fastest), 1e-12});
   if ((ccw_fastest <= zero && cw_fastest <= zero) ||
       std::abs(ccw_fastest - cw_fastest) <= std::max(1e-9 * size, zero))
     return Direction::None;
   return ccw_fastest < cw_fastest ? Direction::Ccw : Direction::Cw;
+}
+
+bool growsEitherWay(const Model& model, double spin_magnitude) {
+  const auto [ccw_fastest, cw_fastest, zero] = growthEachWay(model, spin_magnitude);
+  if (!(ccw_fastest > zero && cw_fastest > zero)) return false;
+  // Growing is not enough: the rocking must grow from a small tilt to tens of degrees (from
+  // 0.5° to 30°: ln 60, about 4 e-folds) before drag has slowed the spin to where it no longer
+  // grows. Drag alone slows it by e in C/σ; the default body spun +5 rad/s grows 2.7 e-folds in
+  // that time and never reverses (60 s), the both-ways scene's 11.9 and does (5.35 s).
+  constexpr double kEFolds = 4;
+  const double drag = model.contact.air_drag;
+  return drag <= 0 ||
+         std::min(ccw_fastest, cw_fastest) * model.body->inertia(2, 2) / drag >= kEFolds;
 }
 
 namespace {

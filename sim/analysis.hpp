@@ -126,6 +126,11 @@ enum class Direction {
 /// (a body with no misalignment): a dentless body got "cw" from rounding.
 Direction preferredDirection(const Model& model, double spin_magnitude);
 
+/// Whether the rocking grows spun either way at |spin| (a body with deep dents), the slower
+/// growth 4 e-folds or more in the time drag alone takes to slow the spin by e: then it is
+/// predicted to reverse spun either way, the preferred way later (docs/physics.md P8.4).
+bool growsEitherWay(const Model& model, double spin_magnitude);
+
 /// Whether a spin n (rad/s) turns in `direction` (never in None).
 inline bool turns(Direction direction, double spin) {
   if (direction == Direction::None) return false;

@@ -233,6 +233,12 @@ void analyzeTheory(const sim::Model& model, Analysis& a) {
   a.at_spin = sim::linearise(model, a.spin);
   a.growth = growthTable(model, a.spin, a.at_spin);
   a.preferred = sim::preferredDirection(model, a.spin);
+  a.grows_either_way = sim::growsEitherWay(model, a.spin);
+  if (a.preferred != sim::Direction::None) {
+    const double n = std::max(std::abs(a.spin), 1e-3);  // as preferredDirection reads |spin|
+    const sim::Linearisation l = sim::linearise(model, a.preferred == sim::Direction::Ccw ? n : -n);
+    a.preferred_growth = std::max(l.roll_growth, l.pitch_growth);
+  }
   if (a.rest.stable && a.preferred == sim::Direction::None)
     a.preferred_faster = sim::preferredDirection(model, std::max(5.0, std::abs(a.spin)));
   a.forecast = sim::forecastFirstReversal(model, a.spin, model.duration);
@@ -248,6 +254,7 @@ Analysis analyze(const sim::Model& model, const std::optional<double>& spin) {
   a.unspun = !a.spin_given && model.initial.spin == 0;
   analyzeBody(model, a);
   a.contact_model = model.contact.model;
+  a.drag = model.contact.air_drag;
   a.integrator = model.integrator;
   a.stability = sim::contactStability(model);
   if (model.contact.model == sim::ContactModel::Auto && !sim::isAdaptive(model.integrator))
@@ -363,13 +370,15 @@ nlohmann::json analysisJson(const Analysis& a) {
   j["linearised"] = a.theory ? linearisationJson(a.at_spin) : nlohmann::json(nullptr);
   // A body that cannot stand has no rocking about upright for a spin direction to favour.
   j["preferred"] = orNull(a.rest.stable, std::string(rb::nameOf(a.preferred)));
+  j["grows_either_way"] = orNull(a.rest.stable, a.grows_either_way);
   j["predicted_first_reversal"] = forecastJson(a);
   // A mesh body whose bottom does not fit has no theory (§P11.4): null, not numbers never
   // worked out.
   if (!a.theory)
-    for (const char* key : {"h", "radii_of_curvature", "rest_stable", "frequencies_hz",
-                            "growth_rates_at_rest", "growth_rates", "first_order_growth_per_spin",
-                            "eigenvalues", "preferred", "predicted_first_reversal"})
+    for (const char* key :
+         {"h", "radii_of_curvature", "rest_stable", "frequencies_hz", "growth_rates_at_rest",
+          "growth_rates", "first_order_growth_per_spin", "eigenvalues", "preferred",
+          "grows_either_way", "predicted_first_reversal"})
       j[key] = nullptr;
   return j;
 }

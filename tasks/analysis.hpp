@@ -105,6 +105,7 @@ struct Analysis {
   double misalignment_deg = 0;  ///< least-inertia axis from the bottom's long axis, ccw
   // The contact.
   sim::ContactModel contact_model = sim::ContactModel::Rolling;
+  double drag = 0;  ///< contact.air_drag, N m s
   sim::Integrator integrator = sim::Integrator::Symplectic;
   sim::ContactStability stability;
   double auto_smooth_step = 0;  ///< s: auto's smooth steps within each fixed step, else 0
@@ -121,6 +122,10 @@ struct Analysis {
   /// Where no direction is preferred at |spin| by a body that stands: the one preferred at
   /// max(5, |spin|) rad/s (a slow spin may see the rocking die out both ways).
   std::optional<sim::Direction> preferred_faster;
+  /// Whether the rocking grows spun either way at |spin|: then the body is predicted to reverse
+  /// spun the preferred way too, later (sim::growsEitherWay).
+  bool grows_either_way = false;
+  double preferred_growth = 0;     ///< 1/s: the fastest growth spun the preferred way at |spin|
   sim::ReversalForecast forecast;  ///< of the first reversal spun `spin`, within `duration`
   double duration = 0;             ///< s: how far the forecast looks
 };

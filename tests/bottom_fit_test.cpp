@@ -15,6 +15,7 @@
 #include "sim/compile.hpp"
 #include "sim/mesh_body.hpp"
 #include "sim/rollout.hpp"
+#include "sim/watchdog.hpp"
 
 namespace {
 
@@ -215,8 +216,24 @@ TEST(BottomFit, ARollingMeshBodyTippedBeyondItsFittedCapStops) {
   ASSERT_TRUE(rollout.summary().stop);
   EXPECT_EQ(rollout.summary().stop->reason, sim::StopReason::OnRim);
   const std::string message = *rollout.summary().divergence;
-  EXPECT_NE(message.find("left the mesh's fitted bottom"), std::string::npos) << message;
+  EXPECT_NE(message.find("beyond the mesh's fitted bottom"), std::string::npos) << message;
   EXPECT_NE(message.find("contact.model: points"), std::string::npos) << message;
+  EXPECT_NE(message.find("a smaller initial.tilt"), std::string::npos) << message;
+}
+
+// Rocked there from a small tilt, it says so, and does not advise a smaller initial tilt, which
+// cannot help (the rocking grew by itself).
+TEST(BottomFit, ARollingMeshBodyThatRocksBeyondItsFittedCapStopsSayingSo) {
+  sim::Watchdog watchdog(0, 1.0, false, "");
+  sim::StepEnd end;
+  end.t = 0.74, end.step = 261, end.energy = 1.0, end.rim_tilt_deg = 16.49, end.cap_deg = 16.46;
+  ASSERT_TRUE(watchdog.observe(end));
+  const std::string message = watchdog.message();
+  EXPECT_NE(message.find("left the mesh's fitted bottom (tilt 16.49 degrees, beyond its cap of "
+                         "16.46 degrees) at t = 0.74 s (step 261): the body rocked further"),
+            std::string::npos)
+      << message;
+  EXPECT_EQ(message.find("initial.tilt"), std::string::npos) << message;
 }
 
 }  // namespace

@@ -715,3 +715,40 @@ TEST(Theory, AVideoNotInRealTimeSaysItsSpeedInItsTitle) {
             "mine, at 0.5\u00d7 speed: spun -5 rad/s, clockwise");
   EXPECT_EQ(media::titleWithPlayback(title, 2), "mine, at 2\u00d7 speed: spun -5 rad/s, clockwise");
 }
+
+// P8.4: where the rocking grows spun the preferred way too, fast enough against drag, the body
+// is predicted to reverse that way as well, and runs agree. The both-ways scene spun its
+// preferred way (−8 rad/s, clockwise) grows at 0.67 /s, 11.9 e-folds in the time drag slows its
+// spin by e: predicted, and it reverses (5.35 s, docs/scenes.md). The default body spun its
+// preferred way (+5 rad/s) grows too, at 0.16 /s, but only 2.7 e-folds in that time: not
+// predicted, and it does not reverse in 30 s. Without drag it is predicted (nothing slows the
+// spin), and it reverses (Kane & Levinson's body too: their long scene, four reversals).
+TEST(Theory, ReversingEitherWayIsPredictedWhereRunsDoIt) {
+  auto shipped = [](const char* name) {
+    auto loaded = scene::loadFile(std::string(RATTLEBACK_SOURCE_DIR) + "/scenes/" + name);
+    if (!loaded) ADD_FAILURE() << loaded.error().text();
+    return loaded ? loaded->spec : sim::SceneSpec{};
+  };
+  auto reverses = [](const sim::Model& model) {
+    sim::Rollout rollout(model);
+    rollout.advanceTo(model.duration);
+    return rollout.summary().first_reversal_s.has_value();
+  };
+  const sim::Model both = build(shipped("both-ways.yaml"));
+  EXPECT_EQ(sim::preferredDirection(both, 8), sim::Direction::Cw);
+  EXPECT_TRUE(sim::growsEitherWay(both, 8));
+  EXPECT_TRUE(reverses(both));  // spun −8 rad/s, the way it prefers
+
+  sim::SceneSpec spec = shipped("rattleback.yaml");
+  spec.initial.spin = 5;
+  spec.simulation.duration = 30;
+  const sim::Model drag = build(spec);
+  EXPECT_EQ(sim::preferredDirection(drag, 5), sim::Direction::Ccw);
+  EXPECT_FALSE(sim::growsEitherWay(drag, 5));
+  EXPECT_FALSE(reverses(drag));
+
+  spec.contact.air_drag = 0;
+  const sim::Model free = build(spec);
+  EXPECT_TRUE(sim::growsEitherWay(free, 5));
+  EXPECT_TRUE(reverses(free));
+}
