@@ -65,27 +65,26 @@ rb::Result<TriangleMesh> paraboloidMesh(const Paraboloid& shape, const std::opti
       const Eigen::Vector2d& u = at[static_cast<std::size_t>(ring(i, j) - 1)];
       const double z = upper(u.x(), u.y());
       if (!(z > shape.bottom(u.x(), u.y())))
-        return rb::Error{"body.dents",
-                         "a dent reaches the bottom at (" + std::to_string(u.x()) + ", " +
-                             std::to_string(u.y()) +
-                             ") m, a hole through the body: export draws bodies whose dents lie "
-                             "within the top (make body.dents.scale smaller: the shipped 0.45 "
-                             "exports)"};
+        return rb::Error{
+            "body.dents",
+            "cut through the bottom at (" + std::to_string(u.x()) + ", " + std::to_string(u.y()) +
+                ") m, a hole through the body: export draws bodies whose dents lie "
+                "within the top (make body.dents.scale smaller: how much smaller "
+                "depends on body.dents.at; the shipped body's dents export up to 0.48)"};
       v.emplace_back(u.x(), u.y(), z);
     }
   for (int j = 0; j < segments; ++j) {
     const Eigen::Vector2d& u = at[static_cast<std::size_t>(ring(rings, j) - 1)];
     if (upper(u.x(), u.y()) < shape.top)
-      return rb::Error{
-          "body.dents",
-          "a dent cuts the rim: export draws bodies whose dents lie within the top (make "
-          "body.dents.scale smaller, or move body.dents.at inwards)"};
+      return rb::Error{"body.dents",
+                       "cut the rim: export draws bodies whose dents lie within the top (make "
+                       "body.dents.scale smaller, or move body.dents.at inwards)"};
   }
   const int top_centre = static_cast<int>(v.size());
   v.emplace_back(0, 0, upper(0, 0));
   if (!(v.back().z() > v.front().z()))
     return rb::Error{"body.dents",
-                     "a dent reaches the bottom at the centre: export draws bodies whose dents "
+                     "cut through the bottom at the centre: export draws bodies whose dents "
                      "lie within the top"};
   std::vector<Face>& f = mesh.faces;
   for (int j = 0; j < segments; ++j) {

@@ -115,7 +115,7 @@ def test_bad_segments_and_dents_through_the_bottom_are_refused():
         scene.mesh(segments=5)
     with pytest.raises(TypeError, match="argument segments: takes a whole number"):
         scene.mesh(segments=5.5)
-    with pytest.raises(rb.SceneError, match="body.dents a dent reaches the bottom"):
+    with pytest.raises(rb.SceneError, match="body.dents cut through the bottom"):
         scene.with_values({"body.dents.scale": 0.9}).mesh()
 
 
