@@ -74,9 +74,12 @@ void writeVideoFigure(std::ostream& out, const std::string& file, const std::str
 
 // The bar and caption are as wide as the video above them (a narrow video's slider and Full
 // screen button otherwise ran on across the page): the figure's one column is the video's own
-// width, at most the figure's, and the bar and caption, contained, do not widen it.
+// width, at most the figure's, and the bar and caption, contained, do not widen it. Its rows
+// keep their own heights (align-content: start): two figures side by side are stretched to the
+// taller one's height, and a stretched grid shares the extra among its rows, which moved the
+// shorter caption's bar down out of line with its neighbour's.
 const char* const kVideoStyle = R"(
-figure.vid{display:grid;grid-template-columns:minmax(0,max-content)}
+figure.vid{display:grid;grid-template-columns:minmax(0,max-content);align-content:start}
 figure.vid>.vbar,figure.vid>figcaption{contain:inline-size}
 .vbar{display:flex;gap:.4em;align-items:center;margin:.3em 0 .2em;font-size:.9em}
 .vbar button{font:inherit;padding:.1em .6em;white-space:nowrap}.vseek{flex:1 1 auto;min-width:60px}

@@ -51,11 +51,28 @@ def classroom(driver, size, failures, screenshots):
             const r = v.getBoundingClientRect();
             const bar = v.parentElement.querySelector('.vbar');
             const b = bar && !bar.hidden ? bar.getBoundingClientRect() : null;
+            const pair = v.closest('.pair');
             return {src: v.getAttribute('src'), controls: v.hasAttribute('controls'),
                     bottom: r.bottom, left: r.left, right: r.right,
+                    pair: pair ? Array.from(document.querySelectorAll('.pair')).indexOf(pair) : -1,
                     bar: b && {top: b.top, height: b.height, width: b.width}};
         });"""
     )
+    # Videos side by side have their bars in line (a teacher's trial: 16 px apart, where one
+    # caption was longer than the other).
+    for pair in {v["pair"] for v in videos if v["pair"] >= 0 and v["bar"]}:
+        in_pair = [v for v in videos if v["pair"] == pair and v["bar"]]
+        rows = {}
+        for v in in_pair:  # the same row: videos whose bottoms are level (a wrapped pair is not)
+            rows.setdefault(round(v["bottom"]), []).append(v)
+        for row in rows.values():
+            tops = [v["bar"]["top"] for v in row]
+            heights = [v["bar"]["height"] for v in row]
+            if max(tops) - min(tops) > 0.5 or max(heights) - min(heights) > 0.5:
+                failures.append(
+                    f"{where}: the bars under {[v['src'] for v in row]} are not in line "
+                    f"(tops {tops}, heights {heights})"
+                )
     for v in videos:
         if v["controls"]:
             failures.append(f"{where}: video {v['src']} has the browser's controls, over its inset")
