@@ -158,8 +158,9 @@ class Scene:
         try:
             return Scene(text, name, (), False, (vertices, faces))
         except SceneError as e:
-            # Its lines are of a text the caller never wrote: named without them.
-            raise _lineless(e, name)
+            # Its lines are of a text the caller never wrote: named without them; and its way
+            # out in the caller's words (arrays and arguments, not a file and its keys).
+            raise _in_array_words(_lineless(e, name))
 
     @_checked
     def with_values(self, values: Mapping[str, Any]) -> "Scene":
@@ -227,6 +228,24 @@ class Scene:
     def __repr__(self) -> str:
         extra = f", values={self.values!r}" if self._values else ""
         return f"Scene({self._name!r}{extra})"
+
+
+# The mesh checks' words for a file, and from_mesh's for the arrays it was given.
+_ARRAY_WORDS = (
+    ("body.mesh.file <vertices, faces>: ", "vertices, faces: "),
+    ("flip them (Blender: Mesh > Normals > Flip) and export again", "flip them (faces[:, ::-1])"),
+    (" and export again", " and give the arrays again"),
+    ("units.length: ", "units="),
+)
+
+
+def _in_array_words(e: SceneError) -> SceneError:
+    """`e`, raised for from_mesh's arrays, worded for them."""
+    message = str(e)
+    for file_words, array_words in _ARRAY_WORDS:
+        message = message.replace(file_words, array_words)
+    e.args = (message,)
+    return e
 
 
 def _lineless(e: SceneError, name: str) -> SceneError:
