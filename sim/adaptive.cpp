@@ -161,7 +161,9 @@ struct Rolling {
   }
 
   static void rates(const Model& model, const Vector& y, Vector& dydt, const Scales& k, double) {
-    const Eigen::Quaterniond q = unitQuaternion(y[5], y[2], y[3], y[4]);
+    // q as integrated: rollingRates takes its direction (normalising it first had put a square
+    // root and a division at the head of every evaluation's chain).
+    const Eigen::Quaterniond q(y[5], y[2], y[3], y[4]);
     const Eigen::Vector3d w(y[6] * k.spin_inverse[0], y[7] * k.spin_inverse[1],
                             y[8] * k.spin_inverse[2]);
     const RollingRates r = rollingRates(model, q, w);
