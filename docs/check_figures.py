@@ -319,7 +319,7 @@ CLAIMS = [
     ),
     (
         "docs/python.md",
-        "print(run.first_reversal, run.spin.max()) # «2.3664759726320255» «3.757577089559611»",
+        "print(run.first_reversal, run.spin.max()) # «2.36647597263203» «3.7575770895596112»",
         [
             lambda r: r.simulate("rattleback")["first_reversal_s"],
             lambda r: max(r.column("rattleback", "spin")),
@@ -332,8 +332,8 @@ CLAIMS = [
     ),
     (
         "docs/python.md",
-        "print(pool.map(first_reversal, scenes)) # [«2.3664759726320255», «2.65285102257363», "
-        "«3.1372975075378964»]",
+        "print(pool.map(first_reversal, scenes)) # [«2.36647597263203», «2.652851022573632», "
+        "«3.137297507537893»]",
         [
             lambda r, spin=spin: float(
                 r.row("spin-drag", initial__spin=spin, contact__air_drag=5.9e-6)["first_reversal_s"]

@@ -57,6 +57,7 @@ class PiStepAdjuster {
 // The body's own scales, which make the integrated state dimensionless.
 struct Scales {
   double length = 1, time = 1, momentum = 1;  // m, s, kg m²/s
+  double time_over_length = 1;  // s/m: scales a velocity (divided once, not each evaluation)
 
   explicit Scales(const Model& model) {
     const Body& body = *model.body;
@@ -64,6 +65,7 @@ struct Scales {
     length = extent.norm() > 0 ? extent.norm() : 1.0;
     time = model.gravity > 0 ? std::sqrt(length / model.gravity) : 1.0;
     momentum = body.inertia.diagonal().maxCoeff() / time;
+    time_over_length = time / length;
     for (int i = 0; i < 3; ++i) {
       spin[i] = time * body.inertia(i, i) / body.inertia.diagonal().maxCoeff();
       spin_inverse[i] = 1 / spin[i];
@@ -117,7 +119,7 @@ struct Free {
     // drift (q̇ = ½ ω ⊗ q̂ still keeps |q| constant: q · q̇ = 0).
     s.q.normalize();
     const Rates r = ratesOf(model, s);
-    const double k_x = k.time / k.length;
+    const double k_x = k.time_over_length;
     for (int i = 0; i < 3; ++i) {
       dydt[i] = r.dx[i] * k_x;
       dydt[3 + i] = r.dv[i] * k_x * k.time;
@@ -161,11 +163,13 @@ struct Rolling {
   }
 
   static void rates(const Model& model, const Vector& y, Vector& dydt, const Scales& k, double) {
-    const Eigen::Quaterniond q = unitQuaternion(y[5], y[2], y[3], y[4]);
+    // q as integrated: rollingRates takes its direction (normalising it first had put a square
+    // root and a division at the head of every evaluation's chain).
+    const Eigen::Quaterniond q(y[5], y[2], y[3], y[4]);
     const Eigen::Vector3d w(y[6] * k.spin_inverse[0], y[7] * k.spin_inverse[1],
                             y[8] * k.spin_inverse[2]);
     const RollingRates r = rollingRates(model, q, w);
-    const double k_x = k.time / k.length;
+    const double k_x = k.time_over_length;
     dydt[0] = r.dxy.x() * k_x;
     dydt[1] = r.dxy.y() * k_x;
     for (int i = 0; i < 4; ++i) dydt[2 + i] = r.dq[i] * k.time;
@@ -238,8 +242,11 @@ class Integration final : public AdaptiveStepper::Impl {
 
   // The equations of motion in scaled variables (Odeint's system signature). Flattened: every
   // call inside is inlined where its body is in this translation unit (sim/CMakeLists.txt
-  // puts the evaluation's files in one unity batch): 3.5 % fewer instructions a run.
-  [[gnu::flatten]] void rates(const Vector& y, Vector& dydt, double t_scaled) {
+  // puts the evaluation's files in one unity batch): 3.5 % fewer instructions a run. Not
+  // inlined itself: GCC flattens a function only where it is compiled on its own, and inlined
+  // into Odeint's stages it had left the rolling equations, the contact point and the surface
+  // as calls (their arguments and results through memory) in each evaluation.
+  [[gnu::flatten, gnu::noinline]] void rates(const Vector& y, Vector& dydt, double t_scaled) {
     ++evaluations;
     Layout::rates(model_, y, dydt, scales_, t_scaled * scales_.time);
   }
@@ -285,7 +292,8 @@ class Integration853 final : public AdaptiveStepper::Impl {
 
  private:
   // The equations of motion in scaled variables, flattened as in Integration.
-  [[gnu::flatten]] void evaluate(const Vector& y, Vector& dydt, double t_scaled) const {
+  [[gnu::flatten, gnu::noinline]] void evaluate(const Vector& y, Vector& dydt,
+                                                double t_scaled) const {
     Layout::rates(model_, y, dydt, scales_, t_scaled * scales_.time);
   }
   auto rates() const {

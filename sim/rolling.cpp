@@ -1,5 +1,7 @@
 #include "sim/rolling.hpp"
 
+#include <cmath>
+
 namespace sim {
 namespace {
 
@@ -28,14 +30,21 @@ struct Core {
   Eigen::Vector3d up, r, r_rate, w_dot;  // body axes
 };
 
-Core rollingCore(const Model& model, const Eigen::Matrix3d& R, const Eigen::Vector3d& w) {
+// `along` is Rᵀ ẑ times any positive factor, and `unit` the factor's inverse. The lowest point
+// and its rate depend only on the direction of down, and its rate scales with it (paraboloid
+// and ellipsoid: sim/surface.hpp), so they are found from `along` itself: the division that
+// makes it a unit vector (a square root and a division for the integrated quaternion) is then
+// off the evaluation's chain of dependent operations, which sets its time.
+Core rollingCore(const Model& model, const Eigen::Vector3d& along, double unit,
+                 const Eigen::Vector3d& w) {
   const Body& body = *model.body;
   const double M = body.mass;
   Core c;
-  c.up = R.row(2).transpose();  // Rᵀ ẑ
-  const Eigen::Vector3d down = -c.up;
-  // The down direction turns in body axes as ḋ = −ω × d; the contact point follows.
-  const PointAndRate contact = lowestSurfacePointMoving(body, down, -w.cross(down));
+  c.up = along * unit;
+  // The down direction turns in body axes as ḋ = −ω × d; the contact point follows. A mesh's
+  // fitted bottom wants a unit direction.
+  const Eigen::Vector3d up = body.surface.kind == Surface::Kind::Mesh ? c.up : along;
+  const PointAndRate contact = lowestSurfacePointMoving(body, -up, w.cross(up));
   c.r = contact.point;
   c.r_rate = w.cross(c.r) + contact.rate;
   const Eigen::Matrix3d& I = body.inertia;
@@ -50,7 +59,7 @@ Core rollingCore(const Model& model, const Eigen::Matrix3d& R, const Eigen::Vect
 }  // namespace
 
 RollingMotion rollingMotion(const Model& model, const Kinematics& k) {
-  const Core c = rollingCore(model, k.R, k.w_body);
+  const Core c = rollingCore(model, k.R.row(2).transpose(), 1.0, k.w_body);
   RollingMotion out;
   out.w_dot_body = c.w_dot;
   const Eigen::Vector3d v_dot = -c.w_dot.cross(c.r) - k.w_body.cross(c.r_rate);
@@ -61,13 +70,23 @@ RollingMotion rollingMotion(const Model& model, const Kinematics& k) {
 
 RollingRates rollingRates(const Model& model, const Eigen::Quaterniond& q,
                           const Eigen::Vector3d& w_body) {
-  const Eigen::Matrix3d R = q.toRotationMatrix();
-  const Core c = rollingCore(model, R, w_body);
+  // |q|² R from q's coefficients by products alone; 1/|q|² and 1/|q| are then needed only
+  // where the contact point's chain does not wait on them.
+  const double x = q.x(), y = q.y(), z = q.z(), w = q.w();
+  const double xx = x * x, yy = y * y, zz = z * z, ww = w * w;
+  const double norm2 = xx + yy + zz + ww;
+  const double inverse_norm2 = 1 / norm2;
+  const Eigen::Vector3d along(2 * (x * z - w * y), 2 * (y * z + w * x), ww + zz - xx - yy);
+  const Core c = rollingCore(model, along, inverse_norm2, w_body);
   RollingRates out;
   // ẋ = −ω × r, turned into world axes; only its floor components are integrated.
-  out.dxy = -(R.topRows<2>() * w_body.cross(c.r));
-  // q̇ = ½ q ⊗ (0, ω_body), the same as ½ (0, ω_world) ⊗ q.
-  out.dq = 0.5 * (q * Eigen::Quaterniond(0, w_body.x(), w_body.y(), w_body.z())).coeffs();
+  Eigen::Matrix<double, 2, 3> top_rows;
+  top_rows << ww + xx - yy - zz, 2 * (x * y - w * z), 2 * (x * z + w * y),  //
+      2 * (x * y + w * z), ww - xx + yy - zz, 2 * (y * z - w * x);
+  out.dxy = -(top_rows * w_body.cross(c.r)) * inverse_norm2;
+  // q̇ = ½ q̂ ⊗ (0, ω_body), the same as ½ (0, ω_world) ⊗ q̂.
+  out.dq = (0.5 / std::sqrt(norm2)) *
+           (q * Eigen::Quaterniond(0, w_body.x(), w_body.y(), w_body.z())).coeffs();
   out.w_dot_body = c.w_dot;
   return out;
 }

@@ -41,7 +41,8 @@ struct RollingRates {
   Eigen::Vector4d dq;          ///< quaternion coefficients (x, y, z, w), 1/s
   Eigen::Vector3d w_dot_body;  ///< rad/s²
 };
-/// For a unit quaternion q (body → world) and ω in body axes.
+/// For the rotation of the quaternion q (body → world), of any length (the rates are those of
+/// q/|q|, as the integrator holds |q| = 1 only to its tolerance), and ω in body axes.
 RollingRates rollingRates(const Model& model, const Eigen::Quaterniond& q,
                           const Eigen::Vector3d& w_body);
 /// Puts the state back on the constraint: contact point on the floor, or model.rolling_depth
