@@ -154,15 +154,7 @@ FirstOrder firstOrderGrowth(const Model& model) {
           (up.pitch_growth - down.pitch_growth) / (2 * n)};
 }
 
-namespace {
-
-/// The fastest growth of the rocking spun each way at |spin|, 1/s, and the rate below which a
-/// growth counts as none.
-struct EachWay {
-  double ccw_fastest, cw_fastest, zero;
-};
-
-EachWay growthEachWay(const Model& model, double spin_magnitude) {
+GrowthEachWay growthEachWay(const Model& model, double spin_magnitude) {
   const double n = std::max(std::abs(spin_magnitude), 1e-3);
   const Linearisation ccw = linearise(model, n), cw = linearise(model, -n);
   // Zero: below 1e-6 of the fastest rocking frequency, where the finite-difference Jacobian's
@@ -173,10 +165,8 @@ EachWay growthEachWay(const Model& model, double spin_magnitude) {
           1e-6 * omega};
 }
 
-}  // namespace
-
-Direction preferredDirection(const Model& model, double spin_magnitude) {
-  const auto [ccw_fastest, cw_fastest, zero] = growthEachWay(model, spin_magnitude);
+Direction preferredDirection(const GrowthEachWay& growth) {
+  const auto [ccw_fastest, cw_fastest, zero] = growth;
   // Alike: within 1e-9 of the rates' size (rounding; a dentless body's differ by 1e-16 /s).
   const double size = std::max({std::abs(ccw_fastest), std::abs(cw_fastest), 1e-12});
   if ((ccw_fastest <= zero && cw_fastest <= zero) ||
@@ -185,8 +175,8 @@ Direction preferredDirection(const Model& model, double spin_magnitude) {
   return ccw_fastest < cw_fastest ? Direction::Ccw : Direction::Cw;
 }
 
-bool growsEitherWay(const Model& model, double spin_magnitude) {
-  const auto [ccw_fastest, cw_fastest, zero] = growthEachWay(model, spin_magnitude);
+bool growsEitherWay(const Model& model, const GrowthEachWay& growth) {
+  const auto [ccw_fastest, cw_fastest, zero] = growth;
   if (!(ccw_fastest > zero && cw_fastest > zero)) return false;
   // Growing is not enough: the rocking must grow from a small tilt to tens of degrees (from
   // 0.5° to 30°: ln 60, about 4 e-folds) before drag has slowed the spin to where it no longer

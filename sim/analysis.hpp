@@ -120,16 +120,29 @@ enum class Direction {
   None,  ///< no preferred direction (preferredDirection: neither way grows, or both alike)
 };
 
+/// The fastest growth of the rocking spun each way at |spin| (at least 1e-3 rad/s), 1/s, and
+/// the rate below which a growth counts as none: what the two questions below read.
+struct GrowthEachWay {
+  double ccw, cw, zero;
+};
+GrowthEachWay growthEachWay(const Model& model, double spin_magnitude);
+
 /// The direction of spin (at |spin|) whose fastest mode grows more slowly: the one that keeps
 /// turning; spun the other way the body is predicted to reverse. None where neither direction's
 /// rocking grows (spun either way it is predicted to keep turning) or where both grow alike
 /// (a body with no misalignment): a dentless body got "cw" from rounding.
-Direction preferredDirection(const Model& model, double spin_magnitude);
+Direction preferredDirection(const GrowthEachWay& growth);
+inline Direction preferredDirection(const Model& model, double spin_magnitude) {
+  return preferredDirection(growthEachWay(model, spin_magnitude));
+}
 
 /// Whether the rocking grows spun either way at |spin| (a body with deep dents), the slower
 /// growth 4 e-folds or more in the time drag alone takes to slow the spin by e: then it is
 /// predicted to reverse spun either way, the preferred way later (docs/physics.md P8.4).
-bool growsEitherWay(const Model& model, double spin_magnitude);
+bool growsEitherWay(const Model& model, const GrowthEachWay& growth);
+inline bool growsEitherWay(const Model& model, double spin_magnitude) {
+  return growsEitherWay(model, growthEachWay(model, spin_magnitude));
+}
 
 /// Whether a spin n (rad/s) turns in `direction` (never in None).
 inline bool turns(Direction direction, double spin) {

@@ -232,13 +232,13 @@ void analyzeTheory(const sim::Model& model, Analysis& a) {
   a.first_order = sim::firstOrderGrowth(model);
   a.at_spin = sim::linearise(model, a.spin);
   a.growth = growthTable(model, a.spin, a.at_spin);
-  a.preferred = sim::preferredDirection(model, a.spin);
-  a.grows_either_way = sim::growsEitherWay(model, a.spin);
-  if (a.preferred != sim::Direction::None) {
-    const double n = std::max(std::abs(a.spin), 1e-3);  // as preferredDirection reads |spin|
-    const sim::Linearisation l = sim::linearise(model, a.preferred == sim::Direction::Ccw ? n : -n);
-    a.preferred_growth = std::max(l.roll_growth, l.pitch_growth);
-  }
+  // The two directions linearised once for all three answers.
+  const sim::GrowthEachWay each_way = sim::growthEachWay(model, a.spin);
+  a.preferred = sim::preferredDirection(each_way);
+  a.grows_either_way = sim::growsEitherWay(model, each_way);
+  a.preferred_growth = a.preferred == sim::Direction::Ccw  ? each_way.ccw
+                       : a.preferred == sim::Direction::Cw ? each_way.cw
+                                                           : 0;
   if (a.rest.stable && a.preferred == sim::Direction::None)
     a.preferred_faster = sim::preferredDirection(model, std::max(5.0, std::abs(a.spin)));
   a.forecast = sim::forecastFirstReversal(model, a.spin, model.duration);

@@ -68,6 +68,7 @@ def classroom(driver, size, failures, screenshots):
         for row in rows.values():
             tops = [v["bar"]["top"] for v in row]
             heights = [v["bar"]["height"] for v in row]
+            # Half a pixel: layout places boxes at fractions of a pixel; out of line was 5-16 px.
             if max(tops) - min(tops) > 0.5 or max(heights) - min(heights) > 0.5:
                 failures.append(
                     f"{where}: the bars under {[v['src'] for v in row]} are not in line "
