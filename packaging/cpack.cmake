@@ -25,9 +25,10 @@ set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 # Shared libraries (libEGL, FFmpeg, libpng, FreeType, yaml-cpp, libstdc++) through
 # dpkg-shlibdeps (package dpkg-dev). Opened at run time, so named here: the font; Mesa's EGL
-# vendor library (libglvnd's libEGL finds it, and llvmpipe behind it, through its JSON file).
+# vendor library (libglvnd's libEGL finds it, and llvmpipe behind it, through its JSON file);
+# HDF5 (libhdf5_serial.so.103, opened when a .h5 is written: tasks/hdf5.cpp).
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "fonts-dejavu-core, libegl-mesa0")
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "fonts-dejavu-core, libegl-mesa0, libhdf5-103-1")
 # `simulate --plot` and sweeps' heatmaps run gnuplot; OSMesa (dlopen) is the second backend;
 # the Python package (lib/python3/dist-packages/rattleback) imports NumPy.
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "gnuplot-nox, libosmesa6, python3-numpy")
