@@ -2971,6 +2971,23 @@ TEST(Cli, AStillIsAPosterOnlyWhenTheManifestSaysItIsOne) {
             std::string::npos)
       << html;
 
+  // Two `--both` pairs of one scene, from the side and then from above, and a still from above
+  // at t = 0 spun as the preferred video: it is no poster of the first pair's video from the
+  // side (whose slot the poster fills) and stays among the stills.
+  const fs::path two = emptyDir("poster-two-views");
+  auto at = [&](const char* name) { return (two / name).string(); };
+  const std::string quick = " --duration 0.2 --size 64x48 -q";
+  ASSERT_EQ(rattleback("render " + s + quick + " --both -o " + at("toy.mp4")).status, 0);
+  ASSERT_EQ(
+      rattleback("render " + s + quick + " --both --view above -o " + at("toy-above.mp4")).status,
+      0);
+  ASSERT_EQ(rattleback("still " + s + " --size 64x48 -q --view above -o " + at("top.png")).status,
+            0);
+  ASSERT_EQ(rattleback("report " + two.string() + " -q").status, 0);
+  html = readText(two / "index.html");
+  EXPECT_EQ(html.find("poster=\"top.png\""), std::string::npos) << html;
+  EXPECT_NE(html.find("<img src=\"top.png\""), std::string::npos) << html;
+
   // Files no manifest lists: a lone <scene>.mp4 takes <scene>-oblique.png, by their names.
   const fs::path bare = scratchDir() / "poster-bare";
   fs::remove_all(bare);

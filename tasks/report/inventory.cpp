@@ -23,14 +23,17 @@ struct ListedSpins {
   std::map<std::string, std::map<double, std::string>> single;  // scene → lone videos' views
 };
 
+// The first video of a scene and spin is the one whose slot a poster fills (placeEntry keeps a
+// slot's first; later ones are shown beside it, without posters): a second `render --both` of
+// the scene from above must not make a still from above the first one's poster.
 ListedSpins spinsOf(const std::vector<OutputEntry>& entries) {
   ListedSpins spins;
   for (const OutputEntry& e : entries) {
     if (e.kind != OutputKind::Video || !e.spin) continue;
     if (e.role == "single")
-      spins.single[e.scene][*e.spin] = e.view;
+      spins.single[e.scene].try_emplace(*e.spin, e.view);
     else if (e.role != "both")
-      spins.paired[e.scene][*e.spin] = {e.role, e.view};
+      spins.paired[e.scene].try_emplace(*e.spin, ListedVideo{e.role, e.view});
   }
   return spins;
 }
