@@ -24,6 +24,7 @@
 #include "sim/compile.hpp"
 #include "sim/rollout.hpp"
 #include "tasks/bench.hpp"
+#include "tasks/report/captions.hpp"
 #include "tasks/report/html.hpp"
 #include "tasks/report/page.hpp"
 
@@ -2277,9 +2278,10 @@ TEST(Cli, ReportCaptionsSayWhatIsPredictedAndWhatWasMeasured) {
 
 // A teacher's body, its dents mirrored and deeper (scale 0.6 at (−0.73, 4.50) cm), prefers
 // clockwise and still reverses spun −5 rad/s that way (5.77 s; the averaged theory forecasts
-// 6.21 s): the preferred video's caption, whose prediction is only that the rocking grows more
-// slowly, says it reversed although preferred (it once said "turns longer before any reversal"
-// and nothing more).
+// 6.21 s): the preferred video's caption says it reversed, as the theory predicts for a body
+// whose rocking grows either way (it once said "turns longer before any reversal" and nothing
+// more). A body whose rocking grows only the other way is said to have reversed "although"
+// (ReportCaptions.APreferredSpinThatReversesIsSaidToAgreeOrNot).
 TEST(Cli, ReportCaptionsSayWhenAPreferredSpinReversedToo) {
   const fs::path dir = emptyDir("page-preferred-reversed");
   const std::string dents = " --set \"body.dents={scale: 0.6, at: [-0.73, 4.50], inset: 0.1}\"";
@@ -2296,7 +2298,7 @@ TEST(Cli, ReportCaptionsSayWhenAPreferredSpinReversedToo) {
   ASSERT_EQ(said.size(), 2u);
   EXPECT_NE(said[1].find("Spun the <b>preferred</b> way"), std::string::npos) << said[1];
   EXPECT_NE(said[1].find("reversed at 5.77"), std::string::npos) << said[1];
-  EXPECT_NE(said[1].find("<b>it reversed although the theory prefers this direction</b>"),
+  EXPECT_NE(said[1].find(", as the theory predicts for this body (its rocking grows either way)"),
             std::string::npos)
       << said[1];
   EXPECT_EQ(said[0].find("measured"), std::string::npos) << said[0];  // no run spun +5 yet
@@ -2318,6 +2320,57 @@ TEST(Cli, ReportCaptionsSayWhenAPreferredSpinReversedToo) {
             std::string::npos)
       << both[0];
   EXPECT_NE(both[1].find("reversed at 5.77"), std::string::npos) << both[1];
+}
+
+// The shipped both-ways body (scenes/both-ways.yaml) prefers clockwise, but the theory finds its
+// rocking grows spun either way (analyze's `grows_either_way`, docs/physics.md P8.4): spun
+// −8 rad/s, the preferred way, it reverses at 5.35 s. The page says both that the theory
+// predicts it and that the run agrees, and the predicted column says it reverses either way
+// (a teacher found the prediction only behind the "full analysis" link).
+TEST(Cli, ReportSaysABodyThatReversesEitherWayDoesSoAsPredicted) {
+  const fs::path dir = emptyDir("page-either-way");
+  const std::string s = scene("both-ways");
+  const Result theory = rattleback("analyze " + s + " --json");
+  ASSERT_EQ(theory.status, 0) << theory.err;
+  ASSERT_EQ(nlohmann::json::parse(theory.out)["preferred"], "cw");
+  ASSERT_EQ(nlohmann::json::parse(theory.out)["grows_either_way"], true);
+  std::ofstream(dir / "both-ways-analysis.json") << theory.out;
+  std::ofstream(dir / "both-ways-reversed.mp4");
+  std::ofstream(dir / "both-ways-preferred.mp4");
+  ASSERT_EQ(rattleback("simulate " + s + " -q -o " + (dir / "both-ways.csv").string()).status, 0);
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  const std::vector<std::string> said = captions((dir / "index.html").string());
+  ASSERT_EQ(said.size(), 2u);
+  EXPECT_NE(said[1].find("Spun the <b>preferred</b> way: the theory predicts its rocking grows "
+                         "more slowly this way, "
+                         "but grows: it reverses this way too, later"),
+            std::string::npos)
+      << said[1];
+  EXPECT_NE(said[1].find("reversed at 5.35"), std::string::npos) << said[1];
+  EXPECT_NE(said[1].find(", as the theory predicts for this body"), std::string::npos) << said[1];
+  EXPECT_EQ(said[1].find("although"), std::string::npos) << said[1];
+  EXPECT_NE(readText(dir / "index.html")
+                .find("spun clockwise too its rocking grows: <b>it reverses either way</b>, "
+                      "clockwise later"),
+            std::string::npos);
+}
+
+// What a preferred spin's caption says of a run that reversed: that it agrees with the theory
+// where the rocking grows either way, and that it reversed although preferred where it grows
+// only the other way (a run pushed past the linear theory, by a large tilt say).
+TEST(ReportCaptions, APreferredSpinThatReversesIsSaidToAgreeOrNot) {
+  tasks::report::RunRecord run;
+  run.initial_spin = -5.0;
+  run.reversals_s = {2.5};
+  const std::string agrees = tasks::report::measuredAs(run, false, true, true);
+  EXPECT_NE(agrees.find("as the theory predicts for this body"), std::string::npos) << agrees;
+  EXPECT_EQ(agrees.find("although"), std::string::npos) << agrees;
+  const std::string surprise = tasks::report::measuredAs(run, false, true, false);
+  EXPECT_NE(surprise.find("<b>it reversed although the theory prefers this direction</b>"),
+            std::string::npos)
+      << surprise;
+  // The reversing way, reversed: nothing to remark on, either way.
+  EXPECT_EQ(tasks::report::measuredAs(run, false, false, true).find("theory"), std::string::npos);
 }
 
 // A backend from the environment that is not one is named as the environment's, not as an

@@ -138,15 +138,17 @@ std::string measuredOf(const RunRecord& run) {
   return out.str();
 }
 
-std::string measuredAs(const std::optional<RunRecord>& run, bool ccw,
-                       std::optional<bool> preferred) {
+std::string measuredAs(const std::optional<RunRecord>& run, bool ccw, std::optional<bool> preferred,
+                       bool either_way) {
   if (!run) return "";
   const Number& spin = run->initial_spin;
   if (!spin || *spin == 0 || (*spin > 0) != ccw) return "";
   std::string text = "<br>measured (<code>simulate</code>, " + number(spin, "%+.3g") +
                      " rad/s): " + reversalOf(*run);
   const bool reversed = !run->reversals_s.empty() || run->first_reversal_s.has_value();
-  if (preferred && *preferred && reversed)
+  if (preferred && *preferred && reversed && either_way)
+    text += ", as the theory predicts for this body (its rocking grows either way)";
+  else if (preferred && *preferred && reversed)
     text +=
         ": <b>it reversed although the theory prefers this direction</b> (its rocking grew "
         "more slowly than the other way's, but it grew)";
@@ -159,8 +161,13 @@ std::string measuredAs(const std::optional<RunRecord>& run, bool ccw,
 
 std::string predictedOf(const nlohmann::json& t) {
   std::ostringstream out;
-  out << "preferred direction: <b>" << preferredWords(t)
-      << "</b><br>growth rates at n = " << number(field(t, "spin"), "%+g") << " rad/s: roll "
+  const std::string way = preferredWords(t);
+  out << "preferred direction: <b>" << way << "</b>"
+      << (field(t, "grows_either_way") == true
+              ? "; spun " + way + " too its rocking grows: <b>it reverses either way</b>, " + way +
+                    " later"
+              : "")
+      << "<br>growth rates at n = " << number(field(t, "spin"), "%+g") << " rad/s: roll "
       << number(field(field(t, "growth_rates"), "roll"), "%+.3f") << " /s, pitch "
       << number(field(field(t, "growth_rates"), "pitch"), "%+.3f")
       << " /s<br>rocking at rest: roll " << restModeOf(t, "roll") << ", pitch "

@@ -17,6 +17,11 @@ namespace tasks::report {
 inline constexpr const char* kPreferredWay =
     "the theory predicts its rocking grows more slowly this way, if at all, so it turns longer "
     "before any reversal";
+/// The same where the theory finds the rocking grows either way (analyze's `grows_either_way`,
+/// docs/physics.md P8.4): a reversal this way too is the prediction, not a surprise.
+inline constexpr const char* kPreferredWayEitherWay =
+    "the theory predicts its rocking grows more slowly this way, but grows: it reverses this way "
+    "too, later";
 
 /// "counter-clockwise", "clockwise" or "no spin".
 std::string spinWords(double spin);
@@ -32,9 +37,10 @@ std::string measuredOf(const RunRecord& run);
 /// video was; empty otherwise. Where `preferred` says whether that is the theory's preferred
 /// direction, a run that disagrees with the caption's prediction is said to, plainly: reversed
 /// although preferred (a preferred spin's rocking grows more slowly, and may still grow), or no
-/// reversal the reversing way within the run.
+/// reversal the reversing way within the run. `either_way`: the theory predicts a reversal
+/// the preferred way too, so one there agrees with it.
 std::string measuredAs(const std::optional<RunRecord>& run, bool ccw,
-                       std::optional<bool> preferred = std::nullopt);
+                       std::optional<bool> preferred = std::nullopt, bool either_way = false);
 
 /// The theory's column (analyze --json): the preferred direction, growth rates, the rocking at
 /// rest, the misalignment and the forecast first reversal.

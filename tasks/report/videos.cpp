@@ -16,6 +16,7 @@ struct Videos {
   const SceneFiles& f;
   const std::vector<RunRecord>& runs;
   std::optional<bool> ccw_preferred;  ///< the preferred direction as analyze found it
+  bool either_way = false;            ///< analyze predicts a reversal the preferred way too
 
   // The first run spun counter-clockwise (`ccw`) or clockwise: a teacher who simulated both
   // ways under two names found the reversing video's caption without its run's result.
@@ -33,11 +34,13 @@ struct Videos {
     writeVideoFigure(out, file, f.has(poster_suffix) ? f.at(poster_suffix) : "", "auto", caption);
   }
 
+  const char* preferredWay() const { return either_way ? kPreferredWayEitherWay : kPreferredWay; }
+
   // What the run measured, where it was spun the way (`preferred` or not) a video was.
   std::string measured(bool preferred) const {
     if (!ccw_preferred) return "";
     const bool ccw = preferred == *ccw_preferred;
-    return measuredAs(runSpun(ccw), ccw, preferred);
+    return measuredAs(runSpun(ccw), ccw, preferred, either_way);
   }
 
   // A video's spin as the manifest lists it: none where it does not (or says 0).
@@ -65,7 +68,7 @@ struct Videos {
                 measured(false));
     if (f.has("-preferred.mp4"))
       video(f.at("-preferred.mp4"), "-preferred.png",
-            "Spun the <b>preferred</b> way" + spun(f.at("-preferred.mp4")) + ": " + kPreferredWay +
+            "Spun the <b>preferred</b> way" + spun(f.at("-preferred.mp4")) + ": " + preferredWay() +
                 measured(true));
     out << "</div>\n";
   }
@@ -91,10 +94,10 @@ struct Videos {
       const bool ccw = *spin > 0;
       caption = "Spun <b>" + spinWords(*spin) + "</b> (" + rads(*spin) + ")";
       if (ccw_preferred)
-        caption += ": " + std::string(ccw == *ccw_preferred ? kPreferredWay : kReversingWay);
-      caption +=
-          measuredAs(runSpun(ccw), ccw,
-                     ccw_preferred ? std::optional<bool>(ccw == *ccw_preferred) : std::nullopt);
+        caption += ": " + std::string(ccw == *ccw_preferred ? preferredWay() : kReversingWay);
+      caption += measuredAs(
+          runSpun(ccw), ccw,
+          ccw_preferred ? std::optional<bool>(ccw == *ccw_preferred) : std::nullopt, either_way);
     }
     video(f.at(".mp4"), "-single.png", caption);
   }
@@ -109,6 +112,7 @@ void writeVideos(std::ostream& out, const SceneFiles& f,
   if (theory) {
     const nlohmann::json& preferred = field(*theory, "preferred");
     if (preferred == "ccw" || preferred == "cw") videos.ccw_preferred = preferred == "ccw";
+    videos.either_way = field(*theory, "grows_either_way") == true;
   }
   videos.byWay();
   videos.bySpin();
