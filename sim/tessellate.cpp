@@ -5,6 +5,8 @@
 #include <numbers>
 #include <string>
 
+#include "util/format.hpp"
+
 namespace sim {
 namespace {
 
@@ -23,8 +25,8 @@ void addCell(std::vector<Face>& faces, int a, int b, int c, int d, bool up) {
   }
 }
 
-rb::Result<TriangleMesh> paraboloidMesh(const Paraboloid& shape, const std::optional<Dents>& dents,
-                                        int segments) {
+rb::Result<TriangleMesh> paraboloidMeshAt(const Paraboloid& shape,
+                                          const std::optional<Dents>& dents, int segments) {
   // ½ uᵀHu = top + a is the rim; with H = L Lᵀ, u = √(2(top + a)) r L⁻ᵀ(cos θ, sin θ) puts the
   // rim at r = 1 and the apex at r = 0.
   Eigen::Matrix2d h;
@@ -65,20 +67,18 @@ rb::Result<TriangleMesh> paraboloidMesh(const Paraboloid& shape, const std::opti
       const Eigen::Vector2d& u = at[static_cast<std::size_t>(ring(i, j) - 1)];
       const double z = upper(u.x(), u.y());
       if (!(z > shape.bottom(u.x(), u.y())))
-        return rb::Error{
-            "body.dents",
-            "cut through the bottom at (" + std::to_string(u.x()) + ", " + std::to_string(u.y()) +
-                ") m, a hole through the body: export draws bodies whose dents lie "
-                "within the top (make body.dents.scale smaller: how much smaller "
-                "depends on body.dents.at; the shipped body's dents export up to 0.48)"};
+        return rb::Error{"body.dents",
+                         "cut through the bottom at (" + std::to_string(u.x()) + ", " +
+                             std::to_string(u.y()) +
+                             ") m, a hole through the body: export draws bodies whose dents lie "
+                             "within the top"};
       v.emplace_back(u.x(), u.y(), z);
     }
   for (int j = 0; j < segments; ++j) {
     const Eigen::Vector2d& u = at[static_cast<std::size_t>(ring(rings, j) - 1)];
     if (upper(u.x(), u.y()) < shape.top)
       return rb::Error{"body.dents",
-                       "cut the rim: export draws bodies whose dents lie within the top (make "
-                       "body.dents.scale smaller, or move body.dents.at inwards)"};
+                       "cut the rim: export draws bodies whose dents lie within the top"};
   }
   const int top_centre = static_cast<int>(v.size());
   v.emplace_back(0, 0, upper(0, 0));
@@ -97,6 +97,38 @@ rb::Result<TriangleMesh> paraboloidMesh(const Paraboloid& shape, const std::opti
     }
   }
   return mesh;
+}
+
+// The largest dents.scale, to two decimals, whose dents at the same place lie within the
+// body; 0 where none does. Deeper dents cut further (eq. P1.2: a dent's depth and width grow
+// with its scale), so whether a scale exports is monotone in it and bisection finds the edge.
+double largestExportableScale(const Paraboloid& shape, Dents dents, int segments) {
+  const auto fits = [&](double scale) {
+    dents.scale = scale;
+    return paraboloidMeshAt(shape, dents, segments).ok();
+  };
+  double fit = 0, cut = dents.scale;
+  for (int i = 0; i < 40; ++i) {
+    const double mid = 0.5 * (fit + cut);
+    (fits(mid) ? fit : cut) = mid;
+  }
+  const double shown = std::floor(fit * 100) / 100;
+  return shown > 0 && fits(shown) ? shown : 0;
+}
+
+// A refusal says how far the dents may go where they are, so that a maker need not guess.
+rb::Result<TriangleMesh> paraboloidMesh(const Paraboloid& shape, const std::optional<Dents>& dents,
+                                        int segments) {
+  rb::Result<TriangleMesh> mesh = paraboloidMeshAt(shape, dents, segments);
+  if (mesh.ok() || !dents) return mesh;
+  const double largest = largestExportableScale(shape, *dents, segments);
+  rb::Error error = mesh.error();
+  error.message += largest > 0
+                       ? " (make body.dents.scale smaller: where they are, the dents export "
+                         "up to scale " +
+                             rb::show(largest) + ")"
+                       : " (move body.dents.at inwards: where they are, no scale exports)";
+  return error;
 }
 
 TriangleMesh ellipsoidMesh(const Ellipsoid& shape, int segments) {
