@@ -8,7 +8,8 @@ const FORECAST_LABEL_HEIGHT = 12; // px at the plot's top: its label, 9 px type 
 
 export const plotMethods = {
   plotLayout() {
-    const dpr = Math.min(window.devicePixelRatio || 1, 2);
+    // Present mode shows the plot scaled up over the picture (style.js): drawn finer for it.
+    const dpr = Math.min(window.devicePixelRatio || 1, 2) * (this.presenting ? 2 : 1);
     if (this.layout && this.layout.dpr === dpr) return this.layout;
     const w = 270,
       h = 130;

@@ -1,6 +1,6 @@
 // Present mode, for a classroom's projector: the player full screen, the picture as large as the
-// screen allows and the time, the spin and its sense over it in large type (the plot and the
-// help set aside). P (or the Present button) enters and leaves it, Esc leaves it; the keys are
+// screen allows and the time, the spin and its sense over it in large type, the n(t) plot scaled
+// up in its bottom right corner (the help set aside). P (or the Present button) enters and leaves it, Esc leaves it; the keys are
 // listed on the page beside the player. Where the browser refuses full screen (no user
 // gesture: a headless test), the layout is the same in the window.
 export const presentMethods = {

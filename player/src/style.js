@@ -33,7 +33,7 @@ export const STYLE = `
 .rbp-cursor,.rbp-dot{position:absolute;left:0;top:0;background:#d0211a;pointer-events:none;will-change:transform}
 .rbp-cursor{width:1.5px;opacity:.6}
 .rbp-dot{width:6px;height:6px;border-radius:50%}
-.rbp-help{font-size:12px;color:#666;margin-top:6px}
+.rbp-help{font-size:13px;color:#555;margin-top:6px}
 .rbp-reversal:disabled{opacity:.45;cursor:default}
 .rbp:fullscreen{background:#fff;margin:0;padding:16px;box-sizing:border-box;overflow:auto;align-items:flex-start;flex-wrap:nowrap}
 .rbp:fullscreen .rbp-main{flex:1 1 auto;min-width:0}
@@ -52,7 +52,9 @@ export const STYLE = `
 .rbp.rbp-present .rbp-side{position:absolute;left:calc(28px + (100vw - 24px - min(100vw - 24px, (100vh - 110px) * 16 / 9)) / 2);top:24px;flex:none;width:auto;background:rgba(255,255,255,.82);padding:6px 14px;border-radius:4px;pointer-events:none;max-width:calc(min(100vw - 24px, (100vh - 110px) * 16 / 9) - 60px)}
 .rbp.rbp-present .rbp-title{font-size:max(26px,3.6vh)}
 .rbp.rbp-present .rbp-read{font-size:max(26px,3.6vh)}
-.rbp.rbp-present .rbp-plotbox,.rbp.rbp-present .rbp-help{display:none}
+.rbp.rbp-present .rbp-help{display:none}
+.rbp.rbp-present .rbp-plotbox{position:fixed;right:calc(24px + (100vw - 24px - min(100vw - 24px, (100vh - 110px) * 16 / 9)) / 2);bottom:calc(100vh - min(100vw - 24px, (100vh - 110px) * 16 / 9) * 9 / 16);margin:0;transform:scale(1.3);transform-origin:100% 100%;opacity:.94}
+@media (min-height:900px){.rbp.rbp-present .rbp-plotbox{transform:scale(1.7)}}
 .rbp.rbp-present .rbp-reversal-label{font-size:max(24px,3.4vh);top:16px;right:16px}
 .rbp-missing{padding:10px 12px;border:1px dashed #c9a0a0;border-radius:4px;color:#7a2e2e;background:#fbf4f4;font:14px system-ui,sans-serif;margin:8px 0}
 `;

@@ -131,6 +131,7 @@ def classroom(driver, size, failures, screenshots):
                 stage: box(root.querySelector('.rbp-stage')),
                 read: box(root.querySelector('.rbp-spin')),
                 side: box(root.querySelector('.rbp-side')),
+                plot: box(root.querySelector('.rbp-plotbox')),
                 font: parseFloat(getComputedStyle(root.querySelector('.rbp-spin')).fontSize),
                 title: parseFloat(getComputedStyle(root.querySelector('.rbp-title')).fontSize),
                 vw: document.documentElement.clientWidth, vh: document.documentElement.clientHeight};""",
@@ -160,6 +161,22 @@ def classroom(driver, size, failures, screenshots):
         ):
             failures.append(
                 f"{where}: in present mode the read-outs {side} are not over the picture {got['stage']}"
+            )
+        # The n(t) plot over the picture's bottom right, scaled up for the room (a teacher's
+        # trial: present mode dropped it), clear of the read-outs.
+        plot = got["plot"]
+        clear = plot[0] >= side[2] or plot[1] >= side[3]
+        if not (
+            plot[0] >= left - 0.5
+            and plot[2] <= right + 0.5
+            and plot[1] >= top - 0.5
+            and plot[3] <= bottom + 0.5
+            and plot[2] - plot[0] >= 1.25 * 272
+            and clear
+        ):
+            failures.append(
+                f"{where}: in present mode the n(t) plot {plot} is not over the picture "
+                f"{got['stage']}, 1.25 times its 272 px and clear of the read-outs {side}"
             )
         if not inside(got["read"]) or got["font"] < 26:
             failures.append(
@@ -247,6 +264,8 @@ def present_reversal(driver, player, where, failures, screenshots):
           if (s.display === 'none' || s.visibility === 'hidden' || !(r.width > 1 && r.height > 1)) continue;
           if (r.right <= stage.left || r.left >= stage.right || r.bottom <= stage.top || r.top >= stage.bottom) continue;
           if (x.classList.contains('rbp-stage')) continue;
+          // (the n(t) plot's cursor and dot mark the time on it: drawn, not empty)
+          if (x.closest('.rbp-plotbox')) continue;
           const painted = s.backgroundColor !== 'rgba(0, 0, 0, 0)' && s.backgroundColor !== 'transparent';
           if (painted && !x.textContent.trim()) empty.push([x.className, Math.round(r.left), Math.round(r.top), Math.round(r.width), Math.round(r.height)]);
         }
