@@ -5,7 +5,6 @@
 #include <cmath>
 #include <sstream>
 
-#include "sim/adaptive.hpp"
 #include "sim/contact_model.hpp"
 #include "sim/initial.hpp"
 #include "sim/integrator.hpp"
@@ -33,24 +32,25 @@ std::string stepAdvice(const Model& model) {
   return "try a smaller simulation.dt";
 }
 
+// contact.model auto: its switch, else none.
+std::optional<AutoSwitch> autoSwitchOf(const Model& model) {
+  if (!contactTraits(model.contact.model).switches) return std::nullopt;
+  return AutoSwitch(model);
+}
+
 }  // namespace
 
 Rollout::Rollout(Model model) : Rollout(model, initialState(model)) {}
 
-Rollout::Rollout(Model model, const State& start)
+Rollout::Rollout(Model model, State start)
     : model_(std::move(model)),
-      active_(model_),
-      previous_(start),
-      current_(start),
+      auto_(autoSwitchOf(model_)),
+      // Under auto the first mode, chosen from the start (which it may put on rolling's
+      // constraint).
+      active_(auto_ ? auto_->start(start) : model_),
+      steps_(active_, start),
       watchdog_(0, 0, false, "") {
-  if (contactTraits(model_.contact.model).switches) {
-    auto_.emplace(model_);
-    active_ = auto_->start(current_);
-    previous_ = current_;
-  }
-  if (isAdaptive(model_.integrator))
-    adaptive_ = std::make_unique<AdaptiveStepper>(active_, current_);
-  summary_.first = summary_.last = telemetryOf(active_, current_);
+  summary_.first = summary_.last = telemetryOf(active_, start);
   spin_ = summary_.first.spin;
   summary_.max_tilt_deg = summary_.first.tilt_deg;
   min_cos_tilt_ = std::cos(summary_.first.tilt_deg * M_PI / 180.0);
@@ -63,20 +63,16 @@ Rollout::Rollout(Model model, const State& start)
   // 89°) was stopped a step later for a rise of energy, or a NaN, with the advice of a smaller
   // step, which cannot help.
   if (stopsOnRim()) {
-    const Eigen::Matrix3d R = current_.q.normalized().toRotationMatrix();
-    watch(R, angularVelocity(*model_.body, R, current_.L_world));
+    const Eigen::Matrix3d R = start.q.normalized().toRotationMatrix();
+    watch(R, angularVelocity(*model_.body, R, start.L_world));
   }
 }
 
 Rollout::Rollout(const Rollout& other)
     : model_(other.model_),
-      active_(other.active_),
-      previous_(other.previous_),
-      current_(other.current_),
-      last_step_(other.last_step_),
-      adaptive_(other.adaptive_ ? std::make_unique<AdaptiveStepper>(*other.adaptive_) : nullptr),
-      earlier_(other.earlier_),
       auto_(other.auto_),
+      active_(other.active_),
+      steps_(other.steps_),
       summary_(other.summary_),
       last_due_s_(other.last_due_s_),
       reversals_(other.reversals_),
@@ -102,10 +98,11 @@ bool Rollout::advance(double t, bool until_reversal) {
   // 10 kHz run; docs/speed.md "Simulation: speed against error"); nor per step when stepping to
   // a reversal (they were 6 % of a sweep's runs stepped one by one).
   const std::size_t reversals = summary_.reversals.size();
-  if (!stopped() && current_.t < t && !sameTime(current_.t, t)) {
+  const State& now = steps_.current();
+  if (!stopped() && now.t < t && !sameTime(now.t, t)) {
     const auto start = std::chrono::steady_clock::now();
-    while (!stopped() && current_.t < t && !sameTime(current_.t, t)) {
-      if (stop_.stop_requested() || external_.stop_requested()) {
+    while (!stopped() && now.t < t && !sameTime(now.t, t)) {
+      if (stop_.requested()) {
         summary_.stop_requested = true;
         break;
       }
@@ -116,27 +113,26 @@ bool Rollout::advance(double t, bool until_reversal) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     countSteps();
   }
-  const bool reached = !stopped() || current_.t >= t || sameTime(current_.t, t);
-  last_due_s_ = std::min(t, current_.t);
+  const bool reached = !stopped() || now.t >= t || sameTime(now.t, t);
+  last_due_s_ = std::min(t, now.t);
   return reached;
 }
 
 bool Rollout::advanceOneStep() {
-  if (!stopped() && (stop_.stop_requested() || external_.stop_requested()))
-    summary_.stop_requested = true;
+  if (!stopped() && stop_.requested()) summary_.stop_requested = true;
   if (stopped()) return false;
   const auto start = std::chrono::steady_clock::now();
   stepOnce();
   summary_.wall_s +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   countSteps();
-  last_due_s_ = current_.t;
+  last_due_s_ = steps_.current().t;
   return true;
 }
 
 void Rollout::setState(State s) {
-  s.t = current_.t;
-  s.step = current_.step;
+  s.t = steps_.current().t;
+  s.step = steps_.current().step;
   s.q.normalize();
   if (auto_) {  // chosen again as at the start: rolling where it holds, else sliding
     const ContactModel before = active_.contact.model;
@@ -149,57 +145,39 @@ void Rollout::setState(State s) {
   } else {
     holdOnFloor(active_, s);
   }
-  previous_ = current_ = s;
-  last_step_.stepTaken();  // a step of no length: its ends are s
-  if (adaptive_) restartStepper();
-  const Telemetry now = telemetryOf(active_, current_);
+  steps_.startFrom(active_, s);
+  const Telemetry now = telemetryOf(active_, s);
   spin_ = now.spin;
   watchdog_.restartEnergy(now.energy);
-  last_due_s_ = current_.t;
-}
-
-void Rollout::restartStepper() {
-  earlier_.evaluations += adaptive_->evaluations();
-  earlier_.rejected += adaptive_->rejected(current_.step - earlier_.start_step);
-  adaptive_ = std::make_unique<AdaptiveStepper>(active_, current_);
-  earlier_.start_step = current_.step;
-  last_step_.denseLost();  // the new stepper has no dense output for the step just ended
+  last_due_s_ = s.t;
 }
 
 void Rollout::stepOnce() {
   if (auto_)
     if (std::optional<ModeChange> back = auto_->handBack()) changeMode(std::move(*back));
   const double previous_spin = spin_;
-  previous_ = current_;
   const bool sliding = auto_ && AutoSwitch::sliding(active_);
-  if (adaptive_) {
-    current_ = adaptive_->step(current_.step + 1);
-    // The integrator's own copy is not touched: the rates use q normalised. (Under rolling
-    // the stepper integrates no z or v; its states come on the constraint.)
-    current_.q.normalize();
-    if (sliding) auto_->countStuck(active_, current_, current_.t - previous_.t);
-  } else if (sliding) {
+  if (sliding && !steps_.adaptive()) {
     // Auto sliding: the smooth contact in steps of its own up to the step's end.
-    const std::int64_t index = current_.step + 1;
-    auto_->advance(active_, current_, static_cast<double>(index) * model_.dt);
-    current_.step = index;
-    current_.t = static_cast<double>(index) * model_.dt;
+    steps_.stepBy(model_.dt, [this](State& s, double t_end) { auto_->advance(active_, s, t_end); });
   } else {
-    step(active_, current_);  // which puts a rolling state back on the constraint itself
+    steps_.step(active_);
+    const State& b = steps_.current();
+    if (sliding) auto_->countStuck(active_, b, b.t - steps_.previous().t);
   }
-  last_step_.stepTaken();
   if (auto_) switchModes();
+  const State& end = steps_.current();
   // The tilt's cosine is R(2,2) = (w² + z² − x² − y²)/|q|² of the orientation quaternion.
-  const Eigen::Quaterniond& q = current_.q;
+  const Eigen::Quaterniond& q = end.q;
   min_cos_tilt_ =
       std::min(min_cos_tilt_,
                (q.w() * q.w() + q.z() * q.z() - q.x() * q.x() - q.y() * q.y()) / q.squaredNorm());
   // The step end's rotation and ω, once for the spin and the watchdog.
-  const Eigen::Matrix3d R = current_.q.normalized().toRotationMatrix();
-  const Eigen::Vector3d w = angularVelocity(*model_.body, R, current_.L_world);
+  const Eigen::Matrix3d R = end.q.normalized().toRotationMatrix();
+  const Eigen::Vector3d w = angularVelocity(*model_.body, R, end.L_world);
   spin_ = w.z();
   locateReversal(previous_spin, spin_);
-  if (current_.step % checkEvery() == 0) watch(R, w);
+  if (end.step % checkEvery() == 0) watch(R, w);
 }
 
 bool Rollout::stopsOnRim() const {
@@ -209,12 +187,13 @@ bool Rollout::stopsOnRim() const {
 }
 
 void Rollout::watch(const Eigen::Matrix3d& R, const Eigen::Vector3d& w) {
+  const State& now = steps_.current();
   StepEnd end;
-  end.t = current_.t;
-  end.step = current_.step;
-  end.non_finite = nonFinite(current_);
+  end.t = now.t;
+  end.step = now.step;
+  end.non_finite = nonFinite(now);
   if (!end.non_finite) {
-    const EndReading reading = readEnd(active_, current_, w);
+    const EndReading reading = readEnd(active_, now, w);
     end.energy = reading.energy_J;
     end.contacts = reading.contacts;
     if (stopsOnRim() && model_.body->surface.lowestOnRim(-R.row(2).transpose())) {
@@ -232,13 +211,11 @@ void Rollout::watch(const Eigen::Matrix3d& R, const Eigen::Vector3d& w) {
 // Reversals (sim/reversals.hpp, the rule): n between the step's ends is read on the interpolant
 // of the step, so crossings and thresholds are placed as accurately as the states between steps.
 void Rollout::locateReversal(double previous_spin, double spin) {
-  const bool at_end = current_.t >= model_.duration * (1 - kSameTime);
-  reversals_.step(
-      previous_.t, previous_spin, current_.t, spin, watchdog_.lastFlight(), at_end, [&](double t) {
-        return angularVelocity(model_,
-                               last_step_.at(t, active_, previous_, current_, adaptive_.get()))
-            .z();
-      });
+  const double t_a = steps_.previous().t, t_b = steps_.current().t;
+  const bool at_end = t_b >= model_.duration * (1 - kSameTime);
+  reversals_.step(t_a, previous_spin, t_b, spin, watchdog_.lastFlight(), at_end, [&](double t) {
+    return angularVelocity(model_, steps_.interpolated(t, active_)).z();
+  });
   if (reversals_.reversals().size() > summary_.reversals.size()) {
     summary_.reversals = reversals_.reversals();
     if (!summary_.first_reversal_s) summary_.first_reversal_s = summary_.reversals.front();
@@ -246,34 +223,19 @@ void Rollout::locateReversal(double previous_spin, double spin) {
 }
 
 State Rollout::stateAt(double t) const {
-  // A time within rounding of a step is that step's own state (stamped with the time asked).
-  for (const State* end : {&current_, &previous_}) {
-    if (!sameTime(t, end->t)) continue;
-    State s = *end;
-    s.t = t;
-    return s;
-  }
-  bool on_constraint = false;
-  State s = last_step_.at(t, active_, previous_, current_, adaptive_.get(), &on_constraint);
-  if (on_constraint) return s;  // normalised and placed by the stepper (adaptive.cpp's Rolling)
-  s.q.normalize();
-  holdOnFloor(last_step_.modeAt(t, active_), s);
-  return s;
+  return steps_.stateAt(t, active_);
 }
 
 Telemetry Rollout::sampleAt(double t) const {
-  return telemetryOf(last_step_.modeAt(t, active_), stateAt(t));
+  return telemetryOf(steps_.modeAt(t, active_), stateAt(t));
 }
 
 void Rollout::countSteps() const {
-  summary_.steps = current_.step;
+  summary_.steps = steps_.current().step;
   summary_.max_tilt_deg = std::max(summary_.max_tilt_deg,
                                    std::acos(std::clamp(min_cos_tilt_, -1.0, 1.0)) * 180.0 / M_PI);
-  if (adaptive_) {
-    summary_.evaluations = earlier_.evaluations + adaptive_->evaluations();
-    summary_.rejected =
-        earlier_.rejected + adaptive_->rejected(current_.step - earlier_.start_step);
-  }
+  summary_.evaluations = steps_.evaluations();
+  summary_.rejected = steps_.rejected();
 }
 
 const RunSummary& Rollout::summary() const {
@@ -286,36 +248,34 @@ const RunSummary& Rollout::summary() const {
 }
 
 std::int64_t Rollout::checkEvery() const {
-  return adaptive_ ? 1 : std::max<std::int64_t>(1, std::llround(kEnergyCheckPeriod / model_.dt));
+  return steps_.adaptive()
+             ? 1
+             : std::max<std::int64_t>(1, std::llround(kEnergyCheckPeriod / model_.dt));
 }
 
 void Rollout::switchModes() {
-  std::optional<ModeChange> change =
-      auto_->afterStep(active_, previous_, current_, [this](double t) { return stateAt(t); });
+  std::optional<ModeChange> change = auto_->afterStep(active_, steps_.previous(), steps_.current(),
+                                                      [this](double t) { return stateAt(t); });
   if (change) changeMode(std::move(*change));
 }
 
 void Rollout::changeMode(ModeChange change) {
-  last_step_.cut(change.t_s, active_, current_);
+  steps_.cut(change.t_s, active_);
   active_ = std::move(change.next);
   ++summary_.switches;
   summary_.mode_changes.push_back({change.t_s, active_.contact.model});
+  const double t_end = steps_.current().t;
+  const std::int64_t index = steps_.current().step;
   State& s = change.start;
-  if (adaptive_) {
+  if (steps_.adaptive()) {
     s.t = change.t_s;
-    s.step = current_.step;
-    current_ = s;
-    restartStepper();
-  } else if (change.t_s < current_.t) {
-    const double t_end = current_.t;
-    const std::int64_t index = current_.step;
+    s.step = index;
+  } else if (change.t_s < t_end) {
     auto_->advance(active_, s, t_end);
     s.t = t_end;
     s.step = index;
-    current_ = s;
-  } else {
-    current_ = s;
   }
+  steps_.endAt(active_, s);
 }
 
 std::vector<double> sampleTimes(double duration, double rate) {

@@ -6,7 +6,6 @@
 #pragma once
 
 #include <limits>
-#include <memory>
 #include <optional>
 #include <stop_token>
 #include <string>
@@ -15,13 +14,11 @@
 #include "sim/auto_switch.hpp"
 #include "sim/model.hpp"
 #include "sim/reversals.hpp"
-#include "sim/step_interpolant.hpp"
+#include "sim/stepping.hpp"
 #include "sim/telemetry.hpp"
 #include "sim/watchdog.hpp"
 
 namespace sim {
-
-class AdaptiveStepper;
 
 /// What a run did so far.
 struct RunSummary {
@@ -69,7 +66,7 @@ class Rollout {
   /// Starts `model` from its initial state (docs/physics.md P5).
   explicit Rollout(Model model);
   /// Starts `model` from `start` (its t and step are kept).
-  Rollout(Model model, const State& start);
+  Rollout(Model model, State start);
   /// A run that goes on alone from where `other` is: the same states, stepper, summary and
   /// reversal rule, and a stop request of its own (a stopWith token is not carried over).
   Rollout(const Rollout& other);
@@ -82,7 +79,7 @@ class Rollout {
   /// The contact model being integrated now (under auto: rolling or smooth).
   ContactModel mode() const { return active_.contact.model; }
   /// The latest state reached: the end of the last step.
-  const State& current() const { return current_; }
+  const State& current() const { return steps_.current(); }
   /// The end of the run: model.duration, s.
   double endTime() const { return model_.duration; }
 
@@ -114,15 +111,15 @@ class Rollout {
   Telemetry sampleAt(double t) const;
 
   /// Stops the run at its next step; safe from another thread.
-  void requestStop() { stop_.request_stop(); }
+  void requestStop() { stop_.own.request_stop(); }
   /// Stops the run when `token` is stopped (e.g. a std::jthread's or a signal handler's).
-  void stopWith(std::stop_token token) { external_ = std::move(token); }
+  void stopWith(std::stop_token token) { stop_.external = std::move(token); }
   bool stopped() const { return summary_.divergence.has_value() || summary_.stop_requested; }
 
   /// The reversals so far (as summary().reversals, without sampling the last time), s.
   const std::vector<double>& reversals() const { return summary_.reversals; }
   /// The start of the last step, s (current().t before its last step; the same at the start).
-  double previousTime() const { return previous_.t; }
+  double previousTime() const { return steps_.previous().t; }
 
   /// What the run did so far; its `last` is the telemetry at the time the last advanceTo asked
   /// for (or where the run stopped, when it stopped before it).
@@ -152,30 +149,24 @@ class Rollout {
   /// every step when adaptive).
   std::int64_t checkEvery() const;
   void countSteps() const;  ///< the summary's steps, tilt and evaluations, as they are now
-  /// Adaptive: a new stepper from current_ (a change of mode, a state set), its predecessor's
-  /// counts kept; the last step is then interpolated by Hermite.
-  void restartStepper();
 
-  /// Adaptive: what the steppers before the current one did (a change of mode restarts it).
-  struct EarlierSteppers {
-    std::int64_t evaluations = 0, rejected = 0;
-    std::int64_t start_step = 0;  ///< the step the current stepper started at
+  /// What stops the run when asked: requestStop() (a source of its own) or stopWith()'s token.
+  struct StopRequests {
+    std::stop_source own;
+    std::stop_token external;
+    bool requested() const { return own.stop_requested() || external.stop_requested(); }
   };
 
-  Model model_;   ///< the run as compiled
-  Model active_;  ///< the model being integrated: model_, or under auto its rolling or smooth mode
-  State previous_, current_;   ///< the last step's ends
-  StepInterpolant last_step_;  ///< states between them
-  std::unique_ptr<AdaptiveStepper> adaptive_;
-  EarlierSteppers earlier_;
+  Model model_;                     ///< the run as compiled
   std::optional<AutoSwitch> auto_;  ///< contact.model auto: when its mode changes
-  std::stop_source stop_;
-  std::stop_token external_;
+  Model active_;  ///< the model being integrated: model_, or under auto its rolling or smooth mode
+  Stepping steps_;  ///< the last step's ends, the states between them, the adaptive stepper
+  StopRequests stop_;
   mutable RunSummary summary_;  ///< `last` is filled in when asked for (summary())
   /// The time of summary().last, s, while it is still to be sampled.
   mutable std::optional<double> last_due_s_;
   ReversalDetector reversals_{0};  ///< the reversal rule, fed each step and its interpolant
-  double spin_ = 0;                ///< n = ω·ẑ of current_, rad/s
+  double spin_ = 0;                ///< n = ω·ẑ of current(), rad/s
   double min_cos_tilt_ = 1;        ///< smallest cosine of the tilt so far
   Watchdog watchdog_;              ///< NaN, energy from nowhere, the rim; and the last flight
 };
