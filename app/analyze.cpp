@@ -75,6 +75,22 @@ void printGrowth(std::FILE* out, const tasks::Analysis& a) {
   std::fprintf(out, "\n");
 }
 
+// How far the either-way rule of thumb is met: its e-folds against drag's, or no drag at all.
+std::string eitherWayMargin(const tasks::Analysis& a) {
+  if (!(a.drag > 0)) return "with no drag to slow the spin";
+  char text[160];
+  std::snprintf(text, sizeof text,
+                "%.1f e-folds while drag slows the spin by e, where the rule of thumb asks %g",
+                a.either_way_efolds, sim::kEitherWayEFolds);
+  return text;
+}
+
+// A body within half as much again of the rule's count: a trial's body at 4.x e-folds did not
+// reverse the preferred way in 60 s (the count is a rule of thumb, docs/physics.md P8.4).
+bool nearTheLine(const tasks::Analysis& a) {
+  return a.drag > 0 && a.either_way_efolds < 1.5 * sim::kEitherWayEFolds;
+}
+
 void printPreferred(std::FILE* out, const tasks::Analysis& a) {
   if (!a.rest.stable) {
     std::fprintf(out,
@@ -100,12 +116,12 @@ void printPreferred(std::FILE* out, const tasks::Analysis& a) {
                  std::string(rb::nameOf(a.preferred)).c_str(),
                  a.preferred == sim::Direction::Ccw ? "counter-clockwise" : "clockwise");
     if (a.grows_either_way)
-      std::fprintf(
-          out,
-          "either way       spun %s too the rocking grows (at %.4g /s at %g rad/s, %s): "
-          "it is predicted to reverse that way as well, later (docs/physics.md P8.4)\n",
-          std::string(rb::nameOf(a.preferred)).c_str(), a.preferred_growth, std::abs(a.spin),
-          a.drag > 0 ? "faster than drag slows the spin" : "with no drag to slow the spin");
+      std::fprintf(out,
+                   "either way       spun %s too the rocking grows (at %.4g /s at %g rad/s, %s): "
+                   "it is predicted to reverse that way as well, later (docs/physics.md P8.4)%s\n",
+                   std::string(rb::nameOf(a.preferred)).c_str(), a.preferred_growth,
+                   std::abs(a.spin), eitherWayMargin(a).c_str(),
+                   nearTheLine(a) ? "; near the rule's line: run it to see" : "");
   }
 }
 

@@ -405,7 +405,7 @@ CLAIMS = [
     ),
     (
         "docs/physics.md",
-        "The both-ways scene spun −8 rad/s grows at «0.67» /s, 11.9 e-folds: it reverses at «5.35» s",
+        "The both-ways scene spun −8 rad/s grows at «0.67» /s, 12.2 e-folds: it reverses at «5.35» s",
         [
             lambda r: max(r.analyze("both-ways", -8)["growth_rates"].values()),
             lambda r: reversal(r.simulate("both-ways")),

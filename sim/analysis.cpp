@@ -175,17 +175,21 @@ Direction preferredDirection(const GrowthEachWay& growth) {
   return ccw_fastest < cw_fastest ? Direction::Ccw : Direction::Cw;
 }
 
+double eFoldsAgainstDrag(const Model& model, const GrowthEachWay& growth) {
+  const double drag = model.contact.air_drag;
+  if (drag <= 0) return std::numeric_limits<double>::infinity();
+  // Drag alone slows the spin by e in C/σ.
+  return std::min(growth.ccw, growth.cw) * model.body->inertia(2, 2) / drag;
+}
+
 bool growsEitherWay(const Model& model, const GrowthEachWay& growth) {
   const auto [ccw_fastest, cw_fastest, zero] = growth;
   if (!(ccw_fastest > zero && cw_fastest > zero)) return false;
   // Growing is not enough: the rocking must grow from a small tilt to tens of degrees (from
   // 0.5° to 30°: ln 60, about 4 e-folds) before drag has slowed the spin to where it no longer
-  // grows. Drag alone slows it by e in C/σ; the default body spun +5 rad/s grows 2.7 e-folds in
-  // that time and never reverses (60 s), the both-ways scene's 11.9 and does (5.35 s).
-  constexpr double kEFolds = 4;
-  const double drag = model.contact.air_drag;
-  return drag <= 0 ||
-         std::min(ccw_fastest, cw_fastest) * model.body->inertia(2, 2) / drag >= kEFolds;
+  // grows. The default body spun +5 rad/s grows 2.7 e-folds in that time and never reverses
+  // (60 s), the both-ways scene's 12.2 and does (5.35 s).
+  return eFoldsAgainstDrag(model, growth) >= kEitherWayEFolds;
 }
 
 namespace {

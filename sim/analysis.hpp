@@ -136,9 +136,15 @@ inline Direction preferredDirection(const Model& model, double spin_magnitude) {
   return preferredDirection(growthEachWay(model, spin_magnitude));
 }
 
+/// The e-folds the slower of the two directions' growths makes in the time drag alone takes to
+/// slow the spin by e (C/σ); infinite without drag.
+double eFoldsAgainstDrag(const Model& model, const GrowthEachWay& growth);
+/// The rule of thumb's count (docs/physics.md P8.4): 0.5° to 30° of rocking, ln 60.
+inline constexpr double kEitherWayEFolds = 4;
+
 /// Whether the rocking grows spun either way at |spin| (a body with deep dents), the slower
-/// growth 4 e-folds or more in the time drag alone takes to slow the spin by e: then it is
-/// predicted to reverse spun either way, the preferred way later (docs/physics.md P8.4).
+/// growth kEitherWayEFolds or more in the time drag alone takes to slow the spin by e: then it
+/// is predicted to reverse spun either way, the preferred way later (docs/physics.md P8.4).
 bool growsEitherWay(const Model& model, const GrowthEachWay& growth);
 inline bool growsEitherWay(const Model& model, double spin_magnitude) {
   return growsEitherWay(model, growthEachWay(model, spin_magnitude));

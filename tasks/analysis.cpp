@@ -236,6 +236,7 @@ void analyzeTheory(const sim::Model& model, Analysis& a) {
   const sim::GrowthEachWay each_way = sim::growthEachWay(model, a.spin);
   a.preferred = sim::preferredDirection(each_way);
   a.grows_either_way = sim::growsEitherWay(model, each_way);
+  a.either_way_efolds = sim::eFoldsAgainstDrag(model, each_way);
   a.preferred_growth = a.preferred == sim::Direction::Ccw  ? each_way.ccw
                        : a.preferred == sim::Direction::Cw ? each_way.cw
                                                            : 0;

@@ -2343,16 +2343,38 @@ TEST(Cli, ReportSaysABodyThatReversesEitherWayDoesSoAsPredicted) {
   ASSERT_EQ(said.size(), 2u);
   EXPECT_NE(said[1].find("Spun the <b>preferred</b> way: the theory predicts its rocking grows "
                          "more slowly this way, "
-                         "but grows: it reverses this way too, later"),
+                         "but grows: it is predicted to reverse this way too, later"),
             std::string::npos)
       << said[1];
   EXPECT_NE(said[1].find("reversed at 5.35"), std::string::npos) << said[1];
   EXPECT_NE(said[1].find(", as the theory predicts for this body"), std::string::npos) << said[1];
   EXPECT_EQ(said[1].find("although"), std::string::npos) << said[1];
   EXPECT_NE(readText(dir / "index.html")
-                .find("spun clockwise too its rocking grows: <b>it reverses either way</b>, "
-                      "clockwise later"),
+                .find("spun clockwise too its rocking grows: <b>predicted to reverse either "
+                      "way</b>, clockwise later"),
             std::string::npos);
+}
+
+// analyze's `either way` line gives its rule of thumb's count (docs/physics.md P8.4): the
+// both-ways body is far over the line and reverses spun its preferred way; a teacher's body with
+// shallower dents (scale 0.36 at (−1.2, 3.8) cm) was told the same, counts about 4, and does not
+// reverse in 60 s: the line says it is near the rule's line, to run it.
+TEST(Cli, AnalyzeSaysHowFarTheEitherWayRuleIsMet) {
+  const Result far = rattleback("analyze " + scene("both-ways"));
+  ASSERT_EQ(far.status, 0) << far.err;
+  EXPECT_NE(far.out.find("e-folds while drag slows the spin by e, where the rule of thumb asks 4"),
+            std::string::npos)
+      << far.out;
+  EXPECT_EQ(far.out.find("near the rule's line"), std::string::npos) << far.out;
+  const std::string near =
+      " --set \"body.dents={scale: 0.36, at: [-1.2, 3.8], inset: 0.1}\" --spin -8";
+  const Result told = rattleback("analyze " + scene("rattleback") + near);
+  ASSERT_EQ(told.status, 0) << told.err;
+  EXPECT_NE(told.out.find("either way       spun cw too"), std::string::npos) << told.out;
+  EXPECT_NE(told.out.find("; near the rule's line: run it to see"), std::string::npos) << told.out;
+  const Result ran = rattleback("simulate " + scene("rattleback") + near + " --duration 60 -o -");
+  ASSERT_EQ(ran.status, 0) << ran.err;
+  EXPECT_NE(ran.err.find("first reversal  none in 60 s"), std::string::npos) << ran.err;
 }
 
 // What a preferred spin's caption says of a run that reversed: that it agrees with the theory
@@ -2369,6 +2391,16 @@ TEST(ReportCaptions, APreferredSpinThatReversesIsSaidToAgreeOrNot) {
   EXPECT_NE(surprise.find("<b>it reversed although the theory prefers this direction</b>"),
             std::string::npos)
       << surprise;
+  // Predicted either way, and the preferred spin did not reverse: said plainly (a body at 4.0
+  // e-folds against drag, on the rule's line, did not in 60 s).
+  tasks::report::RunRecord kept = run;
+  kept.reversals_s.clear();
+  const std::string none = tasks::report::measuredAs(kept, false, true, true);
+  EXPECT_NE(none.find("<b>no reversal this way, although the theory's rule of thumb predicts one"),
+            std::string::npos)
+      << none;
+  EXPECT_EQ(tasks::report::measuredAs(kept, false, true, false).find("although"),
+            std::string::npos);
   // The reversing way, reversed: nothing to remark on, either way.
   EXPECT_EQ(tasks::report::measuredAs(run, false, false, true).find("theory"), std::string::npos);
 }

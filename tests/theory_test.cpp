@@ -718,7 +718,7 @@ TEST(Theory, AVideoNotInRealTimeSaysItsSpeedInItsTitle) {
 
 // P8.4: where the rocking grows spun the preferred way too, fast enough against drag, the body
 // is predicted to reverse that way as well, and runs agree. The both-ways scene spun its
-// preferred way (−8 rad/s, clockwise) grows at 0.67 /s, 11.9 e-folds in the time drag slows its
+// preferred way (−8 rad/s, clockwise) grows at 0.67 /s, 12.2 e-folds in the time drag slows its
 // spin by e: predicted, and it reverses (5.35 s, docs/scenes.md). The default body spun its
 // preferred way (+5 rad/s) grows too, at 0.16 /s, but only 2.7 e-folds in that time: not
 // predicted, and it does not reverse in 30 s. Without drag it is predicted (nothing slows the

@@ -148,6 +148,10 @@ std::string measuredAs(const std::optional<RunRecord>& run, bool ccw, std::optio
   const bool reversed = !run->reversals_s.empty() || run->first_reversal_s.has_value();
   if (preferred && *preferred && reversed && either_way)
     text += ", as the theory predicts for this body (its rocking grows either way)";
+  else if (preferred && *preferred && !reversed && either_way)
+    text +=
+        ": <b>no reversal this way, although the theory's rule of thumb predicts one</b> (its "
+        "rocking grows either way, but drag may stop it first; a longer run may show it)";
   else if (preferred && *preferred && reversed)
     text +=
         ": <b>it reversed although the theory prefers this direction</b> (its rocking grew "
@@ -164,7 +168,8 @@ std::string predictedOf(const nlohmann::json& t) {
   const std::string way = preferredWords(t);
   out << "preferred direction: <b>" << way << "</b>"
       << (field(t, "grows_either_way") == true
-              ? "; spun " + way + " too its rocking grows: <b>it reverses either way</b>, " + way +
+              ? "; spun " + way +
+                    " too its rocking grows: <b>predicted to reverse either way</b>, " + way +
                     " later"
               : "")
       << "<br>growth rates at n = " << number(field(t, "spin"), "%+g") << " rad/s: roll "

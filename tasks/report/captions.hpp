@@ -20,8 +20,8 @@ inline constexpr const char* kPreferredWay =
 /// The same where the theory finds the rocking grows either way (analyze's `grows_either_way`,
 /// docs/physics.md P8.4): a reversal this way too is the prediction, not a surprise.
 inline constexpr const char* kPreferredWayEitherWay =
-    "the theory predicts its rocking grows more slowly this way, but grows: it reverses this way "
-    "too, later";
+    "the theory predicts its rocking grows more slowly this way, but grows: it is predicted to "
+    "reverse this way too, later";
 
 /// "counter-clockwise", "clockwise" or "no spin".
 std::string spinWords(double spin);
@@ -38,7 +38,8 @@ std::string measuredOf(const RunRecord& run);
 /// direction, a run that disagrees with the caption's prediction is said to, plainly: reversed
 /// although preferred (a preferred spin's rocking grows more slowly, and may still grow), or no
 /// reversal the reversing way within the run. `either_way`: the theory predicts a reversal
-/// the preferred way too, so one there agrees with it.
+/// the preferred way too, so one there agrees with it, and none there is said to disagree (the
+/// prediction is a rule of thumb: docs/physics.md P8.4).
 std::string measuredAs(const std::optional<RunRecord>& run, bool ccw,
                        std::optional<bool> preferred = std::nullopt, bool either_way = false);
 
