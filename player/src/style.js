@@ -53,7 +53,7 @@ export const STYLE = `
 .rbp.rbp-present .rbp-title{font-size:max(26px,3.6vh)}
 .rbp.rbp-present .rbp-read{font-size:max(26px,3.6vh)}
 .rbp.rbp-present .rbp-help{display:none}
-.rbp.rbp-present .rbp-plotbox{position:fixed;right:calc(24px + (100vw - 24px - min(100vw - 24px, (100vh - 110px) * 16 / 9)) / 2);bottom:calc(100vh - min(100vw - 24px, (100vh - 110px) * 16 / 9) * 9 / 16);margin:0;transform:scale(1.3);transform-origin:100% 100%;opacity:.94}
+.rbp.rbp-present .rbp-plotbox{position:fixed;right:calc(24px + (100vw - 24px - min(100vw - 24px, (100vh - 110px) * 16 / 9)) / 2);bottom:calc(100vh - min(100vw - 24px, (100vh - 110px) * 16 / 9) * 9 / 16);margin:0;transform-origin:100% 100%;opacity:.94}
 @media (min-height:900px){.rbp.rbp-present .rbp-plotbox{transform:scale(1.7)}}
 .rbp.rbp-present .rbp-reversal-label{font-size:max(24px,3.4vh);top:16px;right:16px}
 .rbp-missing{padding:10px 12px;border:1px dashed #c9a0a0;border-radius:4px;color:#7a2e2e;background:#fbf4f4;font:14px system-ui,sans-serif;margin:8px 0}
