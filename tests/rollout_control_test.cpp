@@ -11,17 +11,6 @@ using namespace testing_support;
 
 namespace {
 
-// The default body rolling, spun as kRolling, with fixed steps or adaptive ones.
-sim::Model rolling(bool adaptive) {
-  sim::SceneSpec spec = parse(kRolling);
-  if (adaptive) {
-    spec.simulation.integrator = "dopri5";
-    spec.simulation.dt = sim::kUnset;
-    spec.simulation.tolerance = 1e-8;
-  }
-  return build(spec);
-}
-
 void expectSameState(const sim::State& a, const sim::State& b) {
   EXPECT_EQ(a.t, b.t);
   EXPECT_EQ(a.step, b.step);
@@ -37,7 +26,7 @@ void expectSameState(const sim::State& a, const sim::State& b) {
 // adaptive ones, and the same reversal.
 TEST(RolloutControl, SteppingOneAtATimeTakesTheStepsOfAdvanceTo) {
   for (const bool adaptive : {false, true}) {
-    const sim::Model model = rolling(adaptive);
+    const sim::Model model = rollingModel(adaptive);
     sim::Rollout whole(model), stepped(model);
     ASSERT_TRUE(whole.advanceTo(2.9));
     for (std::int64_t n = 1; stepped.current().t < whole.current().t; ++n) {
@@ -56,7 +45,7 @@ TEST(RolloutControl, SteppingOneAtATimeTakesTheStepsOfAdvanceTo) {
 // touches the other.
 TEST(RolloutControl, ACopyGoesOnAloneFromWhereItWas) {
   for (const bool adaptive : {false, true}) {
-    sim::Rollout original(rolling(adaptive));
+    sim::Rollout original(rollingModel(adaptive));
     ASSERT_TRUE(original.advanceTo(1.0));
     sim::Rollout copy(original);
     const sim::State at_copy = copy.current();
@@ -78,7 +67,7 @@ TEST(RolloutControl, ACopyGoesOnAloneFromWhereItWas) {
 // floor (z_cm = −r_z) and not sliding (v = −ω × r), whatever height and velocity it had; the
 // time and step stay the run's. A run stopped by a stop request takes no more steps.
 TEST(RolloutControl, AStateSetUnderRollingIsPutBackOnTheConstraint) {
-  const sim::Model model = rolling(false);
+  const sim::Model model = rollingModel(false);
   sim::Rollout run(model);
   ASSERT_TRUE(run.advanceTo(0.5));
   sim::State s = run.current();

@@ -11,17 +11,6 @@ using namespace testing_support;
 
 namespace {
 
-// The default body rolling, spun as kRolling, with fixed steps (rk4, 1 ms) or adaptive ones.
-sim::Model rolling(bool adaptive) {
-  sim::SceneSpec spec = parse(kRolling);
-  if (adaptive) {
-    spec.simulation.integrator = "dopri5";
-    spec.simulation.dt = sim::kUnset;
-    spec.simulation.tolerance = 1e-8;
-  }
-  return build(spec);
-}
-
 // The same motion to the bit: time, position, velocity, orientation and angular momentum (the
 // step index aside).
 void expectSameMotion(const sim::State& a, const sim::State& b) {
@@ -38,7 +27,7 @@ void expectSameMotion(const sim::State& a, const sim::State& b) {
 // sim::step leave it, at t = n·dt exactly (an integer times the step, never a sum of steps), and
 // each step starts where the one before ended.
 TEST(Stepping, FixedStepsAreTheMethodsOwnAndEndAtWholeMultiplesOfTheStep) {
-  const sim::Model model = rolling(false);
+  const sim::Model model = rollingModel(false);
   sim::State by_hand = sim::initialState(model);
   sim::Stepping steps(model, by_hand);
   for (std::int64_t n = 1; n <= 300; ++n) {
@@ -58,7 +47,7 @@ TEST(Stepping, FixedStepsAreTheMethodsOwnAndEndAtWholeMultiplesOfTheStep) {
 // step's ends and the same counts, and the original's steps do not move it.
 TEST(Stepping, ACopyGoesOnAloneTakingTheSameSteps) {
   for (const bool adaptive : {false, true}) {
-    const sim::Model model = rolling(adaptive);
+    const sim::Model model = rollingModel(adaptive);
     sim::Stepping original(model, sim::initialState(model));
     for (int n = 0; n < 50; ++n) original.step(model);
     sim::Stepping copy(original);
@@ -78,7 +67,7 @@ TEST(Stepping, ACopyGoesOnAloneTakingTheSameSteps) {
 // the steps a new stepper takes from that state, to the bit, and the counts go on from the old
 // stepper's (a run's evaluations and rejected steps never go back).
 TEST(Stepping, ARestartStartsTheStepperAfreshAndKeepsItsCounts) {
-  const sim::Model model = rolling(true);
+  const sim::Model model = rollingModel(true);
   sim::Stepping steps(model, sim::initialState(model));
   for (int n = 0; n < 40; ++n) steps.step(model);
   const std::int64_t evaluations = steps.evaluations(), rejected = steps.rejected();

@@ -95,6 +95,17 @@ inline sim::Model build(const sim::SceneSpec& spec) {
   return std::move(compiled).value();
 }
 
+/// kRolling's body and spin, with fixed steps (rk4, 1 ms) or adaptive ones (dopri5 at 1e-8).
+inline sim::Model rollingModel(bool adaptive) {
+  sim::SceneSpec spec = parse(kRolling);
+  if (adaptive) {
+    spec.simulation.integrator = "dopri5";
+    spec.simulation.dt = sim::kUnset;
+    spec.simulation.tolerance = 1e-8;
+  }
+  return build(spec);
+}
+
 /// Runs `model` from `start` to its end, handing `each` a sample every `period` seconds (at
 /// exact times k·period, and the end).
 template <typename Each>

@@ -21,6 +21,7 @@ export const presentMethods = {
     }
     this.redrawAll = true;
     this.dirty = true;
+    this.moveCursor(); // the plot drawn again where present mode scales it up (plot.js)
   },
 
   // Full screen left (Esc, the browser's own way out): present mode ends with it.

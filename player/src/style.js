@@ -6,6 +6,10 @@
 // opaque box and, the canvas being drawn upside down, left out the box's mirror image instead,
 // a blank box at the picture's bottom (the reversal label's, in present mode at 1920 × 1080).
 
+// Screens this high or higher show present mode's plot scaled up (at 1280 × 720 a larger plot
+// hid the spin cue's arrowhead); plot.js draws it finer on them.
+export const PRESENT_PLOT_SCALED = '(min-height:900px)';
+
 export const STYLE = `
 .rbp{display:flex;flex-wrap:wrap;gap:10px;align-items:flex-start;font:14px/1.35 system-ui,-apple-system,"Segoe UI",sans-serif;color:#1e1e1e;outline:none;margin:8px 0}
 .rbp:focus-visible{box-shadow:0 0 0 2px #6b8fd6;border-radius:4px}
@@ -54,7 +58,7 @@ export const STYLE = `
 .rbp.rbp-present .rbp-read{font-size:max(26px,3.6vh)}
 .rbp.rbp-present .rbp-help{display:none}
 .rbp.rbp-present .rbp-plotbox{position:fixed;right:calc(24px + (100vw - 24px - min(100vw - 24px, (100vh - 110px) * 16 / 9)) / 2);bottom:calc(100vh - min(100vw - 24px, (100vh - 110px) * 16 / 9) * 9 / 16);margin:0;transform-origin:100% 100%;opacity:.94}
-@media (min-height:900px){.rbp.rbp-present .rbp-plotbox{transform:scale(1.7)}}
+@media ${PRESENT_PLOT_SCALED}{.rbp.rbp-present .rbp-plotbox{transform:scale(1.7)}}
 .rbp.rbp-present .rbp-reversal-label{font-size:max(24px,3.4vh);top:16px;right:16px}
 .rbp-missing{padding:10px 12px;border:1px dashed #c9a0a0;border-radius:4px;color:#7a2e2e;background:#fbf4f4;font:14px system-ui,sans-serif;margin:8px 0}
 `;

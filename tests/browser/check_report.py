@@ -132,6 +132,7 @@ def classroom(driver, size, failures, screenshots):
                 read: box(root.querySelector('.rbp-spin')),
                 side: box(root.querySelector('.rbp-side')),
                 plot: box(root.querySelector('.rbp-plotbox')),
+                plotPixels: root.querySelector('.rbp-plot').width / (window.devicePixelRatio || 1),
                 font: parseFloat(getComputedStyle(root.querySelector('.rbp-spin')).fontSize),
                 title: parseFloat(getComputedStyle(root.querySelector('.rbp-title')).fontSize),
                 vw: document.documentElement.clientWidth, vh: document.documentElement.clientHeight};""",
@@ -179,6 +180,14 @@ def classroom(driver, size, failures, screenshots):
                 f"{where}: in present mode the n(t) plot {plot} is not over the picture "
                 f"{got['stage']}, its 272 px (1.5 times from 900 px high) and clear of the "
                 f"read-outs {side}"
+            )
+        # Drawn at twice the pixel ratio only where it is scaled up: below, the finer drawing
+        # would be work for nothing.
+        finer = 2 if vh >= 900 else 1
+        if abs(got["plotPixels"] - finer * 270) > 1:
+            failures.append(
+                f"{where}: in present mode the n(t) plot is drawn {got['plotPixels']} px wide "
+                f"per CSS pixel ratio, not {finer * 270} at {vw}x{vh}"
             )
         if not inside(got["read"]) or got["font"] < 26:
             failures.append(
