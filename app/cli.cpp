@@ -124,8 +124,10 @@ void backendOption(CLI::App& c, std::string& backend, std::string& from, const c
   });
 }
 
-// The video's options, which a still takes too (they change a frame's inset).
-void videoOptions(CLI::App& c, Overrides& o) {
+// The video's options, which a still takes too (they change a frame's inset). A still takes
+// --fps and --playback as well, so that one line of options serves `render` and `still`, but
+// does not list them: they change nothing in a single frame.
+void videoOptions(CLI::App& c, Overrides& o, bool video) {
   keyOption(c, o, tasks::SceneOption::View, names<render::View>());
   keyOption(c, o, tasks::SceneOption::Surface,
             names<render::Surface>() +
@@ -134,9 +136,13 @@ void videoOptions(CLI::App& c, Overrides& o) {
                 "video.surface, or points)");
   keyOption(c, o, tasks::SceneOption::Size);
   keyOption(c, o, tasks::SceneOption::Frame);
-  keyOption(c, o, tasks::SceneOption::Fps);
+  CLI::Option* fps = keyOption(c, o, tasks::SceneOption::Fps);
   keyOption(c, o, tasks::SceneOption::Duration, "Simulated time, s (the inset's time axis)");
-  keyOption(c, o, tasks::SceneOption::Playback);
+  CLI::Option* playback = keyOption(c, o, tasks::SceneOption::Playback);
+  if (!video) {
+    fps->group("");
+    playback->group("");
+  }
   keyOption(c, o, tasks::SceneOption::Spin);
   stepOptions(c, o);
 }
@@ -146,7 +152,7 @@ void defineRender(CLI::App& c, Cli& cli) {
   sceneOption(c, r.scene);
   c.add_option("-o,--output", r.output,
                "Video file (default out/<scene>.mp4; with --both the base name)");
-  videoOptions(c, r.overrides);
+  videoOptions(c, r.overrides, true);
   setOption(c, cli.render_set);
   c.add_option("--crf", r.crf, "x264 quality 1–51, lower is better (default 20)");
   c.add_option("--preset", r.preset, media::presetNames() + " (x264's; default veryfast)");
@@ -170,7 +176,7 @@ void defineStill(CLI::App& c, Cli& cli) {
                "Simulated time of the frame, s (default 0), or " + rb::choices<tasks::NamedTime>() +
                    ": the first reversal the rule counts (docs/physics.md P7), or the run's end")
       ->type_name("S");
-  videoOptions(c, st.overrides);
+  videoOptions(c, st.overrides, false);
   setOption(c, cli.still_set);
   c.add_flag("--no-readouts", st.no_readouts, "No time, spin, inset plot or floor scale");
   c.add_flag("--transparent", st.transparent,

@@ -3083,15 +3083,16 @@ TEST(Cli, AStillIsAPosterOnlyWhenTheManifestSaysItIsOne) {
   EXPECT_NE(readText(bare / "index.html").find("poster=\"toy-oblique.png\""), std::string::npos);
 }
 
-// Each still is captioned with what it shows, from the manifest (its view, time and spin, the
-// minus sign U+2212), and has that as its alt text: a new user's page had bare thumbnails with
-// alt="lesson-oblique.png". A still the manifest does not list is captioned with its name; a
-// plot says what it plots.
+// Each still is captioned with what it shows, from the manifest (its view, its time to the
+// hundredth as the picture's read-out, its spin, the minus sign U+2212), and has that as its alt
+// text: a new user's page had bare thumbnails with alt="lesson-oblique.png". A still the manifest
+// does not list is captioned with its name; a plot says what it plots.
 TEST(Report, StillsAndPlotsHaveCaptions) {
   const fs::path dir = emptyDir("stills");
   const std::string s = scene("rattleback");
   const std::string still = (dir / "lesson-oblique.png").string();
-  ASSERT_EQ(rattleback("still " + s + " --t 1 --spin -4 --size 64x48 -q -o " + still).status, 0);
+  ASSERT_EQ(rattleback("still " + s + " --t 1.2345 --spin -4 --size 64x48 -q -o " + still).status,
+            0);
   fs::copy_file(still, dir / "toy-above.png");  // listed by no manifest
   ASSERT_EQ(rattleback("simulate " + s + " --duration 0.2 -q -o " + (dir / "lesson.csv").string() +
                        " --plot " + dir.string())
@@ -3099,7 +3100,7 @@ TEST(Report, StillsAndPlotsHaveCaptions) {
             0);
   ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
   const std::string html = readText(dir / "index.html");
-  const std::string shown = "oblique view, t = 1 s, spun \u22124 rad/s";
+  const std::string shown = "oblique view, t = 1.23 s, spun \u22124 rad/s";
   EXPECT_NE(html.find("alt=\"" + shown + "\""), std::string::npos) << html;
   EXPECT_NE(html.find("<figcaption>" + shown + " (<a href=\"lesson-oblique.png\">"),
             std::string::npos)

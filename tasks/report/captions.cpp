@@ -85,6 +85,20 @@ std::string shown(double value) {
   return text[0] == '-' ? "\u2212" + std::string(text + 1) : text;
 }
 
+// A still's time as its picture's read-out gives it, to the hundredth (a still at the reversal
+// was captioned "t = 1.21301 s" beside a picture saying 1.21 s), less trailing zeros.
+std::string shownTime(double t) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", t);
+  std::string out = text;
+  if (out.find('.') != std::string::npos) {
+    out.erase(out.find_last_not_of('0') + 1);
+    if (out.back() == '.') out.pop_back();
+  }
+  if (out == "-0") out = "0";
+  return out[0] == '-' ? "\u2212" + out.substr(1) : out;
+}
+
 }  // namespace
 
 std::string spinWords(double spin) {
@@ -187,7 +201,7 @@ std::string predictedOf(const nlohmann::json& t) {
 
 std::string stillCaption(const OutputEntry& e) {
   std::string caption = (e.role.empty() ? std::string("a") : e.role) + " view";
-  if (e.t) caption += ", t = " + shown(*e.t) + " s";
+  if (e.t) caption += ", t = " + shownTime(*e.t) + " s";
   if (e.spin) caption += *e.spin == 0 ? ", not spun" : ", spun " + shown(*e.spin) + " rad/s";
   return caption;
 }
