@@ -119,7 +119,9 @@ int renderCommand(const RenderArgs& args) {
                        {},
                        tasks::madeFrom(loaded->scene),
                        tasks::listedFrame(loaded->scene, loaded->model),
-                       loaded->scene.video.view});
+                       loaded->scene.video.view,
+                       f.spin ? std::optional<double>(loaded->model.duration) : std::nullopt,
+                       f.first_reversal_s});
   record(entries);
   if (!args.quiet) printVideos(result);
   return kOk;

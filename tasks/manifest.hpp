@@ -45,6 +45,12 @@ struct OutputEntry {
   /// A video's view (oblique, above, …): a still is its poster only when drawn from the same
   /// view. "" when not known (a manifest written before videos had it).
   std::string view = {};
+  /// A video's run (one spun way; not a side-by-side): how long it ran, s, and its first
+  /// reversal the rule counts, none where it did not reverse. The report captions the video
+  /// with them where no telemetry of that spin was kept. Unknown (none for both) in a manifest
+  /// written before videos had them.
+  std::optional<double> simulated_s = {};
+  std::optional<double> first_reversal_s = {};
 };
 
 inline constexpr const char* kManifestName = "rattleback-manifest.json";

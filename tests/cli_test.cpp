@@ -2322,6 +2322,36 @@ TEST(Cli, ReportCaptionsSayWhenAPreferredSpinReversedToo) {
   EXPECT_NE(both[1].find("reversed at 5.77"), std::string::npos) << both[1];
 }
 
+// A video captions itself from its own run (the manifest keeps each video's duration and first
+// reversal) where no telemetry spun its way was kept: a teacher who simulated one spin only
+// found the other video's caption without its reversal. The teacher's body (above) spun +5
+// rad/s reverses at 0.828 s; spun −5 it does not within 1 s. Telemetry, where kept, still
+// captions its video (the test above).
+TEST(Cli, ReportCaptionsAVideoFromItsOwnRunWithoutTelemetry) {
+  const fs::path dir = emptyDir("page-video-run");
+  const std::string dents = " --set \"body.dents={scale: 0.6, at: [-0.73, 4.50], inset: 0.1}\"";
+  const Result theory = rattleback("analyze " + scene("rattleback") + dents + " --json");
+  ASSERT_EQ(theory.status, 0) << theory.err;
+  std::ofstream(dir / "rattleback-analysis.json") << theory.out;
+  const Result made =
+      rattleback("render " + scene("rattleback") + dents +
+                 " --both --duration 1 --size 64x48 -q -o " + (dir / "rattleback.mp4").string());
+  ASSERT_EQ(made.status, 0) << made.err;
+  const nlohmann::json manifest =
+      nlohmann::json::parse(std::ifstream(dir / "rattleback-manifest.json"));
+  for (const nlohmann::json& e : manifest["outputs"])
+    if (e["role"] == "both") EXPECT_FALSE(e.contains("simulated_s")) << e;  // two runs, no one
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  const std::vector<std::string> said = captions((dir / "index.html").string());
+  ASSERT_EQ(said.size(), 2u);
+  EXPECT_NE(said[0].find("Spun the <b>reversing</b> way"), std::string::npos) << said[0];
+  EXPECT_NE(said[0].find("in this video (+5 rad/s): <b>first reversal at 0.828 s</b>"),
+            std::string::npos)
+      << said[0];
+  EXPECT_NE(said[1].find("in this video (-5 rad/s): no reversal in 1 s"), std::string::npos)
+      << said[1];
+}
+
 // The shipped both-ways body (scenes/both-ways.yaml) prefers clockwise, but the theory finds its
 // rocking grows spun either way (analyze's `grows_either_way`, docs/physics.md P8.4): spun
 // −8 rad/s, the preferred way, it reverses at 5.35 s. The page says both that the theory

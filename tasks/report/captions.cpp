@@ -157,8 +157,13 @@ std::string measuredAs(const std::optional<RunRecord>& run, bool ccw, std::optio
   if (!run) return "";
   const Number& spin = run->initial_spin;
   if (!spin || *spin == 0 || (*spin > 0) != ccw) return "";
-  std::string text = "<br>measured (<code>simulate</code>, " + number(spin, "%+.3g") +
-                     " rad/s): " + reversalOf(*run);
+  const bool video = run->command == "render";
+  std::string text =
+      (video ? "<br>in this video (" : "<br>measured (<code>simulate</code>, ") +
+      number(spin, "%+.3g") + " rad/s): " +
+      (video && run->first_reversal_s
+           ? "<b>first reversal at " + number(run->first_reversal_s, "%.3f") + " s</b>"
+           : reversalOf(*run));
   const bool reversed = !run->reversals_s.empty() || run->first_reversal_s.has_value();
   if (preferred && *preferred && reversed && either_way)
     text += ", as the theory predicts for this body (its rocking grows either way)";

@@ -34,12 +34,13 @@ std::string reversalOf(const RunRecord& run);
 std::string measuredOf(const RunRecord& run);
 
 /// What simulate measured, when its run was spun counter-clockwise (`ccw`) or clockwise as a
-/// video was; empty otherwise. Where `preferred` says whether that is the theory's preferred
-/// direction, a run that disagrees with the caption's prediction is said to, plainly: reversed
-/// although preferred (a preferred spin's rocking grows more slowly, and may still grow), or no
-/// reversal the reversing way within the run. `either_way`: the theory predicts a reversal
-/// the preferred way too, so one there agrees with it, and none there is said to disagree (the
-/// prediction is a rule of thumb: docs/physics.md P8.4).
+/// video was; empty otherwise. A run whose command is "render" is the video's own, as the
+/// manifest lists it (its first reversal only), and is said to be. Where `preferred` says whether
+/// that is the theory's preferred direction, a run that disagrees with the caption's prediction is
+/// said to, plainly: reversed although preferred (a preferred spin's rocking grows more slowly, and
+/// may still grow), or no reversal the reversing way within the run. `either_way`: the theory
+/// predicts a reversal the preferred way too, so one there agrees with it, and none there is said
+/// to disagree (the prediction is a rule of thumb: docs/physics.md P8.4).
 std::string measuredAs(const std::optional<RunRecord>& run, bool ccw,
                        std::optional<bool> preferred = std::nullopt, bool either_way = false);
 

@@ -80,6 +80,14 @@ std::optional<std::string> slotOf(const OutputEntry& e,
 void noteListed(const OutputEntry& e, Folder& folder) {
   if (e.kind == OutputKind::Still) folder.scenes[e.scene].captions[e.file] = stillCaption(e);
   if (e.kind == OutputKind::Video && e.spin) folder.scenes[e.scene].video_spins[e.file] = *e.spin;
+  if (e.kind == OutputKind::Video && e.spin && e.simulated_s) {
+    RunRecord run;
+    run.command = "render";
+    run.initial_spin = e.spin;
+    run.simulated_s = e.simulated_s;
+    run.first_reversal_s = e.first_reversal_s;
+    folder.scenes[e.scene].video_runs[e.file] = run;
+  }
   if (!e.made_from.empty()) folder.scenes[e.scene].made_from[e.file] = e.made_from;
 }
 

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "tasks/report/sidecars.hpp"
+
 namespace tasks::report {
 
 namespace fs = std::filesystem;
@@ -40,6 +42,9 @@ struct SceneFiles {
   std::map<std::string, std::string> made_from;
   /// Each video's spin, rad/s, as the manifest says, where it says.
   std::map<std::string, double> video_spins;
+  /// Each video's own run as the manifest says, where it says (manifest.hpp: simulated_s,
+  /// first_reversal_s): file name → that run, its command "render".
+  std::map<std::string, RunRecord> video_runs;
   bool has(const std::string& suffix) const { return by_suffix.count(suffix) > 0; }
   const std::string& at(const std::string& suffix) const { return by_suffix.at(suffix); }
 };

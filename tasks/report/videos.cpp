@@ -26,6 +26,16 @@ struct Videos {
     return std::nullopt;
   }
 
+  // The run spun `ccw` or not, else the run `file` (a video spun that way) showed as the
+  // manifest lists it: a teacher who kept telemetry of one spin only found the other video's
+  // caption without its reversal.
+  std::optional<RunRecord> runFor(const std::string& file, bool ccw) const {
+    if (auto run = runSpun(ccw)) return run;
+    const auto shown = f.video_runs.find(file);
+    if (shown == f.video_runs.end()) return std::nullopt;
+    return shown->second;
+  }
+
   // A video's poster is its own first frame (NAME-reversed.png for NAME-reversed.mp4, as the
   // main job renders with `still --spin`), when the run left one; otherwise the browser shows
   // the video's first frame once loaded.
@@ -36,11 +46,11 @@ struct Videos {
 
   const char* preferredWay() const { return either_way ? kPreferredWayEitherWay : kPreferredWay; }
 
-  // What the run measured, where it was spun the way (`preferred` or not) a video was.
-  std::string measured(bool preferred) const {
+  // What the run measured, where it was spun the way (`preferred` or not) `file` was.
+  std::string measured(const std::string& file, bool preferred) const {
     if (!ccw_preferred) return "";
     const bool ccw = preferred == *ccw_preferred;
-    return measuredAs(runSpun(ccw), ccw, preferred, either_way);
+    return measuredAs(runFor(file, ccw), ccw, preferred, either_way);
   }
 
   // A video's spin as the manifest lists it: none where it does not (or says 0).
@@ -65,11 +75,11 @@ struct Videos {
     if (f.has("-reversed.mp4"))
       video(f.at("-reversed.mp4"), "-reversed.png",
             "Spun the <b>reversing</b> way" + spun(f.at("-reversed.mp4")) + ": " + kReversingWay +
-                measured(false));
+                measured(f.at("-reversed.mp4"), false));
     if (f.has("-preferred.mp4"))
       video(f.at("-preferred.mp4"), "-preferred.png",
             "Spun the <b>preferred</b> way" + spun(f.at("-preferred.mp4")) + ": " + preferredWay() +
-                measured(true));
+                measured(f.at("-preferred.mp4"), true));
     out << "</div>\n";
   }
 
@@ -81,7 +91,8 @@ struct Videos {
       if (f.has(std::string(suffix) + ".mp4"))
         video(f.at(std::string(suffix) + ".mp4"), std::string(suffix) + ".png",
               std::string("Spun <b>") + (ccw ? "counter-clockwise" : "clockwise") +
-                  "</b>: the theory prefers neither direction" + measuredAs(runSpun(ccw), ccw));
+                  "</b>: the theory prefers neither direction" +
+                  measuredAs(runFor(f.at(std::string(suffix) + ".mp4"), ccw), ccw));
     out << "</div>\n";
   }
 
@@ -96,7 +107,7 @@ struct Videos {
       if (ccw_preferred)
         caption += ": " + std::string(ccw == *ccw_preferred ? preferredWay() : kReversingWay);
       caption += measuredAs(
-          runSpun(ccw), ccw,
+          runFor(f.at(".mp4"), ccw), ccw,
           ccw_preferred ? std::optional<bool>(ccw == *ccw_preferred) : std::nullopt, either_way);
     }
     video(f.at(".mp4"), "-single.png", caption);
