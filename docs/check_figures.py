@@ -121,6 +121,8 @@ def reversal(result):
 # as the page's commands set them.
 MIRRORED = ("body.dents.at=[-0.73, 4.50]",)
 DEEPER = MIRRORED + ("body.dents.scale=0.6",)
+# ... and "A warning that rolling needed more friction": the same body let slip.
+LETS_IT_SLIP = ("contact.model=auto", "contact.stiffness=2.0e4")
 
 
 def status_count(r, name, status):
@@ -401,6 +403,14 @@ CLAIMS = [
         [
             lambda r: r.simulate("both-ways", 8)["reversals_s"][0],
             lambda r: r.simulate("both-ways", 8)["reversals_s"][1],
+        ],
+    ),
+    (
+        "docs/getting-started.md",
+        "(the both-ways body spun −10 rad/s: «4.04» s rolling, «4.19» s letting it slip)",
+        [
+            lambda r: reversal(r.simulate("both-ways", -10)),
+            lambda r: reversal(r.simulate("both-ways", -10, LETS_IT_SLIP)),
         ],
     ),
     (
