@@ -468,6 +468,15 @@ void bindSweep(py::module_& m) {
                                  if (r.status != tasks::RowStatus::Refused) return std::nullopt;
                                return t.rows.front().message;
                              })
+      // The result columns that count (SweepResultColumn::whole), in the table's order.
+      .def_property_readonly(
+          "whole_columns",
+          [](const SweepTable& t) {
+            std::vector<std::string> names;
+            for (const tasks::SweepResultColumn* c : tasks::tableColumns(t.sweep))
+              if (c->whole) names.push_back(c->column.name);
+            return names;
+          })
       .def_property_readonly("keys", [](const SweepTable& t) {
         std::vector<std::string> keys;
         for (const auto& axis : t.sweep.axes) keys.push_back(axis.key);

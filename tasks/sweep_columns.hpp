@@ -66,6 +66,9 @@ struct SweepResultColumn {
   /// In the table of a sweep that lists no columns (forecast_s is only there when asked for:
   /// without `columns:` the table is as it was).
   bool by_default = true;
+  /// A whole number (a count): its value() is one, or NaN where a row has none. Python's
+  /// to_pandas gives it pandas' nullable integers.
+  bool whole = false;
 };
 
 /// The result columns of a table, in its order.

@@ -76,10 +76,15 @@ class SweepTable:
         return len(self._columns["row"])
 
     def to_pandas(self):
-        """The table as a ``pandas.DataFrame`` (needs pandas)."""
+        """The table as a ``pandas.DataFrame`` (needs pandas). A count (``reversals``) is of
+        pandas' nullable integers, ``Int64``: ``<NA>`` where a refused run has none, where the
+        NumPy column, float, has NaN."""
         import pandas as pd
 
-        return pd.DataFrame(self._columns)
+        frame = pd.DataFrame(self._columns)
+        for name in self._table.whole_columns:
+            frame[name] = frame[name].astype("Int64")
+        return frame
 
     @checked
     def to_csv(self, path: Union[str, os.PathLike]) -> None:

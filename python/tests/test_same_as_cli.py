@@ -175,6 +175,20 @@ def test_a_sweep_has_the_command_lines_rows(tmp_path):
     assert len(table.to_pandas()) == 4
 
 
+def test_a_sweeps_count_is_whole_in_pandas(tmp_path):
+    """`reversals` counts: to_pandas gives it pandas' nullable integers, <NA> for a refused
+    run (a student's table showed 1.0 and NaN), where the NumPy column is float with NaN."""
+    pd = pytest.importorskip("pandas")
+    sweep = default_sweep(tmp_path / "s.yaml", ["body.mass: [0.059, -1]"], 3)
+    table = rb.sweep(sweep, jobs=2)
+    frame = table.to_pandas()
+    assert str(frame["reversals"].dtype) == "Int64"
+    assert list(table["status"]) == ["ok", "refused"]
+    assert frame["reversals"][0] == 1 and frame["reversals"].isna().tolist() == [False, True]
+    assert table["reversals"].dtype == np.float64 and np.isnan(table["reversals"][1])
+    assert frame["first_reversal_s"].dtype == np.float64
+
+
 def test_a_sweep_made_in_python_has_the_sweep_files_rows(tmp_path):
     sweep = default_sweep(
         tmp_path / "s.yaml",
