@@ -68,6 +68,11 @@ std::string Renderer::init(const BodyTriangles& triangles) {
   if (!context) return context.error().text();
   context_ = std::move(context).value();
   if (std::string e = font_.load(textPixels(settings_)); !e.empty()) return e;
+  {
+    RenderSettings usual = settings_;
+    usual.text_scale = 1;
+    if (std::string e = corner_font_.load(textPixels(usual)); !e.empty()) return e;
+  }
   title_ = fittedTitle();
   // The time and the spin share a line where it leaves room for the reversal's badge at its
   // right (drawReadouts), else they take a line each. Decided once, from the widest each can
@@ -498,9 +503,9 @@ void Renderer::drawReadouts(const FrameInput& frame, const Camera& camera, Image
     font_.text(out, x, layout.second, spin_text, {30, 30, 30, 255});
   }
   drawSpinCue(frame, camera, out);
-  drawSpinInset(out, font_, frame.history, settings_.duration, settings_.spin_range,
+  drawSpinInset(out, corner_font_, frame.history, settings_.duration, settings_.spin_range,
                 frame.reversals);
-  drawScaleLabel(out, font_, scale_label_);
+  drawScaleLabel(out, corner_font_, scale_label_);
   // The latest reversal at or before this frame, for a while after it: at the top right.
   for (auto it = frame.reversals.rbegin(); it != frame.reversals.rend(); ++it) {
     if (*it > frame.t) continue;

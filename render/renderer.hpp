@@ -105,6 +105,10 @@ class Renderer {
   BodyPoints body_;
   std::unique_ptr<GlContext> context_;
   Overlay font_;
+  /// The bottom corners' text (the inset's title, the floor's scale) at the frame's usual size
+  /// even where the rest is scaled up (--both): scaled, the inset's title left its curve a strip,
+  /// and a taller inset covered the spin cue's arrowhead.
+  Overlay corner_font_;
   /// The spheres with each fragment's depth on their surface, and as discs at their nearest
   /// point (cheaper: depth is tested before shading); drawPoints picks by the spheres' size.
   GLuint points_program_ = 0, flat_points_program_ = 0;
