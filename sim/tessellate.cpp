@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 
@@ -25,8 +26,17 @@ void addCell(std::vector<Face>& faces, int a, int b, int c, int d, bool up) {
   }
 }
 
+// A place on the floor plan as the scene gives lengths: in its own unit (a maker's file in cm
+// was told of a hole at (0.013651, 0.034654) m).
+std::string placeOf(const Eigen::Vector2d& u, double length_unit) {
+  char text[96];
+  std::snprintf(text, sizeof text, "(%.4g, %.4g)", u.x() / length_unit, u.y() / length_unit);
+  return std::string(text) + (length_unit == 1 ? " m" : " in the scene's units");
+}
+
 rb::Result<TriangleMesh> paraboloidMeshAt(const Paraboloid& shape,
-                                          const std::optional<Dents>& dents, int segments) {
+                                          const std::optional<Dents>& dents, int segments,
+                                          double length_unit = 1) {
   // ½ uᵀHu = top + a is the rim; with H = L Lᵀ, u = √(2(top + a)) r L⁻ᵀ(cos θ, sin θ) puts the
   // rim at r = 1 and the apex at r = 0.
   Eigen::Matrix2d h;
@@ -68,9 +78,8 @@ rb::Result<TriangleMesh> paraboloidMeshAt(const Paraboloid& shape,
       const double z = upper(u.x(), u.y());
       if (!(z > shape.bottom(u.x(), u.y())))
         return rb::Error{"body.dents",
-                         "cut through the bottom at (" + std::to_string(u.x()) + ", " +
-                             std::to_string(u.y()) +
-                             ") m, a hole through the body: export draws bodies whose dents lie "
+                         "cut through the bottom at " + placeOf(u, length_unit) +
+                             ", a hole through the body: export draws bodies whose dents lie "
                              "within the top"};
       v.emplace_back(u.x(), u.y(), z);
     }
@@ -118,8 +127,8 @@ double largestExportableScale(const Paraboloid& shape, Dents dents, int segments
 
 // A refusal says how far the dents may go where they are, so that a maker need not guess.
 rb::Result<TriangleMesh> paraboloidMesh(const Paraboloid& shape, const std::optional<Dents>& dents,
-                                        int segments) {
-  rb::Result<TriangleMesh> mesh = paraboloidMeshAt(shape, dents, segments);
+                                        int segments, double length_unit) {
+  rb::Result<TriangleMesh> mesh = paraboloidMeshAt(shape, dents, segments, length_unit);
   if (mesh.ok() || !dents) return mesh;
   const double largest = largestExportableScale(shape, *dents, segments);
   rb::Error error = mesh.error();
@@ -163,13 +172,13 @@ TriangleMesh ellipsoidMesh(const Ellipsoid& shape, int segments) {
 }  // namespace
 
 rb::Result<TriangleMesh> tessellate(const Surface& surface, const std::optional<Dents>& dents,
-                                    int segments) {
+                                    int segments, double length_unit) {
   if (segments < kMinSegments || segments > kMaxSegments)
     return rb::Error{"", "must be " + std::to_string(kMinSegments) + " to " +
                              std::to_string(kMaxSegments) + ", not " + std::to_string(segments)};
   switch (surface.kind) {
     case Surface::Kind::Paraboloid:
-      return paraboloidMesh(surface.paraboloid, dents, segments);
+      return paraboloidMesh(surface.paraboloid, dents, segments, length_unit);
     case Surface::Kind::Ellipsoid:
       return ellipsoidMesh(surface.ellipsoid, segments);
     case Surface::Kind::Mesh:

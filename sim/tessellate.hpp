@@ -25,7 +25,8 @@ inline constexpr int kDefaultSegments = 192;
 ///   Refused when a dent cuts the bottom or the rim (the top is then not one height a column).
 /// - Ellipsoid: `segments` around and segments/2 bands from pole to pole.
 /// A mesh body has its own triangles: the caller exports those (the surface keeps only points).
+/// `length_unit` (m: the scene's units.length) is the unit a refusal gives a place in.
 rb::Result<TriangleMesh> tessellate(const Surface& surface, const std::optional<Dents>& dents,
-                                    int segments);
+                                    int segments, double length_unit = 1);
 
 }  // namespace sim

@@ -13,7 +13,7 @@ rb::Result<sim::TriangleMesh> bodyMesh(const LoadedScene& loaded, int segments) 
     return mesh;
   }
   const sim::Body& body = *loaded.model.body;
-  auto made = sim::tessellate(body.surface, body.dents, segments);
+  auto made = sim::tessellate(body.surface, body.dents, segments, loaded.model.length_unit);
   if (!made && !made.error().key.empty()) return scene::locate(loaded.scene, made.error());
   return made;
 }

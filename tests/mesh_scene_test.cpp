@@ -255,6 +255,14 @@ TEST(MeshScene, ExportedBodyReadsBackAsAMeshBodyWithItsMassProperties) {
   // option that made them so.
   EXPECT_EQ(cut.err.find("--set body.dents.scale=0.9: body.dents cut through the bottom"), 0u)
       << cut.err;
+  // The hole's place in the scene's unit (cm), as the dents' `at` is given (a maker was told
+  // "(0.013651, 0.034654) m"): beside a dent, whose centre is 4.5 cm from the middle.
+  std::smatch place;
+  ASSERT_TRUE(std::regex_search(
+      cut.err, place, std::regex(R"(at \(([-0-9.e]+), ([-0-9.e]+)\) in the scene's units)")))
+      << cut.err;
+  EXPECT_GT(std::abs(std::stod(place[2].str())), 2.0) << cut.err;
+  EXPECT_LT(std::abs(std::stod(place[2].str())), 6.0) << cut.err;
   EXPECT_FALSE(fs::exists(folder.dir / "cut.stl"));
 
   // The refusal says how deep the dents may go where they are; that scale exports and the next
