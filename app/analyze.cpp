@@ -115,12 +115,14 @@ void printPreferred(std::FILE* out, const tasks::Analysis& a) {
                  "spun the other way it is predicted to reverse sooner\n",
                  std::string(rb::nameOf(a.preferred)).c_str(),
                  a.preferred == sim::Direction::Ccw ? "counter-clockwise" : "clockwise");
+    // The spin's size, whichever way --spin gave it: the line is of the preferred way.
     if (a.grows_either_way)
       std::fprintf(out,
-                   "either way       spun %s too the rocking grows (at %.4g /s at %g rad/s, %s): "
-                   "it is predicted to reverse that way as well, later (docs/physics.md P8.4)%s\n",
-                   std::string(rb::nameOf(a.preferred)).c_str(), a.preferred_growth,
-                   std::abs(a.spin), eitherWayMargin(a).c_str(),
+                   "either way       spun %s at %g rad/s too, the rocking grows (at %.4g /s, %s): "
+                   "it is predicted to reverse that way as well, later (%s P8.4)%s\n",
+                   std::string(rb::nameOf(a.preferred)).c_str(), std::abs(a.spin),
+                   a.preferred_growth, eitherWayMargin(a).c_str(),
+                   rb::docPage("physics.md").c_str(),
                    nearTheLine(a) ? "; near the rule's line: run it to see" : "");
   }
 }

@@ -2407,7 +2407,8 @@ TEST(Cli, AnalyzeSaysHowFarTheEitherWayRuleIsMet) {
       " --set \"body.dents={scale: 0.36, at: [-1.2, 3.8], inset: 0.1}\" --spin -8";
   const Result told = rattleback("analyze " + scene("rattleback") + near);
   ASSERT_EQ(told.status, 0) << told.err;
-  EXPECT_NE(told.out.find("either way       spun cw too"), std::string::npos) << told.out;
+  EXPECT_NE(told.out.find("either way       spun cw at 8 rad/s too"), std::string::npos)
+      << told.out;
   EXPECT_NE(told.out.find("; near the rule's line: run it to see"), std::string::npos) << told.out;
   const Result ran = rattleback("simulate " + scene("rattleback") + near + " --duration 60 -o -");
   ASSERT_EQ(ran.status, 0) << ran.err;
