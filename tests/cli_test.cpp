@@ -2918,6 +2918,21 @@ TEST(Report, PicturesOfAnotherVersionOfTheSceneAreNamed) {
   html = readText(page);
   EXPECT_NE(html.find("Made from another version"), std::string::npos);
   EXPECT_NE(html.find("<code>mine-oblique.png</code>. Make them again"), std::string::npos);
+
+  // The other way about: the file edited after the run and the still drawn again from it. The
+  // run is behind, and the page says to simulate again (it told a teacher to make the new
+  // still again).
+  text.replace(text.find("s: 0.02"), 7, "s: 0.025");
+  std::ofstream(yaml) << text;
+  ASSERT_EQ(rattleback("still " + yaml.string() + " -q -o " + out + "/mine-oblique.png").status, 0);
+  ASSERT_EQ(rattleback("report " + out + " -q").status, 0);
+  html = readText(page);
+  EXPECT_NE(html.find("<code>mine-oblique.png</code>"), std::string::npos);
+  EXPECT_NE(html.find("The scene file has been edited since the run was simulated: simulate it "
+                      "again"),
+            std::string::npos)
+      << html;
+  EXPECT_EQ(html.find("Make them again"), std::string::npos);
 }
 
 // Why a run gets no player is said as it is: a scene edited into one that no longer loads has

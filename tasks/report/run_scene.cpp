@@ -82,6 +82,11 @@ void loadRunScene(const RunRecord& run, RunModel& out) {
 
 }  // namespace
 
+bool sceneEditedSince(const RunRecord& run, const fs::path& dir) {
+  const auto scene = sceneOf(run, dir);
+  return scene && run.scene_fingerprint && *run.scene_fingerprint != sceneFingerprint(*scene);
+}
+
 RunModel runModelOf(const RunRecord& run, const fs::path& dir) {
   if (run.command != "simulate") return {};
   // A scene made from text (Python's from_yaml, from_dict; scene_path null) has no file to replay

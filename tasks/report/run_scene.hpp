@@ -28,4 +28,9 @@ struct RunModel {
 /// can be read and still describes the run.
 RunModel runModelOf(const RunRecord& run, const fs::path& dir);
 
+/// Whether the scene file the run names (found as runModelOf finds it) has been edited since
+/// the run: its content's fingerprint is not the one simulate wrote. False where either is not
+/// known.
+bool sceneEditedSince(const RunRecord& run, const fs::path& dir);
+
 }  // namespace tasks::report

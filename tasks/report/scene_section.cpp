@@ -123,7 +123,7 @@ void writeImages(std::ostream& out, const SceneFiles& f, const char* const (&suf
 // version of it than its run (the file edited since, or other values put in), named above
 // them: old videos and stills would otherwise stand beside the new run's numbers, with nothing
 // said.
-void writeOtherVersions(std::ostream& out, const SceneFiles& f,
+void writeOtherVersions(std::ostream& out, const fs::path& dir, const SceneFiles& f,
                         const std::optional<RunRecord>& run) {
   const std::string run_made_from = run ? run->made_from : "";
   if (run_made_from.empty()) return;
@@ -142,7 +142,15 @@ void writeOtherVersions(std::ostream& out, const SceneFiles& f,
          "may not match the run's: ";
   for (std::size_t i = 0; i < other.size(); ++i)
     out << (i ? ", " : "") << "<code>" << escape(other[i]) << "</code>";
-  out << ". Make them again from the scene and values the run used.</p>\n";
+  // Which is behind: where the scene file has been edited since the run, the run is (a
+  // teacher who simulated before an edit and rendered after it was told to make the new
+  // videos again).
+  if (sceneEditedSince(*run, dir))
+    out << ". The scene file has been edited since the run was simulated: simulate it again to "
+           "measure the scene as it is now (or make these again from the version the run "
+           "used).</p>\n";
+  else
+    out << ". Make them again from the scene and values the run used.</p>\n";
 }
 
 // The theory of the run's own scene (its file, the values put in over it) at the run's spin,
@@ -193,7 +201,7 @@ void writeScene(std::ostream& out, const fs::path& dir, const std::string& name,
   std::optional<RunRecord> run;
   if (f.has(".csv.json")) run = readRunRecord(dir / f.at(".csv.json"));
   const std::optional<nlohmann::json> theory = theoryOf(dir, f, run);
-  writeOtherVersions(out, f, run);
+  writeOtherVersions(out, dir, f, run);
   writeVideos(out, f, theory, runsOfTheScene(dir, f, run));
   if (player != PlayerRuns::None) writePlayerPlace(out, name, theory, player);
   writeAnalysis(out, f, theory, run);
