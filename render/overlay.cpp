@@ -299,19 +299,25 @@ void drawArrow(Image& image, std::span<const std::array<float, 2>> arc, float wi
 }
 
 namespace {
-std::string reversalText(double t_reversal) {
+// The first reversal plainly; a later one with its number, which the class asks for when a
+// body reverses three times and the badge shows the third.
+std::string reversalText(double t_reversal, int number) {
   char text[64];
-  std::snprintf(text, sizeof text, "reversal at %.2f s", t_reversal);
+  if (number > 1)
+    std::snprintf(text, sizeof text, "reversal %d at %.2f s", number, t_reversal);
+  else
+    std::snprintf(text, sizeof text, "reversal at %.2f s", t_reversal);
   return text;
 }
 }  // namespace
 
 int reversalLabelWidth(Overlay& font) {
-  return font.width(reversalText(88.88)) + 2 * (font.lineHeight() / 2);
+  return font.width(reversalText(88.88, 88)) + 2 * (font.lineHeight() / 2);
 }
 
-void drawReversalLabel(Image& image, Overlay& font, int right, int baseline, double t_reversal) {
-  const std::string text = reversalText(t_reversal);
+void drawReversalLabel(Image& image, Overlay& font, int right, int baseline, double t_reversal,
+                       int number) {
+  const std::string text = reversalText(t_reversal, number);
   const int pad = font.lineHeight() / 2;
   const int w = font.width(text) + 2 * pad;
   const int x0 = right - w, y0 = baseline - font.lineHeight() - pad / 2;

@@ -76,7 +76,9 @@ inline constexpr double kReversalShownFor = 1.5;
 void drawArrow(Image& image, std::span<const std::array<float, 2>> arc, float width, Rgba color);
 /// A filled, anti-aliased triangle.
 void fillTriangle(Image& image, const std::array<std::array<float, 2>, 3>& corners, Rgba color);
-/// "reversal at T s" in a yellow box whose right edge is at `right`, text on `baseline`.
-void drawReversalLabel(Image& image, Overlay& font, int right, int baseline, double t_reversal);
+/// "reversal at T s" (the run's `number`th reversal from the second: "reversal 2 at T s") in a
+/// yellow box whose right edge is at `right`, text on `baseline`.
+void drawReversalLabel(Image& image, Overlay& font, int right, int baseline, double t_reversal,
+                       int number = 1);
 
 }  // namespace render

@@ -510,7 +510,8 @@ void Renderer::drawReadouts(const FrameInput& frame, const Camera& camera, Image
   for (auto it = frame.reversals.rbegin(); it != frame.reversals.rend(); ++it) {
     if (*it > frame.t) continue;
     if (frame.t - *it < kReversalShownFor)
-      drawReversalLabel(out, font_, settings_.width - x, layout.first, *it);
+      drawReversalLabel(out, font_, settings_.width - x, layout.first, *it,
+                        static_cast<int>(frame.reversals.rend() - it));
     break;
   }
 }

@@ -91,6 +91,17 @@ Count countOf(const render::Image& image, render::Rgba color) {
 
 }  // namespace
 
+// A later reversal's badge carries its number ("reversal 2 at 2.00 s"): a body that reverses
+// three times showed "reversal at 6.93 s" and a class asked which one. The badge's right edge
+// stays put, so the numbered one reaches further left; the first keeps its plain words.
+TEST(SpinCue, ALaterReversalIsNumbered) {
+  const Count first = countOf(draw(0.3, 2.1, {2.0}), render::kReversalColor);
+  const Count second = countOf(draw(0.3, 2.1, {1.0, 2.0}), render::kReversalColor);
+  ASSERT_GT(first.pixels, 500);
+  EXPECT_GT(second.pixels, first.pixels + 50) << "the second reversal's badge is no wider";
+  EXPECT_LT(second.mean_x, first.mean_x);
+}
+
 // n > 0 is counter-clockwise seen from above (docs/physics.md, sign convention): the near side of
 // a body turning so moves to the viewer's right. The arrow lies on the near half of a circle
 // around the body with its head at the end it travels to, so its head, and with it the mean

@@ -2,7 +2,8 @@
 // on the floor around the body, on the half of the circle nearer the camera, turning the way the
 // body turns, orange counter-clockwise and bluish green clockwise (Okabe and Ito's colours, told
 // apart with any colour vision and unlike the body's red and blue), its sweep |n| over the run's
-// largest |n| up to a half circle; and "reversal at T s" for 1.5 s after each reversal. An SVG
+// largest |n| up to a half circle; and "reversal at T s" ("reversal 2 at T s" from the second)
+// for 1.5 s after each reversal. An SVG
 // over the canvas: the WebGL picture and its partial redraws are untouched.
 import { Vector3 } from 'three';
 
@@ -71,10 +72,14 @@ export const cueMethods = {
     this.cueSense = arc ? Math.sign(this.spinNow) : 0;
     this.cue.style.display = arc ? '' : 'none';
     if (arc) this.drawCueArrow(arc);
-    const shown = (this.run.reversals || []).filter(
-      (r) => r <= this.time && this.time - r < REVERSAL_SHOWN_FOR,
-    );
-    const text = shown.length ? `reversal at ${shown[shown.length - 1].toFixed(2)} s` : '';
+    // The latest reversal shown, numbered from the second as the videos number it.
+    const reversals = this.run.reversals || [];
+    let latest = -1;
+    reversals.forEach((r, i) => {
+      if (r <= this.time && this.time - r < REVERSAL_SHOWN_FOR) latest = i;
+    });
+    const at = latest >= 0 ? `at ${reversals[latest].toFixed(2)} s` : '';
+    const text = latest < 0 ? '' : latest === 0 ? `reversal ${at}` : `reversal ${latest + 1} ${at}`;
     if (this.reversalLabel.textContent !== text) this.reversalLabel.textContent = text;
     this.reversalLabel.hidden = !text;
   },
