@@ -26,14 +26,11 @@ rb::Result<render::BodyTriangles> bodyTrianglesOf(const tasks::LoadedScene& load
                                                   render::Surface surface) {
   render::BodyTriangles triangles;
   if (surface != render::Surface::Triangles) return triangles;
-  // export's default: 24,192 triangles for the default body, its facets a few pixels across in
-  // a 720p frame (the shape reads smooth; a mesh body's own facets show as they are).
-  auto mesh = tasks::bodyMesh(loaded, sim::kDefaultSegments);
+  auto mesh = tasks::drawnMesh(loaded);
   if (!mesh) return mesh.error();
-  const Eigen::Vector3d com = loaded.model.body->com_geometric;
   triangles.vertices.reserve(mesh.value().vertices.size());
   for (const Eigen::Vector3d& v : mesh.value().vertices)
-    triangles.vertices.push_back((v - com).cast<float>());
+    triangles.vertices.push_back(v.cast<float>());
   triangles.faces = std::move(mesh.value().faces);
   return triangles;
 }

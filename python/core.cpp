@@ -498,9 +498,9 @@ void bindCalls(py::module_& m) {
         std::vector<double> reversals;
         for (const auto& t : run.sidecar.at("result").at("reversals_s"))
           reversals.push_back(t.get<double>());
-        tasks::PlayerRun player =
-            tasks::playerRunOf(id, model, tasks::playerFrame(loaded.value.scene, model),
-                               tasks::posesOf(run.samples), std::move(reversals));
+        tasks::PlayerRun player = tasks::playerRunOf(
+            id, model, tasks::playerFrame(loaded.value.scene, model), tasks::posesOf(run.samples),
+            std::move(reversals), tasks::playerSurfaceOf(loaded.value));
         // The body spun the other way, as the report adds it: the same function, from the
         // model the run recorded (simulate(duration=1)'s other way runs 1 s too).
         player.other = tasks::otherSpinOf(model, run.sidecar.at("model"), run.rate);

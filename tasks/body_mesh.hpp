@@ -13,4 +13,9 @@ namespace tasks {
 /// units.length. An error of the scene's keys names its file, line and key.
 rb::Result<sim::TriangleMesh> bodyMesh(const LoadedScene& loaded, int segments);
 
+/// The body's surface as a scene's video.surface: triangles draws it (stills, videos and the
+/// report's player alike): bodyMesh on sim::kDefaultSegments, about the body's CM (the frame
+/// its points are drawn in), metres.
+rb::Result<sim::TriangleMesh> drawnMesh(const LoadedScene& loaded);
+
 }  // namespace tasks

@@ -10,6 +10,7 @@
 #include "sim/analysis.hpp"
 #include "sim/integrator.hpp"
 #include "tasks/analysis.hpp"
+#include "tasks/body_mesh.hpp"
 #include "tasks/run_json.hpp"
 #include "tasks/simulate.hpp"
 #include "util/names.hpp"
@@ -45,6 +46,17 @@ void appendPoses(std::string& data, const std::vector<Pose>& q,
   appendArray(data, "qz", q.size(), 10, [&](std::size_t i) { return q[i].qz; });
   appendArray(data, "spin", q.size(), 7, [&](std::size_t i) { return q[i].spin; });
   appendArray(data, "reversals", reversals.size(), 9, [&](std::size_t i) { return reversals[i]; });
+}
+
+// A body drawn as triangles: "vertices":[x, y, z, …] at the points' µm precision, each
+// once, and "faces":[i, j, k, …], three vertex indices each (a third of what each face's corners
+// written out would take).
+void appendTriangles(std::string& data, const sim::TriangleMesh& mesh) {
+  const auto& v = mesh.vertices;
+  const auto& f = mesh.faces;
+  appendArray(data, "vertices", 3 * v.size(), 6, [&](std::size_t i) { return v[i / 3][i % 3]; });
+  // Indices print whole at %.9g up to 10^9 (kPlayerMostFaces keeps them far below).
+  appendArray(data, "faces", 3 * f.size(), 9, [&](std::size_t i) { return f[i / 3][i % 3]; });
 }
 
 // The indices kept with every k-th pose, and the last.
@@ -156,12 +168,36 @@ std::vector<Pose> posesOf(const std::vector<sim::Telemetry>& samples) {
   return poses;
 }
 
+PlayerSurface playerSurfaceOf(const LoadedScene& loaded) {
+  PlayerSurface surface;
+  if (rb::parseName<render::Surface>(loaded.scene.video.surface) != render::Surface::Triangles)
+    return surface;
+  auto mesh = drawnMesh(loaded);
+  // A scene that loads has a mesh (bodyMesh fails only on keys that loading checks); were it
+  // not so, the points still show the body, and the title says why they are drawn.
+  if (!mesh) {
+    surface.note = "drawn as points: " + mesh.error().text();
+    return surface;
+  }
+  const std::size_t faces = mesh.value().faces.size();
+  if (faces > kPlayerMostFaces) {
+    surface.note = "drawn as points: its surface has " + std::to_string(faces) +
+                   " triangles, more than the player draws (" + std::to_string(kPlayerMostFaces) +
+                   ")";
+    return surface;
+  }
+  surface.triangles = std::move(mesh).value();
+  return surface;
+}
+
 PlayerRun playerRunOf(const std::string& id, const sim::Model& model, double frame,
-                      std::vector<Pose> poses, std::vector<double> reversals) {
+                      std::vector<Pose> poses, std::vector<double> reversals,
+                      PlayerSurface surface) {
   PlayerRun run;
   run.id = id;
-  run.title = id;
+  run.title = surface.note.empty() ? id : id + " (" + surface.note + ")";
   run.points = drawnPointsOf(model);
+  run.triangles = std::move(surface.triangles);
   run.frame = frame;
   run.poses = thinPoses(poses);
   run.reversals = std::move(reversals);
@@ -221,6 +257,7 @@ std::string playerScript(const PlayerRun& run) {
   appendArray(data, "top", 3 * p.top.size(), 6, [&](std::size_t i) { return p.top[i / 3][i % 3]; });
   appendArray(data, "bottom", 3 * p.bottom.size(), 6,
               [&](std::size_t i) { return p.bottom[i / 3][i % 3]; });
+  if (!run.triangles.faces.empty()) appendTriangles(data, run.triangles);
   char text[160];
   std::snprintf(text, sizeof text, "\"radius\":%.6g,\"reach\":%.6g,\"frame\":%.6g,", p.radius,
                 reachOf(p), run.frame);

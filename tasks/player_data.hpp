@@ -3,12 +3,14 @@
 //
 //   (window.RATTLEBACK_RUNS = window.RATTLEBACK_RUNS || {})["ID"] = {…};
 //
-// holding the drawn points (body frame about the CM, m), the fixed views' framing, the views'
-// cameras (the renderer's own table, util/picture.hpp), and the run's poses: t, x, y, z (CM, world,
-// m), qw, qx, qy, qz (body to world, scalar first) and the spin n (rad/s), at most kPlayerRate
-// samples per simulated second. A run spun one way may carry the same body spun the other
-// way ("spun": the run's initial spin, rad/s; "other": {spun, t, x, …, spin, reversals}, the
-// same series), which the player offers beside it (otherSpinOf).
+// holding the drawn points (body frame about the CM, m), for a scene whose video.surface is
+// triangles also its surface ("vertices": x, y, z each, about the CM, m; "faces": three vertex
+// indices each, wound outwards; the player then draws them, not the points), the fixed views'
+// framing, the views' cameras (the renderer's own table, util/picture.hpp), and the run's poses: t,
+// x, y, z (CM, world, m), qw, qx, qy, qz (body to world, scalar first) and the spin n (rad/s), at
+// most kPlayerRate samples per simulated second. A run spun one way may carry the same body spun
+// the other way ("spun": the run's initial spin, rad/s; "other": {spun, t, x, …, spin, reversals},
+// the same series), which the player offers beside it (otherSpinOf).
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -17,9 +19,11 @@
 #include <vector>
 
 #include "scene/loader.hpp"
+#include "sim/mesh.hpp"
 #include "sim/model.hpp"
 #include "sim/telemetry.hpp"
 #include "tasks/drawn_points.hpp"
+#include "tasks/scene_args.hpp"
 
 namespace tasks {
 
@@ -47,10 +51,30 @@ struct SpunRun {
   std::vector<double> reversals;  ///< s
 };
 
+/// The most faces the player is given of a body drawn as triangles: 200,000 (the default
+/// body's 24,192 make 0.8 MB of data; a scan of millions would make a page of hundreds of MB,
+/// and a software-WebGL frame of seconds). Above it the player draws the points, and its title
+/// says why.
+constexpr std::size_t kPlayerMostFaces = 200000;
+
+/// The body's surface as the player draws it.
+struct PlayerSurface {
+  /// About the CM, m (tasks::drawnMesh): a scene whose video.surface is triangles, as its
+  /// stills and videos draw it; none: the points are drawn.
+  sim::TriangleMesh triangles;
+  /// Why a triangles scene's body is drawn as points (too many faces), for its title; else
+  /// empty.
+  std::string note;
+};
+
+/// The surface of a scene's body as the player draws it (PlayerSurface).
+PlayerSurface playerSurfaceOf(const LoadedScene& loaded);
+
 struct PlayerRun {
   std::string id;     ///< the key in window.RATTLEBACK_RUNS (the scene's stem)
   std::string title;  ///< shown above the player
   DrawnPoints points;
+  sim::TriangleMesh triangles;    ///< none: the points are drawn (PlayerSurface)
   std::vector<Pose> poses;        ///< in time order
   std::vector<double> reversals;  ///< s
   /// m: the length of body the views are framed for (the scene's video.frame), as stills and
@@ -79,10 +103,12 @@ std::vector<Pose> thinPoses(const std::vector<Pose>& poses);
 /// The poses of a run's samples (tasks::attitude's quaternion).
 std::vector<Pose> posesOf(const std::vector<sim::Telemetry>& samples);
 
-/// The player's run, as the report and Python both make it: titled by its id, the body's drawn
-/// points, `frame` (m; 0: the body's own), the poses thinned (thinPoses), the reversals (s).
+/// The player's run, as the report and Python both make it: titled by its id (and the surface's
+/// note), the body's drawn points and `surface`'s triangles, `frame` (m; 0: the body's own), the
+/// poses thinned (thinPoses), the reversals (s).
 PlayerRun playerRunOf(const std::string& id, const sim::Model& model, double frame,
-                      std::vector<Pose> poses, std::vector<double> reversals);
+                      std::vector<Pose> poses, std::vector<double> reversals,
+                      PlayerSurface surface = {});
 
 /// The body spun the other way, for the player to show beside a run of a scene whose model is
 /// `model`: the run's model (`run_model`, its sidecar's "model": the scene's with the spin,

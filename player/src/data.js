@@ -96,6 +96,57 @@ export function bodyGeometry(run) {
   };
 }
 
+// The body's closed surface where the run's scene draws it so (video.surface: triangles; the
+// data's `vertices`, x, y, z each about the CM, and `faces`, three vertex indices each, wound
+// outwards): one corner per face and vertex, not shared, each with its face's normal and colour
+// (red where the normal points up in the body frame, blue where down, as render/frame.hpp's
+// facesUp: a rim vertex belongs to red faces above and blue below). Null where there are none,
+// or where a face names a vertex that is not there: the points are drawn then.
+export function triangleGeometry(run) {
+  const v = run.vertices,
+    f = run.faces;
+  if (!Array.isArray(v) || !Array.isArray(f) || !f.length || f.length % 3 || v.length % 3) return null;
+  const count = v.length / 3;
+  const positions = new Float32Array(3 * f.length);
+  const normals = new Float32Array(3 * f.length);
+  const kinds = new Float32Array(f.length);
+  const a = [0, 0, 0],
+    b = [0, 0, 0],
+    n = [0, 0, 0];
+  for (let i = 0; i < f.length; i += 3) {
+    for (const k of [0, 1, 2])
+      if (!(f[i + k] >= 0 && f[i + k] < count && Number.isInteger(f[i + k]))) return null;
+    const p = f[i],
+      q = f[i + 1],
+      r = f[i + 2];
+    for (let k = 0; k < 3; k++) {
+      a[k] = v[3 * q + k] - v[3 * p + k];
+      b[k] = v[3 * r + k] - v[3 * p + k];
+    }
+    n[0] = a[1] * b[2] - a[2] * b[1];
+    n[1] = a[2] * b[0] - a[0] * b[2];
+    n[2] = a[0] * b[1] - a[1] * b[0];
+    const length = Math.hypot(n[0], n[1], n[2]) || 1;
+    // The data's µm rounding turns a face within about 1e-5 rad of vertical either way: those
+    // are taken as vertical, which facesUp colours red.
+    const kind = n[2] >= -1e-4 * length ? 0 : 1;
+    for (let c = 0; c < 3; c++) {
+      const corner = 3 * (i + c),
+        from = 3 * f[i + c];
+      for (let k = 0; k < 3; k++) {
+        positions[corner + k] = v[from + k];
+        normals[corner + k] = n[k] / length;
+      }
+      kinds[i + c] = kind;
+    }
+  }
+  const geometry = new BufferGeometry();
+  geometry.setAttribute('position', new BufferAttribute(positions, 3));
+  geometry.setAttribute('normal', new BufferAttribute(normals, 3));
+  geometry.setAttribute('kind', new BufferAttribute(kinds, 1));
+  return geometry;
+}
+
 // The averaged theory's forecast of the first reversal, from the container's data-forecast
 // (analyze's "predicted_first_reversal", JSON): {time, range} when it applies (the body stands,
 // n²ρ/g and the rocking within the theory's reach: range not "outside") and falls within the

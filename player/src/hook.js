@@ -45,6 +45,19 @@ export const hookMethods = {
         return [q.w, q.x, q.y, q.z];
       },
       position: () => self.points.position.toArray(),
+      // What the last picture drew of the body: its surface ('triangles', `faces` of them) or
+      // its 'points', and three.js's own count of the points and triangles that picture drew
+      // (the floor's and the shadow's triangles among them).
+      drawn: () => {
+        const info = self.renderer.info.render;
+        const faces = self.triangles ? self.triangles.geometry.getAttribute('position').count / 3 : 0;
+        return {
+          body: faces ? 'triangles' : 'points',
+          faces,
+          points: info.points,
+          triangles: info.triangles,
+        };
+      },
       spin: () => self.spinNow,
       // The spin cue as drawn now: its sense (+1 counter-clockwise, −1 clockwise, 0 none), its
       // colour, and the reversal label's text ('' when hidden).

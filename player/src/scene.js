@@ -1,8 +1,19 @@
 // The player's three.js scene: the renderer on an opaque WebGL 2 context, the body's points as
-// sphere impostors, then the floor, its shadow and the cameras (floor.js, camera.js).
-import { Color, Points, SRGBColorSpace, Scene, ShaderMaterial, Vector3, WebGLRenderer } from 'three';
-import { POINTS_FRAGMENT, POINTS_VERTEX } from './shaders.js';
-import { bodyGeometry } from './data.js';
+// sphere impostors (or its surface as triangles, where its scene draws it so), then the floor,
+// its shadow and the cameras (floor.js, camera.js).
+import {
+  Color,
+  DoubleSide,
+  Mesh,
+  Points,
+  SRGBColorSpace,
+  Scene,
+  ShaderMaterial,
+  Vector3,
+  WebGLRenderer,
+} from 'three';
+import { POINTS_FRAGMENT, POINTS_VERTEX, TRIANGLES_FRAGMENT, TRIANGLES_VERTEX } from './shaders.js';
+import { bodyGeometry, triangleGeometry } from './data.js';
 import { BACKGROUND } from './floor.js';
 
 export const sceneMethods = {
@@ -18,6 +29,7 @@ export const sceneMethods = {
       radius: 1.25 * (body.frame > 0 ? 0.5 * body.frame : body.reach),
     };
     this.buildPoints();
+    this.buildTriangles();
     this.buildFloor();
     this.buildShadow();
     this.buildCameras();
@@ -69,5 +81,29 @@ export const sceneMethods = {
     this.points = new Points(body.geometry, this.pointsMaterial);
     this.points.frustumCulled = false;
     this.scene.add(this.points);
+  },
+
+  // The body's surface as flat-shaded triangles where the data has them (triangleGeometry): a
+  // child of the points, which stay the object that is moved, framed and shadowed by (their
+  // extents are the body's); only their material is hidden. (Their spheres reach a radius
+  // beyond the surface: the shadow and the framing are the video's, which takes them too.)
+  buildTriangles() {
+    const geometry = triangleGeometry(this.run);
+    this.triangles = null;
+    if (!geometry) return;
+    const material = new ShaderMaterial({
+      vertexShader: TRIANGLES_VERTEX,
+      fragmentShader: TRIANGLES_FRAGMENT,
+      uniforms: {
+        lightWorld: { value: new Vector3(0.3, -0.6, 1.0).normalize() },
+        floorDepth: this.pointsMaterial.uniforms.floorDepth, // the same, set each frame
+      },
+      // A face wound inwards in a mesh body's file is drawn all the same (the video draws it).
+      side: DoubleSide,
+    });
+    this.triangles = new Mesh(geometry, material);
+    this.triangles.frustumCulled = false;
+    this.points.add(this.triangles);
+    this.pointsMaterial.visible = false;
   },
 };

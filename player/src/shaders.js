@@ -179,3 +179,31 @@ void main() {
 // The shadow's reach: it fades out at 1.15 of the footprint's half extents (FLOOR_FRAGMENT);
 // its quad, and the part of the canvas redrawn for it, reach a little further.
 export const SHADOW_REACH = 1.2;
+
+// The body's closed surface as flat-shaded triangles, as the renderer draws it for a scene's
+// video.surface: triangles (render's triangles.vert / triangles.frag): each corner carries its
+// face's normal and colour, lit by the renderer's light, fixed in the world (its light_world),
+// with the same ambient and fill, and no highlight. The normal is turned into the world here
+// (the body's matrix is a rotation and a move), where the light is fixed.
+export const TRIANGLES_VERTEX = /* glsl */ `
+attribute float kind;  // 0 faces up (red), 1 faces down (blue)
+uniform vec3 lightWorld;
+varying vec3 vColor;
+varying float vTowards;
+void main() {
+  gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
+  vTowards = dot(normalize(mat3(modelMatrix) * normal), lightWorld);
+  vColor = kind < 0.5 ? vec3(0.86, 0.13, 0.10) : vec3(0.13, 0.32, 0.88);
+}`;
+
+export const TRIANGLES_FRAGMENT = /* glsl */ `
+uniform vec3 floorDepth; // as POINTS_FRAGMENT's: the floor drawn without depth hides nothing
+varying vec3 vColor;
+varying float vTowards;
+void main() {
+  float floorZ = dot(floorDepth, vec3(gl_FragCoord.xy, 1.0));
+  if (gl_FragCoord.z > floorZ && floorZ >= 0.0) discard;
+  float diffuse = max(vTowards, 0.0);
+  float fill = max(-vTowards, 0.0);
+  gl_FragColor = vec4(vColor * (0.30 + 0.75 * diffuse + 0.35 * fill), 1.0);
+}`;

@@ -134,3 +134,18 @@ def test_the_players_other_spin_is_the_reports(tmp_path):
     # (the run's own poses are the CSV's text in the report, the samples' doubles here)
     other = lambda text: text[text.index(',"spun":') :]
     assert other(script) == other((tmp_path / "rattleback.player.js").read_text())
+
+
+def test_the_players_triangles_are_the_reports(tmp_path):
+    """A scene drawn as triangles (video.surface) gives the player made in Python the same
+    surface as `report`'s: the same vertices and faces, as its stills and videos draw it."""
+    scene = rb.Scene.from_file(scene_path("printed.yaml"))
+    script = rb._core.player_script(scene._loaded, rb.simulate(scene, duration=1)._run, "printed")
+    cli("simulate", scene_path("printed.yaml"), "--duration", "1", "-q", "-o", str(tmp_path / "printed.csv"))
+    cli("report", str(tmp_path), "-q")
+    if not (tmp_path / "printed.player.js").exists():
+        pytest.skip("no player bundle in this build (no node and npm)")
+    assert '"vertices":' in script and '"faces":' in script, "the player made in Python draws points"
+    surface = lambda text: text[text.index(',"vertices":') : text.index(',"radius":')]
+    assert surface(script).count(",") > 5952 * 3
+    assert surface(script) == surface((tmp_path / "printed.player.js").read_text())

@@ -78,7 +78,7 @@ rb::Result<PlayerRuns> writePlayerData(const fs::path& dir, const std::string& i
   if (!f.has(".csv") || !f.has(".csv.json")) return PlayerRuns::None;
   const std::optional<RunRecord> sidecar = readRunRecord(dir / f.at(".csv.json"));
   if (!sidecar || sidecar->command != "simulate") return PlayerRuns::None;
-  const RunModel found = runModelOf(*sidecar, dir);
+  RunModel found = runModelOf(*sidecar, dir);
   if (!found.model) {
     if (!found.why.empty())
       notes.push_back((dir / f.at(".csv")).string() + ": " + found.scene + " " + found.why);
@@ -93,8 +93,9 @@ rb::Result<PlayerRuns> writePlayerData(const fs::path& dir, const std::string& i
   for (const Number& r : sidecar->reversals_s)
     if (r) reversals.push_back(*r);
   // Framed as the scene's videos and stills were drawn (--frame), else as its video.frame says.
+  // Drawn as the scene's video.surface draws it (its stills and videos beside it).
   PlayerRun run = playerRunOf(id, *found.model, drawn_frame.value_or(found.frame), std::move(poses),
-                              std::move(reversals));
+                              std::move(reversals), std::move(found.surface));
   // Beside it, the body spun the other way, simulated here: a body spun the way it prefers
   // shows no reversal, and its teacher wants to show it reverse. Whether or not --both's videos
   // are in the folder: the player is where the reversal is replayed and stepped through, and it

@@ -77,6 +77,7 @@ void loadRunScene(const RunRecord& run, RunModel& out) {
     return;
   }
   out.frame = playerFrame(loaded.value(), model.value());
+  out.surface = playerSurfaceOf(LoadedScene{std::move(loaded).value(), model.value()});
   out.model = std::move(model).value();
 }
 

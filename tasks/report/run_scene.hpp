@@ -8,6 +8,7 @@
 #include <string>
 
 #include "sim/model.hpp"
+#include "tasks/player_data.hpp"
 #include "tasks/report/sidecars.hpp"
 
 namespace tasks::report {
@@ -20,7 +21,8 @@ struct RunModel {
   std::optional<sim::Model> model;
   std::string scene;  ///< the scene file's path, where one was found
   std::string why;
-  double frame = 0;  ///< m: the scene's video.frame for the player (playerFrame)
+  double frame = 0;       ///< m: the scene's video.frame for the player (playerFrame)
+  PlayerSurface surface;  ///< the body as the scene's video.surface draws it (playerSurfaceOf)
 };
 
 /// The model of the scene a telemetry sidecar names (from here, then from `dir`), with the

@@ -12,7 +12,8 @@ played; each video's bar is no wider than it; present mode (P) fills the viewpor
 picture, whole, and large read-outs that lie inside it, the title as large as they are; R there
 stops at the reversal with its sense said, no empty box over the picture and the picture as
 drawn whole; and Esc leaves it; full screen (F) gives the picture the height the controls
-leave, and Esc leaves it too. With SCREENSHOT_DIR, the page at its first video, the player
+leave, and Esc leaves it too. Each player draws the body as its scene does: triangles where its
+video.surface says so, else points. With SCREENSHOT_DIR, the page at its first video, the player
 switched to its other spin and in present mode are saved there at both sizes (report-WxH.png,
 spins-WxH.png, present-WxH.png, present-reversal-WxH.png), to look at.
 
@@ -460,6 +461,38 @@ def composited_present(folder, failures):
         chromium.close(driver, profile)
 
 
+def surfaces(driver, failures):
+    """Each player draws the body as its scene's stills and videos do: a scene whose data has
+    the surface's faces (video.surface: triangles) drawn as those triangles and no points, any
+    other as its points (three.js's own count of what the picture drew, the floor's and the
+    shadow's triangles among it). The page must have one of each."""
+    drawn = driver.execute_script(
+        """return Array.from(document.querySelectorAll('.rb-player')).filter(e => e.rbPlayer).map(e => {
+            const p = e.rbPlayer, run = window.RATTLEBACK_RUNS[p.id];
+            p.renderAll();
+            const d = p.drawn();
+            return {id: p.id, faces: run.faces ? run.faces.length / 3 : 0,
+                    points: (run.top.length + run.bottom.length) / 3, drawn: d};
+        });"""
+    )
+    for d in drawn:
+        got = d["drawn"]
+        if d["faces"]:
+            if got["body"] != "triangles" or got["faces"] != d["faces"] or got["points"] != 0:
+                failures.append(
+                    f"player {d['id']}: its scene draws {d['faces']} triangles, the player drew {got}"
+                )
+            elif got["triangles"] < d["faces"]:
+                failures.append(
+                    f"player {d['id']}: {got['triangles']} triangles drawn, fewer than its {d['faces']}"
+                )
+        elif got["body"] != "points" or got["points"] != d["points"]:
+            failures.append(f"player {d['id']}: its scene draws {d['points']} points, the player drew {got}")
+    kinds = {bool(d["faces"]) for d in drawn}
+    if kinds != {True, False}:
+        failures.append(f"the page should have a player of triangles and one of points: {drawn}")
+
+
 def main():
     folder = pathlib.Path(sys.argv[1]).resolve()
     expected = float(sys.argv[2])
@@ -538,6 +571,7 @@ def main():
                 failures.append(f"{src} is drawn {shown} px wide, larger than its own {natural} px")
         for size in [(1280, 720), (1920, 1080)]:
             classroom(driver, size, failures, sys.argv[3] if len(sys.argv) > 3 else "")
+        surfaces(driver, failures)
         # The console: no errors.
         for entry in driver.get_log("browser"):
             if entry["level"] == "SEVERE":

@@ -28,6 +28,10 @@ mkdir -p "$dir/scenes" && cp "$scene" "$odd"
 "$rb" simulate "$odd" --duration 3 -o "$dir/my top #1.csv" --plot "$dir" -q
 "$rb" still "$odd" --t 1 --size 320x180 -q -o "$dir/my top #1-oblique.png"
 "$rb" render "$odd" --duration 2 --size 320x180 -q -o "$dir/my top #1.mp4"
+# A body drawn as triangles (video.surface: triangles): its player draws them too, where the
+# default scene's draws points (check_report.py's surfaces). 3 s, as above: check_player.py
+# plays every player on the page for a second from a tenth of its run.
+"$rb" simulate scenes/printed.yaml --duration 3 -o "$dir/printed.csv" -q
 "$rb" report "$dir" -q
 test -s "$dir/index.html"
 # Relative paths only: the page must not name the folder it was made in.
