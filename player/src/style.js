@@ -7,7 +7,9 @@
 // a blank box at the picture's bottom (the reversal label's, in present mode at 1920 × 1080).
 
 // Screens this high or higher show present mode's plot scaled up (at 1280 × 720 a larger plot
-// hid the spin cue's arrowhead); plot.js draws it finer on them.
+// hid the spin cue's arrowhead); plot.js draws it finer on them. Below, present mode's read-outs
+// take four lines, not six (the spin's sense on the spin's line, the floor's scale left out):
+// at 1280 × 720 the six reached down into the picture, over the body's far end.
 export const PRESENT_PLOT_SCALED = '(min-height:900px)';
 
 export const STYLE = `
@@ -59,6 +61,7 @@ export const STYLE = `
 .rbp.rbp-present .rbp-help{display:none}
 .rbp.rbp-present .rbp-plotbox{position:fixed;right:calc(24px + (100vw - 24px - min(100vw - 24px, (100vh - 110px) * 16 / 9)) / 2);bottom:calc(100vh - min(100vw - 24px, (100vh - 110px) * 16 / 9) * 9 / 16);margin:0;transform-origin:100% 100%;opacity:.94}
 @media ${PRESENT_PLOT_SCALED}{.rbp.rbp-present .rbp-plotbox{transform:scale(1.7)}}
+@media not all and ${PRESENT_PLOT_SCALED}{.rbp.rbp-present .rbp-scale{display:none}.rbp.rbp-present .rbp-spin,.rbp.rbp-present .rbp-sense{display:inline}.rbp.rbp-present .rbp-sense::before{content:'  '}}
 .rbp.rbp-present .rbp-reversal-label{font-size:max(24px,3.4vh);top:16px;right:16px}
 .rbp-missing{padding:10px 12px;border:1px dashed #c9a0a0;border-radius:4px;color:#7a2e2e;background:#fbf4f4;font:14px system-ui,sans-serif;margin:8px 0}
 `;

@@ -164,6 +164,13 @@ def classroom(driver, size, failures, screenshots):
             failures.append(
                 f"{where}: in present mode the read-outs {side} are not over the picture {got['stage']}"
             )
+        # Below 900 px high the read-outs keep to the picture's top 30 %: at 1280 x 720 their six
+        # lines reached 43 % down, over the far end of a body spun -8 rad/s (a teacher's trial).
+        if vh < 900 and side[3] - top > 0.3 * (bottom - top):
+            failures.append(
+                f"{where}: in present mode the read-outs {side} reach more than 30 % down the "
+                f"picture {got['stage']}"
+            )
         # The n(t) plot over the picture's bottom right (a teacher's trial: present mode dropped
         # it), scaled up where the screen is 900 px high or more (at 1280 x 720 scaled it hid
         # the spin cue's arrowhead), clear of the read-outs.
