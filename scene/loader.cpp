@@ -407,6 +407,10 @@ rb::Result<Loaded> loadTree(const YAML::Node& root_node, const std::string& name
 
 rb::Result<Loaded> loadString(const std::string& yaml, const std::string& name) {
   YAML::Node root;
+  return loadString(yaml, name, root);
+}
+
+rb::Result<Loaded> loadString(const std::string& yaml, const std::string& name, YAML::Node& root) {
   try {
     root = YAML::Load(yaml);
   } catch (const YAML::Exception& e) {

@@ -233,7 +233,10 @@ rb::Result<SweepScenes> SweepScenes::open(const Sweep& sweep) {
       impl->base = YAML::Node(YAML::NodeType::Map);
     // The rows' trees are copies, which keep no lines: an error in a key of the base names the
     // base's line from these (it named line 1).
-    if (auto loaded = loadTree(impl->base, sweep.base, {})) impl->base_lines = loaded->lines;
+    if (sweep.base_lines)
+      impl->base_lines = *sweep.base_lines;
+    else if (auto loaded = loadTree(impl->base, sweep.base, {}))
+      impl->base_lines = loaded->lines;
     for (const KeyValue& kv : sweep.base_values) {
       put(impl->base, *splitKey(kv.key), 0, YAML::Load(kv.yaml));
       impl->places[withoutIndex(kv.key)] = "with_values";
@@ -286,7 +289,7 @@ rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, b
     if (!root.IsMap())
       throw SweepFailure{top + ": a sweep is a map with the keys base, vary, duration and columns"};
     // (A default-constructed YAML::Node is a defined null, so presence is kept apart.)
-    YAML::Node base_key, vary_key, duration_key, columns_key;
+    YAML::Node base_key, vary_key, duration_key, columns_key, base_tree;
     YAML::Node base_node, vary, duration, columns;
     bool has_base = false, has_vary = false, has_duration = false, has_columns = false;
     for (const auto& entry : root) {
@@ -330,10 +333,13 @@ rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, b
       if (!base_text)
         throw SweepFailure{at(base_key) + ": " + base_named + base_text.error().text()};
       sweep.base_text = base_text.value();
-      auto loaded_base = loadString(sweep.base_text, sweep.base);
+      auto loaded_base = loadString(sweep.base_text, sweep.base, base_tree);
       if (!loaded_base)
         throw SweepFailure{at(base_key) + ": " + base_named + loaded_base.error().text()};
       sweep.length_unit = loaded_base->spec.units.length;
+      sweep.file_content = YAML::Dump(root);  // scene::yamlContent(text), without parsing again
+      sweep.base_content = loaded_base->content;
+      sweep.base_lines = loaded_base->lines;
     }
     if (has_duration) {
       reading(duration_key, "duration");
@@ -353,7 +359,7 @@ rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, b
       throw SweepFailure{(has_vary ? at(vary_key) : top) +
                          ": vary must map scene keys to their values, e.g. initial.spin: [-5, 5]"};
 
-    YAML::Node base_tree = YAML::Load(sweep.base_text);
+    if (given) base_tree = YAML::Load(sweep.base_text);
     if (!base_tree.IsDefined() || base_tree.IsNull()) base_tree = YAML::Node(YAML::NodeType::Map);
     for (const KeyValue& kv : sweep.base_values)
       put(base_tree, *splitKey(kv.key), 0, YAML::Load(kv.yaml));

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -52,6 +53,12 @@ struct Sweep {
   /// The result columns the table holds, as `columns:` lists them; empty: the default table.
   std::vector<SweepColumnName> columns;
   double length_unit = 1;  ///< m per length unit of the base scene (units.length)
+  /// What a read of the files found, kept so that nothing reads or parses them again (each parse
+  /// of a scene by yaml-cpp is a tenth of a millisecond or more, in every sweep's start-up):
+  /// the sweep file's and the base scene's content (scene::yamlContent of each), empty for a
+  /// sweep without a file (Python's), and the base file's keys' lines.
+  std::string file_content, base_content;
+  std::optional<std::map<std::string, int>> base_lines;
 
   /// The number of runs: the product of the axes' sizes.
   std::int64_t rows() const;

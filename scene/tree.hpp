@@ -38,4 +38,8 @@ rb::Result<Loaded> loadTree(const YAML::Node& root, const std::string& name,
                             const std::map<std::string, int>& lines = {},
                             std::shared_ptr<const sim::TriangleMesh> mesh = nullptr);
 
+/// As loadString, the parsed text left in `tree` for a caller that reads it further (a sweep's
+/// base), so that it is not parsed twice.
+rb::Result<Loaded> loadString(const std::string& yaml, const std::string& name, YAML::Node& tree);
+
 }  // namespace scene

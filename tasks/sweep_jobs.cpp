@@ -131,6 +131,8 @@ std::string sweepFingerprint(const scene::Sweep& sweep) {
   // FNV-1a (64 bits) of the sweep file's and its base scene's content: any edit to either (a
   // duration, a mass) changes it, where the rows' own values catch only a changed axis; a
   // comment or a blank line does not (a new user's comment had made --resume refuse).
+  if (!sweep.file_content.empty())  // as read when the sweep was loaded
+    return fingerprintOf({sweep.file_content, "\n--\n", sweep.base_content});
   return fingerprintOf(
       {scene::yamlContent(textOf(sweep.file)), "\n--\n", scene::yamlContent(textOf(sweep.base))});
 }
