@@ -230,7 +230,6 @@ void defineSnapshot(CLI::App& c, Cli& cli) {
                "suite file)");
   c.add_option("-j,--jobs", s.jobs, "Threads (default: all cores)");
   c.add_flag("-q,--quiet", s.quiet, "No verdicts and no progress bar: the exit status says it");
-  c.footer(snapshotKeysHelp());
 }
 
 void defineBench(CLI::App& c, Cli& cli) {
@@ -383,17 +382,38 @@ Cli::Cli() {
   app.name("rattleback");
   app.set_version_flag("--version", "rattleback " RATTLEBACK_VERSION);
   app.require_subcommand(1);
-  app.footer(documentation());
   for (const CommandSpec& spec : commands())
     spec.define(*app.add_subcommand(spec.name, spec.summary), *this);
+}
+
+namespace {
+
+// Every command's help ends with where the documentation is (CLI11 gives a subcommand its
+// parent's footer when it is made; these are set later, so each is set here), snapshot's with
+// its suite file's keys.
+void setFooters(CLI::App& app, const std::string& documentation) {
+  app.footer(documentation);
+  for (CLI::App* command : app.get_subcommands(std::function<bool(CLI::App*)>()))
+    setFooters(*command, documentation);
+}
+
+}  // namespace
+
+// Made only when help is printed: finding the documentation folder looks at several paths, a
+// twentieth of the program's start-up when it was done at every start.
+void Cli::addFooters() {
+  setFooters(app, documentation());
+  app.get_subcommand("snapshot")->footer(snapshotKeysHelp());
 }
 
 std::optional<int> Cli::parse(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
+    addFooters();
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    addFooters();
     return app.exit(e);
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);

@@ -31,6 +31,8 @@ const std::vector<CommandSpec>& commands();
 
 struct Cli {
   Cli();
+  /// Every command's help footer (the documentation's place; snapshot's suite keys).
+  void addFooters();
   Cli(const Cli&) = delete;
   Cli& operator=(const Cli&) = delete;
 

@@ -80,16 +80,16 @@ void replaceStepSetting(YAML::Node root, const Keys& given) {
   }
 }
 
-// The node at `path` without its index, or an undefined node.
-inline YAML::Node find(const YAML::Node& root, const KeyPath& path) {
-  YAML::Node node = YAML::Clone(root);
-  for (const std::string& part : path.parts) {
-    if (!node.IsMap()) return YAML::Node(YAML::NodeType::Undefined);
-    YAML::Node child = node[part];
-    if (!child.IsDefined()) return child;
-    node.reset(child);
-  }
-  return node;
+// A copy of the node at `path` without its index, or an undefined node. The walk reads through
+// const nodes (yaml-cpp's non-const [] keeps the key it looked for, and assigning to a node
+// found changes the tree it is in), and only the node found is copied: copying the whole tree
+// at each call had cost a sweep's start-up as much as parsing its base scene.
+inline YAML::Node find(const YAML::Node& root, const KeyPath& path, std::size_t depth = 0) {
+  if (depth == path.parts.size()) return YAML::Clone(root);
+  if (!root.IsMap()) return YAML::Node(YAML::NodeType::Undefined);
+  const YAML::Node child = root[path.parts[depth]];
+  if (!child.IsDefined()) return YAML::Node(YAML::NodeType::Undefined);
+  return find(child, path, depth + 1);
 }
 
 }  // namespace scene
