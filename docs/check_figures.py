@@ -117,6 +117,44 @@ def reversal(result):
     return "none" if first is None else first
 
 
+# docs/getting-started.md "A body that reverses both ways": sweeps/both-ways-search.yaml's rows
+# by body (the dents' place and scale), each with its two spins.
+def searched(r):
+    bodies = {}
+    for row in r.sweep("both-ways-search"):
+        body = tuple(float(row[k]) for k in ("body.dents.at[0]", "body.dents.at[1]", "body.dents.scale"))
+        bodies.setdefault(body, []).append(row)
+    return bodies
+
+
+def exporting(r):
+    return {b: rows for b, rows in searched(r).items() if all(x["exports"] == "yes" for x in rows)}
+
+
+def both_ways(r):
+    return {b: rows for b, rows in exporting(r).items() if all(x["first_reversal_s"] for x in rows)}
+
+
+def soonest_clockwise(r):
+    """The earliest first reversal spun clockwise among the both-ways bodies, and that body."""
+    return min(
+        (float(x["first_reversal_s"]), body)
+        for body, rows in both_ways(r).items()
+        for x in rows
+        if float(x["initial.spin"]) < 0
+    )
+
+
+def shipped_is_found(r):
+    """The shipped both-ways body's dents (scenes/both-ways.yaml) among the search's both-ways ones."""
+    dents = re.search(
+        r"dents: \{scale: ([\d.]+), at: \[([-\d.]+), ([-\d.]+)\]",
+        (ROOT / "scenes/both-ways.yaml").read_text(),
+    )
+    scale, x, y = (float(v) for v in dents.groups())
+    return (x, y, scale) in both_ways(r)
+
+
 # docs/getting-started.md "Make your own rattleback": the shipped body, mirrored, and deeper,
 # as the page's commands set them.
 MIRRORED = ("body.dents.at=[-0.73, 4.50]",)
@@ -395,6 +433,21 @@ CLAIMS = [
             lambda r: r.analyze("both-ways")["preferred"],
             lambda r: reversal(r.simulate("both-ways")),
             lambda r: reversal(r.simulate("both-ways", 8)),
+        ],
+    ),
+    (
+        "docs/getting-started.md",
+        "Of the «36» bodies «19» export, and «5» of those reverse both ways; the shipped one is among "
+        "them, and the soonest clockwise, at «5.17» s, has its dents at [«−1.0», «3.0»] and scale «0.5».",
+        [
+            lambda r: len(searched(r)),
+            lambda r: len(exporting(r)),
+            # "the shipped one is among them" is checked with the count
+            lambda r: len(both_ways(r)) if shipped_is_found(r) else "none with the shipped body",
+            lambda r: soonest_clockwise(r)[0],
+            lambda r: soonest_clockwise(r)[1][0],
+            lambda r: soonest_clockwise(r)[1][1],
+            lambda r: soonest_clockwise(r)[1][2],
         ],
     ),
     (

@@ -171,6 +171,11 @@ TriangleMesh ellipsoidMesh(const Ellipsoid& shape, int segments) {
 
 }  // namespace
 
+bool dentsLieWithin(const Surface& surface, const std::optional<Dents>& dents, int segments) {
+  return surface.kind != Surface::Kind::Paraboloid ||
+         paraboloidMeshAt(surface.paraboloid, dents, segments).ok();
+}
+
 rb::Result<TriangleMesh> tessellate(const Surface& surface, const std::optional<Dents>& dents,
                                     int segments, double length_unit) {
   if (segments < kMinSegments || segments > kMaxSegments)

@@ -18,6 +18,12 @@ inline constexpr int kMinSegments = 8, kMaxSegments = 4096;
 /// within 1e-3 of the body's (docs/commands.md "rattleback export").
 inline constexpr int kDefaultSegments = 192;
 
+/// Whether the body's dents lie within it, so that tessellate (and `export`) make its solid on
+/// `segments`: true for a body without dents. Unlike tessellate's refusal, it does not work out
+/// how deep the dents could go (forty tessellations), which a sweep's `exports` column asks of
+/// every row.
+bool dentsLieWithin(const Surface& surface, const std::optional<Dents>& dents, int segments);
+
 /// The body's closed surface, wound outwards, geometric frame, metres.
 /// - Paraboloid: the bottom and the top are each a height over the rim's ellipse, sampled on
 ///   `segments` spokes and ⌈segments/6⌉ rings (so that the cells are about square when the

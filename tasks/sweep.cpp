@@ -13,6 +13,7 @@
 #include "scene/keys.hpp"
 #include "sim/compile.hpp"
 #include "sim/rollout.hpp"
+#include "sim/tessellate.hpp"
 #include "tasks/analysis.hpp"
 #include "tasks/job_pool.hpp"
 #include "tasks/output.hpp"
@@ -96,6 +97,7 @@ class Bodies {
 struct RowWork {
   ColumnNeeds needs = ColumnNeeds::WholeRun;
   bool forecast = false;
+  bool exports = false;
 };
 
 // One run of the sweep, or nothing when it was stopped on request.
@@ -126,6 +128,9 @@ std::optional<SweepRow> runRow(const scene::Sweep& sweep, const scene::SweepScen
   auto model = sim::compileRun(loaded->spec, body.value());
   if (!model) return refused(scene::describe(loaded.value(), model.error()));
 
+  if (work.exports)  // as `export` makes it, at its default number of segments
+    row.exports =
+        sim::dentsLieWithin(model->body->surface, model->body->dents, sim::kDefaultSegments);
   if (work.forecast) {
     const Forecast forecast = forecastReversal(model.value());
     row.forecast_s = forecast.time;
@@ -344,6 +349,9 @@ SweepRun runSweep(const scene::Sweep& sweep, const scene::SweepScenes& scenes,
   work.forecast = std::any_of(columns.begin(), columns.end(), [](const SweepResultColumn* c) {
     return c == &columnOf(SweepMetric::Forecast) ||
            std::string_view(c->column.name) == "forecast_note";
+  });
+  work.exports = std::any_of(columns.begin(), columns.end(), [](const SweepResultColumn* c) {
+    return std::string_view(c->column.name) == "exports";
   });
   std::vector<std::optional<SweepRow>> results(rows.size());
   std::mutex finished_mutex;

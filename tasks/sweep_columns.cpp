@@ -100,6 +100,18 @@ const SweepResultColumn kResults[] = {
      nullptr,
      ColumnNeeds::Nothing,
      false},
+    // Whether the body prints: a maker's sweep over the dents keeps the rows that export.
+    {{"exports", "",
+      "whether export writes the row's body as a solid: yes | no (a dent cuts through its "
+      "bottom or its rim)"},
+     [](const Row& r) {
+       return r.exports ? std::string(*r.exports ? "yes" : "no") : std::string();
+     },
+     std::nullopt,
+     nullptr,
+     nullptr,
+     ColumnNeeds::Nothing,
+     false},
 };
 
 }  // namespace

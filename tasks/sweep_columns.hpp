@@ -39,7 +39,8 @@ struct SweepRow {
   std::optional<double> energy_lost;       ///< fraction of the initial energy, at the end
   std::optional<double> forecast_s;        ///< s: the averaged theory's first reversal (analyze's)
   std::optional<ForecastNote> forecast_note;  ///< why forecast_s is, or is not, a time
-  double wall_s = 0;                          ///< wall-clock time of the run, s
+  std::optional<bool> exports;  ///< whether `export` writes the row's body: its dents within it
+  double wall_s = 0;            ///< wall-clock time of the run, s
 };
 
 /// The result columns with a number, which a figure can show (`--metric`, Python's `metric=`).

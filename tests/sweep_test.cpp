@@ -1019,6 +1019,31 @@ TEST(Sweep, TheForecastColumnIsAnalyzesForecast) {
   EXPECT_EQ(forecast, 3) << "−5 and −2 rad/s with the dents as shipped, +5 with them mirrored";
 }
 
+// `exports` says what `export` does with each row's body: scales either side of the shipped
+// dents' edge (they reach the bottom from 0.49, docs/getting-started.md), each checked by running
+// export on the row's scene, whose refusal is exit 2.
+TEST(Sweep, TheExportsColumnIsWhatExportDoes) {
+  const fs::path dir = scratch();
+  const fs::path sweep = writeSweep(dir, "base: " + kBase +
+                                             "\nvary:\n  body.dents.scale: [0.3, 0.48, 0.49, "
+                                             "0.6]\ncolumns: [exports]\n");
+  const Outcome r =
+      rattleback(dir, "sweep " + sweep.string() + " -q -o " + (dir / "t.csv").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = readCsv(slurp(dir / "t.csv"));
+  ASSERT_EQ(rows.size(), 5u);
+  int yes = 0;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const std::string scale = rows[i][1], cell = rows[i][at(rows, "exports")];
+    const Outcome e = rattleback(dir, "export " + kBase + " --set body.dents.scale=" + scale +
+                                          " -o " + (dir / ("b" + scale + ".stl")).string());
+    ASSERT_TRUE(e.status == 0 || e.status == 2) << e.err;
+    EXPECT_EQ(cell, e.status == 0 ? "yes" : "no") << "scale " << scale << ": " << e.err;
+    yes += cell == "yes";
+  }
+  EXPECT_EQ(yes, 2) << "0.3 and 0.48 export; 0.49 and 0.6 reach through the bottom";
+}
+
 // A mesh body whose bottom a quadric fits has analyze's theory (§P11.4), so its forecast too: the
 // sweep's column left every mesh body's empty while analyze gave it.
 TEST(Sweep, AMeshBodysForecastIsAnalyzes) {
