@@ -23,6 +23,7 @@
 #include "render/yuv.hpp"
 #include "sim/analysis.hpp"
 #include "sim/rollout.hpp"
+#include "tasks/against_theory.hpp"
 #include "tasks/output.hpp"
 #include "util/arguments.hpp"
 #include "util/format.hpp"
@@ -160,22 +161,11 @@ std::array<std::string, 2> bothNames(const std::vector<sim::Rollout>& runs,
     const bool preferred = sim::turns(preferred_direction, spin);
     names[i] = preferred ? "preferred" : "reversed";
     const bool reversed = runs[i].summary().first_reversal_s.has_value();
-    // Said as the report's captions say it (tasks/report/captions.cpp measuredAs): a reversal
-    // the preferred way agrees with a theory that finds the rocking grows either way.
-    const bool either_way = sim::growsEitherWay(model, std::abs(spin));
-    if (preferred && reversed && either_way)
-      notes.push_back("spun " + rb::show(spin) +
-                      " rad/s, its preferred way, the body reversed too, as the theory predicts "
-                      "for this body (its rocking grows either way)");
-    else if (preferred && !reversed && either_way)
-      notes.push_back("spun " + rb::show(spin) +
-                      " rad/s, its preferred way, the body did not reverse within the run, "
-                      "although the theory's rule of thumb predicts it would (a longer run may "
-                      "show it)");
-    else if (preferred == reversed)
-      notes.push_back("spun " + rb::show(spin) + " rad/s the body " +
-                      (preferred ? "reversed although the theory prefers this direction"
-                                 : "did not reverse within the run"));
+    const tasks::AgainstTheory said =
+        tasks::againstTheory(preferred, reversed, sim::growsEitherWay(model, std::abs(spin)));
+    if (said != tasks::AgainstTheory::NothingToSay)
+      notes.push_back("spun " + rb::show(spin) + " rad/s" +
+                      std::string(tasks::wordsFor(said, tasks::Front::Note)));
   }
   return names;
 }

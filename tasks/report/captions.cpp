@@ -6,6 +6,7 @@
 #include <sstream>
 #include <vector>
 
+#include "tasks/against_theory.hpp"
 #include "tasks/analysis.hpp"
 #include "tasks/report/html.hpp"
 
@@ -165,20 +166,7 @@ std::string measuredAs(const std::optional<RunRecord>& run, bool ccw, std::optio
            ? "<b>first reversal at " + number(run->first_reversal_s, "%.3f") + " s</b>"
            : reversalOf(*run));
   const bool reversed = !run->reversals_s.empty() || run->first_reversal_s.has_value();
-  if (preferred && *preferred && reversed && either_way)
-    text += ", as the theory predicts for this body (its rocking grows either way)";
-  else if (preferred && *preferred && !reversed && either_way)
-    text +=
-        ": <b>no reversal this way, although the theory's rule of thumb predicts one</b> (its "
-        "rocking grows either way, but drag may stop it first; a longer run may show it)";
-  else if (preferred && *preferred && reversed)
-    text +=
-        ": <b>it reversed although the theory prefers this direction</b> (its rocking grew "
-        "more slowly than the other way's, but it grew)";
-  else if (preferred && !*preferred && !reversed)
-    text +=
-        ": <b>no reversal, although the theory predicts one this way</b> (a longer run "
-        "may show it)";
+  if (preferred) text += wordsFor(againstTheory(*preferred, reversed, either_way), Front::Caption);
   return text;
 }
 

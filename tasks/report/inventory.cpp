@@ -75,18 +75,24 @@ std::optional<std::string> slotOf(const OutputEntry& e,
   }
 }
 
+// A video's own run as the manifest lists it (its spin, length and first reversal).
+RunRecord videoRunOf(const OutputEntry& e) {
+  RunRecord run;
+  run.command = "render";
+  run.initial_spin = e.spin;
+  run.simulated_s = e.simulated_s;
+  run.first_reversal_s = e.first_reversal_s;
+  return run;
+}
+
 // What the manifest says of a file beside its slot: a still's caption, a video's spin, the
 // scene it was made from.
 void noteListed(const OutputEntry& e, Folder& folder) {
   if (e.kind == OutputKind::Still) folder.scenes[e.scene].captions[e.file] = stillCaption(e);
-  if (e.kind == OutputKind::Video && e.spin) folder.scenes[e.scene].video_spins[e.file] = *e.spin;
-  if (e.kind == OutputKind::Video && e.spin && e.simulated_s) {
-    RunRecord run;
-    run.command = "render";
-    run.initial_spin = e.spin;
-    run.simulated_s = e.simulated_s;
-    run.first_reversal_s = e.first_reversal_s;
-    folder.scenes[e.scene].video_runs[e.file] = run;
+  if (e.kind == OutputKind::Video && e.spin) {
+    ManifestVideo& video = folder.scenes[e.scene].manifest_videos[e.file];
+    video.spin = *e.spin;
+    if (e.simulated_s) video.run = videoRunOf(e);
   }
   if (!e.made_from.empty()) folder.scenes[e.scene].made_from[e.file] = e.made_from;
 }

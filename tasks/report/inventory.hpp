@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,14 @@ inline constexpr const char* kPlotSuffixes[] = {"-spin.png", "-energy.png", "-ti
 inline constexpr const char* kDataSuffixes[] = {".csv.json", "-analysis.json", "-analysis.txt",
                                                 ".csv"};
 
+/// What the manifest says of a video, where it gives the video's spin.
+struct ManifestVideo {
+  double spin = 0;  ///< rad/s, as rendered
+  /// The video's own run, where the manifest says (manifest.hpp: simulated_s, first_reversal_s):
+  /// its command "render".
+  std::optional<RunRecord> run;
+};
+
 /// The files of one scene (by the name before a known suffix), found in DIR.
 struct SceneFiles {
   std::map<std::string, std::string> by_suffix;  ///< suffix → file name
@@ -40,11 +49,8 @@ struct SceneFiles {
   std::map<std::string, std::string> captions;
   /// The scene each file was made from, as the manifest says (tasks::madeFrom), where it says.
   std::map<std::string, std::string> made_from;
-  /// Each video's spin, rad/s, as the manifest says, where it says.
-  std::map<std::string, double> video_spins;
-  /// Each video's own run as the manifest says, where it says (manifest.hpp: simulated_s,
-  /// first_reversal_s): file name → that run, its command "render".
-  std::map<std::string, RunRecord> video_runs;
+  /// Each video the manifest lists with its spin: file name → what the manifest says of it.
+  std::map<std::string, ManifestVideo> manifest_videos;
   bool has(const std::string& suffix) const { return by_suffix.count(suffix) > 0; }
   const std::string& at(const std::string& suffix) const { return by_suffix.at(suffix); }
 };

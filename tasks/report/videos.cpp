@@ -18,6 +18,12 @@ struct Videos {
   std::optional<bool> ccw_preferred;  ///< the preferred direction as analyze found it
   bool either_way = false;            ///< analyze predicts a reversal the preferred way too
 
+  // What the manifest says of the video `file`, where it gives its spin; else null.
+  const ManifestVideo* listedAs(const std::string& file) const {
+    const auto listed = f.manifest_videos.find(file);
+    return listed == f.manifest_videos.end() ? nullptr : &listed->second;
+  }
+
   // The first run spun counter-clockwise (`ccw`) or clockwise: a teacher who simulated both
   // ways under two names found the reversing video's caption without its run's result.
   std::optional<RunRecord> runSpun(bool ccw) const {
@@ -31,9 +37,8 @@ struct Videos {
   // caption without its reversal.
   std::optional<RunRecord> runFor(const std::string& file, bool ccw) const {
     if (auto run = runSpun(ccw)) return run;
-    const auto shown = f.video_runs.find(file);
-    if (shown == f.video_runs.end()) return std::nullopt;
-    return shown->second;
+    const ManifestVideo* listed = listedAs(file);
+    return listed ? listed->run : std::nullopt;
   }
 
   // A video's poster is its own first frame (NAME-reversed.png for NAME-reversed.mp4, as the
@@ -55,9 +60,9 @@ struct Videos {
 
   // A video's spin as the manifest lists it: none where it does not (or says 0).
   std::optional<double> spinOf(const std::string& file) const {
-    const auto spin = f.video_spins.find(file);
-    if (spin == f.video_spins.end() || spin->second == 0) return std::nullopt;
-    return spin->second;
+    const ManifestVideo* listed = listedAs(file);
+    if (!listed || listed->spin == 0) return std::nullopt;
+    return listed->spin;
   }
 
   static std::string rads(double spin) { return number(spin, "%+.3g") + " rad/s"; }
