@@ -21,6 +21,7 @@
 #include "tasks/sweep.hpp"
 #include "tasks/sweep_jobs.hpp"
 #include "util/format.hpp"
+#include "util/nearest.hpp"
 #include "util/output_place.hpp"
 
 namespace app {
@@ -92,8 +93,10 @@ tasks::SweepMetric metricNamed(const std::string& name) {
 // Why --metric names no metric, or nothing.
 rb::Status metricProblem(const std::string& name) {
   if (rb::parseName<tasks::SweepMetric>(name)) return {};
-  return rb::Status::fail("--metric: '" + name + "' is not a column to plot (one of " +
-                          rb::choices<tasks::SweepMetric>(", ") + ")");
+  const auto nearest = rb::nearestWord(name, rb::namesOf<tasks::SweepMetric>());
+  return rb::Status::fail("--metric: '" + name + "' is not a column to plot" +
+                          (nearest ? "; did you mean " + *nearest + "?" : std::string()) +
+                          " (one of " + rb::choices<tasks::SweepMetric>(", ") + ")");
 }
 
 // The field of `name` in a line of a table of these result columns, or none.

@@ -50,15 +50,19 @@ std::optional<Stop> Watchdog::observe(const StepEnd& end) {
     if (end.step == 0)
       msg << "the body starts beyond the mesh's fitted bottom (tilt " << *end.rim_tilt_deg
           << " degrees, beyond its cap of " << *end.cap_deg
-          << " degrees), where the smooth bottom does not describe it; use contact.model: "
-             "points (the whole mesh, with a contact.stiffness, e.g. 2.0e4 N/m), or a smaller "
-             "initial.tilt";
+          << " degrees), where the smooth bottom does not describe it; give a smaller "
+             "initial.tilt (contact.model: points takes the whole mesh, with a "
+             "contact.stiffness, but resting on many points it loses a spin within a second: "
+             "your-own-body.md, \"The fitted bottom\")";
     else
       msg << "the contact point left the mesh's fitted bottom (tilt " << *end.rim_tilt_deg
           << " degrees, beyond its cap of " << *end.cap_deg << " degrees) at t = " << end.t
           << " s (step " << end.step
-          << "): the body rocked further than the smooth bottom describes; use contact.model: "
-             "points (the whole mesh, with a contact.stiffness, e.g. 2.0e4 N/m)";
+          << "): the body rocked further than the smooth bottom describes, and no contact "
+             "model follows a mesh body on from there with its spin (contact.model: points, "
+             "with a contact.stiffness, shows its rocking and sliding, but resting on many "
+             "points it loses the spin within a second: your-own-body.md, \"The fitted "
+             "bottom\")";
     message_ = msg.str();
     return Stop{StopReason::OnRim, end.t, end.step};
   }

@@ -156,13 +156,13 @@ std::vector<RunWarning> runWarnings(const sim::Model& model, const sim::RunSumma
                  "the step is too large for this run; try a smaller simulation.dt, or "
                  "simulation.tolerance with dopri5"});
   if (run.floor_pulled_s) {
-    char text[400];
+    char text[1000];
     std::snprintf(text, sizeof text,
                   "from %.4g s the floor had to pull the body down (normal force below 0): "
                   "rolling holds it to the floor, where a real body would lift off; run it "
                   "with contact.model: auto (and a contact.stiffness, e.g. 2.0e4 N/m) to let it "
-                  "and compare (docs/physics.md P4.6)",
-                  *run.floor_pulled_s);
+                  "and compare (%s P4.6)",
+                  *run.floor_pulled_s, rb::docPage("physics.md").c_str());
     w.push_back({"floor_pulled", text});
   }
   // The regularised friction damps the slip at the rate μ g/ε (docs/physics.md P4.3): a fixed
@@ -188,15 +188,16 @@ std::vector<RunWarning> runWarnings(const sim::Model& model, const sim::RunSumma
     }
   }
   if (run.friction_exceeded_s) {
-    char text[600];
+    char text[1000];
     std::snprintf(text, sizeof text,
                   "from %.4g s rolling needed more friction than contact.friction %g gives (up "
                   "to %.2g of the normal force): rolling holds the contact point still whatever "
                   "that takes, where a real body would slip; run it with contact.model: auto "
                   "(and a contact.stiffness, e.g. 2.0e4 N/m) to let it slip: where its reversal "
                   "is this run's to a few hundredths, the slip does not matter "
-                  "(docs/physics.md P4.6)",
-                  *run.friction_exceeded_s, model.contact.friction, run.friction_needed);
+                  "(%s P4.6)",
+                  *run.friction_exceeded_s, model.contact.friction, run.friction_needed,
+                  rb::docPage("physics.md").c_str());
     w.push_back({"friction_exceeded", text});
   }
   return w;

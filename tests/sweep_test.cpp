@@ -904,6 +904,14 @@ TEST(Sweep, ColumnsAreListedOnceFromTheTablesOwnAndATypoIsNamedWithTheNearest) {
             std::string::npos)
       << r.err;
   EXPECT_FALSE(fs::exists(dir / "t.csv"));
+  // A misspelt metric is named with the nearest, as a misspelt column is.
+  const Outcome typo = rattleback(
+      dir, "sweep " + sweep.string() + " -q --metric final_spn -o " + (dir / "t.csv").string());
+  EXPECT_EQ(typo.status, 2);
+  EXPECT_NE(typo.err.find("--metric: 'final_spn' is not a column to plot; did you mean "
+                          "final_spin? (one of "),
+            std::string::npos)
+      << typo.err;
 }
 
 // A sweep that lists its columns holds those (after the row and the axes, in the order listed),
