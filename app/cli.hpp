@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "app/commands.hpp"
 
@@ -30,7 +31,9 @@ struct CommandSpec {
 const std::vector<CommandSpec>& commands();
 
 struct Cli {
-  Cli();
+  /// `first_argument`: the command line's first word (argv[1]); where it names a command, only
+  /// that command is defined.
+  explicit Cli(std::string_view first_argument = {});
   /// Every command's help footer (the documentation's place; snapshot's suite keys).
   void addFooters();
   Cli(const Cli&) = delete;

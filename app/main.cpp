@@ -27,7 +27,7 @@ std::filesystem::path renderProgram() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  app::Cli cli;
+  app::Cli cli(argc > 1 ? argv[1] : "");
   if (auto status = cli.parse(argc, argv)) return *status;
   if (!cli.chosen().draws) return app::runGuarded(cli);
   const std::filesystem::path program = renderProgram();

@@ -4,7 +4,7 @@
 #include "app/cli.hpp"
 
 int main(int argc, char** argv) {
-  app::Cli cli;
+  app::Cli cli(argc > 1 ? argv[1] : "");
   if (auto status = cli.parse(argc, argv)) return *status;
   return app::runGuarded(cli);
 }
