@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <set>
 
 #include "app/cli.hpp"
 #include "app/commands.hpp"
@@ -13,6 +14,7 @@
 #include "app/progress.hpp"
 #include "media/snapshot_report.hpp"
 #include "tasks/output.hpp"
+#include "util/arguments.hpp"
 #include "util/format.hpp"
 
 namespace app {
@@ -43,27 +45,74 @@ std::string figures(const CaseResult& r, const render::Tolerance& tolerance) {
   return said;
 }
 
-// The cases that could not be drawn, each said; the worst exit status among them (0: none).
-int sayFailed(const std::vector<CaseResult>& results) {
+// The cases that could not be drawn, each said; the worst exit status among them (0: none). A
+// reason that many cases share (an OpenGL that will not start fails them all) is said once, with
+// the others' names after it.
+int sayFailed(const scene::SnapshotSuite& suite, const std::vector<CaseResult>& results) {
   int status = kOk;
-  for (const CaseResult& r : results) {
+  std::vector<std::pair<std::string, std::vector<std::string>>> said;  // reason, other cases
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const CaseResult& r = results[i];
     if (r.status != CaseStatus::Failed || !r.error) continue;
-    tell(Tone::Error, r.error->text());
-    const int own = r.error->machine                     ? kMachine
-                    : r.ending == tasks::Ending::Stopped ? kDiverged
-                                                         : kBadInput;
-    status = std::max(status, own);
+    const std::string text = r.error->text();
+    const std::string own = suite.cases[i].place + ": " + suite.cases[i].name + ": ";
+    const std::string reason = text.starts_with(own) ? text.substr(own.size()) : text;
+    const auto same =
+        std::find_if(said.begin(), said.end(), [&](const auto& s) { return s.first == reason; });
+    if (same != said.end()) {
+      same->second.push_back(suite.cases[i].name);
+    } else {
+      tell(Tone::Error, text);
+      said.push_back({reason, {}});
+    }
+    const int code = r.error->machine                     ? kMachine
+                     : r.ending == tasks::Ending::Stopped ? kDiverged
+                                                          : kBadInput;
+    status = std::max(status, code);
+  }
+  for (const auto& [reason, others] : said) {
+    if (others.empty()) continue;
+    std::string names;
+    for (const std::string& name : others) names += (names.empty() ? "" : ", ") + name;
+    tell(Tone::Note, "the same for " + std::to_string(others.size()) +
+                         (others.size() == 1 ? " more case: " : " more cases: ") + names);
   }
   return status;
 }
 
+// The PNGs in the goldens folder that no case of the suite names: a case removed or renamed
+// leaves its golden behind, which nothing compares any more. Said, never removed (the folder may
+// hold another suite's goldens too).
+void sayStrayGoldens(const scene::SnapshotSuite& suite) {
+  std::set<std::string> named;
+  for (const scene::SnapshotCase& c : suite.cases) named.insert(c.name + ".png");
+  std::vector<std::string> stray;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(suite.goldens, ec))
+    if (entry.path().extension() == ".png" && !named.contains(entry.path().filename().string()))
+      stray.push_back(entry.path().string());
+  if (stray.empty()) return;
+  std::sort(stray.begin(), stray.end());
+  std::string list;
+  for (std::size_t i = 0; i < stray.size() && i < 5; ++i) list += (i ? ", " : "") + stray[i];
+  if (stray.size() > 5) list += " and " + std::to_string(stray.size() - 5) + " more";
+  tell(Tone::Note, suite.file + ": " + std::to_string(stray.size()) +
+                       (stray.size() == 1 ? " golden belongs" : " goldens belong") +
+                       " to no case of this suite (a case removed or renamed?): " + list +
+                       (stray.size() == 1 ? "; delete it if its case is gone"
+                                          : "; delete them if their cases are gone"));
+}
+
 // --update: the goldens that differ or are missing are written; the rest are left alone, so that
 // an unchanged suite writes nothing.
-int update(const scene::SnapshotSuite& suite, const std::vector<CaseResult>& results, bool quiet) {
+int update(const scene::SnapshotSuite& suite, const std::vector<CaseResult>& results,
+           const std::string& report, bool quiet) {
   int counts[3] = {0, 0, 0};  // added, changed, unchanged
   for (std::size_t i = 0; i < results.size(); ++i) {
     const CaseResult& r = results[i];
-    const int kind = r.status == CaseStatus::Missing ? 0 : r.status == CaseStatus::Differs ? 1 : 2;
+    const int kind = r.status == CaseStatus::Missing                                         ? 0
+                     : r.status == CaseStatus::Differs || r.status == CaseStatus::Unreadable ? 1
+                                                                                             : 2;
     if (kind < 2) {
       if (auto made = tasks::makeParentFolder(r.golden); !made) return fail(made);
       const rb::OutputNamedBy naming("goldens:");
@@ -72,12 +121,16 @@ int update(const scene::SnapshotSuite& suite, const std::vector<CaseResult>& res
     ++counts[kind];
     if (!quiet)
       std::printf("%-10s %s  %s\n",
-                  kind == 0   ? "added"
-                  : kind == 1 ? "changed"
-                              : "unchanged",
+                  kind == 0                            ? "added"
+                  : r.status == CaseStatus::Unreadable ? "replaced"
+                  : kind == 1                          ? "changed"
+                                                       : "unchanged",
                   suite.cases[i].name.c_str(), r.golden.c_str());
   }
   if (!quiet) std::printf("%d added, %d changed, %d unchanged\n", counts[0], counts[1], counts[2]);
+  // Every golden is now what was drawn: a report of an earlier failure no longer stands.
+  if (media::removeReport(report) && !quiet)
+    std::printf("removed %s, the report of an earlier run that failed\n", report.c_str());
   return kOk;
 }
 
@@ -88,13 +141,21 @@ namespace {
 // Each case's verdict on standard output; the report when any differs or is missing.
 int verdicts(const scene::SnapshotSuite& suite, const std::vector<CaseResult>& results,
              const std::string& report, bool quiet) {
-  int same = 0, differ = 0, missing = 0;
+  int same = 0, differ = 0, missing = 0, unreadable = 0;
   for (std::size_t i = 0; i < results.size(); ++i) {
     const CaseResult& r = results[i];
     const scene::SnapshotCase& c = suite.cases[i];
     same += r.status == CaseStatus::Same;
     differ += r.status == CaseStatus::Differs;
     missing += r.status == CaseStatus::Missing;
+    unreadable += r.status == CaseStatus::Unreadable;
+    if (r.status == CaseStatus::Unreadable) {
+      // The input at fault, said on standard error even with -q, as any bad input is.
+      tell(Tone::Error, r.error->text() + "; it is case " + c.name +
+                            "'s golden: rattleback snapshot " + suite.file +
+                            " --update replaces it with the image drawn now");
+      continue;
+    }
     if (quiet) continue;
     if (r.status == CaseStatus::Missing)
       std::printf("missing  %s  %s does not exist: rattleback snapshot %s --update writes it\n",
@@ -103,7 +164,7 @@ int verdicts(const scene::SnapshotSuite& suite, const std::vector<CaseResult>& r
       std::printf("%-7s  %s  %s\n", r.status == CaseStatus::Same ? "same" : "DIFFERS",
                   c.name.c_str(), figures(r, c.tolerance).c_str());
   }
-  if (differ + missing == 0) {
+  if (differ + missing + unreadable == 0) {
     if (media::removeReport(report) && !quiet)
       std::printf("removed %s, the report of an earlier run that failed\n", report.c_str());
     if (!quiet) std::printf("%s: all %d match\n", suite.file.c_str(), same);
@@ -111,15 +172,18 @@ int verdicts(const scene::SnapshotSuite& suite, const std::vector<CaseResult>& r
   }
   if (auto e = media::writeReport(report, suite, results); !e) return fail(e);
   if (!quiet)
-    std::printf("%d same, %d differ, %d missing; report: %s\n", same, differ, missing,
+    std::printf("%d same, %d differ, %d missing%s; report: %s\n", same, differ, missing,
+                unreadable ? (", " + std::to_string(unreadable) + " unreadable").c_str() : "",
                 (fs::path(report) / "index.html").c_str());
-  return 1;
+  return unreadable ? kBadInput : 1;
 }
 
 }  // namespace
 
 int snapshotCommand(const SnapshotArgs& args) {
   installInterruptHandlers();
+  // The cases' arguments come from the suite's keys, and messages name them so ("backend egl").
+  rb::argument_style = rb::ArgumentStyle::Key;
   auto suite = scene::loadSnapshotSuite(args.file);
   if (!suite) return fail(suite);
   const std::string report = media::reportFolder(suite.value(), args.report);
@@ -147,9 +211,11 @@ int snapshotCommand(const SnapshotArgs& args) {
     tell(Tone::Error, args.file + ": interrupted; nothing written");
     return interruptedStatus();
   }
-  if (const int failed = sayFailed(results); failed != kOk) return failed;
-  return args.update ? update(suite.value(), results, args.quiet)
-                     : verdicts(suite.value(), results, report, args.quiet);
+  if (const int failed = sayFailed(suite.value(), results); failed != kOk) return failed;
+  const int status = args.update ? update(suite.value(), results, report, args.quiet)
+                                 : verdicts(suite.value(), results, report, args.quiet);
+  if (!args.quiet) sayStrayGoldens(suite.value());
+  return status;
 }
 
 int runSnapshot(Cli& cli) {

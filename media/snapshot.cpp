@@ -23,8 +23,8 @@ tasks::Overrides overridesOf(const scene::SnapshotCase& c) {
   return o;
 }
 
-// One case drawn and compared. A golden that cannot be read (not a PNG) counts as differing,
-// so that --update replaces it.
+// One case drawn and compared. A golden that cannot be read (not a PNG; a Git LFS pointer) is
+// Unreadable: the input at fault, which --update replaces.
 CaseResult runCase(const scene::SnapshotSuite& suite, const scene::SnapshotCase& c,
                    const tasks::LoadedScene& loaded, render::Backend backend,
                    const std::function<bool()>& cancelled) {
@@ -37,6 +37,7 @@ CaseResult runCase(const scene::SnapshotSuite& suite, const scene::SnapshotCase&
   request.t_named = c.place + ": " + c.name + ": t";
   request.title = c.title ? *c.title : c.name;
   request.backend = c.backend.value_or(backend);
+  request.asked_by = c.place + ": " + c.name;
   request.cancelled = cancelled;
   auto drawn = renderStill(loaded, request);
   if (!drawn) {
@@ -56,10 +57,14 @@ CaseResult runCase(const scene::SnapshotSuite& suite, const scene::SnapshotCase&
     r.status = CaseStatus::Missing;
     return r;
   }
-  const bool read = static_cast<bool>(render::readPng(r.golden, r.expected));
+  if (auto read = render::readPng(r.golden, r.expected); !read) {
+    r.status = CaseStatus::Unreadable;
+    r.error = read.error();
+    r.expected = {};
+    return r;
+  }
   r.comparison = render::compareImages(r.image, r.expected, c.tolerance.channel);
-  r.status =
-      read && render::matches(r.comparison, c.tolerance) ? CaseStatus::Same : CaseStatus::Differs;
+  r.status = render::matches(r.comparison, c.tolerance) ? CaseStatus::Same : CaseStatus::Differs;
   return r;
 }
 

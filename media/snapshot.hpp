@@ -18,10 +18,11 @@ namespace media {
 
 /// What became of one case.
 enum class CaseStatus {
-  Same,     ///< matches its golden within the tolerance
-  Differs,  ///< beyond it (or of another size)
-  Missing,  ///< no golden yet
-  Failed,   ///< not drawn: its run stopped, or the machine failed (CaseResult::error)
+  Same,        ///< matches its golden within the tolerance
+  Differs,     ///< beyond it (or of another size)
+  Missing,     ///< no golden yet
+  Unreadable,  ///< a file in the golden's place that is not a PNG (CaseResult::error says why)
+  Failed,      ///< not drawn: its run stopped, or the machine failed (CaseResult::error)
 };
 
 struct CaseResult {
@@ -31,7 +32,7 @@ struct CaseResult {
   render::Image image;     ///< as drawn now
   render::Image expected;  ///< the golden as read (empty when missing)
   render::Comparison comparison;
-  std::optional<rb::Error> error;  ///< for Failed: why (machine set for the machine's faults)
+  std::optional<rb::Error> error;  ///< Failed, Unreadable: why (machine set for its faults)
   tasks::Ending ending = tasks::Ending::Completed;
 };
 

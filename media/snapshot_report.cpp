@@ -27,7 +27,7 @@ figure { margin: 0; }
 figure img { max-width: 420px; border: 1px solid #999; image-rendering: pixelated; }
 figcaption { font-size: 90%; color: #555; }
 table.figures td { padding: 0 1em 0 0; }
-.differs { color: #b00; } .missing { color: #a60; }
+.differs { color: #b00; } .missing { color: #a60; } .unreadable { color: #a60; }
 </style>)";
 
 void writeImage(std::ostream& out, const std::string& file, const std::string& caption) {
@@ -59,12 +59,23 @@ void writeFigures(std::ostream& out, const scene::SnapshotCase& c, const CaseRes
   out << "</table>\n";
 }
 
+// Whether a case is in the report: it differs, or there is no golden to compare it with.
+bool reported(const CaseResult& r) {
+  return r.status == CaseStatus::Differs || r.status == CaseStatus::Missing ||
+         r.status == CaseStatus::Unreadable;
+}
+
 // One case's section; its images are written beside the page by the caller.
 void writeCase(std::ostream& out, const scene::SnapshotCase& c, const CaseResult& r) {
-  const bool missing = r.status == CaseStatus::Missing;
+  const bool missing = r.status != CaseStatus::Differs;  // no golden image to show
   out << "<section class=\"case\" id=\"" << escape(c.name) << "\">\n<h2 class=\""
       << (missing ? "missing" : "differs") << "\">" << escape(c.name) << ": "
-      << (missing ? "no golden yet (--update writes it)" : "differs") << "</h2>\n";
+      << (r.status == CaseStatus::Missing      ? "no golden yet (--update writes it)"
+          : r.status == CaseStatus::Unreadable ? "the golden cannot be read (--update replaces it)"
+                                               : "differs")
+      << "</h2>\n";
+  if (r.status == CaseStatus::Unreadable && r.error)
+    out << "<p class=\"unreadable\">" << escape(r.error->text()) << "</p>\n";
   writeFigures(out, c, r);
   out << "<div class=\"images\">\n";
   if (!missing) writeImage(out, c.name + "-golden.png", "golden");
@@ -86,10 +97,11 @@ std::string pageOf(const scene::SnapshotSuite& suite, const std::vector<CaseResu
       << "<title>Snapshot report: " << escape(suite.file) << "</title>\n"
       << kStyle << "\n</head>\n<body>\n<h1>Snapshot report</h1>\n<p id=\"summary\">"
       << escape(suite.file) << ": " << failing << " of " << results.size()
-      << " cases differ or have no golden.</p>\n";
+      << " cases differ or have no golden. Where the new images are right (an intended "
+      << "change), <code>rattleback snapshot " << escape(suite.file)
+      << " --update</code> makes them the goldens.</p>\n";
   for (std::size_t i = 0; i < results.size(); ++i)
-    if (results[i].status == CaseStatus::Differs || results[i].status == CaseStatus::Missing)
-      writeCase(out, suite.cases[i], results[i]);
+    if (reported(results[i])) writeCase(out, suite.cases[i], results[i]);
   out << "</body>\n</html>\n";
   return out.str();
 }
@@ -100,9 +112,9 @@ rb::Status writeImages(const fs::path& dir, const scene::SnapshotSuite& suite,
   for (std::size_t i = 0; i < results.size(); ++i) {
     const CaseResult& r = results[i];
     const std::string name = suite.cases[i].name;
-    if (r.status != CaseStatus::Differs && r.status != CaseStatus::Missing) continue;
+    if (!reported(r)) continue;
     if (auto e = render::writePng((dir / (name + "-new.png")).string(), r.image); !e) return e;
-    if (r.status == CaseStatus::Missing) continue;
+    if (r.status != CaseStatus::Differs) continue;
     if (r.expected.width > 0)
       if (auto e = render::writePng((dir / (name + "-golden.png")).string(), r.expected); !e)
         return e;

@@ -75,7 +75,7 @@ rb::Result<StillResult> renderStill(const tasks::LoadedScene& loaded, const Stil
   auto triangles = bodyTrianglesOf(loaded, settings.surface);
   if (!triangles) return triangles.error();
   auto created = render::Renderer::create(settings, points, triangles.value());
-  if (!created) return rb::machineError("still: " + created.error().text());
+  if (!created) return rb::machineError(request.asked_by + ": " + created.error().text());
   result.opengl = created.value()->description();
   render::Renderer& renderer = *created.value();
   // Progress in thousandths of the simulated time of both runs (to t, then the framing's).

@@ -28,6 +28,8 @@ struct StillRequest {
   bool readouts = true;         ///< title, read-outs and the spin inset
   bool transparent = false;     ///< alpha: no floor, no background, no read-outs
   render::Backend backend = render::Backend::Auto;
+  /// What an OpenGL fault's line begins with: the command, or a snapshot case's place and name.
+  std::string asked_by = "still";
   std::function<bool()> cancelled;  ///< asked as the run goes: true stops (may be empty)
   /// Called as the runs go (the one to t, then the framing's over the whole run), with the
   /// thousandths done and 1000 (may be empty).

@@ -271,7 +271,8 @@ rb::Result<std::unique_ptr<GlContext>> GlContext::create(Backend backend, int wi
       return std::unique_ptr<GlContext>(std::move(egl));
     }
     if (backend == Backend::Egl)
-      return rb::machineError(rb::argumentGiven("backend", "egl") + ": " + egl_error);
+      return rb::machineError(rb::argumentGiven("backend", "egl") + ": " + egl_error + "; " +
+                              rb::argumentGiven("backend", "osmesa") + " draws on the CPU");
   }
   auto osmesa = std::make_unique<OsMesaContext>();
   osmesa_error = osmesa->create(width, height);

@@ -103,8 +103,17 @@ rb::Status readPng(const std::string& path, Image& image) {
   file.f = std::fopen(path.c_str(), "rb");
   if (!file.f) return rb::Status::fail(path + ": cannot read: " + std::strerror(errno));
   unsigned char signature[8] = {};
-  if (std::fread(signature, 1, 8, file.f) != 8 || png_sig_cmp(signature, 0, 8))
+  if (std::fread(signature, 1, 8, file.f) != 8 || png_sig_cmp(signature, 0, 8)) {
+    // A clone without Git LFS's files holds, in each PNG's place, the pointer text LFS writes
+    // (git-lfs's spec: its first line is "version https://git-lfs..."): the way out is LFS's.
+    char rest[16] = {};
+    if (std::memcmp(signature, "version ", 8) == 0 && std::fread(rest, 1, 15, file.f) == 15 &&
+        std::strcmp(rest, "https://git-lfs") == 0)
+      return rb::Status::fail(path +
+                              ": cannot read the PNG: a Git LFS pointer, not the image (git lfs "
+                              "pull fetches it)");
     return rb::Status::fail(path + ": cannot read the PNG: not a PNG file");
+  }
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   std::vector<png_bytep> rows;  // before setjmp: nothing with a destructor is made after it

@@ -3,9 +3,20 @@
 #include <charconv>
 #include <cmath>
 
+#include "util/arguments.hpp"
 #include "util/format.hpp"
 
 namespace tasks {
+namespace {
+
+// The way to a longer run in the caller's words: a snapshot suite has no duration of its own,
+// so there it is the scene's.
+std::string longerDuration() {
+  if (rb::argument_style.load() == rb::ArgumentStyle::Key) return ": a longer one in the scene";
+  return "; a longer " + rb::argumentName("duration");
+}
+
+}  // namespace
 
 rb::Result<StillTime> parseStillTime(std::string_view text, const std::string& option) {
   StillTime time;
@@ -42,8 +53,8 @@ rb::Result<double> resolveStillTime(const StillTime& time, sim::Rollout& run,
   if (const auto& first = run.summary().first_reversal_s) return *first;
   return rb::Error{"", option + " " + std::string(rb::nameOf(*time.named)) +
                            ": the run has no reversal within its " + rb::show(duration) +
-                           " s (simulation.duration; a longer --duration, or the other spin, "
-                           "may reverse)"};
+                           " s (simulation.duration" + longerDuration() +
+                           ", or the other spin, may reverse)"};
 }
 
 }  // namespace tasks

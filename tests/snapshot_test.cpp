@@ -30,11 +30,13 @@ void put(const fs::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
 }
 
-// Runs rattleback in `dir` with stdout and stderr into `said`; the exit status.
-int runIn(const fs::path& dir, const std::string& args, std::string* said = nullptr) {
+// Runs rattleback in `dir` (with `env`, "NAME=value ...", set) with stdout and stderr into
+// `said`; the exit status.
+int runIn(const fs::path& dir, const std::string& args, std::string* said = nullptr,
+          const std::string& env = "") {
   const fs::path out = dir / "said.txt";
-  const std::string command =
-      "cd " + dir.string() + " && " + RATTLEBACK_BIN + " " + args + " >" + out.string() + " 2>&1";
+  const std::string command = "cd " + dir.string() + " && " + env + (env.empty() ? "" : " ") +
+                              RATTLEBACK_BIN + " " + args + " >" + out.string() + " 2>&1";
   const int raw = std::system(command.c_str());
   if (said) *said = slurp(out);
   fs::remove(out);
@@ -172,4 +174,58 @@ TEST(Snapshot, ABadSuiteIsOneLineAndWritesNothing) {
   EXPECT_EQ(slurp(dir / "mine-notes/notes.txt"), "mine");
   EXPECT_FALSE(fs::exists(dir / "goldens"));
   EXPECT_FALSE(fs::exists(dir / "snapshot-report"));
+}
+
+// A golden that is not a PNG (what a clone without Git LFS's files holds in its place) is the
+// input at fault: exit 2, the reason and the way out on standard error, the case in the report.
+// --update replaces it and removes the report that stood for the failure; a golden no case
+// names is said, and left where it is.
+TEST(Snapshot, AnUnreadableGoldenIsBadInputThatUpdateReplaces) {
+  const fs::path dir = folder("unreadable");
+  put(dir / "mine.yaml", slurp(kSource / "scenes/rattleback.yaml"));
+  put(dir / "suite.yaml", suiteOf("mine.yaml", "goldens"));
+  std::string said;
+  ASSERT_EQ(runIn(dir, "snapshot suite.yaml --update -q", &said), 0) << said;
+  put(dir / "goldens/rest.png", "version https://git-lfs.github.com/spec/v1\noid sha256:00\n");
+  fs::copy_file(dir / "goldens/turning.png", dir / "goldens/gone.png");
+  EXPECT_EQ(runIn(dir, "snapshot suite.yaml", &said), 2) << said;
+  EXPECT_NE(said.find("goldens/rest.png: cannot read the PNG: a Git LFS pointer, not the image "
+                      "(git lfs pull fetches it); it is case rest's golden: rattleback snapshot "
+                      "suite.yaml --update replaces it"),
+            std::string::npos)
+      << said;
+  EXPECT_NE(said.find("1 same, 0 differ, 0 missing, 1 unreadable"), std::string::npos) << said;
+  EXPECT_NE(said.find("1 golden belongs to no case of this suite (a case removed or renamed?): "
+                      "goldens/gone.png"),
+            std::string::npos)
+      << said;
+  EXPECT_NE(slurp(dir / "snapshot-report/index.html").find("the golden cannot be read"),
+            std::string::npos);
+  EXPECT_TRUE(fs::exists(dir / "snapshot-report/rest-new.png"));
+  ASSERT_EQ(runIn(dir, "snapshot suite.yaml --update", &said), 0) << said;
+  EXPECT_NE(said.find("replaced   rest"), std::string::npos) << said;
+  EXPECT_FALSE(fs::exists(dir / "snapshot-report"));
+  EXPECT_TRUE(fs::exists(dir / "goldens/gone.png"));
+  EXPECT_EQ(runIn(dir, "snapshot suite.yaml -q", &said), 0) << said;
+}
+
+// An OpenGL that will not start fails every case for one reason: said once, in the suite's
+// words (its key, not an option the snapshot command does not have), the other cases named
+// after it; exit 4, a fault of the machine. (glvnd finds no EGL vendor where its list is empty.)
+TEST(Snapshot, AnOpenGLThatWillNotStartIsSaidOnce) {
+  const fs::path dir = folder("no-egl");
+  put(dir / "mine.yaml", slurp(kSource / "scenes/rattleback.yaml"));
+  put(dir / "suite.yaml",
+      "size: 320x180\nbackend: egl\ncases:\n  - {name: rest, scene: "
+      "mine.yaml}\n  - {name: turning, scene: mine.yaml, t: 2}\n");
+  std::string said;
+  EXPECT_EQ(
+      runIn(dir, "snapshot suite.yaml -q", &said, "__EGL_VENDOR_LIBRARY_FILENAMES=/none.json"), 4)
+      << said;
+  EXPECT_EQ(said.rfind("suite.yaml:4: rest: backend egl: ", 0), 0u) << said;
+  EXPECT_NE(said.find("; backend osmesa draws on the CPU\n"), std::string::npos) << said;
+  EXPECT_NE(said.find("rattleback: note: the same for 1 more case: turning\n"), std::string::npos)
+      << said;
+  EXPECT_EQ(said.find("--backend"), std::string::npos) << said;
+  EXPECT_FALSE(fs::exists(dir / "goldens"));
 }

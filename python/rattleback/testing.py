@@ -47,17 +47,31 @@ def assert_image_matches(
     golden = Path(golden_path)
     actual = _array(image)
     tol, frac, side = _defaults(tolerance, pixels, square)
-    exists = golden.is_file()
-    result = compare(actual, golden, tolerance=tol, pixels=frac, square=side) if exists else None
-    if update if update is not None else _settings["update"]:
-        if result is None or not result.same:
-            _write(golden, actual)
-        return
-    if result is not None and result.same:
-        return
+    updating = update if update is not None else _settings["update"]
     folder = Path(failures if failures is not None else _settings["failures"])
     new = folder / f"{golden.stem}-new.png"
+    diff = folder / f"{golden.stem}-diff.png"
+    result, unreadable = None, None
+    if golden.is_file():
+        try:
+            expected = _array(golden)
+        except ValueError as e:  # not a PNG (a Git LFS pointer, say): the message says which
+            unreadable = e
+        else:
+            result = compare(actual, expected, tolerance=tol, pixels=frac, square=side)
+    if updating or (result is not None and result.same):
+        if updating and (result is None or not result.same):
+            _write(golden, actual)
+        # This golden now holds: the images an earlier failure left for it would mislead.
+        for stale in (new, diff):
+            stale.unlink(missing_ok=True)
+        return
     _write(new, actual)
+    if unreadable is not None:
+        raise AssertionError(
+            f"{unreadable}; the new image is {new} (pytest --snapshot-update, or update=True, "
+            "replaces the golden with it)"
+        )
     if result is None:
         raise AssertionError(
             f"{golden}: no golden image; the new image is {new} (pytest "
@@ -67,8 +81,7 @@ def assert_image_matches(
     if result.same_size:
         from . import _draw
 
-        diff = folder / f"{golden.stem}-diff.png"
-        _write(diff, _draw.diff_image(actual, _array(golden), tol))
+        _write(diff, _draw.diff_image(actual, expected, tol))
         message += f", the diff image {diff}"
     raise AssertionError(message + " (pytest --snapshot-update writes the new one as the golden)")
 

@@ -92,6 +92,31 @@ def test_a_mismatch_names_the_diff_image_it_wrote(tmp_path, picture):
     assert rows.min() >= 40 and rows.max() < 60 and columns.min() >= 100 and columns.max() < 130
 
 
+def test_a_passing_golden_clears_what_its_earlier_failure_left(tmp_path, picture):
+    golden = tmp_path / "rest.png"
+    picture.save(golden)
+    failures = tmp_path / "failures"
+    with pytest.raises(AssertionError):
+        assert_image_matches(changed(picture), golden, failures=failures)
+    assert (failures / "rest-new.png").is_file() and (failures / "rest-diff.png").is_file()
+    assert_image_matches(picture, golden, failures=failures)
+    assert not (failures / "rest-new.png").exists() and not (failures / "rest-diff.png").exists()
+
+
+def test_a_golden_that_is_not_a_png_is_said_and_update_replaces_it(tmp_path, picture):
+    # What a clone without Git LFS's files holds in each PNG's place (git-lfs's pointer format).
+    golden = tmp_path / "rest.png"
+    golden.write_text("version https://git-lfs.github.com/spec/v1\noid sha256:00\nsize 9\n")
+    failures = tmp_path / "failures"
+    with pytest.raises(AssertionError, match="a Git LFS pointer, not the image") as caught:
+        assert_image_matches(picture, golden, failures=failures)
+    assert "--snapshot-update" in str(caught.value)
+    assert (failures / "rest-new.png").is_file()
+    assert_image_matches(picture, golden, update=True, failures=failures)
+    assert rb.compare(picture, golden).same
+    assert not (failures / "rest-new.png").exists()
+
+
 def test_the_pytest_plugin_writes_goldens_with_snapshot_update(tmp_path):
     (tmp_path / "test_mine.py").write_text(
         textwrap.dedent(
