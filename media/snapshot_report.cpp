@@ -53,6 +53,10 @@ void writeFigures(std::ostream& out, const scene::SnapshotCase& c, const CaseRes
         << "class=\"worst\">" << k.max_channel_delta << " (tolerance " << c.tolerance.channel
         << ")</td></tr>\n<tr><td>largest square</td><td>" << k.square << " px a side (fails at "
         << c.tolerance.square << ")</td></tr>\n";
+  if (r.status == CaseStatus::Differs && !r.expected.drawn_by.empty())
+    out << "<tr><td>drawn now by</td><td>" << escape(r.image.drawn_by)
+        << "</td></tr>\n<tr><td>the golden by</td><td>" << escape(r.expected.drawn_by)
+        << "</td></tr>\n";
   if (r.status == CaseStatus::Differs && !k.same_size)
     out << "<tr><td>size</td><td>" << r.image.width << "x" << r.image.height << " now, "
         << r.expected.width << "x" << r.expected.height << " in the golden</td></tr>\n";

@@ -229,3 +229,22 @@ TEST(Snapshot, AnOpenGLThatWillNotStartIsSaidOnce) {
   EXPECT_EQ(said.find("--backend"), std::string::npos) << said;
   EXPECT_FALSE(fs::exists(dir / "goldens"));
 }
+
+// A golden drawn by another rasteriser (Mesa's softpipe against llvmpipe, chosen by
+// GALLIUM_DRIVER) differs by a few per cent of the pixels: the verdict names both, the likely
+// cause, as compare does, and the report shows them.
+TEST(Snapshot, AGoldenOfAnotherRasteriserIsSaidSo) {
+  const fs::path dir = folder("rasteriser");
+  put(dir / "mine.yaml", slurp(kSource / "scenes/rattleback.yaml"));
+  put(dir / "suite.yaml",
+      "size: 320x180\nbackend: osmesa\ncases:\n  - {name: rest, scene: "
+      "mine.yaml}\n");
+  std::string said;
+  ASSERT_EQ(runIn(dir, "snapshot suite.yaml --update -q", &said, "GALLIUM_DRIVER=llvmpipe"), 0)
+      << said;
+  ASSERT_EQ(runIn(dir, "snapshot suite.yaml", &said, "GALLIUM_DRIVER=softpipe"), 1) << said;
+  EXPECT_NE(said.find("; the golden was drawn by Mesa/X.org llvmpipe"), std::string::npos) << said;
+  EXPECT_NE(said.find(", this by Mesa/X.org softpipe"), std::string::npos) << said;
+  EXPECT_NE(slurp(dir / "snapshot-report/index.html").find("<td>the golden by</td>"),
+            std::string::npos);
+}
