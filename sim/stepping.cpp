@@ -11,7 +11,11 @@ Stepping::Stepping(const Model& active, const State& start)
     : previous_(start),
       current_(start),
       adaptive_(isAdaptive(active.integrator) ? std::make_unique<AdaptiveStepper>(active, start)
-                                              : nullptr) {}
+                                              : nullptr) {
+  // A run started at a later step (Rollout's start kept its step) counts its stepper's accepted
+  // steps from there: rejected() is its tries less those.
+  earlier_.start_step = start.step;
+}
 
 Stepping::Stepping(const Stepping& other)
     : previous_(other.previous_),

@@ -90,3 +90,22 @@ TEST(Stepping, ARestartStartsTheStepperAfreshAndKeepsItsCounts) {
   EXPECT_EQ(steps.rejected(), rejected + fresh.rejected());
   EXPECT_GT(evaluations, 0);
 }
+
+// A stepper started from a state at a later step (a Rollout started from a state it was given)
+// counts what one started at step 0 counts: the steps it rejected are its own tries less its own
+// steps, not less the step index.
+TEST(Stepping, AStartAtALaterStepCountsItsOwnRejectedSteps) {
+  const sim::Model model = rollingModel(true);
+  sim::State at_zero = sim::initialState(model);
+  sim::State later = at_zero;
+  later.step = 1000;
+  sim::Stepping from_zero(model, at_zero), from_later(model, later);
+  for (int n = 0; n < 60; ++n) {
+    from_zero.step(model);
+    from_later.step(model);
+  }
+  EXPECT_EQ(from_later.current().step, 1060);
+  EXPECT_EQ(from_later.evaluations(), from_zero.evaluations());
+  EXPECT_EQ(from_later.rejected(), from_zero.rejected());
+  EXPECT_GE(from_later.rejected(), 0);
+}
