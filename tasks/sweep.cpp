@@ -78,6 +78,16 @@ class Bodies {
     return *slot.body;
   }
 
+  // Whether `export` writes the row's body as a solid (at export's default number of segments):
+  // a property of the body, so worked out once for its group.
+  bool exports(std::int64_t row, const sim::Body& body) {
+    Slot& slot = slots_[static_cast<std::size_t>(sweep_.bodyGroup(row))];
+    std::call_once(slot.exports_once, [&] {
+      slot.exports = sim::dentsLieWithin(body.surface, body.dents, sim::kDefaultSegments);
+    });
+    return slot.exports;
+  }
+
   void release(std::int64_t row) {
     Slot& slot = slots_[static_cast<std::size_t>(sweep_.bodyGroup(row))];
     if (--slot.uses == 0) slot.body.reset();
@@ -85,8 +95,9 @@ class Bodies {
 
  private:
   struct Slot {
-    std::once_flag once;
+    std::once_flag once, exports_once;
     std::optional<Compiled> body;
+    bool exports = false;
     std::atomic<std::int64_t> uses{0};
   };
   const scene::Sweep& sweep_;
@@ -128,9 +139,7 @@ std::optional<SweepRow> runRow(const scene::Sweep& sweep, const scene::SweepScen
   auto model = sim::compileRun(loaded->spec, body.value());
   if (!model) return refused(scene::describe(loaded.value(), model.error()));
 
-  if (work.exports)  // as `export` makes it, at its default number of segments
-    row.exports =
-        sim::dentsLieWithin(model->body->surface, model->body->dents, sim::kDefaultSegments);
+  if (work.exports) row.exports = bodies.exports(index, *model->body);
   if (work.forecast) {
     const Forecast forecast = forecastReversal(model.value());
     row.forecast_s = forecast.time;
@@ -345,14 +354,8 @@ SweepRun runSweep(const scene::Sweep& sweep, const scene::SweepScenes& scenes,
   const SweepColumns columns = tableColumns(sweep);
   RowWork work;
   work.needs = needsOf(columns);
-  // forecast_s or forecast_note: the theory's forecast is worked out for either.
-  work.forecast = std::any_of(columns.begin(), columns.end(), [](const SweepResultColumn* c) {
-    return c == &columnOf(SweepMetric::Forecast) ||
-           std::string_view(c->column.name) == "forecast_note";
-  });
-  work.exports = std::any_of(columns.begin(), columns.end(), [](const SweepResultColumn* c) {
-    return std::string_view(c->column.name) == "exports";
-  });
+  work.forecast = asksFor(columns, RowExtra::Forecast);
+  work.exports = asksFor(columns, RowExtra::Exports);
   std::vector<std::optional<SweepRow>> results(rows.size());
   std::mutex finished_mutex;
   const auto start = std::chrono::steady_clock::now();

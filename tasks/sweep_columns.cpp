@@ -87,7 +87,9 @@ const SweepResultColumn kResults[] = {
      [](const Row& r) { return orNan(r.forecast_s); },
      "forecast first reversal",
      ColumnNeeds::Nothing,
-     false},
+     /*by_default=*/false,
+     /*whole=*/false,
+     RowExtra::Forecast},
     // Why forecast_s is empty where it is: a word to group by, as status is.
     {{"forecast_note", "",
       "why forecast_s is or is not a time: within | beyond (the theory's range) | none_in_run | "
@@ -99,7 +101,9 @@ const SweepResultColumn kResults[] = {
      nullptr,
      nullptr,
      ColumnNeeds::Nothing,
-     false},
+     /*by_default=*/false,
+     /*whole=*/false,
+     RowExtra::Forecast},
     // Whether the body prints: a maker's sweep over the dents keeps the rows that export.
     {{"exports", "",
       "whether export writes the row's body as a solid: yes | no (a dent cuts through its "
@@ -111,7 +115,9 @@ const SweepResultColumn kResults[] = {
      nullptr,
      nullptr,
      ColumnNeeds::Nothing,
-     false},
+     /*by_default=*/false,
+     /*whole=*/false,
+     RowExtra::Exports},
 };
 
 }  // namespace
@@ -129,6 +135,11 @@ const SweepResultColumn& columnOf(SweepMetric metric) {
 double metricOf(const SweepRow& row, SweepMetric metric) {
   if (row.status != RowStatus::Ok) return std::nan("");
   return columnOf(metric).value(row);
+}
+
+bool asksFor(const SweepColumns& columns, RowExtra extra) {
+  return std::any_of(columns.begin(), columns.end(),
+                     [&](const SweepResultColumn* c) { return c->extra == extra; });
 }
 
 const SweepResultColumn* findSweepColumn(std::string_view name) {

@@ -54,6 +54,13 @@ enum class ColumnNeeds {
   WholeRun,       ///< the whole duration (what happens at the end, or anywhere in the run)
 };
 
+/// What a row works out beside its run, for the columns that ask for it.
+enum class RowExtra {
+  None,
+  Forecast,  ///< the averaged theory's forecast (tasks/forecast.hpp), from the scene alone
+  Exports,   ///< whether `export` writes the body as a solid, once per body
+};
+
 /// A result column of the table: after the row index and the axes' values.
 struct SweepResultColumn {
   Column column;  ///< name, unit and meaning (the sidecar's)
@@ -70,10 +77,14 @@ struct SweepResultColumn {
   /// A whole number (a count): its value() is one, or NaN where a row has none. Python's
   /// to_pandas gives it pandas' nullable integers.
   bool whole = false;
+  RowExtra extra = RowExtra::None;
 };
 
 /// The result columns of a table, in its order.
 using SweepColumns = std::vector<const SweepResultColumn*>;
+
+/// Whether any of `columns` asks for `extra`.
+bool asksFor(const SweepColumns& columns, RowExtra extra);
 
 /// Every result column, in the table's order.
 std::span<const SweepResultColumn> sweepResultTable();
