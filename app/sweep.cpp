@@ -16,6 +16,7 @@
 #include "app/interrupt.hpp"
 #include "app/plot.hpp"
 #include "app/progress.hpp"
+#include "tasks/both_ways.hpp"
 #include "tasks/output.hpp"
 #include "tasks/scene_args.hpp"
 #include "tasks/sweep.hpp"
@@ -365,6 +366,31 @@ void printSummary(const SweepArgs& args, const std::optional<tasks::Shard>& shar
                 first->message.c_str());
 }
 
+// A search over bodies spun each way: how many reverse both ways, and the first. (A shard holds
+// only some of each body's rows: its summary leaves it to the merged table.)
+void printBothWays(const scene::Sweep& sweep, const Plan& plan) {
+  const tasks::SweepColumns columns = tasks::tableColumns(sweep);
+  if (std::find(columns.begin(), columns.end(),
+                &tasks::columnOf(tasks::SweepMetric::FirstReversal)) == columns.end())
+    return;
+  const bool has_exports = std::any_of(columns.begin(), columns.end(), [](const auto* c) {
+    return c->extra == tasks::RowExtra::Exports;
+  });
+  std::vector<double> first(static_cast<std::size_t>(sweep.rows()), std::nan(""));
+  std::vector<std::optional<bool>> exports(has_exports ? first.size() : 0);
+  for (const auto& [row, line] : plan.done) {
+    const auto r = static_cast<std::size_t>(row);
+    first[r] = metricOf(line, sweep.axes.size(), columns, tasks::SweepMetric::FirstReversal);
+    if (!has_exports) continue;
+    const auto fields = splitCsv(line);
+    const auto field = fields ? fieldOf(*fields, sweep.axes.size(), columns, "exports")
+                              : std::optional<std::string>();
+    if (field && !field->empty()) exports[r] = *field == "yes";
+  }
+  if (const auto found = tasks::bothWays(sweep, first, exports))
+    std::printf("both ways       %s\n", tasks::describe(*found).c_str());
+}
+
 // The table, its sidecar and its heatmap, once every row is done.
 rb::Status writeOutputs(const SweepArgs& args, const scene::Sweep& sweep,
                         const std::optional<tasks::Shard>& shard, const Plan& plan,
@@ -488,6 +514,7 @@ int sweepCommand(const SweepArgs& args) {
         {args.plot, tasks::OutputKind::SweepPlot, sceneName(args.file), args.metric, {}, {}});
   record(entries);
   if (!args.quiet) printSummary(args, shard, plan.value(), run, output.value());
+  if (!args.quiet && !shard) printBothWays(sweep, plan.value());
   return kOk;
 }
 

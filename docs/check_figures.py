@@ -135,6 +135,16 @@ def both_ways(r):
     return {b: rows for b, rows in exporting(r).items() if all(x["first_reversal_s"] for x in rows)}
 
 
+def reversing_both(r):
+    """Every body, exporting or not, with a first reversal spun each way."""
+    return {b: rows for b, rows in searched(r).items() if all(x["first_reversal_s"] for x in rows)}
+
+
+def first_both_ways(r):
+    """The printable both-ways body of the lowest row, and its rows."""
+    return min((int(rows[0]["row"]), body, rows) for body, rows in both_ways(r).items())
+
+
 def soonest_clockwise(r):
     """The earliest first reversal spun clockwise among the both-ways bodies, and that body."""
     return min(
@@ -433,6 +443,22 @@ CLAIMS = [
             lambda r: r.analyze("both-ways")["preferred"],
             lambda r: reversal(r.simulate("both-ways")),
             lambda r: reversal(r.simulate("both-ways", 8)),
+        ],
+    ),
+    (
+        "docs/getting-started.md",
+        "both ways «22» of «36» bodies reverse both ways (a first reversal spun each way), «5» of them "
+        "exporting a solid; the first that exports: body.dents.at[0] «-1.0», body.dents.at[1] «3.0», "
+        "body.dents.scale «0.48» (rows «28», «29»)",
+        [
+            lambda r: len(reversing_both(r)),
+            lambda r: len(searched(r)),
+            lambda r: len(both_ways(r)),
+            lambda r: first_both_ways(r)[1][0],
+            lambda r: first_both_ways(r)[1][1],
+            lambda r: first_both_ways(r)[1][2],
+            lambda r: first_both_ways(r)[2][0]["row"],
+            lambda r: first_both_ways(r)[2][1]["row"],
         ],
     ),
     (

@@ -1072,3 +1072,46 @@ TEST(Sweep, AMeshBodysForecastIsAnalyzes) {
   EXPECT_EQ(std::stod(rows[1][at(rows, "forecast_s")]), time.get<double>());
   EXPECT_EQ(rows[2][at(rows, "forecast_s")], "") << "spun the preferred way: none within the run";
 }
+
+// The summary of a search over bodies spun each way says how many reverse both ways and how many
+// of those export, as counted here from its table (rows alike but for initial.spin are one body;
+// it reverses both ways where its spin -8 and its spin 8 row each have a first reversal), and
+// names the first such body that exports, in the table's order.
+TEST(Sweep, TheBothWaysLineIsWhatTheTableSays) {
+  const fs::path dir = scratch();
+  const std::string search = std::string(RATTLEBACK_SOURCE_DIR) + "/sweeps/both-ways-search.yaml";
+  const Outcome r = rattleback(dir, "sweep " + search + " -j 2 -o " + (dir / "t.csv").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = readCsv(slurp(dir / "t.csv"));
+  const std::size_t spin = at(rows, "initial.spin"), first = at(rows, "first_reversal_s"),
+                    exports = at(rows, "exports");
+  std::map<std::string, std::vector<std::size_t>> bodies;  // the dents' three values: rows
+  for (std::size_t i = 1; i < rows.size(); ++i)
+    bodies[rows[i][1] + " " + rows[i][2] + " " + rows[i][3]].push_back(i);
+  int both = 0, exporting = 0;
+  std::size_t first_row = rows.size();
+  for (const auto& [dents, lines] : bodies) {
+    ASSERT_EQ(lines.size(), 2u) << dents;
+    bool clockwise = false, anticlockwise = false, solid = true;
+    for (std::size_t i : lines) {
+      const bool reversed = !rows[i][first].empty();
+      (std::stod(rows[i][spin]) < 0 ? clockwise : anticlockwise) |= reversed;
+      solid &= rows[i][exports] == "yes";
+    }
+    if (!clockwise || !anticlockwise) continue;
+    ++both;
+    if (!solid) continue;
+    ++exporting;
+    first_row = std::min(first_row, lines.front());
+  }
+  ASSERT_LT(first_row, rows.size());
+  const std::string line =
+      "both ways       " + std::to_string(both) + " of " + std::to_string(bodies.size()) +
+      " bodies reverse both ways (a first reversal spun each way), " + std::to_string(exporting) +
+      " of them exporting a solid; the first that exports: "
+      "body.dents.at[0] " +
+      rows[first_row][1] + ", body.dents.at[1] " + rows[first_row][2] + ", body.dents.scale " +
+      rows[first_row][3] + " (rows " + rows[first_row][0] + ", " + rows[first_row + 1][0] + ")\n";
+  EXPECT_NE(r.out.find(line), std::string::npos) << r.out << "\nexpected: " << line;
+  EXPECT_GT(both, exporting) << "deeper dents reverse both ways and cut through the bottom";
+}

@@ -1,0 +1,84 @@
+#include "tasks/both_ways.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <map>
+
+namespace tasks {
+
+std::optional<BothWays> bothWays(const scene::Sweep& sweep,
+                                 const std::vector<double>& first_reversal_s,
+                                 const std::vector<std::optional<bool>>& exports) {
+  std::optional<std::size_t> spin;
+  for (std::size_t a = 0; a < sweep.axes.size(); ++a)
+    if (sweep.axes[a].key == "initial.spin") spin = a;
+  if (!spin) return std::nullopt;
+  bool negative = false, positive = false;
+  for (const std::string& v : sweep.axes[*spin].values) {
+    const double value = std::strtod(v.c_str(), nullptr);
+    negative |= value < 0;
+    positive |= value > 0;
+  }
+  if (!negative || !positive) return std::nullopt;
+  struct Body {
+    bool clockwise = false, anticlockwise = false;  // a reversal spun that way
+    bool exports = true;                            // every row's body exports
+    std::vector<std::int64_t> rows;
+  };
+  std::map<std::vector<int>, Body> bodies;  // by the coordinates of every other axis
+  for (std::int64_t row = 0; row < sweep.rows(); ++row) {
+    std::vector<int> at = sweep.coordinates(row);
+    const double value = std::strtod(sweep.axes[*spin].values[at[*spin]].c_str(), nullptr);
+    at.erase(at.begin() + static_cast<std::ptrdiff_t>(*spin));
+    Body& body = bodies[at];
+    body.rows.push_back(row);
+    const bool reversed = static_cast<std::size_t>(row) < first_reversal_s.size() &&
+                          std::isfinite(first_reversal_s[static_cast<std::size_t>(row)]);
+    if (!exports.empty() && !(static_cast<std::size_t>(row) < exports.size() &&
+                              exports[static_cast<std::size_t>(row)].value_or(false)))
+      body.exports = false;
+    if (reversed && value < 0) body.clockwise = true;
+    if (reversed && value > 0) body.anticlockwise = true;
+  }
+  BothWays found;
+  found.bodies = static_cast<std::int64_t>(bodies.size());
+  // In the order of the rows: the first body found is the one with the lowest row.
+  std::map<std::int64_t, const std::pair<const std::vector<int>, Body>*> by_row;
+  for (const auto& entry : bodies) by_row[entry.second.rows.front()] = &entry;
+  if (!exports.empty()) found.exporting = 0;
+  for (const auto& [row, entry] : by_row) {
+    const Body& body = entry->second;
+    if (!body.clockwise || !body.anticlockwise) continue;
+    ++found.both;
+    if (found.exporting && body.exports) ++*found.exporting;
+    // The first that reverses both ways, or where exports is known the first that also exports.
+    const bool first = found.exporting ? body.exports && *found.exporting == 1 : found.both == 1;
+    if (!first) continue;
+    found.first_rows = entry->second.rows;
+    for (std::size_t a = 0, k = 0; a < sweep.axes.size(); ++a) {
+      if (a == *spin) continue;
+      found.first_values.push_back(sweep.axes[a].key + " " +
+                                   sweep.axes[a].values[entry->first[k++]]);
+    }
+  }
+  return found;
+}
+
+std::string describe(const BothWays& found) {
+  std::string text = std::to_string(found.both) + " of " + std::to_string(found.bodies) +
+                     (found.bodies == 1 ? " body" : " bodies") +
+                     (found.both == 1 ? " reverses" : " reverse") +
+                     " both ways (a first reversal spun each way)";
+  if (found.exporting)
+    text += ", " + std::to_string(*found.exporting) + " of them exporting a solid";
+  if (found.first_rows.empty()) return text;
+  text += found.exporting ? "; the first that exports:" : "; the first:";
+  for (std::size_t i = 0; i < found.first_values.size(); ++i)
+    text += (i ? ", " : " ") + found.first_values[i];
+  text += " (rows";
+  for (std::size_t i = 0; i < found.first_rows.size(); ++i)
+    text += (i ? ", " : " ") + std::to_string(found.first_rows[i]);
+  return text + ")";
+}
+
+}  // namespace tasks
