@@ -111,17 +111,7 @@ int renderCommand(const RenderArgs& args) {
     return notWritten(result.outcome, args.scene, "video");
   std::vector<tasks::OutputEntry> entries;
   for (const media::VideoFile& f : result.files)
-    entries.push_back({f.path,
-                       tasks::OutputKind::Video,
-                       sceneName(args.scene),
-                       f.role,
-                       f.spin,
-                       {},
-                       tasks::madeFrom(loaded->scene),
-                       tasks::listedFrame(loaded->scene, loaded->model),
-                       loaded->scene.video.view,
-                       f.spin ? std::optional<double>(loaded->model.duration) : std::nullopt,
-                       f.first_reversal_s});
+    entries.push_back(media::videoEntry(f, loaded.value(), sceneName(args.scene)));
   record(entries);
   if (!args.quiet) printVideos(result);
   return kOk;

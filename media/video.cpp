@@ -25,6 +25,8 @@
 #include "sim/rollout.hpp"
 #include "tasks/against_theory.hpp"
 #include "tasks/output.hpp"
+#include "tasks/player_data.hpp"
+#include "tasks/run_json.hpp"
 #include "util/arguments.hpp"
 #include "util/format.hpp"
 
@@ -405,11 +407,33 @@ rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const Vide
     if (i < runs.size()) {
       file.spin = runs[i].model().initial.spin;
       file.first_reversal_s = runs[i].summary().first_reversal_s;
+      file.reversals_s = runs[i].summary().reversals;
+      file.final_spin = runs[i].summary().last.spin;
     }
     result.files.push_back(file);
   }
   result.outcome.ending = tasks::Ending::Completed;
   return result;
+}
+
+tasks::OutputEntry videoEntry(const VideoFile& file, const tasks::LoadedScene& loaded,
+                              const std::string& scene_name) {
+  tasks::OutputEntry e;
+  e.file = file.path;
+  e.kind = tasks::OutputKind::Video;
+  e.scene = scene_name;
+  e.role = file.role;
+  e.spin = file.spin;
+  e.made_from = tasks::madeFrom(loaded.scene);
+  e.frame_m = tasks::listedFrame(loaded.scene, loaded.model);
+  e.view = loaded.scene.video.view;
+  if (file.spin) {  // one run's video (a side-by-side shows two)
+    e.simulated_s = loaded.model.duration;
+    e.first_reversal_s = file.first_reversal_s;
+    e.reversals_s = file.reversals_s;
+    e.final_spin = file.final_spin;
+  }
+  return e;
 }
 
 }  // namespace media

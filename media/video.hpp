@@ -13,6 +13,7 @@
 
 #include "render/frame.hpp"
 #include "sim/model.hpp"
+#include "tasks/manifest.hpp"
 #include "tasks/outcome.hpp"
 #include "tasks/scene_args.hpp"
 #include "util/output_place.hpp"
@@ -42,6 +43,8 @@ struct VideoFile {
   std::int64_t frames = 0;
   std::optional<double> spin;              ///< rad/s: the run it shows (none: side by side)
   std::optional<double> first_reversal_s;  ///< of that run
+  std::vector<double> reversals_s;         ///< of that run: every reversal the rule counted, s
+  std::optional<double> final_spin;        ///< of that run: n at its end, rad/s
 };
 
 struct VideoResult {
@@ -86,5 +89,10 @@ std::string titleWithPlayback(const std::string& title, double playback);
 /// renderer that fails) is one line; a run that stops or is cancelled is an outcome, with no
 /// video written and no temporary file left.
 rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const VideoRequest& request);
+
+/// The manifest's entry for a video of `loaded` (its scene named `scene_name`): what the report
+/// captions it with. Every front end that renders records its videos through this.
+tasks::OutputEntry videoEntry(const VideoFile& file, const tasks::LoadedScene& loaded,
+                              const std::string& scene_name);
 
 }  // namespace media

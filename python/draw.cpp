@@ -138,15 +138,7 @@ py::tuple renderVideos(const LoadedScene& loaded, const std::string& output, boo
     raiseStopped(result.outcome, request.scene_name);
   std::vector<tasks::OutputEntry> entries;
   for (const media::VideoFile& f : result.files)
-    entries.push_back({f.path,
-                       tasks::OutputKind::Video,
-                       stem,
-                       f.role,
-                       f.spin,
-                       {},
-                       tasks::madeFrom(loaded.value.scene),
-                       tasks::listedFrame(loaded.value.scene, loaded.value.model),
-                       loaded.value.scene.video.view});
+    entries.push_back(media::videoEntry(f, loaded.value, stem));
   (void)tasks::recordOutputs(entries);  // as the command line lists them
   py::list files;
   for (const media::VideoFile& f : result.files) {
@@ -157,6 +149,8 @@ py::tuple renderVideos(const LoadedScene& loaded, const std::string& output, boo
     d["spin"] = f.spin ? py::object(py::float_(*f.spin)) : py::object(py::none());
     d["first_reversal_s"] =
         f.first_reversal_s ? py::object(py::float_(*f.first_reversal_s)) : py::object(py::none());
+    d["reversals_s"] = f.spin ? py::object(py::cast(f.reversals_s)) : py::object(py::none());
+    d["final_spin"] = f.final_spin ? py::object(py::float_(*f.final_spin)) : py::object(py::none());
     files.append(d);
   }
   const py::object leaves = result.leaves ? py::object(py::str(*result.leaves)) : py::none();

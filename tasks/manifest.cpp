@@ -32,6 +32,8 @@ nlohmann::json toJson(const OutputEntry& e) {
     j["simulated_s"] = *e.simulated_s;
     j["first_reversal_s"] =
         e.first_reversal_s ? nlohmann::json(*e.first_reversal_s) : nlohmann::json(nullptr);
+    j["reversals_s"] = e.reversals_s;
+    j["final_spin"] = e.final_spin ? nlohmann::json(*e.final_spin) : nlohmann::json(nullptr);
   }
   return j;
 }
@@ -55,6 +57,11 @@ std::optional<OutputEntry> fromJson(const nlohmann::json& j) {
     e.simulated_s = j["simulated_s"].get<double>();
     if (j.contains("first_reversal_s") && j["first_reversal_s"].is_number())
       e.first_reversal_s = j["first_reversal_s"].get<double>();
+    if (j.contains("reversals_s") && j["reversals_s"].is_array())
+      for (const nlohmann::json& t : j["reversals_s"])
+        if (t.is_number()) e.reversals_s.push_back(t.get<double>());
+    if (j.contains("final_spin") && j["final_spin"].is_number())
+      e.final_spin = j["final_spin"].get<double>();
   }
   return e;
 }

@@ -51,6 +51,10 @@ struct OutputEntry {
   /// written before videos had them.
   std::optional<double> simulated_s = {};
   std::optional<double> first_reversal_s = {};
+  /// The same run's every reversal, s, and its spin n at the end, rad/s: what the caption says
+  /// the run did (reversed three times, ending clockwise). Unknown in an older manifest.
+  std::vector<double> reversals_s = {};
+  std::optional<double> final_spin = {};
 };
 
 inline constexpr const char* kManifestName = "rattleback-manifest.json";

@@ -2351,12 +2351,50 @@ TEST(Cli, ReportCaptionsAVideoFromItsOwnRunWithoutTelemetry) {
   ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
   const std::vector<std::string> said = captions((dir / "index.html").string());
   ASSERT_EQ(said.size(), 2u);
-  EXPECT_NE(said[0].find("Spun the <b>reversing</b> way"), std::string::npos) << said[0];
-  EXPECT_NE(said[0].find("in this video (+5 rad/s): <b>first reversal at 0.828 s</b>"),
+  // Its rocking grows either way, so the way it does not prefer is named as that.
+  EXPECT_NE(said[0].find("Spun <b>against</b> its preferred way"), std::string::npos) << said[0];
+  EXPECT_NE(said[0].find("in this video (+5 rad/s): <b>reversed at 0.828 s</b>; at the end it "
+                         "turns <b>clockwise</b>"),
             std::string::npos)
       << said[0];
   EXPECT_NE(said[1].find("in this video (-5 rad/s): no reversal in 1 s"), std::string::npos)
       << said[1];
+}
+
+// A video's caption says what its run did, from the run's own figures as simulate gives them:
+// the shipped both-ways body spun +8 rad/s reverses twice (docs/getting-started.md, "Tell the
+// class before the second reversal") and so ends turning the way it started; a caption that gave
+// the first reversal alone told a class the wrong way at the end.
+TEST(Cli, AVideosCaptionSaysEveryReversalAndTheWayItEnds) {
+  const fs::path dir = emptyDir("page-video-ends");
+  const std::string s = scene("both-ways");
+  const Result theory = rattleback("analyze " + s + " --json");
+  ASSERT_EQ(theory.status, 0) << theory.err;
+  std::ofstream(dir / "both-ways-analysis.json") << theory.out;
+  ASSERT_EQ(rattleback("render " + s + " --both --spin 8 --size 64x48 -q -o " +
+                       (dir / "both-ways.mp4").string())
+                .status,
+            0);
+  const Result ran =
+      rattleback("simulate " + s + " --spin 8 -q -o " + (dir.parent_path() / "ends.csv").string());
+  ASSERT_EQ(ran.status, 0) << ran.err;
+  const nlohmann::json run = nlohmann::json::parse(readText(dir.parent_path() / "ends.csv.json"));
+  const nlohmann::json& result = run["result"];
+  ASSERT_EQ(result["reversals_s"].size(), 2u) << result;
+  ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
+  const std::vector<std::string> said = captions((dir / "index.html").string());
+  ASSERT_EQ(said.size(), 2u);
+  char times[120];
+  std::snprintf(times, sizeof times, "reversed 2 times</b>, at %.3f and %.3f s",
+                result["reversals_s"][0].get<double>(), result["reversals_s"][1].get<double>());
+  EXPECT_NE(said[0].find(std::string("in this video (+8 rad/s): <b>") + times), std::string::npos)
+      << said[0];
+  const double final_spin = result["final_spin"].get<double>();
+  ASSERT_GT(final_spin, 0) << "two reversals: it ends turning as it started";
+  char end[80];
+  std::snprintf(end, sizeof end, "; at the end it turns <b>counter-clockwise</b> (%+.2f rad/s)",
+                final_spin);
+  EXPECT_NE(said[0].find(end), std::string::npos) << said[0];
 }
 
 // The shipped both-ways body (scenes/both-ways.yaml) prefers clockwise, but the theory finds its

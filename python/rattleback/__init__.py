@@ -429,7 +429,8 @@ def render(
     ``output`` is the .mp4 (default ``out/<scene>.mp4``; ``out/scene.mp4`` for a dict or YAML
     text given no name); with ``both=True`` it is the base of
     ``BASE-preferred.mp4``, ``BASE-reversed.mp4`` and ``BASE-both.mp4``. Returns one dict per
-    video: ``path``, ``frames``, ``spin`` and ``first_reversal_s`` of the run it shows.
+    video: ``path``, ``role``, ``frames``, and ``spin``, ``first_reversal_s``, ``reversals_s`` and
+    ``final_spin`` of the run it shows (``None`` for a side-by-side video).
     ``frame`` and ``surface`` are :func:`still`'s.
     """
     from . import _draw

@@ -153,19 +153,34 @@ std::string measuredOf(const RunRecord& run) {
   return out.str();
 }
 
+namespace {
+
+// Which way a run that reversed ends turning: after two reversals it turns as it started, and a
+// class told only "it reversed" expects the other way.
+std::string endingOf(const RunRecord& run, bool reversed) {
+  if (!reversed || !run.final_spin) return "";
+  if (*run.final_spin == 0) return "; at the end it is not turning";
+  return "; at the end it turns <b>" + spinWords(*run.final_spin) + "</b> (" +
+         number(run.final_spin, "%+.2f") + " rad/s)";
+}
+
+}  // namespace
+
 std::string measuredAs(const std::optional<RunRecord>& run, bool ccw, std::optional<bool> preferred,
                        bool either_way) {
   if (!run) return "";
   const Number& spin = run->initial_spin;
   if (!spin || *spin == 0 || (*spin > 0) != ccw) return "";
   const bool video = run->command == "render";
+  // (A video listed by an older manifest knows its first reversal only.)
   std::string text =
       (video ? "<br>in this video (" : "<br>measured (<code>simulate</code>, ") +
       number(spin, "%+.3g") + " rad/s): " +
-      (video && run->first_reversal_s
+      (video && run->first_reversal_s && run->reversals_s.empty()
            ? "<b>first reversal at " + number(run->first_reversal_s, "%.3f") + " s</b>"
            : reversalOf(*run));
   const bool reversed = !run->reversals_s.empty() || run->first_reversal_s.has_value();
+  text += endingOf(*run, reversed);
   if (preferred) text += wordsFor(againstTheory(*preferred, reversed, either_way), Front::Caption);
   return text;
 }

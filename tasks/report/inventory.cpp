@@ -82,6 +82,8 @@ RunRecord videoRunOf(const OutputEntry& e) {
   run.initial_spin = e.spin;
   run.simulated_s = e.simulated_s;
   run.first_reversal_s = e.first_reversal_s;
+  for (double t : e.reversals_s) run.reversals_s.push_back(t);
+  run.final_spin = e.final_spin;
   return run;
 }
 

@@ -77,9 +77,13 @@ struct Videos {
   void byWay() const {
     if (!f.has("-reversed.mp4") && !f.has("-preferred.mp4")) return;
     out << "<div class=\"pair\">\n";
+    // Where the theory finds the rocking grows either way, both ways reverse: the one it does
+    // not prefer is named as that, not as "the reversing way".
     if (f.has("-reversed.mp4"))
       video(f.at("-reversed.mp4"), "-reversed.png",
-            "Spun the <b>reversing</b> way" + spun(f.at("-reversed.mp4")) + ": " + kReversingWay +
+            std::string(either_way ? "Spun <b>against</b> its preferred way"
+                                   : "Spun the <b>reversing</b> way") +
+                spun(f.at("-reversed.mp4")) + ": " + kReversingWay +
                 measured(f.at("-reversed.mp4"), false));
     if (f.has("-preferred.mp4"))
       video(f.at("-preferred.mp4"), "-preferred.png",
