@@ -78,17 +78,20 @@ void printGrowth(std::FILE* out, const tasks::Analysis& a) {
 // How far the either-way rule of thumb is met: its e-folds against drag's, or no drag at all.
 std::string eitherWayMargin(const tasks::Analysis& a) {
   if (!(a.drag > 0)) return "with no drag to slow the spin";
-  char text[160];
+  char text[200];
   std::snprintf(text, sizeof text,
-                "%.1f e-folds while drag slows the spin by e, where the rule of thumb asks %g",
-                a.either_way_efolds, sim::kEitherWayEFolds);
+                "%.1f e-folds in all as drag slows the spin, where the rule of thumb asks %.1f, "
+                "from its %.2g° start to %g°",
+                a.either_way_efolds, a.either_way_needed, a.rocking_start * 180 / M_PI,
+                sim::kRockingThatReverses * 180 / M_PI);
   return text;
 }
 
-// A body within half as much again of the rule's count: a trial's body at 4.x e-folds did not
-// reverse the preferred way in 60 s (the count is a rule of thumb, docs/physics.md P8.4).
+// A body within half as much again of the rule's count, either side: a run must decide (the
+// count is a rule of thumb, docs/physics.md P8.4).
 bool nearTheLine(const tasks::Analysis& a) {
-  return a.drag > 0 && a.either_way_efolds < 1.5 * sim::kEitherWayEFolds;
+  return a.drag > 0 && a.either_way_efolds < 1.5 * a.either_way_needed &&
+         a.either_way_efolds > a.either_way_needed / 1.5;
 }
 
 void printPreferred(std::FILE* out, const tasks::Analysis& a) {
@@ -124,6 +127,14 @@ void printPreferred(std::FILE* out, const tasks::Analysis& a) {
                    a.preferred_growth, eitherWayMargin(a).c_str(),
                    rb::docPage("physics.md").c_str(),
                    nearTheLine(a) ? "; near the rule's line: run it to see" : "");
+    else if (a.preferred_growth > 0 && nearTheLine(a))
+      std::fprintf(out,
+                   "either way       spun %s at %g rad/s the rocking grows too (at %.4g /s, %s): "
+                   "not predicted to reverse that way (%s P8.4); near the rule's line: run it "
+                   "to see\n",
+                   std::string(rb::nameOf(a.preferred)).c_str(), std::abs(a.spin),
+                   a.preferred_growth, eitherWayMargin(a).c_str(),
+                   rb::docPage("physics.md").c_str());
   }
 }
 

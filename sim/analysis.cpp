@@ -162,11 +162,11 @@ GrowthEachWay growthEachWay(const Model& model, double spin_magnitude) {
   // called "preferred cw"); a growth that slow would take 1e6 rocking periods to show.
   const double omega = 2 * M_PI * std::max({ccw.roll_hz, ccw.pitch_hz, cw.roll_hz, cw.pitch_hz});
   return {std::max(ccw.roll_growth, ccw.pitch_growth), std::max(cw.roll_growth, cw.pitch_growth),
-          1e-6 * omega};
+          1e-6 * omega, n};
 }
 
 Direction preferredDirection(const GrowthEachWay& growth) {
-  const auto [ccw_fastest, cw_fastest, zero] = growth;
+  const double ccw_fastest = growth.ccw, cw_fastest = growth.cw, zero = growth.zero;
   // Alike: within 1e-9 of the rates' size (rounding; a dentless body's differ by 1e-16 /s).
   const double size = std::max({std::abs(ccw_fastest), std::abs(cw_fastest), 1e-12});
   if ((ccw_fastest <= zero && cw_fastest <= zero) ||
@@ -178,18 +178,58 @@ Direction preferredDirection(const GrowthEachWay& growth) {
 double eFoldsAgainstDrag(const Model& model, const GrowthEachWay& growth) {
   const double drag = model.contact.air_drag;
   if (drag <= 0) return std::numeric_limits<double>::infinity();
-  // Drag alone slows the spin by e in C/σ.
-  return std::min(growth.ccw, growth.cw) * model.body->inertia(2, 2) / drag;
+  // Drag alone slows the spin as n(t) = n₀ e^(−t/τ), τ = C/σ: dt = τ d(ln n) down the way. The
+  // growth falls with the spin (about linearly in n, from zero at a spin of its own): taken at
+  // the start alone it counted 6.5 e-folds for the both-ways body spun −5 rad/s, which does not
+  // reverse in 30 s; integrated it counts 2.7 there, and 7 at −8 rad/s, where it reverses.
+  const double tau = model.body->inertia(2, 2) / drag;
+  const double sign = growth.ccw <= growth.cw ? 1 : -1;  // the way it grows more slowly
+  const auto rate = [&](double n) {
+    const Linearisation l = linearise(model, sign * n);
+    return std::max(l.roll_growth, l.pitch_growth);
+  };
+  // ln n in steps of 1/32 (3 % of the spin) down to where the growth ends (found between two
+  // steps by a straight line), or to 1 % of the start: trapezoids.
+  constexpr double kStep = 1.0 / 32, kDown = 4.6;  // e^−4.6 ≈ 1 %
+  double total = 0, u = 0, g = std::min(growth.ccw, growth.cw);
+  while (g > growth.zero && u < kDown) {
+    const double next_u = u + kStep, next_g = rate(growth.spin * std::exp(-next_u));
+    if (next_g <= growth.zero) {
+      const double part = (g - growth.zero) / (g - next_g);  // of the step, to the zero
+      total += 0.5 * (g + growth.zero) * part * kStep;
+      break;
+    }
+    total += 0.5 * (g + next_g) * kStep;
+    u = next_u;
+    g = next_g;
+  }
+  return tau * total;
+}
+
+double rockingStart(const Model& model) {
+  const double tilt = std::hypot(model.initial.tilt_x, model.initial.tilt_y);
+  const double rate = std::hypot(model.initial.w_x, model.initial.w_y);
+  if (rate == 0) return tilt;
+  // A tilt rate swings the body as far as rate / ω at the rocking's (slower) rest frequency.
+  const Linearisation rest = linearise(model, 0);
+  const double hz = std::min(rest.roll_hz > 0 ? rest.roll_hz : rest.pitch_hz,
+                             rest.pitch_hz > 0 ? rest.pitch_hz : rest.roll_hz);
+  return hz > 0 ? std::hypot(tilt, rate / (2 * M_PI * hz)) : tilt;
+}
+
+double eFoldsNeeded(const Model& model) {
+  const double start = rockingStart(model);
+  if (start <= 0) return std::numeric_limits<double>::infinity();
+  return std::max(0.0, std::log(kRockingThatReverses / start));
 }
 
 bool growsEitherWay(const Model& model, const GrowthEachWay& growth) {
-  const auto [ccw_fastest, cw_fastest, zero] = growth;
+  const double ccw_fastest = growth.ccw, cw_fastest = growth.cw, zero = growth.zero;
   if (!(ccw_fastest > zero && cw_fastest > zero)) return false;
-  // Growing is not enough: the rocking must grow from a small tilt to tens of degrees (from
-  // 0.5° to 30°: ln 60, about 4 e-folds) before drag has slowed the spin to where it no longer
-  // grows. The default body spun +5 rad/s grows 2.7 e-folds in that time and never reverses
-  // (60 s), the both-ways scene's 12.2 and does (5.35 s).
-  return eFoldsAgainstDrag(model, growth) >= kEitherWayEFolds;
+  // Growing is not enough: the rocking must grow from its start to some 14° before drag has
+  // slowed the spin to where it no longer grows (docs/physics.md P8.4 gives the runs that set
+  // the 14°, tests/theory_test.cpp ReversingEitherWayIsPredictedWhereRunsDoIt some of them).
+  return eFoldsAgainstDrag(model, growth) >= eFoldsNeeded(model);
 }
 
 namespace {

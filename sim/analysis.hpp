@@ -124,6 +124,7 @@ enum class Direction {
 /// the rate below which a growth counts as none: what the two questions below read.
 struct GrowthEachWay {
   double ccw, cw, zero;
+  double spin = 1e-3;  ///< the |spin| they were found at, rad/s
 };
 GrowthEachWay growthEachWay(const Model& model, double spin_magnitude);
 
@@ -136,15 +137,22 @@ inline Direction preferredDirection(const Model& model, double spin_magnitude) {
   return preferredDirection(growthEachWay(model, spin_magnitude));
 }
 
-/// The e-folds the slower of the two directions' growths makes in the time drag alone takes to
-/// slow the spin by e (C/σ); infinite without drag.
+/// The e-folds the rocking grows, spun the way it grows more slowly, as drag alone slows the spin
+/// (by e in C/σ) to where it no longer grows: the growth rate integrated along the spin's decay,
+/// each moment's rate the linearised theory's at that moment's spin; infinite without drag.
 double eFoldsAgainstDrag(const Model& model, const GrowthEachWay& growth);
-/// The rule of thumb's count (docs/physics.md P8.4): 0.5° to 30° of rocking, ln 60.
-inline constexpr double kEitherWayEFolds = 4;
+/// The rocking the rule of thumb asks for (docs/physics.md P8.4): from its start to this, rad.
+inline constexpr double kRockingThatReverses = 14 * M_PI / 180;
+/// The rocking's start, rad: the initial tilt's, with the swing a tilt rate (initial.angular_
+/// velocity's x and y) starts at the slower rest frequency.
+double rockingStart(const Model& model);
+/// The e-folds the rule of thumb asks for: from the rocking's start to kRockingThatReverses;
+/// infinite where nothing starts the rocking, 0 from a start beyond it.
+double eFoldsNeeded(const Model& model);
 
 /// Whether the rocking grows spun either way at |spin| (a body with deep dents), the slower
-/// growth kEitherWayEFolds or more in the time drag alone takes to slow the spin by e: then it
-/// is predicted to reverse spun either way, the preferred way later (docs/physics.md P8.4).
+/// growth as many e-folds as eFoldsNeeded or more as drag slows the spin: then it is predicted
+/// to reverse spun either way, the preferred way later (docs/physics.md P8.4).
 bool growsEitherWay(const Model& model, const GrowthEachWay& growth);
 inline bool growsEitherWay(const Model& model, double spin_magnitude) {
   return growsEitherWay(model, growthEachWay(model, spin_magnitude));

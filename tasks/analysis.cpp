@@ -237,6 +237,8 @@ void analyzeTheory(const sim::Model& model, Analysis& a) {
   a.preferred = sim::preferredDirection(each_way);
   a.grows_either_way = sim::growsEitherWay(model, each_way);
   a.either_way_efolds = sim::eFoldsAgainstDrag(model, each_way);
+  a.either_way_needed = sim::eFoldsNeeded(model);
+  a.rocking_start = sim::rockingStart(model);
   a.preferred_growth = a.preferred == sim::Direction::Ccw  ? each_way.ccw
                        : a.preferred == sim::Direction::Cw ? each_way.cw
                                                            : 0;
@@ -372,6 +374,10 @@ nlohmann::json analysisJson(const Analysis& a) {
   // A body that cannot stand has no rocking about upright for a spin direction to favour.
   j["preferred"] = orNull(a.rest.stable, std::string(rb::nameOf(a.preferred)));
   j["grows_either_way"] = orNull(a.rest.stable, a.grows_either_way);
+  // The rule's count, where it is one: drag to slow the spin, and rocking that grows spun the
+  // preferred way (docs/physics.md P8.4).
+  j["either_way_efolds"] =
+      orNull(a.rest.stable && a.drag > 0 && a.preferred_growth > 0, a.either_way_efolds);
   j["predicted_first_reversal"] = forecastJson(a);
   // A mesh body whose bottom does not fit has no theory (§P11.4): null, not numbers never
   // worked out.
@@ -379,7 +385,7 @@ nlohmann::json analysisJson(const Analysis& a) {
     for (const char* key :
          {"h", "radii_of_curvature", "rest_stable", "frequencies_hz", "growth_rates_at_rest",
           "growth_rates", "first_order_growth_per_spin", "eigenvalues", "preferred",
-          "grows_either_way", "predicted_first_reversal"})
+          "grows_either_way", "either_way_efolds", "predicted_first_reversal"})
       j[key] = nullptr;
   return j;
 }

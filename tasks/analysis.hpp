@@ -125,9 +125,11 @@ struct Analysis {
   /// Whether the rocking grows spun either way at |spin|: then the body is predicted to reverse
   /// spun the preferred way too, later (sim::growsEitherWay).
   bool grows_either_way = false;
-  /// Where it does: the slower growth's e-folds while drag slows the spin by e (the rule asks
-  /// sim::kEitherWayEFolds; infinite without drag).
+  /// The slower growth's e-folds as drag slows the spin (sim::eFoldsAgainstDrag; infinite
+  /// without drag), and the count the rule asks for (sim::eFoldsNeeded).
   double either_way_efolds = 0;
+  double either_way_needed = 0;
+  double rocking_start = 0;        ///< rad: what the needed count starts from (sim::rockingStart)
   double preferred_growth = 0;     ///< 1/s: the fastest growth spun the preferred way at |spin|
   sim::ReversalForecast forecast;  ///< of the first reversal spun `spin`, within `duration`
   double duration = 0;             ///< s: how far the forecast looks

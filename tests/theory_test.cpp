@@ -716,13 +716,15 @@ TEST(Theory, AVideoNotInRealTimeSaysItsSpeedInItsTitle) {
   EXPECT_EQ(media::titleWithPlayback(title, 2), "mine, at 2\u00d7 speed: spun -5 rad/s, clockwise");
 }
 
-// P8.4: where the rocking grows spun the preferred way too, fast enough against drag, the body
-// is predicted to reverse that way as well, and runs agree. The both-ways scene spun its
-// preferred way (−8 rad/s, clockwise) grows at 0.67 /s, 12.2 e-folds in the time drag slows its
-// spin by e: predicted, and it reverses (5.35 s, docs/scenes.md). The default body spun its
-// preferred way (+5 rad/s) grows too, at 0.16 /s, but only 2.7 e-folds in that time: not
-// predicted, and it does not reverse in 30 s. Without drag it is predicted (nothing slows the
-// spin), and it reverses (Kane & Levinson's body too: their long scene, four reversals).
+// P8.4: where the rocking grows spun the preferred way too, enough against drag, the body is
+// predicted to reverse that way as well, and runs agree. The both-ways scene spun its preferred
+// way (−8 rad/s, clockwise) grows 6.9 e-folds as drag slows the spin, where 3.0 take its 0.71°
+// start to 14°: predicted, and it reverses (5.35 s, docs/scenes.md); spun −6 rad/s, 3.9:
+// predicted, and it reverses (9.15 s); spun −5 rad/s it grows too, 2.6 e-folds: not predicted,
+// and it does not reverse in 30 s (a count from the start's growth alone, 6.5, predicted it).
+// The default body spun its preferred way (+5 rad/s) grows too, 0.7 e-folds: not predicted, and
+// it does not reverse in 30 s. Without drag it is predicted (nothing slows the spin), and it
+// reverses (Kane & Levinson's body too: their long scene, four reversals).
 TEST(Theory, ReversingEitherWayIsPredictedWhereRunsDoIt) {
   auto shipped = [](const char* name) {
     auto loaded = scene::loadFile(std::string(RATTLEBACK_SOURCE_DIR) + "/scenes/" + name);
@@ -738,6 +740,14 @@ TEST(Theory, ReversingEitherWayIsPredictedWhereRunsDoIt) {
   EXPECT_EQ(sim::preferredDirection(both, 8), sim::Direction::Cw);
   EXPECT_TRUE(sim::growsEitherWay(both, 8));
   EXPECT_TRUE(reverses(both));  // spun −8 rad/s, the way it prefers
+  for (const double spin : {-6.0, -5.0}) {
+    sim::SceneSpec slower = shipped("both-ways.yaml");
+    slower.initial.spin = spin;
+    slower.simulation.duration = 30;
+    const sim::Model model = build(slower);
+    EXPECT_EQ(sim::growsEitherWay(model, spin), reverses(model)) << "spun " << spin;
+    EXPECT_EQ(reverses(model), spin == -6.0) << "spun " << spin;
+  }
 
   sim::SceneSpec spec = shipped("rattleback.yaml");
   spec.initial.spin = 5;
