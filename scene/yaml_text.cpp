@@ -14,6 +14,7 @@
 
 #include "scene/loader.hpp"
 #include "scene/tree.hpp"
+#include "util/assets.hpp"
 #include "util/nearest.hpp"
 
 namespace scene {
@@ -135,14 +136,21 @@ rb::Result<std::string> readSceneFile(const std::string& path) {
     std::string near;
     if (error == ENOENT) {
       const std::filesystem::path named(path);
-      const std::filesystem::path folder = named.has_parent_path() ? named.parent_path() : ".";
+      std::filesystem::path folder = named.has_parent_path() ? named.parent_path() : ".";
+      // A relative name whose folder is not here may be a shipped scene's, mistyped
+      // (scenes/ratleback.yaml from a folder of one's own): its near names are the shipped ones.
+      const bool shipped_name = named.is_relative() && !path.starts_with("./") &&
+                                !path.starts_with("../") &&
+                                !std::filesystem::is_directory(folder, ec);
+      if (shipped_name) folder = std::filesystem::path(rb::assetsDir()) / folder;
       std::vector<std::string> files;
       for (auto it = std::filesystem::directory_iterator(folder, ec);
            !ec && it != std::filesystem::directory_iterator() && files.size() < 1000;
            it.increment(ec))
         if (it->is_regular_file(ec)) files.push_back(it->path().filename().string());
       if (const auto nearest = rb::nearestWord(named.filename().string(), files))
-        near = "; did you mean " + printable((named.parent_path() / *nearest).string()) + "?";
+        near = "; did you mean " + printable((named.parent_path() / *nearest).string()) +
+               (shipped_name ? " (a shipped scene, found by name from any folder)?" : "?");
       // A relative name read from elsewhere than the user thought: say where it was looked
       // for, and that the shipped scenes are found by name from any folder only where
       // rattleback is installed (a build tree's Python did not find scenes/rattleback.yaml

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -316,6 +317,23 @@ TEST(BadScenes, AMissingFileIsNamedWithTheSystemsReason) {
                 "you mean " + scenes + "rattleback.yaml?");
   EXPECT_EQ(scene::loadFile(scenes + "spinning-top.yaml").error().text(),
             scenes + "spinning-top.yaml: cannot open the scene file: No such file or directory");
+}
+
+// A shipped scene's name mistyped from a folder of one's own (scenes/ is not here): the near
+// names are the shipped ones, which are found by name from any folder (RATTLEBACK_ASSETS stands
+// for the installed share/rattleback, here the source tree with its scenes/).
+TEST(BadScenes, AMistypedShippedNameOffersTheShippedOne) {
+  const std::filesystem::path here = std::filesystem::current_path();
+  const std::filesystem::path empty = std::filesystem::temp_directory_path() / "rb-no-scenes-here";
+  std::filesystem::create_directories(empty);
+  std::filesystem::current_path(empty);
+  ::setenv("RATTLEBACK_ASSETS", RATTLEBACK_SOURCE_DIR, 1);
+  const std::string said = scene::loadFile("scenes/ratleback.yaml").error().text();
+  ::unsetenv("RATTLEBACK_ASSETS");
+  std::filesystem::current_path(here);
+  EXPECT_EQ(said,
+            "scenes/ratleback.yaml: cannot open the scene file: No such file or directory; did "
+            "you mean scenes/rattleback.yaml (a shipped scene, found by name from any folder)?");
 }
 
 TEST(BadScenes, AFolderIsNamedAsAFolder) {

@@ -117,10 +117,29 @@ class Run:
         columns = self.__dict__.get("_columns", {})
         if name in columns:
             return columns[name]
-        raise AttributeError(f"Run has no column or attribute {name!r}; columns: " + ", ".join(columns))
+        if name.startswith("_"):  # Python's and IPython's own probes: no hint to work out
+            raise AttributeError(name)
+        raise AttributeError(f"Run has no column or attribute {name!r}{self._nearest(name)}")
 
     def __getitem__(self, name: str) -> np.ndarray:
+        if name not in self._columns:
+            raise KeyError(f"{name!r} is not a column{self._nearest(name, columns_only=True)}")
         return self._columns[name]
+
+    def _nearest(self, name: str, columns_only: bool = False) -> str:
+        """The way out of a name that is not there: the attribute a result key has (``first_
+        reversal`` for ``first_reversal_s``), a key of ``result``, or the nearest name."""
+        import difflib
+
+        columns = list(self.__dict__.get("_columns", {}))
+        as_attribute = {"first_reversal_s": "first_reversal", "reversals_s": "reversals"}
+        if not columns_only and name in as_attribute:
+            return f"; did you mean run.{as_attribute[name]} (or run.result[{name!r}])?"
+        if not columns_only and "_run" in self.__dict__ and name in self.result:
+            return f"; it is a key of the run's result: run.result[{name!r}]"
+        names = columns if columns_only else columns + [n for n in dir(type(self)) if not n.startswith("_")]
+        near = difflib.get_close_matches(name, names, n=1)
+        return (f"; did you mean {near[0]!r}?" if near else "") + " (columns: " + ", ".join(columns) + ")"
 
     def __len__(self) -> int:
         return len(self._columns["t"])
@@ -165,6 +184,7 @@ class Run:
 
     @property
     def scene(self) -> str:
+        """The scene as messages name it: its file's path (or ``scene`` for one given as text)."""
         return self._run.scene
 
     @property

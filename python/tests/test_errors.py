@@ -485,3 +485,17 @@ def test_a_sweep_made_in_python_names_argument_vary_and_the_key():
     table = rb.sweep(base, {"body.mass": [-1, 0.059]}, duration=0.1, jobs=1)
     assert list(table["status"]) == ["refused", "ok"]
     assert table["message"][0] == "argument vary: body.mass must be > 0, not -1"
+
+
+def test_a_name_a_run_does_not_have_says_the_way_to_it():
+    # A student's first tries: the sidecar's key as an attribute, a typo'd column by key.
+    run = rb.simulate(scene_path("rattleback.yaml"), duration=1)
+    with pytest.raises(AttributeError, match=r"did you mean run\.first_reversal "):
+        run.first_reversal_s
+    with pytest.raises(AttributeError, match=r"a key of the run's result: run\.result\['final_spin'\]"):
+        run.final_spin
+    with pytest.raises(KeyError, match="did you mean 'spin'"):
+        run["spn"]
+    with pytest.raises(AttributeError, match="did you mean 'spin'"):
+        run.spn
+    assert not hasattr(run, "_repr_html_")  # IPython's probe: a plain AttributeError
