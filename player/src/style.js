@@ -6,6 +6,10 @@
 // opaque box and, the canvas being drawn upside down, left out the box's mirror image instead,
 // a blank box at the picture's bottom (the reversal label's, in present mode at 1920 × 1080).
 
+// Present mode's read-outs are a 28th of the screen's height, but no larger than 2.3 % of its
+// width (which binds only on screens narrower than about 3:2: a 4:3 projector's 1024 × 768 had
+// them reach 32 % down the picture); its reversal label stands at the picture's bottom left,
+// free at any size (top right, the read-outs of a long sense had reached over it).
 // Screens this high or higher show present mode's plot scaled up (at 1280 × 720 a larger plot
 // hid the spin cue's arrowhead); plot.js draws it finer on them. Below, present mode's read-outs
 // take four lines, not six (the spin's sense on the spin's line, the floor's scale left out):
@@ -56,13 +60,13 @@ export const STYLE = `
 .rbp.rbp-present .rbp-stage{width:min(100%,calc((100vh - 110px) * 16 / 9))}
 .rbp.rbp-present .rbp-bar,.rbp.rbp-present .rbp-views{width:min(100%,calc((100vh - 110px) * 16 / 9))}
 .rbp.rbp-present .rbp-side{position:absolute;left:calc(28px + (100vw - 24px - min(100vw - 24px, (100vh - 110px) * 16 / 9)) / 2);top:24px;flex:none;width:auto;background:rgba(255,255,255,.82);padding:6px 14px;border-radius:4px;pointer-events:none;max-width:calc(min(100vw - 24px, (100vh - 110px) * 16 / 9) - 60px)}
-.rbp.rbp-present .rbp-title{font-size:max(26px,3.6vh)}
-.rbp.rbp-present .rbp-read{font-size:max(26px,3.6vh)}
+.rbp.rbp-present .rbp-title{font-size:max(18px,min(max(26px,3.6vh),2.3vw))}
+.rbp.rbp-present .rbp-read{font-size:max(18px,min(max(26px,3.6vh),2.3vw))}
 .rbp.rbp-present .rbp-help{display:none}
 .rbp.rbp-present .rbp-plotbox{position:fixed;right:calc(24px + (100vw - 24px - min(100vw - 24px, (100vh - 110px) * 16 / 9)) / 2);bottom:calc(100vh - min(100vw - 24px, (100vh - 110px) * 16 / 9) * 9 / 16);margin:0;transform-origin:100% 100%;opacity:.94}
 @media ${PRESENT_PLOT_SCALED}{.rbp.rbp-present .rbp-plotbox{transform:scale(1.7)}}
 @media not all and ${PRESENT_PLOT_SCALED}{.rbp.rbp-present .rbp-scale{display:none}.rbp.rbp-present .rbp-spin,.rbp.rbp-present .rbp-sense{display:inline}.rbp.rbp-present .rbp-sense::before{content:'  '}}
-.rbp.rbp-present .rbp-reversal-label{font-size:max(24px,3.4vh);top:16px;right:16px}
+.rbp.rbp-present .rbp-reversal-label{font-size:max(18px,min(3.4vh,2.4vw));top:auto;right:auto;bottom:16px;left:16px}
 .rbp-missing{padding:10px 12px;border:1px dashed #c9a0a0;border-radius:4px;color:#7a2e2e;background:#fbf4f4;font:14px system-ui,sans-serif;margin:8px 0}
 `;
 
