@@ -180,9 +180,8 @@ std::string measuredAs(const std::optional<RunRecord>& run, bool ccw, std::optio
            ? "<b>first reversal at " + number(run->first_reversal_s, "%.3f") + " s</b>"
            : reversalOf(*run));
   const bool reversed = !run->reversals_s.empty() || run->first_reversal_s.has_value();
-  text += endingOf(*run, reversed);
   if (preferred) text += wordsFor(againstTheory(*preferred, reversed, either_way), Front::Caption);
-  return text;
+  return text + endingOf(*run, reversed);
 }
 
 std::string predictedOf(const nlohmann::json& t) {
