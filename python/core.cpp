@@ -490,67 +490,63 @@ void bindSweep(py::module_& m) {
 }
 
 // Runs, the player's data and the analysis of a loaded scene.
+std::string playerScriptOf(const LoadedScene& loaded, const Run& run, const std::string& id) {
+  const sim::Model& model = loaded.value.model;
+  std::vector<double> reversals;
+  for (const auto& t : run.sidecar.at("result").at("reversals_s"))
+    reversals.push_back(t.get<double>());
+  tasks::PlayerRun player = tasks::playerRunOf(
+      id, model, tasks::playerFrame(loaded.value.scene, model), tasks::posesOf(run.samples),
+      std::move(reversals), tasks::playerSurfaceOf(loaded.value));
+  // The body spun the other way, as the report adds it: the same function, from the model the
+  // run recorded (simulate(duration=1)'s other way runs 1 s too).
+  player.other = tasks::otherSpinOf(model, run.sidecar.at("model"), run.rate);
+  return tasks::playerScript(player);
+}
+
+// For bench/python_speed.py: the C++ run alone (samples kept as simulate keeps them), the median
+// of `repeats` calls, s.
+double nativeSeconds(const LoadedScene& loaded, double rate, int repeats) {
+  GilReleased release;
+  std::vector<double> times;
+  for (int i = 0; i < repeats; ++i) {
+    std::vector<sim::Telemetry> samples;
+    tasks::SimulateOptions options;
+    options.rate = rate;
+    options.each = [&](const sim::Telemetry& x) { samples.push_back(x); };
+    const auto start = std::chrono::steady_clock::now();
+    tasks::simulate(loaded.value.model, options);
+    times.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  std::sort(times.begin(), times.end());
+  return times[times.size() / 2];
+}
+
+py::object analyzeOf(const LoadedScene& loaded, std::optional<double> spin) {
+  if (auto ok = tasks::checkAnalysisSpin(spin, "argument spin"); !ok) raise(ok.error());
+  return toPython(tasks::analysisJson(tasks::analyze(loaded.value.model, spin)));
+}
+
+py::object linearizeOf(const LoadedScene& loaded, std::optional<double> spin) {
+  if (auto ok = tasks::checkAnalysisSpin(spin, "argument spin"); !ok) raise(ok.error());
+  const sim::Model& model = loaded.value.model;
+  if (model.body->surface.kind == sim::Surface::Kind::Mesh &&
+      !model.body->surface.mesh.fit.usable())
+    throw py::value_error(
+        "linearize: this mesh body's bottom does not fit a smooth surface to roll on (" +
+        model.body->surface.mesh.fit.problem +
+        "), so it has no linearised rolling model (docs/physics.md P11.4)");
+  return toPython(
+      tasks::linearisationJson(sim::linearise(model, tasks::analysisSpin(model, spin))));
+}
+
 void bindCalls(py::module_& m) {
-  m.def(
-      "player_script",
-      [](const LoadedScene& loaded, const Run& run, const std::string& id) {
-        const sim::Model& model = loaded.value.model;
-        std::vector<double> reversals;
-        for (const auto& t : run.sidecar.at("result").at("reversals_s"))
-          reversals.push_back(t.get<double>());
-        tasks::PlayerRun player = tasks::playerRunOf(
-            id, model, tasks::playerFrame(loaded.value.scene, model), tasks::posesOf(run.samples),
-            std::move(reversals), tasks::playerSurfaceOf(loaded.value));
-        // The body spun the other way, as the report adds it: the same function, from the
-        // model the run recorded (simulate(duration=1)'s other way runs 1 s too).
-        player.other = tasks::otherSpinOf(model, run.sidecar.at("model"), run.rate);
-        return tasks::playerScript(player);
-      },
-      py::arg("scene"), py::arg("run"), py::arg("id"));
-  // For bench/python_speed.py: the C++ run alone (samples kept as simulate keeps them), the
-  // median of `repeats` calls, s.
-  m.def(
-      "_native_seconds",
-      [](const LoadedScene& loaded, double rate, int repeats) {
-        GilReleased release;
-        std::vector<double> times;
-        for (int i = 0; i < repeats; ++i) {
-          std::vector<sim::Telemetry> samples;
-          tasks::SimulateOptions options;
-          options.rate = rate;
-          options.each = [&](const sim::Telemetry& x) { samples.push_back(x); };
-          const auto start = std::chrono::steady_clock::now();
-          tasks::simulate(loaded.value.model, options);
-          times.push_back(
-              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-        }
-        std::sort(times.begin(), times.end());
-        return times[times.size() / 2];
-      },
-      py::arg("scene"), py::arg("rate"), py::arg("repeats"));
+  m.def("player_script", &playerScriptOf, py::arg("scene"), py::arg("run"), py::arg("id"));
+  m.def("_native_seconds", &nativeSeconds, py::arg("scene"), py::arg("rate"), py::arg("repeats"));
   m.def("simulate", &simulate, py::arg("scene"), py::arg("rate"), py::arg("check") = false);
-  m.def(
-      "analyze",
-      [](const LoadedScene& loaded, std::optional<double> spin) {
-        if (auto ok = tasks::checkAnalysisSpin(spin, "argument spin"); !ok) raise(ok.error());
-        return toPython(tasks::analysisJson(tasks::analyze(loaded.value.model, spin)));
-      },
-      py::arg("scene"), py::arg("spin") = py::none());
-  m.def(
-      "linearize",
-      [](const LoadedScene& loaded, std::optional<double> spin) {
-        if (auto ok = tasks::checkAnalysisSpin(spin, "argument spin"); !ok) raise(ok.error());
-        const sim::Model& model = loaded.value.model;
-        if (model.body->surface.kind == sim::Surface::Kind::Mesh &&
-            !model.body->surface.mesh.fit.usable())
-          throw py::value_error(
-              "linearize: this mesh body's bottom does not fit a smooth surface to roll on (" +
-              model.body->surface.mesh.fit.problem +
-              "), so it has no linearised rolling model (docs/physics.md P11.4)");
-        return toPython(
-            tasks::linearisationJson(sim::linearise(model, tasks::analysisSpin(model, spin))));
-      },
-      py::arg("scene"), py::arg("spin") = py::none());
+  m.def("analyze", &analyzeOf, py::arg("scene"), py::arg("spin") = py::none());
+  m.def("linearize", &linearizeOf, py::arg("scene"), py::arg("spin") = py::none());
 }
 
 }  // namespace

@@ -184,6 +184,63 @@ py::dict compareArrays(const U8Array& a, const U8Array& b, int channel, double p
   return d;
 }
 
+py::bytes encodePngOf(const U8Array& a, const std::string& drawn_by) {
+  render::Image image = imageOf(a);
+  image.drawn_by = drawn_by;
+  auto bytes = render::encodePng(image);
+  if (!bytes) raise(bytes.error());
+  return py::bytes(reinterpret_cast<const char*>(bytes->data()), bytes->size());
+}
+
+// A still of a scene is listed in the folder's manifest, so that the report shows it under
+// Stills with its view, time and spin (a failure to list loses nothing: the report then places
+// the file by its name). An image made from an array is not.
+void listStill(const std::string& path, const py::dict& still) {
+  const std::optional<double> frame_m = still.contains("frame_m") && !still["frame_m"].is_none()
+                                            ? std::optional<double>(still["frame_m"].cast<double>())
+                                            : std::nullopt;
+  (void)tasks::recordOutputs(
+      {{path, tasks::OutputKind::Still, still["scene"].cast<std::string>(),
+        still["view"].cast<std::string>(), still["spin"].cast<double>(), still["t"].cast<double>(),
+        still.contains("made_from") ? still["made_from"].cast<std::string>() : "", frame_m}});
+}
+
+void writePngOf(const std::string& path, const U8Array& a, const std::optional<py::dict>& still) {
+  {
+    // As `still -o y.jpg` refuses it: the data is PNG whatever the name says.
+    const rb::OutputNamedBy naming("save's path");
+    if (auto e = media::checkExtension(path, ".png", "PNG", false); !e) raise(e.error());
+  }
+  const rb::OutputNamedBy naming("save");  // Image.save: the way out an error suggests
+  if (auto e = tasks::makeParentFolder(path); !e) raise(e.error());
+  render::Image image = imageOf(a);
+  if (still && still->contains("drawn_by"))
+    image.drawn_by = (*still)["drawn_by"].cast<std::string>();
+  if (auto e = render::writePng(path, image); !e) raise(e.error());
+  if (still) listStill(path, *still);
+}
+
+py::array_t<std::uint8_t> diffImageOf(const U8Array& a, const U8Array& b, int channel) {
+  return arrayOf(render::diffImage(imageOf(a), imageOf(b), channel), false);
+}
+
+py::array_t<std::uint8_t> readPngOf(const std::string& path) {
+  render::Image image;
+  if (auto e = render::readPng(path, image); !e) raise(e.error());
+  bool opaque = true;
+  for (std::size_t i = 3; i < image.rgba.size() && opaque; i += 4) opaque = image.rgba[i] == 255;
+  return arrayOf(image, !opaque);
+}
+
+// render::Tolerance's defaults: the one place `compare`, snapshot suites and Python take them.
+py::dict defaultTolerance() {
+  py::dict tolerance;
+  tolerance["tolerance"] = render::Tolerance{}.channel;
+  tolerance["pixels"] = render::Tolerance{}.pixels;
+  tolerance["square"] = render::Tolerance{}.square;
+  return tolerance;
+}
+
 }  // namespace
 }  // namespace pyrb
 
@@ -198,72 +255,13 @@ PYBIND11_MODULE(_draw, m) {
         py::arg("transparent"), py::arg("backend"), py::arg("title") = py::none());
   m.def("render", &renderVideos, py::arg("scene"), py::arg("output"), py::arg("both"),
         py::arg("crf"), py::arg("preset"), py::arg("backend"));
-  m.def(
-      "encode_png",
-      [](const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>& a,
-         const std::string& drawn_by) {
-        render::Image image = imageOf(a);
-        image.drawn_by = drawn_by;
-        auto bytes = render::encodePng(image);
-        if (!bytes) raise(bytes.error());
-        return py::bytes(reinterpret_cast<const char*>(bytes->data()), bytes->size());
-      },
-      py::arg("array"), py::arg("drawn_by") = "");
-  m.def(
-      "write_png",
-      [](const std::string& path,
-         const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>& a,
-         const std::optional<py::dict>& still) {
-        {
-          // As `still -o y.jpg` refuses it: the data is PNG whatever the name says.
-          const rb::OutputNamedBy naming("save's path");
-          if (auto e = media::checkExtension(path, ".png", "PNG", false); !e) raise(e.error());
-        }
-        const rb::OutputNamedBy naming("save");  // Image.save: the way out an error suggests
-        if (auto e = tasks::makeParentFolder(path); !e) raise(e.error());
-        render::Image image = imageOf(a);
-        if (still && still->contains("drawn_by"))
-          image.drawn_by = (*still)["drawn_by"].cast<std::string>();
-        if (auto e = render::writePng(path, image); !e) raise(e.error());
-        // A still of a scene is listed in the folder's manifest, so that the report shows it
-        // under Stills with its view, time and spin (a failure to list loses nothing: the
-        // report then places the file by its name). An image made from an array is not.
-        if (still)
-          (void)tasks::recordOutputs(
-              {{path, tasks::OutputKind::Still, (*still)["scene"].cast<std::string>(),
-                (*still)["view"].cast<std::string>(), (*still)["spin"].cast<double>(),
-                (*still)["t"].cast<double>(),
-                still->contains("made_from") ? (*still)["made_from"].cast<std::string>() : "",
-                still->contains("frame_m") && !(*still)["frame_m"].is_none()
-                    ? std::optional<double>((*still)["frame_m"].cast<double>())
-                    : std::nullopt}});
-      },
-      py::arg("path"), py::arg("array"), py::arg("still") = py::none());
+  m.def("encode_png", &encodePngOf, py::arg("array"), py::arg("drawn_by") = "");
+  m.def("write_png", &writePngOf, py::arg("path"), py::arg("array"), py::arg("still") = py::none());
   m.def("compare", &compareArrays, py::arg("a"), py::arg("b"), py::arg("tolerance"),
         py::arg("pixels"), py::arg("square"));
-  m.def(
-      "diff_image",
-      [](const U8Array& a, const U8Array& b, int channel) {
-        return arrayOf(render::diffImage(imageOf(a), imageOf(b), channel), false);
-      },
-      py::arg("a"), py::arg("b"), py::arg("tolerance"));
-  m.def(
-      "read_png",
-      [](const std::string& path) {
-        render::Image image;
-        if (auto e = render::readPng(path, image); !e) raise(e.error());
-        bool opaque = true;
-        for (std::size_t i = 3; i < image.rgba.size() && opaque; i += 4)
-          opaque = image.rgba[i] == 255;
-        return arrayOf(image, !opaque);
-      },
-      py::arg("path"));
-  // render::Tolerance's defaults: the one place `compare`, snapshot suites and Python take them.
-  py::dict tolerance;
-  tolerance["tolerance"] = render::Tolerance{}.channel;
-  tolerance["pixels"] = render::Tolerance{}.pixels;
-  tolerance["square"] = render::Tolerance{}.square;
-  m.attr("default_tolerance") = tolerance;
+  m.def("diff_image", &diffImageOf, py::arg("a"), py::arg("b"), py::arg("tolerance"));
+  m.def("read_png", &readPngOf, py::arg("path"));
+  m.attr("default_tolerance") = defaultTolerance();
   py::list presets;
   for (std::string_view p : media::kPresets) presets.append(std::string(p));
   m.attr("presets") = presets;

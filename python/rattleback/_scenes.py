@@ -26,6 +26,43 @@ def _yaml_value(value: Any) -> str:
     return _json.dumps(value, default=_yaml_value_default)
 
 
+def _mesh_arrays(vertices: Any, faces: Any, mass: float, units: float) -> tuple:
+    """Scene.from_mesh's arguments checked, and its arrays as the loader takes them (float64
+    and int64, contiguous); a slip is a SceneError naming the argument."""
+    for argument, value in (("mass", mass), ("units", units)):
+        if not (_np.isfinite(value) and value > 0):
+            raise SceneError(f"from_mesh: argument {argument} must be > 0, not {value}", "from_mesh")
+    vertices = _np.ascontiguousarray(vertices, dtype=_np.float64)
+    faces = _np.ascontiguousarray(faces, dtype=_np.int64)
+    for argument, array, rows in (("vertices", vertices, "N"), ("faces", faces, "M")):
+        if array.ndim != 2 or array.shape[1] != 3:
+            # (3, N) is the usual slip (a transposed array); quads are (M, 4).
+            hint = "; transposed? give its .T" if array.ndim == 2 and array.shape[0] == 3 else ""
+            if argument == "faces" and array.ndim == 2 and array.shape[1] == 4:
+                hint = "; quads? split each into two triangles"
+            raise SceneError(
+                f"from_mesh: argument {argument} takes an ({rows}, 3) array, not one of shape "
+                f"{array.shape}{hint}",
+                "from_mesh",
+            )
+        if len(array) == 0:
+            raise SceneError(
+                f"from_mesh: argument {argument} is empty: give an ({rows}, 3) array", "from_mesh"
+            )
+    if not _np.isfinite(vertices).all():
+        row = int(_np.argwhere(~_np.isfinite(vertices))[0][0])
+        raise SceneError(f"from_mesh: argument vertices: row {row} is not finite", "from_mesh")
+    outside = (faces < 0) | (faces >= len(vertices))
+    if outside.any():
+        row = int(_np.argwhere(outside)[0][0])
+        raise SceneError(
+            f"from_mesh: argument faces: row {row} names vertex {int(faces[row][outside[row]][0])}, "
+            f"but vertices has {len(vertices)} rows (0 … {len(vertices) - 1})",
+            "from_mesh",
+        )
+    return vertices, faces
+
+
 class Scene:
     """A scene, checked and compiled: from a file, a YAML string or a dict.
 
@@ -106,37 +143,7 @@ class Scene:
         ``yaml`` is the whole scene, its mesh named ``<vertices, faces>``. What ``scene.mesh()``
         gives comes back: ``Scene.from_mesh(*rb.Scene.from_file("scenes/rattleback.yaml").mesh(),
         0.059)``."""
-        for argument, value in (("mass", mass), ("units", units)):
-            if not (_np.isfinite(value) and value > 0):
-                raise SceneError(f"from_mesh: argument {argument} must be > 0, not {value}", "from_mesh")
-        vertices = _np.ascontiguousarray(vertices, dtype=_np.float64)
-        faces = _np.ascontiguousarray(faces, dtype=_np.int64)
-        for argument, array, rows in (("vertices", vertices, "N"), ("faces", faces, "M")):
-            if array.ndim != 2 or array.shape[1] != 3:
-                # (3, N) is the usual slip (a transposed array); quads are (M, 4).
-                hint = "; transposed? give its .T" if array.ndim == 2 and array.shape[0] == 3 else ""
-                if argument == "faces" and array.ndim == 2 and array.shape[1] == 4:
-                    hint = "; quads? split each into two triangles"
-                raise SceneError(
-                    f"from_mesh: argument {argument} takes an ({rows}, 3) array, not one of shape "
-                    f"{array.shape}{hint}",
-                    "from_mesh",
-                )
-            if len(array) == 0:
-                raise SceneError(
-                    f"from_mesh: argument {argument} is empty: give an ({rows}, 3) array", "from_mesh"
-                )
-        if not _np.isfinite(vertices).all():
-            row = int(_np.argwhere(~_np.isfinite(vertices))[0][0])
-            raise SceneError(f"from_mesh: argument vertices: row {row} is not finite", "from_mesh")
-        outside = (faces < 0) | (faces >= len(vertices))
-        if outside.any():
-            row = int(_np.argwhere(outside)[0][0])
-            raise SceneError(
-                f"from_mesh: argument faces: row {row} names vertex {int(faces[row][outside[row]][0])}, "
-                f"but vertices has {len(vertices)} rows (0 … {len(vertices) - 1})",
-                "from_mesh",
-            )
+        vertices, faces = _mesh_arrays(vertices, faces, mass, units)
         if isinstance(scene, _Mapping):  # its body is from_mesh's: the dict need not have one
             base = Scene.__new__(Scene)
             base._yaml, base._name, base._values, base._file = (
