@@ -111,14 +111,17 @@ std::optional<std::string> fieldOf(const std::vector<std::string>& fields, std::
 
 // The metric from a line of a shard's table (the merge reads the files the shards wrote): none
 // where the run was not ok (a table without the status column: where the field is empty).
+double metricOf(const std::vector<std::string>& fields, std::size_t axes,
+                const tasks::SweepColumns& columns, tasks::SweepMetric metric) {
+  const auto value = fieldOf(fields, axes, columns, rb::nameOf(metric));
+  const auto status = fieldOf(fields, axes, columns, "status");
+  if (!value || value->empty() || (status && *status != "ok")) return std::nan("");
+  return std::strtod(value->c_str(), nullptr);
+}
 double metricOf(const std::string& line, std::size_t axes, const tasks::SweepColumns& columns,
                 tasks::SweepMetric metric) {
   const auto fields = splitCsv(line);
-  if (!fields) return std::nan("");
-  const auto value = fieldOf(*fields, axes, columns, rb::nameOf(metric));
-  const auto status = fieldOf(*fields, axes, columns, "status");
-  if (!value || value->empty() || (status && *status != "ok")) return std::nan("");
-  return std::strtod(value->c_str(), nullptr);
+  return fields ? metricOf(*fields, axes, columns, metric) : std::nan("");
 }
 
 // Why --metric cannot be plotted from a table of these columns, or nothing.
@@ -380,11 +383,11 @@ void printBothWays(const scene::Sweep& sweep, const Plan& plan) {
   std::vector<std::optional<bool>> exports(has_exports ? first.size() : 0);
   for (const auto& [row, line] : plan.done) {
     const auto r = static_cast<std::size_t>(row);
-    first[r] = metricOf(line, sweep.axes.size(), columns, tasks::SweepMetric::FirstReversal);
-    if (!has_exports) continue;
     const auto fields = splitCsv(line);
-    const auto field = fields ? fieldOf(*fields, sweep.axes.size(), columns, "exports")
-                              : std::optional<std::string>();
+    if (!fields) continue;
+    first[r] = metricOf(*fields, sweep.axes.size(), columns, tasks::SweepMetric::FirstReversal);
+    if (!has_exports) continue;
+    const auto field = fieldOf(*fields, sweep.axes.size(), columns, "exports");
     if (field && !field->empty()) exports[r] = *field == "yes";
   }
   if (const auto found = tasks::bothWays(sweep, first, exports))

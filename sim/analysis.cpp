@@ -223,13 +223,17 @@ double eFoldsNeeded(const Model& model) {
   return std::max(0.0, std::log(kRockingThatReverses / start));
 }
 
-bool growsEitherWay(const Model& model, const GrowthEachWay& growth) {
-  const double ccw_fastest = growth.ccw, cw_fastest = growth.cw, zero = growth.zero;
-  if (!(ccw_fastest > zero && cw_fastest > zero)) return false;
+bool growsEitherWay(const GrowthEachWay& growth, double efolds, double needed) {
+  if (!(growth.ccw > growth.zero && growth.cw > growth.zero)) return false;
   // Growing is not enough: the rocking must grow from its start to some 14° before drag has
   // slowed the spin to where it no longer grows (docs/physics.md P8.4 gives the runs that set
   // the 14°, tests/theory_test.cpp ReversingEitherWayIsPredictedWhereRunsDoIt some of them).
-  return eFoldsAgainstDrag(model, growth) >= eFoldsNeeded(model);
+  return efolds >= needed;
+}
+
+bool growsEitherWay(const Model& model, const GrowthEachWay& growth) {
+  if (!(growth.ccw > growth.zero && growth.cw > growth.zero)) return false;
+  return growsEitherWay(growth, eFoldsAgainstDrag(model, growth), eFoldsNeeded(model));
 }
 
 namespace {

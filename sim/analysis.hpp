@@ -154,6 +154,8 @@ double eFoldsNeeded(const Model& model);
 /// growth as many e-folds as eFoldsNeeded or more as drag slows the spin: then it is predicted
 /// to reverse spun either way, the preferred way later (docs/physics.md P8.4).
 bool growsEitherWay(const Model& model, const GrowthEachWay& growth);
+/// The same from the e-folds and the need already worked out (eFoldsAgainstDrag, eFoldsNeeded).
+bool growsEitherWay(const GrowthEachWay& growth, double efolds, double needed);
 inline bool growsEitherWay(const Model& model, double spin_magnitude) {
   return growsEitherWay(model, growthEachWay(model, spin_magnitude));
 }

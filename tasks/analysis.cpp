@@ -235,9 +235,9 @@ void analyzeTheory(const sim::Model& model, Analysis& a) {
   // The two directions linearised once for all three answers.
   const sim::GrowthEachWay each_way = sim::growthEachWay(model, a.spin);
   a.preferred = sim::preferredDirection(each_way);
-  a.grows_either_way = sim::growsEitherWay(model, each_way);
   a.either_way_efolds = sim::eFoldsAgainstDrag(model, each_way);
   a.either_way_needed = sim::eFoldsNeeded(model);
+  a.grows_either_way = sim::growsEitherWay(each_way, a.either_way_efolds, a.either_way_needed);
   a.rocking_start = sim::rockingStart(model);
   a.preferred_growth = a.preferred == sim::Direction::Ccw  ? each_way.ccw
                        : a.preferred == sim::Direction::Cw ? each_way.cw
