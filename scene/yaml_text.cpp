@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -148,9 +149,22 @@ rb::Result<std::string> readSceneFile(const std::string& path) {
            !ec && it != std::filesystem::directory_iterator() && files.size() < 1000;
            it.increment(ec))
         if (it->is_regular_file(ec)) files.push_back(it->path().filename().string());
-      if (const auto nearest = rb::nearestWord(named.filename().string(), files))
+      std::optional<std::string> nearest = rb::nearestWord(named.filename().string(), files);
+      // A bare name not here, which a shipped scene has (rattleback.yaml for
+      // scenes/rattleback.yaml): the shipped one, with its folder.
+      const bool bare = !named.has_parent_path() && !nearest;
+      if (bare) {
+        files.clear();
+        const auto shipped = std::filesystem::path(rb::assetsDir()) / "scenes";
+        for (auto it = std::filesystem::directory_iterator(shipped, ec);
+             !ec && it != std::filesystem::directory_iterator() && files.size() < 1000;
+             it.increment(ec))
+          if (it->is_regular_file(ec)) files.push_back("scenes/" + it->path().filename().string());
+        nearest = rb::nearestWord("scenes/" + named.filename().string(), files);
+      }
+      if (nearest)
         near = "; did you mean " + printable((named.parent_path() / *nearest).string()) +
-               (shipped_name ? " (a shipped scene, found by name from any folder)?" : "?");
+               (shipped_name || bare ? " (a shipped scene, found by name from any folder)?" : "?");
       // A relative name read from elsewhere than the user thought: say where it was looked
       // for, and that the shipped scenes are found by name from any folder only where
       // rattleback is installed (a build tree's Python did not find scenes/rattleback.yaml

@@ -329,11 +329,18 @@ TEST(BadScenes, AMistypedShippedNameOffersTheShippedOne) {
   std::filesystem::current_path(empty);
   ::setenv("RATTLEBACK_ASSETS", RATTLEBACK_SOURCE_DIR, 1);
   const std::string said = scene::loadFile("scenes/ratleback.yaml").error().text();
+  // Its name alone, without the folder: the shipped one, with its folder.
+  const std::string bare = scene::loadFile("rattleback.yaml").error().text();
+  const std::string bare_typo = scene::loadFile("both_ways.yaml").error().text();
   ::unsetenv("RATTLEBACK_ASSETS");
   std::filesystem::current_path(here);
   EXPECT_EQ(said,
             "scenes/ratleback.yaml: cannot open the scene file: No such file or directory; did "
             "you mean scenes/rattleback.yaml (a shipped scene, found by name from any folder)?");
+  EXPECT_EQ(bare,
+            "rattleback.yaml: cannot open the scene file: No such file or directory; did you "
+            "mean scenes/rattleback.yaml (a shipped scene, found by name from any folder)?");
+  EXPECT_NE(bare_typo.find("did you mean scenes/both-ways.yaml"), std::string::npos) << bare_typo;
 }
 
 TEST(BadScenes, AFolderIsNamedAsAFolder) {

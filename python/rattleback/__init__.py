@@ -54,6 +54,7 @@ except ImportError:  # the package's files laid out (at configure time), its mod
     ) from None
 from ._args import checked as _checked
 from ._errors import RunStopped, RunWarning, SceneError
+from ._names import Keyed as _Keyed
 
 __all__ = [
     "Scene",
@@ -133,6 +134,8 @@ class Run:
 
         columns = list(self.__dict__.get("_columns", {}))
         as_attribute = {"first_reversal_s": "first_reversal", "reversals_s": "reversals"}
+        if name in ("time", "times"):  # the CSV's name for it is t
+            return "; did you mean 't' (the time, s)?"
         if not columns_only and name in as_attribute:
             return f"; did you mean run.{as_attribute[name]} (or run.result[{name!r}])?"
         if not columns_only and "_run" in self.__dict__ and name in self.result:
@@ -304,7 +307,7 @@ def analyze(scene: SceneLike, *, spin: Optional[float] = None, duration: Optiona
     direction: the dict ``rattleback analyze --json`` prints. ``spin`` (rad/s) is where the
     growth rates are evaluated (default: the scene's spin, else 5); ``duration`` (s) is how far
     the forecast looks (default: the scene's)."""
-    return _core.analyze(_scene(scene)._load(duration=duration), spin)
+    return _Keyed.of(_core.analyze(_scene(scene)._load(duration=duration), spin))
 
 
 def _image_array(array: Any) -> np.ndarray:

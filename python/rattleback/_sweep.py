@@ -14,6 +14,7 @@ import numpy as np
 from . import Scene, _core, _scene, _yaml_value_default
 from ._args import checked
 from ._errors import RunWarning, SceneError
+from ._names import nearest
 
 
 def _numbers_or_text(values: list) -> np.ndarray:
@@ -33,7 +34,8 @@ class SweepTable:
     group by), ``stop_reason`` (for a stopped run, why as a code: ``non_finite``,
     ``energy_gain``, ``on_rim``), ``first_reversal_s``, ``reversals``, ``final_spin``,
     ``max_tilt_deg``, ``energy_lost``, ``wall_s``, and ``message`` (why a run stopped or was
-    refused, in words). A number a run does not have is NaN; text it does not have is ``""``. The arrays are read-only, as the CSV they
+    refused, in words). A column is ``table["final_spin"]``, or ``table.final_spin`` where its name
+    is a Python name, as a Run's. A number a run does not have is NaN; text it does not have is ``""``. The arrays are read-only, as the CSV they
     stand for is (``.copy()`` gives one to change). A sweep given ``columns`` (or a sweep file's
     ``columns:``) holds ``row``, the varied keys and those columns only, in that order (one of
     them may be ``forecast_s``, the averaged theory's first reversal, which ``analyze`` prints,
@@ -70,7 +72,24 @@ class SweepTable:
         return list(self._table.keys)
 
     def __getitem__(self, name: str) -> np.ndarray:
+        if name not in self._columns:
+            raise KeyError(f"{name!r} is not a column{self._nearest(name)}")
         return self._columns[name]
+
+    def __getattr__(self, name: str) -> np.ndarray:
+        columns = self.__dict__.get("_columns", {})
+        if name in columns:  # as a Run's: table.first_reversal_s
+            return columns[name]
+        if name.startswith("_"):  # Python's and IPython's own probes: no hint to work out
+            raise AttributeError(name)
+        raise AttributeError(f"SweepTable has no column or attribute {name!r}{self._nearest(name)}")
+
+    def _nearest(self, name: str) -> str:
+        columns = list(self.__dict__.get("_columns", {}))
+        return nearest(name, columns) + " (columns: " + ", ".join(columns) + ")"
+
+    def __dir__(self):
+        return sorted(set(super().__dir__()) | {c for c in self._columns if c.isidentifier()})
 
     def __len__(self) -> int:
         return len(self._columns["row"])

@@ -1,7 +1,9 @@
 """Bad input raises the command line's message, with the file, line and key apart."""
 
+import json
 import math
 import os
+import pickle
 import subprocess
 import sys
 
@@ -499,3 +501,30 @@ def test_a_name_a_run_does_not_have_says_the_way_to_it():
     with pytest.raises(AttributeError, match="did you mean 'spin'"):
         run.spn
     assert not hasattr(run, "_repr_html_")  # IPython's probe: a plain AttributeError
+    with pytest.raises(AttributeError, match=r"did you mean 't' \(the time, s\)"):
+        run.time
+
+
+def test_a_name_an_analysis_or_a_sweep_table_does_not_have_says_the_way_to_it():
+    # A student's tries: analyze's keys by a name near theirs, a key of a dict within it, a
+    # sweep table's column as an attribute (as a run's) and by a typo.
+    a = rb.analyze(scene_path("rattleback.yaml"))
+    with pytest.raises(KeyError, match="did you mean 'misalignment_deg'"):
+        a["misalignment"]
+    with pytest.raises(KeyError, match="did you mean 'predicted_first_reversal'"):
+        a["predicted_reversal"]
+    with pytest.raises(KeyError, match=r"a key of \['predicted_first_reversal'\]"):
+        a["time_s"]
+    with pytest.raises(KeyError, match="did you mean 'time_s'"):
+        a["predicted_first_reversal"]["time"]
+    # Otherwise the dict analyze --json prints: equal to it, and JSON and pickles as a dict.
+    assert isinstance(a, dict) and json.loads(json.dumps(a)) == a
+    assert type(pickle.loads(pickle.dumps(a))) is dict
+    table = rb.sweep(scene_path("rattleback.yaml"), {"initial.spin": [-5, 5]}, duration=0.5)
+    np.testing.assert_array_equal(table.status, table["status"])
+    assert "final_spin" in dir(table)
+    with pytest.raises(AttributeError, match="did you mean 'first_reversal_s'"):
+        table.first_reversal
+    with pytest.raises(KeyError, match="did you mean 'status'"):
+        table["stauts"]
+    assert not hasattr(table, "_repr_html_")
