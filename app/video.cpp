@@ -153,9 +153,16 @@ int stillCommand(const StillArgs& args) {
                                : args.output;
   if (auto made = tasks::makeParentFolder(path); !made) return fail(made);
   if (auto e = render::writePng(path, still.image); !e) return fail(e);
-  record({{path, tasks::OutputKind::Still, sceneName(args.scene),
-           std::string(rb::nameOf(still.view)), loaded->model.initial.spin, still.outcome.t,
-           tasks::madeFrom(loaded->scene), tasks::listedFrame(loaded->scene, loaded->model)}});
+  tasks::OutputEntry listed{path,
+                            tasks::OutputKind::Still,
+                            sceneName(args.scene),
+                            std::string(rb::nameOf(still.view)),
+                            loaded->model.initial.spin,
+                            still.outcome.t,
+                            tasks::madeFrom(loaded->scene),
+                            tasks::listedFrame(loaded->scene, loaded->model)};
+  listed.surface = loaded->scene.video.surface;
+  record({listed});
   if (!args.quiet) {
     if (still.leaves) tell(Tone::Warning, *still.leaves);
     if (time->named)

@@ -427,6 +427,7 @@ tasks::OutputEntry videoEntry(const VideoFile& file, const tasks::LoadedScene& l
   e.made_from = tasks::madeFrom(loaded.scene);
   e.frame_m = tasks::listedFrame(loaded.scene, loaded.model);
   e.view = loaded.scene.video.view;
+  e.surface = loaded.scene.video.surface;
   if (file.spin) {  // one run's video (a side-by-side shows two)
     e.simulated_s = loaded.model.duration;
     e.first_reversal_s = file.first_reversal_s;

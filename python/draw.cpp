@@ -112,6 +112,7 @@ py::tuple still(const LoadedScene& loaded, const std::variant<double, std::strin
   listed["drawn_by"] = still.image.drawn_by;  // (its PNG's Software, as the command line's)
   const std::optional<double> frame = tasks::listedFrame(loaded.value.scene, loaded.value.model);
   listed["frame_m"] = frame ? py::object(py::float_(*frame)) : py::object(py::none());
+  listed["surface"] = loaded.value.scene.video.surface;
   // (What the command line warns of, for the caller to warn of as a RunWarning.)
   const py::object leaves = still.leaves ? py::object(py::str(*still.leaves)) : py::none();
   return py::make_tuple(arrayOf(still.image, transparent), listed, leaves);
@@ -199,10 +200,17 @@ void listStill(const std::string& path, const py::dict& still) {
   const std::optional<double> frame_m = still.contains("frame_m") && !still["frame_m"].is_none()
                                             ? std::optional<double>(still["frame_m"].cast<double>())
                                             : std::nullopt;
-  (void)tasks::recordOutputs(
-      {{path, tasks::OutputKind::Still, still["scene"].cast<std::string>(),
-        still["view"].cast<std::string>(), still["spin"].cast<double>(), still["t"].cast<double>(),
-        still.contains("made_from") ? still["made_from"].cast<std::string>() : "", frame_m}});
+  tasks::OutputEntry listed{
+      path,
+      tasks::OutputKind::Still,
+      still["scene"].cast<std::string>(),
+      still["view"].cast<std::string>(),
+      still["spin"].cast<double>(),
+      still["t"].cast<double>(),
+      still.contains("made_from") ? still["made_from"].cast<std::string>() : "",
+      frame_m};
+  if (still.contains("surface")) listed.surface = still["surface"].cast<std::string>();
+  (void)tasks::recordOutputs({listed});
 }
 
 void writePngOf(const std::string& path, const U8Array& a, const std::optional<py::dict>& still) {

@@ -28,6 +28,7 @@ nlohmann::json toJson(const OutputEntry& e) {
   if (!e.made_from.empty()) j["made_from"] = e.made_from;
   if (e.frame_m) j["frame_m"] = *e.frame_m;
   if (!e.view.empty()) j["view"] = e.view;
+  if (!e.surface.empty()) j["surface"] = e.surface;
   if (e.simulated_s) {
     j["simulated_s"] = *e.simulated_s;
     j["first_reversal_s"] =
@@ -53,6 +54,8 @@ std::optional<OutputEntry> fromJson(const nlohmann::json& j) {
     e.made_from = j["made_from"].get<std::string>();
   if (j.contains("frame_m") && j["frame_m"].is_number()) e.frame_m = j["frame_m"].get<double>();
   if (j.contains("view") && j["view"].is_string()) e.view = j["view"].get<std::string>();
+  if (j.contains("surface") && j["surface"].is_string())
+    e.surface = j["surface"].get<std::string>();
   if (j.contains("simulated_s") && j["simulated_s"].is_number()) {
     e.simulated_s = j["simulated_s"].get<double>();
     if (j.contains("first_reversal_s") && j["first_reversal_s"].is_number())

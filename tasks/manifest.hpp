@@ -55,6 +55,9 @@ struct OutputEntry {
   /// the run did (reversed three times, ending clockwise). Unknown in an older manifest.
   std::vector<double> reversals_s = {};
   std::optional<double> final_spin = {};
+  /// How a video or still drew the body (video.surface: points, triangles, with --surface): the
+  /// report's player of the scene draws it the same. "" when not known (an older manifest).
+  std::string surface = {};
 };
 
 inline constexpr const char* kManifestName = "rattleback-manifest.json";

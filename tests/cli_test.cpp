@@ -2711,8 +2711,10 @@ TEST(Cli, TheReportShowsEveryRunOfAScene) {
 // listed with them in the manifest (frame_m, m), and the player's data carries it (a teacher's
 // trial: stills and videos at one scale beside players that each filled the picture with their
 // own body). A scene's video.frame does the same without --frame; with neither, 0 (the body's
-// own). The player's framing from it is checked in Chromium (check_player.py: framed()).
-TEST(Report, ThePlayerIsFramedAsTheScenesPicturesWere) {
+// own). The player's framing from it is checked in Chromium (check_player.py: framed()). It
+// draws the body as they did too: a video drawn with --surface triangles gives the player the
+// surface, where the scene file says points.
+TEST(Report, ThePlayerIsFramedAndDrawnAsTheScenesPicturesWere) {
   const fs::path dir = emptyDir("framed");
   const std::string s = scene("rattleback");
   auto in = [&](const char* name) { return (dir / name).string(); };
@@ -2736,12 +2738,19 @@ TEST(Report, ThePlayerIsFramedAsTheScenesPicturesWere) {
        nlohmann::json::parse(readText(dir / "rattleback-manifest.json"))["outputs"])
     if (entry["file"] == "rattleback-oblique.png") EXPECT_EQ(entry["frame_m"], 0.4) << entry;
   EXPECT_EQ(frameOf(), "0.4");  // 40 in the scene's cm
-  // A video drawn at another frame takes precedence over the still.
-  ASSERT_EQ(rattleback("render " + s + " --frame 60 --duration 0.2 --size 160x96 -q -o " +
+  auto drawsFaces = [&] { return readText(dir / "rattleback.player.js").find("\"faces\":"); };
+  EXPECT_EQ(drawsFaces(), std::string::npos);  // points, as the scene and the still draw it
+  // A video drawn at another frame, and as triangles, takes precedence over the still.
+  ASSERT_EQ(rattleback("render " + s +
+                       " --frame 60 --surface triangles --duration 0.2 --size 160x96 -q -o " +
                        in("rattleback.mp4"))
                 .status,
             0);
   EXPECT_EQ(frameOf(), "0.6");
+  EXPECT_NE(drawsFaces(), std::string::npos);
+  for (const auto& entry :
+       nlohmann::json::parse(readText(dir / "rattleback-manifest.json"))["outputs"])
+    if (entry["file"] == "rattleback.mp4") EXPECT_EQ(entry["surface"], "triangles") << entry;
 }
 
 // A teacher's own body spun the way it prefers (the default body with its dents mirrored, spun

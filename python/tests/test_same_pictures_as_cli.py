@@ -98,6 +98,7 @@ def test_a_saved_still_is_listed_as_the_command_lines_still(tmp_path, default_sc
             "spin": -4.0,
             "t": 0.5,
             "made_from": by_file["cli.png"]["made_from"],
+            "surface": "points",  # the scene's video.surface: the report's player draws the same
         }
     )
     # An image made from an array is no still of a scene: saved, it is not listed.

@@ -68,17 +68,25 @@ std::vector<Pose> posesOf(const fs::path& csv) {
   return poses;
 }
 
+// How a scene's videos (else its stills) were drawn, where the manifest says: the players are
+// framed and drawn as the pictures beside them (--frame, --surface), not each filled with its own
+// body as its scene file says.
+struct Drawn {
+  std::optional<double> frame;
+  std::string surface;
+};
+
 // DIR/<id>.player.js for a scene with telemetry: its poses, reversals and drawn points, and
 // the body spun the other way where the player offers it (otherSpinOf); None (the page then has
 // no player for it) when the CSV, its sidecar or its scene cannot be read; an error when the
 // file cannot be written.
 rb::Result<PlayerRuns> writePlayerData(const fs::path& dir, const std::string& id,
-                                       const SceneFiles& f, std::optional<double> drawn_frame,
+                                       const SceneFiles& f, const Drawn& drawn,
                                        std::vector<std::string>& notes) {
   if (!f.has(".csv") || !f.has(".csv.json")) return PlayerRuns::None;
   const std::optional<RunRecord> sidecar = readRunRecord(dir / f.at(".csv.json"));
   if (!sidecar || sidecar->command != "simulate") return PlayerRuns::None;
-  RunModel found = runModelOf(*sidecar, dir);
+  RunModel found = runModelOf(*sidecar, dir, drawn.surface);
   if (!found.model) {
     if (!found.why.empty())
       notes.push_back((dir / f.at(".csv")).string() + ": " + found.scene + " " + found.why);
@@ -92,9 +100,9 @@ rb::Result<PlayerRuns> writePlayerData(const fs::path& dir, const std::string& i
   std::vector<double> reversals;
   for (const Number& r : sidecar->reversals_s)
     if (r) reversals.push_back(*r);
-  // Framed as the scene's videos and stills were drawn (--frame), else as its video.frame says.
-  // Drawn as the scene's video.surface draws it (its stills and videos beside it).
-  PlayerRun run = playerRunOf(id, *found.model, drawn_frame.value_or(found.frame), std::move(poses),
+  // Framed and drawn as the scene's videos and stills were (--frame, --surface), else as its
+  // video.frame and video.surface say.
+  PlayerRun run = playerRunOf(id, *found.model, drawn.frame.value_or(found.frame), std::move(poses),
                               std::move(reversals), std::move(found.surface));
   // Beside it, the body spun the other way, simulated here: a body spun the way it prefers
   // shows no reversal, and its teacher wants to show it reverse. Whether or not --both's videos
@@ -126,14 +134,17 @@ rb::Result<bool> copyPlayerBundle(const fs::path& dir) {
   return true;
 }
 
-// The frame each scene's videos (else stills) were drawn at, where one was asked for: the
-// players are framed as the videos beside them (--frame), not each filled with its own body.
-std::map<std::string, std::optional<double>> drawnFrames(const fs::path& dir) {
-  std::map<std::string, std::optional<double>> drawn;
+// How each scene's videos, else its stills, were drawn (the first listed of each that says).
+std::map<std::string, Drawn> drawnAs(const fs::path& dir) {
+  std::map<std::string, Drawn> drawn;
   const std::vector<OutputEntry> listed = readManifest(dir.string());
   for (const OutputKind kind : {OutputKind::Video, OutputKind::Still})
-    for (const OutputEntry& e : listed)
-      if (e.kind == kind && e.frame_m && !drawn.count(e.scene)) drawn[e.scene] = e.frame_m;
+    for (const OutputEntry& e : listed) {
+      if (e.kind != kind) continue;
+      Drawn& d = drawn[e.scene];
+      if (e.frame_m && !d.frame) d.frame = e.frame_m;
+      if (!e.surface.empty() && d.surface.empty()) d.surface = e.surface;
+    }
   return drawn;
 }
 
@@ -145,11 +156,11 @@ rb::Result<std::vector<PlayerPlace>> writePlayers(const fs::path& dir, const Fol
   const rb::Result<bool> bundle = copyPlayerBundle(dir);
   if (!bundle) return bundle.error();
   if (!bundle.value()) return players;
-  const auto drawn = drawnFrames(dir);
+  const auto drawn = drawnAs(dir);
   for (const auto& [name, files] : folder.scenes) {
-    const auto frame = drawn.find(name);
-    const rb::Result<PlayerRuns> data = writePlayerData(
-        dir, name, files, frame == drawn.end() ? std::nullopt : frame->second, notes);
+    const auto as = drawn.find(name);
+    const rb::Result<PlayerRuns> data =
+        writePlayerData(dir, name, files, as == drawn.end() ? Drawn{} : as->second, notes);
     if (!data) return data.error();
     if (data.value() != PlayerRuns::None) players.push_back({name, data.value()});
   }

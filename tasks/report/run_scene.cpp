@@ -50,7 +50,7 @@ std::optional<std::vector<scene::KeyValue>> keyValuesOf(const RunRecord& run) {
 }
 
 // The scene at `out.scene` loaded with the run's values, where it still describes the run.
-void loadRunScene(const RunRecord& run, RunModel& out) {
+void loadRunScene(const RunRecord& run, RunModel& out, const std::string& drawn_surface) {
   const auto values = keyValuesOf(run);
   if (!values) return;
   const auto text = scene::readSceneFile(out.scene);
@@ -77,6 +77,7 @@ void loadRunScene(const RunRecord& run, RunModel& out) {
     return;
   }
   out.frame = playerFrame(loaded.value(), model.value());
+  if (!drawn_surface.empty()) loaded.value().video.surface = drawn_surface;
   out.surface = playerSurfaceOf(LoadedScene{std::move(loaded).value(), model.value()});
   out.model = std::move(model).value();
 }
@@ -88,7 +89,7 @@ bool sceneEditedSince(const RunRecord& run, const fs::path& dir) {
   return scene && run.scene_fingerprint && *run.scene_fingerprint != sceneFingerprint(*scene);
 }
 
-RunModel runModelOf(const RunRecord& run, const fs::path& dir) {
+RunModel runModelOf(const RunRecord& run, const fs::path& dir, const std::string& drawn_surface) {
   if (run.command != "simulate") return {};
   // A scene made from text (Python's from_yaml, from_dict; scene_path null) has no file to replay
   // the run on: a file of its name here is another scene, and there is nothing to say.
@@ -102,7 +103,7 @@ RunModel runModelOf(const RunRecord& run, const fs::path& dir) {
             "is not there any more: no 3D player for it (simulate it again to replay it)"};
   }
   RunModel out{std::nullopt, *scene_path, ""};
-  loadRunScene(run, out);
+  loadRunScene(run, out, drawn_surface);
   return out;
 }
 
