@@ -6,7 +6,9 @@
 // opaque box and, the canvas being drawn upside down, left out the box's mirror image instead,
 // a blank box at the picture's bottom (the reversal label's, in present mode at 1920 × 1080).
 
-// Present mode's read-outs are a 28th of the screen's height, but no larger than 2.3 % of its
+// Present mode's picture fills the screen above its bar and views (110 px), whatever the screen's
+// shape: kept at 16:9, a 4:3 projector's 1024 × 768 left a fifth of the screen blank under it.
+// Its read-outs are a 28th of the screen's height, but no larger than 2.3 % of its
 // width (which binds only on screens narrower than about 3:2: a 4:3 projector's 1024 × 768 had
 // them reach 32 % down the picture); its reversal label stands at the picture's bottom left,
 // free at any size (top right, the read-outs of a long sense had reached over it).
@@ -57,13 +59,13 @@ export const STYLE = `
 .rbp-reversal-label{position:absolute;top:8px;right:8px;background:rgba(240,228,66,.96);color:#141414;padding:2px 8px;font:600 15px/1.4 system-ui,sans-serif;pointer-events:none}
 .rbp.rbp-present{position:fixed;inset:0;z-index:1000;background:#fff;margin:0;padding:12px;box-sizing:border-box;flex-wrap:nowrap;overflow:hidden}
 .rbp.rbp-present .rbp-main{flex:1 1 auto;min-width:0;display:flex;flex-direction:column;align-items:center}
-.rbp.rbp-present .rbp-stage{width:min(100%,calc((100vh - 110px) * 16 / 9))}
-.rbp.rbp-present .rbp-bar,.rbp.rbp-present .rbp-views{width:min(100%,calc((100vh - 110px) * 16 / 9))}
-.rbp.rbp-present .rbp-side{position:absolute;left:calc(28px + (100vw - 24px - min(100vw - 24px, (100vh - 110px) * 16 / 9)) / 2);top:24px;flex:none;width:auto;background:rgba(255,255,255,.82);padding:6px 14px;border-radius:4px;pointer-events:none;max-width:calc(min(100vw - 24px, (100vh - 110px) * 16 / 9) - 60px)}
+.rbp.rbp-present .rbp-stage{width:100%;height:calc(100vh - 110px);aspect-ratio:auto;flex:none}
+.rbp.rbp-present .rbp-bar,.rbp.rbp-present .rbp-views{width:100%}
+.rbp.rbp-present .rbp-side{position:absolute;left:28px;top:24px;flex:none;width:auto;background:rgba(255,255,255,.82);padding:6px 14px;border-radius:4px;pointer-events:none;max-width:calc(100vw - 84px)}
 .rbp.rbp-present .rbp-title{font-size:max(18px,min(max(26px,3.6vh),2.3vw))}
 .rbp.rbp-present .rbp-read{font-size:max(18px,min(max(26px,3.6vh),2.3vw))}
 .rbp.rbp-present .rbp-help{display:none}
-.rbp.rbp-present .rbp-plotbox{position:fixed;right:calc(24px + (100vw - 24px - min(100vw - 24px, (100vh - 110px) * 16 / 9)) / 2);bottom:calc(100vh - min(100vw - 24px, (100vh - 110px) * 16 / 9) * 9 / 16);margin:0;transform-origin:100% 100%;opacity:.94}
+.rbp.rbp-present .rbp-plotbox{position:fixed;right:24px;bottom:110px;margin:0;transform-origin:100% 100%;opacity:.94}
 @media ${PRESENT_PLOT_SCALED}{.rbp.rbp-present .rbp-plotbox{transform:scale(1.7)}}
 @media not all and ${PRESENT_PLOT_SCALED}{.rbp.rbp-present .rbp-scale{display:none}.rbp.rbp-present .rbp-spin,.rbp.rbp-present .rbp-sense{display:inline}.rbp.rbp-present .rbp-sense::before{content:'  '}}
 .rbp.rbp-present .rbp-reversal-label{font-size:max(18px,min(3.4vh,2.4vw));top:auto;right:auto;bottom:16px;left:16px}
