@@ -314,6 +314,8 @@ rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const Vide
       // half): their text is drawn for the side-by-side video shown at half size.
       if (request.both) settings.text_scale = kBothTextScale;
       settings.title = titleWithPlayback(settings.title, plan.playback);
+      for (std::string& shorter : settings.shorter_titles)
+        shorter = titleWithPlayback(shorter, plan.playback);
       auto created = render::Renderer::create(settings, points, triangles.value());
       if (!created) return rb::machineError("render: " + created.error().text());
       if (renderers.empty()) result.opengl = created.value()->description();

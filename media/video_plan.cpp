@@ -130,6 +130,18 @@ double spinRange(const sim::Model& run) {
   return std::max(1.0, std::ceil(2 * 1.1 * sim::spinReach(run)) / 2);
 }
 
+// A --both half's title said shorter, for a half too narrow for the whole: the values put in
+// left out, then "its", "spun" and the scene's name ("-8 rad/s, against preferred way").
+std::vector<std::string> shorterTitles(const std::string& name, double spin,
+                                       const std::string& way) {
+  std::string short_way = way;
+  if (const std::size_t its = short_way.find("its "); its != std::string::npos)
+    short_way.erase(its, 4);
+  char rate[48];
+  std::snprintf(rate, sizeof rate, "%+g rad/s, ", spin);
+  return {name + ": spun " + rate + short_way, name + ": " + rate + short_way, rate + short_way};
+}
+
 }  // namespace
 
 // The title of a run's frames, the same in its video and its stills: the scene and the spin.
@@ -151,12 +163,14 @@ render::RenderSettings settingsOf(const VideoPlan& plan, const sim::Model& run,
     std::snprintf(spun, sizeof spun, "spun %+g rad/s", run.initial.spin);
     start = (struck ? describeStrike(run.initial) : std::string(spun)) + ", " + way;
   }
-  std::string title =
-      (given_title ? *given_title : std::filesystem::path(scene).stem().string()) + ": " + start;
+  const std::string name =
+      given_title ? *given_title : std::filesystem::path(scene).stem().string();
+  std::string title = name + ": " + start;
   if (!given_title)
     for (const scene::KeyValue& kv : values)
       title += (&kv == &values.front() ? "; " : ", ") + kv.key + " = " + kv.yaml;
   render::RenderSettings s;
+  if (!way.empty() && !struck) s.shorter_titles = shorterTitles(name, run.initial.spin, way);
   s.backend = backend;
   s.width = plan.width;
   s.height = plan.height;

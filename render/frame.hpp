@@ -75,7 +75,10 @@ struct RenderSettings {
   int width = 1280, height = 720;  ///< pixels
   Backend backend{};               ///< OpenGL through EGL or OSMesa (Backend::Auto: EGL first)
   View view = View::Oblique;
-  std::string title;         ///< printed in the corner ("" for none)
+  std::string title;  ///< printed in the corner ("" for none)
+  /// Shorter forms of the title, tried in order where it does not fit the frame, before the
+  /// last is cut (--both's narrow halves: "mine: -8 rad/s, against preferred way").
+  std::vector<std::string> shorter_titles;
   bool readouts = true;      ///< time, spin and the n(t) inset
   bool transparent = false;  ///< no floor and no background: alpha 0 but the body and its shadow
   double duration = 1;       ///< s, the inset's time axis

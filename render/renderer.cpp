@@ -411,11 +411,16 @@ float floorSquare(const Eigen::Vector3f& half_extent, bool fogged) {
 }
 
 // The title as drawn, made once: a title wider than the frame (a variant's values, a long name)
-// is cut, and says so with an ellipsis, rather than run off the edge.
+// is said shorter where the caller gave a shorter form, else cut, saying so with an ellipsis,
+// rather than run off the edge.
 std::string Renderer::fittedTitle() {
   std::string title = settings_.title;
   const int room = settings_.width - 2 * readoutLayout().x;
   if (title.empty() || font_.width(title) <= room) return title;
+  for (const std::string& shorter : settings_.shorter_titles) {
+    title = shorter;
+    if (font_.width(title) <= room) return title;
+  }
   while (!title.empty() && font_.width(title + "…") > room) {
     unsigned char last = 0;  // one UTF-8 character off the end: its continuation bytes, then
     do {                     // its first

@@ -44,6 +44,9 @@ class Renderer {
   /// The backend and the GL vendor, renderer and version (for --verbose).
   const std::string& description() const { return context_->description(); }
   const std::string& rasteriser() const { return context_->rasteriser(); }
+  /// The title as drawn: the settings', or the first of its shorter forms that fits, or the
+  /// last cut with an ellipsis.
+  const std::string& title() const { return title_; }
 
   /// Draws one frame into `out` (resized to the settings' size), read-outs included, from the
   /// frame's values and the renderer's fixed setup only.

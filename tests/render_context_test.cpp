@@ -313,3 +313,37 @@ TEST(Renderer, TheProcessExitsCleanlyWhileAnotherThreadDraws) {
     for (int i = 0; i < 15; ++i)
       ASSERT_EQ(exitWhileAnotherThreadDraws(backend), 0) << rb::nameOf(backend) << ", exit " << i;
 }
+
+// A title too wide for the frame is said in the first shorter form that fits (a --both half's:
+// "mine, at 2× speed: spun -8 rad/s, against its preferred way" ran past a 427-wide half and
+// was cut to "… against its preferred …"), and only the last is cut.
+TEST(Renderer, ATitleTooWideTakesTheFirstShorterFormThatFits) {
+  // A --both half's text (1.4 times its usual size): a line of about 45 characters fits a frame
+  // of any width.
+  auto titleOf = [](const std::string& title, std::vector<std::string> shorter) {
+    render::RenderSettings s;
+    s.width = 854;
+    s.height = 480;
+    s.text_scale = 1.4f;
+    s.title = title;
+    s.shorter_titles = std::move(shorter);
+    auto created = render::Renderer::create(s, row());
+    if (!created) {
+      ADD_FAILURE() << created.error().text();
+      return std::string();
+    }
+    return created.value()->title();
+  };
+  const std::string fits = "mine: spun -8 rad/s, against its preferred way";
+  const std::string wide = "mine, at 2× speed: spun -8 rad/s, against its preferred way";
+  const std::vector<std::string> shorter = {
+      "mine, at 2× speed: spun -8 rad/s, against preferred way, and more words than fit",
+      "-8 rad/s, against preferred way, at 2× speed", "-8 rad/s"};
+  EXPECT_EQ(titleOf(fits, shorter), fits);
+  EXPECT_EQ(titleOf(wide, shorter), "-8 rad/s, against preferred way, at 2× speed");
+  const std::string cut = titleOf(wide, {});
+  EXPECT_EQ(cut.substr(0, 10), "mine, at 2");
+  EXPECT_EQ(cut.substr(cut.size() - 3), "…");
+  EXPECT_LT(cut.size(), wide.size() + 3);  // (the ellipsis takes three bytes)
+  EXPECT_EQ(wide.rfind(cut.substr(0, cut.size() - 3), 0), 0u);
+}
