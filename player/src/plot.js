@@ -1,7 +1,6 @@
 // The n(t) plot beside the picture: drawn once, with the reversals (dark dashed lines, yellow
 // dots: as the videos' ticks and label, and not the spin cue's orange) and the averaged theory's
 // forecast (violet); a cursor over it follows the time.
-import { PRESENT_PLOT_SCALED } from './style.js';
 
 const REVERSAL_LINE = '#333';
 const REVERSAL_DOT = '#f0e442';
@@ -10,13 +9,8 @@ const FORECAST_LABEL_HEIGHT = 12; // px at the plot's top: its label, 9 px type 
 
 export const plotMethods = {
   plotLayout() {
-    // Present mode on a tall screen shows the plot scaled up over the picture (style.js): drawn
-    // finer for it.
-    if (!this.tallScreen) {
-      this.tallScreen = window.matchMedia(PRESENT_PLOT_SCALED);
-      this.tallScreen.addEventListener('change', () => this.moveCursor());
-    }
-    const scaled = this.presenting && this.tallScreen.matches;
+    // Present mode shows the plot scaled up over the picture (style.js): drawn finer for it.
+    const scaled = this.presenting;
     const dpr = Math.min(window.devicePixelRatio || 1, 2) * (scaled ? 2 : 1);
     if (this.layout && this.layout.dpr === dpr) return this.layout;
     const w = 270,

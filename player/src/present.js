@@ -14,6 +14,9 @@ export const presentMethods = {
     this.presenting = on;
     this.root.classList.toggle('rbp-present', on);
     this.presentButton.classList.toggle('rbp-on', on);
+    // The page under it does not scroll (in a window its scroll bar stood over the picture's
+    // right edge).
+    document.documentElement.classList.toggle('rbp-presenting', on);
     if (on && !document.fullscreenElement && this.root.requestFullscreen) {
       this.root.requestFullscreen().catch(() => {});
     } else if (!on && document.fullscreenElement === this.root && document.exitFullscreen) {

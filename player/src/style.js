@@ -12,8 +12,10 @@
 // width (which binds only on screens narrower than about 3:2: a 4:3 projector's 1024 × 768 had
 // them reach 32 % down the picture); its reversal label stands at the picture's bottom left,
 // free at any size (top right, the read-outs of a long sense had reached over it).
-// Screens this high or higher show present mode's plot scaled up (at 1280 × 720 a larger plot
-// hid the spin cue's arrowhead); plot.js draws it finer on them. Below, present mode's read-outs
+// Screens this high or higher show present mode's plot 1.7 times its size, lower ones 1.35 times
+// where they are 16:10 or wider (at 1280 × 720 1.7 hid the spin cue's arrowhead; 1.35, with the
+// picture the screen's whole width, keeps its tick labels 13 px, not 10; on a 4:3 screen even
+// 1.35 covered the arrow's tail); plot.js draws it finer. Below, present mode's read-outs
 // take four lines, not six (the spin's sense on the spin's line, the floor's scale left out):
 // at 1280 × 720 the six reached down into the picture, over the body's far end.
 export const PRESENT_PLOT_SCALED = '(min-height:900px)';
@@ -57,6 +59,7 @@ export const STYLE = `
 .rbp-cue{position:absolute;left:0;top:0;width:100%;height:100%;pointer-events:none;overflow:visible}
 .rbp-cue path{stroke-linecap:round;stroke-linejoin:round}
 .rbp-reversal-label{position:absolute;top:8px;right:8px;background:rgba(240,228,66,.96);color:#141414;padding:2px 8px;font:600 15px/1.4 system-ui,sans-serif;pointer-events:none}
+html.rbp-presenting{overflow:hidden}
 .rbp.rbp-present{position:fixed;inset:0;z-index:1000;background:#fff;margin:0;padding:12px;box-sizing:border-box;flex-wrap:nowrap;overflow:hidden}
 .rbp.rbp-present .rbp-main{flex:1 1 auto;min-width:0;display:flex;flex-direction:column;align-items:center}
 .rbp.rbp-present .rbp-stage{width:100%;height:calc(100vh - 110px);aspect-ratio:auto;flex:none}
@@ -66,6 +69,7 @@ export const STYLE = `
 .rbp.rbp-present .rbp-read{font-size:max(18px,min(max(26px,3.6vh),2.3vw))}
 .rbp.rbp-present .rbp-help{display:none}
 .rbp.rbp-present .rbp-plotbox{position:fixed;right:24px;bottom:110px;margin:0;transform-origin:100% 100%;opacity:.94}
+@media (min-aspect-ratio:16/10){.rbp.rbp-present .rbp-plotbox{transform:scale(1.35)}}
 @media ${PRESENT_PLOT_SCALED}{.rbp.rbp-present .rbp-plotbox{transform:scale(1.7)}}
 @media not all and ${PRESENT_PLOT_SCALED}{.rbp.rbp-present .rbp-scale{display:none}.rbp.rbp-present .rbp-spin,.rbp.rbp-present .rbp-sense{display:inline}.rbp.rbp-present .rbp-sense::before{content:'  '}}
 .rbp.rbp-present .rbp-reversal-label{font-size:max(18px,min(3.4vh,2.4vw));top:auto;right:auto;bottom:16px;left:16px}

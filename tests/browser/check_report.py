@@ -182,17 +182,17 @@ def classroom(driver, size, failures, screenshots):
             and plot[2] <= right + 0.5
             and plot[1] >= top - 0.5
             and plot[3] <= bottom + 0.5
-            and plot[2] - plot[0] >= (1.5 if vh >= 900 else 1) * 272
+            and plot[2] - plot[0] >= (1.5 if vh >= 900 else 1.3 if vw >= 1.6 * vh else 1) * 272
             and clear
         ):
             failures.append(
                 f"{where}: in present mode the n(t) plot {plot} is not over the picture "
-                f"{got['stage']}, its 272 px (1.5 times from 900 px high) and clear of the "
+                f"{got['stage']}, its 272 px 1.3 times on a 16:10 screen or wider (1.5 from 900 px "
+                f"high) and clear of the "
                 f"read-outs {side}"
             )
-        # Drawn at twice the pixel ratio only where it is scaled up: below, the finer drawing
-        # would be work for nothing.
-        finer = 2 if vh >= 900 else 1
+        # Drawn at twice the pixel ratio, as it is scaled up.
+        finer = 2
         if abs(got["plotPixels"] - finer * 270) > 1:
             failures.append(
                 f"{where}: in present mode the n(t) plot is drawn {got['plotPixels']} px wide "
