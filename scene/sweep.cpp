@@ -261,12 +261,191 @@ rb::Result<SweepScenes> SweepScenes::open(const Sweep& sweep) {
 
 namespace {
 
+// What a sweep's text is read with: its file, whether messages name its lines (a file's) or
+// the name alone (Python's argument), and the part being read, which an error names unless it
+// knows better: the file, the line and the key (the sweep's own, base, vary or duration, or a
+// varied scene key).
+struct SweepText {
+  const std::string& path;
+  bool lines;
+  rb::Error::Where place{path, lines ? 1 : 0, ""};
+
+  std::string at(const YAML::Node& node) const {
+    return lines ? path + ":" + std::to_string(lineOf(node)) : path;
+  }
+  std::string top() const { return lines ? path + ":1" : path; }
+  void reading(const YAML::Node& node, const std::string& key) {
+    place = {path, lines ? lineOf(node) : 0, key};
+  }
+  void readingTop(const std::string& key) { place = {path, lines ? 1 : 0, key}; }
+};
+
+// A sweep's own keys (base, vary, duration, columns), each with its key's node for its line.
+// (A default-constructed YAML::Node is a defined null, so presence is kept apart.)
+struct SweepKeys {
+  YAML::Node base_key, vary_key, duration_key, columns_key;
+  YAML::Node base, vary, duration, columns;
+  bool has_base = false, has_vary = false, has_duration = false, has_columns = false;
+};
+
+SweepKeys sweepKeys(const YAML::Node& root, SweepText& in, bool given) {
+  if (!root.IsMap())
+    throw SweepFailure{in.top() +
+                       ": a sweep is a map with the keys base, vary, duration and columns"};
+  SweepKeys k;
+  for (const auto& entry : root) {
+    const std::string key = entry.first.as<std::string>();
+    in.reading(entry.first, key);
+    if (key == "base" && !given)
+      k.base_key = entry.first, k.base = entry.second, k.has_base = true;
+    else if (key == "vary")
+      k.vary_key = entry.first, k.vary = entry.second, k.has_vary = true;
+    else if (key == "duration")
+      k.duration_key = entry.first, k.duration = entry.second, k.has_duration = true;
+    else if (key == "columns" && !given)
+      k.columns_key = entry.first, k.columns = entry.second, k.has_columns = true;
+    else
+      throw SweepFailure{unknownKey(in.at(entry.first), key, given)};
+  }
+  in.readingTop("");
+  return k;
+}
+
+// The base of a sweep made without a file (Python's): its scene as given.
+void givenBase(Sweep& sweep, const SweepBase& given) {
+  sweep.base = sweep.base_as_written = given.name;
+  sweep.base_text = given.yaml;
+  sweep.base_values = given.values;
+  auto loaded_base = loadWithValues(given.yaml, given.name, given.values, "with_values");
+  if (!loaded_base) throw SweepFailure{loaded_base.error().text(), loaded_base.error().where};
+  sweep.length_unit = loaded_base->spec.units.length;
+}
+
+// The base a sweep file names (relative to the file's folder), read and loaded; its tree kept
+// in `base_tree`.
+void fileBase(Sweep& sweep, const YAML::Node& root, const SweepKeys& k, SweepText& in,
+              YAML::Node& base_tree) {
+  namespace fs = std::filesystem;
+  if (!k.has_base)
+    throw SweepFailure{in.top() + ": base is required: the scene file the runs start from",
+                       rb::Error::Where{in.path, in.lines ? 1 : 0, "base"}};
+  in.reading(k.base_key, "base");
+  if (!k.base.IsScalar() || k.base.Scalar().empty())
+    throw SweepFailure{in.at(k.base_key) + ": base must be the path of a scene file"};
+  sweep.base_as_written = k.base.Scalar();
+  fs::path base = k.base.Scalar();
+  if (base.is_relative()) base = fs::path(in.path).parent_path() / base;
+  sweep.base = base.lexically_normal().string();
+  auto base_text = readSceneFile(sweep.base);
+  // Named as typed too, where the folder's path changed it ("../top.yaml" is top.yaml here).
+  const std::string base_named = sweep.base == sweep.base_as_written
+                                     ? std::string("base: ")
+                                     : "base " + sweep.base_as_written + ": ";
+  if (!base_text)
+    throw SweepFailure{in.at(k.base_key) + ": " + base_named + base_text.error().text()};
+  sweep.base_text = base_text.value();
+  auto loaded_base = loadString(sweep.base_text, sweep.base, base_tree);
+  if (!loaded_base)
+    throw SweepFailure{in.at(k.base_key) + ": " + base_named + loaded_base.error().text()};
+  sweep.length_unit = loaded_base->spec.units.length;
+  sweep.file_content = YAML::Dump(root);  // scene::yamlContent(text), without parsing again
+  sweep.base_content = loaded_base->content;
+  sweep.base_lines = loaded_base->lines;
+}
+
+// An axis's values as written: a list (each a value a scene key can take) or a range.
+std::vector<std::string> axisValues(const YAML::Node& spec, const std::string& where,
+                                    const YAML::Node& base_tree, const KeyPath& key_path,
+                                    const SweepAxis& axis, const Sweep& sweep) {
+  if (spec.IsMap()) return rangeValues(spec, where);
+  if (!spec.IsSequence())
+    throw SweepFailure{where + " must be a list of values or a range {from, to, count}, e.g. [" +
+                       (spec.IsScalar() ? spec.Scalar() : std::string("-5, 5")) + "]"};
+  if (spec.size() == 0) throw SweepFailure{where + " has no values"};
+  // The base scene's value, where it is a number: a word swept in its place ("5 rad/s", a unit
+  // written in) is a slip too.
+  YAML::Node in_base = find(base_tree, key_path);
+  if (key_path.index && in_base.IsSequence() && in_base.size() > *key_path.index)
+    in_base = in_base[*key_path.index];
+  double base_number = 0;
+  const bool numeric = in_base.IsScalar() && YAML::convert<double>::decode(in_base, base_number);
+  std::vector<std::string> values;
+  for (const auto& value : spec) {
+    // A quoted number is always a slip (a scene refuses it, and a refused row shows as "no
+    // reversal" on the heatmap): said before anything runs.
+    double number = 0;
+    if (value.IsScalar() && value.Tag() == "!" && YAML::convert<double>::decode(value, number))
+      throw SweepFailure{where + " has the quoted string \"" + value.Scalar() +
+                         "\": write the number without quotes (" + value.Scalar() + ")"};
+    // Said before anything runs, in the scene's words (with the key's unit), where a row was
+    // refused and its heatmap cell left grey, as "no reversal".
+    if (numeric && value.IsScalar() && !YAML::convert<double>::decode(value, number)) {
+      YAML::Node probe = YAML::Clone(base_tree);
+      put(probe, key_path, 0, value);
+      const auto refused = loadTree(probe, sweep.base, {{withoutIndex(axis.key), axis.place}});
+      if (!refused && refused.error().message.rfind(axis.place + ":", 0) == 0)
+        throw SweepFailure{refused.error().message};
+    }
+    values.push_back(flowText(value));
+  }
+  return values;
+}
+
+// Whether the base scene takes the axis's key: an element of a list needs the list; the key
+// must be one the scene knows (its first value put into the base: the loader rejects the key
+// itself, where a bad value only refuses rows); a list swept with single numbers is said once.
+void checkAxisKey(const SweepAxis& axis, const KeyPath& key_path, const YAML::Node& base_tree,
+                  const Sweep& sweep, const std::string& where) {
+  if (key_path.index) {
+    const YAML::Node list = find(base_tree, key_path);
+    if (!list.IsSequence() || list.size() <= *key_path.index)
+      throw SweepFailure{where + ": the base scene has no list " + withoutIndex(axis.key) +
+                         " with an element " + std::to_string(*key_path.index)};
+  }
+  YAML::Node probe = YAML::Clone(base_tree);
+  put(probe, key_path, 0, YAML::Load(axis.values.front()));
+  replaceStepSetting(probe, std::set<std::string>{withoutIndex(axis.key)});
+  auto loaded = loadTree(probe, sweep.base, {{withoutIndex(axis.key), axis.place}});
+  if (!loaded && loaded.error().message.find("is not a known key") != std::string::npos &&
+      loaded.error().message.rfind(axis.place + ":", 0) == 0)
+    throw SweepFailure{loaded.error().message};
+  // ("must be a list of two numbers, not '0.5'" for every row otherwise)
+  const YAML::Node listed = key_path.index ? YAML::Node() : find(base_tree, key_path);
+  if (!loaded && listed.IsSequence() && YAML::Load(axis.values.front()).IsScalar())
+    throw SweepFailure{where + " is a list (the base scene's is " + flowText(listed) +
+                       "): give lists as its values, e.g. [" + flowText(listed) +
+                       "], or vary one element, as " + axis.key + "[0]"};
+}
+
+// One entry of `vary`: its key checked against the base scene, and its values.
+SweepAxis readAxis(const YAML::Node& key_node, const YAML::Node& spec, const YAML::Node& base_tree,
+                   const Sweep& sweep, SweepText& in, std::set<std::string>& keys) {
+  SweepAxis axis;
+  axis.key = key_node.as<std::string>();
+  axis.place = in.at(key_node);
+  in.reading(key_node, axis.key);
+  const std::string where = axis.place + ": " + axis.key;
+  const auto key_path = splitKey(axis.key);
+  if (!key_path)
+    throw SweepFailure{where +
+                       " is not a scene key (dotted, e.g. contact.air_drag or body.dents.at[0])"};
+  if (!keys.insert(axis.key).second) throw SweepFailure{where + " is varied twice"};
+  if (key_path->parts.front() == "video")
+    throw SweepFailure{where + ": a sweep only simulates; video keys do not change a run"};
+  // Axes that change the compiled body: its keys, the units, and the contact model (which picks
+  // the mass properties' source when the body does not name one).
+  axis.body = key_path->parts.front() == "body" || key_path->parts.front() == "units" ||
+              axis.key == "contact.model";
+  axis.values = axisValues(spec, where, base_tree, *key_path, axis, sweep);
+  checkAxisKey(axis, *key_path, base_tree, sweep, where);
+  return axis;
+}
+
 // A sweep's keys from its text: the base from `base:` (a file, relative to the sweep file's
 // folder) or, for a sweep made without a file, from `given`; `lines`: whether messages name the
 // text's lines (a file's) or the name alone (Python's argument).
 rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, bool lines,
                              const SweepBase* given) {
-  namespace fs = std::filesystem;
   Sweep sweep;
   sweep.file = path;
   YAML::Node root;
@@ -275,88 +454,30 @@ rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, b
   } catch (const YAML::Exception& e) {
     return malformedYaml(path, text, e);
   }
-  auto at = [&](const YAML::Node& node) {
-    return lines ? path + ":" + std::to_string(lineOf(node)) : path;
-  };
-  const std::string top = lines ? path + ":1" : path;
-  // The part being read, which an error names unless it knows better: the file, the line and
-  // the key (the sweep's own, base, vary or duration, or a varied scene key).
-  rb::Error::Where place{path, lines ? 1 : 0, ""};
-  auto reading = [&](const YAML::Node& node, const std::string& key) {
-    place = {path, lines ? lineOf(node) : 0, key};
-  };
+  SweepText in{path, lines};
   try {
-    if (!root.IsMap())
-      throw SweepFailure{top + ": a sweep is a map with the keys base, vary, duration and columns"};
-    // (A default-constructed YAML::Node is a defined null, so presence is kept apart.)
-    YAML::Node base_key, vary_key, duration_key, columns_key, base_tree;
-    YAML::Node base_node, vary, duration, columns;
-    bool has_base = false, has_vary = false, has_duration = false, has_columns = false;
-    for (const auto& entry : root) {
-      const std::string key = entry.first.as<std::string>();
-      reading(entry.first, key);
-      if (key == "base" && !given)
-        base_key = entry.first, base_node = entry.second, has_base = true;
-      else if (key == "vary")
-        vary_key = entry.first, vary = entry.second, has_vary = true;
-      else if (key == "duration")
-        duration_key = entry.first, duration = entry.second, has_duration = true;
-      else if (key == "columns" && !given)
-        columns_key = entry.first, columns = entry.second, has_columns = true;
-      else
-        throw SweepFailure{unknownKey(at(entry.first), key, given != nullptr)};
-    }
-    place = {path, lines ? 1 : 0, ""};
-    if (given) {
-      sweep.base = sweep.base_as_written = given->name;
-      sweep.base_text = given->yaml;
-      sweep.base_values = given->values;
-      auto loaded_base = loadWithValues(given->yaml, given->name, given->values, "with_values");
-      if (!loaded_base) throw SweepFailure{loaded_base.error().text(), loaded_base.error().where};
-      sweep.length_unit = loaded_base->spec.units.length;
-    } else {
-      if (!has_base)
-        throw SweepFailure{top + ": base is required: the scene file the runs start from",
-                           rb::Error::Where{path, lines ? 1 : 0, "base"}};
-      reading(base_key, "base");
-      if (!base_node.IsScalar() || base_node.Scalar().empty())
-        throw SweepFailure{at(base_key) + ": base must be the path of a scene file"};
-      sweep.base_as_written = base_node.Scalar();
-      fs::path base = base_node.Scalar();
-      if (base.is_relative()) base = fs::path(path).parent_path() / base;
-      sweep.base = base.lexically_normal().string();
-      auto base_text = readSceneFile(sweep.base);
-      // Named as typed too, where the folder's path changed it ("../top.yaml" is top.yaml here).
-      const std::string base_named = sweep.base == sweep.base_as_written
-                                         ? std::string("base: ")
-                                         : "base " + sweep.base_as_written + ": ";
-      if (!base_text)
-        throw SweepFailure{at(base_key) + ": " + base_named + base_text.error().text()};
-      sweep.base_text = base_text.value();
-      auto loaded_base = loadString(sweep.base_text, sweep.base, base_tree);
-      if (!loaded_base)
-        throw SweepFailure{at(base_key) + ": " + base_named + loaded_base.error().text()};
-      sweep.length_unit = loaded_base->spec.units.length;
-      sweep.file_content = YAML::Dump(root);  // scene::yamlContent(text), without parsing again
-      sweep.base_content = loaded_base->content;
-      sweep.base_lines = loaded_base->lines;
-    }
-    if (has_duration) {
-      reading(duration_key, "duration");
-      const double d = number(duration, at(duration_key) + ":", "duration");
-      if (!(d > 0)) throw SweepFailure{at(duration_key) + ": duration must be above 0 s"};
+    const SweepKeys k = sweepKeys(root, in, given != nullptr);
+    YAML::Node base_tree;
+    if (given)
+      givenBase(sweep, *given);
+    else
+      fileBase(sweep, root, k, in, base_tree);
+    if (k.has_duration) {
+      in.reading(k.duration_key, "duration");
+      const double d = number(k.duration, in.at(k.duration_key) + ":", "duration");
+      if (!(d > 0)) throw SweepFailure{in.at(k.duration_key) + ": duration must be above 0 s"};
       sweep.duration = d;
     }
-    if (has_columns) {
-      reading(columns_key, "columns");
-      sweep.columns = columnNames(columns, at(columns_key), {path, 0, "columns"}, lines);
+    if (k.has_columns) {
+      in.reading(k.columns_key, "columns");
+      sweep.columns = columnNames(k.columns, in.at(k.columns_key), {path, 0, "columns"}, lines);
     }
-    if (has_vary)
-      reading(vary_key, "vary");
+    if (k.has_vary)
+      in.reading(k.vary_key, "vary");
     else
-      place = {path, lines ? 1 : 0, "vary"};
-    if (!has_vary || !vary.IsMap() || vary.size() == 0)
-      throw SweepFailure{(has_vary ? at(vary_key) : top) +
+      in.readingTop("vary");
+    if (!k.has_vary || !k.vary.IsMap() || k.vary.size() == 0)
+      throw SweepFailure{(k.has_vary ? in.at(k.vary_key) : in.top()) +
                          ": vary must map scene keys to their values, e.g. initial.spin: [-5, 5]"};
 
     if (given) base_tree = YAML::Load(sweep.base_text);
@@ -365,97 +486,20 @@ rb::Result<Sweep> parseSweep(const std::string& text, const std::string& path, b
       put(base_tree, *splitKey(kv.key), 0, YAML::Load(kv.yaml));
     std::set<std::string> keys;
     double runs = 1;
-    for (const auto& entry : vary) {
-      SweepAxis axis;
-      axis.key = entry.first.as<std::string>();
-      axis.place = at(entry.first);
-      reading(entry.first, axis.key);
-      const std::string where = axis.place + ": " + axis.key;
-      const auto key_path = splitKey(axis.key);
-      if (!key_path)
-        throw SweepFailure{where +
-                           " is not a scene key (dotted, e.g. contact.air_drag or "
-                           "body.dents.at[0])"};
-      if (!keys.insert(axis.key).second) throw SweepFailure{where + " is varied twice"};
-      if (key_path->parts.front() == "video")
-        throw SweepFailure{where + ": a sweep only simulates; video keys do not change a run"};
-      // Axes that change the compiled body: its keys, the units, and the contact model (which
-      // picks the mass properties' source when the body does not name one).
-      axis.body = key_path->parts.front() == "body" || key_path->parts.front() == "units" ||
-                  axis.key == "contact.model";
-      const YAML::Node spec = entry.second;
-      // The base scene's value, where it is a number: a word swept in its place ("5 rad/s", a
-      // unit written in) is a slip too.
-      YAML::Node in_base = find(base_tree, *key_path);
-      if (key_path->index && in_base.IsSequence() && in_base.size() > *key_path->index)
-        in_base = in_base[*key_path->index];
-      double base_number = 0;
-      const bool numeric =
-          in_base.IsScalar() && YAML::convert<double>::decode(in_base, base_number);
-      if (spec.IsSequence()) {
-        if (spec.size() == 0) throw SweepFailure{where + " has no values"};
-        for (const auto& value : spec) {
-          // A quoted number is always a slip (a scene refuses it, and a refused row shows as
-          // "no reversal" on the heatmap): said before anything runs.
-          double number = 0;
-          if (value.IsScalar() && value.Tag() == "!" &&
-              YAML::convert<double>::decode(value, number))
-            throw SweepFailure{where + " has the quoted string \"" + value.Scalar() +
-                               "\": write the number without quotes (" + value.Scalar() + ")"};
-          // Said before anything runs, in the scene's words (with the key's unit), where a row
-          // was refused and its heatmap cell left grey, as "no reversal".
-          if (numeric && value.IsScalar() && !YAML::convert<double>::decode(value, number)) {
-            YAML::Node probe = YAML::Clone(base_tree);
-            put(probe, *key_path, 0, value);
-            const auto refused =
-                loadTree(probe, sweep.base, {{withoutIndex(axis.key), axis.place}});
-            if (!refused && refused.error().message.rfind(axis.place + ":", 0) == 0)
-              throw SweepFailure{refused.error().message};
-          }
-          axis.values.push_back(flowText(value));
-        }
-      } else if (spec.IsMap()) {
-        axis.values = rangeValues(spec, where);
-      } else {
-        throw SweepFailure{where +
-                           " must be a list of values or a range {from, to, count}, e.g. [" +
-                           (spec.IsScalar() ? spec.Scalar() : std::string("-5, 5")) + "]"};
-      }
-      // An element of a list needs the list in the base scene.
-      if (key_path->index) {
-        const YAML::Node list = find(base_tree, *key_path);
-        if (!list.IsSequence() || list.size() <= *key_path->index)
-          throw SweepFailure{where + ": the base scene has no list " + withoutIndex(axis.key) +
-                             " with an element " + std::to_string(*key_path->index)};
-      }
-      // The key must be one the scene knows: put its first value into the base and see
-      // whether the loader rejects the key itself (a bad value only refuses rows).
-      YAML::Node probe = YAML::Clone(base_tree);
-      put(probe, *key_path, 0, YAML::Load(axis.values.front()));
-      replaceStepSetting(probe, std::set<std::string>{withoutIndex(axis.key)});
-      auto loaded = loadTree(probe, sweep.base, {{withoutIndex(axis.key), axis.place}});
-      if (!loaded && loaded.error().message.find("is not a known key") != std::string::npos &&
-          loaded.error().message.rfind(axis.place + ":", 0) == 0)
-        throw SweepFailure{loaded.error().message};
-      // A list in the base swept with single numbers refuses every row ("must be a list of
-      // two numbers, not '0.5'"): said once, with the two ways to sweep it.
-      const YAML::Node listed = key_path->index ? YAML::Node() : find(base_tree, *key_path);
-      if (!loaded && listed.IsSequence() && YAML::Load(axis.values.front()).IsScalar())
-        throw SweepFailure{where + " is a list (the base scene's is " + flowText(listed) +
-                           "): give lists as its values, e.g. [" + flowText(listed) +
-                           "], or vary one element, as " + axis.key + "[0]"};
+    for (const auto& entry : k.vary) {
+      SweepAxis axis = readAxis(entry.first, entry.second, base_tree, sweep, in, keys);
       runs *= static_cast<double>(axis.values.size());
       if (runs > static_cast<double>(kMaxRows))
-        throw SweepFailure{where + ": the axes so far make " + rangeValue(runs) +
-                           " runs; at most 1e8 in one sweep (split it)"};
+        throw SweepFailure{axis.place + ": " + axis.key + ": the axes so far make " +
+                           rangeValue(runs) + " runs; at most 1e8 in one sweep (split it)"};
       sweep.axes.push_back(std::move(axis));
     }
   } catch (const SweepFailure& f) {
-    return sweepError(f.message, f.where.value_or(place));
+    return sweepError(f.message, f.where.value_or(in.place));
   } catch (const YAML::Exception& e) {
     const int line = e.mark.is_null() ? 1 : e.mark.line + 1;
     return sweepError((lines ? path + ":" + std::to_string(line) : path) + ": " + e.msg,
-                      {path, lines ? line : 0, place.key});
+                      {path, lines ? line : 0, in.place.key});
   }
   return sweep;
 }
