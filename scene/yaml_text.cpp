@@ -111,6 +111,17 @@ rb::Error malformedYaml(const std::string& name, const std::string& text,
   return error;
 }
 
+// The names of the files in `folder` (the first 1,000), each after `prefix`.
+static std::vector<std::string> filesIn(const std::filesystem::path& folder,
+                                        const std::string& prefix = "") {
+  std::vector<std::string> files;
+  std::error_code ec;
+  for (auto it = std::filesystem::directory_iterator(folder, ec);
+       !ec && it != std::filesystem::directory_iterator() && files.size() < 1000; it.increment(ec))
+    if (it->is_regular_file(ec)) files.push_back(prefix + it->path().filename().string());
+  return files;
+}
+
 rb::Result<std::string> readSceneFile(const std::string& path) {
   std::error_code ec;
   auto fail = [&](const std::string& message) {
@@ -144,24 +155,15 @@ rb::Result<std::string> readSceneFile(const std::string& path) {
                                 !path.starts_with("../") &&
                                 !std::filesystem::is_directory(folder, ec);
       if (shipped_name) folder = std::filesystem::path(rb::assetsDir()) / folder;
-      std::vector<std::string> files;
-      for (auto it = std::filesystem::directory_iterator(folder, ec);
-           !ec && it != std::filesystem::directory_iterator() && files.size() < 1000;
-           it.increment(ec))
-        if (it->is_regular_file(ec)) files.push_back(it->path().filename().string());
-      std::optional<std::string> nearest = rb::nearestWord(named.filename().string(), files);
+      std::optional<std::string> nearest =
+          rb::nearestWord(named.filename().string(), filesIn(folder));
       // A bare name not here, which a shipped scene has (rattleback.yaml for
       // scenes/rattleback.yaml): the shipped one, with its folder.
       const bool bare = !named.has_parent_path() && !nearest;
-      if (bare) {
-        files.clear();
-        const auto shipped = std::filesystem::path(rb::assetsDir()) / "scenes";
-        for (auto it = std::filesystem::directory_iterator(shipped, ec);
-             !ec && it != std::filesystem::directory_iterator() && files.size() < 1000;
-             it.increment(ec))
-          if (it->is_regular_file(ec)) files.push_back("scenes/" + it->path().filename().string());
-        nearest = rb::nearestWord("scenes/" + named.filename().string(), files);
-      }
+      if (bare)
+        nearest =
+            rb::nearestWord("scenes/" + named.filename().string(),
+                            filesIn(std::filesystem::path(rb::assetsDir()) / "scenes", "scenes/"));
       if (nearest)
         near = "; did you mean " + printable((named.parent_path() / *nearest).string()) +
                (shipped_name || bare ? " (a shipped scene, found by name from any folder)?" : "?");

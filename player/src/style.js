@@ -18,7 +18,7 @@
 // 1.35 covered the arrow's tail); plot.js draws it finer. Below, present mode's read-outs
 // take four lines, not six (the spin's sense on the spin's line, the floor's scale left out):
 // at 1280 × 720 the six reached down into the picture, over the body's far end.
-export const PRESENT_PLOT_SCALED = '(min-height:900px)';
+const PRESENT_PLOT_SCALED = '(min-height:900px)';
 
 export const STYLE = `
 .rbp{display:flex;flex-wrap:wrap;gap:10px;align-items:flex-start;font:14px/1.35 system-ui,-apple-system,"Segoe UI",sans-serif;color:#1e1e1e;outline:none;margin:8px 0}

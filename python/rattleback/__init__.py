@@ -55,6 +55,7 @@ except ImportError:  # the package's files laid out (at configure time), its mod
 from ._args import checked as _checked
 from ._errors import RunStopped, RunWarning, SceneError
 from ._names import Keyed as _Keyed
+from ._names import nearest as _nearest
 
 __all__ = [
     "Scene",
@@ -130,8 +131,6 @@ class Run:
     def _nearest(self, name: str, columns_only: bool = False) -> str:
         """The way out of a name that is not there: the attribute a result key has (``first_
         reversal`` for ``first_reversal_s``), a key of ``result``, or the nearest name."""
-        import difflib
-
         columns = list(self.__dict__.get("_columns", {}))
         as_attribute = {"first_reversal_s": "first_reversal", "reversals_s": "reversals"}
         if name in ("time", "times"):  # the CSV's name for it is t
@@ -141,8 +140,7 @@ class Run:
         if not columns_only and "_run" in self.__dict__ and name in self.result:
             return f"; it is a key of the run's result: run.result[{name!r}]"
         names = columns if columns_only else columns + [n for n in dir(type(self)) if not n.startswith("_")]
-        near = difflib.get_close_matches(name, names, n=1)
-        return (f"; did you mean {near[0]!r}?" if near else "") + " (columns: " + ", ".join(columns) + ")"
+        return _nearest(name, names) + " (columns: " + ", ".join(columns) + ")"
 
     def __len__(self) -> int:
         return len(self._columns["t"])
