@@ -1,6 +1,9 @@
 #include "scene/direct_rows.hpp"
 
+#include <charconv>
+#include <cmath>
 #include <string>
+#include <string_view>
 #include <type_traits>
 
 #include "scene/key_path.hpp"
@@ -9,9 +12,26 @@
 namespace scene {
 namespace {
 
+// A numeral of digits, signs, a point and an exponent alone, read by std::from_chars: a plain
+// scalar to YAML, which yaml-cpp decodes by strtod, correctly rounded as from_chars is, so the
+// same double without a YAML tree (3.5 µs a value: a sweep of 200 spins spent 0.7 ms on them).
+// Anything else, or a result out of range or subnormal (where the two report differently), is
+// left to yaml-cpp.
+std::optional<double> plainNumeral(std::string_view text) {
+  if (text.empty() || text.find_first_not_of("0123456789+-.eE") != std::string_view::npos)
+    return std::nullopt;
+  if (text.front() == '+') text.remove_prefix(1);  // from_chars takes no '+'; strtod does
+  double value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  if (value != 0 && !std::isnormal(value)) return std::nullopt;
+  return value;
+}
+
 // The number the loader reads from a value's text (MapReader::number): a plain scalar, not a
 // quoted string, that yaml-cpp decodes; nothing otherwise.
 std::optional<double> numberIn(const std::string& text) {
+  if (const std::optional<double> plain = plainNumeral(text)) return plain;
   try {
     const YAML::Node node = YAML::Load(text);
     double v = 0;

@@ -61,6 +61,12 @@ TEST(SweepScenes, NumbersWrittenDirectlyMakeTheScenesTheTreesLoadTo) {
 TEST(SweepScenes, NumbersWrittenInAnyFormReadAsTheTreeReadsThem) {
   // (A value that is no number is refused when the sweep is read, naming its line.)
   expectRowsAlike(sweepOf("forms.yaml", "  initial.spin: [-5, -5.0e0, +3, 7.5e-1]\n"));
+  // Numerals read without YAML (scene/direct_rows.cpp) and those left to it, side by side: a
+  // point at either end, leading zeros, a signed zero, a capital E, the shortest texts of a
+  // range and one that is subnormal.
+  expectRowsAlike(sweepOf("numerals.yaml",
+                          "  initial.spin: [.5, 1., 007, -0, 1E2, +2.5E+1, -1.0e-3, 1e-310]\n"
+                          "  contact.air_drag: {from: 0, to: 5.9e-5, count: 7}\n"));
 }
 
 TEST(SweepScenes, KeysTheBaseDoesNotGiveGoTheLongWayAlike) {
