@@ -67,7 +67,8 @@ struct Result {
 // (SIGINT) is sent then unless it has ended, so that a test of a long run, or of one that must
 // not be long, ends either way (timeout's status 124 when it had to signal). One SIGINT, as a
 // terminal's Ctrl-C sends (--foreground): without it timeout signals the program and then its
-// process group, and a second Ctrl-C ends the program at once with nothing said (4 of 10 runs).
+// process group, which the program takes as one request
+// (Sweep.ACtrlCDeliveredTwiceAtOnceIsOneRequest).
 Result rattleback(const std::string& args, int ctrl_c_after = 0) {
   const fs::path dir = scratchDir();
   const std::string out = (dir / "stdout").string(), err = (dir / "stderr").string();
