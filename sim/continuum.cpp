@@ -390,6 +390,16 @@ VolumeMoments cubatureMoments(const Paraboloid& shape, const std::optional<Dents
   return momentsOf(total);
 }
 
+std::optional<double> dentsCutShare(const Paraboloid& shape, const std::optional<Dents>& dents) {
+  if (!dents) return std::nullopt;
+  const double whole = closedFormMoments(shape, std::nullopt)->volume;
+  const std::optional<VolumeMoments> closed = closedFormMoments(shape, dents);
+  const double dented = closed ? closed->volume : cubatureMoments(shape, dents, 1e-10).volume;
+  // Cubature's error is 1e-10 of the volume's scale: a share below that is none.
+  const double share = 1 - dented / whole;
+  return share < 1e-9 ? 0.0 : share;
+}
+
 Continuum continuumMassProperties(const Paraboloid& shape, const std::optional<Dents>& dents,
                                   double mass) {
   if (auto exact = closedFormMoments(shape, dents))

@@ -62,4 +62,9 @@ struct Continuum {
 Continuum continuumMassProperties(const Paraboloid& shape, const std::optional<Dents>& dents,
                                   double mass);
 
+/// The share of the plain paraboloid's volume that the dents remove (0: they cut nothing, lying
+/// wholly outside the body; nothing without dents), from the closed form where there is one,
+/// else cubature to 1e-10 (a share below 1e-9 is none).
+std::optional<double> dentsCutShare(const Paraboloid& shape, const std::optional<Dents>& dents);
+
 }  // namespace sim

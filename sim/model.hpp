@@ -78,6 +78,10 @@ struct Body {
   bool com_given = false, inertia_given = false;
   Grid grid;                   ///< the point grid's spacing, m
   std::optional<Dents> dents;  ///< the dents cut from the top (paraboloid), m
+  /// With dents: the share of the plain body's volume they remove (sim::dentsCutShare), worked
+  /// out once here: every run's warnings ask (two closed forms had been 40 % of a short
+  /// `rb.simulate` call).
+  std::optional<double> dents_cut_share;
   /// Contact points, only for contact.model points (the others touch the smooth surface, and
   /// building the default body's 244,212 made most of a short run's cost); the
   /// drawing walks the grid itself, thinned (tasks/drawn_points), and censusOf counts it.

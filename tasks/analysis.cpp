@@ -168,12 +168,8 @@ RestModes restModes(const sim::Linearisation& at_rest) {
 }
 
 std::optional<double> dentsCutShare(const sim::Body& body) {
-  if (!body.dents || body.surface.kind != sim::Surface::Kind::Paraboloid) return std::nullopt;
-  const double whole = sim::closedFormMoments(body.surface.paraboloid, std::nullopt)->volume;
-  const double dented = bodyVolume(body);
-  // Cubature's error is 1e-10 of the volume's scale: a share below that is none.
-  const double share = 1 - dented / whole;
-  return share < 1e-9 ? 0.0 : share;
+  if (body.surface.kind != sim::Surface::Kind::Paraboloid) return std::nullopt;
+  return body.dents_cut_share;
 }
 
 double analysisSpin(const sim::Model& model, const std::optional<double>& spin) {
