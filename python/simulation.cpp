@@ -101,7 +101,7 @@ bool reached(const sim::Rollout& run, double t) {
 
 // advance(t): the steps Rollout::advanceTo(t) takes (until the run reaches t), then the state
 // at t on the last step's interpolant, as simulate samples it.
-py::dict advanceTo(Simulation& s, double t) {
+py::dict advanceTo(Simulation& s, double t, bool exactly) {
   if (!std::isfinite(t)) throw py::value_error("argument t: must be a finite number");
   if (t > s.run.endTime() && !sim::sameTime(t, s.run.endTime()))
     throw py::value_error("argument t: " + pastTheEnd(s, t));
@@ -109,8 +109,17 @@ py::dict advanceTo(Simulation& s, double t) {
     throw py::value_error(
         "argument t: " + rb::show(t) + " s lies before the last step, which starts at " +
         rb::show(s.run.previousTime()) + " s: a run goes forward (copy() keeps one to go back to)");
+  if (exactly && !s.run.landAt(t)) {
+    // Fixed steps end at multiples of dt: t is one already, or cannot be landed on.
+    const double dt = s.run.model().dt, k = std::round(t / dt);
+    if (!sim::sameTime(k * dt, t))
+      throw py::value_error("argument exactly: fixed steps end at multiples of dt, " +
+                            rb::show(dt) + " s, and " + rb::show(t) +
+                            " s is none: give a multiple of dt, or an adaptive integrator");
+  }
   stepWhile(s, [&] { return !reached(s.run, t); });
-  (void)s.run.advanceTo(t);  // takes no step: the summary's last sample is now at t
+  (void)s.run.landAt(std::nullopt);  // a run stopped before t lands nowhere later
+  (void)s.run.advanceTo(t);          // takes no step: the summary's last sample is now at t
   return stateDict(s.run, std::min(t, s.run.current().t));
 }
 
@@ -189,7 +198,7 @@ void bindSimulation(py::module_& m) {
              stepWhile(s, [&] { return std::exchange(once, false); });
              return stateDict(s.run, s.run.current().t);
            })
-      .def("advance_to", &advanceTo, py::arg("t"))
+      .def("advance_to", &advanceTo, py::arg("t"), py::arg("exactly"))
       .def("advance_to_reversal", &advanceToReversal)
       .def("set_state", &setState, py::arg("position"), py::arg("quaternion"), py::arg("velocity"),
            py::arg("angular_velocity"))

@@ -78,7 +78,8 @@ Rollout::Rollout(const Rollout& other)
       reversals_(other.reversals_),
       spin_(other.spin_),
       min_cos_tilt_(other.min_cos_tilt_),
-      watchdog_(other.watchdog_) {}
+      watchdog_(other.watchdog_),
+      land_at_(other.land_at_) {}
 
 Rollout::Rollout(Rollout&&) noexcept = default;
 Rollout& Rollout::operator=(Rollout&&) noexcept = default;
@@ -162,6 +163,7 @@ void Rollout::stepOnce() {
     steps_.stepBy(model_.dt, [this](State& s, double t_end) { auto_->advance(active_, s, t_end); });
   } else {
     steps_.step(active_);
+    land();
     const State& b = steps_.current();
     if (sliding) auto_->countStuck(active_, b, b.t - steps_.previous().t);
   }
@@ -178,6 +180,27 @@ void Rollout::stepOnce() {
   spin_ = w.z();
   locateReversal(previous_spin, spin_);
   if (end.step % checkEvery() == 0) watch(R, w);
+}
+
+bool Rollout::landAt(std::optional<double> t) {
+  if (t && !steps_.adaptive()) return false;
+  land_at_ = t;
+  return true;
+}
+
+void Rollout::land() {
+  if (!land_at_) return;
+  const double t = *land_at_;
+  const State& end = steps_.current();
+  if (end.t < t || sameTime(end.t, t)) return;
+  land_at_.reset();
+  if (t <= steps_.previous().t) return;
+  // The step's state at t, on the constraint, becomes its end; a new stepper goes on from it.
+  State s = steps_.stateAt(t, active_);
+  s.t = t;
+  s.step = end.step;
+  steps_.cut(t, active_);
+  steps_.endAt(active_, s);
 }
 
 bool Rollout::stopsOnRim() const {

@@ -93,6 +93,12 @@ class Rollout {
   /// Takes one step (the fixed dt, or the adaptive stepper's next accepted one). False, and
   /// no step taken, when the run has stopped. summary().last is then the step's end.
   bool advanceOneStep();
+  /// Adaptive steps only: the next step that would pass `t` (s) ends at t instead, and the
+  /// stepper starts again there (as after a change of mode), so that current().t is t and a
+  /// setState() acts at t; the steps after it differ from those a run not stopped there takes,
+  /// within the tolerance. Reached, or given nothing, it stops nothing more. Fixed steps end at
+  /// multiples of dt and are not cut: landAt() is then refused (false).
+  bool landAt(std::optional<double> t);
   /// Goes on from `s` instead of the current state, at the current time and step (s.t and
   /// s.step are not read), as if the body were struck there: under rolling s is put back on
   /// the constraint (its height and velocity follow from ω); under auto the mode is chosen
@@ -130,6 +136,8 @@ class Rollout {
 
  private:
   void stepOnce();
+  /// landAt(): the step just taken ends at land_at_ if it passed it (before anything reads it).
+  void land();
   /// advanceTo(t), or advanceToReversal(t) when `until_reversal`.
   bool advance(double t, bool until_reversal);
   /// Feeds the watchdog the end of the last step (its rotation R and ω w, world axes);
@@ -169,6 +177,7 @@ class Rollout {
   double spin_ = 0;                ///< n = ω·ẑ of current(), rad/s
   double min_cos_tilt_ = 1;        ///< smallest cosine of the tilt so far
   Watchdog watchdog_;              ///< NaN, energy from nowhere, the rim; and the last flight
+  std::optional<double> land_at_;  ///< landAt(): the time the next step passing it ends at, s
 };
 
 /// Sample times of a run of `duration` s at `rate` samples per simulated second:

@@ -159,6 +159,7 @@ _TAKES: dict[str, tuple[Callable[[Any], bool], str]] = {
     "both": (_flag, "True or False"),
     "readouts": (_flag, "True or False"),
     "transparent": (_flag, "True or False"),
+    "exactly": (_flag, "True or False"),
     "path": (_path, "a path (text or os.PathLike)"),
     "output": (_path, "a path (text or os.PathLike)"),
     "name": (_text, "text"),

@@ -129,7 +129,7 @@ class Simulation:
         return State._of(self._run.step())
 
     @checked
-    def advance(self, t: Optional[float] = None, *, until: Optional[str] = None):
+    def advance(self, t: Optional[float] = None, *, until: Optional[str] = None, exactly: bool = False):
         """Steps on to time ``t`` (s) and returns the state at ``t``; or, with
         ``until="reversal"``, steps until the reversal rule confirms the next reversal.
 
@@ -137,6 +137,11 @@ class Simulation:
         ``dt`` its last step ends at ``t`` when ``t`` is a multiple of it; adaptive steps end at
         or past ``t``: :attr:`t` tells), and the state returned is the one at ``t`` on the
         last step's interpolant, as ``simulate`` samples it.
+
+        With ``exactly=True`` the last step ends at ``t`` itself (the adaptive stepper starts
+        again there), so :attr:`t` is ``t`` and a :meth:`set_state` acts at ``t``: a tap at
+        the time asked. The steps after it then differ from ``simulate``'s within the
+        tolerance. With fixed steps ``t`` must be a multiple of ``dt``.
 
         With ``until="reversal"``: the run stops at the step where the rule confirms a
         reversal — the spin has crossed zero, gone on to 1 % of the initial spin the new way and
@@ -151,7 +156,7 @@ class Simulation:
             if until != "reversal":
                 raise ValueError(f"argument until: takes 'reversal', not {until!r}")
             return self._run.advance_to_reversal()
-        return State._of(self._run.advance_to(float(t)))
+        return State._of(self._run.advance_to(float(t), bool(exactly)))
 
     @checked
     def set_state(

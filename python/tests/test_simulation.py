@@ -85,6 +85,39 @@ def inertia_and_mass(scene):
     return np.array(a["inertia"]), a["mass"]
 
 
+def test_advance_exactly_ends_the_step_at_t_and_a_tap_acts_there():
+    # Adaptive steps end past the time asked (1.00077 s for 1 s here): exactly=True ends the last
+    # step at t itself, so that a tap lands at the time asked, as a researcher scripts it.
+    plain = rb.Simulation(scene_path("rattleback.yaml"))
+    plain.advance(1.0)
+    assert plain.t > 1.0
+    sim = rb.Simulation(scene_path("rattleback.yaml"))
+    landed = sim.advance(1.0, exactly=True)
+    assert sim.t == 1.0 and landed.t == 1.0
+    # The same steps up to there: the state at 1 s is the plain run's to the bit.
+    np.testing.assert_array_equal(landed.angular_velocity, plain.state_at(1.0).angular_velocity)
+    # From there a new stepper goes on: the first reversal moves by the integration's error
+    # (5e-10 s measured at tolerance 1e-8), far inside 1e-6 s (a tenth of what the default
+    # tolerance's sweep is from the converged one).
+    going_on = sim.copy()
+    assert abs(going_on.advance(until="reversal") - plain.advance(until="reversal")) < 1e-6
+    # The tap acts at 1 s, on the state there.
+    tapped = sim.set_state(angular_velocity=np.add(landed.angular_velocity, [0, 5.0, 0]))
+    assert tapped.t == 1.0
+    np.testing.assert_allclose(
+        tapped.angular_velocity, np.add(landed.angular_velocity, [0, 5.0, 0]), rtol=0, atol=1e-12
+    )
+    # At the run's end it ends at the end, not past it.
+    sim.advance(sim.end, exactly=True)
+    assert sim.t == sim.end
+    # Fixed steps end at multiples of dt: another t cannot be landed on.
+    fixed = rb.Simulation(scene_path("rattleback.yaml"), dt=5e-4)
+    fixed.advance(1.0, exactly=True)
+    assert fixed.t == 1.0
+    with pytest.raises(ValueError, match="multiple of dt"):
+        fixed.advance(1.00025, exactly=True)
+
+
 def test_a_tap_on_a_smooth_body_adds_the_work_of_its_angular_impulse():
     # Penalty contact: E = ½ ωᵀIω + ½ M v² + M g z + elastic. A tap changes ω alone (the pose and
     # the CM's velocity kept), so ΔE = ½ (ω+Δω)ᵀI(ω+Δω) − ½ ωᵀIω = ωᵀIΔω + ½ ΔωᵀIΔω.
