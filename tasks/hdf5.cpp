@@ -11,6 +11,7 @@
 
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "tasks/arrays.hpp"
 
@@ -123,6 +124,23 @@ bool putText(const Library& h, hid_t object, const char* name, const std::string
   return attribute.ok() && h.H5Awrite(attribute.get(), type.get(), &value) >= 0;
 }
 
+// The columns' names in the CSV's order, as a list attribute of the file's root group: its
+// datasets are listed by name (h5py sorts them), and this keeps the table's order, as the
+// .npz's `columns` array does.
+bool putNames(const Library& h, hid_t file, std::span<const NamedArray> arrays) {
+  Id type(h.H5Tcopy(*h.H5T_C_S1_g), h.H5Tclose);
+  if (!type.ok() || h.H5Tset_size(type.get(), H5T_VARIABLE) < 0 ||
+      h.H5Tset_cset(type.get(), H5T_CSET_UTF8) < 0)
+    return false;
+  std::vector<const char*> names;
+  for (const NamedArray& a : arrays) names.push_back(a.name.c_str());
+  const hsize_t count = names.size();
+  Id space(h.H5Screate_simple(1, &count, nullptr), h.H5Sclose);
+  Id attribute(h.H5Acreate2(file, "columns", type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+               h.H5Aclose);
+  return attribute.ok() && h.H5Awrite(attribute.get(), type.get(), names.data()) >= 0;
+}
+
 bool putArray(const Library& h, hid_t file, const NamedArray& a) {
   const hsize_t length = a.length;
   Id space(h.H5Screate_simple(1, &length, nullptr), h.H5Sclose);
@@ -180,6 +198,7 @@ rb::Result<std::string> hdf5Image(std::span<const NamedArray> arrays, const std:
     if (!file.ok()) return failed();
     for (const NamedArray& a : arrays)
       if (!putArray(h, file.get(), a)) return failed();
+    if (!putNames(h, file.get(), arrays)) return failed();
     if (h.H5Fflush(file.get(), H5F_SCOPE_GLOBAL) < 0) return failed();
     const ssize_t size = h.H5Fget_file_image(file.get(), nullptr, 0);
     if (size <= 0) return failed();

@@ -64,6 +64,8 @@ def test_hdf5_holds_the_csvs_numbers_exactly_with_unit_and_meaning(written):
     sidecar = json.loads((written / "run.csv.json").read_text())
     with h5py.File(written / "run.h5", "r") as f:
         assert sorted(f.keys()) == sorted(table.columns)
+        # h5py lists datasets by name; the root's `columns` keeps the CSV's order.
+        assert list(f.attrs["columns"]) == list(table.columns)
         for column in sidecar["columns"]:
             data = f[column["name"]]
             assert data.attrs["unit"] == column["unit"]
