@@ -122,6 +122,26 @@ static std::vector<std::string> filesIn(const std::filesystem::path& folder,
   return files;
 }
 
+// The YAML file of `files` (each after `prefix`) whose name without its extension is nearest
+// `name`'s: base.yml finds base.yaml. Whole names, sharing ".yaml" and "scenes/", had let a
+// third of their length count as typos (nope.yaml found tap-end.yaml, mine.yaml printed.yaml).
+static std::optional<std::string> nearestFile(const std::string& name,
+                                              const std::vector<std::string>& files,
+                                              const std::string& prefix = "") {
+  std::vector<std::string> stems, names;
+  for (const std::string& file : files) {
+    const std::filesystem::path f(file.substr(prefix.size()));
+    if (f.extension() != ".yaml" && f.extension() != ".yml") continue;
+    stems.push_back(f.stem().string());
+    names.push_back(file);
+  }
+  const std::optional<std::string> near =
+      rb::nearestWord(std::filesystem::path(name).stem().string(), stems);
+  if (!near) return std::nullopt;
+  return names[static_cast<std::size_t>(std::find(stems.begin(), stems.end(), *near) -
+                                        stems.begin())];
+}
+
 rb::Result<std::string> readSceneFile(const std::string& path) {
   std::error_code ec;
   auto fail = [&](const std::string& message) {
@@ -155,15 +175,14 @@ rb::Result<std::string> readSceneFile(const std::string& path) {
                                 !path.starts_with("../") &&
                                 !std::filesystem::is_directory(folder, ec);
       if (shipped_name) folder = std::filesystem::path(rb::assetsDir()) / folder;
-      std::optional<std::string> nearest =
-          rb::nearestWord(named.filename().string(), filesIn(folder));
+      std::optional<std::string> nearest = nearestFile(named.filename().string(), filesIn(folder));
       // A bare name not here, which a shipped scene has (rattleback.yaml for
       // scenes/rattleback.yaml): the shipped one, with its folder.
       const bool bare = !named.has_parent_path() && !nearest;
       if (bare)
-        nearest =
-            rb::nearestWord("scenes/" + named.filename().string(),
-                            filesIn(std::filesystem::path(rb::assetsDir()) / "scenes", "scenes/"));
+        nearest = nearestFile(named.filename().string(),
+                              filesIn(std::filesystem::path(rb::assetsDir()) / "scenes", "scenes/"),
+                              "scenes/");
       if (nearest)
         near = "; did you mean " + printable((named.parent_path() / *nearest).string()) +
                (shipped_name || bare ? " (a shipped scene, found by name from any folder)?" : "?");

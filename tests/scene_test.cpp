@@ -332,6 +332,10 @@ TEST(BadScenes, AMistypedShippedNameOffersTheShippedOne) {
   // Its name alone, without the folder: the shipped one, with its folder.
   const std::string bare = scene::loadFile("rattleback.yaml").error().text();
   const std::string bare_typo = scene::loadFile("both_ways.yaml").error().text();
+  // Names near none: nothing offered (a researcher's nope.yaml had been offered tap-end.yaml,
+  // and mine.yaml printed.yaml).
+  const std::string far = scene::loadFile("nope.yaml").error().text();
+  const std::string mine = scene::loadFile("mine.yaml").error().text();
   ::unsetenv("RATTLEBACK_ASSETS");
   std::filesystem::current_path(here);
   EXPECT_EQ(said,
@@ -341,6 +345,8 @@ TEST(BadScenes, AMistypedShippedNameOffersTheShippedOne) {
             "rattleback.yaml: cannot open the scene file: No such file or directory; did you "
             "mean scenes/rattleback.yaml (a shipped scene, found by name from any folder)?");
   EXPECT_NE(bare_typo.find("did you mean scenes/both-ways.yaml"), std::string::npos) << bare_typo;
+  EXPECT_EQ(far.find("did you mean"), std::string::npos) << far;
+  EXPECT_EQ(mine.find("did you mean"), std::string::npos) << mine;
 }
 
 TEST(BadScenes, AFolderIsNamedAsAFolder) {
