@@ -17,6 +17,7 @@
 #include "python/convert.hpp"
 #include "python/scene_value.hpp"
 #include "python/simulation.hpp"
+#include "scene/keys.hpp"
 #include "tasks/analysis.hpp"
 #include "tasks/check.hpp"
 #include "tasks/manifest.hpp"
@@ -547,6 +548,11 @@ void bindCalls(py::module_& m) {
   m.def("simulate", &simulate, py::arg("scene"), py::arg("rate"), py::arg("check") = false);
   m.def("analyze", &analyzeOf, py::arg("scene"), py::arg("spin") = py::none());
   m.def("linearize", &linearizeOf, py::arg("scene"), py::arg("spin") = py::none());
+  // Every scene key's dotted path, from the keys' one table (scene/keys.cpp): a function's
+  // unknown keyword that is a key's last word is told where it goes (rattleback/_args.py).
+  std::vector<std::string> paths;
+  for (const scene::Key& key : scene::keys()) paths.emplace_back(key.path);
+  m.attr("scene_keys") = paths;
 }
 
 }  // namespace

@@ -249,9 +249,20 @@ def _unknown_keyword(function: Callable, name: str, names: frozenset) -> None:
     """Raises Python's own TypeError for a keyword `function` has not, with the nearest it has
     (``analyze(spinn=3)``: did you mean spin?); without a near one, the call itself raises it."""
     near = difflib.get_close_matches(name, sorted(names), n=1)
+    if not near and name == "n" and "spin" in names:
+        near = ["spin"]  # n = ω·ẑ, the docs' and the theory's name for the spin
     if near:
         raise TypeError(
             f"{function.__name__}() got an unexpected keyword argument {name!r}; did you mean {near[0]!r}?"
+        )
+    # A scene key's last word (tilt for initial.tilt): it goes in the scene, not the call.
+    from . import _core  # (imported with the package; this module is imported before it)
+
+    keys = [k for k in _core.scene_keys if k.rsplit(".", 1)[-1] == name]
+    if keys and "scene" in names:
+        raise TypeError(
+            f"{function.__name__}() got an unexpected keyword argument {name!r}: {keys[0]} is a scene "
+            f"key, which the scene gives: rb.Scene.from_file(…).with_values({{{keys[0]!r}: …}})"
         )
 
 

@@ -6,6 +6,7 @@ import numpy as np
 
 version: str
 default_rate: float
+scene_keys: list[str]
 telemetry_columns: list[tuple[str, str, str]]
 
 class LoadedScene:

@@ -140,6 +140,14 @@ def test_an_unknown_keyword_names_the_nearest_one():
     # Without a near one, Python's own message.
     with pytest.raises(TypeError, match=r"unexpected keyword argument 'colour'$"):
         rb.analyze(scene_path("rattleback.yaml"), colour=3)
+    # n, the theory's name for the spin; a scene key's last word, which the scene gives (a
+    # researcher's trial: a bare message for both).
+    with pytest.raises(TypeError, match=r"argument 'n'; did you mean 'spin'\?$"):
+        rb.linearize(scene_path("rattleback.yaml"), n=3)
+    with pytest.raises(
+        TypeError, match=r"'tilt': initial.tilt is a scene key, .*with_values\(\{'initial.tilt'"
+    ):
+        rb.simulate(scene_path("rattleback.yaml"), tilt=[1, 0])
 
 
 def test_reading_outside_the_last_step_says_the_way_out():
