@@ -68,6 +68,9 @@ inline void put(YAML::Node node, const KeyPath& path, std::size_t depth, const Y
 // has exactly one of them, and one given with the other is left for the loader to refuse. The
 // scene's integrator goes with what it replaced (rk4 takes no tolerance, dopri5 no step), unless
 // one is given too: the default for the new setting follows, as with the options.
+// The start's motion likewise: initial.spin is the shortcut for initial.angular_velocity
+// [0, 0, n], and one set on top of a scene that gives the other replaces it (the default scene's
+// spin had left with_values {initial.angular_velocity: …} refused, with no key to remove it by).
 template <typename Keys>
 void replaceStepSetting(YAML::Node root, const Keys& given) {
   for (const auto& [set, other] :
@@ -77,6 +80,12 @@ void replaceStepSetting(YAML::Node root, const Keys& given) {
       continue;
     root["simulation"].remove(other);
     if (!given.count("simulation.integrator")) root["simulation"].remove("integrator");
+  }
+  for (const auto& [set, other] : {std::pair{"initial.angular_velocity", "spin"},
+                                   std::pair{"initial.spin", "angular_velocity"}}) {
+    if (given.count(set) && !given.count(std::string("initial.") + other) &&
+        root["initial"].IsMap() && root["initial"][other])
+      root["initial"].remove(other);
   }
 }
 

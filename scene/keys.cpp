@@ -275,7 +275,8 @@ const std::vector<Key>& table() {
        .unit = "rad/s",
        .doc = "about the body's z axis (n = spin·cos tilt at the start); + = counter-clockwise "
               "from above; the shortcut for `angular_velocity: [0, 0, spin]`",
-       .check = "finite; not with `angular_velocity`",
+       .check = "finite; not with `angular_velocity` (one set over a scene that gives the "
+                "other replaces it)",
        .sample = "-5.0",
        .default_note = "0, or the z of `angular_velocity`"},
       {.path = "initial.angular_velocity",
@@ -283,7 +284,8 @@ const std::vector<Key>& table() {
        .unit = "rad/s, body axes",
        .doc = "ω at release about body x, y and z: a tap about x or y sets the body rocking "
               "([Physics](physics.md) §P5)",
-       .check = "finite; not with `spin`",
+       .check = "finite; not with `spin` (one set over a scene that gives the other replaces "
+                "it)",
        .sample = "[0.3, -0.2, -5.0]",
        .default_note = "[0, 0, spin]"},
       {.path = "initial.tilt",
