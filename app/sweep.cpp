@@ -348,10 +348,18 @@ void printSummary(const SweepArgs& args, const std::optional<tasks::Shard>& shar
   if (shard)
     std::printf(" (shard %lld of %lld)", static_cast<long long>(shard->index),
                 static_cast<long long>(shard->count));
+  // A table whose columns: list no status keeps none for the journal's rows: those are counted
+  // apart, and the statuses are the rows run now (the two had not added up to the whole).
+  const bool journal_unknown = plan.from_journal && counts[""] > 0;
+  if (journal_unknown)
+    std::printf(" (%zu from the journal of the interrupted run; of the %zu run now",
+                plan.from_journal, plan.todo.size());
   std::printf(", %d ok", counts["ok"]);
   if (counts["stopped"]) std::printf(", %d stopped", counts["stopped"]);
   if (counts["refused"]) std::printf(", %d refused", counts["refused"]);
-  if (plan.from_journal)
+  if (journal_unknown)
+    std::printf(")");
+  else if (plan.from_journal)
     std::printf(" (%zu from the journal of the interrupted run, %zu run now)", plan.from_journal,
                 plan.todo.size());
   std::printf("\nwall time       %.3f s on %d thread%s: %zu run%s, %.1f a second\n", run.wall_s,
