@@ -42,6 +42,8 @@ std::optional<BothWays> bothWays(const scene::Sweep& sweep,
   }
   BothWays found;
   found.bodies = static_cast<std::int64_t>(bodies.size());
+  for (std::size_t a = 0; a < sweep.axes.size(); ++a)
+    if (a != *spin) found.other_keys.push_back(sweep.axes[a].key);
   // In the order of the rows: the first body found is the one with the lowest row.
   std::map<std::int64_t, const std::pair<const std::vector<int>, Body>*> by_row;
   for (const auto& entry : bodies) by_row[entry.second.rows.front()] = &entry;
@@ -65,8 +67,17 @@ std::optional<BothWays> bothWays(const scene::Sweep& sweep,
 }
 
 std::string describe(const BothWays& found) {
-  std::string text = std::to_string(found.both) + " of " + std::to_string(found.bodies) +
-                     (found.bodies == 1 ? " body" : " bodies") +
+  // What the groups of rows are: bodies where every other axis is a body's key; else the other
+  // axes' settings (a sweep over tilt had called its tilts "bodies").
+  std::string keys;
+  bool bodies = true;
+  for (const std::string& key : found.other_keys) {
+    bodies &= key.rfind("body.", 0) == 0;
+    keys += (keys.empty() ? "" : " × ") + key;
+  }
+  const std::string groups = bodies ? (found.bodies == 1 ? " body" : " bodies")
+                                    : (found.bodies == 1 ? " setting of " : " settings of ") + keys;
+  std::string text = std::to_string(found.both) + " of " + std::to_string(found.bodies) + groups +
                      (found.both == 1 ? " reverses" : " reverse") +
                      " both ways (a first reversal spun each way)";
   if (found.exporting)
@@ -75,9 +86,18 @@ std::string describe(const BothWays& found) {
   text += found.exporting ? "; the first that exports:" : "; the first:";
   for (std::size_t i = 0; i < found.first_values.size(); ++i)
     text += (i ? ", " : " ") + found.first_values[i];
+  // Its rows, the first three and the last two where there are more than six (a spin axis of
+  // 50 values had listed 50).
+  const std::vector<std::int64_t>& rows = found.first_rows;
   text += " (rows";
-  for (std::size_t i = 0; i < found.first_rows.size(); ++i)
-    text += (i ? ", " : " ") + std::to_string(found.first_rows[i]);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (rows.size() > 6 && i == 3) {
+      text += ", …";
+      i = rows.size() - 2;
+    }
+    text += (i ? ", " : " ") + std::to_string(rows[i]);
+  }
+  if (rows.size() > 6) text += ": " + std::to_string(rows.size()) + " rows";
   return text + ")";
 }
 

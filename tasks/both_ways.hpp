@@ -22,6 +22,7 @@ struct BothWays {
   /// ("key value", in the axes' order) and its rows.
   std::vector<std::string> first_values;
   std::vector<std::int64_t> first_rows;
+  std::vector<std::string> other_keys;  ///< the axes besides initial.spin, in order
 };
 
 /// For a sweep with an initial.spin axis of both signs, which bodies reverse both ways, given

@@ -18,6 +18,7 @@
 #include <thread>
 #include <vector>
 
+#include "tasks/both_ways.hpp"
 #include "tasks/sweep_jobs.hpp"
 
 namespace fs = std::filesystem;
@@ -1172,4 +1173,26 @@ TEST(Sweep, TheBothWaysLineIsWhatTheTableSays) {
       rows[first_row][3] + " (rows " + rows[first_row][0] + ", " + rows[first_row + 1][0] + ")\n";
   EXPECT_NE(r.out.find(line), std::string::npos) << r.out << "\nexpected: " << line;
   EXPECT_GT(both, exporting) << "deeper dents reverse both ways and cut through the bottom";
+}
+
+// Where the rows alike but for the spin differ in other than the body (a tilt), they are the
+// tilt's settings, not bodies; a group of many rows lists its first three and last two (a
+// researcher's sweep of 50 spins had listed 50 rows and called its tilts "bodies").
+TEST(Sweep, BothWaysNamesWhatItGroupsAndShortensALongListOfRows) {
+  tasks::BothWays found;
+  found.bodies = 8;
+  found.both = 7;
+  found.other_keys = {"initial.tilt[0]"};
+  found.first_values = {"initial.tilt[0] 0.8"};
+  for (std::int64_t row = 1; row < 400; row += 8) found.first_rows.push_back(row);
+  EXPECT_EQ(
+      tasks::describe(found),
+      "7 of 8 settings of initial.tilt[0] reverse both ways (a first reversal spun each way); "
+      "the first: initial.tilt[0] 0.8 (rows 1, 9, 17, …, 385, 393: 50 rows)");
+  found.other_keys = {"body.dents.scale"};
+  found.first_values = {"body.dents.scale 0.5"};
+  found.first_rows = {4, 5};
+  EXPECT_EQ(tasks::describe(found),
+            "7 of 8 bodies reverse both ways (a first reversal spun each way); the first: "
+            "body.dents.scale 0.5 (rows 4, 5)");
 }
