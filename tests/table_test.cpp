@@ -297,4 +297,29 @@ TEST(Docs, TheTelemetryPageListsEveryColumn) {
                        text.find(", " + name + ", ") != std::string::npos;
     EXPECT_TRUE(alone || among) << name << " has no row in docs/commands.md \"The telemetry CSV\"";
   }
+  // Each row's unit is spelled as the files spell it (— for none): a reader holding the page
+  // beside an .h5's attributes had found ° and kg m²/s where the files say deg and kg m^2/s.
+  const std::size_t table = text.find("| column | unit | meaning |");
+  ASSERT_NE(table, std::string::npos);
+  std::istringstream lines(text.substr(table));
+  int rows = 0;
+  for (std::string line; std::getline(lines, line) && line.rfind("|", 0) == 0;) {
+    if (line.rfind("| `", 0) != 0) continue;
+    const std::size_t end = line.find("` |");
+    if (end == std::string::npos) continue;
+    const std::string names = line.substr(3, end - 3);
+    const std::size_t unit_end = line.find(" |", end + 3);
+    if (unit_end == std::string::npos) continue;
+    const std::string unit = line.substr(end + 4, unit_end - end - 4);
+    for (const tasks::TelemetryColumn& c : tasks::telemetryTable()) {
+      const std::string name = c.column.name;
+      if (names != name && names.find(name + ", ") != 0 &&
+          names.find(", " + name) == std::string::npos)
+        continue;
+      const std::string expected = *c.column.unit == 0 ? "—" : std::string(c.column.unit);
+      EXPECT_EQ(unit, expected) << name;
+      ++rows;
+    }
+  }
+  EXPECT_EQ(rows, static_cast<int>(tasks::telemetryTable().size()));
 }
