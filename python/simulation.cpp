@@ -109,7 +109,12 @@ py::dict advanceTo(Simulation& s, double t, bool exactly) {
     throw py::value_error(
         "argument t: " + rb::show(t) + " s lies before the last step, which starts at " +
         rb::show(s.run.previousTime()) + " s: a run goes forward (copy() keeps one to go back to)");
-  if (exactly && !s.run.landAt(t)) {
+  bool landing = false;
+  if (exactly) {
+    std::lock_guard lock(*s.busy);  // (as stepping does: another thread may hold the run)
+    landing = s.run.landAt(t);
+  }
+  if (exactly && !landing) {
     // Fixed steps end at multiples of dt: t is one already, or cannot be landed on.
     const double dt = s.run.model().dt, k = std::round(t / dt);
     if (!sim::sameTime(k * dt, t))
@@ -118,8 +123,11 @@ py::dict advanceTo(Simulation& s, double t, bool exactly) {
                             " s is none: give a multiple of dt, or an adaptive integrator");
   }
   stepWhile(s, [&] { return !reached(s.run, t); });
-  (void)s.run.landAt(std::nullopt);  // a run stopped before t lands nowhere later
-  (void)s.run.advanceTo(t);          // takes no step: the summary's last sample is now at t
+  if (landing) {
+    std::lock_guard lock(*s.busy);
+    (void)s.run.landAt(std::nullopt);  // a run stopped before t lands nowhere later
+  }
+  (void)s.run.advanceTo(t);  // takes no step: the summary's last sample is now at t
   return stateDict(s.run, std::min(t, s.run.current().t));
 }
 

@@ -72,7 +72,7 @@ inline void put(YAML::Node node, const KeyPath& path, std::size_t depth, const Y
 // [0, 0, n], and one set on top of a scene that gives the other replaces it (the default scene's
 // spin had left with_values {initial.angular_velocity: …} refused, with no key to remove it by).
 template <typename Keys>
-void replaceStepSetting(YAML::Node root, const Keys& given) {
+void replaceAlternatives(YAML::Node root, const Keys& given) {
   for (const auto& [set, other] :
        {std::pair{"simulation.dt", "tolerance"}, std::pair{"simulation.tolerance", "dt"}}) {
     if (!given.count(set) || given.count(std::string("simulation.") + other) ||

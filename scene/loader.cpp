@@ -490,7 +490,7 @@ rb::Result<Loaded> loadWithValues(const std::string& yaml, const std::string& na
   auto tree = treeWithValues(yaml, name, values, place, places, content);
   if (!tree) return tree.error();
   YAML::Node root = tree.value();
-  replaceStepSetting(root, places);
+  replaceAlternatives(root, places);
   auto loaded = loadTree(root, name, places, {}, std::move(mesh));
   if (loaded) {
     loaded->values = values;

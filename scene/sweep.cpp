@@ -249,7 +249,7 @@ rb::Result<SweepScenes> SweepScenes::open(const Sweep& sweep) {
       impl->paths.push_back(*splitKey(axis.key));
       impl->places[withoutIndex(axis.key)] = axis.place;
     }
-    replaceStepSetting(impl->base, impl->places);
+    replaceAlternatives(impl->base, impl->places);
     impl->direct = DirectRows::open(impl->base, sweep.axes, [&] {
       return loadTree(YAML::Clone(impl->base), impl->base_name, impl->places, impl->base_lines);
     });
@@ -404,7 +404,7 @@ void checkAxisKey(const SweepAxis& axis, const KeyPath& key_path, const YAML::No
   }
   YAML::Node probe = YAML::Clone(base_tree);
   put(probe, key_path, 0, YAML::Load(axis.values.front()));
-  replaceStepSetting(probe, std::set<std::string>{withoutIndex(axis.key)});
+  replaceAlternatives(probe, std::set<std::string>{withoutIndex(axis.key)});
   auto loaded = loadTree(probe, sweep.base, {{withoutIndex(axis.key), axis.place}});
   if (!loaded && loaded.error().message.find("is not a known key") != std::string::npos &&
       loaded.error().message.rfind(axis.place + ":", 0) == 0)
