@@ -14,6 +14,7 @@
 #include "scene/direct_rows.hpp"
 #include "scene/key_path.hpp"
 #include "scene/tree.hpp"
+#include "util/assets.hpp"
 #include "util/nearest.hpp"
 
 namespace scene {
@@ -335,6 +336,16 @@ void fileBase(Sweep& sweep, const YAML::Node& root, const SweepKeys& k, SweepTex
   sweep.base_as_written = k.base.Scalar();
   fs::path base = k.base.Scalar();
   if (base.is_relative()) base = fs::path(in.path).parent_path() / base;
+  // Not beside the sweep, and named as a shipped scene is (scenes/rattleback.yaml): the shipped
+  // one, as a scene named on the command line is found (the message for a missing base said so,
+  // and a researcher's sweep beside no scenes/ folder was refused with its own base offered).
+  // ./ and ../ name the sweep's folder only.
+  if (std::error_code ec; !fs::exists(base, ec) && fs::path(k.base.Scalar()).is_relative() &&
+                          !k.base.Scalar().starts_with("./") &&
+                          !k.base.Scalar().starts_with("../")) {
+    const fs::path shipped = fs::path(rb::assetsDir()) / k.base.Scalar();
+    if (fs::is_regular_file(shipped, ec)) base = shipped;
+  }
   sweep.base = base.lexically_normal().string();
   auto base_text = readSceneFile(sweep.base);
   // Named as typed too, where the folder's path changed it ("../top.yaml" is top.yaml here).

@@ -393,6 +393,27 @@ TEST(Sweep, TheSummaryNamesTheFirstRefusal) {
 
 // A bad value in the base scene (not varied) refuses the rows naming the base's own line: the
 // rows' trees are copies, which keep no lines, and it was named at the base's line 1.
+// A base named as a shipped scene is (scenes/rattleback.yaml), with no such file beside the
+// sweep, is the shipped scene, as on the command line (a researcher's sweep was refused, and
+// offered its own base); ./ names the sweep's folder only. RATTLEBACK_ASSETS stands for the
+// installed share/rattleback, here the source tree.
+TEST(Sweep, ABaseNamedAsAShippedSceneIsTheShippedOne) {
+  const fs::path dir = scratch();
+  ::setenv("RATTLEBACK_ASSETS", RATTLEBACK_SOURCE_DIR, 1);
+  const fs::path shipped =
+      writeSweep(dir, "base: scenes/rattleback.yaml\nvary:\n  initial.spin: [-5]\n");
+  auto loaded = scene::loadSweep(shipped.string());
+  std::ofstream(dir / "own.yaml")
+      << "base: ./scenes/rattleback.yaml\nvary:\n  initial.spin: [-5]\n";
+  auto own = scene::loadSweep((dir / "own.yaml").string());
+  ::unsetenv("RATTLEBACK_ASSETS");
+  ASSERT_TRUE(loaded) << loaded.error().text();
+  EXPECT_EQ(fs::path(loaded->base), fs::path(kBase).lexically_normal());
+  ASSERT_FALSE(own);
+  EXPECT_NE(own.error().text().find("cannot open the scene file"), std::string::npos)
+      << own.error().text();
+}
+
 TEST(Sweep, ABadValueInTheBaseNamesTheBasesLine) {
   const fs::path dir = scratch();
   std::string base = slurp(kBase);
