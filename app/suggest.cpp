@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "scene/keys.hpp"
 #include "util/nearest.hpp"
 
 namespace app {
@@ -39,6 +40,16 @@ bool looksLikeANumber(const std::string& word) {
   return word.size() > 1 && (std::isdigit(static_cast<unsigned char>(word[1])) || word[1] == '.');
 }
 
+// The scene key whose last word is `word` (tilt: initial.tilt), or nothing.
+std::string sceneKeyEndingIn(const std::string& word) {
+  for (const scene::Key& key : scene::keys()) {
+    const std::string_view path = key.path;
+    const std::size_t dot = path.rfind('.');
+    if (dot != std::string_view::npos && path.substr(dot + 1) == word) return std::string(path);
+  }
+  return "";
+}
+
 // The first word from argv[first] on that is none of `command`'s options, said with the nearest
 // option, or nothing.
 std::optional<std::string> unknownOption(const CLI::App& command, const std::string& path,
@@ -63,6 +74,10 @@ std::optional<std::string> unknownOption(const CLI::App& command, const std::str
     // A one-letter option is one edit from every other: no guess for those.
     if (const auto nearest = rb::nearestWord(word, names); word.size() > 2 && nearest)
       line += "; did you mean " + *nearest + "?";
+    else if (const std::string key = sceneKeyEndingIn(word.substr(word.find_first_not_of('-')));
+             !key.empty() && known("--set"))
+      // A scene key's last word (--tilt for initial.tilt): set it as the file would have it.
+      line += ": " + key + " is a scene key; --set " + key + "=VALUE puts it in";
     return line + " (see rattleback " + path + " --help)";
   }
   return std::nullopt;
@@ -97,6 +112,13 @@ std::string explainOptionError(const CLI::App& cli, int argc, char** argv,
     if (const CLI::Option* option = command->get_option_no_throw(what.substr(0, at)))
       return path + ": " + what.substr(0, at) + " takes " + takes(*option) + " (" + gist(*option) +
              "), none given (see rattleback " + path + " --help)";
+  // --set KEY VALUE, a space for the =: the value was "not expected".
+  if (what.find("was not expected") != std::string::npos)
+    for (int i = first + 1; i + 1 < argc; ++i)
+      if (std::string(argv[i - 1]) == "--set" &&
+          std::string(argv[i]).find('=') == std::string::npos)
+        return path + ": --set takes KEY=VALUE in one word, not '" + argv[i] + "' (--set " +
+               argv[i] + "=" + argv[i + 1] + ")";
   // Several KEY=VALUE words after one --set: the second was taken for the scene, and CLI11 named
   // the scene as "not expected".
   if (what.find("was not expected") != std::string::npos)

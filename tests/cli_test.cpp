@@ -1449,7 +1449,14 @@ TEST(Cli, AMistypedOptionSuggestsTheNearest) {
         Case{"still " + scene("rattleback") + " --tim 1", "did you mean --time?"},
         Case{"sweep merge a.csv b.csv --plto x.png",
              "sweep merge: no option --plto; did you mean --plot?"},
-        Case{"simulate " + scene("rattleback") + " -x", "simulate: no option -x (see"}}) {
+        Case{"simulate " + scene("rattleback") + " -x", "simulate: no option -x (see"},
+        // A scene key's last word, and --set with a space for its = (a researcher's trial).
+        Case{"simulate " + scene("rattleback") + " --tilt 3",
+             "simulate: no option --tilt: initial.tilt is a scene key; --set initial.tilt=VALUE "
+             "puts it in"},
+        Case{"simulate " + scene("rattleback") + " --set initial.spin -5",
+             "simulate: --set takes KEY=VALUE in one word, not 'initial.spin' (--set "
+             "initial.spin=-5)"}}) {
     const Result r = rattleback(c.args);
     EXPECT_EQ(r.status, 2) << c.args;
     EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;

@@ -249,8 +249,10 @@ def _unknown_keyword(function: Callable, name: str, names: frozenset) -> None:
     """Raises Python's own TypeError for a keyword `function` has not, with the nearest it has
     (``analyze(spinn=3)``: did you mean spin?); without a near one, the call itself raises it."""
     near = difflib.get_close_matches(name, sorted(names), n=1)
-    if not near and name == "n" and "spin" in names:
-        near = ["spin"]  # n = ω·ẑ, the docs' and the theory's name for the spin
+    # The physics' own symbols: n = ω·ẑ, the docs' and the theory's name for the spin, and ω.
+    symbol = {"n": "spin", "omega": "angular_velocity", "w": "angular_velocity"}.get(name)
+    if not near and symbol in names:
+        near = [symbol]
     if near:
         raise TypeError(
             f"{function.__name__}() got an unexpected keyword argument {name!r}; did you mean {near[0]!r}?"

@@ -144,6 +144,8 @@ def test_an_unknown_keyword_names_the_nearest_one():
     # researcher's trial: a bare message for both).
     with pytest.raises(TypeError, match=r"argument 'n'; did you mean 'spin'\?$"):
         rb.linearize(scene_path("rattleback.yaml"), n=3)
+    with pytest.raises(TypeError, match=r"argument 'omega'; did you mean 'angular_velocity'\?$"):
+        rb.Simulation(scene_path("rattleback.yaml")).set_state(omega=[0, 1, 0])
     with pytest.raises(
         TypeError, match=r"'tilt': initial.tilt is a scene key, .*with_values\(\{'initial.tilt'"
     ):
