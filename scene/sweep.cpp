@@ -117,8 +117,16 @@ std::string unknownKey(const std::string& at, const std::string& key, bool given
   std::string known_list;
   for (const std::string& k : known) known_list += (known_list.empty() ? "" : ", ") + k;
   const std::optional<std::string> nearest = rb::nearestWord(key, known);
+  // A scene's own section (units, body, initial…): a scene file given where a sweep goes.
+  const std::string scene_file =
+      !nearest && !given && findKey(key)
+          ? "; a scene's key: this is a scene file, not a sweep (a sweep names its scene as "
+            "base: and what it varies under vary:, docs/scenes.md \"Sweep files\"); "
+            "rattleback simulate runs a scene"
+          : "";
   return at + ": " + key + " is not a key of a sweep" +
-         (nearest ? "; did you mean " + *nearest + "?" : "") + " (known: " + known_list + ")";
+         (nearest ? "; did you mean " + *nearest + "?" : "") + scene_file +
+         " (known: " + known_list + ")";
 }
 
 // `columns:`, a list of column names, each once: its form only (which names are columns is the

@@ -277,6 +277,10 @@ TEST(Sweep, ErrorsInTheSweepFileNameFileLineAndKey) {
        "rad/s)"},
       {"base: BASE\nvary:\n  initial.spin: [1]\nduraton: 3\n",
        "sweep.yaml:4: duraton is not a key of a sweep"},
+      // A scene file given where a sweep goes (a researcher's trial: it named only the key).
+      {"units: {length: 0.01}\nbody: {mass: 0.06}\n",
+       "sweep.yaml:1: units is not a key of a sweep; a scene's key: this is a scene file, not a "
+       "sweep"},
       {"base: BASE\nvary:\n  body.dents.at[2]: [1]\n",
        "sweep.yaml:3: body.dents.at[2]: the base scene has no list body.dents.at with an element "
        "2"},
