@@ -74,7 +74,8 @@ std::optional<std::string> unknownOption(const CLI::App& command, const std::str
     // A one-letter option is one edit from every other: no guess for those.
     if (const auto nearest = rb::nearestWord(word, names); word.size() > 2 && nearest)
       line += "; did you mean " + *nearest + "?";
-    else if (const std::string key = sceneKeyEndingIn(word.substr(word.find_first_not_of('-')));
+    else if (const std::string key = sceneKeyEndingIn(word.substr(
+                 std::min(word.find_first_not_of('-'), word.size())));  // (--- is all dashes)
              !key.empty() && known("--set"))
       // A scene key's last word (--tilt for initial.tilt): set it as the file would have it.
       line += ": " + key + " is a scene key; --set " + key + "=VALUE puts it in";

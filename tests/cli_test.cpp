@@ -1454,6 +1454,8 @@ TEST(Cli, AMistypedOptionSuggestsTheNearest) {
         Case{"simulate " + scene("rattleback") + " --tilt 3",
              "simulate: no option --tilt: initial.tilt is a scene key; --set initial.tilt=VALUE "
              "puts it in"},
+        // Dashes alone (no key's last word: it had thrown out_of_range and aborted).
+        Case{"simulate " + scene("rattleback") + " ---", "simulate: no option --- (see"},
         Case{"simulate " + scene("rattleback") + " --set initial.spin -5",
              "simulate: --set takes KEY=VALUE in one word, not 'initial.spin' (--set "
              "initial.spin=-5)"}}) {
