@@ -386,7 +386,6 @@ rb::Result<Body> buildBody(const BodySpec& b, double unit, MassSource source, bo
     return rb::Error{"body.grid", "is too coarse: the inertia tensor is singular"};
   body.inertia_inv = body.inertia.inverse();
   body.dents = dents;
-  body.dents_cut_share = dentsCutShare(shape, dents);
   if (contact_points) placePoints(body, gridSurface(shape, dents, grid));
   return body;
 }

@@ -12,7 +12,9 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -78,10 +80,21 @@ struct Body {
   bool com_given = false, inertia_given = false;
   Grid grid;                   ///< the point grid's spacing, m
   std::optional<Dents> dents;  ///< the dents cut from the top (paraboloid), m
-  /// With dents: the share of the plain body's volume they remove (sim::dentsCutShare), worked
-  /// out once here: every run's warnings ask (two closed forms had been 40 % of a short
-  /// `rb.simulate` call).
-  std::optional<double> dents_cut_share;
+  /// The share of the plain body's volume the dents remove (sim::dentsCutShare), worked out
+  /// when first asked (tasks::dentsCutShare) and kept with the body: every run's warnings ask
+  /// (two closed forms at each call had been 40 % of a short `rb.simulate`), and a sweep's
+  /// bodies need not pay for it (a cubature each where the dents cut through the bottom: 6 % of
+  /// the dents sweep). NaN until asked; −1 without dents. Two threads asking at once both store
+  /// the same number.
+  struct LazyShare {
+    mutable std::atomic<double> value{std::numeric_limits<double>::quiet_NaN()};
+    LazyShare() = default;
+    LazyShare(const LazyShare& other) : value(other.value.load()) {}
+    LazyShare& operator=(const LazyShare& other) {
+      value.store(other.value.load());
+      return *this;
+    }
+  } dents_cut_share;
   /// Contact points, only for contact.model points (the others touch the smooth surface, and
   /// building the default body's 244,212 made most of a short run's cost); the
   /// drawing walks the grid itself, thinned (tasks/drawn_points), and censusOf counts it.

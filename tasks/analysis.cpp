@@ -169,7 +169,13 @@ RestModes restModes(const sim::Linearisation& at_rest) {
 
 std::optional<double> dentsCutShare(const sim::Body& body) {
   if (body.surface.kind != sim::Surface::Kind::Paraboloid) return std::nullopt;
-  return body.dents_cut_share;
+  double share = body.dents_cut_share.value.load();
+  if (std::isnan(share)) {
+    share = sim::dentsCutShare(body.surface.paraboloid, body.dents).value_or(-1.0);
+    body.dents_cut_share.value.store(share);
+  }
+  if (share < 0) return std::nullopt;
+  return share;
 }
 
 double analysisSpin(const sim::Model& model, const std::optional<double>& spin) {
