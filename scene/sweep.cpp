@@ -346,7 +346,7 @@ void fileBase(Sweep& sweep, const YAML::Node& root, const SweepKeys& k, SweepTex
   if (base.is_relative()) base = fs::path(in.path).parent_path() / base;
   // Not beside the sweep, and named as a shipped scene is (scenes/rattleback.yaml): the shipped
   // one, as a scene named on the command line is found (the message for a missing base said so,
-  // and a researcher's sweep beside no scenes/ folder was refused with its own base offered).
+  // and a sweep beside no scenes/ folder was refused with its own base offered).
   // ./ and ../ name the sweep's folder only.
   if (std::error_code ec; !fs::exists(base, ec) && fs::path(k.base.Scalar()).is_relative() &&
                           !k.base.Scalar().starts_with("./") &&

@@ -1450,7 +1450,7 @@ TEST(Cli, AMistypedOptionSuggestsTheNearest) {
         Case{"sweep merge a.csv b.csv --plto x.png",
              "sweep merge: no option --plto; did you mean --plot?"},
         Case{"simulate " + scene("rattleback") + " -x", "simulate: no option -x (see"},
-        // A scene key's last word, and --set with a space for its = (a researcher's trial).
+        // A scene key's last word, and --set with a space for its =.
         Case{"simulate " + scene("rattleback") + " --tilt 3",
              "simulate: no option --tilt: initial.tilt is a scene key; --set initial.tilt=VALUE "
              "puts it in"},

@@ -332,7 +332,7 @@ TEST(BadScenes, AMistypedShippedNameOffersTheShippedOne) {
   // Its name alone, without the folder: the shipped one, with its folder.
   const std::string bare = scene::loadFile("rattleback.yaml").error().text();
   const std::string bare_typo = scene::loadFile("both_ways.yaml").error().text();
-  // Names near none: nothing offered (a researcher's nope.yaml had been offered tap-end.yaml,
+  // Names near none: nothing offered (nope.yaml had been offered tap-end.yaml,
   // and mine.yaml printed.yaml).
   const std::string far = scene::loadFile("nope.yaml").error().text();
   const std::string mine = scene::loadFile("mine.yaml").error().text();
@@ -455,8 +455,8 @@ TEST(SceneValues, AStepReplacesTheScenesToleranceAndTheOtherWayRound) {
 
 // So with the start's motion: initial.angular_velocity set on top of a scene's initial.spin
 // replaces it, and the other way round (the default scene's spin had left with_values
-// {initial.angular_velocity: …} refused, with no key to take the spin out: a researcher's
-// trial). Both set at once, or both in one file, stay refused.
+// {initial.angular_velocity: …} refused, with no key to take the spin out). Both set at once, or
+// both in one file, stay refused.
 TEST(SceneValues, AnAngularVelocityReplacesTheScenesSpinAndTheOtherWayRound) {
   const std::string spun = std::string(testing_support::kStableScene);  // initial: {spin: -5, …}
   auto tapped = scene::loadWithValues(

@@ -277,7 +277,7 @@ TEST(Sweep, ErrorsInTheSweepFileNameFileLineAndKey) {
        "rad/s)"},
       {"base: BASE\nvary:\n  initial.spin: [1]\nduraton: 3\n",
        "sweep.yaml:4: duraton is not a key of a sweep"},
-      // A scene file given where a sweep goes (a researcher's trial: it named only the key).
+      // A scene file given where a sweep goes (it had named only the key).
       {"units: {length: 0.01}\nbody: {mass: 0.06}\n",
        "sweep.yaml:1: units is not a key of a sweep; a scene's key: this is a scene file, not a "
        "sweep"},
@@ -398,7 +398,7 @@ TEST(Sweep, TheSummaryNamesTheFirstRefusal) {
 // A bad value in the base scene (not varied) refuses the rows naming the base's own line: the
 // rows' trees are copies, which keep no lines, and it was named at the base's line 1.
 // A base named as a shipped scene is (scenes/rattleback.yaml), with no such file beside the
-// sweep, is the shipped scene, as on the command line (a researcher's sweep was refused, and
+// sweep, is the shipped scene, as on the command line (such a sweep was refused, and
 // offered its own base); ./ names the sweep's folder only. RATTLEBACK_ASSETS stands for the
 // installed share/rattleback, here the source tree.
 TEST(Sweep, ABaseNamedAsAShippedSceneIsTheShippedOne) {
@@ -582,7 +582,7 @@ TEST(Sweep, ACtrlCDeliveredTwiceAtOnceIsOneRequest) {
 
 // A resumed sweep whose columns: list no status counts the journal's rows apart from the
 // statuses of the rows run now: its summary adds up (it had said "100000 runs, 83665 ok, 879
-// stopped (15456 from the journal…, 84544 run now)": a researcher's trial).
+// stopped (15456 from the journal…, 84544 run now)").
 TEST(Sweep, AResumedSweepWithoutAStatusColumnSaysWhatItCounted) {
   const fs::path dir = scratch();
   const fs::path sweep =
@@ -1202,7 +1202,7 @@ TEST(Sweep, TheBothWaysLineIsWhatTheTableSays) {
 
 // Where the rows alike but for the spin differ in other than the body (a tilt), they are the
 // tilt's settings, not bodies; a group of many rows lists its first three and last two (a
-// researcher's sweep of 50 spins had listed 50 rows and called its tilts "bodies").
+// sweep of 50 spins had listed 50 rows and called its tilts "bodies").
 TEST(Sweep, BothWaysNamesWhatItGroupsAndShortensALongListOfRows) {
   tasks::BothWays found;
   found.bodies = 8;

@@ -140,8 +140,8 @@ def test_an_unknown_keyword_names_the_nearest_one():
     # Without a near one, Python's own message.
     with pytest.raises(TypeError, match=r"unexpected keyword argument 'colour'$"):
         rb.analyze(scene_path("rattleback.yaml"), colour=3)
-    # n, the theory's name for the spin; a scene key's last word, which the scene gives (a
-    # researcher's trial: a bare message for both).
+    # n, the theory's name for the spin; a scene key's last word, which the scene gives (each had
+    # a bare message).
     with pytest.raises(TypeError, match=r"argument 'n'; did you mean 'spin'\?$"):
         rb.linearize(scene_path("rattleback.yaml"), n=3)
     with pytest.raises(TypeError, match=r"argument 'omega'; did you mean 'angular_velocity'\?$"):

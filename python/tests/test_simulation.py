@@ -87,7 +87,7 @@ def inertia_and_mass(scene):
 
 def test_advance_exactly_ends_the_step_at_t_and_a_tap_acts_there():
     # Adaptive steps end past the time asked (1.00077 s for 1 s here): exactly=True ends the last
-    # step at t itself, so that a tap lands at the time asked, as a researcher scripts it.
+    # step at t itself, so that a tap lands at the time asked.
     plain = rb.Simulation(scene_path("rattleback.yaml"))
     plain.advance(1.0)
     assert plain.t > 1.0
