@@ -1,5 +1,8 @@
 #include "scene/mesh_file.hpp"
 
+// The library's implementation is compiled here, in double precision (scene/CMakeLists.txt).
+#define TINYOBJLOADER_USE_DOUBLE
+#define TINYOBJLOADER_IMPLEMENTATION
 #include <tiny_obj_loader.h>
 
 #include <algorithm>

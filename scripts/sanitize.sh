@@ -10,7 +10,7 @@ flags="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-f
 if [ ! -f build-asan/CMakeCache.txt ]; then
   cmake -S . -B build-asan "${generator[@]}" -DCMAKE_BUILD_TYPE=None \
     -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
-    -DRATTLEBACK_PYTHON=OFF >/dev/null
+    -DRATTLEBACK_PYTHON=OFF -DRATTLEBACK_STATIC_RUNTIME=OFF >/dev/null
 fi
 cmake --build build-asan --parallel "$(nproc)" --target rattleback rattleback_tests
 # Mesa keeps a few allocations until exit on purpose; those are not ours.
