@@ -417,7 +417,8 @@ void writeRun(const Run& r, const std::string& path, const char* method,
                                    stemOf(r.scene, !scene_path.is_null()),
                                    "",
                                    {},
-                                   {}}});
+                                   {},
+                                   tasks::madeFrom(r.sidecar)}});
     return status;
   });
   if (!written) raise(written.error());

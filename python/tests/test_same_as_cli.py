@@ -326,12 +326,32 @@ def test_the_attitude_quaternion_is_unit_and_gives_the_tilt(default_scene):
     assert (np.sum(q[1:] * q[:-1], axis=1) > 0.9).all()
 
 
-def test_python_lists_its_csv_in_the_folders_manifest(tmp_path, default_scene):
-    rb.simulate(default_scene, duration=0.2).to_csv(tmp_path / "mine.csv")
+def test_python_lists_its_files_in_the_folders_manifest_as_the_command_line_does(tmp_path):
+    """Each file a run writes is listed with the scene it was made from (its content and the
+    values put in), the same as simulate -o lists its own: the report tells files of an edited
+    scene from the run's by it."""
+    scene = rb.Scene.from_file(scene_path("rattleback.yaml")).with_values({"body.paraboloid.a": 1.2})
+    run = rb.simulate(scene, duration=0.2)
+    run.to_csv(tmp_path / "mine.csv")
+    run.to_npz(tmp_path / "mine.npz")
+    run.to_hdf5(tmp_path / "mine.h5")
+    cli(
+        "simulate",
+        scene_path("rattleback.yaml"),
+        "--set",
+        "body.paraboloid.a=1.2",
+        "--duration",
+        "0.2",
+        "-q",
+        "-o",
+        "theirs.csv",
+        cwd=tmp_path,
+    )
     outputs = json.loads((tmp_path / "rattleback-manifest.json").read_text())["outputs"]
-    assert outputs == [
-        {"file": "mine.csv", "kind": "telemetry", "scene": "rattleback", "role": "", "spin": None, "t": None}
-    ]
+    theirs = [o for o in outputs if o["file"] == "theirs.csv"]
+    assert len(theirs) == 1 and len(theirs[0]["made_from"]) == 16
+    for name in ("mine.csv", "mine.npz", "mine.h5"):
+        assert [o for o in outputs if o["file"] == name] == [{**theirs[0], "file": name}]
 
 
 def test_check_is_the_command_lines_check(tmp_path, default_scene):
