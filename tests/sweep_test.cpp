@@ -84,6 +84,33 @@ fs::path writeSweep(const fs::path& dir, const std::string& text) {
   return path;
 }
 
+// A sweep of the default scene started in the background at -j 1 (`vary` and what follows it in
+// the sweep file; options after -o), its stderr in dir/stderr, for a test that interrupts or joins
+// it. Its journal is table + ".partial".
+struct BackgroundSweep {
+  fs::path dir, sweep, table, journal;
+  std::string command;  ///< the command line it was started with
+  pid_t pid = -1;
+};
+BackgroundSweep startSweep(const std::string& rest, const std::string& options = " -q") {
+  BackgroundSweep b;
+  b.dir = scratch();
+  b.sweep = writeSweep(b.dir, "base: " + kBase + "\nvary:\n" + rest);
+  b.table = b.dir / "t.csv";
+  b.journal = b.table.string() + ".partial";
+  b.command = std::string(RATTLEBACK_BIN) + " sweep " + b.sweep.string() + options + " -j 1 -o " +
+              b.table.string();
+  b.pid = startInBackground(b.command, b.dir / "stderr");
+  return b;
+}
+
+// The exit status of a process started in the background, once it ends (-1: not an exit).
+int exitStatusOf(pid_t pid) {
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
 // Splits CSV text into rows of fields (RFC 4180 quotes), as Python's csv module reads it.
 std::vector<std::vector<std::string>> readCsv(const std::string& text) {
   std::vector<std::vector<std::string>> rows;
@@ -483,17 +510,11 @@ TEST(Sweep, AStoppedRowKeepsItsLargestTilt) {
 // written one journal: a CI engineer's trial); once the first is stopped, --resume takes its
 // journal (the lock went with the process).
 TEST(Sweep, ASecondSweepOnATableBeingWrittenIsToldSo) {
-  const fs::path dir = scratch();
-  const fs::path sweep =
-      writeSweep(dir, "base: " + kBase +
-                          "\nvary:\n  initial.spin: {from: -8, to: 8, count: 161}\n"
-                          "  contact.air_drag: [0, 1e-6, 2e-6, 3e-6]\nduration: 30\n");
-  const fs::path table = dir / "t.csv";
-  const std::string command =
-      std::string(RATTLEBACK_BIN) + " sweep " + sweep.string() + " -q -j 1 -o " + table.string();
-  const pid_t pid = startInBackground(command, dir / "first.err");
+  const BackgroundSweep first = startSweep(
+      "  initial.spin: {from: -8, to: 8, count: 161}\n"
+      "  contact.air_drag: [0, 1e-6, 2e-6, 3e-6]\nduration: 30\n");
+  const auto& [dir, sweep, table, journal, command, pid] = first;
   ASSERT_GE(pid, 0);
-  const fs::path journal = table.string() + ".partial";
   waitForRows(journal, 2);
   for (const char* resume : {"", " --resume"}) {
     const Outcome second =
@@ -507,18 +528,14 @@ TEST(Sweep, ASecondSweepOnATableBeingWrittenIsToldSo) {
         << resume;
   }
   kill(pid, SIGINT);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFEXITED(status));
-  ASSERT_EQ(WEXITSTATUS(status), 130) << slurp(dir / "first.err");
+  ASSERT_EQ(exitStatusOf(pid), 130) << slurp(dir / "stderr");
   const std::string kept = slurp(journal);
   ASSERT_GT(std::count(kept.begin(), kept.end(), '\n'), 2) << "the first's journal was cut";
   const pid_t again = startInBackground(command + " --resume", dir / "again.err");
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   kill(again, SIGINT);
-  waitpid(again, &status, 0);
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_TRUE(WEXITSTATUS(status) == 130 || WEXITSTATUS(status) == 0) << slurp(dir / "again.err");
+  const int status = exitStatusOf(again);
+  EXPECT_TRUE(status == 130 || status == 0) << slurp(dir / "again.err");
   EXPECT_EQ(slurp(dir / "again.err").find("another sweep"), std::string::npos);
 }
 
@@ -557,48 +574,32 @@ TEST(Sweep, ASweepStartedIgnoringCtrlCKeepsIgnoringIt) {
 // process group) is one request: the sweep stops as for one and says so. Ending at once on the
 // second had left 4 sweeps of 10 stopped with nothing said.
 TEST(Sweep, ACtrlCDeliveredTwiceAtOnceIsOneRequest) {
-  const fs::path dir = scratch();
-  const fs::path sweep =
-      writeSweep(dir, "base: " + kBase +
-                          "\nvary:\n  initial.spin: {from: -8, to: 8, count: 161}\nduration: 8\n");
-  const fs::path table = dir / "t.csv";
-  const std::string command =
-      std::string(RATTLEBACK_BIN) + " sweep " + sweep.string() + " -q -j 1 -o " + table.string();
-  const pid_t pid = startInBackground(command, dir / "stderr");
-  ASSERT_GE(pid, 0);
-  waitForRows(table.string() + ".partial", 2);
-  kill(pid, SIGINT);
+  const BackgroundSweep b =
+      startSweep("  initial.spin: {from: -8, to: 8, count: 161}\nduration: 8\n");
+  ASSERT_GE(b.pid, 0);
+  waitForRows(b.journal, 2);
+  kill(b.pid, SIGINT);
   // Long enough for the first to have been handled (the two are otherwise merged into one
   // pending signal, and the test would show nothing), well within the window.
   std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  kill(pid, SIGINT);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 130);
-  EXPECT_NE(slurp(dir / "stderr").find("interrupted; "), std::string::npos)
-      << slurp(dir / "stderr");
+  kill(b.pid, SIGINT);
+  EXPECT_EQ(exitStatusOf(b.pid), 130);
+  EXPECT_NE(slurp(b.dir / "stderr").find("interrupted; "), std::string::npos)
+      << slurp(b.dir / "stderr");
 }
 
 // A resumed sweep whose columns: list no status counts the journal's rows apart from the
 // statuses of the rows run now: its summary adds up (it had said "100000 runs, 83665 ok, 879
 // stopped (15456 from the journal…, 84544 run now)").
 TEST(Sweep, AResumedSweepWithoutAStatusColumnSaysWhatItCounted) {
-  const fs::path dir = scratch();
-  const fs::path sweep =
-      writeSweep(dir, "base: " + kBase +
-                          "\nvary:\n  initial.spin: {from: -8, to: 8, count: 161}\nduration: 8\n"
-                          "columns: [first_reversal_s]\n");
-  const fs::path table = dir / "t.csv";
-  const std::string command =
-      std::string(RATTLEBACK_BIN) + " sweep " + sweep.string() + " -q -j 1 -o " + table.string();
-  const pid_t pid = startInBackground(command, dir / "stderr");
+  const BackgroundSweep b = startSweep(
+      "  initial.spin: {from: -8, to: 8, count: 161}\nduration: 8\ncolumns: [first_reversal_s]\n");
+  const auto& [dir, sweep, table, journal, command, pid] = b;
   ASSERT_GE(pid, 0);
-  waitForRows(table.string() + ".partial", 3);
+  waitForRows(journal, 3);
   kill(pid, SIGINT);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  const std::string kept = slurp(table.string() + ".partial");
+  exitStatusOf(pid);
+  const std::string kept = slurp(journal);
   const auto journal_rows = std::count(kept.begin(), kept.end(), '\n') - 1;
   ASSERT_GT(journal_rows, 0);
   const Outcome resumed =
@@ -614,23 +615,14 @@ TEST(Sweep, AResumedSweepWithoutAStatusColumnSaysWhatItCounted) {
 // Ctrl-C keeps the finished rows (in OUT.partial) and writes no table; --resume runs the rest,
 // and the table equals an uninterrupted run's.
 TEST(Sweep, AnInterruptKeepsTheFinishedRowsAndResumeCompletesThem) {
-  const fs::path dir = scratch();
-  const fs::path sweep =
-      writeSweep(dir, "base: " + kBase +
-                          "\nvary:\n  initial.spin: {from: -8, to: 8, count: 161}\nduration: 8\n");
-  const fs::path table = dir / "t.csv";
-  const std::string command =
-      std::string(RATTLEBACK_BIN) + " sweep " + sweep.string() + " -q -j 1 -o " + table.string();
-  const pid_t pid = startInBackground(command, dir / "stderr");
+  const BackgroundSweep b =
+      startSweep("  initial.spin: {from: -8, to: 8, count: 161}\nduration: 8\n");
+  const auto& [dir, sweep, table, journal, command, pid] = b;
   ASSERT_GE(pid, 0);
   // Wait until some rows are in the journal, then interrupt.
-  const fs::path journal = table.string() + ".partial";
   waitForRows(journal, 5);
   kill(pid, SIGINT);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFEXITED(status));
-  ASSERT_EQ(WEXITSTATUS(status), 130) << slurp(dir / "stderr");
+  ASSERT_EQ(exitStatusOf(pid), 130) << slurp(dir / "stderr");
   EXPECT_FALSE(fs::exists(table));
   const std::string kept = slurp(journal);
   const auto kept_rows = std::count(kept.begin(), kept.end(), '\n') - 1;
@@ -666,21 +658,13 @@ TEST(Sweep, AnInterruptKeepsTheFinishedRowsAndResumeCompletesThem) {
 // Ctrl-C before any run has finished leaves no journal (one of its header alone was left behind,
 // with "0 of 2 runs kept" and --resume offered: a researcher's trial).
 TEST(Sweep, AnInterruptBeforeAnyRunFinishedLeavesNoJournal) {
-  const fs::path dir = scratch();
-  const fs::path sweep =
-      writeSweep(dir, "base: " + kBase + "\nvary:\n  initial.spin: [-5, -4]\nduration: 100000\n");
-  const fs::path table = dir / "t.csv", journal = table.string() + ".partial";
-  const std::string command =
-      std::string(RATTLEBACK_BIN) + " sweep " + sweep.string() + " -j 1 -o " + table.string();
-  const pid_t pid = startInBackground(command, dir / "stderr");
+  const BackgroundSweep b = startSweep("  initial.spin: [-5, -4]\nduration: 100000\n", "");
+  const auto& [dir, sweep, table, journal, command, pid] = b;
   ASSERT_GE(pid, 0);
   waitForRows(journal, 0);  // the runs have begun
   EXPECT_TRUE(fs::exists(journal));
   kill(pid, SIGINT);  // (each run of 1e5 s takes minutes)
-  int status = 0;
-  waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 130);
+  EXPECT_EQ(exitStatusOf(pid), 130);
   EXPECT_EQ(slurp(dir / "stderr"),
             sweep.string() + ": interrupted before any run finished; nothing kept\n");
   EXPECT_FALSE(fs::exists(journal));
