@@ -10,6 +10,7 @@
 #include "render/image_io.hpp"
 #include "sim/tessellate.hpp"
 #include "tasks/manifest.hpp"
+#include "tasks/outcome.hpp"
 #include "tasks/scene_args.hpp"
 
 namespace app {
@@ -63,6 +64,11 @@ struct SimulateArgs {
   bool verbose = false;
 };
 int simulateCommand(const SimulateArgs& args);
+/// The line of a run that stopped before its output: why, that `what` (telemetry, video, still)
+/// was not written, what the run had found by then, and the value of `option` (--duration, or a
+/// still's --t) that ends the run before the stop.
+std::string stoppedLine(const std::string& scene, const tasks::Outcome& outcome,
+                        const std::string& what, const std::string& option);
 
 struct AnalyzeArgs {
   std::string scene;

@@ -258,9 +258,23 @@ int notWritten(const SimulateArgs& args, const tasks::Outcome& outcome) {
          args.scene + ": interrupted at t = " + rb::show(outcome.t) + " s; no telemetry written");
     return interruptedStatus();  // the temporary files are removed unfinished
   }
-  tell(Tone::Error,
-       args.scene + ": the run stopped: " + outcome.message + ". No telemetry written");
+  tell(Tone::Error, stoppedLine(args.scene, outcome, "telemetry", "--duration"));
   return kDiverged;
+}
+
+std::string stoppedLine(const std::string& scene, const tasks::Outcome& outcome,
+                        const std::string& what, const std::string& option) {
+  std::string line = scene + ": the run stopped: " + outcome.message + ". No " + what + " written";
+  // The run up to the stop is sound: say what it found, and how to keep it (the stop's time
+  // rounded down to a tenth of a second, so that the run ends before it).
+  const double before = std::floor(outcome.t * 10) / 10;
+  if (outcome.first_reversal_s)
+    line += "; it had reversed at " + rb::show(*outcome.first_reversal_s) + " s";
+  else if (before > 0)
+    line += "; it had not reversed by then";
+  if (before > 0 && (!outcome.first_reversal_s || *outcome.first_reversal_s < before))
+    line += ". " + option + " " + rb::show(before) + " ends the run before the stop";
+  return line;
 }
 
 // A stopped run's line, then what is odd about the body, which may be why (lengths in metres

@@ -40,8 +40,8 @@ bool interrupted() {
 // The exit status and message of a run that stopped or was interrupted before its output.
 int notWritten(const tasks::Outcome& outcome, const std::string& scene, const std::string& what) {
   if (outcome.ending == tasks::Ending::Stopped) {
-    tell(Tone::Error,
-         scene + ": the run stopped: " + outcome.message + ". No " + what + " written");
+    // A still's run ends at its --t, a video's at its --duration.
+    tell(Tone::Error, stoppedLine(scene, outcome, what, what == "still" ? "--t" : "--duration"));
     return kDiverged;
   }
   tell(Tone::Error, scene + ": interrupted; no " + what + " written");

@@ -20,6 +20,9 @@ struct Outcome {
   std::optional<sim::Stop> stop;  ///< for Ending::Stopped
   std::string message;            ///< for Ending::Stopped: the run's own words
   double t = 0;                   ///< simulated time reached, s
+  /// For Ending::Stopped: the first reversal the rule had counted before the stop, s (none if
+  /// it had not reversed), so that a front end can say what the run found before it stopped.
+  std::optional<double> first_reversal_s;
 };
 
 /// The outcome of a run from its summary.
@@ -30,6 +33,7 @@ inline Outcome outcomeOf(const sim::RunSummary& run) {
     o.ending = Ending::Stopped;
     o.stop = run.stop;
     o.message = *run.divergence;
+    if (!run.reversals.empty()) o.first_reversal_s = run.reversals.front();
   } else if (run.stop_requested) {
     o.ending = Ending::Interrupted;
   }

@@ -1084,6 +1084,36 @@ simulation: {integrator: rk4, dt: 1.0e-3, duration: 10}
   EXPECT_FALSE(fs::exists(dir / "x.csv"));
 }
 
+// A run that stops says what it had found by then and the --duration that ends it before the
+// stop: the printed mesh body spun at −6 rad/s without drag reverses, then rocks past its fitted
+// bottom and stops (a maker's first hour: it had said only "No telemetry written"). The duration
+// given runs to its end, and its first reversal is the one the stopped run named.
+TEST(Cli, AStoppedRunSaysWhatItFoundAndTheDurationThatEndsItBefore) {
+  const fs::path dir = emptyDir("stopped-found");
+  const std::string run = "simulate " + scene("printed") + " --spin -6 --set contact.air_drag=0";
+  const Result stopped = rattleback(run + " -o " + (dir / "x.csv").string());
+  ASSERT_EQ(stopped.status, 3) << stopped.err;
+  EXPECT_FALSE(fs::exists(dir / "x.csv"));
+  const std::smatch found = [&] {
+    std::smatch m;
+    std::regex_search(stopped.err, m,
+                      std::regex("No telemetry written; it had reversed at ([0-9.]+) s\\. "
+                                 "--duration ([0-9.]+) ends the run before the stop\n"));
+    return m;
+  }();
+  ASSERT_EQ(found.size(), 3u) << stopped.err;
+  const double reversal = std::stod(found[1]), duration = std::stod(found[2]);
+  EXPECT_LT(reversal, duration);
+  const Result kept =
+      rattleback(run + " --duration " + found[2].str() + " -o " + (dir / "x.csv").string());
+  ASSERT_EQ(kept.status, 0) << kept.err;
+  std::smatch line;
+  ASSERT_TRUE(std::regex_search(kept.out, line, std::regex("first reversal  ([0-9.]+) s")))
+      << kept.out;
+  // The summary prints four decimals, the stopped line six significant digits.
+  EXPECT_NEAR(std::stod(line[1]), reversal, 0.6e-4);
+}
+
 // The same for sweep, sweep merge and bench: --plot's folder was made before the table's place
 // was checked, and left behind empty.
 TEST(Cli, ARefusedSweepOrBenchLeavesNoFolderBehind) {
