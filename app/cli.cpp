@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
+#include <charconv>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -218,7 +219,25 @@ std::string snapshotKeysHelp() {
     out +=
         "  " + std::string(where) + "  " + std::string(k.name) + ": " + std::string(k.help) + "\n";
   }
-  return out;
+  // A pipeline branches on these (docs/commands.md, "rattleback snapshot").
+  return out +
+         "Exit status: 0 every case matches (--update: the goldens written); 1 a case differs or "
+         "has no golden; 2 bad input (the suite, a case's scene, a golden that is not a PNG, an "
+         "option, a report folder that cannot be made); 3 a case's run stopped; 4 the machine "
+         "failed (no OpenGL, a full disk); 130 interrupted (Ctrl-C), 143 terminated\n";
+}
+
+// -j: a pool of 1 … 1024 threads, 0 for all cores (tasks/job_pool.cpp), as sweep checks it.
+CLI::Validator jobsCheck() {
+  return CLI::Validator(
+      [](std::string& value) -> std::string {
+        int jobs = -1;
+        const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), jobs);
+        if (error == std::errc() && end == value.data() + value.size() && jobs >= 0 && jobs <= 1024)
+          return {};
+        return "threads must be 1 … 1024 (0 or none: all cores), not " + value;
+      },
+      "");
 }
 
 void defineSnapshot(CLI::App& c, Cli& cli) {
@@ -229,7 +248,7 @@ void defineSnapshot(CLI::App& c, Cli& cli) {
   c.add_option("--report", s.report,
                "Folder for the HTML report of what differs (default snapshot-report beside the "
                "suite file)");
-  c.add_option("-j,--jobs", s.jobs, "Threads (default: all cores)");
+  c.add_option("-j,--jobs", s.jobs, "Threads (default: all cores)")->check(jobsCheck());
   c.add_flag("-q,--quiet", s.quiet, "No verdicts and no progress bar: the exit status says it");
 }
 

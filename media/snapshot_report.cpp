@@ -146,8 +146,37 @@ std::string reportFolder(const scene::SnapshotSuite& suite, const std::string& g
   return ((here.empty() ? fs::path(".") : here) / "snapshot-report").lexically_normal().string();
 }
 
+namespace {
+
+// Where a report is written before it is moved into `folder`: beside it, named for this process.
+fs::path reportTemporary(const std::string& folder) {
+  const fs::path target = fs::path(folder).lexically_normal();
+  const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  return parent / ("." + target.filename().string() + ".part-" + std::to_string(::getpid()));
+}
+
+}  // namespace
+
 rb::Status checkReportFolder(const std::string& folder) {
   std::error_code ec;
+  // The report is made beside its folder and moved in (writeReport). That place is tried
+  // before any case is drawn (made, then removed with any folder made for it), so that a report
+  // that cannot be written is bad input, not a failed suite told after the drawing.
+  {
+    const fs::path temp = reportTemporary(folder);
+    std::vector<fs::path> missing;  // what making it makes, deepest first
+    for (fs::path up = temp; !up.empty() && up != up.parent_path(); up = up.parent_path()) {
+      if (fs::exists(fs::symlink_status(up, ec))) break;
+      missing.push_back(up);
+    }
+    fs::create_directories(temp, ec);
+    const std::error_code made = ec;
+    for (const fs::path& m : missing)
+      if (fs::is_directory(m, ec) && fs::is_empty(m, ec)) fs::remove(m, ec);
+    if (made)
+      return rb::Status::fail("--report " + folder + ": cannot make the report's folder: " +
+                              made.message() + "; give --report a folder you can write to");
+  }
   if (!fs::exists(folder, ec)) return {};
   if (!fs::is_directory(folder, ec))
     return rb::Status::fail("--report " + folder + ": is a file; give the report a folder");
@@ -161,9 +190,7 @@ rb::Status checkReportFolder(const std::string& folder) {
 rb::Status writeReport(const std::string& folder, const scene::SnapshotSuite& suite,
                        const std::vector<CaseResult>& results) {
   const fs::path target = fs::path(folder).lexically_normal();
-  const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  const fs::path temp =
-      parent / ("." + target.filename().string() + ".part-" + std::to_string(::getpid()));
+  const fs::path temp = reportTemporary(folder);
   std::error_code ec;
   fs::create_directories(temp, ec);
   if (ec) return rb::Status::fail(folder + ": cannot make the report's folder: " + ec.message());

@@ -1084,6 +1084,27 @@ simulation: {integrator: rk4, dt: 1.0e-3, duration: 10}
   EXPECT_FALSE(fs::exists(dir / "x.csv"));
 }
 
+// snapshot's -j is checked as sweep's (a pool of 1 … 1024, 0 for all cores: -1 had been taken),
+// and its help lists every exit status a pipeline branches on, not only 0 and 1.
+TEST(Cli, SnapshotChecksItsJobsAndItsHelpListsEveryExitStatus) {
+  const std::string suite = std::string(RATTLEBACK_SOURCE_DIR) + "/tests/golden/suite.yaml";
+  for (const char* jobs : {"-1", "1025", "two"}) {
+    const Result r = rattleback("snapshot " + suite + " -q -j " + jobs);
+    EXPECT_EQ(r.status, 2) << jobs;
+    EXPECT_NE(
+        r.err.find(std::string("--jobs: threads must be 1 … 1024 (0 or none: all cores), not ") +
+                   jobs),
+        std::string::npos)
+        << r.err;
+  }
+  const Result help = rattleback("snapshot --help");
+  ASSERT_EQ(help.status, 0);
+  for (const char* status :
+       {"0 every case matches", "; 1 a case differs", "; 2 bad input", "; 3 a case's run stopped",
+        "; 4 the machine failed", "130 interrupted"})
+    EXPECT_NE(help.out.find(status), std::string::npos) << status;
+}
+
 // A run that stops says what it had found by then and the --duration that ends it before the
 // stop: the printed mesh body spun at −6 rad/s without drag reverses, then rocks past its fitted
 // bottom and stops (a maker's first hour: it had said only "No telemetry written"). The duration

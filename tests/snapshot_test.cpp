@@ -172,8 +172,23 @@ TEST(Snapshot, ABadSuiteIsOneLineAndWritesNothing) {
   EXPECT_EQ(runIn(dir, "snapshot suite.yaml --report mine-notes", &said), 2);
   EXPECT_NE(said.find("not an earlier snapshot report"), std::string::npos) << said;
   EXPECT_EQ(slurp(dir / "mine-notes/notes.txt"), "mine");
+  // A report that cannot be made is refused before anything is drawn (it had been tried after,
+  // turning a suite's verdict into exit 2, and not tried at all when every case matched).
+  for (const char* report : {"mine-notes/notes.txt/report", "/proc/report"}) {
+    EXPECT_EQ(runIn(dir, std::string("snapshot suite.yaml --update -q --report ") + report, &said),
+              2)
+        << report;
+    EXPECT_NE(said.find(std::string("--report ") + report + ": cannot make the report's folder: "),
+              std::string::npos)
+        << said;
+  }
   EXPECT_FALSE(fs::exists(dir / "goldens"));
   EXPECT_FALSE(fs::exists(dir / "snapshot-report"));
+  // One that can be made is tried, and no folder made for the trial stays.
+  EXPECT_EQ(runIn(dir, "snapshot suite.yaml --update -q --report new/deeper/report", &said), 0)
+      << said;
+  EXPECT_TRUE(fs::exists(dir / "goldens/rest.png"));
+  EXPECT_FALSE(fs::exists(dir / "new"));
 }
 
 // A golden that is not a PNG (what a clone without Git LFS's files holds in its place) is the
