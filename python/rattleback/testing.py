@@ -17,6 +17,9 @@ PathLike = Union[str, os.PathLike]
 
 # What the pytest plugin sets from its options (and what a caller's own arguments override).
 _settings: dict[str, Any] = {"update": False, "failures": "snapshot-failures"}
+# The goldens written in this session, (path, "added" or "changed"): the plugin's summary says
+# them, as `rattleback snapshot --update` does, so that an update left on in CI is seen.
+_written: list[tuple[str, str]] = []
 
 
 def _write(path: Path, array) -> None:
@@ -44,6 +47,7 @@ def assert_image_matches(
     mismatch raises AssertionError naming the new image and the diff image written into
     ``failures`` (default ``snapshot-failures``, or pytest's ``--snapshot-failures``).
     """
+    __tracebackhide__ = True  # pytest shows the caller's line and the message, not this body
     golden = Path(golden_path)
     actual = _array(image)
     tol, frac, side = _defaults(tolerance, pixels, square)
@@ -62,9 +66,17 @@ def assert_image_matches(
     if updating or (result is not None and result.same):
         if updating and (result is None or not result.same):
             _write(golden, actual)
-        # This golden now holds: the images an earlier failure left for it would mislead.
+            _written.append(
+                (os.fspath(golden), "added" if result is None and unreadable is None else "changed")
+            )
+        # This golden now holds: the images an earlier failure left for it would mislead, and
+        # a folder they leave empty would too.
         for stale in (new, diff):
             stale.unlink(missing_ok=True)
+        try:
+            folder.rmdir()  # only if empty
+        except OSError:
+            pass
         return
     _write(new, actual)
     if unreadable is not None:
@@ -105,3 +117,14 @@ def pytest_addoption(parser) -> None:
 def pytest_configure(config) -> None:
     _settings["update"] = bool(config.getoption("snapshot_update"))
     _settings["failures"] = config.getoption("snapshot_failures")
+
+
+def pytest_terminal_summary(terminalreporter) -> None:
+    if not _written:
+        return
+    counts = {kind: sum(1 for _, k in _written if k == kind) for kind in ("changed", "added")}
+    said = ", ".join(f"{n} {kind}" for kind, n in counts.items() if n)
+    terminalreporter.section("rattleback snapshot --snapshot-update")
+    terminalreporter.write_line(f"goldens written: {said}")
+    for path, kind in _written:
+        terminalreporter.write_line(f"  {kind:<8} {path}")

@@ -101,6 +101,7 @@ def test_a_passing_golden_clears_what_its_earlier_failure_left(tmp_path, picture
     assert (failures / "rest-new.png").is_file() and (failures / "rest-diff.png").is_file()
     assert_image_matches(picture, golden, failures=failures)
     assert not (failures / "rest-new.png").exists() and not (failures / "rest-diff.png").exists()
+    assert not failures.exists()  # nor the folder they left empty
 
 
 def test_a_golden_that_is_not_a_png_is_said_and_update_replaces_it(tmp_path, picture):
@@ -144,11 +145,25 @@ def test_the_pytest_plugin_writes_goldens_with_snapshot_update(tmp_path):
     first = subprocess.run(run, cwd=tmp_path, capture_output=True, text=True)
     assert first.returncode == 1, first.stdout
     assert "snapshot-failures/rest-new.png" in first.stdout
+    # The failure shows the test's line and the message, not the body of assert_image_matches.
+    assert "updating = update if update" not in first.stdout, first.stdout
     update = subprocess.run(run + ["--snapshot-update"], cwd=tmp_path, capture_output=True, text=True)
     assert update.returncode == 0, update.stdout
     assert (tmp_path / "goldens" / "rest.png").is_file()
+    # What an update wrote is said, as `rattleback snapshot --update` says it: an update left on
+    # in CI passes every test, and had said nothing.
+    assert "goldens written: 1 added" in update.stdout, update.stdout
+    assert "added    goldens/rest.png" in update.stdout, update.stdout
     again = subprocess.run(run, cwd=tmp_path, capture_output=True, text=True)
     assert again.returncode == 0, again.stdout
+    assert not (tmp_path / "snapshot-failures").exists()
+    rb.still(scene_path("rattleback.yaml"), 0.5, size=(320, 180), spin=-4).save(
+        tmp_path / "goldens" / "rest.png"
+    )
+    changed = subprocess.run(run + ["--snapshot-update"], cwd=tmp_path, capture_output=True, text=True)
+    assert "goldens written: 1 changed" in changed.stdout, changed.stdout
+    unchanged = subprocess.run(run + ["--snapshot-update"], cwd=tmp_path, capture_output=True, text=True)
+    assert unchanged.returncode == 0 and "goldens written" not in unchanged.stdout, unchanged.stdout
 
 
 def test_a_still_at_the_reversal_is_at_the_runs_first_reversal():
