@@ -169,6 +169,7 @@ struct SnapshotArgs {
   std::string report;   ///< the failure report's folder; empty: snapshot-report beside the file
   int jobs = 0;         ///< threads; 0: all cores
   bool quiet = false;
+  std::string junit;  ///< JUnit XML of every case's verdict, for a CI's test view; empty: none
 };
 /// Draws each case of a snapshot suite and compares it with its golden: exit 0 all match, 1 any
 /// differs or has no golden (a report written), 2 a bad suite, 3 a run stopped, 4 the machine.

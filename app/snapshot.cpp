@@ -14,8 +14,10 @@
 #include "app/progress.hpp"
 #include "media/snapshot_report.hpp"
 #include "tasks/output.hpp"
+#include "tasks/report/html.hpp"
 #include "util/arguments.hpp"
 #include "util/format.hpp"
+#include "util/output_place.hpp"
 
 namespace app {
 namespace {
@@ -144,6 +146,69 @@ int update(const scene::SnapshotSuite& suite, const std::vector<CaseResult>& res
   return kOk;
 }
 
+// Text for XML: escaped, and without the control characters XML 1.0 cannot hold.
+std::string xmlText(const std::string& text) {
+  std::string kept;
+  for (const char c : text)
+    if (static_cast<unsigned char>(c) >= 0x20 || c == '\t' || c == '\n') kept += c;
+  return tasks::report::escape(kept);
+}
+
+// --junit: every case as a JUnit test case (the schema GitLab, Jenkins and pytest's --junitxml
+// share): a golden that differs or is missing is a failure, one that cannot be read or a case
+// that could not be drawn an error, each with the words the terminal gives it; after --update
+// every case passes, its golden added, changed or unchanged in its output.
+rb::Status writeJunit(const std::string& path, const scene::SnapshotSuite& suite,
+                      const std::vector<CaseResult>& results, bool updated,
+                      const std::string& report) {
+  std::string cases;
+  int failures = 0, errors = 0;
+  const std::string name = xmlText(fs::path(suite.file).stem().string());
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const CaseResult& r = results[i];
+    const scene::SnapshotCase& c = suite.cases[i];
+    // The case's place, "suite.yaml:7", as the file and line attributes CI views link to.
+    const std::size_t colon = c.place.rfind(':');
+    cases +=
+        "    <testcase classname=\"" + name + "\" name=\"" + xmlText(c.name) + "\" file=\"" +
+        xmlText(c.place.substr(0, colon)) + "\"" +
+        (colon == std::string::npos ? "" : " line=\"" + xmlText(c.place.substr(colon + 1)) + "\"");
+    std::string inner;
+    if (r.status == CaseStatus::Failed || r.status == CaseStatus::Unreadable) {
+      ++errors;
+      inner = "<error message=\"" + xmlText(r.error ? r.error->text() : "not drawn") + "\"/>";
+    } else if (updated) {
+      inner = std::string("<system-out>golden ") +
+              (r.status == CaseStatus::Missing   ? "added"
+               : r.status == CaseStatus::Differs ? "changed"
+                                                 : "unchanged") +
+              ": " + xmlText(r.golden) + "</system-out>";
+    } else if (r.status != CaseStatus::Same) {
+      ++failures;
+      const std::string what = r.status == CaseStatus::Missing
+                                   ? r.golden + " does not exist: rattleback snapshot " +
+                                         suite.file + " --update writes it"
+                                   : "differs: " + figures(r, c.tolerance) + otherRasteriser(r);
+      inner = "<failure type=\"" +
+              std::string(r.status == CaseStatus::Missing ? "missing" : "differs") +
+              "\" message=\"" + xmlText(what) +
+              "\">report: " + xmlText((fs::path(report) / "index.html").string()) + "#" +
+              xmlText(c.name) + "</failure>";
+    }
+    cases += inner.empty() ? "/>\n" : ">" + inner + "</testcase>\n";
+  }
+  const std::string counts = " tests=\"" + std::to_string(results.size()) + "\" failures=\"" +
+                             std::to_string(failures) + "\" errors=\"" + std::to_string(errors) +
+                             "\"";
+  if (auto made = tasks::makeParentFolder(path); !made) return made;
+  auto out = tasks::AtomicOutput::open(path);
+  if (!out) return out.error();
+  out->stream() << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites" << counts
+                << ">\n  <testsuite name=\"" << name << "\"" << counts << ">\n"
+                << cases << "  </testsuite>\n</testsuites>\n";
+  return out->commit();
+}
+
 }  // namespace
 
 namespace {
@@ -198,6 +263,12 @@ int snapshotCommand(const SnapshotArgs& args) {
   if (!suite) return fail(suite);
   const std::string report = media::reportFolder(suite.value(), args.report);
   if (auto ok = media::checkReportFolder(report); !ok) return fail(ok);
+  if (!args.junit.empty()) {
+    const rb::OutputNamedBy naming("--junit");
+    if (auto ok = rb::checkDataOutput(args.junit, "JUnit XML", ".xml", {args.file}); !ok)
+      return fail(ok);
+    if (auto ok = rb::checkExtension(args.junit, ".xml", "JUnit XML", false); !ok) return fail(ok);
+  }
   auto scenes = media::loadCases(suite.value());
   if (!scenes) return fail(scenes);
   Progress progress("snapshot", static_cast<std::int64_t>(suite->cases.size()), !args.quiet);
@@ -221,7 +292,15 @@ int snapshotCommand(const SnapshotArgs& args) {
     tell(Tone::Error, args.file + ": interrupted; nothing written");
     return interruptedStatus();
   }
-  if (const int failed = sayFailed(suite.value(), results); failed != kOk) return failed;
+  const int failed = sayFailed(suite.value(), results);
+  if (!args.junit.empty()) {
+    const rb::OutputNamedBy naming("--junit");
+    if (auto e =
+            writeJunit(args.junit, suite.value(), results, args.update && failed == kOk, report);
+        !e)
+      return fail(e);
+  }
+  if (failed != kOk) return failed;
   const int status = args.update ? update(suite.value(), results, report, args.quiet)
                                  : verdicts(suite.value(), results, report, args.quiet);
   if (!args.quiet) sayStrayGoldens(suite.value());

@@ -29,6 +29,17 @@ def _write(path: Path, array) -> None:
     _draw.write_png(os.fspath(path), array)  # (a temporary file renamed into place)
 
 
+def _clear_failure(new: Path, diff: Path) -> None:
+    """A golden that holds again: the images an earlier failure left for it would mislead, and
+    a folder they leave empty would too."""
+    for stale in (new, diff):
+        stale.unlink(missing_ok=True)
+    try:
+        new.parent.rmdir()  # only if empty
+    except OSError:
+        pass
+
+
 def assert_image_matches(
     image: ImageLike,
     golden_path: PathLike,
@@ -69,14 +80,7 @@ def assert_image_matches(
             _written.append(
                 (os.fspath(golden), "added" if result is None and unreadable is None else "changed")
             )
-        # This golden now holds: the images an earlier failure left for it would mislead, and
-        # a folder they leave empty would too.
-        for stale in (new, diff):
-            stale.unlink(missing_ok=True)
-        try:
-            folder.rmdir()  # only if empty
-        except OSError:
-            pass
+        _clear_failure(new, diff)
         return
     _write(new, actual)
     if unreadable is not None:

@@ -190,3 +190,41 @@ def test_a_titled_still_does_not_depend_on_the_scene_files_name(tmp_path):
         rb.still(tmp_path / "one.yaml", 0.5, size=SIZE).array,
         rb.still(tmp_path / "sub" / "other-name.yaml", 0.5, size=SIZE).array,
     )
+
+
+def test_the_command_lines_junit_says_each_cases_verdict_as_the_terminal_does(tmp_path):
+    """`rattleback snapshot --junit FILE` writes JUnit XML (what a CI's test view reads): a
+    missing golden and one that differs are failures whose messages are the terminal's words;
+    after --update every case passes, saying what its golden became."""
+    import shutil
+    import xml.etree.ElementTree as ET
+
+    (tmp_path / "suite.yaml").write_text(
+        f"size: 160x90\ncases:\n  - {{name: rest, scene: {scene_path('rattleback.yaml')}}}\n"
+        f"  - {{name: later, scene: {scene_path('rattleback.yaml')}, t: 1}}\n"
+    )
+    cli("snapshot", "suite.yaml", "--update", "-q", cwd=tmp_path)
+    shutil.copy(tmp_path / "goldens" / "rest.png", tmp_path / "goldens" / "later.png")
+    (tmp_path / "goldens" / "rest.png").unlink()
+    run = cli("snapshot", "suite.yaml", "--junit", "out/j.xml", cwd=tmp_path, check=False)
+    assert run.returncode == 1, run.stderr
+    root = ET.parse(tmp_path / "out" / "j.xml").getroot()
+    assert root.tag == "testsuites" and root.attrib["tests"] == "2" and root.attrib["failures"] == "2"
+    cases = {c.attrib["name"]: c for c in root.iter("testcase")}
+    assert set(cases) == {"rest", "later"}
+    assert cases["rest"].attrib["file"] == "suite.yaml" and cases["rest"].attrib["line"] == "3"
+    missing, differs = cases["rest"].find("failure"), cases["later"].find("failure")
+    assert missing.attrib["type"] == "missing" and "--update writes it" in missing.attrib["message"]
+    said = next(line for line in run.stdout.splitlines() if line.startswith("DIFFERS  later  "))
+    assert differs.attrib["message"] == "differs: " + said.removeprefix("DIFFERS  later  ")
+    assert differs.text == "report: snapshot-report/index.html#later"
+
+    cli("snapshot", "suite.yaml", "--update", "-q", "--junit", "out/j.xml", cwd=tmp_path)
+    root = ET.parse(tmp_path / "out" / "j.xml").getroot()
+    assert root.attrib["failures"] == "0" and root.attrib["errors"] == "0"
+    out = {c.attrib["name"]: c.find("system-out").text for c in root.iter("testcase")}
+    assert out == {"rest": "golden added: goldens/rest.png", "later": "golden changed: goldens/later.png"}
+
+    refused = cli("snapshot", "suite.yaml", "--junit", "j.png", cwd=tmp_path, check=False)
+    assert refused.returncode == 2 and "--junit j.png: writes JUnit XML" in refused.stderr
+    assert not (tmp_path / "j.png").exists()
