@@ -237,10 +237,13 @@ void printInertia(std::FILE* out, const tasks::Analysis& a) {
   for (int i = 0; i < 3; ++i)
     std::fprintf(out, "                 [% .6f  % .6f  % .6f]\n", a.axes(i, 0), a.axes(i, 1),
                  a.axes(i, 2));
+  // The sign's convention said with the way itself: "-8.27 deg (… counter-clockwise …)" had
+  // read as a contradiction.
   std::fprintf(out,
-               "misalignment     %+.4f deg (least-inertia axis from the bottom's long axis, "
-               "counter-clockwise seen from above)\n",
-               a.misalignment_deg);
+               "misalignment     %+.4f deg (the least-inertia axis is %.4f deg %s of the "
+               "bottom's long axis, seen from above; + is counter-clockwise)\n",
+               a.misalignment_deg, std::abs(a.misalignment_deg),
+               a.misalignment_deg < 0 ? "clockwise" : "counter-clockwise");
 }
 
 void printContact(std::FILE* out, const tasks::Analysis& a) {

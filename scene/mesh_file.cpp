@@ -164,6 +164,18 @@ rb::Result<sim::TriangleMesh> parseStl(std::string_view bytes, std::string_view 
   }
   if (bytes.substr(0, 5) == "solid" && bytes.find("facet") != std::string_view::npos)
     return StlText(bytes, name).parse();
+  // Text throughout its start (no byte below a space but tab and line ends; a binary STL's count
+  // and coordinates have them within their first triangles): a notes file, or an ASCII STL that
+  // lists no triangles, is said to be text rather than measured as a binary one.
+  const std::string_view start = bytes.substr(0, 4096);
+  const bool text = std::all_of(start.begin(), start.end(), [](char c) {
+    return static_cast<unsigned char>(c) >= 0x20 || c == '\t' || c == '\n' || c == '\r';
+  });
+  if (text && !bytes.empty())
+    return fileError(name, bytes.substr(0, 5) == "solid"
+                               ? "is an ASCII STL with no triangles (no 'facet'): export it again"
+                               : "is text, not an STL (an ASCII STL begins with 'solid' and lists "
+                                 "each triangle as 'facet … endfacet'): is it an STL file?");
   if (bytes.size() < 84)
     return fileError(name, "is " + std::to_string(bytes.size()) +
                                " bytes, too short for a binary STL (84 at least) and not an "

@@ -1315,6 +1315,25 @@ TEST(Cli, AnalyzeAtASlowSpinSaysThePreferredDirectionAtAFasterOne) {
       << usual.out;
 }
 
+// The misalignment's line names the way it turns, so that a negative angle does not sit beside
+// "counter-clockwise" (a maker read "-8.27 deg (…, counter-clockwise seen from above)" as a
+// contradiction): the default body's dents mirrored turn the axis the other way.
+TEST(Cli, AnalyzeNamesTheWayTheMisalignmentTurns) {
+  const Result usual = rattleback("analyze " + scene("rattleback"));
+  const Result mirrored =
+      rattleback("analyze " + scene("rattleback") + " --set 'body.dents.at=[0.73, -4.5]'");
+  ASSERT_EQ(usual.status, 0) << usual.err;
+  ASSERT_EQ(mirrored.status, 0) << mirrored.err;
+  EXPECT_NE(usual.out.find("misalignment     +2.2193 deg (the least-inertia axis is 2.2193 deg "
+                           "counter-clockwise of the bottom's long axis"),
+            std::string::npos)
+      << usual.out;
+  EXPECT_NE(mirrored.out.find("misalignment     -2.2193 deg (the least-inertia axis is 2.2193 deg "
+                              "clockwise of the bottom's long axis"),
+            std::string::npos)
+      << mirrored.out;
+}
+
 TEST(Cli, VersionQuietAndVerbose) {
   const Result version = rattleback("--version");
   EXPECT_EQ(version.status, 0);

@@ -125,6 +125,22 @@ TEST(MeshFile, AsciiStlFaultsNameTheirLine) {
   EXPECT_NE(errorOf("hello", scene::MeshFormat::Stl).find("is it an STL file?"), std::string::npos);
 }
 
+// A text file named .stl is said to be text (it had been measured as a binary STL: "a binary STL
+// of 1634692206 triangles is 81734610384 bytes, but the file has 1180"); a binary STL whose
+// header is text is still read as one.
+TEST(MeshFile, ATextFileIsSaidToBeTextNotATruncatedBinaryStl) {
+  const std::string notes(1180, 'x');
+  EXPECT_NE(errorOf("My rattleback\n" + notes + "\n", scene::MeshFormat::Stl)
+                .find("is text, not an STL (an ASCII STL begins with 'solid'"),
+            std::string::npos);
+  EXPECT_NE(errorOf("solid empty\nendsolid empty\n" + notes, scene::MeshFormat::Stl)
+                .find("is an ASCII STL with no triangles"),
+            std::string::npos);
+  std::string binary = binaryStl(box(10, 4, 2));
+  binary.replace(0, 20, "solid exported by us");  // a header of text, as many exporters write
+  EXPECT_EQ(parsed(binary, scene::MeshFormat::Stl).faces.size(), 12u);
+}
+
 TEST(MeshFile, FilesThatCannotBeReadAreNamed) {
   auto missing = scene::readMesh("/nonexistent/toy.stl");
   ASSERT_FALSE(missing);
