@@ -187,9 +187,9 @@ const std::vector<Key>& table() {
       {.path = "body.mesh.file",
        .field = FIELD(spec.body.mesh.file),
        .need = Need::Always,
-       .unit = "its numbers in file units",
-       .doc = "the mesh file, STL (binary or ASCII) or OBJ, relative to the scene file; uniform "
-              "density unless `center_of_mass` and `inertia` are given",
+       .doc = "the mesh file, STL (binary or ASCII) or OBJ, relative to the scene file, its "
+              "numbers in file units; uniform density unless `center_of_mass` and `inertia` are "
+              "given",
        .check = "closed, wound outwards (refused inside out), no faces of zero area, 5 mm … 2 m "
                 "long in metres (§P11.2)",
        .sample = "meshes/box.obj"},

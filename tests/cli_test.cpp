@@ -2082,6 +2082,8 @@ TEST(Plot, SweepAxesAreLabelledWithTheirUnits) {
   EXPECT_EQ(app::sweepLabel("body.paraboloid.a", 1), "body.paraboloid.a [m]");
   EXPECT_EQ(app::sweepLabel("body.paraboloid.a", 0.002), "body.paraboloid.a [0.002 m]");
   EXPECT_EQ(app::sweepLabel("initial.spin", 0.01), "initial.spin [rad/s]");
+  // A mesh file swept is a name: no unit (its key's had read "[its numbers in file units]").
+  EXPECT_EQ(app::sweepLabel("body.mesh.file", 0.001), "body.mesh.file");
 }
 
 // An axis of one value (a parameter held fixed, as air drag 0 here) is not a side of the picture:
