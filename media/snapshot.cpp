@@ -19,6 +19,9 @@ tasks::Overrides overridesOf(const scene::SnapshotCase& c) {
     // (the text of a size as typed, which its messages quote)
     o.given[tasks::SceneOption::Size].name =
         std::to_string((*c.size)[0]) + "x" + std::to_string((*c.size)[1]);
+    // Given at the suite's top, it is every case's: named there, so that it is said once.
+    if (!c.top_size_place.empty())
+      o.given[tasks::SceneOption::Size].prefix = c.top_size_place + ": ";
   }
   return o;
 }

@@ -212,6 +212,7 @@ SnapshotCase readCase(const YAML::Node& node, const SnapshotCase& defaults, int 
   readMap(node, W::Case, line, prefix,
           [&](const SnapshotKey& k, const YAML::Node& v, int at, const std::string& key) {
             putValue(k, v, at, key, c);
+            if (k.kind == K::Size) c.top_size_place.clear();  // its own
           });
   for (const char* needed : {"name", "scene"})
     if (!node[needed])
@@ -237,6 +238,7 @@ SnapshotSuite readSuite(const YAML::Node& root, const std::string& path) {
               cases_line = at;
             }
             if (k.where == W::Both) putValue(k, v, at, key, defaults);
+            if (k.kind == K::Size) defaults.top_size_place = path + ":" + std::to_string(at);
           });
   if (!cases || !cases.IsSequence() || cases.size() == 0)
     throw Bad{cases_line, "cases",

@@ -59,6 +59,9 @@ struct SnapshotCase {
   std::string t_text = "0";  ///< as written
   std::optional<render::View> view;
   std::optional<std::array<int, 2>> size;
+  /// "suite.yaml:1" where the suite's top gave `size` to every case; empty where the case gives
+  /// its own (or none is given).
+  std::string top_size_place;
   /// Not given: the runner's default ($RATTLEBACK_BACKEND for the command line, else auto).
   std::optional<render::Backend> backend;
   std::optional<std::string> title;  ///< the frame's title; default the case's name

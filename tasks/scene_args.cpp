@@ -100,7 +100,7 @@ rb::Result<LoadedScene> applyOverrides(scene::Loaded scene, const Overrides& o) 
   for (const auto& [option, value] : o.given) {
     const SceneOptionRow& row = rowOf(option);
     row.apply(scene, value);
-    scene.overrides[row.key] = o.option_prefix + row.name;
+    scene.overrides[row.key] = (value.prefix.empty() ? o.option_prefix : value.prefix) + row.name;
   }
   auto compiled = scene::loadModel(scene);
   if (!compiled) return compiled.error();

@@ -61,6 +61,9 @@ struct OptionValue {
   double number = 0;
   std::string name;
   std::array<int, 2> size{};
+  /// Where messages say it was given, in place of Overrides::option_prefix ("" for that): a
+  /// snapshot suite's top-level size is every case's, and is named at its own line.
+  std::string prefix;
 };
 
 struct Overrides {

@@ -191,6 +191,25 @@ TEST(Snapshot, ABadSuiteIsOneLineAndWritesNothing) {
   EXPECT_FALSE(fs::exists(dir / "new"));
 }
 
+// A size the suite's top gives every case is named at its own line, once (it had been blamed on
+// the first case, then "the same for 3 more cases"); a case's own size is named with the case.
+TEST(Snapshot, AnOddSizeIsNamedWhereItIsGiven) {
+  const fs::path dir = folder("odd-size");
+  put(dir / "mine.yaml", slurp(kSource / "scenes/rattleback.yaml"));
+  std::string suite = suiteOf("mine.yaml", "goldens");
+  suite.replace(suite.find("size: 320x180"), 13, "size: 321x180");  // line 2
+  put(dir / "suite.yaml", suite);
+  std::string said;
+  EXPECT_EQ(runIn(dir, "snapshot suite.yaml -q", &said), 2);
+  EXPECT_EQ(said.rfind("suite.yaml:2: size: video.size sides must be even", 0), 0u) << said;
+  EXPECT_NE(said.find("not 321x180: try 322x180"), std::string::npos) << said;
+  put(dir / "suite.yaml",
+      suiteOf("mine.yaml", "goldens") + "  - {name: odd, scene: mine.yaml, size: 160x91}\n");
+  EXPECT_EQ(runIn(dir, "snapshot suite.yaml -q", &said), 2);
+  EXPECT_EQ(said.rfind("suite.yaml:7: odd: size: video.size sides must be even", 0), 0u) << said;
+  EXPECT_FALSE(fs::exists(dir / "goldens"));
+}
+
 // A golden that is not a PNG (what a clone without Git LFS's files holds in its place) is the
 // input at fault: exit 2, the reason and the way out on standard error, the case in the report.
 // --update replaces it and removes the report that stood for the failure; a golden no case
