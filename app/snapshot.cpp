@@ -174,14 +174,15 @@ rb::Status writeJunit(const std::string& path, const scene::SnapshotSuite& suite
         xmlText(c.place.substr(0, colon)) + "\"" +
         (colon == std::string::npos ? "" : " line=\"" + xmlText(c.place.substr(colon + 1)) + "\"");
     std::string inner;
-    if (r.status == CaseStatus::Failed || r.status == CaseStatus::Unreadable) {
+    if (r.status == CaseStatus::Failed || (r.status == CaseStatus::Unreadable && !updated)) {
       ++errors;
       inner = "<error message=\"" + xmlText(r.error ? r.error->text() : "not drawn") + "\"/>";
-    } else if (updated) {
+    } else if (updated) {  // as update() says each (a golden that was not a PNG is replaced)
       inner = std::string("<system-out>golden ") +
-              (r.status == CaseStatus::Missing   ? "added"
-               : r.status == CaseStatus::Differs ? "changed"
-                                                 : "unchanged") +
+              (r.status == CaseStatus::Missing      ? "added"
+               : r.status == CaseStatus::Differs    ? "changed"
+               : r.status == CaseStatus::Unreadable ? "replaced"
+                                                    : "unchanged") +
               ": " + xmlText(r.golden) + "</system-out>";
     } else if (r.status != CaseStatus::Same) {
       ++failures;

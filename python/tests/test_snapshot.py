@@ -224,6 +224,18 @@ def test_the_command_lines_junit_says_each_cases_verdict_as_the_terminal_does(tm
     assert root.attrib["failures"] == "0" and root.attrib["errors"] == "0"
     out = {c.attrib["name"]: c.find("system-out").text for c in root.iter("testcase")}
     assert out == {"rest": "golden added: goldens/rest.png", "later": "golden changed: goldens/later.png"}
+    # A golden that is not a PNG is an error of the check, and replaced by --update.
+    (tmp_path / "goldens" / "rest.png").write_text("version https://git-lfs.github.com/spec/v1\n")
+    run = cli("snapshot", "suite.yaml", "-q", "--junit", "out/j.xml", cwd=tmp_path, check=False)
+    assert run.returncode == 2
+    error = ET.parse(tmp_path / "out" / "j.xml").getroot().find("testsuite/testcase[@name='rest']/error")
+    assert "a Git LFS pointer, not the image" in error.attrib["message"]
+    cli("snapshot", "suite.yaml", "--update", "-q", "--junit", "out/j.xml", cwd=tmp_path)
+    root = ET.parse(tmp_path / "out" / "j.xml").getroot()
+    assert root.attrib["errors"] == "0"
+    assert (
+        root.find("testsuite/testcase[@name='rest']/system-out").text == "golden replaced: goldens/rest.png"
+    )
 
     refused = cli("snapshot", "suite.yaml", "--junit", "j.png", cwd=tmp_path, check=False)
     assert refused.returncode == 2 and "--junit j.png: writes JUnit XML" in refused.stderr
