@@ -388,7 +388,7 @@ CLAIMS = [
     (
         "docs/python.md",
         "print(pool.map(first_reversal, scenes)) # [«2.36647597263203», «2.652851022573632», "
-        "«3.137297507537893»]",
+        "«3.1372975075378924»]",
         [
             lambda r, spin=spin: float(
                 r.row("spin-drag", initial__spin=spin, contact__air_drag=5.9e-6)["first_reversal_s"]

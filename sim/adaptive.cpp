@@ -113,6 +113,10 @@ struct Free {
     return s;
   }
 
+  static double spin(const Model& model, const Vector& y, const Scales& k) {
+    return angularVelocity(model, unpack(model, y, k, 0)).z();
+  }
+
   static void rates(const Model& model, const Vector& y, Vector& dydt, const Scales& k, double t) {
     State s = unpack(model, y, k, t);
     // The integrator keeps |q| = 1 only to its tolerance; the rates must not depend on that
@@ -162,6 +166,17 @@ struct Rolling {
     return s;
   }
 
+  // n = ω·ẑ = (Rᵀ ẑ)·ω_body, with R's bottom row from q as integrated over |q|² (unpack's
+  // state gives the same to rounding: q normalised, L formed and turned back).
+  static double spin(const Model&, const Vector& y, const Scales& k) {
+    const double w = y[5], x = y[2], yq = y[3], z = y[4];
+    const double ww = w * w, xx = x * x, yy = yq * yq, zz = z * z;
+    const double along_w = 2 * (x * z - w * yq) * y[6] * k.spin_inverse[0] +
+                           2 * (yq * z + w * x) * y[7] * k.spin_inverse[1] +
+                           (ww + zz - xx - yy) * y[8] * k.spin_inverse[2];
+    return along_w / (ww + xx + yy + zz);
+  }
+
   static void rates(const Model& model, const Vector& y, Vector& dydt, const Scales& k, double) {
     // q as integrated: rollingRates takes its direction (normalising it first had put a square
     // root and a division at the head of every evaluation's chain).
@@ -183,6 +198,7 @@ struct AdaptiveStepper::Impl {
   virtual ~Impl() = default;
   virtual State step(std::int64_t step_index) = 0;
   virtual State at(double t) const = 0;
+  virtual double spinAt(double t) const = 0;
   virtual bool keepsRolling() const = 0;
   virtual std::unique_ptr<Impl> clone() const = 0;
   virtual std::int64_t evaluationCount() const { return evaluations; }
@@ -231,6 +247,11 @@ class Integration final : public AdaptiveStepper::Impl {
     Vector y;
     dense_.calc_state(t / scales_.time, y);
     return Layout::unpack(model_, y, scales_, t);
+  }
+  double spinAt(double t) const override {
+    Vector y;
+    dense_.calc_state(t / scales_.time, y);
+    return Layout::spin(model_, y, scales_);
   }
 
  private:
@@ -286,6 +307,11 @@ class Integration853 final : public AdaptiveStepper::Impl {
     dop_.at(rates(), t / scales_.time, y);
     return Layout::unpack(model_, y, scales_, t);
   }
+  double spinAt(double t) const override {
+    Vector y;
+    dop_.at(rates(), t / scales_.time, y);
+    return Layout::spin(model_, y, scales_);
+  }
 
   std::int64_t evaluationCount() const override { return dop_.evaluations(); }
   std::int64_t rejected(std::int64_t) const override { return dop_.rejected(); }
@@ -330,6 +356,10 @@ State AdaptiveStepper::step(std::int64_t step_index) {
 
 State AdaptiveStepper::at(double t) const {
   return impl_->at(t);
+}
+
+double AdaptiveStepper::spinAt(double t) const {
+  return impl_->spinAt(t);
 }
 
 std::int64_t AdaptiveStepper::evaluations() const {

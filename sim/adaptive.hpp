@@ -31,6 +31,8 @@ class AdaptiveStepper {
   State step(std::int64_t step_index);
   /// The dense output inside the last step, t within it.
   State at(double t) const;
+  /// The spin n = ω·ẑ (rad/s) of at(t)'s state, formed from the integrated variables alone.
+  double spinAt(double t) const;
   std::int64_t evaluations() const;
   /// Whether the states it hands out are on the rolling constraint already (its model rolls:
   /// step() and at() put them there).

@@ -236,9 +236,8 @@ void Rollout::watch(const Eigen::Matrix3d& R, const Eigen::Vector3d& w) {
 void Rollout::locateReversal(double previous_spin, double spin) {
   const double t_a = steps_.previous().t, t_b = steps_.current().t;
   const bool at_end = t_b >= model_.duration * (1 - kSameTime);
-  reversals_.step(t_a, previous_spin, t_b, spin, watchdog_.lastFlight(), at_end, [&](double t) {
-    return angularVelocity(model_, steps_.interpolated(t, active_)).z();
-  });
+  reversals_.step(t_a, previous_spin, t_b, spin, watchdog_.lastFlight(), at_end,
+                  [&](double t) { return steps_.spinAt(t, active_); });
   if (reversals_.reversals().size() > summary_.reversals.size()) {
     summary_.reversals = reversals_.reversals();
     if (!summary_.first_reversal_s) summary_.first_reversal_s = summary_.reversals.front();

@@ -61,7 +61,7 @@ State StepInterpolant::at(double t, const Model& active, const State& a, const S
   // Before a cut inside the last step: the old mode's own step, from its start to where it
   // ended before the cut (interpolating across the cut, from a rolling state to a sliding one,
   // made the samples' energy dip and recover).
-  if (a.t < cut_s_ && t < cut_s_ && !sameTime(t, cut_s_))
+  if (beforeCut(a, t))
     return hermite(a, ratesOf(before_, a), before_end_, ratesOf(before_, before_end_), t);
   if (dense && !dense_lost_) {
     if (on_constraint) *on_constraint = dense->keepsRolling();
@@ -73,6 +73,12 @@ State StepInterpolant::at(double t, const Model& active, const State& a, const S
     have_rates_ = true;
   }
   return hermite(a, rates_a_, b, rates_b_, t);
+}
+
+double StepInterpolant::spinAt(double t, const Model& active, const State& a, const State& b,
+                               const AdaptiveStepper* dense) const {
+  if (dense && !dense_lost_ && !beforeCut(a, t)) return dense->spinAt(t);
+  return angularVelocity(active, at(t, active, a, b, dense)).z();
 }
 
 }  // namespace sim

@@ -56,8 +56,18 @@ class StepInterpolant {
   /// stepper). Neither renormalised nor put on a constraint otherwise.
   State at(double t, const Model& active, const State& a, const State& b,
            const AdaptiveStepper* dense, bool* on_constraint = nullptr) const;
+  /// The spin n = ω·ẑ (rad/s) of at()'s state at time t: from the adaptive stepper's dense
+  /// output without forming the whole state where at() would read it (the reversal rule reads
+  /// n up to 8 times a step while a crossing is pending: a state each had been 8 % of a
+  /// rolling run), else from at()'s state.
+  double spinAt(double t, const Model& active, const State& a, const State& b,
+                const AdaptiveStepper* dense) const;
 
  private:
+  /// Whether time t of the last step (from a) falls before a cut inside it.
+  bool beforeCut(const State& a, double t) const {
+    return a.t < cut_s_ && t < cut_s_ && !sameTime(t, cut_s_);
+  }
   /// Rates at the ends of the last step, packed as the state; computed when first needed.
   mutable bool have_rates_ = false;
   mutable Rates rates_a_{}, rates_b_{};

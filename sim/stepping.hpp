@@ -61,11 +61,10 @@ class Stepping {
   /// a cubic Hermite interpolant (sim/step_interpolant.hpp), with the quaternion renormalised
   /// and, under rolling, the state put back on the constraint.
   State stateAt(double t, const Model& active) const;
-  /// The interpolant's state at time t (s) within the last step, integrated in `active`, as
-  /// StepInterpolant::at gives it: neither renormalised nor put on a constraint (what the reversal
-  /// rule reads n from between the ends).
-  State interpolated(double t, const Model& active) const {
-    return last_step_.at(t, active, previous_, current_, adaptive_.get());
+  /// The spin n = ω·ẑ (rad/s) at time t (s) within the last step, integrated in `active`, on
+  /// the interpolant (StepInterpolant::spinAt): what the reversal rule reads between the ends.
+  double spinAt(double t, const Model& active) const {
+    return last_step_.spinAt(t, active, previous_, current_, adaptive_.get());
   }
   /// The contact model the last step was integrated in at time t (s): `active`, or the model
   /// before a cut for times before it.

@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
+#include "sim/adaptive.hpp"
 #include "support.hpp"
 
 using namespace testing_support;
@@ -101,4 +103,43 @@ TEST(StepInterpolant, ACutStepIsReadFromTheOldModeBeforeTheCut) {
   EXPECT_EQ(last.modeAt(a.t + 0.015, after).contact.model, sim::ContactModel::Points);
   // The cut's own time (to rounding) belongs to the new mode.
   EXPECT_EQ(last.modeAt(a.t + 0.01, after).contact.model, sim::ContactModel::Points);
+}
+
+// The spin the reversal rule reads between a step's ends is formed from the dense output's
+// integrated variables alone (n = (Rᵀẑ)·ω_body over |q|², or from the whole state for a free
+// body): it is the spin of the state at() gives at that time, for each adaptive method and
+// both layouts. Rolling: the default body 1.5 s into its run (tilted and rocking, so every
+// component of Rᵀẑ and ω counts). Free: the falling body in flight. The two ways differ only
+// by rounding (normalising q and turning L there and back): within 1e-12 of |ω|.
+TEST(StepInterpolant, TheSpinBetweenStepEndsIsTheStatesSpin) {
+  sim::Model falling = build(parse(kFalling));
+  falling.tolerance = 1e-8;
+  const sim::State thrown = launched(falling);
+  sim::State spun = thrown;
+  spun.L_world = falling.body->inertia * Eigen::Vector3d(0.7, -1.1, 4.0);
+  for (const sim::Integrator method : {sim::Integrator::Dopri5, sim::Integrator::Dop853}) {
+    sim::Model rolling = rollingModel(true);
+    rolling.integrator = method;
+    falling.integrator = method;
+    for (const auto& [model, start] :
+         {std::pair<const sim::Model*, sim::State>{&rolling, sim::initialState(rolling)},
+          std::pair<const sim::Model*, sim::State>{&falling, spun}}) {
+      sim::AdaptiveStepper stepper(*model, start);
+      sim::State a = start, b = start;
+      const double until = model == &rolling ? 1.5 : 0.01;
+      for (std::int64_t k = 1; b.t < until; ++k) {
+        a = b;
+        b = stepper.step(k);
+      }
+      const sim::StepInterpolant last;
+      for (const double part : {0.0, 0.25, 0.5, 0.9}) {
+        const double t = a.t + part * (b.t - a.t);
+        const sim::State s = last.at(t, *model, a, b, &stepper);
+        const Eigen::Vector3d w = sim::angularVelocity(*model, s);
+        ASSERT_GT(std::abs(w.x()) + std::abs(w.y()), 1e-3 * w.norm());  // not spinning upright
+        EXPECT_NEAR(last.spinAt(t, *model, a, b, &stepper), w.z(), 1e-12 * w.norm())
+            << (model == &rolling ? "rolling" : "free") << " at " << part << " of a step";
+      }
+    }
+  }
 }
