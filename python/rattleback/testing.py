@@ -2,12 +2,14 @@
 (``pytest -p rattleback.testing``, or ``pytest_plugins = ["rattleback.testing"]`` in a
 conftest.py) whose ``--snapshot-update`` writes the goldens instead of comparing.
 
-A failure writes the new image and a diff image (differing pixels in magenta) into
-``snapshot-failures/`` (``--snapshot-failures DIR``, or ``failures=``) and names them."""
+A failure writes the new image, a diff image (differing pixels in magenta) and a copy of the
+golden into ``snapshot-failures/`` (``--snapshot-failures DIR``, or ``failures=``) and names
+them."""
 
 from __future__ import annotations
 
 import os
+import shutil
 from pathlib import Path
 from typing import Any, Optional, Union
 
@@ -29,13 +31,13 @@ def _write(path: Path, array) -> None:
     _draw.write_png(os.fspath(path), array)  # (a temporary file renamed into place)
 
 
-def _clear_failure(new: Path, diff: Path) -> None:
+def _clear_failure(*left: Path) -> None:
     """A golden that holds again: the images an earlier failure left for it would mislead, and
     a folder they leave empty would too."""
-    for stale in (new, diff):
+    for stale in left:
         stale.unlink(missing_ok=True)
     try:
-        new.parent.rmdir()  # only if empty
+        left[0].parent.rmdir()  # only if empty
     except OSError:
         pass
 
@@ -55,8 +57,8 @@ def assert_image_matches(
 
     With ``update`` (default: pytest's ``--snapshot-update``) the golden is written when it is
     missing or differs, and left alone when it matches. Otherwise a missing golden or a
-    mismatch raises AssertionError naming the new image and the diff image written into
-    ``failures`` (default ``snapshot-failures``, or pytest's ``--snapshot-failures``).
+    mismatch raises AssertionError naming the new image, the diff image and the golden's copy
+    written into ``failures`` (default ``snapshot-failures``, or pytest's ``--snapshot-failures``).
     """
     __tracebackhide__ = True  # pytest shows the caller's line and the message, not this body
     golden = Path(golden_path)
@@ -66,6 +68,8 @@ def assert_image_matches(
     folder = Path(failures if failures is not None else _settings["failures"])
     new = folder / f"{golden.stem}-new.png"
     diff = folder / f"{golden.stem}-diff.png"
+    # The golden beside them: a CI job's uploaded failures folder then holds all three to look at.
+    was = folder / f"{golden.stem}-golden.png"
     result, unreadable = None, None
     if golden.is_file():
         try:
@@ -80,7 +84,7 @@ def assert_image_matches(
             _written.append(
                 (os.fspath(golden), "added" if result is None and unreadable is None else "changed")
             )
-        _clear_failure(new, diff)
+        _clear_failure(new, diff, was)
         return
     _write(new, actual)
     if unreadable is not None:
@@ -93,13 +97,21 @@ def assert_image_matches(
             f"{golden}: no golden image; the new image is {new} (pytest "
             "--snapshot-update, or update=True, writes it as the golden)"
         )
+    raise AssertionError(_differs(golden, result, tol, actual, expected, new, diff, was))
+
+
+def _differs(golden: Path, result, tol: int, actual, expected, new: Path, diff: Path, was: Path):
+    """A mismatch's message, having written its diff image (where the sizes agree) and the
+    golden's copy beside the new image."""
     message = f"{golden}: differs: {result.describe(tol)}; the new image is {new}"
     if result.same_size:
         from . import _draw
 
         _write(diff, _draw.diff_image(actual, expected, tol))
         message += f", the diff image {diff}"
-    raise AssertionError(message + " (pytest --snapshot-update writes the new one as the golden)")
+    shutil.copyfile(golden, was)
+    message += f", the golden copied as {was}"
+    return message + " (pytest --snapshot-update writes the new one as the golden)"
 
 
 def pytest_addoption(parser) -> None:

@@ -83,6 +83,10 @@ def test_a_mismatch_names_the_diff_image_it_wrote(tmp_path, picture):
         assert_image_matches(changed(picture), golden, failures=failures)
     diff = failures / "rest-diff.png"
     assert f"the diff image {diff}" in str(caught.value)
+    # The golden is copied beside them, as it was (a CI job uploads the folder).
+    copy = failures / "rest-golden.png"
+    assert f"the golden copied as {copy}" in str(caught.value)
+    assert copy.read_bytes() == golden.read_bytes()
     # The diff marks in magenta (255, 0, 255) the pixels that differ, all inside the patch.
     from rattleback import _draw
 
@@ -98,9 +102,10 @@ def test_a_passing_golden_clears_what_its_earlier_failure_left(tmp_path, picture
     failures = tmp_path / "failures"
     with pytest.raises(AssertionError):
         assert_image_matches(changed(picture), golden, failures=failures)
-    assert (failures / "rest-new.png").is_file() and (failures / "rest-diff.png").is_file()
+    left = [failures / f"rest-{what}.png" for what in ("new", "diff", "golden")]
+    assert all(image.is_file() for image in left)
     assert_image_matches(picture, golden, failures=failures)
-    assert not (failures / "rest-new.png").exists() and not (failures / "rest-diff.png").exists()
+    assert not any(image.exists() for image in left)
     assert not failures.exists()  # nor the folder they left empty
 
 
