@@ -1,6 +1,7 @@
 // The step interpolant (sim/step_interpolant.hpp) on scripted step ends, without a Rollout:
-// it hits both ends of a step, it is exact for a motion its cubics contain (free flight), and a
-// step cut by a change of contact model is read from the old mode before the cut.
+// it hits both ends of a step, it is exact for a motion its cubics contain (free flight), a
+// step cut by a change of contact model is read from the old mode before the cut, and the spin
+// read from an adaptive stepper's dense output is its state's.
 #include "sim/step_interpolant.hpp"
 
 #include <gtest/gtest.h>
