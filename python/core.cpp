@@ -17,6 +17,7 @@
 #include "python/convert.hpp"
 #include "python/scene_value.hpp"
 #include "python/simulation.hpp"
+#include "python/suite.hpp"
 #include "scene/keys.hpp"
 #include "tasks/analysis.hpp"
 #include "tasks/check.hpp"
@@ -577,4 +578,5 @@ PYBIND11_MODULE(_core, m) {
   bindRun(m);
   bindSweep(m);
   bindCalls(m);
+  bindSnapshotSuite(m);
 }

@@ -1,6 +1,8 @@
 """Snapshot tests of images in a pytest suite: :func:`assert_image_matches`, and a pytest plugin
 (``pytest -p rattleback.testing``, or ``pytest_plugins = ["rattleback.testing"]`` in a
-conftest.py) whose ``--snapshot-update`` writes the goldens instead of comparing.
+conftest.py) whose ``--snapshot-update`` writes the goldens instead of comparing;
+:func:`suite_cases` and :func:`assert_case_matches` run a ``rattleback snapshot`` suite file's
+cases as pytest tests.
 
 A failure writes the new image, a diff image (differing pixels in magenta) and a copy of the
 golden into ``snapshot-failures/`` (``--snapshot-failures DIR``, or ``failures=``) and names
@@ -10,6 +12,7 @@ from __future__ import annotations
 
 import os
 import shutil
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Optional, Union
 
@@ -112,6 +115,72 @@ def _differs(golden: Path, result, tol: int, actual, expected, new: Path, diff: 
     shutil.copyfile(golden, was)
     message += f", the golden copied as {was}"
     return message + " (pytest --snapshot-update writes the new one as the golden)"
+
+
+@dataclass(frozen=True)
+class SnapshotCase:
+    """One case of a snapshot suite file, as ``rattleback snapshot`` reads it: the scene's path
+    resolved against the suite's folder, the suite's defaults put in. ``str(case)`` is its name
+    (pytest's id for it)."""
+
+    name: str
+    place: str  # "suite.yaml:7", where the case begins
+    scene: str
+    t: Union[float, str]  # s, or "reversal", "first_reversal", "end"
+    view: Optional[str]
+    size: Optional[tuple[int, int]]
+    backend: Optional[str]  # None: $RATTLEBACK_BACKEND, else auto, as the command line
+    title: Optional[str]  # None: the case's name
+    tolerance: int
+    pixels: float
+    square: int
+    golden: Path
+
+    def __str__(self) -> str:
+        return self.name
+
+    def draw(self):
+        """The case's image, drawn as ``rattleback snapshot`` draws it (:func:`rattleback.still`
+        with the case's time, view, size, backend and title)."""
+        import rattleback as rb
+
+        backend = self.backend or os.environ.get("RATTLEBACK_BACKEND") or "auto"
+        return rb.still(
+            self.scene,
+            self.t,
+            view=self.view,
+            size=self.size,
+            backend=backend,
+            title=self.title if self.title is not None else self.name,
+        )
+
+
+def suite_cases(path: PathLike) -> list[SnapshotCase]:
+    """The cases of a snapshot suite file (docs/testing.md), read by the command line's own
+    reader: a mistake in it raises :class:`rattleback.SceneError` naming its line and key. For
+    ``pytest.mark.parametrize("case", suite_cases(...), ids=str)``."""
+    from . import _core
+
+    suite = _core.snapshot_suite(os.fspath(path))
+    goldens = Path(suite["goldens"])
+    return [SnapshotCase(golden=goldens / f"{c['name']}.png", **c) for c in suite["cases"]]
+
+
+def assert_case_matches(
+    case: SnapshotCase, *, update: Optional[bool] = None, failures: Optional[PathLike] = None
+) -> None:
+    """Draws a suite's case and asserts that it matches its golden with the case's tolerances,
+    as :func:`assert_image_matches` does (and ``update``, ``failures`` as there)."""
+    __tracebackhide__ = True
+    assert_image_matches(
+        case.draw(),
+        case.golden,
+        tolerance=case.tolerance,
+        pixels=case.pixels,
+        square=case.square,
+        update=update,
+        failures=failures,
+    )
 
 
 def pytest_addoption(parser) -> None:

@@ -1,6 +1,7 @@
 """Snapshot testing from Python: rb.compare's figures, rattleback.testing.assert_image_matches,
 the pytest plugin's --snapshot-update, and still(t="reversal")."""
 
+import dataclasses
 import subprocess
 import sys
 import textwrap
@@ -245,3 +246,47 @@ def test_the_command_lines_junit_says_each_cases_verdict_as_the_terminal_does(tm
     refused = cli("snapshot", "suite.yaml", "--junit", "j.png", cwd=tmp_path, check=False)
     assert refused.returncode == 2 and "--junit j.png: writes JUnit XML" in refused.stderr
     assert not (tmp_path / "j.png").exists()
+
+
+def test_a_suite_files_cases_run_in_pytest_draw_what_the_command_line_draws(tmp_path):
+    """rattleback.testing.suite_cases reads a `rattleback snapshot` suite file as the command
+    line does (paths from the suite's folder, the top's defaults in each case), and each case
+    drawn from Python is the command line's image to the pixel on this machine (the same
+    program and rasteriser: no tolerance is needed), so its golden holds under
+    assert_case_matches. Titles, times and views each change the picture, so a case drawn with
+    any of them lost would differ."""
+    from rattleback.testing import assert_case_matches, suite_cases
+
+    (tmp_path / "cases").mkdir()
+    (tmp_path / "cases" / "suite.yaml").write_text(
+        f"size: 320x180\nsquare: 0\ncases:\n  - {{name: rest, scene: {scene_path('rattleback.yaml')}}}\n"
+        f"  - {{name: turned, scene: {scene_path('rattleback.yaml')}, t: reversal, view: above,"
+        " title: turned back, tolerance: 5}\n"
+    )
+    cli("snapshot", "cases/suite.yaml", "--update", "-q", cwd=tmp_path)
+    cases = suite_cases(tmp_path / "cases" / "suite.yaml")
+    assert [str(c) for c in cases] == ["rest", "turned"]
+    rest, turned = cases
+    assert rest.golden == tmp_path / "cases" / "goldens" / "rest.png"
+    assert rest.place.endswith("suite.yaml:4") and rest.size == (320, 180) and rest.t == 0.0
+    assert (turned.t, turned.view, turned.title, turned.tolerance, turned.square) == (
+        "reversal",
+        "above",
+        "turned back",
+        5,
+        0,
+    )
+    for case in cases:
+        drawn = rb.compare(case.draw(), case.golden, tolerance=0, pixels=0.0, square=0)
+        assert drawn.differing == 0, (case.name, drawn)
+        assert_case_matches(case, failures=tmp_path / "failures")
+    # Another time is another picture: the case's golden no longer holds for it.
+    other = dataclasses.replace(rest, t=2.0)
+    with pytest.raises(AssertionError, match="differs"):
+        assert_case_matches(other, failures=tmp_path / "failures")
+
+    # A mistake in the suite is the command line's message, with its line and key.
+    (tmp_path / "bad.yaml").write_text(f"cases:\n  - {{name: a, scene: x.yaml, tme: 1}}\n")
+    with pytest.raises(rb.SceneError) as caught:
+        suite_cases(tmp_path / "bad.yaml")
+    assert caught.value.line == 2 and "cases[0].tme is not a key of a case" in str(caught.value)
