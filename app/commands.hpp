@@ -66,9 +66,13 @@ struct SimulateArgs {
 int simulateCommand(const SimulateArgs& args);
 /// The line of a run that stopped before its output: why, that `what` (telemetry, video, still)
 /// was not written, what the run had found by then, and the value of `option` (--duration, or a
-/// still's --t) that ends the run before the stop.
+/// still's --t) that ends the run before the stop; `why` follows the stop's own words.
 std::string stoppedLine(const std::string& scene, const tasks::Outcome& outcome,
-                        const std::string& what, const std::string& option);
+                        const std::string& what, const std::string& option,
+                        const std::string& why = "");
+/// Says each of the body's own warnings (tasks::bodyWarnings) before a stopped run's line, and
+/// gives the words that line ends with to point to them ("" when there are none).
+std::string saidOddBody(const sim::Model& model);
 
 struct AnalyzeArgs {
   std::string scene;

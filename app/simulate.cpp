@@ -252,19 +252,21 @@ rb::Status checkPlotIsNotTheTable(const std::string& plot_dir, const std::string
 }  // namespace
 
 // Why a run wrote nothing, and its exit status.
-int notWritten(const SimulateArgs& args, const tasks::Outcome& outcome) {
+int notWritten(const SimulateArgs& args, const tasks::Outcome& outcome, const std::string& why) {
   if (outcome.ending == tasks::Ending::Interrupted) {
     tell(Tone::Error,
          args.scene + ": interrupted at t = " + rb::show(outcome.t) + " s; no telemetry written");
     return interruptedStatus();  // the temporary files are removed unfinished
   }
-  tell(Tone::Error, stoppedLine(args.scene, outcome, "telemetry", "--duration"));
+  tell(Tone::Error, stoppedLine(args.scene, outcome, "telemetry", "--duration", why));
   return kDiverged;
 }
 
 std::string stoppedLine(const std::string& scene, const tasks::Outcome& outcome,
-                        const std::string& what, const std::string& option) {
-  std::string line = scene + ": the run stopped: " + outcome.message + ". No " + what + " written";
+                        const std::string& what, const std::string& option,
+                        const std::string& why) {
+  std::string line =
+      scene + ": the run stopped: " + outcome.message + why + ". No " + what + " written";
   // The run up to the stop is sound: say what it found, and how to keep it (the stop's time
   // rounded down to a tenth of a second, so that the run ends before it).
   const double before = std::floor(outcome.t * 10) / 10;
@@ -277,14 +279,23 @@ std::string stoppedLine(const std::string& scene, const tasks::Outcome& outcome,
   return line;
 }
 
-// A stopped run's line, then what is odd about the body, which may be why (lengths in metres
-// typed for cm make a 28 m body of 0.2 kg that tips onto its rim, lighter than air).
+// What is odd about the body, said before a stopped run's line as what may be why (lengths in
+// metres typed for cm make a 28 m body of 0.2 kg that tips onto its rim, lighter than air: said
+// after the stop, the cause read as an afterthought to a line suggesting another contact model).
+std::string saidOddBody(const sim::Model& model) {
+  int odd = 0;
+  for (const tasks::RunWarning& w : tasks::bodyWarnings(model)) {
+    tell(Tone::Warning, w.text);
+    ++odd;
+  }
+  return odd == 0   ? ""
+         : odd == 1 ? "; the warning above may be why"
+                    : "; the warnings above may be why";
+}
+
 int stopped(const SimulateArgs& args, const tasks::SimulateResult& run, const sim::Model& model) {
-  const int status = notWritten(args, run.outcome);
-  if (run.outcome.ending == tasks::Ending::Interrupted) return status;
-  for (const tasks::RunWarning& w : tasks::runWarnings(model, run.summary))
-    if (w.aboutTheBody()) tell(Tone::Warning, w.text);
-  return status;
+  if (run.outcome.ending == tasks::Ending::Interrupted) return notWritten(args, run.outcome, "");
+  return notWritten(args, run.outcome, saidOddBody(model));
 }
 
 namespace {
@@ -401,7 +412,7 @@ int simulateCommand(const SimulateArgs& args) {
   std::optional<tasks::RunCheck> check;
   if (args.check) {
     check = tasks::checkRun(model, rate, run.summary, spins, options.cancelled);
-    if (!check) return notWritten(args, {tasks::Ending::Interrupted, {}, "", model.duration});
+    if (!check) return notWritten(args, {tasks::Ending::Interrupted, {}, "", model.duration}, "");
   }
   if (auto e =
           writer->commit({loaded->scene.file, loaded->scene.values, loaded->scene.content}, model,

@@ -38,10 +38,13 @@ bool interrupted() {
 }
 
 // The exit status and message of a run that stopped or was interrupted before its output.
-int notWritten(const tasks::Outcome& outcome, const std::string& scene, const std::string& what) {
+int notWritten(const tasks::Outcome& outcome, const std::string& scene, const std::string& what,
+               const sim::Model& model) {
   if (outcome.ending == tasks::Ending::Stopped) {
+    const std::string why = saidOddBody(model);
     // A still's run ends at its --t, a video's at its --duration.
-    tell(Tone::Error, stoppedLine(scene, outcome, what, what == "still" ? "--t" : "--duration"));
+    tell(Tone::Error,
+         stoppedLine(scene, outcome, what, what == "still" ? "--t" : "--duration", why));
     return kDiverged;
   }
   tell(Tone::Error, scene + ": interrupted; no " + what + " written");
@@ -108,7 +111,7 @@ int renderCommand(const RenderArgs& args) {
   const media::VideoResult& result = made.value();
   if (args.verbose) tell(Tone::Note, "render: OpenGL " + result.opengl);
   if (result.outcome.ending != tasks::Ending::Completed)
-    return notWritten(result.outcome, args.scene, "video");
+    return notWritten(result.outcome, args.scene, "video", loaded->model);
   std::vector<tasks::OutputEntry> entries;
   for (const media::VideoFile& f : result.files)
     entries.push_back(media::videoEntry(f, loaded.value(), sceneName(args.scene)));
@@ -146,7 +149,7 @@ int stillCommand(const StillArgs& args) {
   const media::StillResult& still = drawn.value();
   if (args.verbose) tell(Tone::Note, "still: OpenGL " + still.opengl);
   if (still.outcome.ending != tasks::Ending::Completed)
-    return notWritten(still.outcome, args.scene, "still");
+    return notWritten(still.outcome, args.scene, "still", loaded->model);
   const std::string path = args.output.empty()
                                ? "out/" + std::filesystem::path(args.scene).stem().string() + "-" +
                                      std::string(rb::nameOf(still.view)) + ".png"

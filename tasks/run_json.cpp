@@ -84,7 +84,7 @@ nlohmann::json runJson(const sim::RunSummary& run) {
   return j;
 }
 
-std::vector<RunWarning> runWarnings(const sim::Model& model, const sim::RunSummary& run) {
+std::vector<RunWarning> bodyWarnings(const sim::Model& model) {
   std::vector<RunWarning> w;
   // As analyze warns: a body whose CM is above a radius of curvature at the rest contact
   // topples rather than rocks, and what follows is no rattleback's reversal.
@@ -103,6 +103,11 @@ std::vector<RunWarning> runWarnings(const sim::Model& model, const sim::RunSumma
     w.push_back({"dents_cut_nothing",
                  "body.dents cut nothing: they lie wholly outside the body, which is the plain "
                  "paraboloid"});
+  return w;
+}
+
+std::vector<RunWarning> runWarnings(const sim::Model& model, const sim::RunSummary& run) {
+  std::vector<RunWarning> w = bodyWarnings(model);
   // Not spun, not tilted, not dropped: nothing moves (a student left initial: out, and read
   // "first reversal none" as the body's doing).
   if (model.initial.angularVelocityBody().isZero(0) && !model.initial.velocity &&

@@ -34,6 +34,8 @@ struct RunWarning {
     return code == "cannot_stand" || code == "implausible_mass" || code == "dents_cut_nothing";
   }
 };
+/// The warnings of the body alone (each aboutTheBody()), first of runWarnings'.
+std::vector<RunWarning> bodyWarnings(const sim::Model& model);
 std::vector<RunWarning> runWarnings(const sim::Model& model, const sim::RunSummary& run);
 nlohmann::json warningsJson(const std::vector<RunWarning>& warnings);
 

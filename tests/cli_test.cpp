@@ -1055,10 +1055,11 @@ TEST(Cli, ARefusedSimulateLeavesNoFolderBehind) {
   EXPECT_TRUE(fs::is_empty(dir)) << fs::directory_iterator(dir)->path();
 }
 
-// A run that stops says, after why, what is odd about the body, which may be the cause: lengths
-// typed in cm in a file read in metres made a 28 m body of 0.2 kg that tipped onto its rim, and
-// only analyze said it was lighter than air (a researcher's trial). The stop is one line, each
-// warning one more.
+// A run that stops says first what is odd about the body, which may be the cause, and its line
+// points to it: lengths typed in cm in a file read in metres made a 28 m body of 0.2 kg that
+// tipped onto its rim, and only analyze said it was lighter than air; said after the stop, the
+// warning read as an afterthought to a line suggesting another contact model. Each warning is
+// one line, the stop one more.
 TEST(Cli, AStoppedRunSaysWhatIsOddAboutTheBody) {
   const fs::path dir = emptyDir("stopped-odd");
   std::ofstream(dir / "big.yaml") << R"(units: {length: 1}
@@ -1075,13 +1076,21 @@ simulation: {integrator: rk4, dt: 1.0e-3, duration: 10}
   EXPECT_NE(r.err.find(": the run stopped: the body tipped onto the edge of its top"),
             std::string::npos)
       << r.err;
-  EXPECT_NE(
-      r.err.find(
-          "\nrattleback: warning: body.mass 0.2 kg in a body of 28.3 × 8.16 × 2.5 m is lighter "
-          "than air"),
-      std::string::npos)
+  EXPECT_EQ(r.err.find("rattleback: warning: body.mass 0.2 kg in a body of 28.3 × 8.16 × 2.5 m "
+                       "is lighter than air"),
+            0u)
+      << r.err;
+  EXPECT_NE(r.err.find("; the warning above may be why. No telemetry written"), std::string::npos)
       << r.err;
   EXPECT_FALSE(fs::exists(dir / "x.csv"));
+  // The same before a still's and a video's stop.
+  for (const std::string command : {"still --t 9", "render --duration 9"}) {
+    const Result drawn = rattleback(command + " -q " + (dir / "big.yaml").string() + " -o " +
+                                    (dir / (command[0] == 's' ? "x.png" : "x.mp4")).string());
+    EXPECT_EQ(drawn.status, 3) << command << drawn.err;
+    EXPECT_EQ(drawn.err.find("rattleback: warning: body.mass 0.2 kg"), 0u) << drawn.err;
+    EXPECT_NE(drawn.err.find("may be why. No "), std::string::npos) << drawn.err;
+  }
 }
 
 // snapshot's -j is checked as sweep's (a pool of 1 … 1024, 0 for all cores: -1 had been taken),
