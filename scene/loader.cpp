@@ -250,7 +250,12 @@ class MapReader {
 
   int whole(const YAML::Node& node, const std::string& key) const {
     const double v = number(node, key);
-    if (!std::isfinite(v) || v != std::floor(v) || std::abs(v) > 1e9)
+    // A fraction is named with the whole number nearest it (video.fps 29.97, the NTSC rate
+    // typed from a camera's settings, is 30 here).
+    if (std::isfinite(v) && v != std::floor(v) && std::abs(v) <= 1e9)
+      fail(key, "must be a whole number, not '" + node.Scalar() + "': use " +
+                    std::to_string(std::lround(v)));
+    if (!std::isfinite(v) || std::abs(v) > 1e9)
       fail(key, "must be a whole number, not '" + node.Scalar() + "'");
     return static_cast<int>(v);
   }

@@ -86,6 +86,13 @@ rb::Error malformedYaml(const std::string& name, const std::string& text,
       line = opened;
       message = "a { or [ on this line is never closed (" + e.msg + ")";
     }
+  // A ] or } that closes the other kind of bracket, or none (`tilt: [0.5, 0.5}`, a ] left out
+  // inside a { … }): yaml-cpp's "illegal flow end" says neither.
+  if (e.msg == YAML::ErrorMsg::FLOW_END)
+    message =
+        "a ] or } on this line does not close the bracket open before it (a [ closes with "
+        "], a { with }: is one left out?) (" +
+        e.msg + ")";
   // A tab in the indentation: yaml-cpp names what it then misreads ("illegal map value").
   int at = 1;
   for (std::size_t start = 0; start < text.size() && at <= line; ++at) {

@@ -143,7 +143,7 @@ const BadCase kBadCases[] = {
     {"spin: 0.0", "spin: .inf", "9: initial.spin must be a finite number"},
     {"fps: 25", "fps: 0", "11: video.fps must be within"},
     {"size: [320, 180]", "size: [100000, 100000]", "11: video.size sides must be within"},
-    {"fps: 25", "fps: 29.97", "11: video.fps must be a whole number"},
+    {"fps: 25", "fps: 29.97", "11: video.fps must be a whole number, not '29.97': use 30"},
     {"fps: 25", "fps: 241", "11: video.fps must be within 1 … 240"},
     {"size: [320, 180]", "size: [321, 180]", "11: video.size sides must be even"},
     {"view: oblique", "view: sideways", "11: video.view must be"},
@@ -299,6 +299,14 @@ TEST(BadScenes, AnUnclosedBracketIsNamedWhereItOpens) {
   EXPECT_EQ(
       message.rfind("inline.yaml:3: malformed YAML: a { or [ on this line is never closed", 0), 0u)
       << message;
+  // A ] left out inside a { … }: its } closes the [, which yaml-cpp calls an "illegal flow end".
+  const std::string crossed =
+      errorFor("units: {length: 0.01}\ninitial: {spin: -5, tilt: [0.5, 0.5}\n");
+  EXPECT_EQ(crossed.rfind("inline.yaml:2: malformed YAML: a ] or } on this line does not close the "
+                          "bracket open before it",
+                          0),
+            0u)
+      << crossed;
   // Brackets in quotes and comments are not counted; the last one left open is named.
   EXPECT_EQ(scene::unclosedFlowLine("a: \"{\"  # {\nb: [1, 2]\nc: {d: [1\ne: 2\n"), 3);
   EXPECT_EQ(scene::unclosedFlowLine("a: {b: '['}\nc: [1, {d: 2}]\n"), 0);
