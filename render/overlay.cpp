@@ -177,27 +177,47 @@ std::string lengthText(double metres) {
   return text;
 }
 
-void drawScaleLabel(Image& image, Overlay& font, const std::string& text) {
+Box scaleLabelBox(const Image& image, Overlay& font, const std::string& text) {
   const int pad = font.lineHeight() / 2;
   const int margin = insetMargin(image.height);
   const int w = font.width(text) + 2 * pad, h = font.lineHeight() + 2 * pad;
   const int x0 = margin, y1 = image.height - margin;
-  fillRect(image, x0, y1 - h, x0 + w, y1, {255, 255, 255, 200});
-  font.text(image, x0 + pad, y1 - pad - font.lineHeight() / 4, text, {40, 40, 40, 255});
+  return {x0, y1 - h, x0 + w, y1};
 }
 
-void drawSpinInset(Image& image, Overlay& font, std::span<const std::array<float, 2>> history,
-                   double duration, double range, std::span<const double> reversals) {
+void drawScaleLabel(Image& image, Overlay& font, const std::string& text) {
+  const Box box = scaleLabelBox(image, font, text);
+  fillRect(image, box.x0, box.y0, box.x1, box.y1, {255, 255, 255, 200});
+  const int pad = font.lineHeight() / 2;
+  font.text(image, box.x0 + pad, box.y1 - pad - font.lineHeight() / 4, text, {40, 40, 40, 255});
+}
+
+namespace {
+std::string insetLabel(double duration, double range) {
   char label[64];
   std::snprintf(label, sizeof label, "n ±%g rad/s, 0–%g s", range, duration);
+  return label;
+}
+}  // namespace
+
+Box spinInsetBox(const Image& image, Overlay& font, double duration, double range) {
   const int pad = font.lineHeight() / 2;
   const int margin = insetMargin(image.height);
   // Three tenths of the width, and at least its title's (a narrow frame's text is relatively
   // wider), within the frame.
-  const int w = std::min(std::max(image.width * 3 / 10, font.width(label) + 2 * pad),
-                         image.width - 2 * margin);
-  const int h = insetHeight(image.height);
+  const int w =
+      std::min(std::max(image.width * 3 / 10, font.width(insetLabel(duration, range)) + 2 * pad),
+               image.width - 2 * margin);
   const int x0 = image.width - w - margin, y0 = insetTop(image.height);
+  return {x0, y0, x0 + w, y0 + insetHeight(image.height)};
+}
+
+void drawSpinInset(Image& image, Overlay& font, std::span<const std::array<float, 2>> history,
+                   double duration, double range, std::span<const double> reversals) {
+  const std::string label = insetLabel(duration, range);
+  const int pad = font.lineHeight() / 2;
+  const Box box = spinInsetBox(image, font, duration, range);
+  const int x0 = box.x0, y0 = box.y0, w = box.x1 - box.x0, h = box.y1 - box.y0;
   fillRect(image, x0, y0, x0 + w, y0 + h, {255, 255, 255, 200});
   const float left = x0 + pad, right = x0 + w - pad;
   // The curve a 240th of the frame's height wide, at least 2 px (3 px at 720p): 2 px alone
@@ -273,6 +293,18 @@ std::array<std::array<float, 2>, 3> arrowHead(std::span<const std::array<float, 
            {b[0] + dy * half, b[1] - dx * half}}};
 }
 }  // namespace
+
+std::span<const std::array<float, 2>> endsClearOf(std::span<const std::array<float, 2>> arc,
+                                                  std::span<const Box> boxes, float margin) {
+  auto covered = [&](const std::array<float, 2>& p) {
+    return std::any_of(boxes.begin(), boxes.end(),
+                       [&](const Box& b) { return b.near(p[0], p[1], margin); });
+  };
+  std::size_t first = 0, last = arc.size();
+  while (first < last && covered(arc[first])) ++first;
+  while (last > first && covered(arc[last - 1])) --last;
+  return arc.subspan(first, last - first);
+}
 
 void drawArrow(Image& image, std::span<const std::array<float, 2>> arc, float width, Rgba color) {
   if (arc.size() < 2) return;

@@ -51,13 +51,26 @@ int insetTop(int image_height);
 /// A length as a caption gives it: "2 cm", "5 mm", "1 m" (the unit that makes it at least 1).
 std::string lengthText(double metres);
 
+/// A box of the frame's text: [x0, x1) × [y0, y1), pixels.
+struct Box {
+  int x0, y0, x1, y1;
+  /// Whether (x, y) lies within it or within `margin` pixels of it.
+  bool near(float x, float y, float margin) const {
+    return x > x0 - margin && x < x1 + margin && y > y0 - margin && y < y1 + margin;
+  }
+};
+
 /// One line in a box at the bottom left, level with the inset's bottom (the floor's scale).
 void drawScaleLabel(Image& image, Overlay& font, const std::string& text);
+/// The box drawScaleLabel draws `text` in.
+Box scaleLabelBox(const Image& image, Overlay& font, const std::string& text);
 
 /// The inset: n(t) so far against a fixed time axis [0, duration] and spin axis ±range, with a
 /// tick at each of `reversals` (s) that lies within the curve drawn so far.
 void drawSpinInset(Image& image, Overlay& font, std::span<const std::array<float, 2>> history,
                    double duration, double range, std::span<const double> reversals = {});
+/// The box drawSpinInset draws in.
+Box spinInsetBox(const Image& image, Overlay& font, double duration, double range);
 
 /// The spin cue's colours (docs/commands.md "The spin cue"): from Okabe and Ito's palette, told
 /// apart with any colour vision and unlike the body's red top and blue bottom.
@@ -71,6 +84,10 @@ inline constexpr double kSlowestShownSpin = 0.05;
 /// body, long enough to read at the back of a classroom.
 inline constexpr double kReversalShownFor = 1.5;
 
+/// `arc` without the points at either end that lie within `margin` pixels of any of `boxes`
+/// (text drawn over the arrow): an end stops short of a box rather than running under it.
+std::span<const std::array<float, 2>> endsClearOf(std::span<const std::array<float, 2>> arc,
+                                                  std::span<const Box> boxes, float margin);
 /// An arrow along `arc` (pixels, in the order of travel), `width` pixels wide, with a dark
 /// edge for contrast on the light floor and a head at the arc's end.
 void drawArrow(Image& image, std::span<const std::array<float, 2>> arc, float width, Rgba color);

@@ -484,7 +484,13 @@ void Renderer::drawSpinCue(const FrameInput& frame, const Camera& camera, Image&
   }
   // A 120th of the height wide (6 px at 720p, 3 at 360p), at least 2.
   const float width = std::max(2.0f, settings_.height / 120.0f);
-  drawArrow(out, arc, width, frame.spin > 0 ? kCounterClockwiseColor : kClockwiseColor);
+  // The inset and the floor's scale are drawn over the arrow: an end that would run under
+  // either (a long body seen from above puts the tail at the inset's corner) stops short of it,
+  // by the head's length, the head's own reach.
+  const Box boxes[] = {spinInsetBox(out, corner_font_, settings_.duration, settings_.spin_range),
+                       scaleLabelBox(out, corner_font_, scale_label_)};
+  drawArrow(out, endsClearOf(arc, boxes, 4 * width), width,
+            frame.spin > 0 ? kCounterClockwiseColor : kClockwiseColor);
 }
 
 void Renderer::drawReadouts(const FrameInput& frame, const Camera& camera, Image& out) {

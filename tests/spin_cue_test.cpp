@@ -33,7 +33,7 @@ render::BodyPoints bar() {
 }
 
 render::Image draw(double spin, double t, std::vector<double> reversals, bool readouts = true,
-                   int width = 640, int height = 360) {
+                   int width = 640, int height = 360, render::View view = render::View::Oblique) {
   const render::BodyPoints body = bar();
   render::RenderSettings s;
   s.width = width;
@@ -43,6 +43,7 @@ render::Image draw(double spin, double t, std::vector<double> reversals, bool re
               : backend == "egl"  ? render::Backend::Egl
                                   : render::Backend::Auto;
   s.readouts = readouts;
+  s.view = view;
   s.title = "spin cue";  // as a still's: drawn with or without read-outs
   s.duration = 8;
   s.spin_range = 5.5;  // 1.1 × a spin of 5 rad/s, as media/video_plan.cpp sets it
@@ -177,4 +178,28 @@ TEST(SpinCue, ReversalIsMarkedOnlyAfterIt) {
   EXPECT_EQ(outside, 0);
   // (The inset's band is ~50 px high at 360p and the tick 2 px wide: ~100 pixels.)
   EXPECT_GT(inside, 40);
+}
+
+// The inset and the floor's scale are drawn over the arrow; an end of the arrow that would run
+// under either stops short of it (a student's long body seen from above showed the tail under
+// the inset): the points of an arc's ends within the margin of a box go, the rest stay, even
+// where its middle passes near one; an arc wholly under a box is none.
+TEST(SpinCue, AnArrowsEndsStopShortOfTheTextBoxes) {
+  std::vector<std::array<float, 2>> arc;
+  for (int k = 0; k <= 10; ++k) arc.push_back({10.0f * k, 50.0f});  // x 0 … 100 along y = 50
+  const render::Box left{-20, 40, 15, 60}, right{85, 40, 120, 60}, middle{45, 0, 55, 45};
+  const render::Box both[] = {left, right, middle};
+  // Within 2 px of the left box: x 0, 10 go; of the right: 90, 100 go (80 is 5 px off).
+  auto kept = render::endsClearOf(arc, both, 2);
+  ASSERT_EQ(kept.size(), 7u);
+  EXPECT_EQ(kept.front()[0], 20.0f);
+  EXPECT_EQ(kept.back()[0], 80.0f);
+  // The middle box is within 5 px of x = 50, which is not an end: it stays.
+  kept = render::endsClearOf(arc, both, 6);
+  ASSERT_EQ(kept.size(), 5u);
+  EXPECT_EQ(kept.front()[0], 30.0f);
+  EXPECT_EQ(kept.back()[0], 70.0f);
+  const render::Box all[] = {{-5, 0, 105, 100}};
+  EXPECT_TRUE(render::endsClearOf(arc, all, 0).empty());
+  EXPECT_EQ(render::endsClearOf(arc, {}, 100).size(), arc.size());
 }
