@@ -82,8 +82,9 @@ std::vector<std::string> axisKeys(const scene::Sweep& sweep) {
 struct Table {
   std::vector<std::string> keys;
   std::vector<std::vector<std::string>> axis_values;  // [axis][value]
-  std::vector<double> values;  // the metric of each row in row order; NaN where none
-  double length_unit = 0;      // m per file length unit of the base scene; 0: not known
+  std::vector<double> values;    // the metric of each row in row order; NaN where none
+  double length_unit = 0;        // m per file length unit of the base scene; 0: not known
+  std::vector<double> forecast;  // forecast_s of each row, drawn beside first_reversal_s; or none
 };
 
 // The metric --metric names (metricProblem has said when it names none).
@@ -122,6 +123,21 @@ double metricOf(const std::string& line, std::size_t axes, const tasks::SweepCol
                 tasks::SweepMetric metric) {
   const auto fields = splitCsv(line);
   return fields ? metricOf(*fields, axes, columns, metric) : std::nan("");
+}
+
+// Each line's forecast_s, to draw beside its first reversal (the theory against the runs: what a
+// student's lab plots), where the table has it and the plot is of first_reversal_s; else none.
+std::vector<double> forecastsOf(const std::vector<std::string>& lines, std::size_t axes,
+                                const tasks::SweepColumns& columns, tasks::SweepMetric metric) {
+  std::vector<double> f;
+  const auto forecast = rb::nameOf(tasks::SweepMetric::Forecast);
+  if (metric != tasks::SweepMetric::FirstReversal ||
+      std::none_of(columns.begin(), columns.end(),
+                   [&](const tasks::SweepResultColumn* c) { return c->column.name == forecast; }))
+    return f;
+  for (const std::string& line : lines)
+    f.push_back(metricOf(line, axes, columns, tasks::SweepMetric::Forecast));
+  return f;
 }
 
 // Why --metric cannot be plotted from a table of these columns, or nothing.
@@ -164,6 +180,21 @@ rb::Status plotLine(const std::string& png, tasks::SweepMetric metric_id, const 
                  std::string(metric == "first_reversal_s" ? "no reversal, or " : "") +
                  "run stopped or refused)";
   panel.series.push_back(series);
+  if (!table.forecast.empty()) {
+    Series theory;
+    theory.title = "forecast_s (averaged theory)";
+    theory.color = "#009e73";  // Okabe and Ito's bluish green, beside gnuplot's first purple
+    theory.dash = 2;
+    theory.point_type = 6;  // an open circle
+    for (std::size_t i = 0; i < xs.size(); ++i)
+      theory.points.emplace_back(
+          xs[i], table.forecast[static_cast<std::size_t>(static_cast<std::int64_t>(i) * stride)]);
+    if (std::any_of(theory.points.begin(), theory.points.end(),
+                    [](const auto& p) { return !std::isfinite(p.second); }))
+      panel.note += std::string(panel.note.empty() ? "" : "; ") +
+                    "forecast_s: none where the theory gives none (forecast_note says why)";
+    panel.series.push_back(theory);
+  }
   return plotPng(png, title, {panel}, 900, 500);
 }
 
@@ -424,6 +455,7 @@ rb::Status writeOutputs(const SweepArgs& args, const scene::Sweep& sweep,
                                ? it->second
                                : metricOf(line, keys.size(), columns, metricNamed(args.metric)));
   }
+  table.forecast = forecastsOf(lines, keys.size(), columns, metricNamed(args.metric));
   return plotTable(args.plot, metricNamed(args.metric), fs::path(args.file).stem().string(), table);
 }
 
@@ -556,6 +588,7 @@ int sweepMergeCommand(const SweepMergeArgs& args) {
     Table table{m.keys, m.axis_values, {}, unit.is_number() ? unit.get<double>() : 0.0};
     for (const std::string& line : m.lines)
       table.values.push_back(metricOf(line, m.keys.size(), m.columns, metricNamed(args.metric)));
+    table.forecast = forecastsOf(m.lines, m.keys.size(), m.columns, metricNamed(args.metric));
     const std::string title = fs::path(sweep_file).stem().string();
     if (auto e = plotTable(args.plot, metricNamed(args.metric), title, table); !e) return fail(e);
   }
