@@ -251,7 +251,7 @@ void defineSnapshot(CLI::App& c, Cli& cli) {
   c.add_option("-j,--jobs", s.jobs, "Threads (default: all cores)")->check(jobsCheck());
   c.add_option("--junit", s.junit,
                "JUnit XML of every case's verdict (FILE.xml), for a CI's test view; written "
-               "whatever the verdicts, not when interrupted");
+               "whatever the verdicts (a suite that cannot run: one error), not when interrupted");
   c.add_flag("-q,--quiet", s.quiet, "No verdicts and no progress bar: the exit status says it");
 }
 

@@ -210,9 +210,47 @@ rb::Status writeJunit(const std::string& path, const scene::SnapshotSuite& suite
   return out->commit();
 }
 
+// A suite that cannot run, as JUnit XML: one test case in error, at the line at fault where
+// there is one, so that a CI's test view shows it rather than an earlier run's verdicts.
+rb::Status writeJunitRefusal(const std::string& path, const std::string& file,
+                             const rb::Error& error) {
+  const std::string name = xmlText(fs::path(file).stem().string());
+  // The suite's line where the message begins with it ("suite.yaml:7: case: …", a case whose
+  // scene is at fault), else where the error itself is.
+  std::string at_file = error.where ? error.where->file : file;
+  int at_line = error.where ? error.where->line : 0;
+  const std::string text = error.text();
+  if (text.starts_with(file + ":")) {
+    at_file = file;
+    at_line = std::atoi(text.c_str() + file.size() + 1);
+  }
+  std::string place = " file=\"" + xmlText(at_file) + "\"";
+  if (at_line > 0) place += " line=\"" + std::to_string(at_line) + "\"";
+  if (auto made = tasks::makeParentFolder(path); !made) return made;
+  auto out = tasks::AtomicOutput::open(path);
+  if (!out) return out.error();
+  out->stream() << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites tests=\"1\" "
+                   "failures=\"0\" errors=\"1\">\n  <testsuite name=\""
+                << name << "\" tests=\"1\" failures=\"0\" errors=\"1\">\n    <testcase classname=\""
+                << name << "\" name=\"suite\"" << place << "><error message=\""
+                << xmlText(error.text()) << "\"/></testcase>\n  </testsuite>\n</testsuites>\n";
+  return out->commit();
+}
+
 }  // namespace
 
 namespace {
+
+// The suite's error, said, and put in --junit's file when one is asked for (it had been left as
+// the last run wrote it: green cases in the CI's view of a job that failed).
+int refused(const SnapshotArgs& args, const rb::Error& error) {
+  if (!args.junit.empty()) {
+    const rb::OutputNamedBy naming("--junit");
+    if (auto e = writeJunitRefusal(args.junit, args.file, error); !e)
+      tell(Tone::Error, e.error().text());
+  }
+  return fail(error);
+}
 
 // Each case's verdict on standard output; the report when any differs or is missing.
 int verdicts(const scene::SnapshotSuite& suite, const std::vector<CaseResult>& results,
@@ -260,18 +298,18 @@ int snapshotCommand(const SnapshotArgs& args) {
   installInterruptHandlers();
   // The cases' arguments come from the suite's keys, and messages name them so ("backend egl").
   rb::argument_style = rb::ArgumentStyle::Key;
-  auto suite = scene::loadSnapshotSuite(args.file);
-  if (!suite) return fail(suite);
-  const std::string report = media::reportFolder(suite.value(), args.report);
-  if (auto ok = media::checkReportFolder(report); !ok) return fail(ok);
-  if (!args.junit.empty()) {
+  if (!args.junit.empty()) {  // first: a suite refused below is said in it
     const rb::OutputNamedBy naming("--junit");
     if (auto ok = rb::checkDataOutput(args.junit, "JUnit XML", ".xml", {args.file}); !ok)
       return fail(ok);
     if (auto ok = rb::checkExtension(args.junit, ".xml", "JUnit XML", false); !ok) return fail(ok);
   }
+  auto suite = scene::loadSnapshotSuite(args.file);
+  if (!suite) return refused(args, suite.error());
+  const std::string report = media::reportFolder(suite.value(), args.report);
+  if (auto ok = media::checkReportFolder(report); !ok) return refused(args, ok.error());
   auto scenes = media::loadCases(suite.value());
-  if (!scenes) return fail(scenes);
+  if (!scenes) return refused(args, scenes.error());
   Progress progress("snapshot", static_cast<std::int64_t>(suite->cases.size()), !args.quiet);
   media::SnapshotOptions options;
   options.jobs = args.jobs;

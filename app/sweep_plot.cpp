@@ -28,7 +28,6 @@ std::string sweepLabel(const std::string& name, double length_unit) {
   return unit.empty() ? name : name + " [" + unit + "]";
 }
 
-
 // Splits one CSV line (RFC 4180 quoting); nullopt when its quotes do not close.
 std::optional<std::vector<std::string>> splitCsv(const std::string& line) {
   std::vector<std::string> fields(1);
@@ -53,7 +52,6 @@ std::optional<std::vector<std::string>> splitCsv(const std::string& line) {
   if (quoted) return std::nullopt;
   return fields;
 }
-
 
 // The metric --metric names (metricProblem has said when it names none).
 tasks::SweepMetric metricNamed(const std::string& name) {

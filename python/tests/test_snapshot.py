@@ -247,6 +247,31 @@ def test_the_command_lines_junit_says_each_cases_verdict_as_the_terminal_does(tm
     assert refused.returncode == 2 and "--junit j.png: writes JUnit XML" in refused.stderr
     assert not (tmp_path / "j.png").exists()
 
+    # A suite that cannot run replaces the last run's XML with one error at the line at fault (it
+    # had been left as it was: green cases in the CI's view of a job that failed), for a key
+    # misspelt and for a case whose scene is missing.
+    good = (tmp_path / "suite.yaml").read_text()
+    for broken, line, words in (
+        (good.replace("t: 1}", "tt: 1}"), "4", "cases[1].tt is not a key of a case"),
+        (
+            good.replace("t: 1}", "t: 1}\n  - {name: gone, scene: nope.yaml}"),
+            "5",
+            "gone: nope.yaml: cannot open",
+        ),
+    ):
+        (tmp_path / "suite.yaml").write_text(broken)
+        run = cli("snapshot", "suite.yaml", "-q", "--junit", "out/j.xml", cwd=tmp_path, check=False)
+        assert run.returncode == 2, run.stderr
+        root = ET.parse(tmp_path / "out" / "j.xml").getroot()
+        assert (root.attrib["tests"], root.attrib["errors"], root.attrib["failures"]) == ("1", "1", "0")
+        case = root.find("testsuite/testcase")
+        assert (case.attrib["name"], case.attrib["file"], case.attrib["line"]) == (
+            "suite",
+            "suite.yaml",
+            line,
+        )
+        assert words in case.find("error").attrib["message"]
+
 
 def test_a_suite_files_cases_run_in_pytest_draw_what_the_command_line_draws(tmp_path):
     """rattleback.testing.suite_cases reads a `rattleback snapshot` suite file as the command
