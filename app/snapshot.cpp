@@ -285,10 +285,15 @@ int verdicts(const scene::SnapshotSuite& suite, const std::vector<CaseResult>& r
     return kOk;
   }
   if (auto e = media::writeReport(report, suite, results); !e) return fail(e);
-  if (!quiet)
+  if (!quiet) {
     std::printf("%d same, %d differ, %d missing%s; report: %s\n", same, differ, missing,
                 unreadable ? (", " + std::to_string(unreadable) + " unreadable").c_str() : "",
                 (fs::path(report) / "index.html").c_str());
+    // The way out on the terminal too, not only on the report's page: a change meant is blessed.
+    if (differ + missing > 0)
+      std::printf("rattleback snapshot %s --update makes the images drawn now the goldens\n",
+                  suite.file.c_str());
+  }
   return unreadable ? kBadInput : 1;
 }
 

@@ -213,7 +213,8 @@ void listStill(const std::string& path, const py::dict& still) {
   (void)tasks::recordOutputs({listed});
 }
 
-void writePngOf(const std::string& path, const U8Array& a, const std::optional<py::dict>& still) {
+void writePngOf(const std::string& path, const U8Array& a, const std::optional<py::dict>& still,
+                const std::string& drawn_by) {
   {
     // As `still -o y.jpg` refuses it: the data is PNG whatever the name says.
     const rb::OutputNamedBy naming("save's path");
@@ -222,6 +223,7 @@ void writePngOf(const std::string& path, const U8Array& a, const std::optional<p
   const rb::OutputNamedBy naming("save");  // Image.save: the way out an error suggests
   if (auto e = tasks::makeParentFolder(path); !e) raise(e.error());
   render::Image image = imageOf(a);
+  image.drawn_by = drawn_by;
   if (still && still->contains("drawn_by"))
     image.drawn_by = (*still)["drawn_by"].cast<std::string>();
   if (auto e = render::writePng(path, image); !e) raise(e.error());
@@ -230,6 +232,14 @@ void writePngOf(const std::string& path, const U8Array& a, const std::optional<p
 
 py::array_t<std::uint8_t> diffImageOf(const U8Array& a, const U8Array& b, int channel) {
   return arrayOf(render::diffImage(imageOf(a), imageOf(b), channel), false);
+}
+
+// The PNG's Software text, the rasteriser that drew it ("" when it names none): a golden holds
+// for the rasteriser that drew it, so a difference says which drew each.
+std::string pngDrawnByOf(const std::string& path) {
+  render::Image image;
+  if (auto e = render::readPng(path, image); !e) raise(e.error());
+  return image.drawn_by;
 }
 
 py::array_t<std::uint8_t> readPngOf(const std::string& path) {
@@ -264,7 +274,9 @@ PYBIND11_MODULE(_draw, m) {
   m.def("render", &renderVideos, py::arg("scene"), py::arg("output"), py::arg("both"),
         py::arg("crf"), py::arg("preset"), py::arg("backend"));
   m.def("encode_png", &encodePngOf, py::arg("array"), py::arg("drawn_by") = "");
-  m.def("write_png", &writePngOf, py::arg("path"), py::arg("array"), py::arg("still") = py::none());
+  m.def("write_png", &writePngOf, py::arg("path"), py::arg("array"), py::arg("still") = py::none(),
+        py::arg("drawn_by") = "");
+  m.def("png_drawn_by", &pngDrawnByOf, py::arg("path"));
   m.def("compare", &compareArrays, py::arg("a"), py::arg("b"), py::arg("tolerance"),
         py::arg("pixels"), py::arg("square"));
   m.def("diff_image", &diffImageOf, py::arg("a"), py::arg("b"), py::arg("tolerance"));

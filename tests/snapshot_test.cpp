@@ -133,7 +133,7 @@ TEST(Snapshot, AGoldenSurvivesRenamingTheSceneMovingTheSuiteAndTheThreadCount) {
 }
 
 // A tilt 0.1° larger at the start is caught 1.5 s on, as the body rocks, and the report shows
-// that case.
+// that case; the terminal says how to bless it.
 TEST(Snapshot, ATiltChangedByATenthOfADegreeIsCaughtAndReported) {
   const fs::path dir = folder("tilt");
   put(dir / "mine.yaml", sceneWithTilt("0.5"));
@@ -145,6 +145,11 @@ TEST(Snapshot, ATiltChangedByATenthOfADegreeIsCaughtAndReported) {
   put(dir / "mine.yaml", sceneWithTilt("0.6"));
   EXPECT_EQ(runIn(dir, "snapshot suite.yaml --report out/report", &said), 1) << said;
   EXPECT_NE(said.find("DIFFERS  rocking"), std::string::npos) << said;
+  // The way out on the terminal, not only on the report's page.
+  EXPECT_NE(said.find("rattleback snapshot suite.yaml --update makes the images drawn now the "
+                      "goldens"),
+            std::string::npos)
+      << said;
   const std::string page = slurp(dir / "out/report/index.html");
   EXPECT_NE(page.find("id=\"rocking\""), std::string::npos);
   for (const char* image : {"rocking-golden.png", "rocking-new.png", "rocking-diff.png"})

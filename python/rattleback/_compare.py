@@ -40,14 +40,19 @@ class Comparison:
     def __bool__(self) -> bool:
         return self.same
 
-    def describe(self, tolerance: int) -> str:
-        """One line of the figures, as ``rattleback compare`` prints them."""
+    def describe(self, tolerance: int, pixels: Optional[float] = None, square: Optional[int] = None) -> str:
+        """One line of the figures, as ``rattleback compare`` prints them; with ``pixels`` and
+        ``square`` (the tolerances judged by), as ``rattleback snapshot`` prints a case's."""
         if not self.same_size:
             return "the images have different sizes, so no pixel was compared"
-        return (
+        allowed = f" (allowed {100 * pixels:.4f} %)" if pixels is not None else ""
+        said = (
             f"{self.differing} of {self.pixels} pixels ({100 * self.fraction:.4f} %) differ "
-            f"by more than {tolerance} in a channel; largest channel difference {self.worst}"
+            f"by more than {tolerance} in a channel{allowed}; largest channel difference {self.worst}"
         )
+        if square is not None and self.square_failed:
+            said += f"; a square of them {self.square} px a side (square {square})"
+        return said
 
 
 def _array(image: Any) -> np.ndarray:

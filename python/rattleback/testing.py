@@ -27,11 +27,18 @@ _settings: dict[str, Any] = {"update": False, "failures": "snapshot-failures"}
 _written: list[tuple[str, str]] = []
 
 
-def _write(path: Path, array) -> None:
+def _write(path: Path, array, drawn_by: str = "") -> None:
     from . import _draw
 
     path.parent.mkdir(parents=True, exist_ok=True)
-    _draw.write_png(os.fspath(path), array)  # (a temporary file renamed into place)
+    # (a temporary file renamed into place; its Software text the rasteriser, as the command
+    # line writes it, so that a golden blessed by either is the same bytes)
+    _draw.write_png(os.fspath(path), array, drawn_by=drawn_by)
+
+
+def _drawn_by(image) -> str:
+    """The rasteriser that drew an rb.still image ("" for an array or a PNG's path)."""
+    return (getattr(image, "_still", None) or {}).get("drawn_by", "")
 
 
 def _clear_failure(*left: Path) -> None:
@@ -66,6 +73,7 @@ def assert_image_matches(
     __tracebackhide__ = True  # pytest shows the caller's line and the message, not this body
     golden = Path(golden_path)
     actual = _array(image)
+    drawn_by = _drawn_by(image)
     tol, frac, side = _defaults(tolerance, pixels, square)
     updating = update if update is not None else _settings["update"]
     folder = Path(failures if failures is not None else _settings["failures"])
@@ -83,13 +91,13 @@ def assert_image_matches(
             result = compare(actual, expected, tolerance=tol, pixels=frac, square=side)
     if updating or (result is not None and result.same):
         if updating and (result is None or not result.same):
-            _write(golden, actual)
+            _write(golden, actual, drawn_by)
             _written.append(
                 (os.fspath(golden), "added" if result is None and unreadable is None else "changed")
             )
         _clear_failure(new, diff, was)
         return
-    _write(new, actual)
+    _write(new, actual, drawn_by)
     if unreadable is not None:
         raise AssertionError(
             f"{unreadable}; the new image is {new} (pytest --snapshot-update, or update=True, "
@@ -100,20 +108,33 @@ def assert_image_matches(
             f"{golden}: no golden image; the new image is {new} (pytest "
             "--snapshot-update, or update=True, writes it as the golden)"
         )
-    raise AssertionError(_differs(golden, result, tol, actual, expected, new, diff, was))
+    hint = _other_rasteriser(golden, drawn_by)
+    raise AssertionError(_differs(golden, result, (tol, frac, side), actual, expected, new, diff, was, hint))
 
 
-def _differs(golden: Path, result, tol: int, actual, expected, new: Path, diff: Path, was: Path):
-    """A mismatch's message, having written its diff image (where the sizes agree) and the
-    golden's copy beside the new image."""
-    message = f"{golden}: differs: {result.describe(tol)}; the new image is {new}"
+def _other_rasteriser(golden: Path, drawn_by: str) -> str:
+    """As `rattleback snapshot` says it: a golden drawn by another rasteriser than this image is
+    the likely cause of a difference."""
+    from . import _draw
+
+    then = _draw.png_drawn_by(os.fspath(golden))
+    if not drawn_by or not then or then == drawn_by:
+        return ""
+    return f"; the golden was drawn by {then}, this by {drawn_by}: a golden holds for the rasteriser that drew it"
+
+
+def _differs(golden: Path, result, tolerances, actual, expected, new: Path, diff: Path, was: Path, hint: str):
+    """A mismatch's message (its figures as `rattleback snapshot` says them), having written its
+    diff image (where the sizes agree) and the golden's copy beside the new image."""
+    tol = tolerances[0]
+    message = f"{golden}: differs: {result.describe(*tolerances)}; the new image is {new}"
     if result.same_size:
         from . import _draw
 
         _write(diff, _draw.diff_image(actual, expected, tol))
         message += f", the diff image {diff}"
     shutil.copyfile(golden, was)
-    message += f", the golden copied as {was}"
+    message += f", the golden copied as {was}{hint}"
     return message + " (pytest --snapshot-update writes the new one as the golden)"
 
 
@@ -145,14 +166,23 @@ class SnapshotCase:
         import rattleback as rb
 
         backend = self.backend or os.environ.get("RATTLEBACK_BACKEND") or "auto"
-        return rb.still(
-            self.scene,
-            self.t,
-            view=self.view,
-            size=self.size,
-            backend=backend,
-            title=self.title if self.title is not None else self.name,
-        )
+        try:
+            return rb.still(
+                self.scene,
+                self.t,
+                view=self.view,
+                size=self.size,
+                backend=backend,
+                title=self.title if self.title is not None else self.name,
+            )
+        except (ValueError, RuntimeError) as e:
+            # The suite's line and the case first, as the command line names them; the time is
+            # the case's key t, not an argument (a run too short to reverse is lengthened in
+            # the scene: a suite has no duration of its own).
+            said = str(e).replace("argument t ", "t ", 1)
+            said = said.replace("; a longer argument duration,", ": a longer one in the scene,", 1)
+            e.args = (f"{self.place}: {self.name}: {said}",) + e.args[1:]
+            raise
 
 
 def suite_cases(path: PathLike) -> list[SnapshotCase]:

@@ -315,3 +315,46 @@ def test_a_suite_files_cases_run_in_pytest_draw_what_the_command_line_draws(tmp_
     with pytest.raises(rb.SceneError) as caught:
         suite_cases(tmp_path / "bad.yaml")
     assert caught.value.line == 2 and "cases[0].tme is not a key of a case" in str(caught.value)
+
+
+def test_a_suite_case_in_pytest_says_what_the_command_line_says(tmp_path):
+    """A golden blessed from pytest is the command line's bytes (its PNG names the rasteriser,
+    as the command line's does), a mismatch gives the allowed share and a golden drawn by
+    another rasteriser is said, and a case that cannot be drawn is named by its suite line with
+    the suite's words for the way out."""
+    from rattleback import _draw
+    from rattleback.testing import assert_case_matches, suite_cases
+
+    ccw = tmp_path / "ccw.yaml"
+    ccw.write_text(open(scene_path("rattleback.yaml")).read().replace("spin: -5.0", "spin: 5.0"))
+    assert "spin: 5.0" in ccw.read_text()
+    (tmp_path / "suite.yaml").write_text(
+        f"size: 320x180\ncases:\n  - {{name: rest, scene: {scene_path('rattleback.yaml')}}}\n"
+    )
+    (tmp_path / "late.yaml").write_text("cases:\n  - {name: ccw, scene: ccw.yaml, t: reversal}\n")
+    cli("snapshot", "suite.yaml", "--update", "-q", cwd=tmp_path)
+    (rest,) = suite_cases(tmp_path / "suite.yaml")
+    (ccw_case,) = suite_cases(tmp_path / "late.yaml")
+    by_cli = rest.golden.read_bytes()
+    rest.golden.unlink()
+    assert_case_matches(rest, update=True)
+    assert rest.golden.read_bytes() == by_cli
+
+    # Another picture against it: the figures with the allowed share, as the command line's.
+    other = dataclasses.replace(rest, t=2.0)
+    with pytest.raises(AssertionError) as caught:
+        assert_case_matches(other, failures=tmp_path / "failures")
+    assert "differ by more than 2 in a channel (allowed 0.2000 %); largest" in str(caught.value)
+    # A golden drawn elsewhere: both rasterisers named.
+    _draw.write_png(str(rest.golden), _draw.read_png(str(rest.golden)), drawn_by="NVIDIA GeForce")
+    with pytest.raises(AssertionError) as caught:
+        assert_case_matches(other, failures=tmp_path / "failures")
+    assert "; the golden was drawn by NVIDIA GeForce, this by " in str(caught.value)
+
+    # Spun its preferred way it does not reverse in 8 s: the suite's line, the case, and a
+    # longer run in the scene (a suite has no duration of its own).
+    with pytest.raises(ValueError) as caught:
+        assert_case_matches(ccw_case)
+    said = str(caught.value)
+    assert said.startswith(f"{ccw_case.place}: ccw: t reversal: the run has no reversal"), said
+    assert "simulation.duration: a longer one in the scene" in said
