@@ -240,9 +240,11 @@ void drawSpinInset(Image& image, Overlay& font, std::span<const std::array<float
   };
   // A reversal the curve has reached: a dark tick across the band, under the curve, where n
   // crosses zero for good.
-  const double now = history.empty() ? 0 : history.back()[0];
+  // (In the history's float: a still drawn at its reversal, t = the reversal's double, had the
+  // curve end a float's rounding before it, and no tick.)
+  const float now = history.empty() ? 0 : history.back()[0];
   for (double t : reversals) {
-    if (t > now || t > duration) continue;
+    if (static_cast<float>(t) > now || t > duration) continue;
     const float x = to_screen({static_cast<float>(t), 0})[0];
     drawLine(image, x, top, x, bottom, curve, {30, 30, 30, 255});
   }

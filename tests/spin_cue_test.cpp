@@ -4,6 +4,7 @@
 // by a Renderer directly from frame values (no run), so each property is one change of input.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <memory>
@@ -202,4 +203,19 @@ TEST(SpinCue, AnArrowsEndsStopShortOfTheTextBoxes) {
   const render::Box all[] = {{-5, 0, 105, 100}};
   EXPECT_TRUE(render::endsClearOf(arc, all, 0).empty());
   EXPECT_EQ(render::endsClearOf(arc, {}, 100).size(), arc.size());
+}
+
+// A frame drawn at its reversal's own time (a still at t: reversal) has the inset's tick: the
+// curve's times are floats, and a reversal at 2.0000000001 s, after the float 2.0 the curve
+// ends at, had been left out. Only the inset's rows are compared (the badge is at the top).
+TEST(SpinCue, AFrameAtItsReversalHasTheTick) {
+  const double t = 2.0000000001;
+  ASSERT_LT(static_cast<double>(static_cast<float>(t)), t);
+  const render::Image ticked = draw(-0.3, t, {t}), plain = draw(-0.3, t, {});
+  const std::size_t from =
+      static_cast<std::size_t>(render::insetTop(plain.height)) * plain.width * 4;
+  EXPECT_FALSE(std::equal(ticked.rgba.begin() + static_cast<std::ptrdiff_t>(from),
+                          ticked.rgba.end(),
+                          plain.rgba.begin() + static_cast<std::ptrdiff_t>(from)))
+      << "no tick in the inset at the reversal's own time";
 }
