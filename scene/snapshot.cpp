@@ -245,19 +245,21 @@ SnapshotSuite readSuite(const YAML::Node& root, const std::string& path) {
               "must be a list of one case or more (cases: [{name: NAME, scene: FILE.yaml}])"};
   // Names as a folder of goldens tells them apart: on macOS's and Windows' file systems A.png and
   // a.png are one file, so names that differ only by case would share a golden there.
-  std::map<std::string, std::string> names;
+  std::map<std::string, std::pair<std::string, int>> names;  // folded: as written, its line
   for (std::size_t i = 0; i < cases.size(); ++i) {
     SnapshotCase c = readCase(cases[i], defaults, static_cast<int>(i), path);
     std::string folded = c.name;
     for (char& ch : folded) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    if (const auto [earlier, fresh] = names.emplace(folded, c.name); !fresh)
+    if (const auto [earlier, fresh] = names.emplace(folded, std::pair{c.name, lineOf(cases[i])});
+        !fresh) {
+      const auto& [name, line] = earlier->second;
       throw Bad{
           lineOf(cases[i]), "cases[" + std::to_string(i) + "].name",
-          "'" + c.name + "' names an earlier case too" +
-              (earlier->second == c.name
-                   ? ""
-                   : " ('" + earlier->second + "', as a file system that ignores case reads it)") +
+          "'" + c.name + "' names the case at line " + std::to_string(line) + " too" +
+              (name == c.name ? ""
+                              : " ('" + name + "', as a file system that ignores case reads it)") +
               ": each case needs its own golden"};
+    }
     c.scene = resolved(folder, c.scene_as_written);
     suite.cases.push_back(std::move(c));
   }

@@ -58,7 +58,7 @@ TEST(SnapshotSuite, ABadFileIsOneLineNamingFileLineAndKey) {
   const std::pair<const char*, const char*> bad[] = {
       {"cases: [{name: a, scene: s.yaml, colour: red}]", "s.yaml:1: cases[0].colour is not a key"},
       {"cases:\n  - {name: a, scene: s.yaml}\n  - {name: a, scene: t.yaml}",
-       "s.yaml:3: cases[1].name 'a' names an earlier case"},
+       "s.yaml:3: cases[1].name 'a' names the case at line 2 too: each case needs its own golden"},
       {"cases:\n  - {name: a}", "s.yaml:2: cases[0].scene is required"},
       {"cases:\n  - {name: a, scene: s.yaml, t: soon}", "s.yaml:2: cases[0].t must be a time"},
       {"cases:\n  - {name: a, scene: s.yaml, t: -1}", "s.yaml:2: cases[0].t must be a time"},
@@ -76,8 +76,8 @@ TEST(SnapshotSuite, ABadFileIsOneLineNamingFileLineAndKey) {
        "s.yaml:1: tolerence is not a key of a suite (goldens, cases, view, size, backend, "
        "tolerance, pixels, square); did you mean tolerance?"},
       {"cases:\n  - {name: Front, scene: s.yaml}\n  - {name: front, scene: t.yaml}",
-       "s.yaml:3: cases[1].name 'front' names an earlier case too ('Front', as a file system that "
-       "ignores case reads it)"},
+       "s.yaml:3: cases[1].name 'front' names the case at line 2 too ('Front', as a file system "
+       "that ignores case reads it)"},
       {"goldens: g", "s.yaml:1: cases must be a list"},
       {"cases: [{name: a, scene: s.yaml}", "s.yaml:1: malformed YAML"},
   };
