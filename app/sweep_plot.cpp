@@ -92,7 +92,7 @@ double metricOf(const std::string& line, std::size_t axes, const tasks::SweepCol
 }
 
 // Each line's forecast_s, to draw beside its first reversal (the theory against the runs: what a
-// student's lab plots), where the table has it and the plot is of first_reversal_s; else none.
+// lab plots), where the table has it and the plot is of first_reversal_s; else none.
 std::vector<double> forecastsOf(const std::vector<std::string>& lines, std::size_t axes,
                                 const tasks::SweepColumns& columns, tasks::SweepMetric metric) {
   std::vector<double> f;

@@ -182,7 +182,7 @@ TEST(SpinCue, ReversalIsMarkedOnlyAfterIt) {
 }
 
 // The inset and the floor's scale are drawn over the arrow; an end of the arrow that would run
-// under either stops short of it (a student's long body seen from above showed the tail under
+// under either stops short of it (a long body seen from above had put the tail under
 // the inset): the points of an arc's ends within the margin of a box go, the rest stay, even
 // where its middle passes near one; an arc wholly under a box is none.
 TEST(SpinCue, AnArrowsEndsStopShortOfTheTextBoxes) {

@@ -22,7 +22,7 @@ PathLike = Union[str, os.PathLike]
 
 # What the pytest plugin sets from its options (and what a caller's own arguments override).
 _settings: dict[str, Any] = {"update": False, "failures": "snapshot-failures"}
-# The goldens written in this session, (path, "added" or "changed"): the plugin's summary says
+# The goldens written in this session, (path, "added", "changed" or "replaced"): the plugin's summary says
 # them, as `rattleback snapshot --update` does, so that an update left on in CI is seen.
 _written: list[tuple[str, str]] = []
 
@@ -34,6 +34,12 @@ def _write(path: Path, array, drawn_by: str = "") -> None:
     # (a temporary file renamed into place; its Software text the rasteriser, as the command
     # line writes it, so that a golden blessed by either is the same bytes)
     _draw.write_png(os.fspath(path), array, drawn_by=drawn_by)
+
+
+def _written_as(result, unreadable) -> str:
+    """What writing a golden did to it, as `rattleback snapshot --update` says each: one that was
+    not a PNG (a Git LFS pointer) is replaced."""
+    return "replaced" if unreadable is not None else "added" if result is None else "changed"
 
 
 def _drawn_by(image) -> str:
@@ -92,9 +98,7 @@ def assert_image_matches(
     if updating or (result is not None and result.same):
         if updating and (result is None or not result.same):
             _write(golden, actual, drawn_by)
-            _written.append(
-                (os.fspath(golden), "added" if result is None and unreadable is None else "changed")
-            )
+            _written.append((os.fspath(golden), _written_as(result, unreadable)))
         _clear_failure(new, diff, was)
         return
     _write(new, actual, drawn_by)
@@ -237,7 +241,7 @@ def pytest_configure(config) -> None:
 def pytest_terminal_summary(terminalreporter) -> None:
     if not _written:
         return
-    counts = {kind: sum(1 for _, k in _written if k == kind) for kind in ("changed", "added")}
+    counts = {kind: sum(1 for _, k in _written if k == kind) for kind in ("changed", "added", "replaced")}
     said = ", ".join(f"{n} {kind}" for kind, n in counts.items() if n)
     terminalreporter.section("rattleback snapshot --snapshot-update")
     terminalreporter.write_line(f"goldens written: {said}")

@@ -119,9 +119,14 @@ def test_a_golden_that_is_not_a_png_is_said_and_update_replaces_it(tmp_path, pic
         assert_image_matches(picture, golden, failures=failures)
     assert "--snapshot-update" in str(caught.value)
     assert (failures / "rest-new.png").is_file()
+    from rattleback import testing
+
+    written = len(testing._written)
     assert_image_matches(picture, golden, update=True, failures=failures)
     assert rb.compare(picture, golden).same
     assert not (failures / "rest-new.png").exists()
+    # Listed as `rattleback snapshot --update` says it.
+    assert testing._written[written:] == [(str(golden), "replaced")]
 
 
 def test_the_pytest_plugin_writes_goldens_with_snapshot_update(tmp_path):

@@ -1,5 +1,5 @@
 """A sweep's line plot of first_reversal_s draws the theory's forecast_s beside it when the
-table has that column (a student's lab plots the two together), read off the PNG's pixels."""
+table has that column (what a lab plots), read off the PNG's pixels."""
 
 import numpy as np
 
