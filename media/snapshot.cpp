@@ -38,6 +38,7 @@ CaseResult runCase(const scene::SnapshotSuite& suite, const scene::SnapshotCase&
   request.t = c.t.seconds;
   request.t_name = c.t.named;
   request.t_named = c.place + ": " + c.name + ": t";
+  request.scene_duration_only = true;  // (a suite has no duration of its own)
   request.title = c.title ? *c.title : c.name;
   request.backend = c.backend.value_or(backend);
   request.asked_by = c.place + ": " + c.name;

@@ -21,7 +21,8 @@ rb::Result<std::optional<double>> stillTime(const tasks::LoadedScene& loaded,
                                             const StillRequest& request, tasks::Outcome& outcome) {
   if (!request.t_name) return std::optional<double>(request.t);
   sim::Rollout run(loaded.model);
-  auto t = tasks::resolveStillTime({0, request.t_name}, run, request.t_named, request.cancelled);
+  auto t = tasks::resolveStillTime({0, request.t_name}, run, request.t_named, request.cancelled,
+                                   request.scene_duration_only);
   outcome = tasks::outcomeOf(run.summary());
   if (request.cancelled && request.cancelled()) outcome.ending = tasks::Ending::Interrupted;
   if (outcome.ending != tasks::Ending::Completed) return std::optional<double>();

@@ -25,8 +25,11 @@ struct StillRequest {
   /// that its golden does not depend on where the scene file is); the spin is still said.
   std::optional<std::string> title;
   std::string t_named = "--t";  ///< t as messages name it: the option, "argument t" in Python
-  bool readouts = true;         ///< title, read-outs and the spin inset
-  bool transparent = false;     ///< alpha: no floor, no background, no read-outs
+  /// The caller has no duration argument (a snapshot case): a run too short to reach the time
+  /// named is lengthened by the scene's simulation.duration alone.
+  bool scene_duration_only = false;
+  bool readouts = true;      ///< title, read-outs and the spin inset
+  bool transparent = false;  ///< alpha: no floor, no background, no read-outs
   render::Backend backend = render::Backend::Auto;
   /// What an OpenGL fault's line begins with: the command, or a snapshot case's place and name.
   std::string asked_by = "still";

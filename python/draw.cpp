@@ -76,11 +76,13 @@ render::Image imageOf(
 // still` lists its PNG): the scene's name, the view, the initial spin and t.
 py::tuple still(const LoadedScene& loaded, const std::variant<double, std::string>& t,
                 bool readouts, bool transparent, const std::string& backend,
-                const std::optional<std::string>& title) {
+                const std::optional<std::string>& title, const std::string& t_named,
+                bool scene_duration_only) {
   media::StillRequest request;
   request.title = title;
   request.scene_name = loaded.value.scene.file;
-  request.t_named = "argument t";
+  request.t_named = t_named;
+  request.scene_duration_only = scene_duration_only;
   if (const auto* name = std::get_if<std::string>(&t)) {
     // A word names a moment of the run ("reversal"); a number's text is refused (t="1.5"), as a
     // Python number is what a time in seconds is given as.
@@ -270,7 +272,8 @@ PYBIND11_MODULE(_draw, m) {
   // Messages name "argument crf", not "--crf" (each module holds its own copy of the style).
   rb::argument_style = rb::ArgumentStyle::Keyword;
   m.def("still", &still, py::arg("scene"), py::arg("t"), py::arg("readouts"),
-        py::arg("transparent"), py::arg("backend"), py::arg("title") = py::none());
+        py::arg("transparent"), py::arg("backend"), py::arg("title") = py::none(),
+        py::arg("t_named") = "argument t", py::arg("scene_duration_only") = false);
   m.def("render", &renderVideos, py::arg("scene"), py::arg("output"), py::arg("both"),
         py::arg("crf"), py::arg("preset"), py::arg("backend"));
   m.def("encode_png", &encodePngOf, py::arg("array"), py::arg("drawn_by") = "");

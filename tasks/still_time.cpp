@@ -9,10 +9,10 @@
 namespace tasks {
 namespace {
 
-// The way to a longer run in the caller's words: a snapshot suite has no duration of its own,
-// so there it is the scene's.
-std::string longerDuration() {
-  if (rb::argument_style.load() == rb::ArgumentStyle::Key) return ": a longer one in the scene";
+// The way to a longer run in the caller's words: the front end's duration argument, or the
+// scene's own where the caller has none (a snapshot suite).
+std::string longerDuration(bool scene_duration_only) {
+  if (scene_duration_only) return ": a longer one in the scene";
   return "; a longer " + rb::argumentName("duration");
 }
 
@@ -36,7 +36,8 @@ rb::Result<StillTime> parseStillTime(std::string_view text, const std::string& o
 
 rb::Result<double> resolveStillTime(const StillTime& time, sim::Rollout& run,
                                     const std::string& option,
-                                    const std::function<bool()>& cancelled) {
+                                    const std::function<bool()>& cancelled,
+                                    bool scene_duration_only) {
   if (!time.named) return time.seconds;
   const double duration = run.endTime();
   if (*time.named == NamedTime::End) return duration;
@@ -53,7 +54,7 @@ rb::Result<double> resolveStillTime(const StillTime& time, sim::Rollout& run,
   if (const auto& first = run.summary().first_reversal_s) return *first;
   return rb::Error{"", option + " " + std::string(rb::nameOf(*time.named)) +
                            ": the run has no reversal within its " + rb::show(duration) +
-                           " s (simulation.duration" + longerDuration() +
+                           " s (simulation.duration" + longerDuration(scene_duration_only) +
                            ", or the other spin, may reverse)"};
 }
 

@@ -25,9 +25,11 @@ rb::Result<StillTime> parseStillTime(std::string_view text, const std::string& o
 /// as far as it must: to the first reversal counted, or not at all for `end`. Refused with a
 /// line naming `option` when the run has no reversal within its duration. `cancelled` (may be
 /// empty) is asked between slices of the run; the caller reads a stopped run from run.summary()
-/// and a cancel from `cancelled` (no time then).
+/// and a cancel from `cancelled` (no time then). `scene_duration_only`: the caller has no
+/// duration argument (a snapshot suite), so the way to a longer run is the scene's key alone.
 rb::Result<double> resolveStillTime(const StillTime& time, sim::Rollout& run,
                                     const std::string& option,
-                                    const std::function<bool()>& cancelled = {});
+                                    const std::function<bool()>& cancelled = {},
+                                    bool scene_duration_only = false);
 
 }  // namespace tasks

@@ -412,19 +412,29 @@ def still(
         title: the frame's title instead of the scene's name and values (the spin is said
             after it): a golden image then does not depend on the scene file's name.
     """
+    loaded = _scene(scene)._load(view=view, size=size, spin=spin, frame=frame, surface=surface)
+    image, leaves = _drawn_still(loaded, t, readouts, transparent, backend, title)
+    _warn_leaves(loaded, leaves)
+    return image
+
+
+def _drawn_still(loaded, t, readouts, transparent, backend, title, **named) -> tuple[Image, Optional[str]]:
+    # The still of a loaded scene, and where the body leaves the frame. `named`: how messages
+    # name the time and the way to a longer run, where the caller is not still()'s (a snapshot
+    # suite's case: its key t, and the scene's duration alone).
     from . import _draw
 
-    loaded = _scene(scene)._load(view=view, size=size, spin=spin, frame=frame, surface=surface)
     when = t if isinstance(t, str) else float(t)
-    array, listed, leaves = _draw.still(loaded, when, bool(readouts), bool(transparent), backend, title)
-    _warn_leaves(loaded, leaves)
-    return Image(array, listed)
+    array, listed, leaves = _draw.still(
+        loaded, when, bool(readouts), bool(transparent), backend, title, **named
+    )
+    return Image(array, listed), leaves
 
 
-def _warn_leaves(loaded, leaves: Optional[str]) -> None:
+def _warn_leaves(loaded, leaves: Optional[str], stacklevel: int = 4) -> None:
     # What the command line warns of when the body goes out of the frame asked for.
     if leaves:
-        _warnings.warn(RunWarning(f"{loaded.file}: {leaves}", "body_leaves_frame"), stacklevel=4)
+        _warnings.warn(RunWarning(f"{loaded.file}: {leaves}", "body_leaves_frame"), stacklevel=stacklevel)
 
 
 @_checked

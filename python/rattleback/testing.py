@@ -170,23 +170,21 @@ class SnapshotCase:
         import rattleback as rb
 
         backend = self.backend or os.environ.get("RATTLEBACK_BACKEND") or "auto"
+        title = self.title if self.title is not None else self.name
         try:
-            return rb.still(
-                self.scene,
-                self.t,
-                view=self.view,
-                size=self.size,
-                backend=backend,
-                title=self.title if self.title is not None else self.name,
+            loaded = rb._scene(self.scene)._load(view=self.view, size=self.size)
+            # Messages name the time as the suite's key t, and a run too short to reach it is
+            # lengthened in the scene (a suite has no duration of its own), as the command
+            # line's snapshot says.
+            image, leaves = rb._drawn_still(
+                loaded, self.t, True, False, backend, title, t_named="t", scene_duration_only=True
             )
         except (ValueError, RuntimeError) as e:
-            # The suite's line and the case first, as the command line names them; the time is
-            # the case's key t, not an argument (a run too short to reverse is lengthened in
-            # the scene: a suite has no duration of its own).
-            said = str(e).replace("argument t ", "t ", 1)
-            said = said.replace("; a longer argument duration,", ": a longer one in the scene,", 1)
-            e.args = (f"{self.place}: {self.name}: {said}",) + e.args[1:]
+            # The suite's line and the case first, as the command line names them.
+            e.args = (f"{self.place}: {self.name}: {e}",) + e.args[1:]
             raise
+        rb._warn_leaves(loaded, leaves, stacklevel=3)
+        return image
 
 
 def suite_cases(path: PathLike) -> list[SnapshotCase]:

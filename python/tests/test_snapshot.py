@@ -363,3 +363,7 @@ def test_a_suite_case_in_pytest_says_what_the_command_line_says(tmp_path):
     said = str(caught.value)
     assert said.startswith(f"{ccw_case.place}: ccw: t reversal: the run has no reversal"), said
     assert "simulation.duration: a longer one in the scene" in said
+    # The command line's snapshot says the same line, as a case it cannot draw (status 2).
+    by_cli = cli("snapshot", "late.yaml", "-q", cwd=tmp_path, check=False)
+    # (The suite named as given: here by its folder.)
+    assert by_cli.returncode == 2 and by_cli.stderr == said.replace(f"{tmp_path}/", "") + "\n"
