@@ -215,15 +215,10 @@ rb::Status writeJunit(const std::string& path, const scene::SnapshotSuite& suite
 rb::Status writeJunitRefusal(const std::string& path, const std::string& file,
                              const rb::Error& error) {
   const std::string name = xmlText(fs::path(file).stem().string());
-  // The suite's line where the message begins with it ("suite.yaml:7: case: …", a case whose
-  // scene is at fault), else where the error itself is.
-  std::string at_file = error.where ? error.where->file : file;
-  int at_line = error.where ? error.where->line : 0;
-  const std::string text = error.text();
-  if (text.starts_with(file + ":")) {
-    at_file = file;
-    at_line = std::atoi(text.c_str() + file.size() + 1);
-  }
+  // Where the error is: the suite's line (a case whose scene is at fault is placed at the
+  // case), else the suite itself.
+  const std::string at_file = error.where ? error.where->file : file;
+  const int at_line = error.where ? error.where->line : 0;
   std::string place = " file=\"" + xmlText(at_file) + "\"";
   if (at_line > 0) place += " line=\"" + std::to_string(at_line) + "\"";
   if (auto made = tasks::makeParentFolder(path); !made) return made;

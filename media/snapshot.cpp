@@ -80,9 +80,11 @@ rb::Result<std::vector<tasks::LoadedScene>> loadCases(const scene::SnapshotSuite
     auto loaded = tasks::loadScene(c.scene, overridesOf(c));
     if (!loaded) {
       rb::Error e = loaded.error();
-      // The scene's own words already name its file; the case's place says which case.
+      // The scene's own words already name its file; the case's place says which case, and
+      // the error is the suite's at that line (where a report such as JUnit's puts it).
       if (!e.text().starts_with(c.place)) e.message = c.place + ": " + c.name + ": " + e.text();
       e.key.clear();
+      e.where = rb::Error::Where{suite.file, c.line, ""};
       return e;
     }
     scenes.push_back(std::move(loaded).value());

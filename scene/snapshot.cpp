@@ -209,6 +209,7 @@ SnapshotCase readCase(const YAML::Node& node, const SnapshotCase& defaults, int 
   const int line = lineOf(node);
   const std::string prefix = "cases[" + std::to_string(index) + "].";
   c.place = file + ":" + std::to_string(line);
+  c.line = line;
   readMap(node, W::Case, line, prefix,
           [&](const SnapshotKey& k, const YAML::Node& v, int at, const std::string& key) {
             putValue(k, v, at, key, c);

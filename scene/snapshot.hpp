@@ -53,6 +53,7 @@ std::span<const SnapshotKey> snapshotKeys();
 struct SnapshotCase {
   std::string name;   ///< its golden is GOLDENS/NAME.png
   std::string place;  ///< "suite.yaml:7", where the case begins (for messages)
+  int line = 0;       ///< 7: the line of `place`
   std::string scene;  ///< the scene's path, resolved against the suite file's folder
   std::string scene_as_written;
   sim::RunTime t;

@@ -254,7 +254,7 @@ def test_the_command_lines_junit_says_each_cases_verdict_as_the_terminal_does(tm
 
     # A suite that cannot run replaces the last run's XML with one error at the line at fault (it
     # had been left as it was: green cases in the CI's view of a job that failed), for a key
-    # misspelt and for a case whose scene is missing.
+    # misspelt, for a case whose scene is missing and for one whose scene has a mistake.
     good = (tmp_path / "suite.yaml").read_text()
     for broken, line, words in (
         (good.replace("t: 1}", "tt: 1}"), "4", "cases[1].tt is not a key of a case"),
@@ -263,7 +263,14 @@ def test_the_command_lines_junit_says_each_cases_verdict_as_the_terminal_does(tm
             "5",
             "gone: nope.yaml: cannot open",
         ),
+        # A scene with a mistake of its own: the case's line, the scene's line in the message.
+        (
+            good.replace("t: 1}", "t: 1}\n  - {name: typo, scene: typo.yaml}"),
+            "5",
+            "typo: typo.yaml:2: simulation.durration",
+        ),
     ):
+        (tmp_path / "typo.yaml").write_text("simulation:\n  durration: 3\n")
         (tmp_path / "suite.yaml").write_text(broken)
         run = cli("snapshot", "suite.yaml", "-q", "--junit", "out/j.xml", cwd=tmp_path, check=False)
         assert run.returncode == 2, run.stderr
