@@ -206,7 +206,9 @@ TEST(Auto, SamplesInASwitchStepBelongToTheModeInForce) {
       const bool at_a_switch = std::any_of(changes.begin(), changes.end(), [&](const auto& c) {
         return std::abs(c.first - s.t) < 1e-9;
       });
-      if (!at_a_switch) EXPECT_EQ(s.mode, inForce(s.t)) << "t = " << s.t;
+      if (!at_a_switch) {
+        EXPECT_EQ(s.mode, inForce(s.t)) << "t = " << s.t;
+      }
       // A dip: below both neighbours by more than the smooth contact's own wobble allows.
       worst_dip = std::max(
           worst_dip, std::min(run.samples[i - 1].energy, run.samples[i + 1].energy) - s.energy);

@@ -2438,7 +2438,9 @@ TEST(Cli, ReportCaptionsAVideoFromItsOwnRunWithoutTelemetry) {
   const nlohmann::json manifest =
       nlohmann::json::parse(std::ifstream(dir / "rattleback-manifest.json"));
   for (const nlohmann::json& e : manifest["outputs"])
-    if (e["role"] == "both") EXPECT_FALSE(e.contains("simulated_s")) << e;  // two runs, no one
+    if (e["role"] == "both") {
+      EXPECT_FALSE(e.contains("simulated_s")) << e;
+    }  // two runs, no one
   ASSERT_EQ(rattleback("report " + dir.string() + " -q").status, 0);
   const std::vector<std::string> said = captions((dir / "index.html").string());
   ASSERT_EQ(said.size(), 2u);
@@ -2644,11 +2646,12 @@ TEST(Cli, AGalliumDriverOsMesaLacksIsNamedNotCrashedOn) {
     egl = rattleback("still " + scene("rattleback") + " --backend egl -o " + png.string());
   }
   EXPECT_EQ(egl.status, 4) << egl.err;
-  if (egl.err.find("surfaceless") != std::string::npos)  // (a GPU's device platform needs none)
+  if (egl.err.find("surfaceless") != std::string::npos) {  // (a GPU's device platform needs none)
     EXPECT_NE(egl.err.find("with GALLIUM_DRIVER=bogus: unset GALLIUM_DRIVER or set it to "
                            "llvmpipe"),
               std::string::npos)
         << egl.err;
+  }
   EXPECT_FALSE(fs::exists(png));
 }
 
@@ -2827,7 +2830,9 @@ TEST(Report, ThePlayerIsFramedAndDrawnAsTheScenesPicturesWere) {
       0);
   for (const auto& entry :
        nlohmann::json::parse(readText(dir / "rattleback-manifest.json"))["outputs"])
-    if (entry["file"] == "rattleback-oblique.png") EXPECT_EQ(entry["frame_m"], 0.4) << entry;
+    if (entry["file"] == "rattleback-oblique.png") {
+      EXPECT_EQ(entry["frame_m"], 0.4) << entry;
+    }
   EXPECT_EQ(frameOf(), "0.4");  // 40 in the scene's cm
   auto drawsFaces = [&] { return readText(dir / "rattleback.player.js").find("\"faces\":"); };
   EXPECT_EQ(drawsFaces(), std::string::npos);  // points, as the scene and the still draw it
@@ -2841,7 +2846,9 @@ TEST(Report, ThePlayerIsFramedAndDrawnAsTheScenesPicturesWere) {
   EXPECT_NE(drawsFaces(), std::string::npos);
   for (const auto& entry :
        nlohmann::json::parse(readText(dir / "rattleback-manifest.json"))["outputs"])
-    if (entry["file"] == "rattleback.mp4") EXPECT_EQ(entry["surface"], "triangles") << entry;
+    if (entry["file"] == "rattleback.mp4") {
+      EXPECT_EQ(entry["surface"], "triangles") << entry;
+    }
 }
 
 // A teacher's own body spun the way it prefers (the default body with its dents mirrored, spun
@@ -3300,8 +3307,9 @@ TEST(Report, StillsAndPlotsHaveCaptions) {
       << html;
   EXPECT_NE(html.find("alt=\"toy-above.png\""), std::string::npos) << html;
   EXPECT_NE(html.find("<figcaption>toy-above.png</figcaption>"), std::string::npos) << html;
-  if (fs::exists(dir / "rattleback-spin.png"))  // gnuplot drew it
+  if (fs::exists(dir / "rattleback-spin.png")) {  // gnuplot drew it
     EXPECT_NE(html.find("<figcaption>spin n against time"), std::string::npos) << html;
+  }
 }
 
 // A file's name in a link: unreserved bytes and '/' as they are, every other byte of its UTF-8 as
@@ -3373,8 +3381,9 @@ TEST(Report, EveryLinkOfAnOddlyNamedSceneFindsItsFile) {
   for (const std::string& file : files) EXPECT_TRUE(fs::is_regular_file(dir / file)) << file;
   for (const char* shown : {"<h2>my top #1</h2>", "<h2>wälze&amp;co</h2>"})
     EXPECT_NE(html.find(shown), std::string::npos) << shown;  // the text stays as named
-  if (fs::exists(dir / "my top #1.player.js"))
+  if (fs::exists(dir / "my top #1.player.js")) {
     EXPECT_NE(std::find(files.begin(), files.end(), "my top #1.player.js"), files.end()) << html;
+  }
 }
 
 // A folder with nothing of ours still gets its page (a CI step may open it), and one line on

@@ -327,8 +327,9 @@ TEST(SceneOptions, EachPutsItsValueIntoItsKeysOwnMember) {
     tasks::OptionValue value;
     value.number = std::strtod(sample.c_str(), nullptr);
     value.name = sample;
-    if (row.kind == tasks::OptionKind::Size)
+    if (row.kind == tasks::OptionKind::Size) {
       ASSERT_EQ(std::sscanf(sample.c_str(), "[%d, %d]", &value.size[0], &value.size[1]), 2);
+    }
     scene::Loaded loaded;
     ASSERT_NE(normal(scene::valueOf(*key, loaded)), normal(sample)) << row.key;
     row.apply(loaded, value);

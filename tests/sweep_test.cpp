@@ -372,9 +372,9 @@ TEST(Sweep, AnAxisRollingDoesNotUseIsSaidToBe) {
   ASSERT_LT(final_spin, rows[0].size());
   EXPECT_EQ(rows[1][final_spin], rows[2][final_spin]);  // the same to the bit: as the note says
   EXPECT_EQ(rattleback(dir, "sweep " + friction.string() + " -q" + table).err, "");
-  for (const std::string& vary : {"  contact.air_drag: [0.0, 1.0e-5]\n",
-                                  "  contact.friction: [0.1, 0.5]\n"
-                                  "  contact.model: [rolling]\n"}) {
+  for (const char* vary : {"  contact.air_drag: [0.0, 1.0e-5]\n",
+                           "  contact.friction: [0.1, 0.5]\n"
+                           "  contact.model: [rolling]\n"}) {
     const fs::path quiet =
         writeSweep(dir, "base: " + kBase + "\nvary:\n" + vary + "duration: 0.2\n");
     const Outcome none = rattleback(dir, "sweep " + quiet.string() + table);
