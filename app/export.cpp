@@ -6,6 +6,7 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "scene/loader.hpp"
 #include "scene/mesh_file.hpp"
 #include "sim/mesh.hpp"
 #include "tasks/body_mesh.hpp"
@@ -33,7 +34,10 @@ int exportCommand(const ExportArgs& args) {
   if (!loaded) return fail(loaded);
   noteShipped(args.scene);
   const std::string output = args.output.empty() ? defaultOutput(args.scene) : args.output;
-  if (auto ok = rb::checkDataOutput(output, "an STL mesh", ".stl", {args.scene}); !ok)
+  // Not over the scene, nor over the mesh it reads (a maker's `-o hull.stl` of hull.stl).
+  if (auto ok = rb::checkDataOutput(output, "an STL mesh", ".stl",
+                                    scene::filesRead(loaded.value().scene));
+      !ok)
     return fail(ok);
   if (std::filesystem::path(output).extension() != ".stl")
     return fail(rb::Status::fail("-o " + output +

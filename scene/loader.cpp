@@ -325,14 +325,19 @@ rb::Error setBy(const std::string& place, const std::string& set_key, const rb::
   return e;
 }
 
+// body.mesh.file as a path from here: the key's is relative to the scene file.
+std::filesystem::path meshPath(const Loaded& loaded) {
+  std::filesystem::path path(loaded.spec.body.mesh.file);
+  if (path.is_relative()) path = std::filesystem::path(loaded.file).parent_path() / path;
+  return path;
+}
+
 // body.mesh.file, relative to the scene file, read into the spec (scene/mesh_file.hpp): an error
 // names the scene's file, line and key, then the mesh file and its cause.
 std::optional<rb::Error> readBodyMesh(Loaded& out,
                                       const std::map<std::string, std::string>& places) {
   sim::MeshSpec& mesh = out.spec.body.mesh;
-  std::filesystem::path path(mesh.file);
-  if (path.is_relative()) path = std::filesystem::path(out.file).parent_path() / path;
-  auto read = readMesh(path.string());
+  auto read = readMesh(meshPath(out).string());
   if (read) {
     mesh.data = std::make_shared<const sim::TriangleMesh>(std::move(read).value());
     return std::nullopt;
@@ -502,6 +507,13 @@ rb::Result<Loaded> loadWithValues(const std::string& yaml, const std::string& na
     loaded->content = std::move(content);
   }
   return loaded;
+}
+
+std::vector<std::string> filesRead(const Loaded& loaded) {
+  std::vector<std::string> files;
+  if (!loaded.file.empty()) files.push_back(loaded.file);
+  if (loaded.spec.body.mesh.data) files.push_back(meshPath(loaded).string());
+  return files;
 }
 
 rb::Result<Loaded> loadFile(const std::string& path) {

@@ -57,6 +57,10 @@ struct Loaded {
   std::string content;
 };
 
+/// The files the scene was made from: its own (when it has one) and the mesh its body reads,
+/// as paths from here, so that no output is written over one of them.
+std::vector<std::string> filesRead(const Loaded& loaded);
+
 /// Errors come back as rb::Error with an empty key and one line, ready to print:
 /// "file:line: key message".
 rb::Result<Loaded> loadFile(const std::string& path);

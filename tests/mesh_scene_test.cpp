@@ -61,6 +61,11 @@ TEST(MeshBody, ASpheresPointsLieOnItsUpperAndLowerHalves) {
 }
 
 // A scene's folder with `mesh` (written as OBJ) and a scene using it in mm.
+std::string fileBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
 struct Folder {
   fs::path dir;
   Folder() {
@@ -247,6 +252,24 @@ TEST(MeshScene, ExportedBodyReadsBackAsAMeshBodyWithItsMassProperties) {
     EXPECT_EQ(refused.err.find('\n'), refused.err.size() - 1) << refused.err;
   }
   EXPECT_FALSE(fs::exists(folder.dir / "body.png"));
+
+  // Not written over the mesh its scene reads (export of a mesh scene into its own file had
+  // replaced it, exit 0), named from another folder; nor a table named as a mesh.
+  const std::string mesh_scene = (folder.dir / "mesh.yaml").string();
+  const std::string bytes = fileBytes(stl);
+  const std::string same = (folder.dir / ".." / folder.dir.filename() / "body.stl").string();
+  for (const auto& [command, said] :
+       {std::pair<std::string, std::string>{
+            "export " + mesh_scene + " -o " + same,
+            "-o " + same + ": is one of its own inputs, which it would replace with an STL mesh"},
+        {"simulate " + mesh_scene + " -o " + (folder.dir / "t.stl").string(),
+         "writes a CSV table, not a .stl file"}}) {
+    const Outcome refused = run(command, folder);
+    EXPECT_EQ(refused.status, 2) << command;
+    EXPECT_NE(refused.err.find(said), std::string::npos) << refused.err;
+  }
+  EXPECT_EQ(fileBytes(stl), bytes);
+  EXPECT_FALSE(fs::exists(folder.dir / "t.stl"));
   const Outcome cut = run(
       "export " + shipped + " --set body.dents.scale=0.9 -o " + (folder.dir / "cut.stl").string(),
       folder);

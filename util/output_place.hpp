@@ -140,9 +140,10 @@ inline Status checkDataOutput(const std::string& output, const std::string& form
   std::string ext = std::filesystem::path(output).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return std::tolower(c); });
-  for (const char* other :
-       {".yaml", ".yml", ".png", ".jpg", ".jpeg", ".svg", ".pdf", ".mp4", ".html"})
-    if (ext == other)
+  // (A mesh's names too: a table named hull.stl would replace the body a scene reads.)
+  for (const char* other : {".yaml", ".yml", ".png", ".jpg", ".jpeg", ".svg", ".pdf", ".mp4",
+                            ".html", ".stl", ".obj", ".ply"})
+    if (ext == other && ext != wanted)
       return Status::fail(std::string(output_named_by) + " " + output + ": writes " + format +
                           ", not a " + ext + " file; give a name ending in " + wanted);
   return {};
