@@ -94,8 +94,11 @@ rb::Result<sim::TriangleMesh> parseBinaryStl(std::string_view bytes, std::string
   return std::move(welder.mesh());
 }
 
-// ASCII STL, token by token: "vertex x y z" three times a facet; the words between (facet,
-// normal, outer loop, endloop, endfacet, endsolid) are skipped. Lines are counted for messages.
+// ASCII STL, token by token: "vertex x y z" three times a facet; the other words of the format
+// (facet, normal and its numbers, outer loop, endloop, endfacet, and solid and endsolid with
+// their names) are skipped, and a word that is none of them is named at its line: a misspelt
+// "vertx" had been skipped too, and said only at the facet's end as a facet of two vertices.
+// Lines are counted for messages.
 class StlText {
  public:
   StlText(std::string_view text, std::string_view name) : text_(text), name_(name) {}
@@ -103,6 +106,7 @@ class StlText {
 
  private:
   std::string_view next();
+  void skipLine();
   std::string_view text_, name_;
   std::size_t pos_ = 0;
   int line_ = 1;
@@ -114,6 +118,18 @@ std::string_view StlText::next() {
   const std::size_t start = pos_;
   while (pos_ < text_.size() && !std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
   return text_.substr(start, pos_ - start);
+}
+
+// The rest of the line: a solid's name, which may be any words.
+void StlText::skipLine() {
+  while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+}
+
+// The words of ASCII STL other than "vertex", which parse() skips.
+bool skippedStlWord(std::string_view word) {
+  for (std::string_view known : {"facet", "outer", "loop", "endloop", "endfacet"})
+    if (word == known) return true;
+  return false;
 }
 
 rb::Result<sim::TriangleMesh> StlText::parse() {
@@ -130,7 +146,21 @@ rb::Result<sim::TriangleMesh> StlText::parse() {
                                     std::to_string(corners) + " vertices; STL facets have three");
       continue;
     }
-    if (word != "vertex") continue;
+    if (word == "solid" || word == "endsolid") {
+      skipLine();
+      continue;
+    }
+    if (word == "normal") {  // its three numbers, which the mesh does not need
+      for (int i = 0; i < 3; ++i) next();
+      continue;
+    }
+    if (skippedStlWord(word)) continue;
+    if (word != "vertex")
+      return fileError(name_, "line " + std::to_string(line_) + ": '" +
+                                  std::string(word.substr(0, 20)) +
+                                  "' is not a word of ASCII STL (solid, facet normal, outer loop, "
+                                  "vertex, endloop, endfacet, endsolid); is the file damaged? "
+                                  "export it again");
     Eigen::Vector3d p;
     for (int i = 0; i < 3; ++i) {
       const std::string_view number = next();

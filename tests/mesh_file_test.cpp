@@ -123,6 +123,21 @@ TEST(MeshFile, AsciiStlFaultsNameTheirLine) {
                 .find("a facet with 2 vertices"),
             std::string::npos);
   EXPECT_NE(errorOf("hello", scene::MeshFormat::Stl).find("is it an STL file?"), std::string::npos);
+  // A misspelt word is named at its own line, not skipped to fault the facet at its end.
+  std::string typo = asciiStl(cornerTetrahedron(1, 2, 3));
+  typo.replace(typo.find("vertex"), 6, "vertx");  // line 4
+  EXPECT_NE(
+      errorOf(typo, scene::MeshFormat::Stl).find("line 4: 'vertx' is not a word of ASCII STL"),
+      std::string::npos)
+      << errorOf(typo, scene::MeshFormat::Stl);
+  // A solid's name may be any words, several solids may follow one another, and a facet's normal
+  // may be any three tokens (exporters write nan): all read.
+  std::string named = asciiStl(cornerTetrahedron(1, 2, 3));
+  named.replace(0, named.find('\n'), "solid my hull vertex facet 2 (mm)");
+  const std::size_t normal = named.find("normal") + 7;
+  named.replace(normal, named.find('\n', normal) - normal, "nan nan nan");
+  const sim::TriangleMesh twice = parsed(named + named, scene::MeshFormat::Stl);
+  EXPECT_EQ(twice.faces.size(), 8u);
 }
 
 // A text file named .stl is said to be text (it had been measured as a binary STL: "a binary STL
