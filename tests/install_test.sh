@@ -46,6 +46,10 @@ for f in bin/rattleback share/rattleback/fonts.txt share/rattleback/shaders/poin
          lib/python3/dist-packages/rattleback/__init__.py; do
   [ -e "$work/prefix/$f" ] || { echo "FAIL: the install lacks $f"; exit 1; }
 done
+# The pages' includes written out (cmake/install_docs.cmake): the script, not the include line.
+page="$work/prefix/share/doc/rattleback/your-own-body.md"
+! grep -q -- '--8<--' "$page" || { echo "FAIL: $page keeps an include line"; exit 1; }
+grep -q '^def with_weight' "$page" || { echo "FAIL: $page lacks weighted_body.py's text"; exit 1; }
 render_still "$work/prefix"
 python_still "$work/prefix"
 # The documentation is installed, and the installed --help names where (it named "docs/ in the
