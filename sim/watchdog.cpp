@@ -2,8 +2,27 @@
 
 #include <cmath>
 #include <sstream>
+#include <string>
+
+#include "sim/bottom_fit.hpp"
 
 namespace sim {
+namespace {
+
+// Why a cap ends short of the fit's slope limit: the mesh's bottom is no smooth bowl beyond it
+// (it meets the body's sides or an edge there), so a toy that rocks further touches that edge.
+std::string capEnd(double cap_deg) {
+  if (cap_deg >= kFitSlopeLimitDeg - 0.5) return "";
+  std::ostringstream said;
+  said << " (the cap ends where the bottom stops being a smooth bowl, at its edge or where it "
+          "meets the sides, short of the "
+       << kFitSlopeLimitDeg
+       << " degrees the fit would take: a printed toy rocking this far rocks onto that edge; a "
+          "bowl that rises further before its edge gives a larger cap)";
+  return said.str();
+}
+
+}  // namespace
 
 Watchdog::Watchdog(double t0, double e0, bool in_air_at_start, std::string advice)
     : t0_(t0),
@@ -57,8 +76,8 @@ std::optional<Stop> Watchdog::observe(const StepEnd& end) {
     else
       msg << "the contact point left the mesh's fitted bottom (tilt " << *end.rim_tilt_deg
           << " degrees, beyond its cap of " << *end.cap_deg << " degrees) at t = " << end.t
-          << " s (step " << end.step
-          << "): the body rocked further than the smooth bottom describes, and no contact "
+          << " s (step " << end.step << ")" << capEnd(*end.cap_deg)
+          << ": the body rocked further than the smooth bottom describes, and no contact "
              "model follows a mesh body on from there with its spin (contact.model: points, "
              "with a contact.stiffness, shows its rocking and sliding, but resting on many "
              "points it loses the spin within a second: your-own-body.md, \"The fitted "

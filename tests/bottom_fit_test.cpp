@@ -230,12 +230,22 @@ TEST(BottomFit, ARollingMeshBodyThatRocksBeyondItsFittedCapStopsSayingSo) {
   ASSERT_TRUE(watchdog.observe(end));
   const std::string message = watchdog.message();
   EXPECT_NE(message.find("left the mesh's fitted bottom (tilt 16.49 degrees, beyond its cap of "
-                         "16.46 degrees) at t = 0.74 s (step 261): the body rocked further"),
+                         "16.46 degrees) at t = 0.74 s (step 261) (the cap ends where the bottom "
+                         "stops being a smooth bowl"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("a bowl that rises further before its edge gives a larger cap): the body "
+                         "rocked further"),
             std::string::npos)
       << message;
   EXPECT_EQ(message.find("initial.tilt"), std::string::npos) << message;
   // points is not a way to a reversal: it is said what it shows and what it loses.
   EXPECT_NE(message.find("loses the spin within a second"), std::string::npos) << message;
+  // A cap that reaches the fit's own slope limit ends there, not at an edge: no such words.
+  sim::Watchdog steep(0, 1.0, false, "");
+  end.rim_tilt_deg = 30.2, end.cap_deg = sim::kFitSlopeLimitDeg;
+  ASSERT_TRUE(steep.observe(end));
+  EXPECT_EQ(steep.message().find("smooth bowl"), std::string::npos) << steep.message();
 }
 
 }  // namespace
