@@ -24,6 +24,7 @@ std::optional<BothWays> bothWays(const scene::Sweep& sweep,
     bool clockwise = false, anticlockwise = false;  // a reversal spun that way
     bool exports = true;                            // every row's body exports
     std::vector<std::int64_t> rows;
+    std::optional<std::int64_t> clockwise_row, anticlockwise_row;  // the first reversing
   };
   std::map<std::vector<int>, Body> bodies;  // by the coordinates of every other axis
   for (std::int64_t row = 0; row < sweep.rows(); ++row) {
@@ -37,11 +38,25 @@ std::optional<BothWays> bothWays(const scene::Sweep& sweep,
     if (!exports.empty() && !(static_cast<std::size_t>(row) < exports.size() &&
                               exports[static_cast<std::size_t>(row)].value_or(false)))
       body.exports = false;
-    if (reversed && value < 0) body.clockwise = true;
-    if (reversed && value > 0) body.anticlockwise = true;
+    if (reversed && value < 0 && !body.clockwise_row) body.clockwise_row = row;
+    if (reversed && value > 0 && !body.anticlockwise_row) body.anticlockwise_row = row;
+    body.clockwise = body.clockwise_row.has_value();
+    body.anticlockwise = body.anticlockwise_row.has_value();
   }
+
   BothWays found;
   found.bodies = static_cast<std::int64_t>(bodies.size());
+  // A sweep of spins alone is one body: its first row each way is what to name.
+  if (bodies.size() == 1) {
+    const Body& body = bodies.begin()->second;
+    auto spinOf = [&](std::int64_t row) {
+      return sweep.axes[*spin].values[static_cast<std::size_t>(sweep.coordinates(row)[*spin])];
+    };
+    found.clockwise_row = body.clockwise_row;
+    found.anticlockwise_row = body.anticlockwise_row;
+    if (body.clockwise_row) found.clockwise_spin = spinOf(*body.clockwise_row);
+    if (body.anticlockwise_row) found.anticlockwise_spin = spinOf(*body.anticlockwise_row);
+  }
   for (std::size_t a = 0; a < sweep.axes.size(); ++a)
     if (a != *spin) found.other_keys.push_back(sweep.axes[a].key);
   // In the order of the rows: the first body found is the one with the lowest row.
@@ -66,7 +81,31 @@ std::optional<BothWays> bothWays(const scene::Sweep& sweep,
   return found;
 }
 
+namespace {
+
+// A sweep of spins alone: whether its body reverses both ways, and the first run that reverses
+// each way (a list of every row as "the first" body had said nothing).
+std::string describeOneBody(const BothWays& found) {
+  auto at = [](const std::optional<std::int64_t>& row, const std::string& spin) {
+    return "in row " + std::to_string(*row) + " (initial.spin " + spin + ")";
+  };
+  const bool cw = found.clockwise_row.has_value(), ccw = found.anticlockwise_row.has_value();
+  if (cw && ccw) {
+    std::string text = "the body reverses both ways: first spun clockwise " +
+                       at(found.clockwise_row, found.clockwise_spin) + ", counter-clockwise " +
+                       at(found.anticlockwise_row, found.anticlockwise_spin);
+    if (found.exporting) text += *found.exporting ? "; it exports a solid" : "; it exports none";
+    return text;
+  }
+  if (cw) return "the body reverses one way only: no run spun counter-clockwise reverses";
+  if (ccw) return "the body reverses one way only: no run spun clockwise reverses";
+  return "the body reverses neither way in these runs";
+}
+
+}  // namespace
+
 std::string describe(const BothWays& found) {
+  if (found.other_keys.empty()) return describeOneBody(found);
   // What the groups of rows are: bodies where every other axis is a body's key; else the other
   // axes' settings (a sweep over tilt had called its tilts "bodies").
   std::string keys;

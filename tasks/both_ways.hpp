@@ -23,6 +23,10 @@ struct BothWays {
   std::vector<std::string> first_values;
   std::vector<std::int64_t> first_rows;
   std::vector<std::string> other_keys;  ///< the axes besides initial.spin, in order
+  /// The first body's first row with a reversal spun each way (clockwise: spin < 0), and the
+  /// spins of those rows as written: what a sweep of spins alone names.
+  std::optional<std::int64_t> clockwise_row, anticlockwise_row;
+  std::string clockwise_spin, anticlockwise_spin;
 };
 
 /// For a sweep with an initial.spin axis of both signs, which bodies reverse both ways, given

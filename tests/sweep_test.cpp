@@ -12,6 +12,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -1204,4 +1205,23 @@ TEST(Sweep, BothWaysNamesWhatItGroupsAndShortensALongListOfRows) {
   EXPECT_EQ(tasks::describe(found),
             "7 of 8 bodies reverse both ways (a first reversal spun each way); the first: "
             "body.dents.scale 0.5 (rows 4, 5)");
+}
+
+// A sweep of spins alone is one body: the line names the first run that reverses each way
+// (stopped runs are not reversals), not "1 of 1 body" and all its rows.
+TEST(Sweep, BothWaysOfOneBodyNamesItsFirstReversalEachWay) {
+  const fs::path file =
+      writeSweep(scratch(), "base: " + kBase + "\nvary:\n  initial.spin: [-6, -4, -1, 1, 2]\n");
+  auto sweep = scene::loadSweep(file.string());
+  ASSERT_TRUE(sweep) << sweep.error().text();
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  auto found = tasks::bothWays(sweep.value(), {none, 3.16, none, none, 0.69});
+  ASSERT_TRUE(found);
+  EXPECT_EQ(tasks::describe(*found),
+            "the body reverses both ways: first spun clockwise in row 1 (initial.spin -4), "
+            "counter-clockwise in row 4 (initial.spin 2)");
+  found = tasks::bothWays(sweep.value(), {none, none, none, 0.9, 0.69});
+  ASSERT_TRUE(found);
+  EXPECT_EQ(tasks::describe(*found),
+            "the body reverses one way only: no run spun clockwise reverses");
 }
