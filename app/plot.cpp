@@ -234,10 +234,19 @@ std::optional<std::string> seriesClause(const Panel& panel, const Series& series
   std::ofstream out(data);
   out.precision(10);
   int kept = 0;
+  bool gap = false;
   for (const auto& [x, y] : series.points) {
-    // Log axes cannot show zero or negative values; gnuplot would refuse the series.
-    if (!std::isfinite(x) || !std::isfinite(y)) continue;
-    if ((panel.log_x && x <= 0) || (panel.log_y && y <= 0)) continue;
+    // Log axes cannot show zero or negative values; gnuplot would refuse the series. A point
+    // left out breaks the line there (gnuplot's blank line), so that the line does not join
+    // its neighbours across it: a sweep's runs that did not reverse had been bridged by a
+    // straight line, which read as a trend through them.
+    if (!std::isfinite(x) || !std::isfinite(y) || (panel.log_x && x <= 0) ||
+        (panel.log_y && y <= 0)) {
+      gap = kept > 0;
+      continue;
+    }
+    if (gap) out << '\n';  // one blank line: two would start another data set
+    gap = false;
     out << x << ' ' << y << '\n';
     ++kept;
   }

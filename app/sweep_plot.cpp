@@ -92,7 +92,8 @@ double metricOf(const std::string& line, std::size_t axes, const tasks::SweepCol
 }
 
 // Each line's forecast_s, to draw beside its first reversal (the theory against the runs: what a
-// lab plots), where the table has it and the plot is of first_reversal_s; else none.
+// lab plots), where the table has it and the plot is of first_reversal_s; else none. The
+// theory's figure is the scene's, whatever became of its run: drawn for a run that stopped too.
 std::vector<double> forecastsOf(const std::vector<std::string>& lines, std::size_t axes,
                                 const tasks::SweepColumns& columns, tasks::SweepMetric metric) {
   std::vector<double> f;
@@ -101,8 +102,11 @@ std::vector<double> forecastsOf(const std::vector<std::string>& lines, std::size
       std::none_of(columns.begin(), columns.end(),
                    [&](const tasks::SweepResultColumn* c) { return c->column.name == forecast; }))
     return f;
-  for (const std::string& line : lines)
-    f.push_back(metricOf(line, axes, columns, tasks::SweepMetric::Forecast));
+  for (const std::string& line : lines) {
+    const auto fields = splitCsv(line);
+    const auto value = fields ? fieldOf(*fields, axes, columns, forecast) : std::nullopt;
+    f.push_back(value && !value->empty() ? std::strtod(value->c_str(), nullptr) : std::nan(""));
+  }
   return f;
 }
 

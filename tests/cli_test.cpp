@@ -2060,6 +2060,24 @@ TEST(Plot, TheSpinFigureMarksEachReversal) {
   fs::remove_all(work);
 }
 
+// A point without a value breaks the series' line there (one blank line in gnuplot's data), so
+// that runs with no value between two that have one are not bridged by a straight line; the
+// points before the first value and after the last leave no blank line.
+TEST(Plot, APointWithoutAValueBreaksTheLine) {
+  const fs::path work = fs::temp_directory_path() / "rattleback-plot-gaps";
+  fs::create_directories(work);
+  const double none = std::nan("");
+  app::Panel panel;
+  panel.series.push_back(
+      {"first_reversal_s",
+       {{-5, none}, {-4, 3.2}, {-3, none}, {-2, none}, {1, 0.9}, {2, 0.7}, {3, none}}});
+  std::ostringstream script;
+  int index = 0;
+  app::writePanel(script, panel, false, work, index);
+  EXPECT_EQ(readText(work / "series0.dat"), "-4 3.2\n\n1 0.9\n2 0.7\n");
+  fs::remove_all(work);
+}
+
 // A sweep's one axis drawn against its metric: on a logarithmic x axis when its values are a
 // geometric sequence over more than a decade (`scale: log`: on a linear axis 5 of 7 drags
 // from 1e-7 to 1e-4 sat in its leftmost 3 %), else linear.

@@ -19,7 +19,9 @@
 #include <thread>
 #include <vector>
 
+#include "app/sweep_plot.hpp"
 #include "tasks/both_ways.hpp"
+#include "tasks/sweep.hpp"
 #include "tasks/sweep_jobs.hpp"
 
 namespace fs = std::filesystem;
@@ -1224,4 +1226,21 @@ TEST(Sweep, BothWaysOfOneBodyNamesItsFirstReversalEachWay) {
   ASSERT_TRUE(found);
   EXPECT_EQ(tasks::describe(*found),
             "the body reverses one way only: no run spun clockwise reverses");
+}
+
+// The theory's forecast is the scene's, drawn whatever became of its run (a run that stopped on
+// a mesh's rim had lost its forecast from the plot); the runs' own first reversals only where
+// the run was ok.
+TEST(SweepPlot, AStoppedRunKeepsItsForecastButNotItsReversal) {
+  const tasks::SweepColumns columns =
+      tasks::columnsNamed({"status", "first_reversal_s", "forecast_s"});
+  const std::vector<std::string> lines = {"0,-6,stopped,,1.88", "1,-4,ok,3.16,3.37", "2,-2,ok,,"};
+  const std::vector<double> forecast =
+      app::forecastsOf(lines, 1, columns, tasks::SweepMetric::FirstReversal);
+  ASSERT_EQ(forecast.size(), 3u);
+  EXPECT_EQ(forecast[0], 1.88);
+  EXPECT_EQ(forecast[1], 3.37);
+  EXPECT_TRUE(std::isnan(forecast[2]));
+  EXPECT_TRUE(std::isnan(app::metricOf(lines[0], 1, columns, tasks::SweepMetric::FirstReversal)));
+  EXPECT_EQ(app::metricOf(lines[1], 1, columns, tasks::SweepMetric::FirstReversal), 3.16);
 }
