@@ -38,13 +38,18 @@ bool interrupted() {
 }
 
 // The exit status and message of a run that stopped or was interrupted before its output.
+// `both_stopped`: the spin of --both's run that stopped, whose stop kept the other's video too.
 int notWritten(const tasks::Outcome& outcome, const std::string& scene, const std::string& what,
-               const sim::Model& model) {
+               const sim::Model& model, std::optional<double> both_stopped = std::nullopt) {
   if (outcome.ending == tasks::Ending::Stopped) {
     const std::string why = saidOddBody(model);
     // A still's run ends at its --t, a video's at its --duration.
-    tell(Tone::Error,
-         stoppedLine(scene, outcome, what, what == "still" ? "--t" : "--duration", why));
+    std::string line =
+        stoppedLine(scene, outcome, what, what == "still" ? "--t" : "--duration", why);
+    if (both_stopped)
+      line += ". It was --both's run spun " + rb::show(*both_stopped) + " rad/s; --spin " +
+              rb::show(-*both_stopped) + " without --both renders the other way's alone";
+    tell(Tone::Error, line);
     return kDiverged;
   }
   tell(Tone::Error, scene + ": interrupted; no " + what + " written");
@@ -111,7 +116,7 @@ int renderCommand(const RenderArgs& args) {
   const media::VideoResult& result = made.value();
   if (args.verbose) tell(Tone::Note, "render: OpenGL " + result.opengl);
   if (result.outcome.ending != tasks::Ending::Completed)
-    return notWritten(result.outcome, args.scene, "video", loaded->model);
+    return notWritten(result.outcome, args.scene, "video", loaded->model, result.stopped_spin);
   std::vector<tasks::OutputEntry> entries;
   for (const media::VideoFile& f : result.files)
     entries.push_back(media::videoEntry(f, loaded.value(), sceneName(args.scene)));

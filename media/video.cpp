@@ -384,7 +384,9 @@ rb::Result<VideoResult> renderVideo(const tasks::LoadedScene& loaded, const Vide
   // A stopped run, or a cancel, writes nothing (the encoders removed their temporary files).
   for (const auto& run : runs) {
     result.outcome = tasks::outcomeOf(run.summary());
-    if (result.outcome.ending == tasks::Ending::Stopped) return result;
+    if (result.outcome.ending != tasks::Ending::Stopped) continue;
+    if (request.both) result.stopped_spin = run.model().initial.spin;
+    return result;
   }
   if (cancelled()) {
     result.outcome.ending = tasks::Ending::Interrupted;

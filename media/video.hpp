@@ -57,6 +57,8 @@ struct VideoResult {
   std::vector<std::string> notes;
   /// Where the body goes out of the frame asked for (video.frame): what to say (leavesNote).
   std::optional<std::string> leaves;
+  /// With `both`, the initial spin of the run that stopped (none wrote a video).
+  std::optional<double> stopped_spin;
 };
 
 /// crf within 1 … 51 and a known preset; one line naming the option otherwise.

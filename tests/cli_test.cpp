@@ -1142,6 +1142,18 @@ TEST(Cli, AStoppedRunSaysWhatItFoundAndTheDurationThatEndsItBefore) {
       << kept.out;
   // The summary prints four decimals, the stopped line six significant digits.
   EXPECT_NEAR(std::stod(line[1]), reversal, 0.6e-4);
+
+  // render --both: one run's stop keeps both videos, so the line names that run and the way to
+  // the other's video alone (here the +6 rad/s run stops first, at 3.9 s).
+  const Result both = rattleback("render " + scene("printed") +
+                                 " --spin -6 --set contact.air_drag=0 --both --size 160x90 -o " +
+                                 (dir / "v" / "p.mp4").string());
+  ASSERT_EQ(both.status, 3) << both.err;
+  EXPECT_NE(both.err.find(". It was --both's run spun 6 rad/s; --spin -6 without --both "
+                          "renders the other way's alone\n"),
+            std::string::npos)
+      << both.err;
+  EXPECT_FALSE(fs::exists(dir / "v"));
 }
 
 // The same for sweep, sweep merge and bench: --plot's folder was made before the table's place
