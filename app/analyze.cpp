@@ -304,7 +304,7 @@ void writeAnalysis(std::FILE* out, const AnalyzeArgs& args, const sim::Model& mo
     std::fprintf(out, "%s\n", tasks::analysisJson(a).dump(2).c_str());
     return;
   }
-  printBody(out, args.scene, a);
+  printBody(out, sceneWithValues(args.scene, args.overrides), a);
   printInertia(out, a);
   printContact(out, a);
   if (a.mesh) printFittedBottom(out, a);

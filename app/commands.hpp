@@ -44,6 +44,10 @@ int fail(const rb::Result<T>& result) {
 void record(const std::vector<tasks::OutputEntry>& entries);
 /// A scene's (or sweep's) name in the manifest: its file's stem.
 std::string sceneName(const std::string& path);
+/// The scene as a summary's `scene` line names it: its path, and the --set values put into it
+/// ("hull.yaml with body.mesh.file=hull-5.stl"), so that runs of one file with other values
+/// say which they were.
+std::string sceneWithValues(const std::string& path, const tasks::Overrides& overrides);
 /// Says on standard error (with -q too) when `given` is not in this folder and the shipped copy
 /// of that name runs instead (tasks::findShipped): a deleted or misnamed scene of the user's
 /// would otherwise run the shipped one in silence.

@@ -16,6 +16,13 @@ std::string sceneName(const std::string& path) {
   return std::filesystem::path(path).stem().string();
 }
 
+std::string sceneWithValues(const std::string& path, const tasks::Overrides& overrides) {
+  std::string named = path;
+  for (std::size_t i = 0; i < overrides.values.size(); ++i)
+    named += (i ? ", " : " with ") + overrides.values[i].key + "=" + overrides.values[i].yaml;
+  return named;
+}
+
 // Said with -q too: the run is of another file than the one named (a pipeline's deleted scene
 // of a shipped one's name would run the shipped one with nothing said).
 void noteShipped(const std::string& given) {

@@ -44,7 +44,9 @@ void printSummary(std::FILE* out, const SimulateArgs& args, const sim::Model& mo
                   const sim::RunSummary& run, const std::string& csv, std::int64_t rows) {
   const double simulated = run.last.t;
   const std::string integrator(rb::nameOf(model.integrator));
-  std::fprintf(out, "scene           %s\n", args.scene.c_str());
+  Overrides set;
+  (void)putSettings(args.set, set);  // (checked before the run)
+  std::fprintf(out, "scene           %s\n", sceneWithValues(args.scene, set).c_str());
   const std::vector<tasks::RunWarning> warnings = tasks::runWarnings(model, run);
   // Each warning where its line belongs: the body's at the top, a hint under the line it
   // explains.

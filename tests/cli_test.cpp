@@ -1114,6 +1114,26 @@ TEST(Cli, SnapshotChecksItsJobsAndItsHelpListsEveryExitStatus) {
     EXPECT_NE(help.out.find(status), std::string::npos) << status;
 }
 
+// The summary's scene line names the --set values a run was made with, so that runs of one file
+// with other values (a sweep of designs tried one by one) say which they were.
+TEST(Cli, TheSceneLineNamesTheValuesSet) {
+  const std::string file = scene("rattleback");
+  const Result run = rattleback("simulate " + file +
+                                " --set contact.air_drag=0 --set initial.tilt=[1,0] --duration "
+                                "0.1 -o " +
+                                (emptyDir("scene-line") / "x.csv").string());
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(
+      run.out.find("scene           " + file + " with contact.air_drag=0, initial.tilt=[1,0]\n"),
+      std::string::npos)
+      << run.out;
+  const Result analysis = rattleback("analyze " + file + " --set contact.air_drag=0");
+  ASSERT_EQ(analysis.status, 0) << analysis.err;
+  EXPECT_NE(analysis.out.find("scene            " + file + " with contact.air_drag=0 (lengths"),
+            std::string::npos)
+      << analysis.out;
+}
+
 // A run that stops says what it had found by then and the --duration that ends it before the
 // stop: the printed mesh body spun at −6 rad/s without drag reverses, then rocks past its fitted
 // bottom and stops (a maker's first hour: it had said only "No telemetry written"). The duration
