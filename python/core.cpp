@@ -191,11 +191,7 @@ std::shared_ptr<Run> simulate(const LoadedScene& loaded, double rate, bool check
   if (result.outcome.ending == tasks::Ending::Stopped) {
     // The run as far as it went goes with the exception; the message names the values put in,
     // so that of a Pool's runs of one scene the one that stopped is told apart.
-    std::string named = run->scene;
-    for (std::size_t i = 0; i < loaded.value.scene.values.size(); ++i)
-      named += (i ? ", " : " (") + loaded.value.scene.values[i].key + " = " +
-               loaded.value.scene.values[i].yaml +
-               (i + 1 == loaded.value.scene.values.size() ? ")" : "");
+    const std::string named = namedWithValues(run->scene, loaded.value.scene.values);
     py::object cls = py::module_::import("rattleback._errors").attr("RunStopped");
     py::object e = cls(named + ": the run stopped: " + result.outcome.message,
                        std::string(rb::nameOf(result.outcome.stop->reason)), result.outcome.stop->t,

@@ -192,6 +192,21 @@ def test_a_stopped_run_names_its_values_and_carries_the_run_as_far_as_it_went():
     back = pickle.loads(pickle.dumps(stopped))  # from a Pool's worker
     assert back.reason == "on_rim" and np.array_equal(back.run.spin, stopped.run.spin)
 
+    # A key put in twice is named once, at the value it has; a long value is cut short (a weight
+    # added twice had named the body's mass, CM and nine-number inertia twice before the cause).
+    twice = scene.with_values({"initial.spin": -30, "initial.tilt": [0.123456789012345678] * 2})
+    twice = twice.with_values({"initial.spin": -20, "initial.tilt": [0.5000000000000001] * 2})
+    with pytest.raises(rb.RunStopped) as caught:
+        rb.simulate(twice)
+    assert str(caught.value).startswith(
+        scene_path("rattleback.yaml") + " (initial.spin = -20, initial.tilt = "
+        "[0.5000000000000001, 0.5000000000000001]): the run stopped"
+    ), str(caught.value)
+    long = scene.with_values({"initial.tilt": [0.123456789012345678, 0.2345678901234567]})
+    with pytest.raises(rb.RunStopped) as caught:
+        rb.simulate(long)
+    assert "initial.tilt = [0.12345678901234568, 0.2345678901234567…): the run" in str(caught.value)
+
 
 def test_a_bad_video_argument_is_a_scene_error_naming_the_argument():
     scene = rb.Scene.from_file(scene_path("rattleback.yaml"))
