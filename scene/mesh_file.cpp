@@ -150,8 +150,16 @@ rb::Result<sim::TriangleMesh> StlText::parse() {
       skipLine();
       continue;
     }
-    if (word == "normal") {  // its three numbers, which the mesh does not need
-      for (int i = 0; i < 3; ++i) next();
+    if (word == "normal") {  // its numbers (three, or none from some exporters): not needed
+      for (int i = 0; i < 3; ++i) {
+        const std::size_t pos = pos_;
+        const int line = line_;
+        const std::string_view number = next();
+        if (number == "vertex" || skippedStlWord(number)) {  // a word: read it next
+          pos_ = pos, line_ = line;
+          break;
+        }
+      }
       continue;
     }
     if (skippedStlWord(word)) continue;

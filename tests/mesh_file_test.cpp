@@ -138,6 +138,12 @@ TEST(MeshFile, AsciiStlFaultsNameTheirLine) {
   named.replace(normal, named.find('\n', normal) - normal, "nan nan nan");
   const sim::TriangleMesh twice = parsed(named + named, scene::MeshFormat::Stl);
   EXPECT_EQ(twice.faces.size(), 8u);
+  // A normal written without its numbers is read too (the next word is the facet's).
+  std::string bare = asciiStl(cornerTetrahedron(1, 2, 3));
+  for (std::size_t at = bare.find("normal 0 0 0"); at != std::string::npos;
+       at = bare.find("normal 0 0 0"))
+    bare.replace(at, 12, "normal");
+  EXPECT_EQ(parsed(bare, scene::MeshFormat::Stl).faces.size(), 4u);
 }
 
 // A text file named .stl is said to be text (it had been measured as a binary STL: "a binary STL
