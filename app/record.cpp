@@ -1,6 +1,7 @@
 #include <filesystem>
 
 #include "app/commands.hpp"
+#include "scene/loader.hpp"
 #include "tasks/scene_args.hpp"
 
 namespace app {
@@ -17,10 +18,8 @@ std::string sceneName(const std::string& path) {
 }
 
 std::string sceneWithValues(const std::string& path, const tasks::Overrides& overrides) {
-  std::string named = path;
-  for (std::size_t i = 0; i < overrides.values.size(); ++i)
-    named += (i ? ", " : " with ") + overrides.values[i].key + "=" + overrides.values[i].yaml;
-  return named;
+  if (overrides.values.empty()) return path;
+  return path + " with " + scene::valuesSaid(overrides.values, "=");
 }
 
 // Said with -q too: the run is of another file than the one named (a pipeline's deleted scene

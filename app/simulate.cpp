@@ -40,13 +40,12 @@ std::string defaultOutput(const std::string& scene) {
   return "out/" + std::filesystem::path(scene).stem().string() + ".csv";
 }
 
-void printSummary(std::FILE* out, const SimulateArgs& args, const sim::Model& model,
-                  const sim::RunSummary& run, const std::string& csv, std::int64_t rows) {
+void printSummary(std::FILE* out, const SimulateArgs& args, const Overrides& given,
+                  const sim::Model& model, const sim::RunSummary& run, const std::string& csv,
+                  std::int64_t rows) {
   const double simulated = run.last.t;
   const std::string integrator(rb::nameOf(model.integrator));
-  Overrides set;
-  (void)putSettings(args.set, set);  // (checked before the run)
-  std::fprintf(out, "scene           %s\n", sceneWithValues(args.scene, set).c_str());
+  std::fprintf(out, "scene           %s\n", sceneWithValues(args.scene, given).c_str());
   const std::vector<tasks::RunWarning> warnings = tasks::runWarnings(model, run);
   // Each warning where its line belongs: the body's at the top, a hint under the line it
   // explains.
@@ -346,11 +345,12 @@ std::optional<int> drawPlots(const SimulateArgs& args, const std::string& csv,
 
 // The summary, the check's figures and the figures' names (on standard error when the table
 // went to standard output, so that it can be piped on whole).
-void printResults(const SimulateArgs& args, const sim::Model& model,
+void printResults(const SimulateArgs& args, const Overrides& given, const sim::Model& model,
                   const tasks::SimulateResult& run, const std::optional<tasks::RunCheck>& check,
                   const std::string& csv, bool to_stdout) {
   std::FILE* report = to_stdout ? stderr : stdout;
-  printSummary(report, args, model, run.summary, to_stdout ? "standard output" : csv, run.rows);
+  printSummary(report, args, given, model, run.summary, to_stdout ? "standard output" : csv,
+               run.rows);
   if (check) printCheck(report, *check, run.summary);
   if (!args.plot_dir.empty())
     std::fprintf(report, "plots           %s/%s-{energy,spin,tilt,normal}.png\n",
@@ -424,7 +424,7 @@ int simulateCommand(const SimulateArgs& args) {
   if (const std::optional<int> status = drawPlots(args, csv, loaded->scene, kept, run.summary))
     return *status;
   record(outputsOf(args, csv, tasks::madeFrom(loaded->scene)));
-  if (!args.quiet) printResults(args, model, run, check, csv, to_stdout);
+  if (!args.quiet) printResults(args, overrides.value(), model, run, check, csv, to_stdout);
   return kOk;
 }
 

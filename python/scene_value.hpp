@@ -109,24 +109,10 @@ inline void bindScene(py::module_& m) {
 }
 
 // A scene's name with the values put into it, for a message that must tell apart runs of one
-// scene: each key once, at its last value (a weight added twice by with_values sets the body's
-// mass, CM and inertia twice), and a long value cut short (an inertia is nine numbers of 17
-// digits, which had buried the message's cause).
+// scene (a Pool's): "mine.yaml (initial.spin = -5)".
 inline std::string namedWithValues(const std::string& scene,
                                    const std::vector<scene::KeyValue>& values) {
-  constexpr std::size_t kShown = 40;
-  std::vector<const scene::KeyValue*> last;
-  for (const scene::KeyValue& v : values) {
-    std::erase_if(last, [&](const scene::KeyValue* seen) { return seen->key == v.key; });
-    last.push_back(&v);
-  }
-  std::string named = scene;
-  for (std::size_t i = 0; i < last.size(); ++i) {
-    const std::string& yaml = last[i]->yaml;
-    named += (i ? ", " : " (") + last[i]->key + " = " +
-             (yaml.size() > kShown ? yaml.substr(0, kShown) + "…" : yaml);
-  }
-  return last.empty() ? named : named + ")";
+  return values.empty() ? scene : scene + " (" + scene::valuesSaid(values, " = ") + ")";
 }
 
 }  // namespace pyrb

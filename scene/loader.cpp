@@ -509,6 +509,21 @@ rb::Result<Loaded> loadWithValues(const std::string& yaml, const std::string& na
   return loaded;
 }
 
+std::string valuesSaid(const std::vector<KeyValue>& values, const std::string& equals) {
+  // An inertia is nine numbers of 17 digits: in full it buries the message's cause.
+  constexpr std::size_t kShown = 40;
+  std::vector<const KeyValue*> last;
+  for (const KeyValue& v : values) {
+    std::erase_if(last, [&](const KeyValue* seen) { return seen->key == v.key; });
+    last.push_back(&v);
+  }
+  std::string said;
+  for (const KeyValue* v : last)
+    said += (said.empty() ? "" : ", ") + v->key + equals +
+            (v->yaml.size() > kShown ? v->yaml.substr(0, kShown) + "…" : v->yaml);
+  return said;
+}
+
 std::vector<std::string> filesRead(const Loaded& loaded) {
   std::vector<std::string> files;
   if (!loaded.file.empty()) files.push_back(loaded.file);

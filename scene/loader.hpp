@@ -57,6 +57,11 @@ struct Loaded {
   std::string content;
 };
 
+/// The values put in, as a message names them: each key once, at its last value (a key put in
+/// twice holds the last), a long value cut short, joined by ", " with `equals` between key and
+/// value ("contact.air_drag=0, body.inertia=[[6.46e-07, …").
+std::string valuesSaid(const std::vector<KeyValue>& values, const std::string& equals);
+
 /// The files the scene was made from: its own (when it has one) and the mesh its body reads,
 /// as paths from here, so that no output is written over one of them.
 std::vector<std::string> filesRead(const Loaded& loaded);

@@ -217,10 +217,16 @@ bool findApex(BottomFit& fit) {
   return true;
 }
 
+// A cap column's place: inside the cap, on its edge where the bottom goes on steeper than the
+// fit takes, or on its edge where the bottom itself ends (a neighbour missing, or one that is on
+// the bottom's boundary: capColumns takes no column without its four neighbours).
+enum CapPlace : char { kInside = 0, kSlopeEdge = 1, kBottomEdge = 2 };
+
 // RMS and largest distance of the cap's points from the surface (|Δζ| cos of the slope), and
 // the cap's slope: the least fitted slope over the cap's edge columns (a tilt whose contact
-// point is no steeper stays among the cap's points). The number of points the surface does not
-// reach (its sheet ends before them: a quadric fitted to a bottom that is none).
+// point is no steeper stays among the cap's points), and whether that column is at the
+// bottom's edge. The number of points the surface does not reach (its sheet ends before them:
+// a quadric fitted to a bottom that is none).
 std::size_t measure(const std::vector<Eigen::Vector3d>& local, const std::vector<char>& edge,
                     BottomFit& fit) {
   double sum = 0;
@@ -236,7 +242,10 @@ std::size_t measure(const std::vector<Eigen::Vector3d>& local, const std::vector
     const double d = std::abs(local[k].z() - j.z) / std::sqrt(1 + j.grad.squaredNorm());
     sum += d * d;
     fit.max_m = std::max(fit.max_m, d);
-    if (edge[k]) fit.cap_slope = std::min(fit.cap_slope, j.grad.norm());
+    if (edge[k] != kInside && j.grad.norm() < fit.cap_slope) {
+      fit.cap_slope = j.grad.norm();
+      fit.cap_meets_edge = edge[k] == kBottomEdge;
+    }
   }
   fit.rms_m = missed < local.size() ? std::sqrt(sum / static_cast<double>(local.size() - missed))
                                     : std::numeric_limits<double>::infinity();
@@ -270,14 +279,21 @@ BottomFit fitBottom(const std::vector<Eigen::Vector3d>& bottom, double h, double
   std::vector<char> in_cap(bottom.size(), 0), edge;
   for (long k : cap) local.push_back(bottom[k] - fit.origin), in_cap[k] = 1;
   auto column = [h](double v) { return std::lround(v / h - 0.5); };
+  auto bottomsEdge = [&](long i, long j) {  // a column missing, or one without its four
+    if (grid.at(i, j) < 0) return true;
+    for (const auto& d : kNeighbours)
+      if (grid.at(i + d[0], j + d[1]) < 0) return true;
+    return false;
+  };
   for (long k : cap) {
     const long i = column(bottom[k].x()) - grid.i0, j = column(bottom[k].y()) - grid.j0;
-    bool outer = false;
+    char place = kInside;
     for (const auto& d : kNeighbours) {
       const long n = grid.at(i + d[0], j + d[1]);
-      outer = outer || n < 0 || !in_cap[n];
+      if (n >= 0 && in_cap[n]) continue;
+      place = std::max<char>(place, bottomsEdge(i + d[0], j + d[1]) ? kBottomEdge : kSlopeEdge);
     }
-    edge.push_back(outer);
+    edge.push_back(place);
   }
   fitCoefficients(local, fit);
   if (!findApex(fit)) {

@@ -36,6 +36,9 @@ struct BottomFit {
   Eigen::Matrix2d apex_hessian_inv = Eigen::Matrix2d::Identity();  ///< (∇²f)⁻¹ there, m
   /// tan of the largest tilt whose contact stays within the cap's points; NaN until measured
   double cap_slope = std::numeric_limits<double>::quiet_NaN();
+  /// The cap's edge where it sets cap_slope is the bottom's own edge (the bottom meets the
+  /// body's sides or rim there), not the fit's slope limit: a tilt past it rocks onto that edge.
+  bool cap_meets_edge = false;
   /// RMS distance of the cap's points from the surface, m: NaN until measured (a fit refused
   /// before, too few points or no bowl), +∞ where the surface reaches none of them
   double rms_m = std::numeric_limits<double>::quiet_NaN();

@@ -221,8 +221,11 @@ void Rollout::watch(const Eigen::Matrix3d& R, const Eigen::Vector3d& w) {
     end.contacts = reading.contacts;
     if (stopsOnRim() && model_.body->surface.lowestOnRim(-R.row(2).transpose())) {
       end.rim_tilt_deg = std::acos(std::clamp(R(2, 2), -1.0, 1.0)) * 180.0 / M_PI;
-      if (model_.body->surface.kind == Surface::Kind::Mesh)
-        end.cap_deg = std::atan(model_.body->surface.mesh.fit.cap_slope) * 180.0 / M_PI;
+      if (model_.body->surface.kind == Surface::Kind::Mesh) {
+        const BottomFit& fit = model_.body->surface.mesh.fit;
+        end.cap_deg = std::atan(fit.cap_slope) * 180.0 / M_PI;
+        end.cap_meets_edge = fit.cap_meets_edge;
+      }
     }
   }
   if (const std::optional<Stop> stop = watchdog_.observe(end)) {

@@ -9,10 +9,10 @@
 namespace sim {
 namespace {
 
-// Why a cap ends short of the fit's slope limit: the mesh's bottom is no smooth bowl beyond it
-// (it meets the body's sides or an edge there), so a toy that rocks further touches that edge.
-std::string capEnd(double cap_deg) {
-  if (cap_deg >= kFitSlopeLimitDeg - 0.5) return "";
+// Why a cap ends where the bottom itself ends (it meets the body's sides or rim there, short of
+// the fit's slope limit): a toy that rocks further touches that edge.
+std::string capEnd(const StepEnd& end) {
+  if (!end.cap_meets_edge) return "";
   std::ostringstream said;
   said << " (the cap ends where the bottom stops being a smooth bowl, at its edge or where it "
           "meets the sides, short of the "
@@ -76,7 +76,7 @@ std::optional<Stop> Watchdog::observe(const StepEnd& end) {
     else
       msg << "the contact point left the mesh's fitted bottom (tilt " << *end.rim_tilt_deg
           << " degrees, beyond its cap of " << *end.cap_deg << " degrees) at t = " << end.t
-          << " s (step " << end.step << ")" << capEnd(*end.cap_deg)
+          << " s (step " << end.step << ")" << capEnd(end)
           << ": the body rocked further than the smooth bottom describes, and no contact "
              "model follows a mesh body on from there with its spin (contact.model: points, "
              "with a contact.stiffness, shows its rocking and sliding, but resting on many "

@@ -44,6 +44,7 @@ struct StepEnd {
   /// Where the rim is the edge of a mesh's fitted bottom (docs/physics.md §P11.4): the largest
   /// tilt it holds, degrees.
   std::optional<double> cap_deg;
+  bool cap_meets_edge = false;  ///< that tilt is where the bottom itself ends (BottomFit)
 };
 
 class Watchdog {

@@ -21,10 +21,10 @@ std::optional<BothWays> bothWays(const scene::Sweep& sweep,
   }
   if (!negative || !positive) return std::nullopt;
   struct Body {
-    bool clockwise = false, anticlockwise = false;  // a reversal spun that way
-    bool exports = true;                            // every row's body exports
+    bool exports = true;  // every row's body exports
     std::vector<std::int64_t> rows;
-    std::optional<std::int64_t> clockwise_row, anticlockwise_row;  // the first reversing
+    // Its first row with a reversal spun each way (clockwise: spin < 0), if any.
+    std::optional<std::int64_t> clockwise_row, anticlockwise_row;
   };
   std::map<std::vector<int>, Body> bodies;  // by the coordinates of every other axis
   for (std::int64_t row = 0; row < sweep.rows(); ++row) {
@@ -40,10 +40,7 @@ std::optional<BothWays> bothWays(const scene::Sweep& sweep,
       body.exports = false;
     if (reversed && value < 0 && !body.clockwise_row) body.clockwise_row = row;
     if (reversed && value > 0 && !body.anticlockwise_row) body.anticlockwise_row = row;
-    body.clockwise = body.clockwise_row.has_value();
-    body.anticlockwise = body.anticlockwise_row.has_value();
   }
-
   BothWays found;
   found.bodies = static_cast<std::int64_t>(bodies.size());
   // A sweep of spins alone is one body: its first row each way is what to name.
@@ -65,7 +62,7 @@ std::optional<BothWays> bothWays(const scene::Sweep& sweep,
   if (!exports.empty()) found.exporting = 0;
   for (const auto& [row, entry] : by_row) {
     const Body& body = entry->second;
-    if (!body.clockwise || !body.anticlockwise) continue;
+    if (!body.clockwise_row || !body.anticlockwise_row) continue;
     ++found.both;
     if (found.exporting && body.exports) ++*found.exporting;
     // The first that reverses both ways, or where exports is known the first that also exports.

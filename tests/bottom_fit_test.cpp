@@ -122,6 +122,19 @@ TEST(BottomFit, AnEllipsoidsRadiiConvergeAtOrderTwoAsItsMeshIsRefined) {
   EXPECT_LT(errors.back(), 2e-4);
 }
 
+// Whether the cap ends where the bottom itself ends: the default body's bottom meets its top at
+// the rim at a slope below the fit's 30° (its cap 16.5°, docs/your-own-body.md), where
+// Kane & Levinson's ellipsoid goes on steeper (its cap ends at the fit's slope limit, read off
+// the central differences of its columns: 20.1° of fitted slope on its exported mesh).
+TEST(BottomFit, ACapSaysWhetherTheBottomsOwnEdgeEndsIt) {
+  const sim::BottomFit rim = fitOf(paraboloidMesh(0.01, 0.5, 0.03, 0.005, 24, 96));
+  ASSERT_TRUE(rim.usable()) << rim.problem;
+  EXPECT_TRUE(rim.cap_meets_edge) << std::atan(rim.cap_slope) * 180 / M_PI;
+  const sim::BottomFit bowl = fitOf(icosphere(4, kSemiAxes));
+  ASSERT_TRUE(bowl.usable()) << bowl.problem;
+  EXPECT_FALSE(bowl.cap_meets_edge) << std::atan(bowl.cap_slope) * 180 / M_PI;
+}
+
 double firstReversal(const sim::SceneSpec& spec) {
   auto model = sim::compile(spec);
   if (!model) {
@@ -227,6 +240,7 @@ TEST(BottomFit, ARollingMeshBodyThatRocksBeyondItsFittedCapStopsSayingSo) {
   sim::Watchdog watchdog(0, 1.0, false, "");
   sim::StepEnd end;
   end.t = 0.74, end.step = 261, end.energy = 1.0, end.rim_tilt_deg = 16.49, end.cap_deg = 16.46;
+  end.cap_meets_edge = true;
   ASSERT_TRUE(watchdog.observe(end));
   const std::string message = watchdog.message();
   EXPECT_NE(message.find("left the mesh's fitted bottom (tilt 16.49 degrees, beyond its cap of "
@@ -241,9 +255,10 @@ TEST(BottomFit, ARollingMeshBodyThatRocksBeyondItsFittedCapStopsSayingSo) {
   EXPECT_EQ(message.find("initial.tilt"), std::string::npos) << message;
   // points is not a way to a reversal: it is said what it shows and what it loses.
   EXPECT_NE(message.find("loses the spin within a second"), std::string::npos) << message;
-  // A cap that reaches the fit's own slope limit ends there, not at an edge: no such words.
+  // A cap that ends where the bottom goes on steeper (an ellipsoid's) is not at an edge: no
+  // such words.
   sim::Watchdog steep(0, 1.0, false, "");
-  end.rim_tilt_deg = 30.2, end.cap_deg = sim::kFitSlopeLimitDeg;
+  end.rim_tilt_deg = 20.2, end.cap_deg = 20.1, end.cap_meets_edge = false;
   ASSERT_TRUE(steep.observe(end));
   EXPECT_EQ(steep.message().find("smooth bowl"), std::string::npos) << steep.message();
 }
